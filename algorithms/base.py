@@ -1,0 +1,134 @@
+"""READ /work/main/DEVELOPERS.md FIRST: conventions, venv, test tiers, and the session's
+coordination rules (commit only your own files, deadline 10:25 UTC).
+
+Common base for every Geomatics Toolbox Processing algorithm.
+
+Subclasses set ``GROUP`` to one of the keys of :data:`GROUPS`, implement
+``name``/``displayName``/``shortHelpString``/``initAlgorithm`` and put their work in
+:meth:`GeomaticsAlgorithm.run` (not ``processAlgorithm``): the base class turns
+core ``ValueError``/``OSError``, cancellation and unexpected errors into a
+:class:`QgsProcessingException` with a clear message, so that every failure is
+reported as a failure and never as a silent success.
+
+Translations: call ``self.tr('…')`` with a string literal inside the subclass body
+(pylupdate5 then files it under the subclass's name, which is the context
+:meth:`tr` uses at run time).
+"""
+from __future__ import annotations
+
+import os
+import traceback
+
+from qgis.core import (QgsProcessingAlgorithm, QgsProcessingException,
+                       QgsProcessingParameterDefinition, QgsProcessingParameterNumber)
+from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtGui import QIcon
+
+from ..core.atomic import atomic_output
+from ..core.progress import Cancelled
+
+ICON = os.path.join(os.path.dirname(os.path.dirname(__file__)),
+                    "provider", "icons", "geomatics.svg")
+
+
+def _groups():
+    t = QCoreApplication.translate
+    return {
+        "lidarfiltering": t("GeomaticsAlgorithm", "LiDAR ground filtering"),
+        "terrain": t("GeomaticsAlgorithm", "Terrain models"),
+        "rectification": t("GeomaticsAlgorithm", "Image rectification"),
+        "photogrammetry": t("GeomaticsAlgorithm", "Photogrammetry"),
+        "accuracy": t("GeomaticsAlgorithm", "Accuracy assessment"),
+    }
+
+
+GROUPS = tuple(_groups())
+
+
+class GeomaticsAlgorithm(QgsProcessingAlgorithm):
+    """Base class: groups, icon, translation, error handling, core callbacks."""
+
+    GROUP = "photogrammetry"
+
+    # ---------------------------------------------------------------- metadata
+    def tr(self, text: str) -> str:
+        return QCoreApplication.translate(type(self).__name__, text)
+
+    def createInstance(self):  # noqa: N802 - QGIS API name
+        return type(self)()
+
+    def group(self) -> str:
+        return _groups()[self.GROUP]
+
+    def groupId(self) -> str:  # noqa: N802 - QGIS API name
+        return self.GROUP
+
+    def icon(self) -> QIcon:
+        return QIcon(ICON)
+
+    def svgIconPath(self) -> str:  # noqa: N802 - QGIS API name
+        return ICON
+
+    # ---------------------------------------------------------------- parameters
+    def add_number(self, name: str, label: str, default=None, *, minimum=None,
+                   maximum=None, integer: bool = False, optional: bool = False,
+                   advanced: bool = False, help_text: str | None = None):
+        """Add a numeric parameter (double unless ``integer``); returns it."""
+        kind = (QgsProcessingParameterNumber.Integer if integer
+                else QgsProcessingParameterNumber.Double)
+        param = QgsProcessingParameterNumber(name, label, kind, default, optional)
+        if minimum is not None:
+            param.setMinimum(minimum)
+        if maximum is not None:
+            param.setMaximum(maximum)
+        return self.add(param, advanced=advanced, help_text=help_text)
+
+    def add(self, param, *, advanced: bool = False, help_text: str | None = None):
+        """Add any parameter, optionally flagged advanced; returns it."""
+        if advanced:
+            param.setFlags(param.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
+        if help_text:
+            param.setHelp(help_text)
+        self.addParameter(param)
+        return param
+
+    # ---------------------------------------------------------------- running
+    @staticmethod
+    def core_callbacks(feedback) -> dict:
+        """``progress``/``cancel`` keyword arguments for a core function."""
+        if feedback is None:
+            return {"progress": None, "cancel": None}
+        return {"progress": lambda f: feedback.setProgress(100.0 * f),
+                "cancel": feedback.isCanceled}
+
+    @staticmethod
+    def write_text(path: str, text: str) -> str:
+        """Write a text output (HTML, CSV, JSON) atomically; returns ``path``."""
+        with atomic_output(path) as tmp:
+            with open(tmp, "w", encoding="utf-8", newline="") as fh:
+                fh.write(text)
+        return path
+
+    def run(self, parameters, context, feedback) -> dict:  # pragma: no cover
+        raise NotImplementedError
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        try:
+            return self.run(parameters, context, feedback)
+        except QgsProcessingException:
+            raise
+        except Cancelled:
+            raise QgsProcessingException(
+                QCoreApplication.translate("GeomaticsAlgorithm",
+                                           "Cancelled by the user; no output was written."))
+        except (ValueError, OSError) as exc:
+            raise QgsProcessingException(str(exc))
+        except MemoryError:
+            raise QgsProcessingException(QCoreApplication.translate(
+                "GeomaticsAlgorithm",
+                "Out of memory. Use a coarser cell size, a smaller extent or fewer "
+                "points; no output was written."))
+        except Exception as exc:  # noqa: BLE001 - report every failure as such
+            if feedback is not None:
+                feedback.pushDebugInfo(traceback.format_exc())
+            raise QgsProcessingException(f"{type(exc).__name__}: {exc}")

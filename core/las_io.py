@@ -1,0 +1,390 @@
+"""LAS/LAZ reading and writing on laspy + lazrs.
+
+* :func:`las_info` — header facts (count, bounds, format, CRS) without reading points;
+* :func:`read_las` — x, y, z (float64, scaled) and any other dimension asked for;
+* :func:`iter_las_chunks` — the same, chunk by chunk, for files larger than memory;
+* :func:`write_las_like` — a copy of an input with some dimensions replaced (e.g. a
+  new classification) and optionally only a subset of points, preserving every
+  other attribute bit for bit, the point format, version, scales/offsets, VLRs,
+  EVLRs and CRS; written under a temporary name and renamed on success;
+* :func:`write_las` — a new file from arrays (synthetic/demo data).
+
+Every reader validates its input first (:func:`check_las_file`) and raises a
+``ValueError`` naming the problem and the fix: missing file, not a LAS file, LAZ
+without a decompression backend, unsupported version, empty cloud.
+"""
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from typing import Dict, Iterator, Mapping, Optional, Sequence, Tuple
+
+import numpy as np
+
+from .atomic import atomic_output, check_not_input
+from .progress import Monitor
+
+DEFAULT_CHUNK = 2_000_000
+_SUPPORTED_VERSIONS = {(1, 0), (1, 1), (1, 2), (1, 3), (1, 4)}
+
+
+def _laspy():
+    try:
+        import laspy
+    except ImportError as exc:  # pragma: no cover - install problem
+        raise ValueError("The Python package 'laspy' is not installed; install "
+                         "laspy and lazrs (pip install laspy lazrs).") from exc
+    return laspy
+
+
+@dataclass
+class LasInfo:
+    """Header facts of a LAS/LAZ file."""
+
+    path: str
+    version: str
+    point_format: int
+    count: int
+    scales: Tuple[float, float, float]
+    offsets: Tuple[float, float, float]
+    mins: Tuple[float, float, float]
+    maxs: Tuple[float, float, float]
+    compressed: bool
+    crs: Optional[str]
+    dimensions: Tuple[str, ...]
+    n_vlrs: int
+
+
+@dataclass
+class PointData:
+    """Coordinates and requested dimensions of (a chunk of) a point cloud."""
+
+    x: np.ndarray
+    y: np.ndarray
+    z: np.ndarray
+    dims: Dict[str, np.ndarray] = field(default_factory=dict)
+    info: Optional[LasInfo] = None
+
+    def __len__(self) -> int:
+        return int(self.x.size)
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self.dims[name]
+
+
+def check_las_file(path) -> None:
+    """Validate that ``path`` is an existing, readable LAS/LAZ file.
+
+    Raises
+    ------
+    ValueError
+        Missing file, a directory, not a LAS file (no ``LASF`` signature),
+        LAZ with no decompression backend, or an unsupported LAS version.
+    """
+    if path is None or str(path) == "":
+        raise ValueError("No point cloud file was given; choose a .las or .laz file.")
+    path = os.fspath(path)
+    if not os.path.exists(path):
+        raise ValueError(f"Point cloud file not found: {path}. Check the path.")
+    if os.path.isdir(path):
+        raise ValueError(f"{path} is a folder; choose a .las or .laz file.")
+    with open(path, "rb") as fh:
+        head = fh.read(27)
+    if len(head) < 27 or head[:4] != b"LASF":
+        raise ValueError(
+            f"{path} is not a LAS/LAZ file (it does not start with the 'LASF' "
+            "signature). Choose a real .las or .laz file; convert other formats "
+            "first, e.g. with PDAL (pdal translate).")
+    version = (head[24], head[25])
+    if version not in _SUPPORTED_VERSIONS:
+        raise ValueError(
+            f"{path} declares LAS version {version[0]}.{version[1]}, which is not "
+            "supported (1.0 to 1.4 are); re-export it as LAS 1.2 or 1.4.")
+    if path.lower().endswith(".laz"):
+        laspy = _laspy()
+        if not laspy.LazBackend.detect_available():
+            raise ValueError(
+                f"{path} is compressed (LAZ) but no LAZ backend is installed: "
+                "install the Python package 'lazrs' (pip install lazrs).")
+
+
+def crs_of_header(header) -> Optional[str]:
+    """CRS of a LAS header as a string GDAL understands (WKT or 'EPSG:n'), or None."""
+    laspy = _laspy()
+    for vlr in list(header.vlrs) + list(getattr(header, "evlrs", None) or []):
+        if isinstance(vlr, laspy.vlrs.known.WktCoordinateSystemVlr):
+            text = vlr.string.strip("\x00 ") if isinstance(vlr.string, str) else ""
+            if text:
+                return text
+    for vlr in header.vlrs:
+        if isinstance(vlr, laspy.vlrs.known.GeoKeyDirectoryVlr):
+            keys = {k.id: k for k in vlr.geo_keys}
+            for key_id in (3072, 2048):  # ProjectedCSTypeGeoKey, GeographicTypeGeoKey
+                key = keys.get(key_id)
+                if key is not None and key.tiff_tag_location == 0 and 0 < key.value_offset < 32767:
+                    return f"EPSG:{key.value_offset}"
+    return None
+
+
+def _info_from_header(path: str, header) -> LasInfo:
+    return LasInfo(
+        path=path,
+        version=str(header.version),
+        point_format=int(header.point_format.id),
+        count=int(header.point_count),
+        scales=tuple(float(v) for v in header.scales),
+        offsets=tuple(float(v) for v in header.offsets),
+        mins=tuple(float(v) for v in header.mins),
+        maxs=tuple(float(v) for v in header.maxs),
+        compressed=path.lower().endswith(".laz"),
+        crs=crs_of_header(header),
+        dimensions=tuple(header.point_format.dimension_names),
+        n_vlrs=len(header.vlrs),
+    )
+
+
+def _open(path):
+    laspy = _laspy()
+    check_las_file(path)
+    try:
+        return laspy.open(os.fspath(path))
+    except Exception as exc:  # laspy raises several types for broken files
+        raise ValueError(f"Cannot read {path} as LAS/LAZ: {exc}") from exc
+
+
+def las_info(path) -> LasInfo:
+    """Header facts of ``path`` without reading the points."""
+    with _open(path) as reader:
+        return _info_from_header(os.fspath(path), reader.header)
+
+
+def _check_dims(info: LasInfo, names: Sequence[str]) -> None:
+    missing = [n for n in names if n not in info.dimensions]
+    if missing:
+        raise ValueError(
+            f"{info.path} has no dimension(s) {', '.join(missing)}; it has "
+            f"{', '.join(info.dimensions)}.")
+
+
+def _extract(points, names: Sequence[str]) -> PointData:
+    return PointData(
+        x=np.asarray(points.x, dtype=np.float64),
+        y=np.asarray(points.y, dtype=np.float64),
+        z=np.asarray(points.z, dtype=np.float64),
+        dims={n: np.array(points[n]) for n in names},
+    )
+
+
+def iter_las_chunks(path, dimensions: Sequence[str] = (), *,
+                    chunk_size: int = DEFAULT_CHUNK,
+                    allow_empty: bool = False) -> Iterator[Tuple[int, PointData]]:
+    """Yield ``(start_index, PointData)`` chunks of at most ``chunk_size`` points.
+
+    Memory use is bounded by the chunk, so files larger than memory can be
+    streamed (e.g. to compute a raster or statistics).
+    """
+    if chunk_size <= 0:
+        raise ValueError(f"chunk_size must be positive, got {chunk_size}")
+    with _open(path) as reader:
+        info = _info_from_header(os.fspath(path), reader.header)
+        _check_dims(info, dimensions)
+        if info.count == 0 and not allow_empty:
+            raise ValueError(f"{path} holds no points (empty point cloud).")
+        start = 0
+        for chunk in reader.chunk_iterator(chunk_size):
+            data = _extract(chunk, dimensions)
+            data.info = info
+            yield start, data
+            start += len(data)
+
+
+def read_las(path, dimensions: Sequence[str] = (), *, chunk_size: int = DEFAULT_CHUNK,
+             progress=None, cancel=None) -> PointData:
+    """Read coordinates and the named dimensions of a LAS/LAZ file.
+
+    Parameters
+    ----------
+    path : str or path-like
+        A .las or .laz file (LAS 1.0–1.4).
+    dimensions : sequence of str
+        laspy dimension names to read besides x, y, z, e.g.
+        ``("classification", "return_number", "number_of_returns")``.
+    chunk_size : int
+        Points decoded per chunk (bounds the temporary memory).
+    progress, cancel : callable, optional
+        See :class:`~.progress.Monitor`.
+
+    Returns
+    -------
+    PointData
+        ``x, y, z`` as scaled float64 coordinates, ``dims`` with the requested
+        dimensions in their LAS dtype, ``info`` with the header facts.
+
+    Raises
+    ------
+    ValueError
+        Invalid file (see :func:`check_las_file`), empty cloud, or a requested
+        dimension the file does not have.
+    """
+    mon = Monitor(progress, cancel)
+    info = las_info(path)
+    _check_dims(info, dimensions)
+    if info.count == 0:
+        raise ValueError(f"{path} holds no points (empty point cloud).")
+    n = info.count
+    x = np.empty(n, np.float64)
+    y = np.empty(n, np.float64)
+    z = np.empty(n, np.float64)
+    dims: Dict[str, np.ndarray] = {}
+    filled = 0
+    for start, chunk in iter_las_chunks(path, dimensions, chunk_size=chunk_size):
+        mon.check()
+        stop = start + len(chunk)
+        x[start:stop], y[start:stop], z[start:stop] = chunk.x, chunk.y, chunk.z
+        for name, values in chunk.dims.items():
+            if name not in dims:
+                dims[name] = np.empty(n, values.dtype)
+            dims[name][start:stop] = values
+        filled = stop
+        mon.update(stop / n)
+    if filled != n:
+        raise ValueError(f"{path} declares {n} points but holds {filled}; the file "
+                         "is truncated or corrupt.")
+    return PointData(x, y, z, dims, info)
+
+
+def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] = None,
+                   mask: Optional[np.ndarray] = None, chunk_size: int = DEFAULT_CHUNK,
+                   progress=None, cancel=None) -> int:
+    """Copy ``src`` to ``dst`` replacing some dimensions and/or keeping a subset.
+
+    Every attribute not named in ``dimensions`` is copied bit for bit; the point
+    format, LAS version, scales, offsets, VLRs, EVLRs and CRS are those of
+    ``src``; header bounds and counts are recomputed. Compression follows the
+    extension of ``dst`` (.laz compressed, .las not).
+
+    Parameters
+    ----------
+    src, dst : path-like
+        Input and output files; ``dst`` must differ from ``src``.
+    dimensions : mapping of str to array, optional
+        New values per point of ``src`` (full length), e.g.
+        ``{"classification": classes}``.
+    mask : array of bool, optional
+        Full-length selection of the points to write (e.g. ground only).
+
+    Returns
+    -------
+    int
+        Number of points written.
+    """
+    laspy = _laspy()
+    mon = Monitor(progress, cancel)
+    check_not_input(dst, src)
+    info = las_info(src)
+    if info.count == 0:
+        raise ValueError(f"{src} holds no points (empty point cloud).")
+    dimensions = dict(dimensions or {})
+    _check_dims(info, list(dimensions))
+    for name, values in dimensions.items():
+        if np.shape(values) != (info.count,):
+            raise ValueError(f"New values for '{name}' have shape {np.shape(values)}; "
+                             f"expected one per point ({info.count}).")
+    if mask is not None:
+        mask = np.asarray(mask, dtype=bool)
+        if mask.shape != (info.count,):
+            raise ValueError(f"mask has shape {mask.shape}; expected ({info.count},).")
+    dst = os.fspath(dst)
+    written = 0
+    with _open(src) as reader, atomic_output(dst) as tmp:
+        header = reader.header
+        with laspy.open(tmp, mode="w", header=header,
+                        do_compress=dst.lower().endswith(".laz")) as writer:
+            start = 0
+            for chunk in reader.chunk_iterator(chunk_size):
+                mon.check()
+                stop = start + len(chunk)
+                for name, values in dimensions.items():
+                    chunk[name] = values[start:stop]
+                if mask is not None:
+                    chunk = chunk[mask[start:stop]]
+                if len(chunk):
+                    writer.write_points(chunk)
+                    written += len(chunk)
+                start = stop
+                mon.update(stop / info.count)
+    return written
+
+
+def write_las(dst, x, y, z, *, dimensions: Optional[Mapping[str, np.ndarray]] = None,
+              crs: Optional[str] = None, point_format: int = 6, version: str = "1.4",
+              scale: float = 0.01, extra_dims: Optional[Mapping[str, str]] = None) -> int:
+    """Write a new LAS/LAZ file from coordinate arrays.
+
+    Parameters
+    ----------
+    dst : path-like
+        Output path; .laz is compressed.
+    x, y, z : array_like
+        Coordinates in CRS units.
+    dimensions : mapping, optional
+        Standard or extra dimension values (e.g. ``classification``,
+        ``return_number``, ``intensity``).
+    crs : str, optional
+        Anything GDAL's ``SetFromUserInput`` accepts ('EPSG:32632', WKT). Stored as
+        an OGC WKT VLR (LAS 1.4) or a GeoTIFF key VLR with the EPSG code (LAS < 1.4).
+    extra_dims : mapping of name to numpy type name, optional
+        Extra-bytes dimensions to declare, e.g. ``{"height_above_ground": "f4"}``.
+    """
+    laspy = _laspy()
+    x, y, z = (np.asarray(v, dtype=np.float64) for v in (x, y, z))
+    if not (x.shape == y.shape == z.shape) or x.ndim != 1:
+        raise ValueError("x, y and z must be 1-D arrays of equal length.")
+    header = laspy.LasHeader(point_format=point_format, version=version)
+    for name, dtype in (extra_dims or {}).items():
+        header.add_extra_dim(laspy.ExtraBytesParams(name=name, type=np.dtype(dtype)))
+    header.scales = np.array([scale, scale, scale])
+    if x.size:
+        header.offsets = np.floor(np.array([x.min(), y.min(), z.min()]))
+    if crs:
+        _add_crs(header, crs)
+    record = laspy.ScaleAwarePointRecord.zeros(x.size, header=header)
+    record.x, record.y, record.z = x, y, z
+    for name, values in (dimensions or {}).items():
+        record[name] = values
+    dst = os.fspath(dst)
+    with atomic_output(dst) as tmp:
+        with laspy.open(tmp, mode="w", header=header,
+                        do_compress=dst.lower().endswith(".laz")) as writer:
+            writer.write_points(record)
+    return int(x.size)
+
+
+def _add_crs(header, crs: str) -> None:
+    laspy = _laspy()
+    from osgeo import osr
+    srs = osr.SpatialReference()
+    if srs.SetFromUserInput(crs) != 0:
+        raise ValueError(f"Unrecognised CRS {crs!r}; give e.g. 'EPSG:32632' or WKT.")
+    if header.version.minor >= 4:
+        header.vlrs.append(laspy.vlrs.known.WktCoordinateSystemVlr(srs.ExportToWkt()))
+        header.global_encoding.wkt = True
+        return
+    srs.AutoIdentifyEPSG()
+    code = srs.GetAuthorityCode(None)
+    if not code:
+        raise ValueError(f"CRS {crs!r} has no EPSG code; LAS < 1.4 can only store "
+                         "EPSG codes here. Use version 1.4.")
+    key_id = 3072 if srs.IsProjected() else 2048
+    vlr = laspy.vlrs.known.GeoKeyDirectoryVlr()
+    entries = [(1, 1, 0, 3), (1024, 0, 1, 1 if srs.IsProjected() else 2),
+               (1025, 0, 1, 1), (key_id, 0, 1, int(code))]
+    keys = []
+    for kid, loc, count, value in entries:
+        k = laspy.vlrs.geotiff.GeoKeyEntryStruct()
+        k.id, k.tiff_tag_location, k.count, k.value_offset = kid, loc, count, value
+        keys.append(k)
+    vlr.geo_keys_header = keys[0]
+    vlr.geo_keys_header.number_of_keys = len(keys) - 1
+    vlr.geo_keys = keys[1:]
+    header.vlrs.append(vlr)

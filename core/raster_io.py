@@ -1,0 +1,149 @@
+"""GeoTIFF writing and reading with GDAL (north-up, pixel-is-area).
+
+Convention: a grid of ``nrows × ncols`` cells whose upper-left *corner* is at
+``(xmin, ymax)`` with square-or-rectangular cells ``(xres, yres)`` has the GDAL
+geotransform ``(xmin, xres, 0, ymax, 0, -yres)``; row 0 is the northernmost row and
+cell ``(r, c)`` covers ``[xmin + c·xres, xmin + (c+1)·xres] ×
+[ymax − (r+1)·yres, ymax − r·yres]`` (its value belongs to the cell centre).
+"""
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from typing import Optional, Sequence, Tuple
+
+import numpy as np
+
+from .atomic import atomic_output
+
+DEFAULT_NODATA = -9999.0
+CREATION_OPTIONS = ("TILED=YES", "COMPRESS=DEFLATE", "PREDICTOR=3", "BIGTIFF=IF_SAFER")
+
+
+def _gdal():
+    from osgeo import gdal
+    gdal.UseExceptions()
+    return gdal
+
+
+def srs_wkt(crs: Optional[str]) -> str:
+    """WKT of ``crs`` (anything ``OSRSetFromUserInput`` accepts); '' for None."""
+    if not crs:
+        return ""
+    from osgeo import osr
+    srs = osr.SpatialReference()
+    try:
+        ok = srs.SetFromUserInput(str(crs)) == 0
+    except RuntimeError:
+        ok = False
+    if not ok:
+        raise ValueError(f"Unrecognised CRS {crs!r}; give e.g. 'EPSG:32632' or WKT.")
+    return srs.ExportToWkt()
+
+
+@dataclass
+class Raster:
+    """A single-band raster in memory."""
+
+    data: np.ndarray
+    geotransform: Tuple[float, float, float, float, float, float]
+    crs: str
+    nodata: Optional[float]
+
+    @property
+    def shape(self) -> Tuple[int, int]:
+        return self.data.shape
+
+    def masked(self) -> np.ndarray:
+        """Data as float64 with nodata cells set to NaN."""
+        out = self.data.astype(np.float64, copy=True)
+        if self.nodata is not None:
+            out[self.data == self.nodata] = np.nan
+        return out
+
+
+def write_geotiff(path, data, *, geotransform: Sequence[float], crs: Optional[str] = None,
+                  nodata: Optional[float] = DEFAULT_NODATA, dtype: str = "float32",
+                  bands: Optional[Sequence[np.ndarray]] = None,
+                  band_names: Optional[Sequence[str]] = None,
+                  creation_options: Sequence[str] = CREATION_OPTIONS,
+                  metadata: Optional[dict] = None) -> str:
+    """Write a tiled, compressed GeoTIFF atomically (temporary name, then rename).
+
+    Parameters
+    ----------
+    path : path-like
+        Output .tif path.
+    data : 2-D array
+        Band 1, row 0 = north. NaN cells are written as ``nodata``.
+    geotransform : 6 floats
+        GDAL geotransform ``(xmin, xres, 0, ymax, 0, -yres)``.
+    crs : str, optional
+        'EPSG:n' or WKT; written as the raster's spatial reference.
+    nodata : float or None
+        Nodata value (default -9999).
+    bands : sequence of 2-D arrays, optional
+        Extra bands (same shape) after ``data``.
+    band_names : sequence of str, optional
+        Band descriptions.
+    """
+    gdal = _gdal()
+    arrays = [np.asarray(data)] + [np.asarray(b) for b in (bands or [])]
+    shape = arrays[0].shape
+    if len(shape) != 2 or 0 in shape:
+        raise ValueError(f"A raster needs a non-empty 2-D array, got shape {shape}.")
+    if any(a.shape != shape for a in arrays):
+        raise ValueError("All bands must have the same shape.")
+    gt = tuple(float(v) for v in geotransform)
+    if len(gt) != 6 or gt[1] <= 0 or gt[5] >= 0:
+        raise ValueError(f"Expected a north-up geotransform (xres > 0, yres < 0), got {gt}.")
+    gdt = {"float32": gdal.GDT_Float32, "float64": gdal.GDT_Float64,
+           "uint8": gdal.GDT_Byte, "int16": gdal.GDT_Int16,
+           "int32": gdal.GDT_Int32, "uint16": gdal.GDT_UInt16}[dtype]
+    wkt = srs_wkt(crs)
+    options = list(creation_options)
+    if dtype not in ("float32", "float64"):
+        options = [o for o in options if not o.startswith("PREDICTOR")]
+    if min(shape) < 256:
+        options = [o for o in options if o != "TILED=YES"]
+    with atomic_output(os.fspath(path)) as tmp:
+        ds = gdal.GetDriverByName("GTiff").Create(tmp, shape[1], shape[0], len(arrays),
+                                                  gdt, options)
+        try:
+            ds.SetGeoTransform(gt)
+            if wkt:
+                ds.SetProjection(wkt)
+            ds.SetMetadataItem("AREA_OR_POINT", "Area")
+            for key, value in (metadata or {}).items():
+                ds.SetMetadataItem(str(key), str(value))
+            for i, arr in enumerate(arrays, start=1):
+                band = ds.GetRasterBand(i)
+                out = arr
+                if nodata is not None:
+                    band.SetNoDataValue(float(nodata))
+                    if np.issubdtype(arr.dtype, np.floating):
+                        out = np.where(np.isfinite(arr), arr, nodata)
+                band.WriteArray(out.astype(np.dtype(dtype), copy=False))
+                if band_names and i <= len(band_names):
+                    band.SetDescription(str(band_names[i - 1]))
+            ds.FlushCache()
+        finally:
+            ds = None
+    return os.fspath(path)
+
+
+def read_raster(path, band: int = 1) -> Raster:
+    """Read one band of a GDAL raster with its geotransform, CRS and nodata."""
+    gdal = _gdal()
+    path = os.fspath(path)
+    if not os.path.exists(path):
+        raise ValueError(f"Raster not found: {path}. Check the path.")
+    try:
+        ds = gdal.Open(path)
+    except RuntimeError as exc:
+        raise ValueError(f"{path} is not a raster GDAL can read: {exc}") from exc
+    if band < 1 or band > ds.RasterCount:
+        raise ValueError(f"{path} has {ds.RasterCount} band(s); band {band} does not exist.")
+    b = ds.GetRasterBand(band)
+    return Raster(b.ReadAsArray(), tuple(ds.GetGeoTransform()), ds.GetProjection(),
+                  b.GetNoDataValue())

@@ -1,0 +1,59 @@
+"""Plugin class: registers the Processing provider and the translations."""
+from __future__ import annotations
+
+import os
+
+from qgis.core import QgsApplication, QgsSettings
+from qgis.PyQt.QtCore import QCoreApplication, QLocale, QTranslator
+
+PLUGIN_DIR = os.path.dirname(__file__)
+
+
+def user_locale() -> str:
+    """Two-letter language code of the QGIS user interface (e.g. 'ar', 'fa')."""
+    settings = QgsSettings()
+    if settings.value("locale/overrideFlag", False, type=bool):
+        name = settings.value("locale/userLocale", "") or QLocale().name()
+    else:
+        name = QLocale().name()
+    return (name or "en")[:2]
+
+
+def install_translator(locale: str | None = None) -> QTranslator | None:
+    """Load ``i18n/geomatics_toolbox_<locale>.qm`` if it exists; return the translator."""
+    locale = locale or user_locale()
+    qm = os.path.join(PLUGIN_DIR, "i18n", f"geomatics_toolbox_{locale}.qm")
+    if not os.path.exists(qm):
+        return None
+    translator = QTranslator()
+    if not translator.load(qm):
+        return None
+    QCoreApplication.installTranslator(translator)
+    return translator
+
+
+class GeomaticsToolboxPlugin:
+    """QGIS plugin object. Has no GUI of its own: everything is in Processing."""
+
+    def __init__(self, iface=None):
+        self.iface = iface
+        self.provider = None
+        self.translator = install_translator()
+
+    def initProcessing(self):  # noqa: N802 - QGIS API name
+        """Create and register the Processing provider (also used by qgis_process)."""
+        if self.provider is None:
+            from .provider.provider import GeomaticsProvider
+            self.provider = GeomaticsProvider()
+            QgsApplication.processingRegistry().addProvider(self.provider)
+
+    def initGui(self):  # noqa: N802 - QGIS API name
+        self.initProcessing()
+
+    def unload(self):
+        if self.provider is not None:
+            QgsApplication.processingRegistry().removeProvider(self.provider)
+            self.provider = None
+        if self.translator is not None:
+            QCoreApplication.removeTranslator(self.translator)
+            self.translator = None
