@@ -5,7 +5,8 @@ Common base for every Geomatics Toolbox Processing algorithm.
 
 Subclasses set ``GROUP`` to one of the keys of :data:`GROUPS`, implement
 ``name``/``displayName``/``shortHelpString``/``initAlgorithm`` and put their work in
-:meth:`GeomaticsAlgorithm.run` (not ``processAlgorithm``): the base class turns
+:meth:`GeomaticsAlgorithm.process` (not ``processAlgorithm``, and not ``run``,
+which is QgsProcessingAlgorithm's own method): the base class turns
 core ``ValueError``/``OSError``, cancellation and unexpected errors into a
 :class:`QgsProcessingException` with a clear message, so that every failure is
 reported as a failure and never as a silent success.
@@ -109,26 +110,26 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
                 fh.write(text)
         return path
 
-    def run(self, parameters, context, feedback) -> dict:  # pragma: no cover
+    def process(self, parameters, context, feedback) -> dict:  # pragma: no cover
+        """Do the work; return the outputs dict. Subclasses implement this."""
         raise NotImplementedError
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         try:
-            return self.run(parameters, context, feedback)
+            return self.process(parameters, context, feedback)
         except QgsProcessingException:
             raise
         except Cancelled:
-            raise QgsProcessingException(
-                QCoreApplication.translate("GeomaticsAlgorithm",
-                                           "Cancelled by the user; no output was written."))
+            raise QgsProcessingException(QCoreApplication.translate(
+                "GeomaticsAlgorithm", "Cancelled by the user; no output was written.")) from None
         except (ValueError, OSError) as exc:
-            raise QgsProcessingException(str(exc))
+            raise QgsProcessingException(str(exc)) from exc
         except MemoryError:
             raise QgsProcessingException(QCoreApplication.translate(
                 "GeomaticsAlgorithm",
                 "Out of memory. Use a coarser cell size, a smaller extent or fewer "
-                "points; no output was written."))
+                "points; no output was written.")) from None
         except Exception as exc:  # noqa: BLE001 - report every failure as such
             if feedback is not None:
                 feedback.pushDebugInfo(traceback.format_exc())
-            raise QgsProcessingException(f"{type(exc).__name__}: {exc}")
+            raise QgsProcessingException(f"{type(exc).__name__}: {exc}") from exc

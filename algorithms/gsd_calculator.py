@@ -1,0 +1,415 @@
+"""GSD / photogrammetric accuracy calculator (single camera, and batch over a table)."""
+from __future__ import annotations
+
+import math
+
+from qgis.core import (QgsFeature, QgsFeatureSink, QgsField, QgsFields,
+                       QgsProcessing, QgsProcessingException, QgsProcessingOutputNumber,
+                       QgsProcessingParameterBoolean, QgsProcessingParameterEnum,
+                       QgsProcessingParameterFeatureSink, QgsProcessingParameterFeatureSource,
+                       QgsProcessingParameterFileDestination, QgsWkbTypes)
+from qgis.PyQt.QtCore import QVariant
+
+from ..core import gsd as core_gsd
+from ..core.cameras import CAMERAS
+from ..core.report import html_page, html_table
+from .base import GeomaticsAlgorithm
+
+CAMERA_KEYS = ["custom"] + list(CAMERAS)
+
+# (result attribute, output name, unit) of every numeric output, in report order.
+NUMERIC_OUTPUTS = (
+    ("gsd_cm", "GSD", "cm/px"),
+    ("gsd_exact_cm", "GSD_EXACT", "cm/px"),
+    ("pixel_pitch_um", "PIXEL_PITCH", "µm"),
+    ("footprint_width_m", "FOOTPRINT_WIDTH", "m"),
+    ("footprint_height_m", "FOOTPRINT_HEIGHT", "m"),
+    ("sigma_meas_mm", "SIGMA_MEAS", "mm"),
+    ("sigma_xyz_mm", "SIGMA_XYZ", "mm"),
+    ("matching_step_px", "MATCHING_STEP", "px"),
+    ("dense_resolution_cm", "DENSE_RESOLUTION", "cm"),
+    ("distance_for_target_m", "DISTANCE_FOR_TARGET", "m"),
+    ("observed_sigma_xyz_mm", "OBSERVED_SIGMA_XYZ", "mm"),
+    ("ratio_xyz", "RATIO_XYZ", ""),
+    ("ratio_dense", "RATIO_DENSE", ""),
+    ("stereo_base_m", "STEREO_BASE", "m"),
+    ("stereo_sigma_xy_mm", "STEREO_SIGMA_XY", "mm"),
+    ("stereo_sigma_z_mm", "STEREO_SIGMA_Z", "mm"),
+    ("exposure_spacing_m", "EXPOSURE_SPACING", "m"),
+    ("line_spacing_m", "LINE_SPACING", "m"),
+)
+
+
+def _optional(parameters, name):
+    """Value of an optional numeric parameter, or None when not given."""
+    value = parameters.get(name)
+    if value is None or value == "":
+        return None
+    try:
+        value = float(value)
+    except (TypeError, ValueError):
+        raise QgsProcessingException(f"{name}: '{value}' is not a number.") from None
+    return None if math.isnan(value) else value
+
+
+class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
+    """GSD, footprint and theoretical photogrammetric accuracy for one camera."""
+
+    GROUP = "photogrammetry"
+
+    CAMERA = "CAMERA"
+    DISTANCE = "DISTANCE"
+    SENSOR_WIDTH = "SENSOR_WIDTH"
+    IMAGE_WIDTH = "IMAGE_WIDTH"
+    FOCAL_LENGTH = "FOCAL_LENGTH"
+    SENSOR_HEIGHT = "SENSOR_HEIGHT"
+    IMAGE_HEIGHT = "IMAGE_HEIGHT"
+    TARGET_GSD = "TARGET_GSD"
+    ROUND_GSD = "ROUND_GSD"
+    K_M = "K_M"
+    K_S = "K_S"
+    PYRAMID_LEVEL = "PYRAMID_LEVEL"
+    PYRAMID_PERCENT = "PYRAMID_PERCENT"
+    SUBSAMPLING_STEP = "SUBSAMPLING_STEP"
+    OBSERVED_SX = "OBSERVED_SX"
+    OBSERVED_SY = "OBSERVED_SY"
+    OBSERVED_SZ = "OBSERVED_SZ"
+    OBSERVED_SXYZ = "OBSERVED_SXYZ"
+    OBSERVED_DENSE_STD = "OBSERVED_DENSE_STD"
+    STEREO_BASE = "STEREO_BASE"
+    FORWARD_OVERLAP = "FORWARD_OVERLAP"
+    SIDE_OVERLAP = "SIDE_OVERLAP"
+    OUTPUT_HTML = "OUTPUT_HTML"
+
+    def name(self):
+        return "gsdcalculator"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("GSD and photogrammetric accuracy calculator")
+
+    def tags(self):
+        return self.tr("gsd,ground sampling distance,flying height,footprint,accuracy,"
+                       "photogrammetry,drone,flight planning,dense matching").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Computes the ground sampling distance (GSD) of a camera at a given "
+            "distance, the image footprint, the theoretical accuracy of "
+            "phototriangulation and of a dense-matching point cloud, and compares "
+            "observed accuracies with the theory (Al Khalil 2019).</p>"
+            "<p><b>Formulas</b>: GSD [cm/px] = D·S<sub>W</sub>·100/(Im<sub>W</sub>·F<sub>R</sub>); "
+            "footprint = D·S<sub>W</sub>/F<sub>R</sub>; σ<sub>meas</sub> = k<sub>m</sub>·GSD; "
+            "σ<sub>xyz</sub> = k<sub>m</sub>·GSD·k<sub>s</sub>; matching step P = "
+            "T<sub>s</sub>/N<sub>p</sub>; dense resolution R<sub>theo</sub> = P·GSD.</p>"
+            "<p><b>Example</b> (the paper's Nikon Coolpix P100): DISTANCE=5.88 "
+            "SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 gives GSD 0.21455 cm/px, "
+            "σ<sub>xyz</sub> 1.287 mm (1.26 mm with ROUND_GSD), R<sub>theo</sub> 0.858 cm, "
+            "footprint 7.827 m.</p>"
+            "<p><b>Parameters</b></p><ul>"
+            "<li><b>Camera preset</b> (CAMERA, default Custom): fills sensor width/height, "
+            "image width/height and focal length; values you enter override the preset.</li>"
+            "<li><b>Distance</b> (DISTANCE, m): camera–object distance or flying height "
+            "above ground. Required, &gt; 0.</li>"
+            "<li><b>Sensor width</b> (SENSOR_WIDTH, mm), <b>Image width</b> (IMAGE_WIDTH, "
+            "px), <b>Focal length</b> (FOCAL_LENGTH, mm, the true focal length, not the "
+            "35 mm equivalent): required with the Custom camera, &gt; 0.</li>"
+            "<li><b>Sensor height</b> (SENSOR_HEIGHT, mm) / <b>Image height</b> "
+            "(IMAGE_HEIGHT, px): optional, for the footprint height and flight spacing.</li>"
+            "<li><b>Target GSD</b> (TARGET_GSD, cm/px): optional; gives the distance or "
+            "flying height that achieves it.</li>"
+            "<li><b>Round GSD like the paper</b> (ROUND_GSD, default no): round the GSD "
+            "to 0.01 cm/px before the derived quantities.</li>"
+            "<li><b>k<sub>m</sub></b> (K_M, px, default 0.3; 0.13 for an expert "
+            "operator) and <b>k<sub>s</sub></b> (K_S, default 2).</li>"
+            "<li><b>Pyramid level N<sub>p</sub></b> (PYRAMID_LEVEL, default 0.5, a "
+            "fraction in (0, 1], or a percentage in (0, 100] with PYRAMID_PERCENT) and "
+            "<b>subsampling step T<sub>s</sub></b> (SUBSAMPLING_STEP, px, ≥ 1, default 2).</li>"
+            "<li><b>Observed σx, σy, σz, σxyz</b> (mm) and <b>observed dense-cloud "
+            "std</b> (cm): optional; give the observed/theoretical ratios.</li>"
+            "<li><b>Extension</b> (not in the paper): stereo base (STEREO_BASE, m) → "
+            "normal-case σ<sub>Z</sub> = (D/B)(D/c)σ<sub>image</sub> with σ<sub>image</sub> "
+            "= k<sub>m</sub> pixels; forward/side overlap (%) → exposure and line spacing "
+            "(image height along track, width across track).</li>"
+            "<li><b>Report</b> (OUTPUT_HTML): optional HTML report.</li></ul>"
+            "<p>Every result is also an output number, so the graphical modeler can chain "
+            "it.</p>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        names = [self.tr("Custom (enter the values below)")] + [c.name for c in CAMERAS.values()]
+        self.add(QgsProcessingParameterEnum(self.CAMERA, self.tr("Camera preset"), names,
+                                            defaultValue=0))
+        self.add_number(self.DISTANCE, self.tr("Camera–object distance / flying height (m)"),
+                        minimum=0.0)
+        self.add_number(self.SENSOR_WIDTH, self.tr("Sensor width (mm)"), minimum=0.0,
+                        optional=True)
+        self.add_number(self.IMAGE_WIDTH, self.tr("Image width (px)"), minimum=0.0,
+                        optional=True)
+        self.add_number(self.FOCAL_LENGTH, self.tr("Focal length, true (mm)"), minimum=0.0,
+                        optional=True)
+        self.add_number(self.SENSOR_HEIGHT, self.tr("Sensor height (mm)"), minimum=0.0,
+                        optional=True, advanced=True)
+        self.add_number(self.IMAGE_HEIGHT, self.tr("Image height (px)"), minimum=0.0,
+                        optional=True, advanced=True)
+        self.add_number(self.TARGET_GSD, self.tr("Target GSD (cm/px)"), minimum=0.0,
+                        optional=True)
+        self.add(QgsProcessingParameterBoolean(
+            self.ROUND_GSD, self.tr("Round GSD to 0.01 cm/px like the paper"), False))
+        self.add_number(self.K_M, self.tr("Measurement factor k_m (px)"), core_gsd.K_M,
+                        minimum=0.0, advanced=True)
+        self.add_number(self.K_S, self.tr("Safety factor k_s"), core_gsd.K_S, minimum=0.0,
+                        advanced=True)
+        self.add_number(self.PYRAMID_LEVEL, self.tr("Dense matching pyramid level N_p "
+                                                    "(fraction, or % if checked below)"),
+                        core_gsd.N_P, minimum=0.0, advanced=True)
+        self.add(QgsProcessingParameterBoolean(
+            self.PYRAMID_PERCENT, self.tr("Pyramid level is a percentage"), False),
+            advanced=True)
+        self.add_number(self.SUBSAMPLING_STEP, self.tr("Dense matching subsampling step "
+                                                       "T_s (px)"),
+                        core_gsd.T_S, minimum=0.0, advanced=True)
+        for name, label in ((self.OBSERVED_SX, self.tr("Observed σx (mm)")),
+                            (self.OBSERVED_SY, self.tr("Observed σy (mm)")),
+                            (self.OBSERVED_SZ, self.tr("Observed σz (mm)")),
+                            (self.OBSERVED_SXYZ, self.tr("Observed σxyz (mm)")),
+                            (self.OBSERVED_DENSE_STD,
+                             self.tr("Observed dense-cloud std (cm)"))):
+            self.add_number(name, label, minimum=0.0, optional=True, advanced=True)
+        self.add_number(self.STEREO_BASE, self.tr("Stereo base B (m) [extension]"),
+                        minimum=0.0, optional=True, advanced=True)
+        self.add_number(self.FORWARD_OVERLAP, self.tr("Forward overlap (%) [extension]"),
+                        minimum=0.0, maximum=99.9, optional=True, advanced=True)
+        self.add_number(self.SIDE_OVERLAP, self.tr("Side overlap (%) [extension]"),
+                        minimum=0.0, maximum=99.9, optional=True, advanced=True)
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            optional=True, createByDefault=False))
+        for _, out, unit in NUMERIC_OUTPUTS:
+            self.addOutput(QgsProcessingOutputNumber(out, f"{out} ({unit})" if unit else out))
+
+    # ------------------------------------------------------------------ running
+    def camera_inputs(self, parameters, context) -> dict:
+        """Sensor/image/focal values from the preset, overridden by entered values."""
+        index = self.parameterAsEnum(parameters, self.CAMERA, context)
+        key = CAMERA_KEYS[index]
+        preset = CAMERAS.get(key)
+        values = {}
+        if preset is not None:
+            values = dict(sensor_width=preset.sensor_width_mm,
+                          sensor_height=preset.sensor_height_mm,
+                          image_width=preset.image_width_px,
+                          image_height=preset.image_height_px,
+                          focal_length=preset.focal_length_mm)
+        for key_, name in (("sensor_width", self.SENSOR_WIDTH),
+                           ("image_width", self.IMAGE_WIDTH),
+                           ("focal_length", self.FOCAL_LENGTH),
+                           ("sensor_height", self.SENSOR_HEIGHT),
+                           ("image_height", self.IMAGE_HEIGHT)):
+            v = _optional(parameters, name)
+            if v is not None:
+                values[key_] = v
+        for key_, name, unit in (("sensor_width", self.SENSOR_WIDTH, "mm"),
+                                 ("image_width", self.IMAGE_WIDTH, "px"),
+                                 ("focal_length", self.FOCAL_LENGTH, "mm")):
+            if key_ not in values:
+                raise QgsProcessingException(self.tr(
+                    "{name} ({unit}) is required with the Custom camera: enter it or "
+                    "choose a camera preset.").format(name=name, unit=unit))
+        return values
+
+    def process(self, parameters, context, feedback):
+        camera = self.camera_inputs(parameters, context)
+        distance = _optional(parameters, self.DISTANCE)
+        if distance is None:
+            raise QgsProcessingException(self.tr("DISTANCE (m) is required."))
+        result = core_gsd.compute(
+            distance=distance, **camera,
+            target_gsd=_optional(parameters, self.TARGET_GSD),
+            round_gsd=self.parameterAsBool(parameters, self.ROUND_GSD, context),
+            k_m=self.parameterAsDouble(parameters, self.K_M, context),
+            k_s=self.parameterAsDouble(parameters, self.K_S, context),
+            pyramid_level=self.parameterAsDouble(parameters, self.PYRAMID_LEVEL, context),
+            pyramid_percent=self.parameterAsBool(parameters, self.PYRAMID_PERCENT, context),
+            subsampling_step=self.parameterAsDouble(parameters, self.SUBSAMPLING_STEP,
+                                                    context),
+            observed_sx=_optional(parameters, self.OBSERVED_SX),
+            observed_sy=_optional(parameters, self.OBSERVED_SY),
+            observed_sz=_optional(parameters, self.OBSERVED_SZ),
+            observed_sxyz=_optional(parameters, self.OBSERVED_SXYZ),
+            observed_dense_std=_optional(parameters, self.OBSERVED_DENSE_STD),
+            stereo_base=_optional(parameters, self.STEREO_BASE),
+            forward_overlap=_optional(parameters, self.FORWARD_OVERLAP),
+            side_overlap=_optional(parameters, self.SIDE_OVERLAP))
+        values = result.as_dict()
+        outputs = {}
+        for attr, out, unit in NUMERIC_OUTPUTS:
+            outputs[out] = values[attr]
+            if values[attr] is not None:
+                feedback.pushInfo(f"{out}: {values[attr]:.6g} {unit}")
+        html_path = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
+        if html_path:
+            self.write_text(html_path, self.report(result, camera, distance))
+            outputs[self.OUTPUT_HTML] = html_path
+        feedback.setProgress(100)
+        return outputs
+
+    def report(self, result, camera, distance) -> str:
+        values = result.as_dict()
+        labels = {
+            "gsd_cm": self.tr("GSD used"),
+            "gsd_exact_cm": self.tr("GSD, unrounded"),
+            "pixel_pitch_um": self.tr("Pixel pitch"),
+            "footprint_width_m": self.tr("Footprint width"),
+            "footprint_height_m": self.tr("Footprint height"),
+            "sigma_meas_mm": self.tr("Image measurement precision σ_meas"),
+            "sigma_xyz_mm": self.tr("Theoretical phototriangulation accuracy σ_xyz"),
+            "matching_step_px": self.tr("Dense matching step P"),
+            "dense_resolution_cm": self.tr("Theoretical dense-cloud resolution R_theo"),
+            "distance_for_target_m": self.tr("Distance for the target GSD"),
+            "observed_sigma_xyz_mm": self.tr("Observed σxyz"),
+            "ratio_xyz": self.tr("Observed / theoretical σxyz"),
+            "ratio_dense": self.tr("Observed dense std / R_theo"),
+            "stereo_base_m": self.tr("Stereo base (extension)"),
+            "stereo_sigma_xy_mm": self.tr("Stereo planimetric precision (extension)"),
+            "stereo_sigma_z_mm": self.tr("Stereo depth precision σ_Z (extension)"),
+            "exposure_spacing_m": self.tr("Exposure spacing (extension)"),
+            "line_spacing_m": self.tr("Flight-line spacing (extension)"),
+        }
+        rows = [(labels[a], values[a], unit) for a, _, unit in NUMERIC_OUTPUTS
+                if values[a] is not None]
+        inputs = [(self.tr("Distance"), distance, "m"),
+                  (self.tr("Sensor width"), camera["sensor_width"], "mm"),
+                  (self.tr("Image width"), camera["image_width"], "px"),
+                  (self.tr("Focal length"), camera["focal_length"], "mm")]
+        body = (f"<h2>{self.tr('Inputs')}</h2>"
+                + html_table((self.tr("quantity"), self.tr("value"), self.tr("unit")),
+                             inputs, digits=4)
+                + f"<h2>{self.tr('Results')}</h2>"
+                + html_table((self.tr("quantity"), self.tr("value"), self.tr("unit")),
+                             rows, digits=4)
+                + "<p class='note'>" + self.tr(
+                    "Formulas and defaults from Al Khalil (2019); the paper finds observed "
+                    "phototriangulation accuracy about 3–5 times the theoretical value. "
+                    "Items marked (extension) are not in the paper.") + "</p>")
+        from ..plugin import user_locale
+        return html_page(self.tr("GSD and photogrammetric accuracy"), body,
+                         lang=user_locale())
+
+
+class GsdBatchAlgorithm(GeomaticsAlgorithm):
+    """The GSD calculator over a table of cameras and distances."""
+
+    GROUP = "photogrammetry"
+
+    INPUT = "INPUT"
+    ROUND_GSD = "ROUND_GSD"
+    OUTPUT = "OUTPUT"
+
+    # input column → compute() keyword
+    COLUMNS = {
+        "distance": "distance", "sensor_width": "sensor_width",
+        "image_width": "image_width", "focal_length": "focal_length",
+        "sensor_height": "sensor_height", "image_height": "image_height",
+        "target_gsd": "target_gsd", "k_m": "k_m", "k_s": "k_s",
+        "pyramid_level": "pyramid_level", "subsampling_step": "subsampling_step",
+        "observed_sx": "observed_sx", "observed_sy": "observed_sy",
+        "observed_sz": "observed_sz", "observed_sxyz": "observed_sxyz",
+        "observed_dense_std": "observed_dense_std", "forward_overlap": "forward_overlap",
+        "side_overlap": "side_overlap", "stereo_base": "stereo_base",
+    }
+
+    def name(self):
+        return "gsdbatch"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("GSD and photogrammetric accuracy calculator (batch table)")
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Runs the GSD / accuracy calculator for every row of a table (CSV, "
+            "spreadsheet or any layer) and writes a table with the inputs and all "
+            "results.</p><p><b>Input columns</b> (case-insensitive): <i>camera</i> "
+            "(optional preset key: nikon_p100, dji_p4rtk, dji_p1_35, phaseone_ixm100_80), "
+            "<i>distance</i> (m, required), <i>sensor_width</i> (mm), <i>image_width</i> "
+            "(px), <i>focal_length</i> (mm) — required unless a camera preset is given — "
+            "and optionally sensor_height, image_height, target_gsd, k_m, k_s, "
+            "pyramid_level, subsampling_step, observed_sx, observed_sy, observed_sz, "
+            "observed_sxyz, observed_dense_std, forward_overlap, side_overlap, "
+            "stereo_base (units as in the single calculator).</p>"
+            "<p><b>Output</b>: the input columns plus gsd_cm, footprint_width_m, "
+            "sigma_xyz_mm, dense_resolution_cm and every other result. A row with an "
+            "invalid value stops the run with an error naming the row and column.</p>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add(QgsProcessingParameterFeatureSource(
+            self.INPUT, self.tr("Table of cameras and distances"),
+            [QgsProcessing.TypeVector]))
+        self.add(QgsProcessingParameterBoolean(
+            self.ROUND_GSD, self.tr("Round GSD to 0.01 cm/px like the paper"), False))
+        self.add(QgsProcessingParameterFeatureSink(
+            self.OUTPUT, self.tr("GSD results"), QgsProcessing.TypeVector))
+
+    def process(self, parameters, context, feedback):
+        source = self.parameterAsSource(parameters, self.INPUT, context)
+        if source is None:
+            raise QgsProcessingException(self.invalidSourceError(parameters, self.INPUT))
+        names = {f.name().lower(): f.name() for f in source.fields()}
+        if "distance" not in names:
+            raise QgsProcessingException(self.tr(
+                "The table has no 'distance' column (m); columns found: {0}.").format(
+                    ", ".join(names.values())))
+        round_gsd = self.parameterAsBool(parameters, self.ROUND_GSD, context)
+        fields = QgsFields(source.fields())
+        result_names = [a for a, _, _ in NUMERIC_OUTPUTS]
+        for attr in result_names:
+            fields.append(QgsField(attr, QVariant.Double))
+        sink, dest = self.parameterAsSink(parameters, self.OUTPUT, context, fields,
+                                          source.wkbType() if source.wkbType()
+                                          else QgsWkbTypes.NoGeometry, source.sourceCrs())
+        if sink is None:
+            raise QgsProcessingException(self.invalidSinkError(parameters, self.OUTPUT))
+        total = source.featureCount() or 1
+        for i, feat in enumerate(source.getFeatures()):
+            if feedback.isCanceled():
+                raise QgsProcessingException(self.tr("Cancelled by the user."))
+            kwargs = {}
+            preset_key = feat[names["camera"]] if "camera" in names else None
+            if preset_key not in (None, "") and str(preset_key) != "NULL":
+                cam = CAMERAS.get(str(preset_key).strip())
+                if cam is None:
+                    raise QgsProcessingException(self.tr(
+                        "Row {row}: unknown camera '{cam}'; known: {known}.").format(
+                            row=i + 1, cam=preset_key, known=", ".join(CAMERAS)))
+                kwargs.update(sensor_width=cam.sensor_width_mm,
+                              sensor_height=cam.sensor_height_mm,
+                              image_width=cam.image_width_px,
+                              image_height=cam.image_height_px,
+                              focal_length=cam.focal_length_mm)
+            for col, kw in self.COLUMNS.items():
+                if col not in names:
+                    continue
+                raw = feat[names[col]]
+                if raw is None or str(raw).strip() in ("", "NULL"):
+                    continue
+                try:
+                    kwargs[kw] = float(raw)
+                except (TypeError, ValueError):
+                    raise QgsProcessingException(self.tr(
+                        "Row {row}, column '{col}': '{val}' is not a number.").format(
+                            row=i + 1, col=col, val=raw)) from None
+            missing = [c for c in ("sensor_width", "image_width", "focal_length")
+                       if c not in kwargs]
+            if missing:
+                raise QgsProcessingException(self.tr(
+                    "Row {row}: missing {cols}; give the columns or a camera preset.").format(
+                        row=i + 1, cols=", ".join(missing)))
+            try:
+                res = core_gsd.compute(round_gsd=round_gsd, **kwargs).as_dict()
+            except ValueError as exc:
+                raise QgsProcessingException(self.tr("Row {row}: {err}").format(
+                    row=i + 1, err=exc)) from exc
+            out = QgsFeature(fields)
+            out.setGeometry(feat.geometry())
+            out.setAttributes(list(feat.attributes()) + [res[a] for a in result_names])
+            sink.addFeature(out, QgsFeatureSink.FastInsert)
+            feedback.setProgress(100.0 * (i + 1) / total)
+        return {self.OUTPUT: dest}
