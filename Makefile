@@ -1,0 +1,93 @@
+# Geomatics Toolbox — every set-up step is here, so a fresh Debian 12 machine needs only
+#   make demo    (runs the main job through qgis_process on generated demo data → out/)
+#   make test    (all three test tiers)
+# Both install the Debian packages (QGIS 3.22, GDAL, SciPy, Qt tools) and the venv if missing.
+
+SHELL := /bin/bash
+PLUGIN := geomatics_toolbox
+SYSPY := /usr/bin/python3
+VENV := .venv
+PY := $(VENV)/bin/python
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+DEB_PACKAGES := qgis python3-qgis qgis-providers python3-gdal gdal-bin python3-scipy \
+	python3-venv qttools5-dev-tools pyqt5-dev-tools
+PYTEST_ARGS ?=
+QGIS_PROFILE ?= $(HOME)/.local/share/QGIS/QGIS3/profiles/default
+
+export QT_QPA_PLATFORM := offscreen
+export PROJ_DATA := /usr/share/proj
+export PYTHONDONTWRITEBYTECODE := 1
+
+PY_SOURCES = $(shell git ls-files '*.py' 2>/dev/null | grep -vE '^(tests|benchmarks|scripts)/')
+TS_FILES := i18n/$(PLUGIN)_ar.ts i18n/$(PLUGIN)_fa.ts
+QM_FILES := $(TS_FILES:.ts=.qm)
+
+.PHONY: help system-deps venv demo test test-core test-qgis test-cli bench lint ts qm \
+	package deploy clean
+
+help:
+	@echo "make demo | test | bench | lint | ts | qm | package | deploy | clean"
+
+# --------------------------------------------------------------------------- set-up
+system-deps:
+	@if ! command -v qgis_process.bin >/dev/null 2>&1 || ! command -v lrelease >/dev/null 2>&1 \
+	   || ! command -v pylupdate5 >/dev/null 2>&1 || ! command -v gdal_grid >/dev/null 2>&1 \
+	   || ! $(SYSPY) -c 'import qgis.core, osgeo.gdal, scipy, venv' >/dev/null 2>&1; then \
+	  echo "Installing Debian packages: $(DEB_PACKAGES)"; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends \
+	    $(DEB_PACKAGES) >/dev/null; \
+	fi
+
+$(VENV)/.stamp: requirements.txt requirements-dev.txt | system-deps
+	$(SYSPY) -m venv --system-site-packages $(VENV)
+	$(SYSPY) -c 'import numpy; print("numpy==" + numpy.__version__)' > $(VENV)/constraints.txt
+	$(PY) -m pip install -q --disable-pip-version-check -c $(VENV)/constraints.txt \
+		-r requirements-dev.txt
+	touch $@
+
+venv: $(VENV)/.stamp
+
+# --------------------------------------------------------------------------- i18n
+ts: venv
+	pylupdate5 -noobsolete $(PY_SOURCES) -ts $(TS_FILES)
+
+i18n/%.qm: i18n/%.ts
+	lrelease -silent $< -qm $@
+
+qm: system-deps $(QM_FILES)
+
+# --------------------------------------------------------------------------- run
+demo: venv qm
+	bash scripts/demo.sh out
+
+test: venv qm
+	$(PY) -m pytest $(PYTEST_ARGS)
+
+test-core: venv
+	$(PY) -m pytest tests/core $(PYTEST_ARGS)
+
+test-qgis: venv qm
+	$(PY) -m pytest tests/qgis $(PYTEST_ARGS)
+
+test-cli: venv qm
+	$(PY) -m pytest tests/cli $(PYTEST_ARGS)
+
+bench: venv
+	$(PY) benchmarks/run_all.py $(BENCH_ARGS)
+
+lint: venv
+	$(VENV)/bin/ruff check .
+
+# --------------------------------------------------------------------------- ship
+package: venv qm
+	$(PY) scripts/package.py --out dist
+
+deploy: qm
+	mkdir -p "$(QGIS_PROFILE)/python/plugins"
+	ln -sfn "$(CURDIR)" "$(QGIS_PROFILE)/python/plugins/$(PLUGIN)"
+	@echo "Linked $(CURDIR) as $(QGIS_PROFILE)/python/plugins/$(PLUGIN);"
+	@echo "enable 'Geomatics Toolbox' in Plugins > Manage and Install Plugins."
+
+clean:
+	rm -rf out dist build .pytest_cache $(QM_FILES)

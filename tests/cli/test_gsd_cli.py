@@ -1,0 +1,37 @@
+"""qgis_process smoke tests for the GSD calculator and the provider listing."""
+import pytest
+
+
+def test_provider_and_algorithms_listed(qgis_process):
+    out = qgis_process.call("list")
+    assert out.returncode == 0, out.stderr
+    assert "Geomatics Toolbox" in out.stdout
+    for alg in ("geomatics:gsdcalculator", "geomatics:gsdbatch"):
+        assert alg in out.stdout
+
+
+def test_help_shows_defaults_and_units(qgis_process):
+    out = qgis_process.call("help", "geomatics:gsdcalculator")
+    assert out.returncode == 0, out.stderr
+    for text in ("DISTANCE", "SENSOR_WIDTH", "IMAGE_WIDTH", "FOCAL_LENGTH", "(mm)", "(px)",
+                 "(m)", "default 0.3"):
+        assert text in out.stdout, text
+
+
+def test_run_gsd_json(qgis_process, tmp_path):
+    html = tmp_path / "r.html"
+    res = qgis_process.run("geomatics:gsdcalculator", DISTANCE=5.88, SENSOR_WIDTH=6.123,
+                           IMAGE_WIDTH=3648, FOCAL_LENGTH=4.6, OUTPUT_HTML=html)
+    r = res["results"]
+    assert r["GSD"] == pytest.approx(0.21455, abs=5e-6)
+    assert r["SIGMA_XYZ"] == pytest.approx(1.287, abs=5e-4)
+    assert html.exists()
+
+
+def test_run_gsd_bad_focal_length_fails(qgis_process, tmp_path):
+    html = tmp_path / "never.html"
+    msg = qgis_process.run_expect_failure("geomatics:gsdcalculator", DISTANCE=5.88,
+                                          SENSOR_WIDTH=6.123, IMAGE_WIDTH=3648,
+                                          FOCAL_LENGTH=0, OUTPUT_HTML=html)
+    assert "focal_length" in msg
+    assert not html.exists()

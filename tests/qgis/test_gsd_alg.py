@@ -1,0 +1,88 @@
+"""GSD calculator algorithms through processing.run in a headless QGIS."""
+import csv
+
+import pytest
+
+P100 = {"DISTANCE": 5.88, "SENSOR_WIDTH": 6.123, "IMAGE_WIDTH": 3648, "FOCAL_LENGTH": 4.6}
+
+
+def test_golden_numbers_through_processing(qgis_processing, tmp_path):
+    html = tmp_path / "gsd.html"
+    res = qgis_processing.run("geomatics:gsdcalculator",
+                              {**P100, "TARGET_GSD": 0.21, "OUTPUT_HTML": str(html)})
+    assert res["GSD"] == pytest.approx(0.21455, abs=5e-6)
+    assert res["SIGMA_XYZ"] == pytest.approx(1.287, abs=5e-4)
+    assert res["DENSE_RESOLUTION"] == pytest.approx(0.858, abs=5e-4)
+    assert res["FOOTPRINT_WIDTH"] == pytest.approx(7.827, abs=5e-4)
+    assert res["DISTANCE_FOR_TARGET"] == pytest.approx(5.755, abs=5e-4)
+    assert res["RATIO_XYZ"] is None
+    text = html.read_text(encoding="utf-8")
+    assert "0.2146" in text and "1.2873" in text
+
+
+def test_rounded_and_ratios(qgis_processing):
+    res = qgis_processing.run("geomatics:gsdcalculator",
+                              {**P100, "ROUND_GSD": True, "OBSERVED_SXYZ": 7.6,
+                               "OBSERVED_DENSE_STD": 1.4})
+    assert res["SIGMA_XYZ"] == pytest.approx(1.26)
+    assert res["DENSE_RESOLUTION"] == pytest.approx(0.84)
+    assert round(res["RATIO_XYZ"], 2) == 6.03
+    assert res["RATIO_DENSE"] == pytest.approx(1.4 / 0.84)
+
+
+def test_camera_preset(qgis_processing):
+    from geomatics_toolbox.algorithms.gsd_calculator import CAMERA_KEYS
+    res = qgis_processing.run("geomatics:gsdcalculator",
+                              {"CAMERA": CAMERA_KEYS.index("nikon_p100"), "DISTANCE": 5.88})
+    assert res["GSD"] == pytest.approx(0.21455, abs=5e-6)
+    assert res["FOOTPRINT_HEIGHT"] == pytest.approx(5.88 * 4.592 / 4.6)
+
+
+@pytest.mark.parametrize("params, name", [
+    ({**P100, "FOCAL_LENGTH": 0}, "focal_length"),
+    ({**P100, "DISTANCE": 0}, "distance"),
+    ({**P100, "IMAGE_WIDTH": 0}, "image_width"),
+    ({**P100, "PYRAMID_LEVEL": 1.5}, "pyramid_level"),
+    ({**P100, "SUBSAMPLING_STEP": 0.5}, "subsampling_step"),
+    ({"DISTANCE": 5.88, "SENSOR_WIDTH": 6.123, "IMAGE_WIDTH": 3648}, "FOCAL_LENGTH"),
+])
+def test_bad_input_raises_processing_exception(qgis_processing, params, name):
+    from qgis.core import QgsProcessingException
+    with pytest.raises(QgsProcessingException) as err:
+        qgis_processing.run("geomatics:gsdcalculator", params)
+    assert name in str(err.value)
+
+
+def test_negative_focal_length_refused_by_qgis(qgis_processing):
+    from qgis.core import QgsProcessingException
+    with pytest.raises(QgsProcessingException, match="FOCAL_LENGTH"):
+        qgis_processing.run("geomatics:gsdcalculator", {**P100, "FOCAL_LENGTH": -4.6})
+
+
+def test_batch_table(qgis_processing, tmp_path):
+    src = tmp_path / "cams.csv"
+    with open(src, "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["label", "camera", "distance", "sensor_width", "image_width",
+                    "focal_length", "observed_sxyz"])
+        w.writerow(["paper", "", 5.88, 6.123, 3648, 4.6, 3.85])
+        w.writerow(["p4rtk", "dji_p4rtk", 100, "", "", "", ""])
+    out = tmp_path / "gsd_out.csv"
+    res = qgis_processing.run("geomatics:gsdbatch", {"INPUT": str(src), "ROUND_GSD": True,
+                                                     "OUTPUT": str(out)})
+    assert res["OUTPUT"] == str(out)
+    rows = list(csv.DictReader(open(out, newline="")))
+    assert [r["label"] for r in rows] == ["paper", "p4rtk"]
+    assert float(rows[0]["sigma_xyz_mm"]) == pytest.approx(1.26)
+    assert round(float(rows[0]["ratio_xyz"]), 2) == 3.06
+    assert float(rows[1]["gsd_cm"]) == pytest.approx(round(100 / 36.5, 2), abs=0.011)
+
+
+def test_batch_bad_row_names_row_and_column(qgis_processing, tmp_path):
+    from qgis.core import QgsProcessingException
+    src = tmp_path / "bad.csv"
+    src.write_text("distance,sensor_width,image_width,focal_length\n5.88,6.123,3648,4.6\n"
+                   "5.88,6.123,3648,-1\n")
+    out = tmp_path / "never.csv"
+    with pytest.raises(QgsProcessingException, match="Row 2.*focal_length"):
+        qgis_processing.run("geomatics:gsdbatch", {"INPUT": str(src), "OUTPUT": str(out)})
