@@ -1,0 +1,889 @@
+"""Accuracy report of a GCP polynomial rectification (criteria C1–C7 of the seed paper).
+
+Criteria (Tishreen Univ. J. Eng. Sci. 38(2), 2016; residuals ``v = predicted − given``
+in map units, ``n`` GCPs, ``N`` coefficients per axis):
+
+* C1 per-point ``RMS_i = sqrt(v_xi² + v_yi²)``;
+* C2 total ``RMS_T = sqrt(Σ(v_xi² + v_yi²)/n)`` (divisor ``n``, as in the paper's
+  tables), with ``RMS_x``, ``RMS_y``. The QGIS Georeferencer's "mean error"
+  (``QgsGeoreferencerMainWindow::calculateMeanError``) divides by ``n − N`` instead:
+  ``sqrt(Σ(v_xi² + v_yi²)/(n − N))`` — reported as well, labelled;
+* C3 contribution ``C_i = RMS_i / RMS_T``;
+* C4 tolerance from the ground resolution ``GR``: map scale ``S = 20000·GR`` (a
+  0.25 mm map element seen over 5 pixels) and the analogue rule ``RMS_T ≤
+  (0.2…0.3 mm)·S`` become the band ``4·GR … 6·GR``: ``RMS_T ≤ 4·GR`` meets the strict
+  end, ``≤ 6·GR`` is accepted, above is rejected;
+* C5 per-point limit ``RMS_i ≤ 0.25 mm·S = 5·GR``;
+* C6 distribution: at least 68 % (strict variant 90 %) of the points have
+  ``RMS_i ≤ RMS_T``;
+* C7 no directional bias: sign balance of ``v_x``, ``v_y`` per image quadrant,
+  inner vs edge mean radial residual, and a residual-vector plot.
+
+Beyond the paper: independent check points (never used in the fit), leave-one-out
+residuals of every GCP, all three orders side by side with a recommended order
+(never one the redundancy cannot support) and suggested points to drop.
+"""
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional, Sequence
+
+import numpy as np
+
+from . import report as rep
+from .gcp_io import GCPSet
+from .polynomial import (IllConditionedError, MAX_CONDITION, PolynomialModel,
+                         fit_polynomial, leave_one_out, n_terms, residuals)
+from .progress import Monitor
+
+CITATION = ("Criteria after: Tishreen University Journal for Research and Scientific Studies "
+            "— Engineering Sciences Series 38(2), 2016, 'criteria to judge the geometric "
+            "correction of satellite images by 2-D polynomials'.")
+
+#: fraction of points that must have RMS_i ≤ RMS_T (C6) and its strict variant
+RULE_68 = 0.68
+RULE_90 = 0.90
+#: mm on the map of the per-point limit (C5) and the tolerance band (C4)
+POINT_LIMIT_MM = 0.25
+BAND_MM = (0.2, 0.3)
+SCALE_FACTOR = 20000.0
+
+
+def min_redundancy(order: int) -> int:
+    """Redundancy ``n − N`` needed before an order is *recommended*: ``max(2, ⌈N/2⌉)``
+    (order 1: n ≥ 5, order 2: n ≥ 9, order 3: n ≥ 15)."""
+    return max(2, math.ceil(n_terms(order) / 2))
+
+
+# ---------------------------------------------------------------------- residual stats
+@dataclass
+class ResidualStats:
+    """Criteria C1–C6 (and C7 when positions are known) for one set of residuals."""
+
+    ids: List[str]
+    vx: np.ndarray
+    vy: np.ndarray
+    rms_i: np.ndarray
+    c_i: np.ndarray
+    rms_x: float
+    rms_y: float
+    rms_t: float
+    n: int
+    n_terms: Optional[int]
+    rms_t_qgis: Optional[float]
+    rms_x_qgis: Optional[float]
+    rms_y_qgis: Optional[float]
+    gr: Optional[float]
+    n_within: int
+    largest_id: str
+    largest_rms: float
+    largest_c: float
+    bias: Optional[dict] = None
+
+    # --- derived criteria
+    @property
+    def frac_within(self) -> float:
+        return self.n_within / self.n if self.n else float("nan")
+
+    @property
+    def within(self) -> np.ndarray:
+        return self.rms_i <= self.rms_t + 1e-12
+
+    @property
+    def scale(self) -> Optional[float]:
+        """Map scale number ``S = 20000·GR``."""
+        return None if self.gr is None else SCALE_FACTOR * self.gr
+
+    @property
+    def band(self):
+        """``(4·GR, 6·GR)`` — RMS_T tolerance band (C4)."""
+        if self.gr is None:
+            return None
+        s = self.scale
+        return (BAND_MM[0] * 1e-3 * s, BAND_MM[1] * 1e-3 * s)
+
+    @property
+    def point_limit(self) -> Optional[float]:
+        """``0.25 mm·S = 5·GR`` (C5)."""
+        return None if self.gr is None else POINT_LIMIT_MM * 1e-3 * self.scale
+
+    @property
+    def over_limit(self) -> np.ndarray:
+        lim = self.point_limit
+        return np.zeros(self.n, bool) if lim is None else self.rms_i > lim
+
+    @property
+    def c4(self) -> Optional[str]:
+        """'strict' (≤ 4·GR), 'accepted' (≤ 6·GR) or 'rejected'; None without GR."""
+        if self.band is None:
+            return None
+        lo, hi = self.band
+        if self.rms_t <= lo:
+            return "strict"
+        return "accepted" if self.rms_t <= hi else "rejected"
+
+    @property
+    def c5(self) -> Optional[bool]:
+        return None if self.gr is None else not self.over_limit.any()
+
+    @property
+    def c6(self) -> bool:
+        return self.frac_within >= RULE_68
+
+    @property
+    def c6_strict(self) -> bool:
+        return self.frac_within >= RULE_90
+
+    @property
+    def c7(self) -> Optional[bool]:
+        return None if self.bias is None else not self.bias["flags"]
+
+    @property
+    def verdict(self) -> str:
+        """'accepted' when C4 (≤ 6·GR), C5 and C6 hold; 'rejected' otherwise;
+        'undetermined' without GR. A C7 bias flag adds ' (bias warning)'."""
+        if self.gr is None:
+            return "undetermined"
+        ok = self.c4 in ("strict", "accepted") and self.c5 and self.c6
+        out = "accepted" if ok else "rejected"
+        if self.c7 is False:
+            out += " (bias warning)"
+        return out
+
+    def reasons(self) -> List[str]:
+        """Plain-language list of failed criteria."""
+        out = []
+        if self.gr is not None:
+            lo, hi = self.band
+            if self.c4 == "rejected":
+                out.append(f"C4: RMS_T {self.rms_t:.3f} > 6·GR = {hi:.3f}")
+            if not self.c5:
+                bad = [i for i, o in zip(self.ids, self.over_limit) if o]
+                out.append(f"C5: {len(bad)} point(s) over the point limit "
+                           f"{self.point_limit:.3f}: {', '.join(bad)}")
+        if not self.c6:
+            out.append(f"C6: only {self.n_within}/{self.n} ({100 * self.frac_within:.0f} %) "
+                       "points within RMS_T (< 68 %)")
+        if self.c7 is False:
+            out.extend("C7: " + f for f in self.bias["flags"])
+        return out
+
+    def as_dict(self) -> dict:
+        d = {
+            "n": self.n, "rms_x": self.rms_x, "rms_y": self.rms_y, "rms_t": self.rms_t,
+            "divisor": "n",
+            "n_terms_per_axis": self.n_terms,
+            "rms_t_qgis_n_minus_N": self.rms_t_qgis, "rms_x_qgis_n_minus_N": self.rms_x_qgis,
+            "rms_y_qgis_n_minus_N": self.rms_y_qgis,
+            "n_within_rms_t": self.n_within, "fraction_within_rms_t": self.frac_within,
+            "rule_68": self.c6, "rule_90": self.c6_strict,
+            "largest": {"id": self.largest_id, "rms_i": self.largest_rms, "c_i": self.largest_c},
+            "gr": self.gr, "scale": self.scale,
+            "band": list(self.band) if self.band else None,
+            "point_limit": self.point_limit,
+            "c4": self.c4, "c5": self.c5, "c6": self.c6, "c7": self.c7,
+            "verdict": self.verdict, "reasons": self.reasons(),
+            "points": [{"id": i, "vx": float(a), "vy": float(b), "rms_i": float(r),
+                        "c_i": float(c), "within_rms_t": bool(w), "over_limit": bool(o)}
+                       for i, a, b, r, c, w, o in zip(self.ids, self.vx, self.vy, self.rms_i,
+                                                      self.c_i, self.within, self.over_limit)],
+            "bias": self.bias,
+        }
+        return d
+
+
+def evaluate_residuals(vx, vy, *, ids: Optional[Sequence] = None, gr: Optional[float] = None,
+                       n_terms_per_axis: Optional[int] = None,
+                       pixel: Optional[np.ndarray] = None,
+                       map_xy: Optional[np.ndarray] = None,
+                       image_size: Optional[Sequence[int]] = None,
+                       centre_map: Optional[Sequence[float]] = None) -> ResidualStats:
+    """Criteria C1–C6 (C7 when positions are given) for residuals ``vx, vy``.
+
+    Parameters
+    ----------
+    vx, vy : array_like (n,)
+        Residuals ``predicted − given`` in map units.
+    ids : sequence, optional
+        Point ids (default '1' … 'n').
+    gr : float, optional
+        Ground resolution (pixel size on the ground, map units); enables C4, C5.
+    n_terms_per_axis : int, optional
+        ``N``; enables the QGIS-style RMS with divisor ``n − N``.
+    pixel, map_xy, image_size, centre_map : optional
+        GCP image positions ``(col, row)``, map positions, image ``(width, height)`` and
+        the map position of the image centre, for the bias checks (C7).
+
+    Examples
+    --------
+    >>> s = evaluate_residuals([1.0, -1.0], [0.0, 0.0], gr=0.5)
+    >>> round(s.rms_t, 3), s.c4
+    (1.0, 'strict')
+    """
+    vx = np.asarray(vx, float).ravel()
+    vy = np.asarray(vy, float).ravel()
+    n = vx.size
+    if n == 0 or vy.size != n:
+        raise ValueError("vx and vy must be non-empty and of equal length.")
+    if not (np.isfinite(vx).all() and np.isfinite(vy).all()):
+        raise ValueError("residuals contain NaN or infinite values.")
+    if gr is not None and not (np.isfinite(gr) and gr > 0):
+        raise ValueError(f"GR (ground resolution) must be a positive number, got {gr!r}.")
+    ids = [str(i) for i in (ids if ids is not None else range(1, n + 1))]
+    rms_i = np.hypot(vx, vy)
+    ssx, ssy = float(np.sum(vx ** 2)), float(np.sum(vy ** 2))
+    rms_x, rms_y = math.sqrt(ssx / n), math.sqrt(ssy / n)
+    rms_t = math.sqrt((ssx + ssy) / n)
+    c_i = rms_i / rms_t if rms_t > 0 else np.zeros(n)
+    q_t = q_x = q_y = None
+    if n_terms_per_axis is not None and n > n_terms_per_axis:
+        dof = n - n_terms_per_axis
+        q_t = math.sqrt((ssx + ssy) / dof)
+        q_x, q_y = math.sqrt(ssx / dof), math.sqrt(ssy / dof)
+    elif n_terms_per_axis is not None and n == n_terms_per_axis:
+        q_t = q_x = q_y = 0.0  # QGIS shows 0 when n equals the minimum
+    k = int(np.argmax(rms_i))
+    s = ResidualStats(ids, vx, vy, rms_i, c_i, rms_x, rms_y, rms_t, n, n_terms_per_axis,
+                      q_t, q_x, q_y, None if gr is None else float(gr),
+                      int(np.sum(rms_i <= rms_t + 1e-12)), ids[k], float(rms_i[k]),
+                      float(c_i[k]))
+    if pixel is not None:
+        s.bias = bias_checks(vx, vy, np.asarray(pixel, float), map_xy=map_xy,
+                             image_size=image_size, centre_map=centre_map)
+    return s
+
+
+def _binom_two_sided(k: int, n: int) -> float:
+    if n == 0:
+        return 1.0
+    p = [math.comb(n, i) * 0.5 ** n for i in range(n + 1)]
+    pk = p[k]
+    return float(min(1.0, sum(v for v in p if v <= pk + 1e-15)))
+
+
+def bias_checks(vx, vy, pixel, *, map_xy=None, image_size=None, centre_map=None) -> dict:
+    """C7: directional bias of residuals over the image.
+
+    * per image quadrant (split at the image centre, or the GCP centroid without an
+      image size): counts of positive/negative ``v_x``, ``v_y`` and the mean residual
+      vector; a quadrant with ≥ 3 points whose residuals all share one sign on an axis,
+      or whose mean exceeds 2 standard errors, is flagged;
+    * over all points: two-sided sign test per axis (flag when p < 0.05);
+    * inner vs edge: the radial component of each residual (positive = pointing away
+      from the image centre, in map space) is averaged over inner points (normalised
+      image radius ≤ 0.5) and edge points; opposite signs with a difference above two
+      standard errors are flagged — the "negative inside, positive at the edges"
+      pattern that asks for a higher order.
+    """
+    vx = np.asarray(vx, float)
+    vy = np.asarray(vy, float)
+    col, row = pixel[:, 0], pixel[:, 1]
+    if image_size is not None:
+        cc, rc = image_size[0] / 2.0, image_size[1] / 2.0
+        hw, hh = image_size[0] / 2.0, image_size[1] / 2.0
+    else:
+        cc, rc = float(col.mean()), float(row.mean())
+        hw = float(np.max(np.abs(col - cc))) or 1.0
+        hh = float(np.max(np.abs(row - rc))) or 1.0
+    rms = math.sqrt(float(np.mean(vx ** 2 + vy ** 2)) / 2.0) or 1e-30
+    flags = []
+    quads = []
+    names = (("upper-left", (col < cc) & (row < rc)), ("upper-right", (col >= cc) & (row < rc)),
+             ("lower-left", (col < cc) & (row >= rc)), ("lower-right", (col >= cc) & (row >= rc)))
+    for name, m in names:
+        k = int(m.sum())
+        q = {"quadrant": name, "n": k,
+             "vx_pos": int((vx[m] > 0).sum()), "vx_neg": int((vx[m] < 0).sum()),
+             "vy_pos": int((vy[m] > 0).sum()), "vy_neg": int((vy[m] < 0).sum()),
+             "mean_vx": float(vx[m].mean()) if k else float("nan"),
+             "mean_vy": float(vy[m].mean()) if k else float("nan")}
+        q["flag"] = ""
+        if k >= 3:
+            one_sided = [ax for ax, pos, neg in (("v_x", q["vx_pos"], q["vx_neg"]),
+                                                  ("v_y", q["vy_pos"], q["vy_neg"]))
+                         if pos == k or neg == k]
+            big = [ax for ax, mean in (("v_x", q["mean_vx"]), ("v_y", q["mean_vy"]))
+                   if abs(mean) > 2 * rms / math.sqrt(k)]
+            why = sorted(set(one_sided) & set(big)) if one_sided else []
+            if why:
+                q["flag"] = f"{name}: all {', '.join(why)} of one sign and mean beyond 2 SE"
+                flags.append(q["flag"])
+        quads.append(q)
+    signs = {}
+    for ax, v in (("v_x", vx), ("v_y", vy)):
+        pos, neg = int((v > 0).sum()), int((v < 0).sum())
+        p = _binom_two_sided(pos, pos + neg)
+        signs[ax] = {"positive": pos, "negative": neg, "p_value": p}
+        if p < 0.05:
+            flags.append(f"{ax} signs unbalanced ({pos} positive, {neg} negative, "
+                         f"sign test p = {p:.3f})")
+    radial = None
+    if map_xy is not None:
+        mxy = np.asarray(map_xy, float)
+        c = np.asarray(centre_map, float) if centre_map is not None else mxy.mean(axis=0)
+        d = mxy - c
+        dist = np.hypot(d[:, 0], d[:, 1])
+        with np.errstate(invalid="ignore", divide="ignore"):
+            rad = np.where(dist > 0, (vx * d[:, 0] + vy * d[:, 1]) / dist, 0.0)
+        rnorm = np.maximum(np.abs(col - cc) / hw, np.abs(row - rc) / hh)
+        inner = rnorm <= 0.5
+        split = "normalised image radius ≤ 0.5"
+        if inner.sum() < 2 or (~inner).sum() < 2:
+            med = float(np.median(rnorm))
+            inner = rnorm <= med
+            split = f"normalised image radius ≤ median ({med:.2f})"
+        radial = {"split": split, "n_inner": int(inner.sum()), "n_edge": int((~inner).sum()),
+                  "radial": rad.tolist()}
+        if inner.sum() >= 2 and (~inner).sum() >= 2:
+            mi, me = float(rad[inner].mean()), float(rad[~inner].mean())
+            se = math.sqrt(float(rad[inner].var(ddof=1)) / inner.sum()
+                           + float(rad[~inner].var(ddof=1)) / (~inner).sum())
+            radial.update(mean_inner=mi, mean_edge=me, se_difference=se)
+            if mi * me < 0 and abs(me - mi) > 2 * se:
+                pattern = ("pointing inwards at the centre and outwards at the edges"
+                           if mi < 0 else "pointing outwards at the centre and inwards at "
+                           "the edges")
+                flags.append(f"radial pattern: mean radial residual {mi:+.3f} inside, "
+                             f"{me:+.3f} at the edges ({pattern}) — raise the order")
+    return {"quadrants": quads, "signs": signs, "radial": radial, "flags": flags,
+            "centre_pixel": [cc, rc]}
+
+
+# ---------------------------------------------------------------------- full evaluation
+@dataclass
+class OrderResult:
+    """Evaluation of one polynomial order on a GCP set."""
+
+    order: int
+    n_terms: int
+    n_gcps: int
+    model: Optional[PolynomialModel] = None
+    error: Optional[str] = None
+    stats: Optional[ResidualStats] = None
+    pixel_res: Optional[np.ndarray] = None  # (n, 2) col,row residuals in pixels
+    loo: Optional[np.ndarray] = None  # (n, 2) leave-one-out residuals, map units
+    loo_rms: Optional[float] = None
+    check: Optional[ResidualStats] = None
+    check_pixel_res: Optional[np.ndarray] = None
+    drops: List[dict] = field(default_factory=list)
+
+    @property
+    def ok(self) -> bool:
+        return self.model is not None
+
+    @property
+    def redundancy(self) -> int:
+        return self.n_gcps - self.n_terms
+
+    @property
+    def supported(self) -> bool:
+        """The redundancy is at least :func:`min_redundancy`."""
+        return self.ok and self.redundancy >= min_redundancy(self.order)
+
+    def as_dict(self) -> dict:
+        d = {"order": self.order, "n_terms_per_axis": self.n_terms, "n_gcps": self.n_gcps,
+             "redundancy": self.redundancy, "min_redundancy_to_recommend":
+                 min_redundancy(self.order), "supported": self.supported, "error": self.error}
+        if self.ok:
+            d["model"] = self.model.as_dict()
+            d["fit"] = self.stats.as_dict()
+            d["pixel_residuals"] = self.pixel_res.tolist()
+            d["leave_one_out"] = {"residuals": self.loo.tolist(), "rms_t": self.loo_rms}
+            d["check_points"] = None if self.check is None else self.check.as_dict()
+            d["suggested_drops"] = self.drops
+        return d
+
+
+@dataclass
+class GcpAccuracy:
+    """The whole report: the chosen order, all three orders and a recommendation."""
+
+    gcps: GCPSet
+    order: int
+    gr: Optional[float]
+    gr_source: str
+    image_size: Optional[tuple]
+    results: Dict[int, OrderResult]
+    recommended: Optional[int]
+    recommendation: str
+    crs: str = ""
+    units: str = "map units"
+    notes: List[str] = field(default_factory=list)
+
+    @property
+    def selected(self) -> OrderResult:
+        return self.results[self.order]
+
+    @property
+    def verdict(self) -> str:
+        r = self.selected
+        return r.stats.verdict if r.ok else "not computed"
+
+    def summary_numbers(self) -> dict:
+        """Flat numbers for Processing outputs (NaN when not available)."""
+        r = self.selected
+        nan = float("nan")
+        s = r.stats
+        c = r.check
+        return {
+            "RMS_X": s.rms_x if s else nan, "RMS_Y": s.rms_y if s else nan,
+            "RMS_T": s.rms_t if s else nan,
+            "RMS_T_QGIS": s.rms_t_qgis if s and s.rms_t_qgis is not None else nan,
+            "GR": self.gr if self.gr is not None else nan,
+            "SCALE": s.scale if s and s.scale else nan,
+            "N_GCP": r.n_gcps, "REDUNDANCY": r.redundancy,
+            "N_WITHIN": s.n_within if s else 0,
+            "LOO_RMS_T": r.loo_rms if r.loo_rms is not None else nan,
+            "CHECK_RMS_T": c.rms_t if c else nan,
+            "N_CHECK": c.n if c else 0,
+            "RECOMMENDED_ORDER": self.recommended if self.recommended else 0,
+            "ACCEPTED": 1 if self.verdict.startswith("accepted") else 0,
+        }
+
+    def as_dict(self) -> dict:
+        g = self.gcps
+        return {
+            "title": "GCP polynomial rectification — accuracy report",
+            "source": g.source, "crs": self.crs, "units": self.units,
+            "order": self.order, "verdict": self.verdict,
+            "gr": self.gr, "gr_source": self.gr_source,
+            "image_size": list(self.image_size) if self.image_size else None,
+            "recommended_order": self.recommended, "recommendation": self.recommendation,
+            "conventions": {
+                "pixel": "GDAL pixel/line: (0,0) = top-left corner of the top-left pixel, "
+                         "rows grow downwards",
+                "residual": "v = predicted − given (map units); pixel residual = given "
+                            "pixel − inverse(given map point)",
+                "rms_t": "sqrt(Σ(vx²+vy²)/n); rms_t_qgis_n_minus_N = sqrt(Σ(vx²+vy²)/(n−N))"
+                         " as the QGIS Georeferencer",
+            },
+            "points": [{"id": i, "col": float(p[0]), "row": float(p[1]), "X": float(m[0]),
+                        "Y": float(m[1]), "enabled": bool(e), "role": str(r)}
+                       for i, p, m, e, r in zip(g.ids, g.pixel, g.map, g.enabled, g.role)],
+            "orders": {str(k): v.as_dict() for k, v in self.results.items()},
+            "notes": self.notes + list(g.notes),
+            "citation": CITATION,
+        }
+
+
+def _evaluate_order(g: GCPSet, order: int, gr, image_size, *, max_condition,
+                    centre_map_from=None) -> OrderResult:
+    fit = g.fit_mask
+    pix, mp = g.pixel[fit], g.map[fit]
+    ids = [i for i, k in zip(g.ids, fit) if k]
+    w = None if g.weight is None else g.weight[fit]
+    res = OrderResult(order, n_terms(order), int(fit.sum()))
+    try:
+        model = fit_polynomial(pix, mp, order=order, weights=w, max_condition=max_condition)
+    except (ValueError, IllConditionedError) as exc:
+        res.error = str(exc)
+        return res
+    res.model = model
+    vx, vy = residuals(model, pix, mp)
+    centre = None
+    if image_size is not None:
+        cx, cy = model.forward(np.array([image_size[0] / 2.0]), np.array([image_size[1] / 2.0]))
+        centre = (float(cx[0]), float(cy[0]))
+    res.stats = evaluate_residuals(vx, vy, ids=ids, gr=gr, n_terms_per_axis=model.n_terms,
+                                   pixel=pix, map_xy=mp, image_size=image_size,
+                                   centre_map=centre)
+    ic, ir = model.inverse(mp[:, 0], mp[:, 1])
+    res.pixel_res = np.column_stack([pix[:, 0] - ic, pix[:, 1] - ir])
+    lx, ly = leave_one_out(model, pix, mp)
+    res.loo = np.column_stack([lx, ly])
+    ok = np.isfinite(lx) & np.isfinite(ly)
+    res.loo_rms = (math.sqrt(float(np.mean(lx[ok] ** 2 + ly[ok] ** 2)))
+                   if ok.all() and model.redundancy > 0 else None)
+    chk = g.check_mask
+    if chk.any():
+        cpix, cmp_ = g.pixel[chk], g.map[chk]
+        cvx, cvy = residuals(model, cpix, cmp_)
+        res.check = evaluate_residuals(cvx, cvy, ids=[i for i, k in zip(g.ids, chk) if k],
+                                       gr=gr)
+        cc, cr = model.inverse(cmp_[:, 0], cmp_[:, 1])
+        res.check_pixel_res = np.column_stack([cpix[:, 0] - cc, cpix[:, 1] - cr])
+    res.drops = _suggest_drops(pix, mp, ids, w, order, gr, max_condition)
+    return res
+
+
+def _suggest_drops(pix, mp, ids, w, order, gr, max_condition) -> List[dict]:
+    """Drop the worst point over the C5 limit and refit, while the redundancy stays at
+    least :func:`min_redundancy` and at most a quarter of the points are dropped."""
+    if gr is None:
+        return []
+    limit = POINT_LIMIT_MM * 1e-3 * SCALE_FACTOR * gr
+    keep = np.ones(len(ids), bool)
+    out = []
+    max_drop = len(ids) // 4
+    while len(out) < max_drop:
+        n = int(keep.sum())
+        if n - 1 - n_terms(order) < min_redundancy(order):
+            break
+        try:
+            m = fit_polynomial(pix[keep], mp[keep], order=order,
+                               weights=None if w is None else w[keep],
+                               max_condition=max_condition)
+        except ValueError:
+            break
+        vx, vy = residuals(m, pix[keep], mp[keep])
+        r = np.hypot(vx, vy)
+        k = int(np.argmax(r))
+        if r[k] <= limit:
+            break
+        idx = np.flatnonzero(keep)[k]
+        keep[idx] = False
+        try:
+            m2 = fit_polynomial(pix[keep], mp[keep], order=order,
+                                weights=None if w is None else w[keep],
+                                max_condition=max_condition)
+        except ValueError:
+            break
+        vx2, vy2 = residuals(m2, pix[keep], mp[keep])
+        rms2 = math.sqrt(float(np.mean(vx2 ** 2 + vy2 ** 2)))
+        out.append({"id": ids[idx], "rms_i": float(r[k]), "rms_t_after": rms2,
+                    "n_after": int(keep.sum())})
+    return out
+
+
+def _recommend(results: Dict[int, OrderResult]):
+    cands = [r for r in results.values() if r.supported]
+    if not cands:
+        avail = [r for r in results.values() if r.ok]
+        why = ("no order has enough redundancy to be recommended (order t needs "
+               "n − N ≥ max(2, ⌈N/2⌉): n ≥ 5, 9, 15 GCPs for orders 1, 2, 3)")
+        if avail:
+            why += f"; with {avail[0].n_gcps} GCPs add points before trusting any order"
+        return None, why
+    use_check = all(r.check is not None and r.check.n >= 3 for r in cands)
+    key = "check-point RMS_T" if use_check else "leave-one-out RMS_T"
+
+    def score(r):
+        v = r.check.rms_t if use_check else r.loo_rms
+        return float("inf") if v is None else v
+
+    best = min(score(r) for r in cands)
+    pick = min((r for r in cands if score(r) <= 1.10 * best), key=lambda r: r.order)
+    parts = [f"order {r.order}: {score(r):.3f}" for r in cands]
+    unsupported = [r.order for r in results.values() if r.ok and not r.supported]
+    why = (f"order {pick.order}: the lowest supported order whose {key} is within 10 % of "
+           f"the best ({'; '.join(parts)})")
+    if unsupported:
+        why += (f"; order(s) {', '.join(map(str, unsupported))} not considered: redundancy "
+                "too small")
+    return pick.order, why
+
+
+def evaluate_gcps(gcps: GCPSet, *, order: int = 2, gr: Optional[float] = None,
+                  image_size: Optional[Sequence[int]] = None, orders=(1, 2, 3),
+                  max_condition: float = MAX_CONDITION, units: str = "m", crs: str = "",
+                  progress=None, cancel=None) -> GcpAccuracy:
+    """Evaluate a GCP set for ``order`` and, side by side, every order of ``orders``.
+
+    Parameters
+    ----------
+    gcps : GCPSet
+        Points (disabled ones ignored; role 'check' kept out of the fit).
+    order : {1, 2, 3}
+        The order to judge (the one the rectification uses).
+    gr : float, optional
+        Ground resolution (map units per pixel). Default: the ground pixel size implied
+        by the affine (order-1) fit, ``sqrt(|det J|)``.
+    image_size : (width, height), optional
+        Image size in pixels (quadrants, radial bias, footprint of the plot).
+    orders : iterable of int
+        Orders compared (always includes ``order``).
+    max_condition : float
+        Condition-number limit of :func:`~.polynomial.fit_polynomial`.
+
+    Raises
+    ------
+    ValueError
+        When the requested ``order`` cannot be fitted (too few or degenerate GCPs);
+        other orders that cannot be fitted are reported as such.
+    """
+    mon = Monitor(progress, cancel)
+    if order not in (1, 2, 3):
+        raise ValueError(f"order must be 1, 2 or 3, got {order!r}.")
+    if gr is not None and not (np.isfinite(gr) and gr > 0):
+        raise ValueError(f"GR (ground resolution) must be a positive number, got {gr!r}; "
+                         "leave it empty to derive it from the GCPs.")
+    fit = gcps.fit_mask
+    if fit.sum() < 3:
+        raise ValueError(f"Only {int(fit.sum())} enabled GCPs (role 'gcp'); a polynomial "
+                         "needs at least 3 (order 1), 6 (order 2) or 10 (order 3).")
+    notes = []
+    gr_source = "given"
+    if gr is None:
+        try:
+            aff = fit_polynomial(gcps.pixel[fit], gcps.map[fit], order=1,
+                                 max_condition=max_condition)
+        except ValueError as exc:
+            raise ValueError(f"Cannot derive the ground resolution: {exc}") from None
+        gr = aff.pixel_size()
+        gr_source = "from the GCPs (affine fit: sqrt|det J|)"
+    mon.step(0.05)
+    results = {}
+    todo = sorted(set(orders) | {order})
+    for k, t in enumerate(todo):
+        results[t] = _evaluate_order(gcps, t, gr, image_size, max_condition=max_condition)
+        mon.step(0.05 + 0.9 * (k + 1) / len(todo))
+    if not results[order].ok:
+        raise ValueError(results[order].error)
+    rec, why = _recommend(results)
+    if gcps.check_mask.sum() == 0:
+        notes.append("No independent check points (role 'check'): accuracy is judged on the "
+                     "fit residuals and leave-one-out residuals only.")
+    mon.update(1.0)
+    return GcpAccuracy(gcps, order, float(gr), gr_source,
+                       tuple(int(v) for v in image_size) if image_size is not None else None,
+                       results, rec, why, crs or gcps.crs, units, notes)
+
+
+# ---------------------------------------------------------------------- outputs
+def _mark(ok) -> str:
+    if ok is None:
+        return "–"
+    return '<span class="ok">pass</span>' if ok else '<span class="fail">fail</span>'
+
+
+def to_html(acc: GcpAccuracy, *, lang: str = "en", extra_params: Optional[dict] = None) -> str:
+    """Self-contained HTML report (tables, residual-vector SVG, comparison of orders)."""
+    r = acc.selected
+    s = r.stats
+    u = acc.units
+    g = acc.gcps
+    parts = []
+    verdict_cls = "ok" if acc.verdict.startswith("accepted") else "fail"
+    parts.append(f'<p>Verdict for order {acc.order}: <span class="{verdict_cls}">'
+                 f'{rep.esc(acc.verdict.upper())}</span>'
+                 + (" — " + rep.esc("; ".join(s.reasons())) if s.reasons() else "") + "</p>")
+    if acc.recommended:
+        parts.append(f"<p>Recommended order: <b>{acc.recommended}</b> — "
+                     f"{rep.esc(acc.recommendation)}</p>")
+    else:
+        parts.append(f'<p class="fail">No order recommended: {rep.esc(acc.recommendation)}'
+                     "</p>")
+    params = {"GCP source": g.source or "–", "CRS": _crs_name(acc.crs),
+              "map units": u, "order": acc.order,
+              "GCPs used in the fit (n)": r.n_gcps,
+              "coefficients per axis (N)": r.n_terms,
+              "redundancy n − N": r.redundancy,
+              "check points": int(g.check_mask.sum()),
+              "disabled points": int((~g.enabled).sum()),
+              "condition number": f"{r.model.condition:.3g}",
+              "GR (ground resolution)": f"{acc.gr:.4f} {u} ({acc.gr_source})",
+              "map scale S = 20000·GR": f"1 : {s.scale:.0f}",
+              "RMS_T band 4·GR … 6·GR": f"{s.band[0]:.3f} … {s.band[1]:.3f} {u}",
+              "per-point limit 0.25 mm·S": f"{s.point_limit:.3f} {u}"}
+    if acc.image_size:
+        params["image size"] = f"{acc.image_size[0]} × {acc.image_size[1]} px"
+    params.update(extra_params or {})
+    parts.append(rep.html_params(params, title="Set-up"))
+    # criteria
+    crit = [
+        ("C2 RMS_x, RMS_y (divisor n)", f"{s.rms_x:.3f}, {s.rms_y:.3f} {u}", "–"),
+        ("C2 RMS_T (divisor n)", f"{s.rms_t:.3f} {u} = {s.rms_t / acc.gr:.2f} px", "–"),
+        ("RMS_T with divisor n − N (QGIS Georeferencer 'mean error')",
+         "–" if s.rms_t_qgis is None else f"{s.rms_t_qgis:.3f} {u}", "–"),
+        ("C4 RMS_T within 4·GR … 6·GR",
+         f"{s.rms_t:.3f} vs {s.band[0]:.3f} … {s.band[1]:.3f}",
+         {"strict": '<span class="ok">pass (strict)</span>',
+          "accepted": '<span class="ok">pass</span>',
+          "rejected": '<span class="fail">fail</span>'}[s.c4]),
+        ("C5 every RMS_i ≤ 0.25 mm·S",
+         f"max {s.largest_rms:.3f} (point {s.largest_id}) vs {s.point_limit:.3f}",
+         _mark(s.c5)),
+        ("C6 ≥ 68 % of points with RMS_i ≤ RMS_T",
+         f"{s.n_within}/{s.n} = {100 * s.frac_within:.1f} %", _mark(s.c6)),
+        ("C6 strict: ≥ 90 %", f"{100 * s.frac_within:.1f} %", _mark(s.c6_strict)),
+        ("C7 no directional bias", "; ".join(s.bias["flags"]) if s.bias and s.bias["flags"]
+         else "no flag", _mark(s.c7)),
+        ("leave-one-out RMS_T", "–" if r.loo_rms is None else f"{r.loo_rms:.3f} {u}", "–"),
+        ("independent check points RMS_T",
+         "–" if r.check is None else f"{r.check.rms_t:.3f} {u} (n = {r.check.n})",
+         "–" if r.check is None else
+         ('<span class="ok">within 6·GR</span>' if r.check.rms_t <= s.band[1]
+          else '<span class="fail">over 6·GR</span>')),
+    ]
+    rows = "".join(f'<tr><td class="text">{rep.esc(a)}</td><td class="text">{rep.esc(b)}</td>'
+                   f"<td>{c}</td></tr>" for a, b, c in crit)
+    parts.append("<h2>Criteria</h2><table><tr><th>criterion</th><th>value</th>"
+                 f"<th>result</th></tr>{rows}</table>")
+    # per point
+    heads = ["id", "col", "row", f"v_x ({u})", f"v_y ({u})", f"RMS_i ({u})", "C_i",
+             "v_col (px)", "v_row (px)", "RMS_i (px)", f"LOO |v| ({u})", "≤ RMS_T",
+             "≤ limit"]
+    fitm = g.fit_mask
+    pix = g.pixel[fitm]
+    prow = []
+    for k, pid in enumerate(s.ids):
+        lo = r.loo[k]
+        prow.append([pid, pix[k, 0], pix[k, 1], s.vx[k], s.vy[k], s.rms_i[k], s.c_i[k],
+                     r.pixel_res[k, 0], r.pixel_res[k, 1], float(np.hypot(*r.pixel_res[k])),
+                     float(np.hypot(*lo)) if np.isfinite(lo).all() else None,
+                     "yes" if s.within[k] else "no", "yes" if not s.over_limit[k] else "NO"])
+    parts.append("<h2>Residuals of the GCPs (fit)</h2>" + rep.html_table(heads, prow))
+    if r.check is not None:
+        c = r.check
+        cpix = g.pixel[g.check_mask]
+        crow = [[pid, cpix[k, 0], cpix[k, 1], c.vx[k], c.vy[k], c.rms_i[k],
+                 r.check_pixel_res[k, 0], r.check_pixel_res[k, 1]]
+                for k, pid in enumerate(c.ids)]
+        parts.append("<h2>Independent check points (not used in the fit)</h2>"
+                     + rep.html_table(["id", "col", "row", f"v_x ({u})", f"v_y ({u})",
+                                       f"|v| ({u})", "v_col (px)", "v_row (px)"], crow)
+                     + f"<p>RMS_x {c.rms_x:.3f}, RMS_y {c.rms_y:.3f}, RMS_T {c.rms_t:.3f} {u}"
+                       f" over {c.n} check points.</p>")
+    # plot
+    ext = (0, 0, acc.image_size[0], acc.image_size[1]) if acc.image_size else None
+    parts.append("<h2>Residual vectors over the image footprint</h2>"
+                 + rep.svg_vectors(pix[:, 0], pix[:, 1], s.vx, -s.vy,
+                                   labels=s.ids, extent=ext, invert_y=True, unit=u,
+                                   xlabel="column (px)", ylabel="row (px, downwards)",
+                                   title=f"order {acc.order}: residuals v (map X right, "
+                                         "map Y up)", scale=None)
+                 + '<p class="note">Arrows are drawn at the GCP image positions with '
+                   "components (v_x, v_y) in map axes; for a north-up image this is the true "
+                   "direction.</p>")
+    # bias
+    if s.bias:
+        qrows = [[q["quadrant"], q["n"], f"{q['vx_pos']}/{q['vx_neg']}",
+                  f"{q['vy_pos']}/{q['vy_neg']}", q["mean_vx"], q["mean_vy"], q["flag"] or "–"]
+                 for q in s.bias["quadrants"]]
+        parts.append("<h2>C7 bias checks</h2>" + rep.html_table(
+            ["quadrant", "n", "v_x +/−", "v_y +/−", f"mean v_x ({u})", f"mean v_y ({u})",
+             "flag"], qrows))
+        rad = s.bias.get("radial") or {}
+        if "mean_inner" in rad:
+            parts.append(f"<p>Mean radial residual (positive = away from the image centre): "
+                         f"inner {rad['mean_inner']:+.3f} {u} (n = {rad['n_inner']}), edge "
+                         f"{rad['mean_edge']:+.3f} {u} (n = {rad['n_edge']}); split "
+                         f"{rep.esc(rad['split'])}.</p>")
+    # orders side by side
+    orow = []
+    for t, o in sorted(acc.results.items()):
+        if not o.ok:
+            orow.append([t, o.n_terms, o.n_gcps, o.redundancy, None, None, None, None, None,
+                         "–", "cannot fit: " + (o.error or "")[:160]])
+            continue
+        os_ = o.stats
+        orow.append([t, o.n_terms, o.n_gcps, o.redundancy, os_.rms_t, os_.rms_t_qgis,
+                     o.loo_rms, None if o.check is None else o.check.rms_t,
+                     100 * os_.frac_within, os_.verdict,
+                     ("recommended" if acc.recommended == t else
+                      ("supported" if o.supported else "redundancy too small"))])
+    parts.append("<h2>Orders 1, 2, 3 side by side</h2>" + rep.html_table(
+        ["order", "N", "n", "n − N", f"RMS_T ({u})", f"RMS_T n−N ({u})",
+         f"LOO RMS_T ({u})", f"check RMS_T ({u})", "% ≤ RMS_T", "verdict", "status"], orow))
+    # drops
+    if r.drops:
+        drows = [[d["id"], d["rms_i"], d["rms_t_after"], d["n_after"]] for d in r.drops]
+        parts.append("<h2>Suggested points to drop (over the per-point limit, one at a time)"
+                     "</h2>" + rep.html_table(["id", f"RMS_i ({u})", f"RMS_T after ({u})",
+                                               "n after"], drows)
+                     + '<p class="note">Suggestions only: check these points on the image '
+                       "and on the map before removing them; then re-run.</p>")
+    else:
+        parts.append("<h2>Suggested points to drop</h2><p>None: no point exceeds the "
+                     "per-point limit (or the redundancy does not allow dropping).</p>")
+    # coefficients
+    m = r.model
+    cx, cy = m.raw_coefficients()
+    crow = [[name, a, b, ca, cb] for name, a, b, ca, cb in
+            zip(m.as_dict()["terms"], m.coef_x, m.coef_y, cx, cy)]
+    parts.append("<h2>Coefficients</h2>"
+                 + rep.html_table(["term", "X (normalised u,v)", "Y (normalised u,v)",
+                                   "X (raw col,row)", "Y (raw col,row)"],
+                                  [[a, b, c, f"{d:.10g}", f"{e:.10g}"]
+                                   for a, b, c, d, e in crow], digits=6)
+                 + f'<p class="note">u = (col − {m.pixel_norm.x0:.3f}) / '
+                   f"{m.pixel_norm.scale:.3f}, v = (row − {m.pixel_norm.y0:.3f}) / "
+                   f"{m.pixel_norm.scale:.3f}; X, Y relative to ({m.map_norm.x0:.3f}, "
+                   f"{m.map_norm.y0:.3f}) for the normalised columns.</p>")
+    notes = acc.notes + list(g.notes) + list(m.warnings)
+    notes += ["Pixel convention: GDAL pixel/line, (0, 0) = top-left corner of the image, "
+              "rows grow downwards.",
+              "Residuals v = predicted − given (map units). Pixel residuals = given pixel − "
+              "inverse(given map point).",
+              "RMS_T uses the divisor n (paper); the QGIS Georeferencer divides by n − N.",
+              CITATION]
+    parts.append("<h2>Notes</h2><ul>" + "".join(f"<li>{rep.esc(t)}</li>" for t in notes)
+                 + "</ul>")
+    return rep.html_page("GCP polynomial rectification — accuracy report", "\n".join(parts),
+                         lang=lang)
+
+
+def _crs_name(crs: str) -> str:
+    if not crs:
+        return "unknown"
+    try:
+        from osgeo import osr
+        s = osr.SpatialReference()
+        s.SetFromUserInput(crs)
+        name = s.GetName() or ""
+        code = s.GetAuthorityCode(None)
+        auth = s.GetAuthorityName(None)
+        return f"{name} ({auth}:{code})" if code else (name or crs[:60])
+    except Exception:  # noqa: BLE001 - a name for display only
+        return crs[:60]
+
+
+def to_csv(acc: GcpAccuracy) -> str:
+    """Per-point CSV: every point (GCPs, check points, disabled) for the chosen order."""
+    r = acc.selected
+    s = r.stats
+    g = acc.gcps
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["id", "role", "enabled", "col", "row", "X", "Y", "order", "vx", "vy", "rms_i",
+                "c_i", "v_col_px", "v_row_px", "rms_i_px", "loo_vx", "loo_vy", "loo_rms_i",
+                "within_rms_t", "over_point_limit"])
+    fit_ids = {pid: k for k, pid in enumerate(s.ids)}
+    chk_ids = {pid: k for k, pid in enumerate(r.check.ids)} if r.check else {}
+
+    def f(v):
+        return "" if v is None or not np.isfinite(v) else f"{float(v):.6f}"
+
+    for k, pid in enumerate(g.ids):
+        base = [pid, g.role[k], int(g.enabled[k]), f(g.pixel[k, 0]), f(g.pixel[k, 1]),
+                f(g.map[k, 0]), f(g.map[k, 1]), acc.order]
+        if pid in fit_ids and g.fit_mask[k]:
+            j = fit_ids[pid]
+            lo = r.loo[j]
+            w.writerow(base + [f(s.vx[j]), f(s.vy[j]), f(s.rms_i[j]), f(s.c_i[j]),
+                               f(r.pixel_res[j, 0]), f(r.pixel_res[j, 1]),
+                               f(np.hypot(*r.pixel_res[j])), f(lo[0]), f(lo[1]),
+                               f(np.hypot(*lo)), int(s.within[j]), int(s.over_limit[j])])
+        elif pid in chk_ids and g.check_mask[k]:
+            j = chk_ids[pid]
+            c = r.check
+            w.writerow(base + [f(c.vx[j]), f(c.vy[j]), f(c.rms_i[j]), "",
+                               f(r.check_pixel_res[j, 0]), f(r.check_pixel_res[j, 1]),
+                               f(np.hypot(*r.check_pixel_res[j])), "", "", "", "",
+                               int(c.over_limit[j])])
+        else:
+            w.writerow(base + [""] * 12)
+    return buf.getvalue()
+
+
+def to_json(acc: GcpAccuracy) -> str:
+    """The whole report as JSON (NaN written as null)."""
+    def clean(o):
+        if isinstance(o, dict):
+            return {str(k): clean(v) for k, v in o.items()}
+        if isinstance(o, (list, tuple)):
+            return [clean(v) for v in o]
+        if isinstance(o, np.ndarray):
+            return clean(o.tolist())
+        if isinstance(o, (np.floating, float)):
+            return float(o) if math.isfinite(float(o)) else None
+        if isinstance(o, (np.integer,)):
+            return int(o)
+        if isinstance(o, np.bool_):
+            return bool(o)
+        return o
+    return json.dumps(clean(acc.as_dict()), indent=1, ensure_ascii=False)
