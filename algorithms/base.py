@@ -33,13 +33,15 @@ ICON = os.path.join(os.path.dirname(os.path.dirname(__file__)),
 
 
 def _groups():
-    t = QCoreApplication.translate
+    # Literal translate() calls so that pylupdate5 finds the group names.
     return {
-        "lidarfiltering": t("GeomaticsAlgorithm", "LiDAR ground filtering"),
-        "terrain": t("GeomaticsAlgorithm", "Terrain models"),
-        "rectification": t("GeomaticsAlgorithm", "Image rectification"),
-        "photogrammetry": t("GeomaticsAlgorithm", "Photogrammetry"),
-        "accuracy": t("GeomaticsAlgorithm", "Accuracy assessment"),
+        "lidarfiltering": QCoreApplication.translate("GeomaticsAlgorithm",
+                                                     "LiDAR ground filtering"),
+        "terrain": QCoreApplication.translate("GeomaticsAlgorithm", "Terrain models"),
+        "rectification": QCoreApplication.translate("GeomaticsAlgorithm",
+                                                    "Image rectification"),
+        "photogrammetry": QCoreApplication.translate("GeomaticsAlgorithm", "Photogrammetry"),
+        "accuracy": QCoreApplication.translate("GeomaticsAlgorithm", "Accuracy assessment"),
     }
 
 

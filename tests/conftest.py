@@ -81,8 +81,11 @@ def qgis_app():
     from geomatics_toolbox.provider.provider import GeomaticsProvider
     provider = GeomaticsProvider()
     QgsApplication.processingRegistry().addProvider(provider)
+    app._geomatics_provider = provider  # keep a Python reference alive
     yield app
-    QgsApplication.processingRegistry().removeProvider(provider)
+    registry = QgsApplication.processingRegistry()
+    if registry.providerById("geomatics") is not None:
+        registry.removeProvider("geomatics")
 
 
 @pytest.fixture(scope="session")
