@@ -1,0 +1,123 @@
+"""IDW against GDAL's gdal_grid -a invdistnn (the oracle), grid definition, bad input."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from geomatics_toolbox.core.grid import (check_memory, grid_from_extent, grid_from_points,
+                                         grid_like)
+from geomatics_toolbox.core.idw import IDW, idw_grid
+
+gdal = pytest.importorskip("osgeo.gdal")
+ogr = pytest.importorskip("osgeo.ogr")
+gdal.UseExceptions()
+
+
+def gdal_invdistnn(x, y, z, grid, *, power, max_points, radius, min_points=0):
+    """Run gdal.Grid (invdistnn) on an in-memory point layer onto ``grid``."""
+    ds = gdal.GetDriverByName("Memory").Create("", 0, 0, 0, gdal.GDT_Unknown)
+    lyr = ds.CreateLayer("p", geom_type=ogr.wkbPoint25D)
+    defn = lyr.GetLayerDefn()
+    for a, b, c in zip(x, y, z):
+        f = ogr.Feature(defn)
+        g = ogr.Geometry(ogr.wkbPoint25D)
+        g.AddPoint(float(a), float(b), float(c))
+        f.SetGeometry(g)
+        lyr.CreateFeature(f)
+    out = gdal.Grid("/vsimem/idw_oracle.tif", ds, format="GTiff",
+                    outputType=gdal.GDT_Float64, width=grid.ncols, height=grid.nrows,
+                    outputBounds=[grid.xmin, grid.ymax, grid.xmax, grid.ymin],
+                    algorithm=(f"invdistnn:power={power}:max_points={max_points}:"
+                               f"radius={radius}:min_points={min_points}:nodata=-9999"))
+    assert out.GetGeoTransform() == grid.geotransform
+    arr = out.GetRasterBand(1).ReadAsArray()
+    out = None
+    gdal.Unlink("/vsimem/idw_oracle.tif")
+    return np.where(arr == -9999, np.nan, arr)
+
+
+@pytest.fixture(scope="module")
+def cloud():
+    rng = np.random.default_rng(11)
+    n = 2500
+    x = rng.uniform(600000, 600090, n)
+    y = rng.uniform(3900000, 3900070, n)
+    z = 850 + 0.2 * (x - 600000) + 4 * np.sin((y - 3900000) / 9) + rng.normal(0, 0.05, n)
+    # a gap (no points) in a corner, and one point exactly on a cell centre
+    keep = ~((x > 600070) & (y > 3900050))
+    x, y, z = x[keep], y[keep], z[keep]
+    x[0], y[0] = 600010.5, 3900020.5
+    return x, y, z
+
+
+@pytest.mark.parametrize("power,max_points,radius,min_points", [
+    (2.0, 12, 6.0, 0), (3.0, 8, 4.0, 5), (2.0, 0, 2.5, 0), (2.5, 12, 1.2, 3)])
+def test_idw_equals_gdal_invdistnn(cloud, power, max_points, radius, min_points):
+    x, y, z = cloud
+    grid = grid_from_extent((600000, 600090, 3900000, 3900070), 1.0)
+    ref = gdal_invdistnn(x, y, z, grid, power=power, max_points=max_points, radius=radius,
+                         min_points=min_points)
+    ours = idw_grid(x, y, z, grid, power=power, max_points=max_points, radius=radius,
+                    min_points=min_points, fill=True, block_cells=1000)
+    assert np.array_equal(np.isnan(ref), np.isnan(ours))
+    assert np.isfinite(ref).sum() > 1000
+    assert np.nanmax(np.abs(ref - ours)) <= 1e-3
+    # the node on a point takes that point's height exactly (GDAL does too)
+    r, c = 49, 10
+    assert ours[r, c] == z[0] == ref[r, c]
+
+
+def test_idw_formula_and_exactness():
+    x = np.array([0.0, 1.0, 0.0, 3.0])
+    y = np.array([0.0, 0.0, 2.0, 3.0])
+    z = np.array([1.0, 2.0, 3.0, 4.0])
+    interp = IDW(x, y, z, power=2, max_points=3)
+    got = interp.predict([0.5], [0.5])[0]
+    d2 = np.array([0.5, 0.5, 2.5])            # three nearest: squared distances
+    w = 1 / d2
+    assert got == pytest.approx((w * z[:3]).sum() / w.sum(), rel=1e-12)
+    assert interp.predict([3.0], [3.0])[0] == 4.0
+    # min_points not reached -> NaN (never 0)
+    sparse = IDW(x, y, z, power=2, max_points=3, radius=1.2, min_points=2)
+    assert np.isnan(sparse.predict([2.9], [2.9])[0])
+
+
+def test_gap_mask_and_fill(cloud):
+    x, y, z = cloud
+    grid = grid_from_extent((600000, 600090, 3900000, 3900070), 1.0)
+    masked = idw_grid(x, y, z, grid, max_points=12, max_distance=3.0)
+    filled = idw_grid(x, y, z, grid, max_points=12, fill=True)
+    # the empty corner (x > 70, y > 50) is nodata unless asked to fill
+    assert np.isnan(masked[2:15, 80:88]).all()
+    assert np.isfinite(filled).all()
+    assert np.isfinite(masked).mean() > 0.9
+
+
+def test_grid_alignment_and_georeferencing():
+    g = grid_from_points([10.3, 19.9], [5.2, 7.7], 0.5)
+    assert (g.xmin, g.xmax, g.ymin, g.ymax) == (10.0, 20.0, 5.0, 8.0)
+    assert g.geotransform == (10.0, 0.5, 0.0, 8.0, 0.0, -0.5)
+    assert g.x_centers()[0] == 10.25 and g.y_centers()[0] == 7.75
+    row, col, inside = g.cell_index(np.array([10.0, 20.0, 20.1]), np.array([8.0, 5.0, 6.0]))
+    assert list(row[:2]) == [0, 5] and list(col[:2]) == [0, 19] and list(inside) == [
+        True, True, False]
+    unaligned = grid_from_extent((10.3, 19.9, 5.2, 7.7), 0.5, align=False)
+    assert unaligned.xmin == 10.3 and unaligned.ymax == 7.7
+    assert grid_like(g.geotransform, g.shape).extent == g.extent
+
+
+def test_bad_input_clear_errors():
+    x = np.arange(5.0)
+    with pytest.raises(ValueError, match="max_points = 12 neighbours"):
+        IDW(x, x, x, max_points=12)
+    with pytest.raises(ValueError, match="cell_size must be a positive"):
+        grid_from_extent((0, 10, 0, 10), 0)
+    with pytest.raises(ValueError, match="cell_size must be a positive"):
+        grid_from_extent((0, 10, 0, 10), -1)
+    huge = grid_from_extent((0, 1e7, 0, 1e7), 0.01)
+    with pytest.raises(ValueError, match=r"would need .*PiB.*available"):
+        check_memory(huge)
+    with pytest.raises(ValueError, match="would need"):
+        idw_grid(x, x, x, huge, max_points=3)
+    with pytest.raises(ValueError, match="min_points"):
+        IDW(x, x, x, max_points=3, min_points=4)

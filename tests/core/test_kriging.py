@@ -1,0 +1,122 @@
+"""Kriging against plain PyKrige (global and moving-window), variance, CV, bad input."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from geomatics_toolbox.core.grid import grid_from_extent
+from geomatics_toolbox.core.kriging import (Kriging, fit_variogram, given_variogram,
+                                            kriging_grid, parse_variogram_parameters)
+
+pykrige_ok = pytest.importorskip("pykrige.ok")
+pykrige_uk = pytest.importorskip("pykrige.uk")
+
+
+def terrain(n, seed=5, side=200.0):
+    rng = np.random.default_rng(seed)
+    x = rng.uniform(0, side, n) + 350000
+    y = rng.uniform(0, side, n) + 5600000
+    z = (420 + 0.04 * (x - 350000) + 3 * np.sin((y - 5600000) / 25)
+         + 1.5 * np.cos((x - 350000) / 17) + rng.normal(0, 0.05, n))
+    return x, y, z
+
+
+@pytest.mark.parametrize("model", ["spherical", "exponential", "gaussian", "linear", "power"])
+def test_matches_global_pykrige_ok_2k_points(model):
+    x, y, z = terrain(2000)
+    ok = pykrige_ok.OrdinaryKriging(x, y, z, variogram_model=model)
+    grid = grid_from_extent((350000, 350200, 5600000, 5600200), 8.0)
+    ref_z, ref_var = ok.execute("grid", grid.x_centers(), grid.y_centers())
+    # fit with all points binned as PyKrige does -> same variogram parameters
+    res = kriging_grid(x, y, z, grid, model=model, n_closest=2000, fit_points=2000, nlags=6,
+                       max_lag=None, fill=True)
+    np.testing.assert_allclose(res.variogram.params, ok.variogram_model_parameters,
+                               rtol=1e-6, atol=1e-9)
+    assert np.max(np.abs(res.z - np.asarray(ref_z))) <= 0.01
+    assert np.max(np.abs(res.z - np.asarray(ref_z))) <= 1e-6
+    np.testing.assert_allclose(res.variance, np.asarray(ref_var), atol=1e-6)
+
+
+def test_local_solver_matches_pykrige_moving_window_and_global():
+    x, y, z = terrain(300, seed=8)
+    v = given_variogram("spherical", nugget=0.01, sill=6.0, range_=90.0)
+    params = {"sill": 6.0, "range": 90.0, "nugget": 0.01}
+    ok = pykrige_ok.OrdinaryKriging(x, y, z, variogram_model="spherical",
+                                    variogram_parameters=params)
+    gx = np.arange(350001.0, 350200, 9.0)
+    gy = np.arange(5600001.0, 5600200, 9.0)
+    ref_z, ref_var = ok.execute("grid", gx, gy, backend="loop", n_closest_points=16)
+    xx, yy = np.meshgrid(gx, gy)
+    kr = Kriging(x, y, z, variogram=v, n_closest=16)
+    zz, vv = kr.predict(xx.ravel(), yy.ravel())
+    assert np.max(np.abs(zz - np.asarray(ref_z).ravel())) <= 1e-6
+    assert np.max(np.abs(vv - np.asarray(ref_var).ravel())) <= 1e-6
+    # the batched local solver with every point as neighbour == PyKrige global OK
+    kr_all = Kriging(x, y, z, variogram=v, n_closest=300)
+    kr_all.is_global = False
+    zz, vv = kr_all.predict(xx.ravel()[:150], yy.ravel()[:150])
+    gz, gv = ok.execute("points", xx.ravel()[:150], yy.ravel()[:150])
+    assert np.max(np.abs(zz - gz)) <= 1e-6
+    assert np.max(np.abs(vv - gv)) <= 1e-6
+
+
+def test_universal_kriging_linear_drift_matches_pykrige():
+    x, y, z = terrain(300, seed=9)
+    v = given_variogram("exponential", nugget=0.0, sill=4.0, range_=60.0)
+    uk = pykrige_uk.UniversalKriging(x, y, z, variogram_model="exponential",
+                                     variogram_parameters=list(v.params),
+                                     drift_terms=["regional_linear"])
+    pts = (np.array([350010.0, 350100.5, 350190.0]), np.array([5600020.0, 5600111.0,
+                                                                5600180.5]))
+    ref_z, ref_var = uk.execute("points", *pts)
+    for is_global in (True, False):
+        kr = Kriging(x, y, z, variogram=v, n_closest=300, drift="linear")
+        kr.is_global = is_global
+        zz, vv = kr.predict(*pts)
+        assert np.max(np.abs(zz - ref_z)) <= 1e-5
+        assert np.max(np.abs(vv - ref_var)) <= 1e-4
+
+
+def test_exact_at_data_points_variance_and_gaps():
+    x, y, z = terrain(800)
+    x[0], y[0] = 350100.5, 5600100.5      # a point on a cell centre
+    grid = grid_from_extent((350000, 350300, 5600000, 5600200), 1.0)  # 100 m with no data
+    res = kriging_grid(x, y, z, grid, n_closest=12, max_distance=10.0)
+    r, c = grid.cell_index([x[0]], [y[0]])[:2]
+    assert res.z[r[0], c[0]] == pytest.approx(z[0], abs=1e-9)
+    assert res.variance[r[0], c[0]] == pytest.approx(0.0, abs=1e-9)
+    assert np.isnan(res.z[:, 230:]).all() and np.isnan(res.variance[:, 230:]).all()
+    inner = res.variance[:, :190]
+    assert np.all(inner[np.isfinite(inner)] >= 0)
+    assert np.nanmax(res.variance) > 0
+
+
+def test_fitted_parameters_and_cross_validation():
+    x, y, z = terrain(3000)
+    v = fit_variogram(x, y, z, model="spherical", fit_points=1500, seed=1)
+    d = v.as_dict()
+    assert d["sill"] >= d["nugget"] >= 0 and d["range"] > 0 and v.n_fit == 1500
+    assert v.max_lag == pytest.approx(0.5 * np.hypot(200, 200), rel=0.05)
+    kr = Kriging(x, y, z, variogram=v, n_closest=16)
+    cv = kr.cross_validate(300, seed=2)
+    assert cv["n"] == 300
+    # noise sd 0.05 m plus a smooth surface: LOO RMSE must be centimetric, bias ~ 0
+    assert 0.03 < cv["rmse"] < 0.2 and abs(cv["me"]) < 0.02
+    assert np.isfinite(cv["mse_std"]) and cv["rmsse"] > 0
+
+
+def test_parse_parameters_and_bad_input():
+    v = parse_variogram_parameters("nugget=0.01, sill=2, range=50", "spherical")
+    assert v.params == [1.99, 50.0, 0.01]
+    with pytest.raises(ValueError, match="sill"):
+        parse_variogram_parameters("nugget=3, sill=2, range=50", "spherical")
+    with pytest.raises(ValueError, match="name=value"):
+        parse_variogram_parameters("2, 50", "spherical")
+    x, y, z = terrain(10)
+    with pytest.raises(ValueError, match="n_closest = 16 neighbours"):
+        Kriging(x, y, z, variogram=v, n_closest=16)
+    with pytest.raises(ValueError, match="variogram model must be one of"):
+        fit_variogram(x, y, z, model="cubic")
+    grid = grid_from_extent((0, 1e7, 0, 1e7), 0.05)
+    with pytest.raises(ValueError, match="would need"):
+        kriging_grid(x, y, z, grid, variogram=v, n_closest=4)
