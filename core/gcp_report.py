@@ -274,10 +274,11 @@ def bias_checks(vx, vy, pixel, *, map_xy=None, image_size=None, centre_map=None)
       or whose mean exceeds 2 standard errors, is flagged;
     * over all points: two-sided sign test per axis (flag when p < 0.05);
     * inner vs edge: the radial component of each residual (positive = pointing away
-      from the image centre, in map space) is averaged over inner points (normalised
-      image radius ≤ 0.5) and edge points; opposite signs with a difference above two
-      standard errors are flagged — the "negative inside, positive at the edges"
-      pattern that asks for a higher order.
+      from the image centre, in map space) is averaged over the inner and the outer half
+      of the points (split at the median normalised image radius); opposite signs with a
+      difference above two standard errors, or a correlation between radius and radial
+      residual with |t| > 2.8, are flagged — the "negative inside, positive at the
+      edges" pattern that asks for a higher order.
     """
     vx = np.asarray(vx, float)
     vy = np.asarray(vy, float)
@@ -329,26 +330,33 @@ def bias_checks(vx, vy, pixel, *, map_xy=None, image_size=None, centre_map=None)
         dist = np.hypot(d[:, 0], d[:, 1])
         with np.errstate(invalid="ignore", divide="ignore"):
             rad = np.where(dist > 0, (vx * d[:, 0] + vy * d[:, 1]) / dist, 0.0)
-        rnorm = np.maximum(np.abs(col - cc) / hw, np.abs(row - rc) / hh)
-        inner = rnorm <= 0.5
-        split = "normalised image radius ≤ 0.5"
-        if inner.sum() < 2 or (~inner).sum() < 2:
-            med = float(np.median(rnorm))
-            inner = rnorm <= med
-            split = f"normalised image radius ≤ median ({med:.2f})"
+        # normalised image radius: 0 at the centre, 1 at the corners
+        rnorm = np.hypot((col - cc) / hw, (row - rc) / hh) / math.sqrt(2.0)
+        med = float(np.median(rnorm))
+        inner = rnorm <= med
+        split = f"normalised image radius ≤ median ({med:.2f}; 1 = image corner)"
         radial = {"split": split, "n_inner": int(inner.sum()), "n_edge": int((~inner).sum()),
-                  "radial": rad.tolist()}
+                  "radial": rad.tolist(), "radius": rnorm.tolist()}
+        pattern = None
         if inner.sum() >= 2 and (~inner).sum() >= 2:
             mi, me = float(rad[inner].mean()), float(rad[~inner].mean())
             se = math.sqrt(float(rad[inner].var(ddof=1)) / inner.sum()
                            + float(rad[~inner].var(ddof=1)) / (~inner).sum())
             radial.update(mean_inner=mi, mean_edge=me, se_difference=se)
             if mi * me < 0 and abs(me - mi) > 2 * se:
-                pattern = ("pointing inwards at the centre and outwards at the edges"
-                           if mi < 0 else "pointing outwards at the centre and inwards at "
-                           "the edges")
-                flags.append(f"radial pattern: mean radial residual {mi:+.3f} inside, "
-                             f"{me:+.3f} at the edges ({pattern}) — raise the order")
+                pattern = (mi, me)
+        if rad.size >= 6 and np.ptp(rnorm) > 0 and np.ptp(rad) > 0:
+            r_corr = float(np.corrcoef(rnorm, rad)[0, 1])
+            t = r_corr * math.sqrt((rad.size - 2) / max(1e-12, 1 - r_corr ** 2))
+            radial.update(correlation=r_corr, t_value=t)
+            if abs(t) > 2.8 and pattern is None and "mean_inner" in radial:
+                pattern = (radial["mean_inner"], radial["mean_edge"])
+        if pattern is not None:
+            mi, me = pattern
+            trend = ("growing outwards towards the edges" if me > mi else
+                     "growing inwards towards the edges")
+            flags.append(f"radial pattern: mean radial residual {mi:+.3f} inside, "
+                         f"{me:+.3f} at the edges ({trend}) — raise the order")
     return {"quadrants": quads, "signs": signs, "radial": radial, "flags": flags,
             "centre_pixel": [cc, rc]}
 
