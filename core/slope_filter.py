@@ -751,6 +751,7 @@ class SweepResult:
     n_points: int
     n_reference_ground: int
     mode: str
+    best_ground: Optional[np.ndarray] = None
 
     HEADERS = ("radius_m", "slope_deg", "height_tolerance_m", "allowed_rise_at_r_m",
                "n_ground", "a", "b", "c", "d", "type1_pct", "type2_pct", "total_pct",
@@ -848,6 +849,7 @@ def threshold_sweep(x, y, z, reference_ground, *, slopes: Sequence[float] = (
     passes = [(r, h) for r in radii for h in hs]
     px, py, pz = _take(x, y, zz, cm)
     qx, qy, qz = _take(x, y, zz, nm)
+    best_key, best_ground = None, None
     for k, (r, h) in enumerate(passes):
         v = np.full(x.size, np.nan)
         if cm.any():
@@ -858,12 +860,17 @@ def threshold_sweep(x, y, z, reference_ground, *, slopes: Sequence[float] = (
         for s in slopes:
             pred = cm & ~(v > _tan(s))
             acc = assess(pred, ref)
-            rows.append(SweepRow(radius=r, slope=s, height_tolerance=h,
-                                 allowed_rise=float(allowed_rise(r, s)),
-                                 n_ground=int(np.count_nonzero(pred)), a=acc.a, b=acc.b,
-                                 c=acc.c, d=acc.d, type1=acc.type1, type2=acc.type2,
-                                 total=acc.total, kappa=acc.kappa))
+            row = SweepRow(radius=r, slope=s, height_tolerance=h,
+                           allowed_rise=float(allowed_rise(r, s)),
+                           n_ground=int(np.count_nonzero(pred)), a=acc.a, b=acc.b,
+                           c=acc.c, d=acc.d, type1=acc.type1, type2=acc.type2,
+                           total=acc.total, kappa=acc.kappa)
+            rows.append(row)
+            key = _metric_key(row, metric)
+            if best_key is None or key < best_key:
+                best_key, best_ground = key, pred
     best = min(rows, key=lambda row: _metric_key(row, metric))
     mon.update(1.0)
     return SweepResult(rows=rows, metric=metric, best=best, n_points=x.size,
-                       n_reference_ground=int(np.count_nonzero(ref)), mode=mode)
+                       n_reference_ground=int(np.count_nonzero(ref)), mode=mode,
+                       best_ground=best_ground)
