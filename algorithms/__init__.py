@@ -11,8 +11,11 @@ and one entry per algorithm.
 def all_algorithms():
     """Fresh instances of every algorithm the provider offers."""
     from .gsd_calculator import GsdCalculatorAlgorithm, GsdBatchAlgorithm
+    from .gcp_rectification import GcpAccuracyReportAlgorithm, RectifyGcpAlgorithm
 
     return [
         GsdCalculatorAlgorithm(),
         GsdBatchAlgorithm(),
+        RectifyGcpAlgorithm(),
+        GcpAccuracyReportAlgorithm(),
     ]

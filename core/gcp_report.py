@@ -818,6 +818,9 @@ def to_html(acc: GcpAccuracy, *, lang: str = "en", extra_params: Optional[dict] 
               "Residuals v = predicted − given (map units). Pixel residuals = given pixel − "
               "inverse(given map point).",
               "RMS_T uses the divisor n (paper); the QGIS Georeferencer divides by n − N.",
+              "C6: for normally distributed residuals only about 63 % of the points are "
+              "expected within RMS_T (1 − e⁻¹), so the 68 % rule fails about half of the "
+              "time by chance alone; read it together with C4, C5 and the check points.",
               CITATION]
     parts.append("<h2>Notes</h2><ul>" + "".join(f"<li>{rep.esc(t)}</li>" for t in notes)
                  + "</ul>")

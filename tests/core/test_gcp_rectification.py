@@ -36,7 +36,8 @@ IMAGE2_RES = np.array([float(t) for t in """
 
 
 def sha(path) -> str:
-    return hashlib.sha256(open(path, "rb").read()).hexdigest()
+    with open(path, "rb") as fh:
+        return hashlib.sha256(fh.read()).hexdigest()
 
 
 def gdal_gcp_transform(pixel, map_xy, order, pts, *, width=5000, height=5000):

@@ -1,0 +1,496 @@
+"""GCP polynomial rectification (orders 1–3) and its accuracy report.
+
+Thin wrappers over :mod:`..core.gcp_io`, :mod:`..core.polynomial`,
+:mod:`..core.gcp_report` and :mod:`..core.warp`.
+"""
+from __future__ import annotations
+
+import math
+import os
+
+import numpy as np
+from qgis.core import (QgsProcessing, QgsProcessingException, QgsProcessingOutputNumber,
+                       QgsProcessingParameterCrs, QgsProcessingParameterEnum,
+                       QgsProcessingParameterFeatureSource, QgsProcessingParameterField,
+                       QgsProcessingParameterFile, QgsProcessingParameterFileDestination,
+                       QgsProcessingParameterRasterDestination,
+                       QgsProcessingParameterRasterLayer, QgsWkbTypes)
+
+from ..core import gcp_io, gcp_report, warp
+from ..core.atomic import check_not_input
+from .base import GeomaticsAlgorithm
+
+PIXEL_ORIGINS = ("corner", "center")
+
+NUMBERS = (
+    ("RMS_X", "RMS_x (map units, divisor n)"),
+    ("RMS_Y", "RMS_y (map units, divisor n)"),
+    ("RMS_T", "RMS_T (map units, divisor n)"),
+    ("RMS_T_QGIS", "RMS_T with divisor n − N (QGIS Georeferencer)"),
+    ("GR", "Ground resolution GR (map units/pixel)"),
+    ("SCALE", "Map scale number S = 20000·GR"),
+    ("N_GCP", "GCPs used in the fit"),
+    ("REDUNDANCY", "Redundancy n − N"),
+    ("N_WITHIN", "Points with RMS_i ≤ RMS_T"),
+    ("LOO_RMS_T", "Leave-one-out RMS_T (map units)"),
+    ("CHECK_RMS_T", "Check-point RMS_T (map units)"),
+    ("N_CHECK", "Independent check points"),
+    ("RECOMMENDED_ORDER", "Recommended order (0 = none)"),
+    ("ACCEPTED", "Accepted by criteria C4–C6 (1/0)"),
+)
+
+_HELP_GCP = (
+    "<li><b>GCP file</b> (GCP_FILE): a QGIS Georeferencer <i>.points</i> file "
+    "(mapX,mapY,pixelX,pixelY,enable,…; pixelY is minus the row) or a CSV table with "
+    "columns id, col,row (or pixel,line; or image_x,image_y in the QGIS sign convention), "
+    "X,Y (or map_x,map_y / easting,northing) and optional enabled (1/0), role (gcp or "
+    "check) and weight. Give the file <i>or</i> a point layer.</li>"
+    "<li><b>GCP point layer</b> (GCP_LAYER): points whose geometry holds the map "
+    "coordinates (in the layer CRS) with fields for the image column and row "
+    "(COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD.</li>"
+    "<li><b>Pixel origin</b> (PIXEL_ORIGIN, default 0 = corner): 0 — image coordinates "
+    "in the GDAL/QGIS convention, (0,0) is the top-left corner of the image and the "
+    "centre of the first pixel is (0.5, 0.5); 1 — integer values are pixel centres "
+    "(0-based array indices), 0.5 is added. Rows always grow downwards (a negative row "
+    "column is read as QGIS's −row). .points files are always corner-based.</li>"
+    "<li><b>GCP CRS</b> (GCP_CRS): CRS of the map coordinates when the file has no "
+    "'#CRS:' line (CSV files never have one). Missing CRS is an error.</li>"
+    "<li><b>Polynomial order</b> (ORDER, 1–3, default 1): 1 affine (≥ 3 GCPs), 2 "
+    "(≥ 6), 3 (≥ 10).</li>"
+    "<li><b>Ground resolution GR</b> (GR, map units per pixel, optional): pixel size on "
+    "the ground for the criteria; default sqrt|det J| of the affine fit of the "
+    "GCPs.</li>")
+
+_HELP_CRITERIA = (
+    "<p><b>Criteria</b> (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and "
+    "contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, "
+    "n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band "
+    "4·GR … 6·GR for RMS_T; per-point limit 0.25 mm·S = 5·GR; ≥ 68 % (strict 90 %) of "
+    "points within RMS_T; no directional bias (quadrant sign balance, inner vs edge "
+    "radial residuals, residual-vector plot). Also: independent check points (role "
+    "'check', never fitted), leave-one-out residuals, orders 1–3 side by side with a "
+    "recommended order (never one whose redundancy n − N is below max(2, ⌈N/2⌉)) and "
+    "suggested points to drop. Residuals are predicted − given, in map units and "
+    "pixels.</p>")
+
+
+class _GcpBase(GeomaticsAlgorithm):
+    """Shared parameters and GCP loading."""
+
+    GROUP = "rectification"
+
+    INPUT = "INPUT"
+    GCP_FILE = "GCP_FILE"
+    GCP_LAYER = "GCP_LAYER"
+    COL_FIELD = "COL_FIELD"
+    ROW_FIELD = "ROW_FIELD"
+    ID_FIELD = "ID_FIELD"
+    ENABLED_FIELD = "ENABLED_FIELD"
+    ROLE_FIELD = "ROLE_FIELD"
+    PIXEL_ORIGIN = "PIXEL_ORIGIN"
+    GCP_CRS = "GCP_CRS"
+    ORDER = "ORDER"
+    GR = "GR"
+    OUTPUT_HTML = "OUTPUT_HTML"
+
+    def add_gcp_parameters(self, raster_optional: bool):
+        self.add(QgsProcessingParameterRasterLayer(
+            self.INPUT, self.tr("Image (raster) to rectify") if not raster_optional else
+            self.tr("Image (raster) the GCPs were measured on"), optional=raster_optional))
+        self.add(QgsProcessingParameterFile(
+            self.GCP_FILE, self.tr("GCP file (.points or CSV)"),
+            QgsProcessingParameterFile.File, "", None, True,
+            self.tr("GCP files (*.points *.csv *.txt);;All files (*.*)")))
+        self.add(QgsProcessingParameterFeatureSource(
+            self.GCP_LAYER, self.tr("…or GCP point layer"), [QgsProcessing.TypeVectorPoint],
+            optional=True))
+        for name, label in ((self.COL_FIELD, self.tr("Layer field: image column")),
+                            (self.ROW_FIELD, self.tr("Layer field: image row")),
+                            (self.ID_FIELD, self.tr("Layer field: point id")),
+                            (self.ENABLED_FIELD, self.tr("Layer field: enabled (1/0)")),
+                            (self.ROLE_FIELD, self.tr("Layer field: role (gcp/check)"))):
+            self.add(QgsProcessingParameterField(name, label, None, self.GCP_LAYER,
+                                                 QgsProcessingParameterField.Any,
+                                                 optional=True),
+                     advanced=name not in (self.COL_FIELD, self.ROW_FIELD))
+        self.add(QgsProcessingParameterEnum(
+            self.PIXEL_ORIGIN, self.tr("Image coordinates refer to"),
+            [self.tr("pixel corners: (0,0) = top-left corner of the image (GDAL/QGIS)"),
+             self.tr("pixel centres: integer = centre of a pixel (0-based indices)")],
+            defaultValue=0), advanced=True)
+        self.add(QgsProcessingParameterCrs(self.GCP_CRS, self.tr(
+            "CRS of the GCP map coordinates (if the file does not say)"), optional=True))
+        self.add_number(self.ORDER, self.tr("Polynomial order (1–3)"), 1, minimum=1,
+                        maximum=3, integer=True)
+        self.add_number(self.GR, self.tr("Ground resolution GR (map units/pixel) "
+                                         "[default: from the GCPs]"), minimum=0.0,
+                        optional=True)
+
+    # ------------------------------------------------------------------ helpers
+    def _optional_number(self, parameters, name):
+        v = parameters.get(name)
+        if v is None or v == "":
+            return None
+        try:
+            v = float(v)
+        except (TypeError, ValueError):
+            raise QgsProcessingException(f"{name}: '{v}' is not a number.") from None
+        return None if math.isnan(v) or v == 0 else v
+
+    def raster_path(self, parameters, context, required: bool):
+        layer = self.parameterAsRasterLayer(parameters, self.INPUT, context)
+        if layer is None:
+            if required:
+                raise QgsProcessingException(self.tr(
+                    "INPUT: no image given or it cannot be opened; give a raster file."))
+            return None
+        path = layer.source().split("|")[0]
+        if not os.path.exists(path):
+            raise QgsProcessingException(self.tr(
+                "INPUT: {0} is not a local raster file; save the image to a file first.")
+                .format(path))
+        return path
+
+    def crs_param(self, parameters, name, context) -> str:
+        crs = self.parameterAsCrs(parameters, name, context)
+        return crs.toWkt() if crs is not None and crs.isValid() else ""
+
+    def load_gcps(self, parameters, context, raster):
+        gfile = self.parameterAsFile(parameters, self.GCP_FILE, context)
+        origin = PIXEL_ORIGINS[self.parameterAsEnum(parameters, self.PIXEL_ORIGIN, context)]
+        crs = self.crs_param(parameters, self.GCP_CRS, context)
+        layer_given = parameters.get(self.GCP_LAYER) not in (None, "")
+        if gfile and layer_given:
+            raise QgsProcessingException(self.tr(
+                "Give either GCP_FILE or GCP_LAYER, not both."))
+        gt = None
+        if raster:
+            gt = warp.image_info(raster)[3]
+        if gfile:
+            g = gcp_io.read_gcps(gfile, pixel_origin=origin, crs=crs, source_geotransform=gt)
+            if crs and g.crs and not warp.same_crs(crs, g.crs):
+                g.notes.append("GCP_CRS differs from the '#CRS:' line of the file; the "
+                               "file's CRS was used.")
+            return g
+        if layer_given:
+            return self.load_layer(parameters, context, origin)
+        raise QgsProcessingException(self.tr(
+            "No GCPs: give a GCP file (GCP_FILE, .points or CSV) or a point layer "
+            "(GCP_LAYER with COL_FIELD and ROW_FIELD)."))
+
+    def load_layer(self, parameters, context, origin):
+        source = self.parameterAsSource(parameters, self.GCP_LAYER, context)
+        if source is None:
+            raise QgsProcessingException(self.invalidSourceError(parameters, self.GCP_LAYER))
+        fields = {}
+        for key in (self.COL_FIELD, self.ROW_FIELD, self.ID_FIELD, self.ENABLED_FIELD,
+                    self.ROLE_FIELD):
+            names = self.parameterAsFields(parameters, key, context)
+            fields[key] = names[0] if names else None
+        if not fields[self.COL_FIELD] or not fields[self.ROW_FIELD]:
+            raise QgsProcessingException(self.tr(
+                "GCP_LAYER needs COL_FIELD and ROW_FIELD: the fields holding the image "
+                "column and row of each point."))
+        ids, pix, mp, en, role = [], [], [], [], []
+        for k, feat in enumerate(source.getFeatures(), start=1):
+            geom = feat.geometry()
+            if geom is None or geom.isEmpty():
+                raise QgsProcessingException(self.tr(
+                    "GCP layer feature {0} has no geometry.").format(feat.id()))
+            if QgsWkbTypes.isMultiType(geom.wkbType()):
+                pts = geom.asMultiPoint()
+                pt = pts[0]
+            else:
+                pt = geom.asPoint()
+            where = f"GCP layer feature {feat.id()}"
+            vals = []
+            for key in (self.COL_FIELD, self.ROW_FIELD):
+                raw = feat[fields[key]]
+                try:
+                    vals.append(float(raw))
+                except (TypeError, ValueError):
+                    raise QgsProcessingException(
+                        f"{where}: field '{fields[key]}' must be a number, got {raw!r}."
+                    ) from None
+            pix.append(vals)
+            mp.append([pt.x(), pt.y()])
+            ids.append(str(feat[fields[self.ID_FIELD]]) if fields[self.ID_FIELD]
+                       else str(k))
+            if fields[self.ENABLED_FIELD]:
+                raw = feat[fields[self.ENABLED_FIELD]]
+                en.append(str(raw).strip().lower() not in ("0", "false", "no", "null",
+                                                           "none", ""))
+            else:
+                en.append(True)
+            if fields[self.ROLE_FIELD]:
+                rv = str(feat[fields[self.ROLE_FIELD]] or "").strip().lower()
+                if rv not in gcp_io._ROLE_ALIASES:
+                    raise QgsProcessingException(
+                        f"{where}: role must be 'gcp' or 'check', got {rv!r}.")
+                role.append(gcp_io._ROLE_ALIASES[rv])
+            else:
+                role.append("gcp")
+        pix = np.asarray(pix, float).reshape(-1, 2)
+        notes = []
+        if len(pix) and (pix[:, 1] <= 0).all() and (pix[:, 1] < 0).any():
+            pix[:, 1] = -pix[:, 1]
+            notes.append("Row field values are negative: QGIS convention, row = −value.")
+        if origin == "center":
+            pix = pix + 0.5
+            notes.append("Pixel centres: 0.5 added to col and row.")
+        crs = source.sourceCrs()
+        return gcp_io.make_gcps(ids, pix, mp, enabled=en, role=role,
+                                crs=crs.toWkt() if crs.isValid() else "",
+                                source=f"layer {parameters.get(self.GCP_LAYER)}", notes=notes)
+
+    def prepare(self, gcps, target_crs: str = ""):
+        """Require a CRS; bring geographic GCPs into a projected target CRS."""
+        if not gcps.crs:
+            raise QgsProcessingException(self.tr(
+                "The GCP map coordinates have no CRS: the file has no '#CRS:' line and "
+                "GCP_CRS is not set. Set GCP_CRS (e.g. EPSG:22780) and run again."))
+        proj, unit, _ = warp.linear_units(gcps.crs)
+        if not proj:
+            if target_crs and warp.linear_units(target_crs)[0]:
+                g = gcps.with_crs(target_crs)
+                g.map = warp.to_crs(gcps.map, gcps.crs, target_crs)
+                g.notes.append("GCP map coordinates transformed from the geographic GCP CRS "
+                               "to the target CRS before fitting (as the QGIS "
+                               "Georeferencer does).")
+                return g, warp.linear_units(target_crs)[1]
+            raise QgsProcessingException(self.tr(
+                "The GCP CRS is geographic (degrees): the accuracy criteria need map units "
+                "of length. Set TARGET_CRS (or GCP_CRS) to a projected CRS, e.g. the UTM "
+                "zone of the image."))
+        return gcps, unit
+
+    def numbers(self, acc):
+        out = acc.summary_numbers()
+        return {k: (None if isinstance(v, float) and math.isnan(v) else v)
+                for k, v in out.items()}
+
+    def html_lang(self):
+        try:
+            from ..plugin import user_locale
+            return user_locale()
+        except Exception:  # noqa: BLE001 - language is cosmetic
+            return "en"
+
+
+class RectifyGcpAlgorithm(_GcpBase):
+    """Warp an image with GCPs and a polynomial of order 1–3, with the accuracy report."""
+
+    TARGET_CRS = "TARGET_CRS"
+    RESAMPLING = "RESAMPLING"
+    RESOLUTION = "RESOLUTION"
+    NODATA = "NODATA"
+    OUTPUT = "OUTPUT"
+
+    def name(self):
+        return "rectifygcp"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("Rectify image with GCPs (polynomial)")
+
+    def tags(self):
+        return self.tr("georeference,georeferencer,gcp,ground control points,polynomial,"
+                       "rectification,warp,gdalwarp,rms,accuracy").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Rectifies (warps) an image with ground control points and a 2-D polynomial "
+            "of order 1, 2 or 3 through GDAL (same result as <i>gdalwarp -order N</i>), and "
+            "writes the accuracy report of the fit. The input image is never modified: the "
+            "GCPs are attached to an in-memory copy.</p>"
+            "<p><b>Example</b>: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 "
+            "RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html</p>"
+            "<p><b>Parameters</b></p><ul>"
+            "<li><b>Image</b> (INPUT): the raster to rectify.</li>" + _HELP_GCP +
+            "<li><b>Target CRS</b> (TARGET_CRS, default the GCP CRS): output CRS; GDAL "
+            "reprojects after the polynomial.</li>"
+            "<li><b>Resampling</b> (RESAMPLING, default 0 = nearest neighbour as in the "
+            "paper): 0 near, 1 bilinear, 2 cubic, 3 cubic spline, 4 Lanczos, 5 average, "
+            "6 mode.</li>"
+            "<li><b>Output resolution</b> (RESOLUTION, target-CRS units, default GR).</li>"
+            "<li><b>Nodata</b> (NODATA, optional): value outside the image footprint "
+            "(default: the input's nodata, else 0).</li>"
+            "<li><b>Rectified image</b> (OUTPUT): GeoTIFF (written under a temporary name, "
+            "renamed on success; nothing is left behind on failure).</li>"
+            "<li><b>Report</b> (OUTPUT_HTML, optional): HTML accuracy report.</li></ul>"
+            + _HELP_CRITERIA)
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_gcp_parameters(raster_optional=False)
+        self.add(QgsProcessingParameterCrs(self.TARGET_CRS, self.tr(
+            "Target CRS [default: the GCP CRS]"), optional=True))
+        self.add(QgsProcessingParameterEnum(self.RESAMPLING, self.tr("Resampling"),
+                                            list(warp.RESAMPLING), defaultValue=0))
+        self.add_number(self.RESOLUTION, self.tr("Output resolution (target CRS units) "
+                                                 "[default: GR]"), minimum=0.0, optional=True)
+        self.add_number(self.NODATA, self.tr("Output nodata value"), optional=True,
+                        advanced=True)
+        self.add(QgsProcessingParameterRasterDestination(self.OUTPUT,
+                                                         self.tr("Rectified image")))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_HTML, self.tr("Accuracy report"), self.tr("HTML files (*.html)"),
+            optional=True, createByDefault=True))
+        for name, label in NUMBERS:
+            self.addOutput(QgsProcessingOutputNumber(name, label))
+
+    def process(self, parameters, context, feedback):
+        raster = self.raster_path(parameters, context, required=True)
+        out = self.parameterAsOutputLayer(parameters, self.OUTPUT, context)
+        html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
+        check_not_input(out, raster)
+        if html:
+            check_not_input(html, raster)
+        order = self.parameterAsInt(parameters, self.ORDER, context)
+        target = self.crs_param(parameters, self.TARGET_CRS, context)
+        gcps = self.load_gcps(parameters, context, raster)
+        gcps, unit = self.prepare(gcps, target)
+        width, height, _, _ = warp.image_info(raster)
+        gcp_io.check_in_image(gcps, width, height)
+        cb = self.core_callbacks(feedback)
+        acc = gcp_report.evaluate_gcps(
+            gcps, order=order, gr=self._optional_number(parameters, self.GR),
+            image_size=(width, height), units=unit,
+            progress=(lambda f: cb["progress"](0.1 * f)) if cb["progress"] else None,
+            cancel=cb["cancel"])
+        feedback.pushInfo(f"Order {order}: RMS_T = {acc.selected.stats.rms_t:.4f} {unit} "
+                          f"(n = {acc.selected.n_gcps}), verdict {acc.verdict}; recommended "
+                          f"order {acc.recommended or '–'}.")
+        resampling = warp.RESAMPLING[self.parameterAsEnum(parameters, self.RESAMPLING,
+                                                          context)]
+        res = warp.rectify(
+            raster, gcps, out, order=order, target_crs=target or None,
+            resampling=resampling,
+            resolution=self._optional_number(parameters, self.RESOLUTION),
+            nodata=(None if parameters.get(self.NODATA) in (None, "") else
+                    self.parameterAsDouble(parameters, self.NODATA, context)),
+            progress=(lambda f: cb["progress"](0.1 + 0.9 * f)) if cb["progress"] else None,
+            cancel=cb["cancel"])
+        feedback.pushInfo(f"Wrote {out}: {res.width} × {res.height} px at "
+                          f"{res.resolution:.6g} units/px, resampling {resampling}.")
+        outputs = {self.OUTPUT: out}
+        outputs.update(self.numbers(acc))
+        if html:
+            extra = {"rectified image": out, "resampling": resampling,
+                     "output resolution": f"{res.resolution:.6g}",
+                     "output size": f"{res.width} × {res.height} px"}
+            self.write_text(html, gcp_report.to_html(acc, lang=self.html_lang(),
+                                                     extra_params=extra))
+            outputs[self.OUTPUT_HTML] = html
+        feedback.setProgress(100)
+        return outputs
+
+
+class GcpAccuracyReportAlgorithm(_GcpBase):
+    """Accuracy report of a GCP set for orders 1–3, without warping."""
+
+    IMAGE_WIDTH = "IMAGE_WIDTH"
+    IMAGE_HEIGHT = "IMAGE_HEIGHT"
+    OUTPUT_CSV = "OUTPUT_CSV"
+    OUTPUT_JSON = "OUTPUT_JSON"
+
+    def name(self):
+        return "gcpaccuracyreport"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("GCP accuracy report")
+
+    def tags(self):
+        return self.tr("georeference,gcp,ground control points,rms,residuals,accuracy,"
+                       "check points,leave-one-out,polynomial,georeferencer").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Judges a set of ground control points without warping: fits polynomials "
+            "of order 1, 2 and 3, reports the residuals and the paper's criteria for the "
+            "chosen order, compares the three orders and recommends one.</p>"
+            "<p><b>Example</b>: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 "
+            "OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv</p>"
+            "<p><b>Parameters</b></p><ul>"
+            "<li><b>Image</b> (INPUT, optional): gives the image size (GCPs outside it are "
+            "an error; quadrants and the plot use its footprint). Without it, give "
+            "IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.</li>"
+            + _HELP_GCP +
+            "<li><b>Report</b> (OUTPUT_HTML), <b>residual table</b> (OUTPUT_CSV: one row "
+            "per point with v_x, v_y, RMS_i, C_i, pixel residuals, leave-one-out "
+            "residuals) and <b>JSON</b> (OUTPUT_JSON: everything, all orders), each "
+            "optional.</li></ul>" + _HELP_CRITERIA +
+            "<p>Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, "
+            "SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, "
+            "…) for the graphical modeler.</p>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_gcp_parameters(raster_optional=True)
+        self.add_number(self.IMAGE_WIDTH, self.tr("Image width (px) if no image is given"),
+                        minimum=0, integer=True, optional=True, advanced=True)
+        self.add_number(self.IMAGE_HEIGHT, self.tr("Image height (px) if no image is "
+                                                   "given"),
+                        minimum=0, integer=True, optional=True, advanced=True)
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_HTML, self.tr("Accuracy report"), self.tr("HTML files (*.html)"),
+            optional=True, createByDefault=True))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_CSV, self.tr("Residuals table"), self.tr("CSV files (*.csv)"),
+            optional=True, createByDefault=False))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_JSON, self.tr("Report as JSON"), self.tr("JSON files (*.json)"),
+            optional=True, createByDefault=False))
+        for name, label in NUMBERS:
+            self.addOutput(QgsProcessingOutputNumber(name, label))
+        for t in (1, 2, 3):
+            self.addOutput(QgsProcessingOutputNumber(f"RMS_T_ORDER{t}",
+                                                     f"RMS_T of order {t} (map units)"))
+            self.addOutput(QgsProcessingOutputNumber(f"LOO_RMS_T_ORDER{t}",
+                                                     f"Leave-one-out RMS_T of order {t}"))
+
+    def process(self, parameters, context, feedback):
+        raster = self.raster_path(parameters, context, required=False)
+        paths = {k: self.parameterAsFileOutput(parameters, k, context)
+                 for k in (self.OUTPUT_HTML, self.OUTPUT_CSV, self.OUTPUT_JSON)}
+        for p in paths.values():
+            if p and raster:
+                check_not_input(p, raster)
+        order = self.parameterAsInt(parameters, self.ORDER, context)
+        gcps = self.load_gcps(parameters, context, raster)
+        gcps, unit = self.prepare(gcps)
+        size = None
+        if raster:
+            width, height, _, _ = warp.image_info(raster)
+            size = (width, height)
+        else:
+            w = self._optional_number(parameters, self.IMAGE_WIDTH)
+            h = self._optional_number(parameters, self.IMAGE_HEIGHT)
+            if w and h:
+                size = (int(w), int(h))
+        if size is not None:
+            gcp_io.check_in_image(gcps, *size)
+        acc = gcp_report.evaluate_gcps(gcps, order=order,
+                                       gr=self._optional_number(parameters, self.GR),
+                                       image_size=size, units=unit,
+                                       **self.core_callbacks(feedback))
+        s = acc.selected.stats
+        feedback.pushInfo(f"Order {order}: RMS_T = {s.rms_t:.4f} {unit} (divisor n), "
+                          f"{'' if s.rms_t_qgis is None else f'{s.rms_t_qgis:.4f}'} "
+                          f"(divisor n − N); {s.n_within}/{s.n} within RMS_T; verdict "
+                          f"{acc.verdict}.")
+        feedback.pushInfo(f"Recommendation: {acc.recommendation}")
+        outputs = self.numbers(acc)
+        for t in (1, 2, 3):
+            r = acc.results.get(t)
+            outputs[f"RMS_T_ORDER{t}"] = r.stats.rms_t if r is not None and r.ok else None
+            outputs[f"LOO_RMS_T_ORDER{t}"] = (r.loo_rms if r is not None and r.ok else None)
+        if paths[self.OUTPUT_HTML]:
+            self.write_text(paths[self.OUTPUT_HTML],
+                            gcp_report.to_html(acc, lang=self.html_lang()))
+            outputs[self.OUTPUT_HTML] = paths[self.OUTPUT_HTML]
+        if paths[self.OUTPUT_CSV]:
+            self.write_text(paths[self.OUTPUT_CSV], gcp_report.to_csv(acc))
+            outputs[self.OUTPUT_CSV] = paths[self.OUTPUT_CSV]
+        if paths[self.OUTPUT_JSON]:
+            self.write_text(paths[self.OUTPUT_JSON], gcp_report.to_json(acc))
+            outputs[self.OUTPUT_JSON] = paths[self.OUTPUT_JSON]
+        feedback.setProgress(100)
+        return outputs

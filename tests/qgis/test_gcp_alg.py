@@ -1,0 +1,138 @@
+"""GCP rectification algorithms through processing.run in a headless QGIS."""
+from __future__ import annotations
+
+import hashlib
+import json
+
+import numpy as np
+import pytest
+
+from geomatics_toolbox.core import gcp_io, gcp_synthetic
+
+EPSG = "EPSG:22780"
+
+
+def sha(path) -> str:
+    with open(path, "rb") as fh:
+        return hashlib.sha256(fh.read()).hexdigest()
+
+
+def make_case(tmp_path, name="img", order=2, scale=8.0, seed=3, crs_line=True):
+    """A small image and its Georeferencer .points file (1/8-scale image-1 GCPs)."""
+    pix, mp, _, _ = gcp_synthetic.synthetic_gcps(order, noise=1.0, seed=seed)
+    pix = pix / scale
+    w, h = int(pix[:, 0].max() + 20), int(pix[:, 1].max() + 20)
+    img = gcp_synthetic.write_test_image(tmp_path / f"{name}.tif", w, h)
+    g = gcp_io.make_gcps(None, pix, mp)
+    pts = tmp_path / f"{name}.tif.points"
+    pts.write_text(gcp_io.points_text(g, crs_wkt=EPSG if crs_line else ""))
+    return img, pts, pix, mp
+
+
+def test_rectify_through_processing(qgis_processing, tmp_path):
+    from osgeo import gdal
+    img, pts, _, _ = make_case(tmp_path)
+    before = sha(img)
+    out = tmp_path / "rect.tif"
+    html = tmp_path / "rect.html"
+    res = qgis_processing.run("geomatics:rectifygcp", {
+        "INPUT": str(img), "GCP_FILE": str(pts), "ORDER": 2, "RESAMPLING": 0,
+        "OUTPUT": str(out), "OUTPUT_HTML": str(html)})
+    assert res["OUTPUT"] == str(out) and out.exists() and html.exists()
+    assert res["N_GCP"] == 22 and res["REDUNDANCY"] == 16
+    assert res["GR"] == pytest.approx(8 * gcp_synthetic.IMAGE1_GR, rel=0.01)
+    assert res["RMS_T"] == pytest.approx(1.0 * np.sqrt(16 / 22) * np.sqrt(2), rel=0.5)
+    assert res["RMS_T_QGIS"] > res["RMS_T"]
+    ds = gdal.Open(str(out))
+    assert "22780" in ds.GetProjection()
+    assert ds.GetGeoTransform()[1] == pytest.approx(res["GR"])
+    assert sha(img) == before
+    assert "RMS_T" in html.read_text(encoding="utf-8")
+
+
+def test_rectify_batch_of_two_images(qgis_processing, tmp_path):
+    outs = []
+    for k in range(2):
+        img, pts, _, _ = make_case(tmp_path, name=f"b{k}", seed=k)
+        out = tmp_path / f"b{k}_rect.tif"
+        res = qgis_processing.run("geomatics:rectifygcp", {
+            "INPUT": str(img), "GCP_FILE": str(pts), "ORDER": 1 + k, "OUTPUT": str(out),
+            "RESAMPLING": 1, "RESOLUTION": 10.0})
+        outs.append(out)
+        assert out.exists() and res["N_GCP"] == 22
+    from osgeo import gdal
+    assert gdal.Open(str(outs[0])).GetGeoTransform()[1] == pytest.approx(10.0)
+
+
+def test_accuracy_report_all_orders_and_outputs(qgis_processing, tmp_path):
+    img, pts, _, _ = make_case(tmp_path, order=2)
+    paths = {k: tmp_path / f"r.{k.split('_')[1].lower()}" for k in
+             ("OUTPUT_HTML", "OUTPUT_CSV", "OUTPUT_JSON")}
+    res = qgis_processing.run("geomatics:gcpaccuracyreport", {
+        "INPUT": str(img), "GCP_FILE": str(pts), "ORDER": 2, "GR": 7.28,
+        **{k: str(v) for k, v in paths.items()}})
+    for p in paths.values():
+        assert p.exists()
+    assert res["GR"] == pytest.approx(7.28) and res["SCALE"] == pytest.approx(145600)
+    assert res["RECOMMENDED_ORDER"] in (2, 3)
+    assert res["RMS_T_ORDER1"] > res["RMS_T_ORDER2"] > 0 and res["RMS_T_ORDER3"] > 0
+    d = json.loads(paths["OUTPUT_JSON"].read_text(encoding="utf-8"))
+    fit = d["orders"]["2"]["fit"]
+    assert fit["rms_t"] == pytest.approx(res["RMS_T"])
+    assert res["ACCEPTED"] == int(fit["c4"] in ("strict", "accepted") and fit["c5"]
+                                  and fit["c6"])
+    assert set(d["orders"]) == {"1", "2", "3"}
+    assert len(paths["OUTPUT_CSV"].read_text().splitlines()) == 23
+
+
+def test_accuracy_report_from_point_layer_with_check_points(qgis_processing, tmp_path):
+    from qgis.core import QgsFeature, QgsField, QgsGeometry, QgsPointXY, QgsVectorLayer
+    from qgis.PyQt.QtCore import QVariant
+    _, _, pix, mp = make_case(tmp_path)
+    lyr = QgsVectorLayer(f"Point?crs={EPSG}", "gcps", "memory")
+    pr = lyr.dataProvider()
+    pr.addAttributes([QgsField("name", QVariant.String), QgsField("px", QVariant.Double),
+                      QgsField("py", QVariant.Double), QgsField("kind", QVariant.String)])
+    lyr.updateFields()
+    feats = []
+    for k, ((c, r), (x, y)) in enumerate(zip(pix, mp)):
+        f = QgsFeature(lyr.fields())
+        f.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(x, y)))
+        f.setAttributes([f"P{k + 1}", float(c), float(r), "check" if k % 5 == 0 else "gcp"])
+        feats.append(f)
+    pr.addFeatures(feats)
+    res = qgis_processing.run("geomatics:gcpaccuracyreport", {
+        "GCP_LAYER": lyr, "COL_FIELD": "px", "ROW_FIELD": "py", "ID_FIELD": "name",
+        "ROLE_FIELD": "kind", "ORDER": 2})
+    assert res["N_CHECK"] == 5 and res["N_GCP"] == 17
+    assert 0 < res["CHECK_RMS_T"] < 10
+
+
+@pytest.mark.parametrize("case, message", [
+    ("no_crs", "no CRS"),
+    ("order3_few", "at least 10"),
+    ("outside", "outside the image"),
+    ("no_gcps", "No GCPs"),
+])
+def test_bad_input_clear_error_nothing_written(qgis_processing, tmp_path, case, message):
+    from qgis.core import QgsProcessingException
+    img, pts, pix, mp = make_case(tmp_path, crs_line=case != "no_crs")
+    if case == "order3_few":
+        g = gcp_io.read_points(pts)
+        pts.write_text(gcp_io.points_text(g.subset(np.arange(len(g)) < 8)))
+    if case == "outside":
+        g = gcp_io.read_points(pts)
+        g.pixel[3, 0] = 1e5
+        pts.write_text(gcp_io.points_text(g))
+    before = sha(img)
+    out = tmp_path / "never.tif"
+    html = tmp_path / "never.html"
+    params = {"INPUT": str(img), "GCP_FILE": "" if case == "no_gcps" else str(pts),
+              "ORDER": 3 if case == "order3_few" else 2, "OUTPUT": str(out),
+              "OUTPUT_HTML": str(html)}
+    with pytest.raises(QgsProcessingException, match=message):
+        qgis_processing.run("geomatics:rectifygcp", params)
+    assert not out.exists() and not html.exists()
+    assert sha(img) == before
+    leftovers = sorted(p.name for p in tmp_path.iterdir())
+    assert leftovers == sorted(["img.tif", pts.name]), leftovers
