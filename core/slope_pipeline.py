@@ -470,20 +470,28 @@ def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_C
 _COLOURS = ("#1f5f8b", "#b42318", "#1a7f37", "#9a6700", "#6e40c9", "#444444")
 
 
-def svg_lines(series, *, xlabel: str, ylabel: str, title: str = "", width: int = 560,
-              height: int = 320) -> str:
-    """Multi-line chart as inline SVG; ``series`` = [(label, xs, ys), ...]."""
-    xs = np.concatenate([np.asarray(s[1], float) for s in series]) if series else np.zeros(1)
-    ys = np.concatenate([np.asarray(s[2], float) for s in series]) if series else np.zeros(1)
+_DASH = {"total": "", "Type I": ' stroke-dasharray="6 3"', "Type II": ' stroke-dasharray="2 3"'}
+
+
+def svg_lines(series, *, xlabel: str, ylabel: str, title: str = "", width: int = 600,
+              height: int = 330) -> str:
+    """Multi-line chart as inline SVG.
+
+    ``series`` = [(group label, style, xs, ys), ...]: one colour per group label,
+    one dash pattern per style ("total" solid, "Type I" dashed, "Type II" dotted).
+    """
+    if not series:
+        return ""
+    xs = np.concatenate([np.asarray(s[2], float) for s in series])
+    ys = np.concatenate([np.asarray(s[3], float) for s in series])
     ok = np.isfinite(xs) & np.isfinite(ys)
     if not ok.any():
-        return f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="40">' \
-               '<text x="10" y="25">no data</text></svg>'
+        return ""
     x0, x1 = float(xs[ok].min()), float(xs[ok].max())
-    y0, y1 = 0.0, float(ys[ok].max()) * 1.08 or 1.0
+    y0, y1 = 0.0, (float(ys[ok].max()) * 1.08) or 1.0
     if x1 == x0:
         x0, x1 = x0 - 1, x1 + 1
-    ml, mr, mt, mb = 50, 150, 24, 40
+    ml, mr, mt, mb = 50, 160, 24, 40
     pw, ph = width - ml - mr, height - mt - mb
 
     def px(v):
@@ -498,19 +506,29 @@ def svg_lines(series, *, xlabel: str, ylabel: str, title: str = "", width: int =
         yv = y0 + (y1 - y0) * k / 5
         parts.append(f'<text x="{ml - 5}" y="{py(yv) + 3:.1f}" font-size="10" '
                      f'text-anchor="end">{yv:.3g}</text>')
-    for xv in np.unique(xs[ok]):
+    for xv in np.unique(xs[ok])[:: max(1, int(np.unique(xs[ok]).size // 12) + 1)]:
         parts.append(f'<text x="{px(xv):.1f}" y="{mt + ph + 14}" font-size="10" '
                      f'text-anchor="middle">{xv:.4g}</text>')
-    for k, (label, sx, sy) in enumerate(series):
+    groups = list(dict.fromkeys(s[0] for s in series))
+    for group, style, sx, sy in series:
         sx, sy = np.asarray(sx, float), np.asarray(sy, float)
         good = np.isfinite(sx) & np.isfinite(sy)
-        col = _COLOURS[k % len(_COLOURS)]
-        dash = ' stroke-dasharray="5 3"' if (k // len(_COLOURS)) % 2 else ""
+        col = _COLOURS[groups.index(group) % len(_COLOURS)]
         pts = " ".join(f"{px(a):.1f},{py(b):.1f}" for a, b in zip(sx[good], sy[good]))
         parts.append(f'<polyline points="{pts}" fill="none" stroke="{col}" '
-                     f'stroke-width="1.8"{dash}/>')
-        parts.append(f'<text x="{ml + pw + 8}" y="{mt + 12 + 14 * k}" font-size="11" '
-                     f'fill="{col}">{esc(label)}</text>')
+                     f'stroke-width="1.8"{_DASH.get(style, "")}/>')
+    yk = mt + 12
+    for group in groups:
+        col = _COLOURS[groups.index(group) % len(_COLOURS)]
+        parts.append(f'<text x="{ml + pw + 8}" y="{yk}" font-size="11" fill="{col}">'
+                     f"{esc(group)}</text>")
+        yk += 15
+    yk += 6
+    for style, dash in _DASH.items():
+        parts.append(f'<line x1="{ml + pw + 8}" y1="{yk - 4}" x2="{ml + pw + 36}" '
+                     f'y2="{yk - 4}" stroke="#333" stroke-width="1.8"{dash}/>'
+                     f'<text x="{ml + pw + 42}" y="{yk}" font-size="11">{esc(style)}</text>')
+        yk += 15
     parts.append(f'<text x="{ml + pw / 2:.0f}" y="{height - 6}" font-size="11" '
                  f'text-anchor="middle">{esc(xlabel)}</text>')
     parts.append(f'<text x="12" y="{mt + ph / 2:.0f}" font-size="11" text-anchor="middle" '
@@ -556,16 +574,19 @@ def sweep_report(summary: SweepSummary, *, lang: str = "en") -> str:
     body.append("<h2>All settings</h2>" + html_table(headers, rows))
     series = []
     passes = sorted({(r.radius, r.height_tolerance) for r in res.rows})
-    for r, h in passes:
+    for r, h in passes[:len(_COLOURS)]:
         sub = [row for row in res.rows if row.radius == r and row.height_tolerance == h]
-        tag = f"r={r:g} h={h:g}" if len(passes) > 1 else ""
+        tag = f"r = {r:g} m, h = {h:g} m"
         xs = [row.slope for row in sub]
-        series.append((f"total {tag}".strip(), xs, [row.total for row in sub]))
-        series.append((f"Type I {tag}".strip(), xs, [row.type1 for row in sub]))
-        series.append((f"Type II {tag}".strip(), xs, [row.type2 for row in sub]))
+        series.append((tag, "total", xs, [row.total for row in sub]))
+        series.append((tag, "Type I", xs, [row.type1 for row in sub]))
+        series.append((tag, "Type II", xs, [row.type2 for row in sub]))
     if len({row.slope for row in res.rows}) > 1:
-        body.append(svg_lines(series[:18], xlabel="slope threshold θ (°)",
-                              ylabel="error (%)", title="Errors against the threshold"))
+        body.append(svg_lines(series, xlabel="slope threshold θ (°)", ylabel="error (%)",
+                              title="Errors against the threshold"))
+        if len(passes) > len(_COLOURS):
+            body.append(f'<p class="note">Chart limited to the first {len(_COLOURS)} '
+                        "radius/tolerance combinations; the table holds all.</p>")
     body.append(html_params(summary.settings, title="Parameters"))
     body.append(f'<p class="note">Computed in {summary.seconds:.1f} s: one exact '
                 "neighbourhood pass per radius and tolerance (per-point required slope), "
