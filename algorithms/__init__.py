@@ -12,10 +12,16 @@ def all_algorithms():
     """Fresh instances of every algorithm the provider offers."""
     from .gsd_calculator import GsdCalculatorAlgorithm, GsdBatchAlgorithm
     from .gcp_rectification import GcpAccuracyReportAlgorithm, RectifyGcpAlgorithm
+    from .terrain import DsmAlgorithm, IdwDtmAlgorithm, KrigingDtmAlgorithm
+    from .dtm_accuracy import DtmAccuracyAlgorithm
 
     return [
         GsdCalculatorAlgorithm(),
         GsdBatchAlgorithm(),
         RectifyGcpAlgorithm(),
         GcpAccuracyReportAlgorithm(),
+        IdwDtmAlgorithm(),
+        KrigingDtmAlgorithm(),
+        DsmAlgorithm(),
+        DtmAccuracyAlgorithm(),
     ]

@@ -1,0 +1,284 @@
+"""DTM accuracy against check points (GNSS/total-station heights)."""
+from __future__ import annotations
+
+import os
+
+import numpy as np
+from qgis.core import (QgsCoordinateTransform, QgsFeature,
+                       QgsFeatureSink, QgsField, QgsFields, QgsGeometry, QgsPoint,
+                       QgsProcessing, QgsProcessingException, QgsProcessingOutputNumber,
+                       QgsProcessingParameterBoolean, QgsProcessingParameterCrs,
+                       QgsProcessingParameterEnum, QgsProcessingParameterFeatureSink,
+                       QgsProcessingParameterFeatureSource, QgsProcessingParameterField,
+                       QgsProcessingParameterFile, QgsProcessingParameterFileDestination,
+                       QgsProcessingParameterRasterLayer, QgsWkbTypes)
+from qgis.PyQt.QtCore import QVariant
+
+from ..core import dtm_accuracy as core_acc
+from ..core.raster_io import read_raster
+from ..core.report import html_page, html_table, svg_histogram, svg_scatter
+from ..core.terrain_io import read_checkpoints_csv
+from .base import GeomaticsAlgorithm
+
+NUMBERS = (
+    ("N", "n", "Check points used"),
+    ("N_OUTSIDE", "n_outside", "Check points outside the DTM"),
+    ("N_NODATA", "n_nodata", "Check points on DTM nodata"),
+    ("ME", "me", "Mean error (m)"),
+    ("MAE", "mae", "Mean absolute error (m)"),
+    ("RMSE", "rmse", "RMSE (m)"),
+    ("STD", "std", "Standard deviation of the errors (m)"),
+    ("MAX_ABS_ERROR", "max_abs_error", "Maximum absolute error (m)"),
+    ("R", "r", "Pearson r"),
+    ("R2", "r2", "R²"),
+    ("NMAD", "nmad", "NMAD (m)"),
+    ("ACCURACY_95", "accuracy_95", "Vertical accuracy at 95 % = 1.96·RMSE (m)"),
+)
+
+
+class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
+    """DTM accuracy against check points: statistics, residual layer, HTML report."""
+
+    GROUP = "accuracy"
+
+    DTM = "DTM"
+    BAND = "BAND"
+    CHECKPOINTS = "CHECKPOINTS"
+    Z_FIELD = "Z_FIELD"
+    ID_FIELD = "ID_FIELD"
+    CHECKPOINTS_CSV = "CHECKPOINTS_CSV"
+    CSV_CRS = "CSV_CRS"
+    REPROJECT = "REPROJECT"
+    METHOD = "METHOD"
+    OUTPUT = "OUTPUT"
+    OUTPUT_HTML = "OUTPUT_HTML"
+
+    def name(self):
+        return "dtmaccuracy"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("DTM accuracy against check points")
+
+    def tags(self):
+        return self.tr("dtm,dem,accuracy,rmse,check points,gnss,nmad,asprs,vertical accuracy,"
+                       "validation").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Compares a DTM with independent check points (e.g. GNSS heights). The "
+            "DTM is sampled at each point (bilinear by default) and the errors "
+            "e = z<sub>DTM</sub> − z<sub>check</sub> are summarised: N, mean error (bias), "
+            "MAE, RMSE, standard deviation, max |e|, Pearson r and R² (= r²) between DTM "
+            "and check heights, NMAD = 1.4826·median|e − median e| (Höhle &amp; Höhle "
+            "2009), and the vertical accuracy at 95 % confidence = 1.96·RMSE (ASPRS "
+            "Positional Accuracy Standards 2014, which assumes unbiased normal errors; the "
+            "95th percentile of |e| is reported too). Check points outside the DTM or on "
+            "nodata are counted and excluded — never read as 0.</p>"
+            "<p><b>Example</b>: DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv → RMSE, r and a "
+            "report with a scatter plot and an error histogram.</p>"
+            "<p><b>Parameters</b></p><ul>"
+            "<li><b>DTM</b> (DTM): raster layer; BAND (default 1).</li>"
+            "<li><b>Check points</b> (CHECKPOINTS, optional): point layer; heights from "
+            "<b>Z_FIELD</b> or, if empty, from the geometry Z. <b>ID_FIELD</b> optional.</li>"
+            "<li><b>Check point file</b> (CHECKPOINTS_CSV, optional): delimited text with a "
+            "header x/easting, y/northing, z/height (and id/name), or columns id x y z "
+            "without header. Give the layer or the file.</li>"
+            "<li><b>CSV CRS</b> (CSV_CRS, optional): CRS of the file's coordinates; "
+            "default = the DTM's CRS.</li>"
+            "<li><b>Reproject check points</b> (REPROJECT, default no): when the check "
+            "points are in another CRS than the DTM, transform them (x, y only — heights "
+            "are not converted between vertical datums). Without it such points are an "
+            "error.</li>"
+            "<li><b>Sampling</b> (METHOD, 0 bilinear (default), 1 nearest cell).</li>"
+            "<li><b>Residuals</b> (OUTPUT): point layer with id, z_check, z_dtm, error, "
+            "abs_error and status (used / outside DTM / DTM nodata).</li>"
+            "<li><b>Report</b> (OUTPUT_HTML): HTML with the statistics, a DTM vs check "
+            "scatter plot, an error histogram and the residual table.</li></ul>"
+            "<p>Every statistic is also an output number (N, N_OUTSIDE, N_NODATA, ME, "
+            "MAE, RMSE, STD, MAX_ABS_ERROR, R, R2, NMAD, ACCURACY_95).</p>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add(QgsProcessingParameterRasterLayer(self.DTM, self.tr("DTM")))
+        self.add_number(self.BAND, self.tr("Band"), 1, minimum=1, integer=True,
+                        advanced=True)
+        self.add(QgsProcessingParameterFeatureSource(
+            self.CHECKPOINTS, self.tr("Check points (point layer)"),
+            [QgsProcessing.TypeVectorPoint], optional=True))
+        self.add(QgsProcessingParameterField(
+            self.Z_FIELD, self.tr("Height field (empty = geometry Z)"),
+            parentLayerParameterName=self.CHECKPOINTS,
+            type=QgsProcessingParameterField.Numeric, optional=True))
+        self.add(QgsProcessingParameterField(
+            self.ID_FIELD, self.tr("Id field"), parentLayerParameterName=self.CHECKPOINTS,
+            optional=True))
+        self.add(QgsProcessingParameterFile(
+            self.CHECKPOINTS_CSV, self.tr("Check point file (CSV/TXT)"),
+            behavior=QgsProcessingParameterFile.File,
+            fileFilter="Delimited text (*.csv *.txt *.xyz *.CSV *.TXT)", optional=True))
+        self.add(QgsProcessingParameterCrs(
+            self.CSV_CRS, self.tr("CRS of the check point file (default: DTM CRS)"),
+            optional=True))
+        self.add(QgsProcessingParameterBoolean(
+            self.REPROJECT, self.tr("Reproject check points to the DTM CRS"), False))
+        self.add(QgsProcessingParameterEnum(
+            self.METHOD, self.tr("Sampling"), [self.tr("Bilinear"), self.tr("Nearest cell")],
+            defaultValue=0))
+        self.add(QgsProcessingParameterFeatureSink(
+            self.OUTPUT, self.tr("Residuals"), QgsProcessing.TypeVectorPoint, optional=True,
+            createByDefault=True))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            optional=True, createByDefault=True))
+        for name, _, label in NUMBERS:
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+
+    # ------------------------------------------------------------------ inputs
+    def read_points(self, parameters, context, dtm_crs, feedback):
+        source = self.parameterAsSource(parameters, self.CHECKPOINTS, context)
+        csv_path = self.parameterAsFile(parameters, self.CHECKPOINTS_CSV, context)
+        reproject = self.parameterAsBool(parameters, self.REPROJECT, context)
+        if source is None and not csv_path:
+            raise QgsProcessingException(self.tr(
+                "Give the check points as a point layer (CHECKPOINTS) or a file "
+                "(CHECKPOINTS_CSV)."))
+        if source is not None and csv_path:
+            raise QgsProcessingException(self.tr(
+                "Give the check points either as a layer or as a file, not both."))
+        if source is not None:
+            zf = self.parameterAsString(parameters, self.Z_FIELD, context)
+            idf = self.parameterAsString(parameters, self.ID_FIELD, context)
+            src_crs = source.sourceCrs()
+            if not zf and not QgsWkbTypes.hasZ(source.wkbType()):
+                raise QgsProcessingException(self.tr(
+                    "The check point layer has no Z coordinate; choose the height field "
+                    "(Z_FIELD)."))
+            ids, xs, ys, zs = [], [], [], []
+            for k, f in enumerate(source.getFeatures(), start=1):
+                g = f.geometry()
+                if g is None or g.isEmpty():
+                    continue
+                p = next(iter(g.vertices()))
+                xs.append(p.x())
+                ys.append(p.y())
+                if zf:
+                    v = f[zf]
+                    zs.append(float(v) if v is not None and str(v) != "NULL" else np.nan)
+                else:
+                    zs.append(p.z())
+                ids.append(str(f[idf]) if idf else str(f.id() if f.id() >= 0 else k))
+            if not xs:
+                raise QgsProcessingException(self.tr("The check point layer has no points."))
+            x, y, z = np.array(xs), np.array(ys), np.array(zs, dtype=float)
+            what = self.tr("check point layer")
+        else:
+            ids, x, y, z = read_checkpoints_csv(csv_path)
+            src_crs = self.parameterAsCrs(parameters, self.CSV_CRS, context)
+            what = self.tr("check point file")
+        if src_crs is not None and src_crs.isValid() and dtm_crs.isValid() \
+                and src_crs != dtm_crs:
+            if not reproject:
+                raise QgsProcessingException(self.tr(
+                    "The {} is in {} but the DTM is in {}. Reproject the check points first "
+                    "or tick 'Reproject check points to the DTM CRS' (REPROJECT=true; x, y "
+                    "only, heights are not converted). No output was written.").format(
+                        what, src_crs.authid() or src_crs.description(),
+                        dtm_crs.authid() or dtm_crs.description()))
+            tr = QgsCoordinateTransform(src_crs, dtm_crs, context.transformContext())
+            for i in range(x.size):
+                pt = tr.transform(float(x[i]), float(y[i]))
+                x[i], y[i] = pt.x(), pt.y()
+            feedback.pushInfo(self.tr("Check points reprojected from {} to {}").format(
+                src_crs.authid(), dtm_crs.authid()))
+        elif src_crs is None or not src_crs.isValid():
+            feedback.pushInfo(self.tr("Check points assumed to be in the DTM's CRS."))
+        return ids, x, y, z
+
+    # ------------------------------------------------------------------ run
+    def process(self, parameters, context, feedback):
+        layer = self.parameterAsRasterLayer(parameters, self.DTM, context)
+        if layer is None:
+            raise QgsProcessingException(self.tr("Choose a DTM raster."))
+        band = self.parameterAsInt(parameters, self.BAND, context)
+        method = core_acc.METHODS[self.parameterAsEnum(parameters, self.METHOD, context)]
+        r = read_raster(layer.source(), band)
+        dtm_crs = layer.crs()
+        ids, x, y, z = self.read_points(parameters, context, dtm_crs, feedback)
+        res = core_acc.dtm_accuracy(r.masked(), r.geotransform, x, y, z, method=method)
+        summary = res.summary()
+        html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
+        results = {}
+        for name, key, _ in NUMBERS:
+            results[name] = summary[key]
+        feedback.pushInfo(self.tr("N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; "
+                                  "{} outside, {} on nodata").format(
+            res.n_used, summary["rmse"], summary["me"], summary["r"], res.n_outside,
+            res.n_nodata))
+        fields = QgsFields()
+        for nm, typ in (("id", QVariant.String), ("x", QVariant.Double),
+                        ("y", QVariant.Double), ("z_check", QVariant.Double),
+                        ("z_dtm", QVariant.Double), ("error", QVariant.Double),
+                        ("abs_error", QVariant.Double), ("status", QVariant.String)):
+            fields.append(QgsField(nm, typ))
+        sink, dest = self.parameterAsSink(parameters, self.OUTPUT, context, fields,
+                                          QgsWkbTypes.PointZ, dtm_crs)
+        if sink is not None:
+            err = res.error
+            for i in range(res.n_total):
+                f = QgsFeature(fields)
+                zc = float(res.z_check[i]) if np.isfinite(res.z_check[i]) else 0.0
+                f.setGeometry(QgsGeometry(QgsPoint(float(x[i]), float(y[i]), zc)))
+                ok = res.status[i] == core_acc.OK
+                f.setAttributes([
+                    ids[i], float(x[i]), float(y[i]),
+                    float(res.z_check[i]) if np.isfinite(res.z_check[i]) else None,
+                    float(res.z_dtm[i]) if ok else None, float(err[i]) if ok else None,
+                    float(abs(err[i])) if ok else None,
+                    core_acc.STATUS_NAMES[int(res.status[i])]])
+                sink.addFeature(f, QgsFeatureSink.FastInsert)
+            results[self.OUTPUT] = dest
+        if html:
+            results[self.OUTPUT_HTML] = self.write_text(
+                html, self.report(res, ids, layer.source(), method, dtm_crs))
+        return results
+
+    def report(self, res, ids, dtm_path, method, crs) -> str:
+        s = res.summary()
+        body = html_table(("item", "value"), [
+            ("DTM", os.path.basename(dtm_path)),
+            ("CRS", crs.authid() or crs.description() or "unknown"),
+            ("sampling", method), ("check points given", res.n_total),
+            ("used", res.n_used), ("outside the DTM (excluded)", res.n_outside),
+            ("on DTM nodata or without height (excluded)", res.n_nodata),
+            ("bilinear with some nodata neighbours (renormalised)", res.n_partial)])
+        rows = [("N", s["n"]), ("mean error ME (m)", s["me"]),
+                ("median error (m)", s["median_error"]),
+                ("mean absolute error MAE (m)", s["mae"]), ("RMSE (m)", s["rmse"]),
+                ("standard deviation (m)", s["std"]),
+                ("min / max error (m)", f"{s['min_error']:.3f} / {s['max_error']:.3f}"),
+                ("max |error| (m)", s["max_abs_error"]), ("Pearson r", s["r"]),
+                ("R² (= r²)", s["r2"]), ("NMAD (m)", s["nmad"]),
+                ("vertical accuracy 95 % = 1.96·RMSE (m, ASPRS 2014)", s["accuracy_95"]),
+                ("95th percentile of |error| (m)", s["p95_abs_error"])]
+        body += "<h2>Statistics (error = DTM − check)</h2>" + html_table(
+            ("statistic", "value"), rows, digits=4)
+        used = res.status == core_acc.OK
+        body += "<h2>Plots</h2>"
+        body += svg_scatter(res.z_check[used], res.z_dtm[used], xlabel="check height (m)",
+                            ylabel="DTM height (m)", title="DTM vs check heights",
+                            one_to_one=True)
+        body += svg_histogram(res.error[used], xlabel="error DTM − check (m)",
+                              title="error histogram")
+        order = np.argsort(-np.nan_to_num(np.abs(res.error), nan=-1.0))
+        trows = []
+        for i in order[:500]:
+            ok = res.status[i] == core_acc.OK
+            trows.append((str(ids[i]), res.x[i], res.y[i], res.z_check[i],
+                          res.z_dtm[i] if ok else float("nan"),
+                          res.error[i] if ok else float("nan"),
+                          core_acc.STATUS_NAMES[int(res.status[i])]))
+        body += "<h2>Residuals (largest |error| first)</h2>" + html_table(
+            ("id", "x", "y", "z check", "z DTM", "error", "status"), trows, digits=3)
+        body += ("<p class='note'>ASPRS Positional Accuracy Standards for Digital Geospatial "
+                 "Data (2014): 95 % vertical accuracy = 1.96·RMSE for normally distributed "
+                 "errors; NMAD after Höhle &amp; Höhle (2009), ISPRS J. 64(4), 398–406.</p>")
+        return html_page(self.tr("DTM accuracy against check points"), body)

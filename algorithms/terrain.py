@@ -1,0 +1,658 @@
+"""Terrain models from LiDAR points: IDW DTM, kriging DTM, DSM / nDSM.
+
+Thin wrappers over :mod:`..core.idw`, :mod:`..core.kriging`, :mod:`..core.dsm` with
+the shared :mod:`..core.grid` definition.
+"""
+from __future__ import annotations
+
+import os
+import time
+
+import numpy as np
+from qgis.core import (QgsCoordinateReferenceSystem, QgsProcessingException,
+                       QgsProcessingOutputNumber, QgsProcessingParameterBoolean,
+                       QgsProcessingParameterCrs, QgsProcessingParameterEnum,
+                       QgsProcessingParameterExtent, QgsProcessingParameterFile,
+                       QgsProcessingParameterFileDestination,
+                       QgsProcessingParameterRasterDestination,
+                       QgsProcessingParameterRasterLayer, QgsProcessingParameterString)
+
+from ..core import dsm as core_dsm
+from ..core import idw as core_idw
+from ..core import kriging as core_kriging
+from ..core.atomic import check_not_input
+from ..core.grid import GridSpec, grid_from_extent, grid_from_points, grid_like
+from ..core.las_io import iter_las_chunks, las_info
+from ..core.raster_io import read_raster
+from ..core.report import html_page, html_params, html_table, svg_histogram, svg_scatter
+from ..core.terrain_io import parse_classes, read_class_points, write_grid
+from .base import GeomaticsAlgorithm
+
+NAN = float("nan")
+LAS_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
+
+_HELP_COMMON = (
+    "<li><b>Point cloud</b> (INPUT): a .las or .laz file (LAS 1.0–1.4), e.g. the output "
+    "of a ground filter.</li>"
+    "<li><b>Classes used</b> (CLASSES, default <code>2</code> = ground): comma-separated "
+    "LAS classes interpolated; empty = every point. No point of these classes → error "
+    "that lists the classes present.</li>"
+    "<li><b>Cell size</b> (CELL_SIZE, m, default 1.0, &gt; 0).</li>"
+    "<li><b>Extent</b> (EXTENT, optional): default = the selected points' extent. The "
+    "grid is snapped outward to multiples of the cell size so that tiles line up.</li>"
+    "<li><b>CRS</b> (CRS, optional): overrides the CRS of the LAS file. If the file has "
+    "no CRS and none is given the algorithm stops with an error (a DTM without a CRS "
+    "is a common source of misplaced data).</li>"
+    "<li><b>Maximum distance to data</b> (MAX_DISTANCE, m, default 0 = automatic: five "
+    "mean point spacings, at least two cells): cells whose nearest point is farther "
+    "are nodata, so no terrain is invented under water, removed buildings or missing "
+    "strips.</li>"
+    "<li><b>Fill data gaps</b> (FILL_GAPS, default no): interpolate every cell however "
+    "far from the data (ignores MAX_DISTANCE).</li>"
+    "<li><b>Output</b> (OUTPUT): GeoTIFF (float32, DEFLATE, nodata −9999) in the input "
+    "CRS; values belong to cell centres.</li>"
+    "<li><b>Report</b> (OUTPUT_HTML, optional): HTML report.</li>")
+
+
+def _crs_string(crs: QgsCoordinateReferenceSystem) -> str:
+    if crs is None or not crs.isValid():
+        return ""
+    authid = crs.authid()
+    if authid and authid.upper().startswith("EPSG:"):
+        return authid
+    return crs.toWkt(QgsCoordinateReferenceSystem.WKT_PREFERRED_GDAL)
+
+
+def _qgs_crs(text: str) -> QgsCoordinateReferenceSystem:
+    if not text:
+        return QgsCoordinateReferenceSystem()
+    crs = QgsCoordinateReferenceSystem(text)
+    if not crs.isValid():
+        crs = QgsCoordinateReferenceSystem.fromWkt(text)
+    return crs
+
+
+def _check_tif(path: str) -> None:
+    if path and os.path.splitext(path)[1].lower() not in (".tif", ".tiff"):
+        raise QgsProcessingException(
+            f"Output {path}: only GeoTIFF outputs are written; use a .tif file name.")
+
+
+class _GridAlgorithm(GeomaticsAlgorithm):
+    """Shared parameters: LAS input, class filter, grid, CRS, gaps, outputs."""
+
+    GROUP = "terrain"
+
+    INPUT = "INPUT"
+    CLASSES = "CLASSES"
+    CELL_SIZE = "CELL_SIZE"
+    EXTENT = "EXTENT"
+    CRS = "CRS"
+    MAX_DISTANCE = "MAX_DISTANCE"
+    FILL_GAPS = "FILL_GAPS"
+    OUTPUT = "OUTPUT"
+    OUTPUT_HTML = "OUTPUT_HTML"
+
+    def add_input_params(self, *, classes_default: str = "2"):
+        self.add(QgsProcessingParameterFile(
+            self.INPUT, self.tr("Point cloud (LAS/LAZ)"),
+            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_FILTER))
+        self.add(QgsProcessingParameterString(
+            self.CLASSES, self.tr("Classes used (comma-separated; empty = all)"),
+            defaultValue=classes_default, optional=True))
+        self.add_number(self.CELL_SIZE, self.tr("Cell size (m)"), 1.0, minimum=0.0)
+        self.add(QgsProcessingParameterExtent(self.EXTENT, self.tr("Extent"), optional=True))
+        self.add(QgsProcessingParameterCrs(
+            self.CRS, self.tr("CRS (overrides the LAS file's CRS)"), optional=True))
+
+    def add_gap_params(self):
+        self.add_number(self.MAX_DISTANCE, self.tr("Maximum distance to data (m, 0 = auto)"),
+                        0.0, minimum=0.0, advanced=True)
+        self.add(QgsProcessingParameterBoolean(
+            self.FILL_GAPS, self.tr("Fill data gaps (interpolate far from data)"), False),
+            advanced=True)
+
+    def add_html(self):
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            optional=True, createByDefault=False))
+
+    # ---------------------------------------------------------------- helpers
+    def resolve_crs(self, parameters, context, las_crs):
+        given = self.parameterAsCrs(parameters, self.CRS, context)
+        if given is not None and given.isValid():
+            return _crs_string(given), "parameter CRS"
+        if las_crs:
+            return las_crs, "LAS file"
+        raise QgsProcessingException(self.tr(
+            "The point cloud has no CRS record and no CRS was given; set the CRS parameter "
+            "(e.g. EPSG:32632). No output was written."))
+
+    def extent_box(self, parameters, context, crs_text):
+        if parameters.get(self.EXTENT) in (None, ""):
+            return None
+        rect = self.parameterAsExtent(parameters, self.EXTENT, context, _qgs_crs(crs_text))
+        if rect is None or rect.isNull() or rect.isEmpty():
+            return None
+        return (rect.xMinimum(), rect.xMaximum(), rect.yMinimum(), rect.yMaximum())
+
+    def cell_size(self, parameters, context):
+        cell = self.parameterAsDouble(parameters, self.CELL_SIZE, context)
+        if not cell > 0:
+            raise QgsProcessingException(self.tr(
+                "Cell size must be > 0 (metres); give e.g. 1.0. No output was written."))
+        return cell
+
+    def gap_options(self, parameters, context):
+        fill = self.parameterAsBool(parameters, self.FILL_GAPS, context)
+        maxd = self.parameterAsDouble(parameters, self.MAX_DISTANCE, context)
+        return fill, (maxd if maxd > 0 else None)
+
+    def load_points(self, parameters, context, feedback):
+        path = self.parameterAsFile(parameters, self.INPUT, context)
+        classes = parse_classes(self.parameterAsString(parameters, self.CLASSES, context))
+        info = las_info(path)
+        crs, crs_source = self.resolve_crs(parameters, context, info.crs)
+        box = self.extent_box(parameters, context, crs)
+        cell = self.cell_size(parameters, context)
+        cb = self.core_callbacks(feedback)
+        feedback.pushInfo(self.tr("Reading points of class(es) {} from {}").format(
+            ", ".join(map(str, classes)) or "all", path))
+        pts = read_class_points(path, classes, extent=box, progress=None, cancel=cb["cancel"])
+        feedback.pushInfo(self.tr("{} of {} points selected").format(len(pts), pts.n_total))
+        grid = grid_from_points(pts.x, pts.y, cell, extent=box, crs=crs)
+        return path, pts, grid, crs_source
+
+    def output_path(self, parameters, name, context, *inputs):
+        out = self.parameterAsOutputLayer(parameters, name, context)
+        _check_tif(out)
+        if out:
+            check_not_input(out, *inputs)
+        return out
+
+    @staticmethod
+    def grid_stats(arr) -> dict:
+        ok = np.isfinite(arr)
+        return {"valid_cells": int(ok.sum()), "nodata_cells": int((~ok).sum()),
+                "min": float(arr[ok].min()) if ok.any() else float("nan"),
+                "max": float(arr[ok].max()) if ok.any() else float("nan")}
+
+    @staticmethod
+    def input_rows(path, pts, crs_source, grid: GridSpec):
+        classes = ", ".join(f"{c}: {n:,}" for c, n in sorted(pts.class_counts.items()))
+        return [("input", os.path.basename(path)), ("points in file", f"{pts.n_total:,}"),
+                ("classes present (class: count)", classes),
+                ("points used", f"{len(pts):,}"),
+                ("classes used", ", ".join(map(str, pts.classes)) or "all"),
+                ("CRS source", crs_source),
+                ("grid", f"{grid.ncols} × {grid.nrows} cells of {grid.cell:g} m"),
+                ("extent (xmin, xmax, ymin, ymax)",
+                 ", ".join(f"{v:.3f}" for v in grid.extent))]
+
+
+class IdwDtmAlgorithm(_GridAlgorithm):
+    """IDW DTM (gdal_grid invdistnn semantics)."""
+
+    POWER = "POWER"
+    NEIGHBOURS = "NEIGHBOURS"
+    RADIUS = "RADIUS"
+    MIN_POINTS = "MIN_POINTS"
+
+    def name(self):
+        return "idwdtm"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("DTM by inverse distance weighting (IDW)")
+
+    def tags(self):
+        return self.tr("dtm,dem,idw,inverse distance,interpolation,lidar,ground,gdal_grid,"
+                       "invdistnn,raster").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Interpolates a terrain raster from the ground points of a LAS/LAZ file by "
+            "inverse distance weighting (Shepard 1968): ẑ = Σ w<sub>i</sub> z<sub>i</sub> / "
+            "Σ w<sub>i</sub>, w<sub>i</sub> = 1/d<sub>i</sub><sup>p</sup>, over the nearest "
+            "neighbours of each cell centre. Same semantics as <code>gdal_grid -a "
+            "invdistnn</code> (power, max_points, radius, min_points; a cell centre on a "
+            "point takes its height exactly), but KD-tree based and processed in blocks: "
+            "1 M points onto 1 M cells take seconds.</p>"
+            "<p><b>Example</b>: INPUT=ground.laz CLASSES=2 CELL_SIZE=1 POWER=3 NEIGHBOURS=12 "
+            "(the seed paper's best setting, RMSE 0.204 m at 62 GNSS points).</p>"
+            "<p><b>Parameters</b></p><ul>" + _HELP_COMMON +
+            "<li><b>Power</b> (POWER, default 2; the paper found 3 best).</li>"
+            "<li><b>Neighbours</b> (NEIGHBOURS, default 12): nearest points used (gdal "
+            "max_points); 0 = all points within the radius (needs RADIUS). More "
+            "neighbours than points → error.</li>"
+            "<li><b>Search radius</b> (RADIUS, m, default 0 = unlimited): only points "
+            "within it are used (gdal radius).</li>"
+            "<li><b>Minimum points</b> (MIN_POINTS, default 0): cells with fewer "
+            "neighbours within the radius are nodata (gdal min_points).</li></ul>"
+            "<p>Outputs also the numbers N_POINTS, VALID_CELLS, NODATA_CELLS.</p>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_input_params()
+        self.add_number(self.POWER, self.tr("Power p"), 2.0, minimum=0.0)
+        self.add_number(self.NEIGHBOURS, self.tr("Neighbours (0 = all within radius)"), 12,
+                        minimum=0, integer=True)
+        self.add_number(self.RADIUS, self.tr("Search radius (m, 0 = unlimited)"), 0.0,
+                        minimum=0.0)
+        self.add_number(self.MIN_POINTS, self.tr("Minimum points"), 0, minimum=0,
+                        integer=True, advanced=True)
+        self.add_gap_params()
+        self.add(QgsProcessingParameterRasterDestination(self.OUTPUT, self.tr("IDW DTM")))
+        self.add_html()
+        for name, label in (("N_POINTS", "Points interpolated"),
+                            ("VALID_CELLS", "Cells with a value"),
+                            ("NODATA_CELLS", "Nodata cells")):
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+
+    def process(self, parameters, context, feedback):
+        t0 = time.time()
+        path = self.parameterAsFile(parameters, self.INPUT, context)
+        out = self.output_path(parameters, self.OUTPUT, context, path)
+        html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
+        power = self.parameterAsDouble(parameters, self.POWER, context)
+        k = self.parameterAsInt(parameters, self.NEIGHBOURS, context)
+        radius = self.parameterAsDouble(parameters, self.RADIUS, context)
+        minp = self.parameterAsInt(parameters, self.MIN_POINTS, context)
+        fill, maxd = self.gap_options(parameters, context)
+        path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
+        cb = self.core_callbacks(feedback)
+        dtm = core_idw.idw_grid(pts.x, pts.y, pts.z, grid, power=power, max_points=k,
+                                radius=radius if radius > 0 else None, min_points=minp,
+                                max_distance=maxd, fill=fill, **cb)
+        meta = {"method": f"IDW p={power:g} k={k} radius={radius:g} min_points={minp}",
+                "source": os.path.basename(path)}
+        write_grid(out, dtm, grid, metadata=meta, band_name="DTM (IDW)")
+        stats = self.grid_stats(dtm)
+        results = {self.OUTPUT: out, "N_POINTS": len(pts),
+                   "VALID_CELLS": stats["valid_cells"], "NODATA_CELLS": stats["nodata_cells"]}
+        if html:
+            params = {"power": power, "neighbours": k,
+                      "radius (m)": radius if radius > 0 else "unlimited",
+                      "min points": minp,
+                      "gaps": "filled" if fill else (f"{maxd:g} m" if maxd else "auto")}
+            body = html_params(params)
+            body += "<h2>Input and grid</h2>" + html_table(
+                ("item", "value"), self.input_rows(path, pts, crs_source, grid))
+            body += "<h2>Result</h2>" + html_table(("item", "value"), [
+                ("cells with a value", stats["valid_cells"]),
+                ("nodata cells", stats["nodata_cells"]),
+                ("min height (m)", stats["min"]), ("max height (m)", stats["max"]),
+                ("run time (s)", time.time() - t0)])
+            body += ("<p class='note'>Method: Shepard (1968) inverse distance weighting, "
+                     "semantics of gdal_grid -a invdistnn.</p>")
+            results[self.OUTPUT_HTML] = self.write_text(
+                html, html_page(self.tr("IDW DTM report"), body))
+        return results
+
+
+class KrigingDtmAlgorithm(_GridAlgorithm):
+    """Kriging DTM with variance raster, fitted variogram and cross-validation."""
+
+    KRIGING_TYPE = "KRIGING_TYPE"
+    VARIOGRAM = "VARIOGRAM"
+    VARIOGRAM_PARAMS = "VARIOGRAM_PARAMS"
+    NEIGHBOURS = "NEIGHBOURS"
+    FIT_POINTS = "FIT_POINTS"
+    NLAGS = "NLAGS"
+    MAX_LAG = "MAX_LAG"
+    CV_POINTS = "CV_POINTS"
+    SEED = "SEED"
+    VARIANCE_AS_STD = "VARIANCE_AS_STD"
+    OUTPUT_VARIANCE = "OUTPUT_VARIANCE"
+
+    TYPES = ("ordinary", "universal")
+
+    def name(self):
+        return "krigingdtm"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("DTM by kriging (ordinary / universal)")
+
+    def tags(self):
+        return self.tr("dtm,dem,kriging,variogram,geostatistics,pykrige,interpolation,lidar,"
+                       "variance,cross-validation").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Kriging (Matheron 1963; Cressie 1993) of the ground points of a LAS/LAZ "
+            "file onto a raster, with a kriging variance (or standard deviation) raster. "
+            "Ordinary kriging (unknown constant mean) or universal kriging with a linear "
+            "drift. The variogram is fitted with PyKrige's estimator on a random subsample "
+            "(or given by you); each cell is then kriged from its nearest points in "
+            "batched local systems, so 1 M points onto a 1 km² grid at 1 m take about a "
+            "minute instead of the n×n matrix that makes plain PyKrige run out of memory "
+            "past ~100 k points.</p>"
+            "<p><b>What is approximated</b>: the variogram is fitted on a subsample "
+            "(FIT_POINTS, reproducible with SEED); local-neighbourhood kriging ignores "
+            "points beyond the NEIGHBOURS nearest (usually millimetres, up to centimetres "
+            "near gaps); with a linear drift the variogram is fitted on the residuals of a "
+            "least-squares plane; points with identical x, y are merged (mean height). "
+            "With NEIGHBOURS equal to the number of points (≤ 6000) the result is global "
+            "kriging, identical to PyKrige.</p>"
+            "<p><b>Example</b>: INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=spherical "
+            "NEIGHBOURS=16 CV_POINTS=1000.</p>"
+            "<p><b>Parameters</b></p><ul>" + _HELP_COMMON +
+            "<li><b>Kriging type</b> (KRIGING_TYPE, 0 ordinary (default), 1 universal with "
+            "linear drift).</li>"
+            "<li><b>Variogram model</b> (VARIOGRAM, 0 linear, 1 power, 2 gaussian, 3 "
+            "spherical (default), 4 exponential).</li>"
+            "<li><b>Variogram parameters</b> (VARIOGRAM_PARAMS, optional text, e.g. "
+            "<code>nugget=0.01, sill=4, range=60</code>; linear: slope, nugget; power: "
+            "scale, exponent, nugget). Empty = fitted automatically. The sill includes "
+            "the nugget; the range is the practical range.</li>"
+            "<li><b>Neighbours</b> (NEIGHBOURS, default 16, ≥ 2).</li>"
+            "<li><b>Points for the variogram fit</b> (FIT_POINTS, default 3000).</li>"
+            "<li><b>Lag classes</b> (NLAGS, default 12) and <b>maximum lag</b> (MAX_LAG, m, "
+            "default 0 = half the largest distance, Journel &amp; Huijbregts 1978).</li>"
+            "<li><b>Cross-validation points</b> (CV_POINTS, default 0 = off): "
+            "leave-one-out on this many random points; reports ME, RMSE, mean standardised "
+            "error (ideal 0) and RMS standardised error (ideal 1).</li>"
+            "<li><b>Seed</b> (SEED, default 0).</li>"
+            "<li><b>Variance output</b> (OUTPUT_VARIANCE, optional GeoTIFF): kriging "
+            "variance (m²), or standard deviation (m) with VARIANCE_AS_STD.</li></ul>"
+            "<p>Output numbers: NUGGET, SILL, RANGE (NaN for linear/power), N_POINTS, "
+            "VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).</p>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_input_params()
+        self.add(QgsProcessingParameterEnum(
+            self.KRIGING_TYPE, self.tr("Kriging type"),
+            [self.tr("Ordinary"), self.tr("Universal (linear drift)")], defaultValue=0))
+        self.add(QgsProcessingParameterEnum(
+            self.VARIOGRAM, self.tr("Variogram model"), list(core_kriging.MODELS),
+            defaultValue=core_kriging.MODELS.index("spherical")))
+        self.add(QgsProcessingParameterString(
+            self.VARIOGRAM_PARAMS,
+            self.tr("Variogram parameters (e.g. nugget=0.01, sill=4, range=60; empty = fit)"),
+            optional=True))
+        self.add_number(self.NEIGHBOURS, self.tr("Neighbours per cell"), 16, minimum=2,
+                        integer=True)
+        self.add_number(self.FIT_POINTS, self.tr("Points for the variogram fit"), 3000,
+                        minimum=10, integer=True, advanced=True)
+        self.add_number(self.NLAGS, self.tr("Lag classes"), 12, minimum=2, integer=True,
+                        advanced=True)
+        self.add_number(self.MAX_LAG, self.tr("Maximum lag (m, 0 = half the largest "
+                                              "distance)"), 0.0, minimum=0.0, advanced=True)
+        self.add_number(self.CV_POINTS, self.tr("Cross-validation points (0 = off)"), 0,
+                        minimum=0, integer=True)
+        self.add_number(self.SEED, self.tr("Random seed"), 0, minimum=0, integer=True,
+                        advanced=True)
+        self.add_gap_params()
+        self.add(QgsProcessingParameterRasterDestination(self.OUTPUT, self.tr("Kriging DTM")))
+        self.add(QgsProcessingParameterBoolean(
+            self.VARIANCE_AS_STD, self.tr("Write standard deviation instead of variance"),
+            False))
+        self.add(QgsProcessingParameterRasterDestination(
+            self.OUTPUT_VARIANCE, self.tr("Kriging variance"), optional=True,
+            createByDefault=True))
+        self.add_html()
+        for name, label in (("NUGGET", "Nugget"), ("SILL", "Sill"), ("RANGE", "Range"),
+                            ("N_POINTS", "Points kriged"), ("VALID_CELLS", "Cells with a value"),
+                            ("CV_ME", "Cross-validation mean error"),
+                            ("CV_RMSE", "Cross-validation RMSE"),
+                            ("CV_MSE", "Cross-validation mean standardised error")):
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+
+    def process(self, parameters, context, feedback):
+        t0 = time.time()
+        path = self.parameterAsFile(parameters, self.INPUT, context)
+        out = self.output_path(parameters, self.OUTPUT, context, path)
+        var_out = self.output_path(parameters, self.OUTPUT_VARIANCE, context, path)
+        html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
+        drift = "linear" if self.parameterAsEnum(parameters, self.KRIGING_TYPE, context) \
+            else "none"
+        model = core_kriging.MODELS[self.parameterAsEnum(parameters, self.VARIOGRAM, context)]
+        vario = core_kriging.parse_variogram_parameters(
+            self.parameterAsString(parameters, self.VARIOGRAM_PARAMS, context), model)
+        k = self.parameterAsInt(parameters, self.NEIGHBOURS, context)
+        fit_points = self.parameterAsInt(parameters, self.FIT_POINTS, context)
+        nlags = self.parameterAsInt(parameters, self.NLAGS, context)
+        max_lag = self.parameterAsDouble(parameters, self.MAX_LAG, context)
+        cv_points = self.parameterAsInt(parameters, self.CV_POINTS, context)
+        seed = self.parameterAsInt(parameters, self.SEED, context)
+        as_std = self.parameterAsBool(parameters, self.VARIANCE_AS_STD, context)
+        fill, maxd = self.gap_options(parameters, context)
+        path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
+        cb = self.core_callbacks(feedback)
+        res = core_kriging.kriging_grid(
+            pts.x, pts.y, pts.z, grid, model=model, variogram=vario, drift=drift,
+            n_closest=k, fit_points=fit_points, nlags=nlags,
+            max_lag=max_lag if max_lag > 0 else "auto", max_distance=maxd, fill=fill,
+            cv_points=cv_points, seed=seed, **cb)
+        v = res.variogram
+        vd = v.as_dict()
+        feedback.pushInfo(self.tr("Variogram: {}").format(
+            ", ".join(f"{a} {b}" for a, b in core_kriging.describe_variogram(v))))
+        kind = "ordinary" if drift == "none" else "universal (linear drift)"
+        meta = {"method": f"{kind} kriging, {model} variogram, {k} neighbours",
+                "variogram": "; ".join(f"{a}={b}" for a, b in
+                                       core_kriging.describe_variogram(v)),
+                "source": os.path.basename(path)}
+        write_grid(out, res.z, grid, metadata=meta, band_name="DTM (kriging)")
+        results = {self.OUTPUT: out}
+        if var_out:
+            data = res.std if as_std else res.variance
+            write_grid(var_out, data, grid, metadata=meta,
+                       band_name="kriging standard deviation (m)" if as_std
+                       else "kriging variance (m²)")
+            results[self.OUTPUT_VARIANCE] = var_out
+        stats = self.grid_stats(res.z)
+        cv = res.cross_validation or {}
+        nan = float("nan")
+        results.update(NUGGET=vd.get("nugget", nan), SILL=vd.get("sill", nan),
+                       RANGE=vd.get("range", nan), N_POINTS=res.n_points,
+                       VALID_CELLS=stats["valid_cells"], CV_ME=cv.get("me", nan),
+                       CV_RMSE=cv.get("rmse", nan), CV_MSE=cv.get("mse_std", nan))
+        if html:
+            results[self.OUTPUT_HTML] = self.write_text(html, self.report(
+                res, kind, path, pts, crs_source, grid, stats, time.time() - t0, fill, maxd))
+        return results
+
+    def report(self, res, kind, path, pts, crs_source, grid, stats, elapsed, fill, maxd):
+        v = res.variogram
+        body = html_params({"kriging": kind, "variogram model": v.model,
+                            "neighbours per cell": res.n_closest,
+                            "gaps": "filled" if fill else
+                            f"nodata beyond {res.max_distance:.3g} m"
+                            + ("" if maxd else " (auto)")})
+        body += "<h2>Variogram</h2>" + html_table(
+            ("parameter", "value"), core_kriging.describe_variogram(v))
+        if v.fitted and v.lags.size:
+            model_at = v(v.lags)
+            body += html_table(("lag (m)", "experimental γ", "model γ"),
+                               list(zip(v.lags, v.semivariance, model_at)), digits=4,
+                               caption="Experimental and fitted semivariogram")
+            dense = np.linspace(0, float(v.lags.max()), 60)
+            xs = np.concatenate([v.lags, dense])
+            ys = np.concatenate([v.semivariance, v(dense)])
+            body += svg_scatter(xs, ys, xlabel="lag (m)", ylabel="semivariance (m²)",
+                                title="experimental (all) and model (dense) semivariogram")
+        body += "<h2>Input and grid</h2>" + html_table(
+            ("item", "value"), self.input_rows(path, pts, crs_source, grid) + [
+                ("duplicate x,y merged", f"{res.n_merged:,}")])
+        var = res.variance[np.isfinite(res.variance)]
+        body += "<h2>Result</h2>" + html_table(("item", "value"), [
+            ("cells with a value", stats["valid_cells"]),
+            ("nodata cells", stats["nodata_cells"]),
+            ("min height (m)", stats["min"]), ("max height (m)", stats["max"]),
+            ("mean kriging std (m)", float(np.sqrt(var).mean()) if var.size else NAN),
+            ("max kriging std (m)", float(np.sqrt(var).max()) if var.size else NAN),
+            ("run time (s)", elapsed)])
+        if var.size:
+            body += svg_histogram(np.sqrt(var), xlabel="kriging standard deviation (m)",
+                                  title="kriging standard deviation of the cells")
+        cv = res.cross_validation
+        if cv:
+            body += "<h2>Leave-one-out cross-validation</h2>" + html_table(
+                ("statistic", "value"), [
+                    ("points", cv["n"]), ("mean error ME (m)", cv["me"]),
+                    ("RMSE (m)", cv["rmse"]), ("MAE (m)", cv["mae"]),
+                    ("mean standardised error (ideal 0)", cv["mse_std"]),
+                    ("RMS standardised error (ideal 1)", cv["rmsse"])], digits=4)
+        body += ("<p class='note'>Local-neighbourhood kriging with a variogram fitted by "
+                 "PyKrige's estimator on a random subsample; see the algorithm help for "
+                 "what is approximated. References: Matheron (1963); Cressie (1993).</p>")
+        return html_page(self.tr("Kriging DTM report"), body)
+
+
+class DsmAlgorithm(_GridAlgorithm):
+    """DSM (highest return per cell) and nDSM/CHM = DSM − DTM."""
+
+    FIRST_RETURNS = "FIRST_RETURNS"
+    EXCLUDE_CLASSES = "EXCLUDE_CLASSES"
+    FILL_DISTANCE = "FILL_DISTANCE"
+    DTM = "DTM"
+    CLAMP_NEGATIVE = "CLAMP_NEGATIVE"
+    OUTPUT_NDSM = "OUTPUT_NDSM"
+
+    def name(self):
+        return "dsm"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("DSM and nDSM / canopy height model")
+
+    def tags(self):
+        return self.tr("dsm,ndsm,chm,canopy height,surface model,first returns,lidar,"
+                       "raster").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Digital surface model from a LAS/LAZ file: every cell takes the highest "
+            "return falling in it (first returns only as an option, the usual canopy "
+            "surface). With a DTM, also the normalised DSM (nDSM; canopy height model in "
+            "forests) = DSM − DTM on the DTM's grid. Points are read in chunks, so large "
+            "files fit in memory.</p>"
+            "<p><b>Example</b>: INPUT=cloud.laz CELL_SIZE=1 FIRST_RETURNS=true "
+            "DTM=dtm.tif OUTPUT=dsm.tif OUTPUT_NDSM=chm.tif.</p>"
+            "<p><b>Parameters</b></p><ul>"
+            "<li><b>Point cloud</b> (INPUT): .las/.laz.</li>"
+            "<li><b>Classes used</b> (CLASSES, default empty = all classes).</li>"
+            "<li><b>Excluded classes</b> (EXCLUDE_CLASSES, default <code>7,18</code>: "
+            "low and high noise).</li>"
+            "<li><b>First returns only</b> (FIRST_RETURNS, default no).</li>"
+            "<li><b>Cell size</b> (CELL_SIZE, m, default 1), <b>Extent</b> (EXTENT), "
+            "<b>CRS</b> (CRS): as for the DTM tools; ignored when a DTM is given (its grid "
+            "and CRS are used so that DSM and DTM align cell for cell).</li>"
+            "<li><b>Fill distance</b> (FILL_DISTANCE, m, default 0): empty cells take the "
+            "value of the nearest non-empty cell within this distance; 0 = leave them "
+            "nodata.</li>"
+            "<li><b>DTM</b> (DTM, optional raster): needed for the nDSM.</li>"
+            "<li><b>Clamp negative heights to 0</b> (CLAMP_NEGATIVE, default yes).</li>"
+            "<li><b>DSM</b> (OUTPUT) and <b>nDSM</b> (OUTPUT_NDSM, optional, needs DTM): "
+            "GeoTIFF, nodata −9999.</li>"
+            "<li><b>Report</b> (OUTPUT_HTML, optional).</li></ul>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_input_params(classes_default="")
+        self.add(QgsProcessingParameterString(
+            self.EXCLUDE_CLASSES, self.tr("Excluded classes"), defaultValue="7,18",
+            optional=True))
+        self.add(QgsProcessingParameterBoolean(
+            self.FIRST_RETURNS, self.tr("First returns only"), False))
+        self.add_number(self.FILL_DISTANCE, self.tr("Fill empty cells up to (m)"), 0.0,
+                        minimum=0.0, advanced=True)
+        self.add(QgsProcessingParameterRasterLayer(
+            self.DTM, self.tr("DTM (for the nDSM; its grid is used)"), optional=True))
+        self.add(QgsProcessingParameterBoolean(
+            self.CLAMP_NEGATIVE, self.tr("Clamp negative nDSM heights to 0"), True))
+        self.add(QgsProcessingParameterRasterDestination(self.OUTPUT, self.tr("DSM")))
+        self.add(QgsProcessingParameterRasterDestination(
+            self.OUTPUT_NDSM, self.tr("nDSM / canopy height model"), optional=True,
+            createByDefault=False))
+        self.add_html()
+        for name, label in (("VALID_CELLS", "DSM cells with a value"),
+                            ("NDSM_MAX", "Maximum nDSM height")):
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+
+    def process(self, parameters, context, feedback):
+        t0 = time.time()
+        path = self.parameterAsFile(parameters, self.INPUT, context)
+        out = self.output_path(parameters, self.OUTPUT, context, path)
+        ndsm_out = self.output_path(parameters, self.OUTPUT_NDSM, context, path)
+        html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
+        classes = parse_classes(self.parameterAsString(parameters, self.CLASSES, context))
+        excl = parse_classes(self.parameterAsString(parameters, self.EXCLUDE_CLASSES, context))
+        first = self.parameterAsBool(parameters, self.FIRST_RETURNS, context)
+        fill_d = self.parameterAsDouble(parameters, self.FILL_DISTANCE, context)
+        clamp = self.parameterAsBool(parameters, self.CLAMP_NEGATIVE, context)
+        dtm_layer = self.parameterAsRasterLayer(parameters, self.DTM, context)
+        info = las_info(path)
+        dtm = None
+        if dtm_layer is not None:
+            r = read_raster(dtm_layer.source())
+            crs = _crs_string(dtm_layer.crs()) or r.crs
+            given = self.parameterAsCrs(parameters, self.CRS, context)
+            las_crs = _crs_string(given) if given.isValid() else info.crs
+            if las_crs and crs and not _qgs_crs(las_crs) == _qgs_crs(crs):
+                raise QgsProcessingException(self.tr(
+                    "The point cloud CRS ({}) differs from the DTM CRS ({}); give a DTM in "
+                    "the point cloud's CRS. No output was written.").format(
+                        _qgs_crs(las_crs).authid() or "custom",
+                        _qgs_crs(crs).authid() or "custom"))
+            grid = grid_like(r.geotransform, r.shape, crs=crs)
+            dtm = r.masked()
+            crs_source = "DTM grid"
+        else:
+            if ndsm_out:
+                raise QgsProcessingException(self.tr(
+                    "The nDSM needs a DTM: give the DTM parameter (e.g. the output of the "
+                    "IDW DTM algorithm). No output was written."))
+            crs, crs_source = self.resolve_crs(parameters, context, info.crs)
+            cell = self.cell_size(parameters, context)
+            box = self.extent_box(parameters, context, crs)
+            if box is None:
+                box = (info.mins[0], info.maxs[0], info.mins[1], info.maxs[1])
+            grid = grid_from_extent(box, cell, crs=crs)
+        dims = ["classification"] + (["return_number"] if first else [])
+        cb = self.core_callbacks(feedback)
+
+        def chunks():
+            for start, chunk in iter_las_chunks(path, dims):
+                if classes:
+                    keep = np.isin(chunk["classification"], classes)
+                    chunk.x, chunk.y, chunk.z = chunk.x[keep], chunk.y[keep], chunk.z[keep]
+                    chunk.dims = {n: a[keep] for n, a in chunk.dims.items()}
+                yield start, chunk
+
+        surf = core_dsm.dsm_from_chunks(chunks(), grid, n_total=info.count, first_only=first,
+                                        exclude_classes=excl, fill_distance=fill_d, **cb)
+        meta = {"method": f"highest {'first ' if first else ''}return per cell",
+                "source": os.path.basename(path)}
+        write_grid(out, surf, grid, metadata=meta, band_name="DSM")
+        stats = self.grid_stats(surf)
+        results = {self.OUTPUT: out, "VALID_CELLS": stats["valid_cells"],
+                   "NDSM_MAX": float("nan")}
+        nd_stats = None
+        if dtm is not None and ndsm_out:
+            nd = core_dsm.ndsm(surf, dtm, clamp_negative=clamp)
+            write_grid(ndsm_out, nd, grid, metadata=meta, band_name="nDSM")
+            nd_stats = self.grid_stats(nd)
+            results[self.OUTPUT_NDSM] = ndsm_out
+            results["NDSM_MAX"] = nd_stats["max"]
+        if html:
+            rows = [("input", os.path.basename(path)), ("points in file", f"{info.count:,}"),
+                    ("grid", f"{grid.ncols} × {grid.nrows} cells of {grid.cell:g} m"),
+                    ("grid source", crs_source),
+                    ("first returns only", "yes" if first else "no"),
+                    ("classes used", ", ".join(map(str, classes)) or "all"),
+                    ("excluded classes", ", ".join(map(str, excl)) or "none"),
+                    ("DSM cells with a value", stats["valid_cells"]),
+                    ("DSM empty cells", stats["nodata_cells"]),
+                    ("DSM min / max (m)", f"{stats['min']:.2f} / {stats['max']:.2f}")]
+            body = html_table(("item", "value"), rows)
+            if nd_stats is not None:
+                nd_valid = nd[np.isfinite(nd)]
+                body += "<h2>nDSM</h2>" + html_table(("item", "value"), [
+                    ("cells with a value", nd_stats["valid_cells"]),
+                    ("max height (m)", nd_stats["max"]),
+                    ("cells ≥ 2 m", int((nd_valid >= 2).sum())),
+                    ("negative heights clamped", "yes" if clamp else "no")])
+                body += svg_histogram(nd_valid, xlabel="nDSM height (m)",
+                                      title="nDSM heights")
+            body += f"<p class='note'>Run time {time.time() - t0:.1f} s.</p>"
+            results[self.OUTPUT_HTML] = self.write_text(
+                html, html_page(self.tr("DSM / nDSM report"), body))
+        return results
