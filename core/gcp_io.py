@@ -26,7 +26,9 @@ the column and ``pixelY``/``sourceY`` is **minus the row** (QGIS shows an image 
 georeferencing with y pointing up, so rows are negative), both in the corner
 convention above; hence ``col = pixelX`` and ``row = −pixelY``. ``dX, dY, residual``
 are the Georeferencer's own residuals: they are kept (``qgis_residuals``) but never
-used. Points have no names in the file; they are numbered 1, 2, … in file order (the
+used. The ``enable`` column is honoured (QGIS 3.22 itself reads it only from 5-column
+rows and re-enables every point of its own 8-column files).
+Points have no names in the file; they are numbered 1, 2, … in file order (the
 Georeferencer's table shows the same order). QGIS ≥ 3.26 stores *source layer*
 coordinates in ``sourceX/sourceY``: for an image that already has a geotransform,
 pass it as ``source_geotransform`` to convert them to pixel/line.

@@ -258,11 +258,11 @@ def evaluate_residuals(vx, vy, *, ids: Optional[Sequence] = None, gr: Optional[f
 
 
 def _binom_two_sided(k: int, n: int) -> float:
+    """Two-sided sign-test p-value of ``k`` positives among ``n`` (p = 0.5)."""
     if n == 0:
         return 1.0
-    p = [math.comb(n, i) * 0.5 ** n for i in range(n + 1)]
-    pk = p[k]
-    return float(min(1.0, sum(v for v in p if v <= pk + 1e-15)))
+    from scipy.stats import binomtest
+    return float(binomtest(int(k), int(n), 0.5).pvalue)
 
 
 def bias_checks(vx, vy, pixel, *, map_xy=None, image_size=None, centre_map=None) -> dict:

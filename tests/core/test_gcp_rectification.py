@@ -291,6 +291,19 @@ def test_points_file_round_trip_and_qgis_mean_error(tmp_path, header):
     assert np.array_equal(g2.enabled, g.enabled) and g2.crs == g.crs
 
 
+def test_points_file_with_layer_coordinates_of_a_georeferenced_image(tmp_path):
+    """QGIS >= 3.26 stores source-layer coordinates in sourceX/sourceY; with the image's
+    geotransform they become pixel/line."""
+    gt = (1000.0, 0.5, 0.0, 2000.0, 0.0, -0.5)
+    pix = np.array([[0, 0], [10, 4], [3, 8]], float)
+    src = np.column_stack([gt[0] + pix[:, 0] * gt[1], gt[3] + pix[:, 1] * gt[5]])
+    f = tmp_path / "geo.points"
+    f.write_text("#CRS: EPSG:32637\nmapX,mapY,sourceX,sourceY,enable,dX,dY,residual\n"
+                 + "".join(f"{i},{i},{x},{y},1,0,0,0\n" for i, (x, y) in enumerate(src)))
+    g = gcp_io.read_points(f, source_geotransform=gt)
+    assert np.allclose(g.pixel, pix)
+
+
 def test_old_tab_separated_points_file(tmp_path):
     f = tmp_path / "old.points"
     f.write_text("mapX\tmapY\tpixelX\tpixelY\n10\t20\t1\t-2\n30\t20\t5\t-2\n10\t5\t1\t-9\n")
