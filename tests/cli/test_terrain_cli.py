@@ -1,0 +1,60 @@
+"""qgis_process smoke tests: one run per terrain algorithm, plus one failure."""
+from __future__ import annotations
+
+import sys
+import sysconfig
+
+import pytest
+
+from geomatics_toolbox.core.raster_io import read_raster
+from geomatics_toolbox.core.synthetic import generate_tile, write_tile
+
+
+@pytest.fixture(scope="module")
+def qp(qgis_process):
+    """qgis_process runs the system Python: let it see the venv's laspy/lazrs/pykrige."""
+    site = sysconfig.get_paths()["purelib"]
+    paths = [p for p in qgis_process.env.get("PYTHONPATH", "").split(":") if p]
+    if site not in paths and site in sys.path:
+        qgis_process.env["PYTHONPATH"] = ":".join(paths + [site])
+    return qgis_process
+
+
+@pytest.fixture(scope="module")
+def data(tmp_path_factory):
+    d = tmp_path_factory.mktemp("terrain_cli")
+    tile = generate_tile(extent=(80.0, 80.0), density=2.0, seed=2, n_buildings=1, n_halls=0)
+    laz = d / "t.laz"
+    write_tile(tile, laz, crs="EPSG:32632")
+    cp = tile.checkpoints(n=8, min_spacing=3.0)
+    csv = d / "cp.csv"
+    csv.write_text("id,x,y,z\n" + "".join(f"{i},{x},{y},{z}\n" for i, x, y, z in
+                                         zip(cp.id, cp.x, cp.y, cp.z)))
+    return d, str(laz), str(csv)
+
+
+def test_idw_kriging_dsm_accuracy_cli(qp, data):
+    d, laz, csv = data
+    idw = qp.run("geomatics:idwdtm", INPUT=laz, CELL_SIZE=1, POWER=3,
+                           OUTPUT=str(d / "idw.tif"), OUTPUT_HTML=str(d / "idw.html"))
+    assert idw["results"]["N_POINTS"] > 1000
+    assert read_raster(d / "idw.tif").crs
+    kr = qp.run("geomatics:krigingdtm", INPUT=laz, CELL_SIZE=2, NEIGHBOURS=12,
+                          OUTPUT=str(d / "kr.tif"), OUTPUT_VARIANCE=str(d / "krv.tif"))
+    assert kr["results"]["SILL"] > 0 and (d / "krv.tif").exists()
+    ds = qp.run("geomatics:dsm", INPUT=laz, DTM=str(d / "idw.tif"),
+                          OUTPUT=str(d / "dsm.tif"), OUTPUT_NDSM=str(d / "ndsm.tif"))
+    assert ds["results"]["VALID_CELLS"] > 1000 and (d / "ndsm.tif").exists()
+    acc = qp.run("geomatics:dtmaccuracy", DTM=str(d / "idw.tif"),
+                           CHECKPOINTS_CSV=csv, OUTPUT=str(d / "res.gpkg"),
+                           OUTPUT_HTML=str(d / "acc.html"))
+    assert acc["results"]["N"] == 8 and acc["results"]["RMSE"] < 0.3
+    assert (d / "acc.html").exists() and (d / "res.gpkg").exists()
+
+
+def test_cli_bad_class_filter(qp, data):
+    d, laz, _ = data
+    msg = qp.run_expect_failure("geomatics:idwdtm", INPUT=laz, CLASSES="9",
+                                          OUTPUT=str(d / "none.tif"))
+    assert "No ground points in the input class filter" in msg
+    assert not (d / "none.tif").exists()
