@@ -842,6 +842,7 @@ def generate_tile(*, extent: Tuple[float, float] = (300.0, 300.0),
     dt = (height / _SPEED) / np.maximum(n_in_line[line - line.min()], 1) if line.size else 0
     rank = np.arange(px.size) - first_of_line
     gps = _GPS_T0 + line * 900.0 + rank * dt
+    del along, k, across, order, first_of_line, rank, dt
     scan = np.degrees(np.arctan((px - xc) / _FLIGHT_ALTITUDE)).astype(np.float32)
 
     # ---- expand pulses to returns
@@ -850,15 +851,20 @@ def generate_tile(*, extent: Tuple[float, float] = (300.0, 300.0),
     cum = np.cumsum(n_ret, dtype=np.int64)
     first = cum - n_ret
     npts = int(cum[-1]) if npulse else 0
-    pi = np.repeat(np.arange(npulse, dtype=np.int64), n_ret)
+    pi = np.repeat(np.arange(npulse, dtype=np.int32 if npulse < 2**31 else np.int64),
+                   n_ret)
     rn = (np.arange(npts, dtype=np.int64) - first[pi] + 1).astype(np.uint8)
+    del cum, first
+    psid = (line + 1).astype(np.uint16)
+    del line, xc
     kp = kind[pi]
     x = px[pi]
     y = py[pi]
     g = ground_at_pulse[pi]
+    del px, py, ground_at_pulse
     z = np.empty(npts)
     cls = np.empty(npts, np.uint8)
-    inten = np.empty(npts)
+    inten = np.empty(npts, np.float32)
 
     veg = (kp == _K_TREE) & (rn <= n_veg[pi])
     gnd = (kp == _K_GROUND) | ((kp == _K_TREE) & ~veg)
@@ -911,13 +917,16 @@ def generate_tile(*, extent: Tuple[float, float] = (300.0, 300.0),
     cls[m] = HIGH_NOISE
     inten[m] = rng.uniform(200, 3000, m.size)
 
-    z = np.round(z / scale) * scale
+    del g, kp, veg, gnd, m
+    np.divide(z, scale, out=z)
+    np.round(z, out=z)
+    z *= scale
     return SyntheticTile(
         x=x, y=y, z=z, classification=cls, return_number=rn,
         number_of_returns=n_ret[pi].astype(np.uint8),
         intensity=np.clip(inten, 0, 65535).astype(np.uint16),
         gps_time=gps[pi], scan_angle=scan[pi],
-        point_source_id=(line[pi] + 1).astype(np.uint16),
+        point_source_id=psid[pi],
         terrain=terrain, buildings=buildings, trees=trees, origin=(ox, oy),
         extent=(width, height), density=float(density), seed=int(seed),
         noise=float(noise), scale=float(scale),
