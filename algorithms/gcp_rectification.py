@@ -369,6 +369,8 @@ class RectifyGcpAlgorithm(_GcpBase):
                     self.parameterAsDouble(parameters, self.NODATA, context)),
             progress=(lambda f: cb["progress"](0.1 + 0.9 * f)) if cb["progress"] else None,
             cancel=cb["cancel"])
+        for note in res.model.warnings:
+            feedback.pushWarning(note)
         feedback.pushInfo(f"Wrote {out}: {res.width} × {res.height} px at "
                           f"{res.resolution:.6g} units/px, resampling {resampling}.")
         outputs = {self.OUTPUT: out}

@@ -746,17 +746,14 @@ def to_html(acc: GcpAccuracy, *, lang: str = "en", extra_params: Optional[dict] 
                                        f"|v| ({u})", "v_col (px)", "v_row (px)"], crow)
                      + f"<p>RMS_x {c.rms_x:.3f}, RMS_y {c.rms_y:.3f}, RMS_T {c.rms_t:.3f} {u}"
                        f" over {c.n} check points.</p>")
-    # plot
-    ext = (0, 0, acc.image_size[0], acc.image_size[1]) if acc.image_size else None
+    # plot over the image footprint, in map coordinates (arrows in their true direction)
     parts.append("<h2>Residual vectors over the image footprint</h2>"
-                 + rep.svg_vectors(pix[:, 0], pix[:, 1], s.vx, -s.vy,
-                                   labels=s.ids, extent=ext, invert_y=True, unit=u,
-                                   xlabel="column (px)", ylabel="row (px, downwards)",
-                                   title=f"order {acc.order}: residuals v (map X right, "
-                                         "map Y up)", scale=None)
-                 + '<p class="note">Arrows are drawn at the GCP image positions with '
-                   "components (v_x, v_y) in map axes; for a north-up image this is the true "
-                   "direction.</p>")
+                 + residual_plot(acc)
+                 + '<p class="note">GCPs at their map positions, arrows = residual vectors '
+                   "(v_x, v_y) exaggerated by the printed factor; the grey frame is the "
+                   "bounding box of the image footprint"
+                   + (", check points are labelled with '*'" if r.check is not None else "")
+                   + ".</p>")
     # bias
     if s.bias:
         qrows = [[q["quadrant"], q["n"], f"{q['vx_pos']}/{q['vx_neg']}",
@@ -826,6 +823,34 @@ def to_html(acc: GcpAccuracy, *, lang: str = "en", extra_params: Optional[dict] 
                  + "</ul>")
     return rep.html_page("GCP polynomial rectification — accuracy report", "\n".join(parts),
                          lang=lang)
+
+
+def residual_plot(acc: GcpAccuracy, order: Optional[int] = None) -> str:
+    """SVG residual-vector plot of ``order`` (default: the selected one) over the image
+    footprint in map coordinates; check points included, labelled with '*'."""
+    r = acc.results[order or acc.order]
+    s = r.stats
+    g = acc.gcps
+    xy = g.map[g.fit_mask]
+    vx, vy, labels = s.vx, s.vy, list(s.ids)
+    if r.check is not None:
+        xy = np.vstack([xy, g.map[g.check_mask]])
+        vx = np.concatenate([vx, r.check.vx])
+        vy = np.concatenate([vy, r.check.vy])
+        labels += [f"{i}*" for i in r.check.ids]
+    ext = None
+    if acc.image_size:
+        w, h = acc.image_size
+        t = np.linspace(0.0, 1.0, 21)
+        cols = np.concatenate([t * w, np.full_like(t, w), (1 - t) * w, np.zeros_like(t)])
+        rows = np.concatenate([np.zeros_like(t), t * h, np.full_like(t, h), (1 - t) * h])
+        fx, fy = r.model.forward(cols, rows)
+        ext = (min(fx.min(), xy[:, 0].min()), min(fy.min(), xy[:, 1].min()),
+               max(fx.max(), xy[:, 0].max()), max(fy.max(), xy[:, 1].max()))
+    return rep.svg_vectors(xy[:, 0], xy[:, 1], vx, vy, labels=labels, extent=ext,
+                           unit=acc.units, xlabel=f"map X ({acc.units})",
+                           ylabel=f"map Y ({acc.units})",
+                           title=f"order {r.order}: residual vectors v = predicted − given")
 
 
 def _crs_name(crs: str) -> str:

@@ -213,7 +213,8 @@ def rectify(input_path, gcps: GCPSet, output_path, *, order: int = 2,
                 transformerOptions=["METHOD=GCP_POLYNOMIAL"],
                 resampleAlg=resampling, srcSRS=gcp_srs.ExportToWkt(),
                 dstSRS=tgt_srs.ExportToWkt(), xRes=float(resolution), yRes=float(resolution),
-                errorThreshold=float(error_threshold),
+                errorThreshold=float(error_threshold), multithread=True,
+                warpOptions=["NUM_THREADS=ALL_CPUS"],
                 creationOptions=list(creation_options), callback=cb)
     if nodata is not None:
         opts["dstNodata"] = float(nodata)
