@@ -536,15 +536,21 @@ def terrain_trend(x, y, z, *, cell: float = 10.0, window: float = 60.0,
         grid = grid[iiy, iix]
     mon.step(0.4)
     w = max(1, int(round(window / cell)) | 1)
-    opened = ndimage.grey_opening(grid, size=(w, w), mode="nearest")
-    smooth = ndimage.uniform_filter(opened, size=w, mode="nearest")
+    # Point-reflection ("odd") padding continues ramps linearly, so neither the
+    # opening nor the mean filter flattens a slope near the tile edges.
+    pad = w
+    padded = np.pad(grid, pad, mode="reflect", reflect_type="odd") if min(grid.shape) > 1 \
+        else np.pad(grid, pad, mode="edge")
+    opened = ndimage.grey_opening(padded, size=(w, w), mode="nearest")
+    smooth = ndimage.uniform_filter(opened, size=w, mode="nearest")[pad:-pad, pad:-pad]
     mon.step(0.8)
-    # bilinear at cell centres
-    fx = np.clip((x - x0) / cell - 0.5, 0, nx - 1)
-    fy = np.clip((y - y0) / cell - 0.5, 0, ny - 1)
-    jx = np.minimum(np.floor(fx).astype(np.int64), max(nx - 2, 0))
-    jy = np.minimum(np.floor(fy).astype(np.int64), max(ny - 2, 0))
-    ax, ay = fx - jx, fy - jy
+    # bilinear between cell centres, linear extrapolation beyond the outer centres
+    fx = (x - x0) / cell - 0.5
+    fy = (y - y0) / cell - 0.5
+    jx = np.clip(np.floor(fx).astype(np.int64), 0, max(nx - 2, 0))
+    jy = np.clip(np.floor(fy).astype(np.int64), 0, max(ny - 2, 0))
+    ax = fx - jx if nx > 1 else np.zeros_like(fx)
+    ay = fy - jy if ny > 1 else np.zeros_like(fy)
     jx1 = np.minimum(jx + 1, nx - 1)
     jy1 = np.minimum(jy + 1, ny - 1)
     out = ((1 - ax) * (1 - ay) * smooth[jy, jx] + ax * (1 - ay) * smooth[jy, jx1]
