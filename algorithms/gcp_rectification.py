@@ -44,7 +44,8 @@ _HELP_GCP = (
     "(mapX,mapY,pixelX,pixelY,enable,…; pixelY is minus the row) or a CSV table with "
     "columns id, col,row (or pixel,line; or image_x,image_y in the QGIS sign convention), "
     "X,Y (or map_x,map_y / easting,northing) and optional enabled (1/0), role (gcp or "
-    "check) and weight. Give the file <i>or</i> a point layer.</li>"
+    "check) and weight. Give the file <i>or</i> a point layer; with neither, the "
+    "Georeferencer's <i>&lt;image&gt;.points</i> next to the image is used.</li>"
     "<li><b>GCP point layer</b> (GCP_LAYER): points whose geometry holds the map "
     "coordinates (in the layer CRS) with fields for the image column and row "
     "(COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD.</li>"
@@ -174,9 +175,15 @@ class _GcpBase(GeomaticsAlgorithm):
             return g
         if layer_given:
             return self.load_layer(parameters, context, origin)
+        if raster and os.path.exists(raster + ".points"):
+            g = gcp_io.read_gcps(raster + ".points", crs=crs, source_geotransform=gt)
+            g.notes.append("GCP file found next to the image (the Georeferencer's "
+                           "<image>.points).")
+            return g
         raise QgsProcessingException(self.tr(
             "No GCPs: give a GCP file (GCP_FILE, .points or CSV) or a point layer "
-            "(GCP_LAYER with COL_FIELD and ROW_FIELD)."))
+            "(GCP_LAYER with COL_FIELD and ROW_FIELD); no <image>.points file was found "
+            "next to the image either."))
 
     def load_layer(self, parameters, context, origin):
         source = self.parameterAsSource(parameters, self.GCP_LAYER, context)
@@ -342,6 +349,9 @@ class RectifyGcpAlgorithm(_GcpBase):
         out = self.parameterAsOutputLayer(parameters, self.OUTPUT, context)
         html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
         check_not_input(out, raster)
+        if os.path.splitext(out)[1].lower() not in (".tif", ".tiff"):
+            raise QgsProcessingException(self.tr(
+                "OUTPUT must be a GeoTIFF file (.tif); got {0}.").format(out))
         if html:
             check_not_input(html, raster)
         order = self.parameterAsInt(parameters, self.ORDER, context)

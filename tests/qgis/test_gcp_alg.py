@@ -50,6 +50,14 @@ def test_rectify_through_processing(qgis_processing, tmp_path):
     assert "RMS_T" in html.read_text(encoding="utf-8")
 
 
+def test_points_file_next_to_the_image_is_found(qgis_processing, tmp_path):
+    img, pts, _, _ = make_case(tmp_path)
+    assert pts.name == "img.tif.points"
+    res = qgis_processing.run("geomatics:gcpaccuracyreport", {"INPUT": str(img),
+                                                              "ORDER": 2})
+    assert res["N_GCP"] == 22
+
+
 def test_rectify_batch_of_two_images(qgis_processing, tmp_path):
     outs = []
     for k in range(2):
@@ -124,6 +132,10 @@ def test_bad_input_clear_error_nothing_written(qgis_processing, tmp_path, case, 
         g = gcp_io.read_points(pts)
         g.pixel[3, 0] = 1e5
         pts.write_text(gcp_io.points_text(g))
+    if case == "no_gcps":
+        pts.unlink()
+        pts = tmp_path / "unrelated.csv"
+        pts.write_text("id,col,row,X,Y\n")
     before = sha(img)
     out = tmp_path / "never.tif"
     html = tmp_path / "never.html"
@@ -136,3 +148,12 @@ def test_bad_input_clear_error_nothing_written(qgis_processing, tmp_path, case, 
     assert sha(img) == before
     leftovers = sorted(p.name for p in tmp_path.iterdir())
     assert leftovers == sorted(["img.tif", pts.name]), leftovers
+
+
+def test_non_geotiff_output_refused(qgis_processing, tmp_path):
+    from qgis.core import QgsProcessingException
+    img, pts, _, _ = make_case(tmp_path)
+    with pytest.raises(QgsProcessingException, match="GeoTIFF"):
+        qgis_processing.run("geomatics:rectifygcp", {"INPUT": str(img), "GCP_FILE": str(pts),
+                                                     "OUTPUT": str(tmp_path / "o.img")})
+    assert not (tmp_path / "o.img").exists()
