@@ -585,6 +585,23 @@ def _recommend(results: Dict[int, OrderResult]):
     return pick.order, why
 
 
+#: convex-hull share of the image below which the report warns about extrapolation
+MIN_COVERAGE = 0.3
+
+
+def coverage(pixel: np.ndarray, image_size) -> float:
+    """Share of the image area inside the convex hull of the GCP image positions."""
+    pts = np.unique(np.asarray(pixel, float), axis=0)
+    if len(pts) < 3:
+        return 0.0
+    try:
+        from scipy.spatial import ConvexHull
+        area = ConvexHull(pts).volume
+    except Exception:  # noqa: BLE001 - degenerate (collinear) hull
+        return 0.0
+    return float(area / (float(image_size[0]) * float(image_size[1])))
+
+
 def evaluate_gcps(gcps: GCPSet, *, order: int = 2, gr: Optional[float] = None,
                   image_size: Optional[Sequence[int]] = None, orders=(1, 2, 3),
                   max_condition: float = MAX_CONDITION, units: str = "m", crs: str = "",
@@ -642,6 +659,11 @@ def evaluate_gcps(gcps: GCPSet, *, order: int = 2, gr: Optional[float] = None,
     if not results[order].ok:
         raise ValueError(results[order].error)
     rec, why = _recommend(results)
+    cov = coverage(gcps.pixel[fit], image_size) if image_size is not None else None
+    if cov is not None and cov < MIN_COVERAGE:
+        notes.append(f"The GCPs cover only {100 * cov:.0f} % of the image (convex hull): "
+                     "outside it the polynomial extrapolates, and orders 2–3 can bend "
+                     "strongly there. Add GCPs near the image edges and corners.")
     if gcps.check_mask.sum() == 0:
         notes.append("No independent check points (role 'check'): accuracy is judged on the "
                      "fit residuals and leave-one-out residuals only.")

@@ -46,7 +46,7 @@ TERM_NAMES = ("1", "u", "v", "u²", "u·v", "v²", "u³", "u²·v", "u·v²", "v
 #: condition number of the normalised design matrix above which a fit is refused
 MAX_CONDITION = 1.0e6
 #: … and above which it is accepted with a warning
-WARN_CONDITION = 1.0e4
+WARN_CONDITION = 1.0e3
 
 
 def n_terms(order: int) -> int:

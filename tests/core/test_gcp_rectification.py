@@ -409,6 +409,16 @@ def test_suggested_drops_and_radial_bias():
     assert b3.rms_t < 0.2 * b.rms_t
 
 
+def test_coverage_warning_for_gcps_in_one_corner():
+    pix, mp, _, size = gcp_synthetic.synthetic_gcps(1, noise=0.3, seed=2)
+    g = gcp_io.make_gcps(None, pix, mp, crs=EPSG)
+    full = gcp_report.evaluate_gcps(g, order=1, image_size=size)
+    assert not any("cover only" in n for n in full.notes)
+    assert gcp_report.coverage(pix, size) > 0.5
+    small = gcp_report.evaluate_gcps(g, order=1, image_size=(size[0] * 3, size[1] * 3))
+    assert any("cover only" in n for n in small.notes)
+
+
 def test_bias_checks_rarely_flag_pure_noise():
     flagged = 0
     for seed in range(40):

@@ -157,3 +157,33 @@ def test_non_geotiff_output_refused(qgis_processing, tmp_path):
         qgis_processing.run("geomatics:rectifygcp", {"INPUT": str(img), "GCP_FILE": str(pts),
                                                      "OUTPUT": str(tmp_path / "o.img")})
     assert not (tmp_path / "o.img").exists()
+
+
+def test_geographic_gcps_need_a_projected_target(qgis_processing, tmp_path):
+    from osgeo import gdal, osr
+    from qgis.core import QgsProcessingException
+    pix, mp, _, _ = gcp_synthetic.synthetic_gcps(1, noise=0.5, seed=1)
+    pix = pix / 8.0
+    utm = mp - mp.mean(axis=0) + [500000.0, 3900000.0]  # somewhere in UTM zone 37N
+    src, dst = osr.SpatialReference(), osr.SpatialReference()
+    src.ImportFromEPSG(32637)
+    dst.ImportFromEPSG(4326)
+    for s in (src, dst):
+        s.SetAxisMappingStrategy(osr.OAMS_TRADITIONAL_GIS_ORDER)
+    lonlat = np.array(osr.CoordinateTransformation(src, dst).TransformPoints(utm.tolist()))
+    img = gcp_synthetic.write_test_image(tmp_path / "geo.tif", int(pix[:, 0].max() + 20),
+                                         int(pix[:, 1].max() + 20))
+    pts = tmp_path / "geo.points"
+    g = gcp_io.make_gcps(None, pix, lonlat[:, :2])
+    pts.write_text(gcp_io.points_text(g, crs_wkt="EPSG:4326"))
+    with pytest.raises(QgsProcessingException, match="geographic"):
+        qgis_processing.run("geomatics:gcpaccuracyreport", {"GCP_FILE": str(pts)})
+    out = tmp_path / "geo_rect.tif"
+    res = qgis_processing.run("geomatics:rectifygcp", {
+        "INPUT": str(img), "GCP_FILE": str(pts), "ORDER": 1, "TARGET_CRS": "EPSG:32637",
+        "OUTPUT": str(out)})
+    assert res["GR"] == pytest.approx(8 * gcp_synthetic.IMAGE1_GR, rel=0.02)
+    assert res["RMS_T"] < 5.0
+    ds = gdal.Open(str(out))
+    assert "32637" in ds.GetProjection() or "UTM zone 37N" in ds.GetProjection()
+    assert ds.GetGeoTransform()[0] == pytest.approx(utm[:, 0].min(), abs=200)
