@@ -48,7 +48,9 @@ _HELP_GCP = (
     "Georeferencer's <i>&lt;image&gt;.points</i> next to the image is used.</li>"
     "<li><b>GCP point layer</b> (GCP_LAYER): points whose geometry holds the map "
     "coordinates (in the layer CRS) with fields for the image column and row "
-    "(COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD.</li>"
+    "(COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD, "
+    "WEIGHT_FIELD (least-squares weights, e.g. 1/σ²; the report uses them, GDAL's warp "
+    "fits unweighted).</li>"
     "<li><b>Pixel origin</b> (PIXEL_ORIGIN, default 0 = corner): 0 — image coordinates "
     "in the GDAL/QGIS convention, (0,0) is the top-left corner of the image and the "
     "centre of the first pixel is (0.5, 0.5); 1 — integer values are pixel centres "
@@ -88,6 +90,7 @@ class _GcpBase(GeomaticsAlgorithm):
     ID_FIELD = "ID_FIELD"
     ENABLED_FIELD = "ENABLED_FIELD"
     ROLE_FIELD = "ROLE_FIELD"
+    WEIGHT_FIELD = "WEIGHT_FIELD"
     PIXEL_ORIGIN = "PIXEL_ORIGIN"
     GCP_CRS = "GCP_CRS"
     ORDER = "ORDER"
@@ -109,7 +112,8 @@ class _GcpBase(GeomaticsAlgorithm):
                             (self.ROW_FIELD, self.tr("Layer field: image row")),
                             (self.ID_FIELD, self.tr("Layer field: point id")),
                             (self.ENABLED_FIELD, self.tr("Layer field: enabled (1/0)")),
-                            (self.ROLE_FIELD, self.tr("Layer field: role (gcp/check)"))):
+                            (self.ROLE_FIELD, self.tr("Layer field: role (gcp/check)")),
+                            (self.WEIGHT_FIELD, self.tr("Layer field: weight (> 0)"))):
             self.add(QgsProcessingParameterField(name, label, None, self.GCP_LAYER,
                                                  QgsProcessingParameterField.Any,
                                                  optional=True),
@@ -191,14 +195,14 @@ class _GcpBase(GeomaticsAlgorithm):
             raise QgsProcessingException(self.invalidSourceError(parameters, self.GCP_LAYER))
         fields = {}
         for key in (self.COL_FIELD, self.ROW_FIELD, self.ID_FIELD, self.ENABLED_FIELD,
-                    self.ROLE_FIELD):
+                    self.ROLE_FIELD, self.WEIGHT_FIELD):
             names = self.parameterAsFields(parameters, key, context)
             fields[key] = names[0] if names else None
         if not fields[self.COL_FIELD] or not fields[self.ROW_FIELD]:
             raise QgsProcessingException(self.tr(
                 "GCP_LAYER needs COL_FIELD and ROW_FIELD: the fields holding the image "
                 "column and row of each point."))
-        ids, pix, mp, en, role = [], [], [], [], []
+        ids, pix, mp, en, role, wt = [], [], [], [], [], []
         for k, feat in enumerate(source.getFeatures(), start=1):
             geom = feat.geometry()
             if geom is None or geom.isEmpty():
@@ -237,6 +241,14 @@ class _GcpBase(GeomaticsAlgorithm):
                 role.append(gcp_io._ROLE_ALIASES[rv])
             else:
                 role.append("gcp")
+            if fields[self.WEIGHT_FIELD]:
+                raw = feat[fields[self.WEIGHT_FIELD]]
+                try:
+                    wt.append(float(raw))
+                except (TypeError, ValueError):
+                    raise QgsProcessingException(
+                        f"{where}: field '{fields[self.WEIGHT_FIELD]}' must be a number, "
+                        f"got {raw!r}.") from None
         pix = np.asarray(pix, float).reshape(-1, 2)
         notes = []
         if len(pix) and (pix[:, 1] <= 0).all() and (pix[:, 1] < 0).any():
@@ -246,7 +258,7 @@ class _GcpBase(GeomaticsAlgorithm):
             pix = pix + 0.5
             notes.append("Pixel centres: 0.5 added to col and row.")
         crs = source.sourceCrs()
-        return gcp_io.make_gcps(ids, pix, mp, enabled=en, role=role,
+        return gcp_io.make_gcps(ids, pix, mp, enabled=en, role=role, weight=wt or None,
                                 crs=crs.toWkt() if crs.isValid() else "",
                                 source=f"layer {parameters.get(self.GCP_LAYER)}", notes=notes)
 

@@ -100,18 +100,20 @@ def test_accuracy_report_from_point_layer_with_check_points(qgis_processing, tmp
     lyr = QgsVectorLayer(f"Point?crs={EPSG}", "gcps", "memory")
     pr = lyr.dataProvider()
     pr.addAttributes([QgsField("name", QVariant.String), QgsField("px", QVariant.Double),
-                      QgsField("py", QVariant.Double), QgsField("kind", QVariant.String)])
+                      QgsField("py", QVariant.Double), QgsField("kind", QVariant.String),
+                      QgsField("w", QVariant.Double)])
     lyr.updateFields()
     feats = []
     for k, ((c, r), (x, y)) in enumerate(zip(pix, mp)):
         f = QgsFeature(lyr.fields())
         f.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(x, y)))
-        f.setAttributes([f"P{k + 1}", float(c), float(r), "check" if k % 5 == 0 else "gcp"])
+        f.setAttributes([f"P{k + 1}", float(c), float(r), "check" if k % 5 == 0 else "gcp",
+                         2.0 if k == 3 else 1.0])
         feats.append(f)
     pr.addFeatures(feats)
     res = qgis_processing.run("geomatics:gcpaccuracyreport", {
         "GCP_LAYER": lyr, "COL_FIELD": "px", "ROW_FIELD": "py", "ID_FIELD": "name",
-        "ROLE_FIELD": "kind", "ORDER": 2})
+        "ROLE_FIELD": "kind", "WEIGHT_FIELD": "w", "ORDER": 2})
     assert res["N_CHECK"] == 5 and res["N_GCP"] == 17
     assert 0 < res["CHECK_RMS_T"] < 10
 
