@@ -14,6 +14,7 @@ def all_algorithms():
     from .gcp_rectification import GcpAccuracyReportAlgorithm, RectifyGcpAlgorithm
     from .terrain import DsmAlgorithm, IdwDtmAlgorithm, KrigingDtmAlgorithm
     from .dtm_accuracy import DtmAccuracyAlgorithm
+    from .slope_filter import SlopeGroundFilterAlgorithm, SlopeThresholdSweepAlgorithm
 
     return [
         GsdCalculatorAlgorithm(),
@@ -24,4 +25,6 @@ def all_algorithms():
         KrigingDtmAlgorithm(),
         DsmAlgorithm(),
         DtmAccuracyAlgorithm(),
+        SlopeGroundFilterAlgorithm(),
+        SlopeThresholdSweepAlgorithm(),
     ]
