@@ -158,6 +158,21 @@ def las_info(path) -> LasInfo:
         return _info_from_header(os.fspath(path), reader.header)
 
 
+def _chunks(reader, path, chunk_size: int):
+    """``reader.chunk_iterator`` that turns decoding failures into a clear ValueError."""
+    it = reader.chunk_iterator(chunk_size)
+    while True:
+        try:
+            chunk = next(it)
+        except StopIteration:
+            return
+        except Exception as exc:  # numpy buffer errors, lazrs.LazrsError, ...
+            raise ValueError(
+                f"{path} is truncated or corrupt: its point data cannot be decoded "
+                f"({type(exc).__name__}: {exc}). Re-export or re-download the file.") from exc
+        yield chunk
+
+
 def _check_dims(info: LasInfo, names: Sequence[str]) -> None:
     missing = [n for n in names if n not in info.dimensions]
     if missing:
@@ -191,7 +206,7 @@ def iter_las_chunks(path, dimensions: Sequence[str] = (), *,
         if info.count == 0 and not allow_empty:
             raise ValueError(f"{path} holds no points (empty point cloud).")
         start = 0
-        for chunk in reader.chunk_iterator(chunk_size):
+        for chunk in _chunks(reader, path, chunk_size):
             data = _extract(chunk, dimensions)
             data.info = info
             yield start, data
@@ -301,7 +316,7 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
         with laspy.open(tmp, mode="w", header=header,
                         do_compress=dst.lower().endswith(".laz")) as writer:
             start = 0
-            for chunk in reader.chunk_iterator(chunk_size):
+            for chunk in _chunks(reader, src, chunk_size):
                 mon.check()
                 stop = start + len(chunk)
                 for name, values in dimensions.items():
@@ -313,6 +328,12 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
                     written += len(chunk)
                 start = stop
                 mon.update(stop / info.count)
+            if start != info.count:
+                raise ValueError(f"{src} declares {info.count} points but holds {start}; "
+                                 "the file is truncated or corrupt.")
+            evlrs = getattr(header, "evlrs", None)
+            if evlrs:
+                writer.write_evlrs(evlrs)
     return written
 
 

@@ -213,9 +213,6 @@ def test_mask_and_dimensions_across_chunks(sources, tmp_path):
     assert_same_except_classification(src, out, new_class=new, mask=mask)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "las_io bug: write_las_like drops the EVLRs of a LAS 1.4 source (laspy's LasWriter "
-    "writes EVLRs only through writer.write_evlrs); fix in the report"))
 def test_evlrs_are_preserved(tmp_path):
     src = make_source(tmp_path / "evlr.laz", version="1.4", point_format=6, evlr=True)
     a = laspy.read(str(src))
@@ -367,11 +364,6 @@ def test_truncated_header_is_a_clear_error(sources, tmp_path):
         las_io.read_las(path)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "las_io bug: a file cut inside the point data raises numpy's 'buffer size must be "
-    "a multiple of element size' (LAS) or lazrs.LazrsError (LAZ) instead of a "
-    "ValueError naming the file as truncated; wrap the chunk loops of "
-    "iter_las_chunks / write_las_like (see report)"))
 @pytest.mark.parametrize("key", ["14las", "14laz"])
 def test_truncated_points_are_a_clear_error(sources, tmp_path, key):
     src = sources[key]
