@@ -134,10 +134,37 @@ class IDW:
                                                 return_length=True, workers=self.workers)
             k = int(max(1, counts.max())) if counts.size else 1
             k = min(k, self.n_points)
-        d, idx = self.tree.query(q, k=k, distance_upper_bound=ub, workers=self.workers)
-        if d.ndim == 1:
-            d, idx = d[:, None], idx[:, None]
+        if self.max_points == 0 or k >= self.n_points:
+            d, idx = self.tree.query(q, k=k, distance_upper_bound=ub, workers=self.workers)
+            if d.ndim == 1:
+                d, idx = d[:, None], idx[:, None]
+            return d, idx
+        # one extra neighbour tells whether the k-th distance is tied with the next
+        d, idx = self.tree.query(q, k=k + 1, distance_upper_bound=ub, workers=self.workers)
+        tied = np.isfinite(d[:, k]) & (d[:, k] == d[:, k - 1])
+        d, idx = d[:, :k], idx[:, :k]
+        if tied.any():
+            d[tied], idx[tied] = self._break_ties(q[tied], k, ub)
         return d, idx
+
+    def _break_ties(self, q: np.ndarray, k: int, ub: float):
+        """k nearest with equal distances ordered by point index (lowest first).
+
+        GDAL keeps equidistant points in the order its quadtree returns them, which
+        for points of one leaf is input order; the KD-tree order is arbitrary.
+        """
+        extra = min(self.n_points, k + 16)
+        while True:
+            d, idx = self.tree.query(q, k=extra, distance_upper_bound=ub,
+                                     workers=self.workers)
+            last_tied = np.isfinite(d[:, -1]) & (d[:, -1] == d[:, k - 1])
+            if not last_tied.any() or extra == self.n_points:
+                break
+            extra = min(self.n_points, extra * 2)
+        key_idx = np.where(np.isfinite(d), idx, np.iinfo(np.int64).max)
+        order = np.lexsort((key_idx, d), axis=-1)
+        rows = np.arange(d.shape[0])[:, None]
+        return d[rows, order][:, :k], idx[rows, order][:, :k]
 
     def predict(self, xq, yq, *, max_distance: Optional[float] = None) -> np.ndarray:
         """IDW estimates at points ``(xq, yq)``; NaN where there is no estimate.
