@@ -42,11 +42,13 @@ previous surface. If *no* tile can be fitted the call fails with a clear error.
 
 Improved mode (ours — beyond the paper, see :func:`lsq_ground_filter` and the
 benchmark ``benchmarks/results/lsq.md`` for the measurements on the ISPRS samples
-that justified each idea) adds: the low-outlier pre-filter, overlapping tiles
-whose surfaces are blended across the seams (bilinear partition of unity between
-tile centres), a coarse-to-fine cascade of tile sizes where each level starts
-from the ground of the previous one, and a threshold that grows with the local
-slope of the fitted surface.
+that justified each idea) adds: the low-outlier pre-filter, a coarse-to-fine
+cascade of tile sizes where each level starts from the ground of the previous
+one, tiles fitted on overlapping windows (smaller steps between neighbouring
+surfaces at the seams), and a threshold that grows with the local slope of the
+fitted surface, capped. Bilinear blending of the surfaces between tile centres
+(a seamless partition of unity) is available (``blend=True``) but measured worse
+at cliffs, so it is off by default.
 
 Accuracy metrics (Type I, Type II, total error, kappa) follow Sithole, G. &
 Vosselman, G. (2004), Experimental comparison of filter algorithms for bare-Earth
@@ -85,13 +87,16 @@ TERMS = {1: ("1", "x", "y"), 2: ("1", "x²", "y²", "x·y", "x", "y")}
 #: Faithful-mode iteration cap (the paper's tables end at iteration 5).
 FAITHFUL_MAX_ITERATIONS = 5
 
-#: Default options of the improved mode (one parameter set for every scene).
+#: Default options of the improved mode: ONE parameter set for every scene, chosen
+#: on the four ISPRS samples (see benchmarks/results/lsq.md for the measurements).
 IMPROVED_DEFAULTS = dict(
-    levels=(1.0, 0.5, 0.25),      # tile sizes as fractions of tile_size (coarse to fine)
-    overlap=0.5,                  # fitting window = tile × (1 + 2·overlap)
-    slope_factor=0.5,             # T_i = T + slope_factor · |∇ẑ| · spacing-free metre
-    noise=True,
-    max_iterations=20,
+    levels=(2.0, 1.0, 0.5, 0.25),  # tile sizes as multiples of tile_size, coarse to fine
+    overlap=0.25,                  # fitting window = tile grown by overlap x size per side
+    slope_factor=2.5,              # metres of extra threshold per unit surface gradient
+    slope_cap=1.0,                 # ... but at most this many metres
+    blend=False,                   # bilinear blending between tile centres (measured: worse)
+    noise=True,                    # low-outlier pre-filter
+    max_iterations=5,
 )
 
 
@@ -276,7 +281,7 @@ STATUS_NAMES = {0: "too few points", 1: "converged", 2: "iteration cap",
 
 def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20,
               tolerance=0.01, min_points=None, active=None, rejection="reweighted",
-              mon=None) -> FitOutcome:
+              start=None, mon=None) -> FitOutcome:
     """Iterative one-sided least-squares fit of every tile at once (paper step 4).
 
     Parameters
@@ -296,7 +301,15 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
     min_points : int, optional
         Tiles with fewer rows get no surface (default ``3 × p``).
     active : ndarray of bool, optional
-        Initial kept set (default all rows).
+        Rows taking part at all (e.g. a random subset; default all rows).
+    rejection : {"reweighted", "cumulative"}
+        ``"reweighted"``: each iteration the kept set is every row with
+        ``v ≤ T`` against the current surface (``W = diag(v ≤ T)`` recomputed
+        from all residuals, so a row can come back); ``"cumulative"``: rows once
+        rejected stay out.
+    start : ndarray of bool, optional
+        Rows of the first fit (default all active rows); used by the improved
+        mode to seed a level with the ground of the previous one.
     mon : Monitor, optional
 
     Returns
@@ -317,7 +330,11 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
     status = np.zeros(ntiles, dtype=np.int8)
     iterations = np.zeros(ntiles, dtype=np.int32)
     coef = np.full((ntiles, p), np.nan)
-    threshold = float(threshold)
+    per_row = np.ndim(threshold) > 0
+    if per_row:
+        threshold = np.asarray(threshold, dtype=np.float64)
+    else:
+        threshold = float(threshold)
 
     def tile_stats(T, Z, cnt=None):
         if cnt is None:
@@ -347,8 +364,13 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
     # working pool: rows of the live tiles (compacted as tiles finish)
     pool = rows[live[tid[rows]]]
     T, U, V, Z = tid[pool], u[pool], v[pool], z[pool] - zt0[tid[pool]]
-    cur = np.ones(T.size, dtype=bool)       # kept set within the pool
-    Tc, Uc, Vc, Zc = T, U, V, Z              # the kept rows themselves
+    H = threshold[pool] if per_row else threshold
+    if start is None:
+        cur = np.ones(T.size, dtype=bool)   # kept set within the pool
+        Tc, Uc, Vc, Zc = T, U, V, Z          # the kept rows themselves
+    else:
+        cur = np.asarray(start, dtype=bool)[pool]
+        Tc, Uc, Vc, Zc = T[cur], U[cur], V[cur], Z[cur]
     for it in range(1, int(max_iterations) + 1):
         mon.step((it - 1) / max_iterations)
         if not live.any():
@@ -364,11 +386,11 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
         iterations[live] += 1
         if cumulative:
             # rows once rejected stay out: only the kept ones are tested
-            ok = (Zc - _eval(coef, Tc, Uc, Vc, order)) <= threshold
+            ok = (Zc - _eval(coef, Tc, Uc, Vc, order)) <= (H[cur] if per_row else H)
             cur[cur] = ok
         else:
             # W = diag(v <= T) re-evaluated from the residuals of every row
-            cur = (Z - _eval(coef, T, U, V, order)) <= threshold
+            cur = (Z - _eval(coef, T, U, V, order)) <= H
         Tc, Uc, Vc, Zc = T[cur], U[cur], V[cur], Z[cur]
         cnt = np.bincount(Tc, minlength=ntiles)
         st = tile_stats(Tc, Zc, cnt)
@@ -394,9 +416,13 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
                 stay = ~fin
                 pool, T, U, V, Z, cur = (pool[stay], T[stay], U[stay], V[stay], Z[stay],
                                          cur[stay])
+                if per_row:
+                    H = H[stay]
                 Tc, Uc, Vc, Zc = T[cur], U[cur], V[cur], Z[cur]
         if cumulative and T.size != Tc.size:
             pool = pool[cur]
+            if per_row:
+                H = H[cur]
             T, U, V, Z = Tc, Uc, Vc, Zc
             cur = np.ones(T.size, dtype=bool)
     kept[pool[cur]] = True
@@ -510,7 +536,7 @@ class LsqResult:
 
 
 def _validate(x, y, z, order, tile_size, threshold, max_iterations, tolerance, subset_size,
-              mode, sparse_tiles):
+              mode, sparse_tiles, rejection="reweighted"):
     x = np.asarray(x, dtype=np.float64).ravel()
     y = np.asarray(y, dtype=np.float64).ravel()
     z = np.asarray(z, dtype=np.float64).ravel()
@@ -544,6 +570,8 @@ def _validate(x, y, z, order, tile_size, threshold, max_iterations, tolerance, s
                          f"(or None to fit all points), got {subset_size}.")
     if mode not in ("faithful", "improved"):
         raise ValueError(f"mode must be 'faithful' or 'improved', got {mode!r}.")
+    if rejection not in ("reweighted", "cumulative"):
+        raise ValueError(f"rejection must be 'reweighted' or 'cumulative', got {rejection!r}.")
     if sparse_tiles not in ("borrow", "unclassified"):
         raise ValueError(f"sparse_tiles must be 'borrow' or 'unclassified', got "
                          f"{sparse_tiles!r}.")
@@ -599,6 +627,7 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
                       levels: Optional[Sequence[float]] = None,
                       overlap: Optional[float] = None,
                       slope_factor: Optional[float] = None,
+                      slope_cap: Optional[float] = None, blend: Optional[bool] = None,
                       progress=None, cancel=None) -> LsqResult:
     """Classify ground points with tiled least-squares polynomial surfaces.
 
@@ -619,13 +648,17 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
         ``T`` in metres: rejection (``v > T``) and classification
         (``z ≤ ẑ + T``) threshold; 0.5–1.0 m, larger on steeper terrain.
     mode : {"faithful", "improved"}, default "faithful"
-        ``"faithful"`` = the paper. ``"improved"`` = ours (beyond the paper): a
-        coarse-to-fine cascade of tile sizes (``levels`` × ``tile_size``), each
-        level fitted on overlapping windows (``overlap``) seeded with the ground
-        of the previous level, surfaces blended between tile centres (no seams),
-        a slope-adapted threshold ``T + slope_factor·|∇ẑ|`` (metres per unit
-        gradient) and the low-outlier pre-filter. Defaults in
-        :data:`IMPROVED_DEFAULTS`, chosen once for all ISPRS samples.
+        ``"faithful"`` = the paper. ``"improved"`` = ours (beyond the paper): the
+        low-outlier pre-filter; a coarse-to-fine cascade of tile sizes
+        (``levels`` × ``tile_size``: 100, 50, 25, 12.5 m by default), each level
+        fitted on overlapping windows (each tile grown by ``overlap`` × its size)
+        and started from the ground of the previous level (the fit may re-admit
+        points, so the cascade can recover ground a coarse level lost); a
+        slope-adapted threshold ``T + min(slope_factor·|∇ẑ|, slope_cap)`` for
+        rejection and classification. Defaults in :data:`IMPROVED_DEFAULTS`, one
+        parameter set chosen on the four ISPRS samples (no held-out data: see the
+        benchmark for each idea's measured effect). Under-populated tiles always
+        borrow their neighbours' surfaces in this mode.
     max_iterations : int, optional
         Cap on fits per tile. Default 5 in faithful mode — the paper's Tables 1–2
         run five iterations, its stopping rule firing at iteration 4–5; on
@@ -650,8 +683,16 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
         fit). Default: off in faithful mode, on in improved mode.
     noise_radius, noise_threshold : float, default 5.0 and 1.0
         Metres; ``radius`` and ``threshold`` of the pre-filter.
-    levels, overlap, slope_factor : optional
-        Improved-mode options (see ``mode``); ignored in faithful mode.
+    rejection : {"reweighted", "cumulative"}, default "reweighted"
+        ``"reweighted"``: every iteration ``W = diag(v ≤ T)`` is recomputed from
+        the residuals of all fitting points of the tile (the paper's
+        ``Δ = (BᵀWB)⁻¹BᵀWF`` with 0/1 weights: a point dropped earlier can come
+        back when the surface moves); ``"cumulative"``: a dropped point stays out.
+        The two differ by less than 0.5 point of total error on the ISPRS samples.
+    levels, overlap, slope_factor, slope_cap, blend : optional
+        Improved-mode options (see ``mode``; ``blend=True`` blends the four
+        surrounding tile surfaces bilinearly instead of using the point's own
+        tile — seamless, but measured worse at cliffs); ignored in faithful mode.
     progress, cancel : callable, optional
         ``progress(fraction)``, ``cancel() -> bool`` (checked every iteration).
 
@@ -684,7 +725,7 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
         max_iterations = (FAITHFUL_MAX_ITERATIONS if mode != "improved"
                           else IMPROVED_DEFAULTS["max_iterations"])
     x, y, z = _validate(x, y, z, order, tile_size, threshold, max_iterations, tolerance,
-                        subset_size, mode, sparse_tiles)
+                        subset_size, mode, sparse_tiles, rejection)
     order = int(order)
     p = n_coefficients(order)
     mon = Monitor(progress, cancel)
@@ -710,7 +751,7 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
                   threshold=float(threshold), max_iterations=int(max_iterations),
                   tolerance=float(tolerance), subset_size=subset_size, seed=seed,
                   min_points=3 * p if min_points is None else int(min_points),
-                  sparse_tiles=sparse_tiles, noise=bool(noise),
+                  sparse_tiles=sparse_tiles, rejection=rejection, noise=bool(noise),
                   noise_radius=float(noise_radius), noise_threshold=float(noise_threshold),
                   origin=(x0, y0))
     if not improved:
@@ -722,16 +763,20 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
         ov = float(IMPROVED_DEFAULTS["overlap"] if overlap is None else overlap)
         sf = float(IMPROVED_DEFAULTS["slope_factor"] if slope_factor is None
                    else slope_factor)
+        cap = float(IMPROVED_DEFAULTS["slope_cap"] if slope_cap is None else slope_cap)
+        bl = bool(IMPROVED_DEFAULTS["blend"] if blend is None else blend)
         if not lv or any((not np.isfinite(f)) or f <= 0 for f in lv):
             raise ValueError(f"levels must be positive fractions of tile_size, got {lv}.")
         if not (0 <= ov <= 2):
             raise ValueError(f"overlap must be between 0 and 2 (fraction of a tile), got {ov}.")
         if not np.isfinite(sf) or sf < 0:
             raise ValueError(f"slope_factor must be ≥ 0, got {sf}.")
-        params.update(levels=lv, overlap=ov, slope_factor=sf)
+        if not (cap >= 0):
+            raise ValueError(f"slope_cap must be ≥ 0 metres, got {cap}.")
+        params.update(levels=lv, overlap=ov, slope_factor=sf, slope_cap=cap, blend=bl)
         res = _improved(x, y, z, fit_pts, x0, y0, order, float(tile_size), float(threshold),
                         max_iterations, tolerance, subset_size, seed, min_points,
-                        sparse_tiles, lv, ov, sf, mon.sub(0.15, 1.0), timings)
+                        sparse_tiles, lv, ov, sf, cap, bl, mon.sub(0.15, 1.0), timings)
     ground, surface, thr, extra = res
     cls[ground] = GROUND
     cls[np.isnan(surface) & ~is_noise] = UNCLASSIFIED
@@ -801,5 +846,153 @@ def _faithful(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
     return ground, surface, thr, extra
 
 
-def _improved(*args):  # pragma: no cover - filled in below
-    raise NotImplementedError
+def _window_rows(x, y, pts, x0, y0, size, overlap):
+    """Replicate points into every overlapping fitting window that holds them.
+
+    The window of tile ``(i, j)`` is the tile grown by ``overlap × size`` on every
+    side. Returns ``(tile_key, point_index, nx_keys)`` for the rows, sorted by key,
+    where ``key = i * ny + j``.
+    """
+    fx = (x[pts] - x0) / size
+    fy = (y[pts] - y0) / size
+    ix = np.floor(fx).astype(np.int64)
+    iy = np.floor(fy).astype(np.int64)
+    reach = int(np.ceil(overlap)) if overlap > 0 else 0
+    ny = int(np.floor((y[pts].max() - y0) / size)) + 2 + reach
+    keys, idx = [], []
+    for di in range(-reach, reach + 1):
+        for dj in range(-reach, reach + 1):
+            ti, tj = ix + di, iy + dj
+            inside = ((np.abs(fx - (ti + 0.5)) <= 0.5 + overlap)
+                      & (np.abs(fy - (tj + 0.5)) <= 0.5 + overlap) & (ti >= 0) & (tj >= 0))
+            keys.append((ti * ny + tj)[inside])
+            idx.append(pts[inside])
+    keys = np.concatenate(keys)
+    idx = np.concatenate(idx)
+    o = np.argsort(keys, kind="stable")
+    return keys[o], idx[o], ny
+
+
+def _blend(x, y, x0, y0, size, ny, ukeys, coef, solved, order, bilinear=True,
+           chunk=2_000_000):
+    """Surface blended between tile centres (bilinear partition of unity).
+
+    Every point takes the surfaces of the four tiles whose centres surround it,
+    each evaluated at the point, weighted bilinearly by distance to the centres;
+    missing or unsolved tiles get weight 0 (the others are renormalised). Returns
+    ``(zhat, slope)``; NaN where no surrounding tile has a surface.
+    """
+    n = x.size
+    zhat = np.full(n, np.nan)
+    slope = np.zeros(n)
+    h = size / 2.0
+    for s in range(0, n, chunk):
+        xs, ys = x[s:s + chunk], y[s:s + chunk]
+        fx = (xs - x0) / size - 0.5
+        fy = (ys - y0) / size - 0.5
+        i0 = np.floor(fx).astype(np.int64)
+        j0 = np.floor(fy).astype(np.int64)
+        tx, ty = fx - i0, fy - j0
+        acc = np.zeros(xs.size)
+        gacc = np.zeros(xs.size)
+        wsum = np.zeros(xs.size)
+        if bilinear:
+            corners = ((0, 0, (1 - tx) * (1 - ty)), (1, 0, tx * (1 - ty)),
+                       (0, 1, (1 - tx) * ty), (1, 1, tx * ty))
+        else:   # the point's own tile, fallback to the nearest neighbours
+            own_i = np.floor(fx + 0.5).astype(np.int64) - i0
+            own_j = np.floor(fy + 0.5).astype(np.int64) - j0
+            corners = tuple((di, dj, np.where((own_i == di) & (own_j == dj), 1.0, 1e-6))
+                            for di in (0, 1) for dj in (0, 1))
+        for di, dj, w in corners:
+            ti, tj = i0 + di, j0 + dj
+            key = ti * ny + tj
+            pos = np.minimum(np.searchsorted(ukeys, key), ukeys.size - 1)
+            hit = (ukeys[pos] == key) & (ti >= 0) & (tj >= 0)
+            hit &= solved[pos]
+            if not hit.any():
+                continue
+            k = pos[hit]
+            u = (xs[hit] - (x0 + (ti[hit] + 0.5) * size)) / h
+            v = (ys[hit] - (y0 + (tj[hit] + 0.5) * size)) / h
+            ww = w[hit]
+            acc[hit] += ww * _eval(coef, k, u, v, order)
+            gacc[hit] += ww * _grad(coef, k, u, v, order, h)
+            wsum[hit] += ww
+        good = wsum > 0
+        zz = np.full(xs.size, np.nan)
+        zz[good] = acc[good] / wsum[good]
+        gg = np.zeros(xs.size)
+        gg[good] = gacc[good] / wsum[good]
+        zhat[s:s + chunk] = zz
+        slope[s:s + chunk] = gg
+    return zhat, slope
+
+
+def _improved(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterations,
+              tolerance, subset_size, seed, min_points, sparse_tiles, levels, overlap,
+              slope_factor, slope_cap, blend, mon, timings):
+    """Coarse-to-fine, overlapping, blended, slope-adaptive LSQ (ours, see module doc)."""
+    n = x.size
+    p = n_coefficients(order)
+    seed = None                               # bool per point: ground of the previous level
+    surface = slope = None
+    level_info = []
+    nlev = len(levels)
+    out = None
+    for k, frac in enumerate(levels):
+        lm = mon.sub(k / nlev, (k + 1) / nlev)
+        t0 = time.perf_counter()
+        size = tile_size * float(frac)
+        keys, idx, ny = _window_rows(x, y, fit_pts, x0, y0, size, overlap)
+        ukeys, T = np.unique(keys, return_inverse=True)
+        T = T.astype(np.int64)
+        del keys
+        ix, iy = ukeys // ny, ukeys % ny
+        h = size / 2.0
+        U = (x[idx] - (x0 + (ix[T] + 0.5) * size)) / h
+        V = (y[idx] - (y0 + (iy[T] + 0.5) * size)) / h
+        active = None
+        if subset_size is not None:
+            active = _random_subset(T, subset_size, seed)
+        rthr = threshold if slope is None else threshold + slope_factor * slope[idx]
+        out = fit_tiles(T, U, V, z[idx], ukeys.size, order=order, threshold=rthr,
+                        max_iterations=max_iterations, tolerance=tolerance,
+                        min_points=min_points, active=active,
+                        start=None if seed is None else seed[idx], mon=lm.sub(0.0, 0.8))
+        solved = out.status != 0
+        del T, U, V, idx
+        if not solved.any():
+            if k == 0:
+                mp = 3 * p if min_points is None else max(int(min_points), p)
+                raise ValueError(
+                    f"No tile has enough well-spread points to fit an order-{order} surface "
+                    f"(at least {mp} per tile, not all on one line; the fullest tile has "
+                    f"{int(out.npoints.max())} of the {n} points). Use a larger TILE_SIZE, "
+                    "ORDER 1, or a denser cloud.")
+            break
+        zh, sl = _blend(x, y, x0, y0, size, ny, ukeys, out.coef, solved, order,
+                        bilinear=blend)
+        lm.step(0.95)
+        if surface is not None:
+            # where the finer level has no surface, keep the coarser one
+            miss = np.isnan(zh)
+            zh[miss] = surface[miss]
+            sl[miss] = slope[miss]
+        surface, slope = zh, sl
+        thr = threshold + np.minimum(slope_factor * slope, slope_cap)
+        # seed of the next level: this level's ground (and everything below it)
+        seed = z <= surface + thr
+        seed_n = int(seed[fit_pts].sum())
+        grid = TileGrid(float(x0), float(y0), float(size), ix, iy)
+        level_info.append(dict(level=k + 1, tile_size=size, tiles=int(ukeys.size),
+                               fitted=int(solved.sum()), seed_points=seed_n,
+                               seconds=time.perf_counter() - t0))
+        if seed_n < p:
+            break
+    ground = z <= surface + thr
+    status = out.status.copy()
+    extra = dict(grid=grid, coefficients=out.coef, tile_status=status,
+                 tile_iterations=out.iterations, tile_points=out.npoints,
+                 tile_stats=out.stats, iteration_stats=out.agg, levels=level_info)
+    return ground, surface, thr, extra
