@@ -255,8 +255,9 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
                 ("mean absolute error MAE (m)", s["mae"]), ("RMSE (m)", s["rmse"]),
                 ("standard deviation (m)", s["std"]),
                 ("min / max error (m)", f"{s['min_error']:.3f} / {s['max_error']:.3f}"),
-                ("max |error| (m)", s["max_abs_error"]), ("Pearson r", s["r"]),
-                ("R² (= r²)", s["r2"]), ("NMAD (m)", s["nmad"]),
+                ("max |error| (m)", s["max_abs_error"]),
+                ("Pearson r", f"{s['r']:.6f}"), ("R² (= r²)", f"{s['r2']:.6f}"),
+                ("NMAD (m)", s["nmad"]),
                 ("vertical accuracy 95 % = 1.96·RMSE (m, ASPRS 2014)", s["accuracy_95"]),
                 ("95th percentile of |error| (m)", s["p95_abs_error"])]
         body += "<h2>Statistics (error = DTM − check)</h2>" + html_table(

@@ -121,3 +121,14 @@ def test_bad_input_clear_errors():
         idw_grid(x, x, x, huge, max_points=3)
     with pytest.raises(ValueError, match="min_points"):
         IDW(x, x, x, max_points=3, min_points=4)
+
+
+def test_ties_at_the_cut_off_follow_input_order():
+    # four points at the same distance from the node (0.5, 0.5); two are used
+    x = np.array([0.0, 1.0, 0.0, 1.0, 5.0])
+    y = np.array([0.0, 0.0, 1.0, 1.0, 5.0])
+    z = np.array([1.0, 2.0, 3.0, 4.0, 9.0])
+    for perm in ([0, 1, 2, 3, 4], [3, 2, 1, 0, 4], [2, 0, 3, 1, 4]):
+        p = np.array(perm)
+        got = IDW(x[p], y[p], z[p], max_points=2).predict([0.5], [0.5])[0]
+        assert got == pytest.approx(z[p][:2].mean())   # the two first in input order
