@@ -34,9 +34,10 @@ Under-populated tiles — fewer than ``min_points`` fitting points (default
 ``3 × number of coefficients``: 9 for order 1, 18 for order 2) or a singular
 normal matrix (e.g. all points on one scan line) — are handled explicitly:
 ``sparse_tiles="borrow"`` (default) classifies their points with the surface of
-the nearest fitted tile (nearest tile centre, the polynomial evaluated at the
-points, i.e. extrapolated); ``sparse_tiles="unclassified"`` leaves their points
-in ASPRS class 0 ("created, never classified") so they can be found. A tile whose
+the nearest fitted tile (nearest tile centre; beyond that tile's edge the
+polynomial is continued by its tangent plane at the edge, not extrapolated);
+``sparse_tiles="unclassified"`` leaves their points in ASPRS class 0
+("created, never classified") so they can be found. A tile whose
 kept set falls below the number of coefficients during the iterations keeps its
 previous surface. If *no* tile can be fitted the call fails with a clear error.
 
@@ -613,7 +614,24 @@ def _surface_at(x, y, grid, coef, src, tid, order):
     """ẑ and |∇ẑ| of each point from the surface of tile ``src[tid]``."""
     s = src[tid]
     u, v = grid.local(s, x, y)
-    return _eval(coef, s, u, v, order), _grad(coef, s, u, v, order, grid.size / 2.0)
+    zhat = _eval(coef, s, u, v, order)
+    slope = _grad(coef, s, u, v, order, grid.size / 2.0)
+    far = (np.abs(u) > 1) | (np.abs(v) > 1)
+    if far.any():
+        # borrowed surface outside its own tile: continue it linearly from the tile
+        # edge (tangent plane) instead of extrapolating the quadratic
+        sf = s[far]
+        uc, vc = np.clip(u[far], -1, 1), np.clip(v[far], -1, 1)
+        c = coef
+        if order == 1:
+            gu, gv = c[sf, 1], c[sf, 2]
+        else:
+            gu = 2 * c[sf, 1] * uc + c[sf, 3] * vc + c[sf, 4]
+            gv = 2 * c[sf, 2] * vc + c[sf, 3] * uc + c[sf, 5]
+        zhat[far] = (_eval(coef, sf, uc, vc, order) + gu * (u[far] - uc)
+                     + gv * (v[far] - vc))
+        slope[far] = np.hypot(gu, gv) / (grid.size / 2.0)
+    return zhat, slope
 
 
 def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
@@ -744,8 +762,9 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
     mon.step(0.15)
     fit_pts = np.flatnonzero(~is_noise)
     if fit_pts.size < p:
-        raise ValueError(f"Only {fit_pts.size} point(s) are left for fitting; order {order} "
-                         f"needs at least {p}. Use order 1 or a larger cloud.")
+        raise ValueError(f"Too few points: only {fit_pts.size} point(s) are left for fitting "
+                         f"and an order-{order} surface needs at least {p} in a tile. Use "
+                         "ORDER 1, a larger cloud, or switch the noise pre-filter off.")
     x0, y0 = float(x.min()), float(y.min())
     params = dict(mode=mode, order=order, tile_size=float(tile_size),
                   threshold=float(threshold), max_iterations=int(max_iterations),
@@ -789,11 +808,20 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
                      timings=timings, **extra)
 
 
+def _too_few(order, min_points, npoints, n) -> ValueError:
+    p = n_coefficients(order)
+    mp = 3 * p if min_points is None else max(int(min_points), p)
+    return ValueError(
+        f"Too few points: no tile has enough well-spread points to fit an order-{order} "
+        f"surface (at least {mp} per tile, not all on one line; the fullest tile has "
+        f"{int(npoints.max())} of the {n} points). Use a larger TILE_SIZE, ORDER 1, or a "
+        "denser cloud.")
+
+
 def _faithful(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterations,
               tolerance, subset_size, seed, min_points, sparse_tiles, rejection, mon,
               timings):
     t0 = time.perf_counter()
-    p = n_coefficients(order)
     n = x.size
     tid_all, grid = _tile_index(x, y, x0, y0, tile_size)
     ft = tid_all[fit_pts]
@@ -817,12 +845,7 @@ def _faithful(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
     t0 = time.perf_counter()
     solved = out.status != 0
     if not solved.any():
-        mp = 3 * p if min_points is None else max(int(min_points), p)
-        raise ValueError(
-            f"No tile has enough well-spread points to fit an order-{order} surface "
-            f"(at least {mp} per tile, not all on one line; the fullest tile has "
-            f"{int(out.npoints.max())} of the {n} points). Use a larger TILE_SIZE, "
-            "ORDER 1, or a denser cloud.")
+        raise _too_few(order, min_points, out.npoints, n)
     status = out.status.copy()
     if sparse_tiles == "borrow":
         src = _borrow(out.coef, solved, grid)
@@ -964,12 +987,7 @@ def _improved(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
         del T, U, V, idx
         if not solved.any():
             if k == 0:
-                mp = 3 * p if min_points is None else max(int(min_points), p)
-                raise ValueError(
-                    f"No tile has enough well-spread points to fit an order-{order} surface "
-                    f"(at least {mp} per tile, not all on one line; the fullest tile has "
-                    f"{int(out.npoints.max())} of the {n} points). Use a larger TILE_SIZE, "
-                    "ORDER 1, or a denser cloud.")
+                raise _too_few(order, min_points, out.npoints, n)
             break
         zh, sl = _blend(x, y, x0, y0, size, ny, ukeys, out.coef, solved, order,
                         bilinear=blend)
