@@ -146,3 +146,121 @@ def error_codes(predicted_ground, reference_ground) -> np.ndarray:
     out[r & ~p] = 1
     out[~r & p] = 2
     return out
+
+
+# ----------------------------------------------------------------------------- files
+def parse_classes(text, *, name: str = "ground classes") -> tuple:
+    """Parse a class list such as ``"2"``, ``"2, 8"`` or ``"2 11"`` into a tuple of ints.
+
+    >>> parse_classes("2, 8 11")
+    (2, 8, 11)
+    """
+    if isinstance(text, (list, tuple, np.ndarray)):
+        items = [str(v) for v in text]
+    else:
+        items = str(text if text is not None else "").replace(";", ",").replace(" ", ",")
+        items = [t for t in items.split(",") if t.strip()]
+    try:
+        out = tuple(int(float(t)) for t in items)
+    except ValueError:
+        raise ValueError(f"The {name} '{text}' must be class numbers separated by commas, "
+                         "e.g. '2' or '2, 8'.") from None
+    if not out or any(c < 0 or c > 255 for c in out):
+        raise ValueError(f"The {name} '{text}' must list at least one class number "
+                         "between 0 and 255, e.g. '2'.")
+    return out
+
+
+@dataclass(frozen=True)
+class CloudAssessment:
+    """Result of :func:`assess_clouds`."""
+
+    accuracy: FilterAccuracy
+    predicted_ground: np.ndarray
+    reference_ground: np.ndarray
+    classes: dict          # filtered class value -> (reference ground, reference object)
+
+    def error_codes(self) -> np.ndarray:
+        """Per point: 0 correct, 1 Type I, 2 Type II."""
+        return error_codes(self.predicted_ground, self.reference_ground)
+
+
+def assess_clouds(classified, reference=None, *, field: str = "classification",
+                  ground_classes=(GROUND,), reference_field: str = "classification",
+                  reference_ground_classes=(GROUND,), xy_tolerance: float | None = None,
+                  progress=None, cancel=None) -> CloudAssessment:
+    """Assess a classified LAS/LAZ cloud against reference labels (Sithole & Vosselman 2004).
+
+    Parameters
+    ----------
+    classified : path
+        The filtered cloud.
+    reference : path, optional
+        A reference cloud holding the same points in the same order (e.g. the
+        ISPRS reference sample). When omitted, ``reference_field`` is read from
+        ``classified`` itself (e.g. a second, classification-like dimension).
+    field, reference_field : str
+        Dimensions holding the filtered and the reference classes (any laspy
+        dimension name: ``classification``, ``user_data``, an extra dimension...).
+    ground_classes, reference_ground_classes : sequence of int
+        Class values that mean "ground" (default ASPRS 2).
+    xy_tolerance : float, optional
+        Metres. With a reference cloud, the x/y of the two clouds must agree within
+        this (default: twice the coarser of the two files' scales), which catches
+        clouds of the same length but in a different order.
+    progress, cancel : callable, optional
+
+    Returns
+    -------
+    CloudAssessment
+
+    Raises
+    ------
+    ValueError
+        Unreadable files, missing dimensions, clouds of different length or
+        order, or the same dimension given as both labels.
+    """
+    from .las_io import read_las
+    from .progress import Monitor
+    mon = Monitor(progress, cancel)
+    ground_classes = parse_classes(ground_classes)
+    reference_ground_classes = parse_classes(reference_ground_classes,
+                                             name="reference ground classes")
+    if reference is None or str(reference) == "":
+        if reference_field == field:
+            raise ValueError(
+                f"Without a reference cloud the reference labels must come from another "
+                f"dimension of the classified cloud, but both are '{field}'. Give a "
+                "reference cloud, or the name of the reference dimension.")
+        pd = read_las(classified, (field, reference_field), progress=mon.sub(0, .9).update,
+                      cancel=cancel)
+        pred, ref = pd[field], pd[reference_field]
+    else:
+        pd = read_las(classified, (field,), progress=mon.sub(0, .45).update, cancel=cancel)
+        rd = read_las(reference, (reference_field,), progress=mon.sub(.45, .9).update,
+                      cancel=cancel)
+        if len(rd) != len(pd):
+            raise ValueError(
+                f"The classified cloud has {len(pd)} points but the reference cloud has "
+                f"{len(rd)}; both must hold the same points in the same order (filter the "
+                "reference file itself, do not thin or merge it).")
+        tol = xy_tolerance
+        if tol is None:
+            tol = 2.0 * max(max(pd.info.scales[:2]), max(rd.info.scales[:2]))
+        dxy = max(float(np.max(np.abs(pd.x - rd.x))), float(np.max(np.abs(pd.y - rd.y))))
+        if dxy > tol:
+            raise ValueError(
+                f"The classified and reference clouds have the same number of points but "
+                f"their coordinates differ by up to {dxy:.3f} m (tolerance {tol:.3f} m): "
+                "they are not the same points in the same order.")
+        pred, ref = pd[field], rd[reference_field]
+    mon.check()
+    p = ground_mask(pred, ground_classes)
+    r = ground_mask(ref, reference_ground_classes)
+    acc = assess(p, r)
+    vals, inv = np.unique(np.asarray(pred), return_inverse=True)
+    rg = np.bincount(inv, weights=r, minlength=vals.size).astype(np.int64)
+    tot = np.bincount(inv, minlength=vals.size)
+    classes = {int(v): (int(g), int(t - g)) for v, g, t in zip(vals, rg, tot)}
+    mon.update(1.0)
+    return CloudAssessment(acc, p, r, classes)
