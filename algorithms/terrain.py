@@ -346,7 +346,13 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
             "<li><b>Neighbours</b> (NEIGHBOURS, default 16, ≥ 2).</li>"
             "<li><b>Points for the variogram fit</b> (FIT_POINTS, default 3000).</li>"
             "<li><b>Lag classes</b> (NLAGS, default 12) and <b>maximum lag</b> (MAX_LAG, m, "
-            "default 0 = half the largest distance, Journel &amp; Huijbregts 1978).</li>"
+            "default 0 = automatic: three times the typical distance to the "
+            "NEIGHBOURS-th neighbour, the scale local kriging uses, so the nugget and the "
+            "short-range shape that set the weights and the variance are well sampled; the "
+            "fitted sill and range then describe that local scale). For a classical "
+            "field-scale fit give e.g. half the extent (Journel &amp; Huijbregts 1978). A "
+            "fitted nugget is raised to at least 1 % of the semivariance at the maximum "
+            "lag, for numerical stability (Gaussian and power models).</li>"
             "<li><b>Cross-validation points</b> (CV_POINTS, default 0 = off): "
             "leave-one-out on this many random points; reports ME, RMSE, mean standardised "
             "error (ideal 0) and RMS standardised error (ideal 1).</li>"
@@ -374,8 +380,8 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
                         minimum=10, integer=True, advanced=True)
         self.add_number(self.NLAGS, self.tr("Lag classes"), 12, minimum=2, integer=True,
                         advanced=True)
-        self.add_number(self.MAX_LAG, self.tr("Maximum lag (m, 0 = half the largest "
-                                              "distance)"), 0.0, minimum=0.0, advanced=True)
+        self.add_number(self.MAX_LAG, self.tr("Maximum lag (m, 0 = auto: local scale)"), 0.0,
+                        minimum=0.0, advanced=True)
         self.add_number(self.CV_POINTS, self.tr("Cross-validation points (0 = off)"), 0,
                         minimum=0, integer=True)
         self.add_number(self.SEED, self.tr("Random seed"), 0, minimum=0, integer=True,
