@@ -216,7 +216,7 @@ def _choose_cell(qx, qy, r: float, n_q: int) -> float:
 
 def _bounded_max_slope(px, py, pz, qx, qy, qz, *, radius: float, height: float,
                        t_lo: float, t_hi: float, cell: Optional[float] = None,
-                       mon: Monitor, stats: _Stats) -> np.ndarray:
+                       mon: Monitor, stats: _Stats, _tile: bool = False) -> np.ndarray:
     """``S_i`` of every point of P against the neighbour set Q, exact where it matters.
 
     Returns ``v`` with: ``v = S`` exactly when ``t_lo < S <= t_hi``; ``v > t_hi``
@@ -225,7 +225,8 @@ def _bounded_max_slope(px, py, pz, qx, qy, qz, *, radius: float, height: float,
     """
     n_p, n_q = px.size, qx.size
     v = np.full(n_p, -np.inf)
-    stats.points += n_p
+    if not _tile:
+        stats.points += n_p
     if n_q == 0 or n_p == 0:
         return v
     r, h = radius, height
@@ -234,13 +235,16 @@ def _bounded_max_slope(px, py, pz, qx, qy, qz, *, radius: float, height: float,
     x1 = max(float(px.max()), float(qx.max()))
     y1 = max(float(py.max()), float(qy.max()))
     s = float(cell) if cell else _choose_cell(qx, qy, r, n_q)
-    while True:
-        pad = int(math.floor(r / s)) + 2
-        nx = int(math.floor((x1 - x0) / s)) + 1 + 2 * pad
-        ny = int(math.floor((y1 - y0) / s)) + 1 + 2 * pad
-        if nx * ny <= _MAX_CELLS:
-            break
-        s *= math.sqrt(nx * ny / _MAX_CELLS) * 1.01
+    s = max(s, r / 16.0)          # caps the offsets at about 35 x 35
+    pad = int(math.floor(r / s)) + 2
+    nx = int(math.floor((x1 - x0) / s)) + 1 + 2 * pad
+    ny = int(math.floor((y1 - y0) / s)) + 1 + 2 * pad
+    if nx * ny > _MAX_CELLS and not _tile:
+        # Too large for one dense grid (huge or sparse extent): exact tiling with an
+        # r-wide overlap of the neighbour set, each tile on its own grid.
+        return _tiled_max_slope(px, py, pz, qx, qy, qz, radius=r, height=h, t_lo=t_lo,
+                                t_hi=t_hi, cell=s, pad=pad, mon=mon, stats=stats,
+                                origin=(x0, y0))
     stats.cell_size = s
     # Safety margins, far above float64 rounding of the bounds and of the
     # canonical comparison, far below any meaningful height or distance.
@@ -374,6 +378,61 @@ def _bounded_max_slope(px, py, pz, qx, qy, qz, *, radius: float, height: float,
             _eval_pairs(idx, seg0, m, bx, by, bz, qxs, qys, qzs, r, h, bv, stats)
         sub.update(1.0)
         v[sel] = bv
+    return v
+
+
+def _tiled_max_slope(px, py, pz, qx, qy, qz, *, radius, height, t_lo, t_hi, cell, pad,
+                     mon, stats, origin) -> np.ndarray:
+    """:func:`_bounded_max_slope` tile by tile; exact because each tile's neighbour
+    set holds every neighbour point within ``radius`` (plus a margin) of the tile."""
+    r, s = radius, cell
+    x0, y0 = origin
+    cmax = max(abs(x0), abs(y0), float(np.abs(px).max()), float(np.abs(py).max()),
+               float(np.abs(qx).max()), float(np.abs(qy).max()))
+    e = r + 1e-6 * max(1.0, r) + 1024 * _EPS * cmax             # reach incl. margin
+    side = max((math.sqrt(_MAX_CELLS / 2.0) - 2 * pad - 2) * s, 4.0 * e)   # tile side (m)
+    stats.cell_size = s
+    ptx = np.floor((px - x0) / side).astype(np.int64)
+    pty = np.floor((py - y0) / side).astype(np.int64)
+    ntx = int(max(ptx.max(), np.floor((qx.max() - x0 + e) / side))) + 2
+    pkey = pty * ntx + ptx
+    del ptx, pty
+    # every neighbour point goes to each tile (at most 4) its reach overlaps
+    keys, idx = [], []
+    qtx = [np.floor((qx - x0 - e) / side).astype(np.int64),
+           np.floor((qx - x0 + e) / side).astype(np.int64)]
+    qty = [np.floor((qy - y0 - e) / side).astype(np.int64),
+           np.floor((qy - y0 + e) / side).astype(np.int64)]
+    allq = np.arange(qx.size)
+    for a in (0, 1):
+        for b in (0, 1):
+            m = np.ones(qx.size, dtype=bool)
+            if a:
+                m &= qtx[1] != qtx[0]
+            if b:
+                m &= qty[1] != qty[0]
+            keys.append(qty[b][m] * ntx + qtx[a][m])
+            idx.append(allq[m])
+    qkey = np.concatenate(keys)
+    qidx = np.concatenate(idx)
+    del keys, idx, qtx, qty, allq
+    qo = np.argsort(qkey, kind="stable")
+    qkey, qidx = qkey[qo], qidx[qo]
+    po = np.argsort(pkey, kind="stable")
+    pkey_s = pkey[po]
+    tiles, starts = np.unique(pkey_s, return_index=True)
+    ends = np.r_[starts[1:], pkey_s.size]
+    v = np.full(px.size, -np.inf)
+    done = 0
+    for key, a, b in zip(tiles, starts, ends):
+        sub = mon.sub(done / px.size, (done + (b - a)) / px.size)
+        pi = po[a:b]
+        qa, qb = np.searchsorted(qkey, key, "left"), np.searchsorted(qkey, key, "right")
+        qi = qidx[qa:qb]
+        v[pi] = _bounded_max_slope(px[pi], py[pi], pz[pi], qx[qi], qy[qi], qz[qi],
+                                   radius=r, height=height, t_lo=t_lo, t_hi=t_hi, cell=s,
+                                   mon=sub, stats=stats, _tile=True)
+        done += b - a
     return v
 
 

@@ -87,6 +87,20 @@ def test_random_float_clouds_with_objects():
                 assert got.stats["pairs_tested"] < 0.5 * all_pairs
 
 
+def test_tiling_of_huge_extents_is_exact(monkeypatch):
+    """Clouds too large for one dense grid are tiled with an r-wide overlap: same labels."""
+    monkeypatch.setattr(sf, "_MAX_CELLS", 2000)
+    rng = np.random.default_rng(9)
+    n = 3000
+    x = 600_000 + np.r_[rng.uniform(0, 30, n // 2), rng.uniform(500, 530, n // 2)]
+    y = np.r_[rng.uniform(0, 30, n // 2), rng.uniform(200, 230, n // 2)]
+    z = rng.normal(0, 0.3, n) + (rng.random(n) < 0.3) * rng.uniform(0, 5, n)
+    ref = sf.max_slope_reference(x, y, z, radius=2.5, height_tolerance=0.1)
+    for theta in (30.0, 45.0):
+        got = sf.slope_filter(x, y, z, radius=2.5, slope=theta, height_tolerance=0.1)
+        np.testing.assert_array_equal(got.ground, ~(ref > np.tan(np.radians(theta))))
+
+
 # --------------------------------------------------------------------------- edge cases
 def test_neighbour_exactly_at_radius_is_included():
     x = np.array([0.0, 3.0])
