@@ -144,3 +144,23 @@ def test_checkpoints_in_other_crs(qgis_processing, scene, tmp_path):
     csv_ok = qgis_processing.run("geomatics:dtmaccuracy", {
         "DTM": dtm, "CHECKPOINTS_CSV": scene["csv"]})
     assert ok["RMSE"] == pytest.approx(csv_ok["RMSE"], abs=2e-3)
+
+
+def test_extent_crs_override_and_gap_mask(qgis_processing, scene):
+    d = scene["dir"]
+    x0, y0 = scene["tile"].bounds[:2]
+    ext = f"{x0 + 10.3},{x0 + 40.7},{y0 + 20.2},{y0 + 50.9} [EPSG:32632]"
+    res = qgis_processing.run("geomatics:idwdtm", {
+        "INPUT": scene["nocrs"], "CRS": "EPSG:32632", "EXTENT": ext, "CELL_SIZE": 0.5,
+        "OUTPUT": str(d / "ext.tif")})
+    r = read_raster(res["OUTPUT"])
+    assert r.geotransform == (x0 + 10.0, 0.5, 0.0, y0 + 51.0, 0.0, -0.5)
+    assert r.shape == (62, 62) and "32632" in r.crs or "UTM zone 32N" in r.crs
+    # a tiny max distance leaves cells without a point nearby empty (never invented)
+    tight = qgis_processing.run("geomatics:idwdtm", {
+        "INPUT": scene["laz"], "CELL_SIZE": 0.5, "MAX_DISTANCE": 0.3,
+        "OUTPUT": str(d / "tight.tif")})
+    loose = qgis_processing.run("geomatics:idwdtm", {
+        "INPUT": scene["laz"], "CELL_SIZE": 0.5, "FILL_GAPS": True,
+        "OUTPUT": str(d / "loose.tif")})
+    assert tight["NODATA_CELLS"] > 1000 and loose["NODATA_CELLS"] == 0
