@@ -15,6 +15,8 @@ def all_algorithms():
     from .terrain import DsmAlgorithm, IdwDtmAlgorithm, KrigingDtmAlgorithm
     from .dtm_accuracy import DtmAccuracyAlgorithm
     from .slope_filter import SlopeGroundFilterAlgorithm, SlopeThresholdSweepAlgorithm
+    from .lsq_filter import LsqGroundFilterAlgorithm
+    from .filter_accuracy import GroundFilterAccuracyAlgorithm
 
     return [
         GsdCalculatorAlgorithm(),
@@ -27,4 +29,6 @@ def all_algorithms():
         DtmAccuracyAlgorithm(),
         SlopeGroundFilterAlgorithm(),
         SlopeThresholdSweepAlgorithm(),
+        LsqGroundFilterAlgorithm(),
+        GroundFilterAccuracyAlgorithm(),
     ]

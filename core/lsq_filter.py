@@ -358,6 +358,7 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
 
     # step 0: every tile (also the under-populated ones), all fitting rows
     live = cnt0 >= min_points               # tiles still iterating
+    n_fit_tiles = int(live.sum())
     st0 = tile_stats(tid[rows], z[rows] - zt0[tid[rows]], cnt0)
     steps = [st0]
     agg = [_aggregate(st0, cnt0 > 0, "all fitting points", active_tiles=int(live.sum()))]
@@ -373,7 +374,9 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
         cur = np.asarray(start, dtype=bool)[pool]
         Tc, Uc, Vc, Zc = T[cur], U[cur], V[cur], Z[cur]
     for it in range(1, int(max_iterations) + 1):
-        mon.step((it - 1) / max_iterations)
+        # progress: share of tiles finished, blended with the iteration count
+        n_live0 = max(int(n_fit_tiles), 1)
+        mon.step(0.5 * (it - 1) / max_iterations + 0.5 * (1 - live.sum() / n_live0))
         if not live.any():
             break
         N, r = _normal_equations(Tc, Uc, Vc, Zc, None, ntiles, order)
@@ -958,7 +961,7 @@ def _improved(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
     """Coarse-to-fine, overlapping, blended, slope-adaptive LSQ (ours, see module doc)."""
     n = x.size
     p = n_coefficients(order)
-    seed = None                               # bool per point: ground of the previous level
+    seeds = None                              # bool per point: ground of the previous level
     surface = slope = None
     level_info = []
     nlev = len(levels)
@@ -982,7 +985,7 @@ def _improved(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
         out = fit_tiles(T, U, V, z[idx], ukeys.size, order=order, threshold=rthr,
                         max_iterations=max_iterations, tolerance=tolerance,
                         min_points=min_points, active=active,
-                        start=None if seed is None else seed[idx], mon=lm.sub(0.0, 0.8))
+                        start=None if seeds is None else seeds[idx], mon=lm.sub(0.0, 0.8))
         solved = out.status != 0
         del T, U, V, idx
         if not solved.any():
@@ -1000,8 +1003,8 @@ def _improved(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
         surface, slope = zh, sl
         thr = threshold + np.minimum(slope_factor * slope, slope_cap)
         # seed of the next level: this level's ground (and everything below it)
-        seed = z <= surface + thr
-        seed_n = int(seed[fit_pts].sum())
+        seeds = z <= surface + thr
+        seed_n = int(seeds[fit_pts].sum())
         grid = TileGrid(float(x0), float(y0), float(size), ix, iy)
         level_info.append(dict(level=k + 1, tile_size=size, tiles=int(ukeys.size),
                                fitted=int(solved.sum()), seed_points=seed_n,

@@ -1,0 +1,199 @@
+"""Ground filter accuracy against reference labels (Processing algorithm)."""
+from __future__ import annotations
+
+import contextlib
+
+import numpy as np
+from qgis.core import (QgsProcessingOutputNumber, QgsProcessingParameterFile,
+                       QgsProcessingParameterFileDestination, QgsProcessingParameterString)
+
+from ..core import filter_accuracy as core_fa
+from ..core.atomic import atomic_output, check_not_input
+from ..core.las_io import write_las_like
+from ..core.report import esc, html_page, html_table
+from .base import GeomaticsAlgorithm
+
+LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
+LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
+
+
+def _locale() -> str:
+    try:
+        from ..plugin import user_locale
+        return user_locale()
+    except Exception:  # noqa: BLE001 - the report language is a nicety
+        return "en"
+
+
+class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
+    """Type I / Type II / total error and kappa of a ground filter (ISPRS measures)."""
+
+    GROUP = "accuracy"
+
+    INPUT = "INPUT"
+    FIELD = "FIELD"
+    GROUND_CLASSES = "GROUND_CLASSES"
+    REFERENCE = "REFERENCE"
+    REFERENCE_FIELD = "REFERENCE_FIELD"
+    REFERENCE_GROUND_CLASSES = "REFERENCE_GROUND_CLASSES"
+    OUTPUT_HTML = "OUTPUT_HTML"
+    ERROR_OUTPUT = "ERROR_OUTPUT"
+
+    OUTPUTS = (("a", "A", "reference ground → filtered ground"),
+               ("b", "B", "reference ground → filtered object (Type I)"),
+               ("c", "C", "reference object → filtered ground (Type II)"),
+               ("d", "D", "reference object → filtered object"),
+               ("n", "N", "points"),
+               ("type1", "TYPE1", "Type I error (%)"),
+               ("type2", "TYPE2", "Type II error (%)"),
+               ("total", "TOTAL", "Total error (%)"),
+               ("kappa", "KAPPA", "Cohen's kappa (%)"))
+
+    def name(self):
+        return "groundfilteraccuracy"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("Ground filter accuracy")
+
+    def tags(self):
+        return self.tr("lidar,ground,filter,accuracy,type i,type ii,total error,kappa,"
+                       "isprs,reference,confusion matrix").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Compares a filtered point cloud with reference labels, with the measures of "
+            "the ISPRS filter test (Sithole &amp; Vosselman 2004): the cross matrix a "
+            "(ground kept), b (ground rejected), c (object accepted), d (object rejected), "
+            "Type I = b/(a+b), Type II = c/(c+d), total = (b+c)/n and Cohen's kappa.</p>"
+            "<p><b>Example</b>: INPUT=classified.laz REFERENCE=samp54.laz (the ISPRS "
+            "reference sample, class 2 = ground) OUTPUT_HTML=accuracy.html.</p>"
+            "<p><b>Parameters</b></p><ul>"
+            "<li><b>Filtered point cloud</b> (INPUT, LAS/LAZ).</li>"
+            "<li><b>Class dimension of the filtered cloud</b> (FIELD, default "
+            "classification) and its <b>ground classes</b> (GROUND_CLASSES, default 2; a "
+            "list such as 2,8 is accepted). Every other class (1, 7 noise, 0...) counts as "
+            "object.</li>"
+            "<li><b>Reference point cloud</b> (REFERENCE, optional): the same points in the "
+            "same order (checked: equal count and coordinates). When empty, the reference "
+            "labels are read from another dimension of INPUT.</li>"
+            "<li><b>Reference class dimension</b> (REFERENCE_FIELD, default "
+            "classification; e.g. user_data or an extra dimension when there is no "
+            "reference cloud) and its <b>ground classes</b> (REFERENCE_GROUND_CLASSES, "
+            "default 2).</li>"
+            "<li><b>Report</b> (OUTPUT_HTML, optional): the matrix, the errors, and the "
+            "reference labels of every filtered class.</li>"
+            "<li><b>Per-point error layer</b> (ERROR_OUTPUT, optional LAS/LAZ): a copy of "
+            "INPUT, every attribute unchanged except <i>user_data</i> = 0 correct, 1 Type I "
+            "(ground rejected), 2 Type II (object accepted); style the point cloud layer "
+            "by user_data to map where the filter fails.</li></ul>"
+            "<p>Outputs A, B, C, D, N, TYPE1, TYPE2, TOTAL and KAPPA are numbers for the "
+            "graphical modeler.</p>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add(QgsProcessingParameterFile(
+            self.INPUT, self.tr("Filtered point cloud (LAS/LAZ)"),
+            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_IN_FILTER))
+        self.add(QgsProcessingParameterString(
+            self.FIELD, self.tr("Class dimension of the filtered cloud"), "classification"),
+            advanced=True)
+        self.add(QgsProcessingParameterString(
+            self.GROUND_CLASSES, self.tr("Ground classes of the filtered cloud"), "2"))
+        self.add(QgsProcessingParameterFile(
+            self.REFERENCE, self.tr("Reference point cloud (same points, same order)"),
+            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_IN_FILTER,
+            optional=True))
+        self.add(QgsProcessingParameterString(
+            self.REFERENCE_FIELD, self.tr("Reference class dimension"), "classification"))
+        self.add(QgsProcessingParameterString(
+            self.REFERENCE_GROUND_CLASSES, self.tr("Reference ground classes"), "2"))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            optional=True, createByDefault=False))
+        self.add(QgsProcessingParameterFileDestination(
+            self.ERROR_OUTPUT, self.tr("Per-point error layer (user_data: 0 correct, "
+                                       "1 Type I, 2 Type II)"),
+            LAS_OUT_FILTER, optional=True, createByDefault=False))
+        for _, out, label in self.OUTPUTS:
+            self.addOutput(QgsProcessingOutputNumber(out, f"{out}: {label}"))
+
+    def process(self, parameters, context, feedback):
+        src = self.parameterAsFile(parameters, self.INPUT, context)
+        ref = self.parameterAsFile(parameters, self.REFERENCE, context) or None
+        html_out = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
+        err_out = self.parameterAsFileOutput(parameters, self.ERROR_OUTPUT, context)
+        field = self.parameterAsString(parameters, self.FIELD, context).strip()
+        ref_field = self.parameterAsString(parameters, self.REFERENCE_FIELD, context).strip()
+        gc = core_fa.parse_classes(self.parameterAsString(parameters, self.GROUND_CLASSES,
+                                                          context))
+        rgc = core_fa.parse_classes(
+            self.parameterAsString(parameters, self.REFERENCE_GROUND_CLASSES, context),
+            name="reference ground classes")
+        if err_out and not err_out.lower().endswith((".las", ".laz")):
+            raise ValueError(self.tr("The error layer must end in .las or .laz: {p}").format(
+                p=err_out))
+        for path in (html_out, err_out):
+            if path:
+                check_not_input(path, src, *([ref] if ref else []))
+        cb = self.core_callbacks(feedback)
+        res = core_fa.assess_clouds(
+            src, ref, field=field, ground_classes=gc, reference_field=ref_field,
+            reference_ground_classes=rgc,
+            progress=(lambda f: cb["progress"](0.7 * f)) if cb["progress"] else None,
+            cancel=cb["cancel"])
+        acc = res.accuracy.as_dict()
+        for key, out, label in self.OUTPUTS:
+            feedback.pushInfo(f"{out} ({label}): {acc[key]:.6g}")
+        with contextlib.ExitStack() as stack:
+            if err_out:
+                tmp = stack.enter_context(atomic_output(err_out))
+                write_las_like(src, tmp, dimensions={"user_data": res.error_codes()},
+                               progress=(lambda f: cb["progress"](0.7 + 0.29 * f))
+                               if cb["progress"] else None, cancel=cb["cancel"])
+            if html_out:
+                tmp = stack.enter_context(atomic_output(html_out))
+                with open(tmp, "w", encoding="utf-8") as fh:
+                    fh.write(self.report(src, ref, field, ref_field, gc, rgc, res))
+        feedback.setProgress(100)
+        result = {out: acc[key] for key, out, _ in self.OUTPUTS}
+        if html_out:
+            result[self.OUTPUT_HTML] = html_out
+        if err_out:
+            result[self.ERROR_OUTPUT] = err_out
+        return result
+
+    def report(self, src, ref, field, ref_field, gc, rgc, res) -> str:
+        tr = self.tr
+        a = res.accuracy
+        d = a.as_dict()
+        matrix = [(tr("reference ground"), a.a, a.b, a.a + a.b),
+                  (tr("reference object"), a.c, a.d, a.c + a.d),
+                  (tr("total"), a.a + a.c, a.b + a.d, a.n)]
+        errors = [(tr("Type I (ground rejected) = b/(a+b)"), d["type1"]),
+                  (tr("Type II (object accepted) = c/(c+d)"), d["type2"]),
+                  (tr("Total = (b+c)/n"), d["total"]),
+                  (tr("Cohen's kappa"), d["kappa"])]
+        cls_rows = [(str(k), g, o, g + o) for k, (g, o) in sorted(res.classes.items())]
+        src_rows = [(tr("filtered cloud"), src), (tr("its class dimension"), field),
+                    (tr("its ground classes"), ", ".join(map(str, gc))),
+                    (tr("reference"), ref or tr("(dimension of the filtered cloud)")),
+                    (tr("reference class dimension"), ref_field),
+                    (tr("reference ground classes"), ", ".join(map(str, rgc)))]
+        share = np.array([a.b, a.c], float) / max(a.b + a.c, 1) * 100
+        body = "\n".join([
+            f"<h2>{esc(tr('Inputs'))}</h2>",
+            html_table((tr("item"), tr("value")), src_rows),
+            f"<h2>{esc(tr('Cross matrix (points)'))}</h2>",
+            html_table(("", tr("filtered ground"), tr("filtered object"), tr("total")),
+                       matrix),
+            f"<h2>{esc(tr('Errors (%)'))}</h2>",
+            html_table((tr("measure"), "%"), errors, digits=2),
+            "<p class='note'>" + esc(tr(
+                "Of all misclassified points, {p1:.1f} % are Type I and {p2:.1f} % Type "
+                "II.").format(p1=share[0], p2=share[1])) + "</p>",
+            f"<h2>{esc(tr('Reference labels of every filtered class'))}</h2>",
+            html_table((tr("filtered class"), tr("reference ground"),
+                        tr("reference object"), tr("points")), cls_rows),
+            "<p class='note'>" + esc(tr(
+                "Measures of the ISPRS filter test: Sithole, G. & Vosselman, G. (2004), "
+                "ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.")) + "</p>"])
+        return html_page(tr("Ground filter accuracy"), body, lang=_locale())
