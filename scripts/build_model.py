@@ -33,9 +33,9 @@ DEFAULT_OUT = ROOT / "models" / "lidar_to_dtm.model3"
 # ground filter choices: algorithm id, extra parameters (name -> model parameter spec)
 FILTERS = {
     "lsq": ("geomatics:lsqgroundfilter", "LSQ polynomial ground filter",
-            [("ORDER", "Polynomial order of the ground filter", 2, 1, 3, True),
-             ("TILE_SIZE", "Ground filter tile size (m)", 25.0, 1.0, None, False),
-             ("THRESHOLD", "Ground filter residual threshold (m)", 0.5, 0.0, None, False)]),
+            [("ORDER", "Polynomial order of the ground filter", 2, 1, 2, True),
+             ("TILE_SIZE", "Ground filter tile size (m)", 50.0, 0.0, None, False),
+             ("THRESHOLD", "Ground filter threshold T (m)", 0.5, 0.0, None, False)]),
     "slope": ("geomatics:slopegroundfilter", "Vosselman slope ground filter",
               [("RADIUS", "Slope filter radius r (m)", 3.0, 0.0, None, False),
                ("SLOPE", "Slope threshold θ (degrees)", 44.0, 0.0, 90.0, False)]),
@@ -46,7 +46,8 @@ def build(filter_key: str = "lsq"):
     from qgis.core import (QgsProcessingModelAlgorithm, QgsProcessingModelChildAlgorithm,
                            QgsProcessingModelChildParameterSource as Src,
                            QgsProcessingModelOutput, QgsProcessingModelParameter,
-                           QgsProcessingParameterCrs, QgsProcessingParameterFile,
+                           QgsProcessingParameterBoolean, QgsProcessingParameterCrs,
+                           QgsProcessingParameterFile,
                            QgsProcessingParameterNumber)
     from qgis.PyQt.QtCore import QPointF
 
@@ -61,6 +62,8 @@ def build(filter_key: str = "lsq"):
         "CELL_SIZE": "DTM cell size in metres (default 1).",
         "POWER": "IDW power (default 3, the seed paper's best).",
         "CRS": "Optional CRS override for a point cloud without a CRS record.",
+        "FILL_GAPS": ("Interpolate every DTM cell; by default cells farther than five mean "
+                      "point spacings from a ground point stay nodata (no invented terrain)."),
     })
     y = 60.0
 
@@ -83,12 +86,22 @@ def build(filter_key: str = "lsq"):
     add_param(QgsProcessingParameterNumber("POWER", "IDW power", QgsProcessingParameterNumber
                                            .Double, 3.0, False, 0.1))
     add_param(QgsProcessingParameterCrs("CRS", "CRS override (optional)", optional=True))
+    add_param(QgsProcessingParameterBoolean(
+        "FILL_GAPS", "Fill data gaps in the DTM (interpolate far from ground points)",
+        False))
+    from qgis.core import QgsApplication
+    registered = QgsApplication.processingRegistry().algorithmById(alg_id)
     for name, label, default, lo, hi, integer in filter_params:
-        kind = (QgsProcessingParameterNumber.Integer if integer
-                else QgsProcessingParameterNumber.Double)
-        p = QgsProcessingParameterNumber(name, label, kind, default, False, lo)
-        if hi is not None:
-            p.setMaximum(hi)
+        src = registered.parameterDefinition(name) if registered is not None else None
+        if src is not None:             # same type, default and limits as the filter
+            p = src.clone()
+            p.setDescription(label)
+        else:
+            kind = (QgsProcessingParameterNumber.Integer if integer
+                    else QgsProcessingParameterNumber.Double)
+            p = QgsProcessingParameterNumber(name, label, kind, default, False, lo)
+            if hi is not None:
+                p.setMaximum(hi)
         add_param(p)
 
     def child(child_id, algorithm, description, x, yy, sources, outputs):
@@ -104,6 +117,9 @@ def build(filter_key: str = "lsq"):
             o.setChildId(child_id)
             o.setChildOutputName(child_output)
             o.setDescription(label)
+            # the classified cloud, the DTM and the accuracy report must be named; the
+            # other reports and the residual layer are optional
+            o.setMandatory(out_name in ("CLASSIFIED", "DTM", "ACCURACY_REPORT"))
             outs[out_name] = o
         c.setModelOutputs(outs)
         m.addChildAlgorithm(c)
@@ -123,6 +139,7 @@ def build(filter_key: str = "lsq"):
         "NEIGHBOURS": Src.fromStaticValue(12),
         "RADIUS": Src.fromStaticValue(0.0),
         "CRS": Src.fromModelParameter("CRS"),
+        "FILL_GAPS": Src.fromModelParameter("FILL_GAPS"),
     }, [("DTM", "OUTPUT", "DTM (IDW)"), ("DTM_REPORT", "OUTPUT_HTML", "DTM report")])
     child("accuracy", "geomatics:dtmaccuracy", "DTM accuracy against check points", 420.0,
           400.0, {
@@ -134,6 +151,28 @@ def build(filter_key: str = "lsq"):
     return m
 
 
+def _register_provider():
+    """Register the plugin's provider so the filter's parameter definitions are copied."""
+    import importlib.util
+    from qgis.core import QgsApplication
+    name = "geomatics_toolbox"
+    if name not in sys.modules:
+        spec = importlib.util.spec_from_file_location(
+            name, ROOT / "__init__.py", submodule_search_locations=[str(ROOT)])
+        mod = importlib.util.module_from_spec(spec)
+        sys.modules[name] = mod
+        spec.loader.exec_module(mod)
+    try:
+        from geomatics_toolbox.provider.provider import GeomaticsProvider
+        provider = GeomaticsProvider()
+        QgsApplication.processingRegistry().addProvider(provider)
+        return provider
+    except Exception as exc:  # noqa: BLE001 - fall back to the static definitions
+        print(f"warning: provider not loaded ({exc}); using static parameter definitions",
+              file=sys.stderr)
+        return None
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--filter", choices=sorted(FILTERS), default="lsq")
@@ -143,6 +182,7 @@ def main(argv=None) -> int:
     from qgis.core import QgsApplication
     app = QgsApplication([], False)
     app.initQgis()
+    provider = _register_provider()
     try:
         model = build(args.filter)
         out = Path(args.out)
@@ -154,6 +194,8 @@ def main(argv=None) -> int:
         os.replace(tmp, out)
         print(f"wrote {out} (ground filter: {FILTERS[args.filter][0]})")
     finally:
+        if provider is not None:
+            QgsApplication.processingRegistry().removeProvider(provider)
         app.exitQgis()
     return 0
 
