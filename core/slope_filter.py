@@ -102,6 +102,7 @@ _EPS = np.finfo(np.float64).eps
 _PAIR_CHUNK = 3_000_000        # candidate pairs evaluated per vectorised block
 _POINT_CHUNK = 1_000_000       # points classified per block
 _MAX_CELLS = 30_000_000        # dense grid size limit (cells), ~0.5 GB
+_MIN_CELL_FRACTION = 1.0 / 16  # smallest grid cell, as a fraction of r
 
 
 # ============================================================================ helpers
@@ -206,12 +207,18 @@ class _Stats:
 
 
 def _choose_cell(qx, qy, r: float, n_q: int) -> float:
-    """Grid cell: ~6 neighbours per cell, between r/8 and r (speed only)."""
+    """Grid cell (speed only, never the labels).
+
+    About 6 neighbours per cell, but at least r/8 (bounds the number of cell
+    offsets to visit) and, for large radii, at most ~400 points per cell (bounds
+    the pairs inside a cell) unless that would need more than (2 * 16)^2 offsets.
+    """
     w = max(float(qx.max() - qx.min()), r)
     h = max(float(qy.max() - qy.min()), r)
-    density = n_q / (w * h)
-    s = math.sqrt(6.0 / max(density, 1e-12))
-    return float(min(max(s, r / 8.0), r))
+    density = max(n_q / (w * h), 1e-12)
+    s = max(math.sqrt(6.0 / density), r / 8.0)
+    s = min(s, max(math.sqrt(400.0 / density), r / 16.0))
+    return float(min(s, r))
 
 
 def _bounded_max_slope(px, py, pz, qx, qy, qz, *, radius: float, height: float,
@@ -235,7 +242,7 @@ def _bounded_max_slope(px, py, pz, qx, qy, qz, *, radius: float, height: float,
     x1 = max(float(px.max()), float(qx.max()))
     y1 = max(float(py.max()), float(qy.max()))
     s = float(cell) if cell else _choose_cell(qx, qy, r, n_q)
-    s = max(s, r / 16.0)          # caps the offsets at about 35 x 35
+    s = max(s, r * _MIN_CELL_FRACTION)      # caps the number of cell offsets
     pad = int(math.floor(r / s)) + 2
     nx = int(math.floor((x1 - x0) / s)) + 1 + 2 * pad
     ny = int(math.floor((y1 - y0) / s)) + 1 + 2 * pad
