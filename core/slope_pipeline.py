@@ -291,7 +291,8 @@ def _method_html(radius, slope, h, mode) -> str:
 def _rise_table(radius, slope, h) -> str:
     ds = [radius / 4, radius / 2, 3 * radius / 4, radius]
     rows = [(fmt(d, 2), float(sf.allowed_rise(d, slope)) + h) for d in ds]
-    return html_table(("distance d (m)", "allowed rise d·tan θ + h (m)"), rows, digits=2)
+    return "<h2>Allowed rise above a neighbour</h2>" + html_table(
+        ("distance d (m)", "allowed rise d·tan θ + h (m)"), rows, digits=2)
 
 
 def classify_report(summary: ClassifySummary, res: "sf.SlopeFilterResult", *,
