@@ -16,6 +16,9 @@ mkdir -p "$TMP/plugins" "$TMP/profile"
 ln -s "$ROOT" "$TMP/plugins/geomatics_toolbox"
 export QGIS_CUSTOM_CONFIG_PATH="$TMP/profile" QGIS_PLUGINPATH="$TMP/plugins"
 export QT_QPA_PLATFORM=offscreen
+# qgis_process runs the system Python: let it see the venv's laspy/lazrs/pykrige
+SITE="$("$PY" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')"
+export PYTHONPATH="$SITE${PYTHONPATH:+:$PYTHONPATH}"
 QP=qgis_process.bin
 $QP plugins enable geomatics_toolbox >/dev/null
 

@@ -23,6 +23,7 @@ import os
 import shutil
 import subprocess
 import sys
+import sysconfig
 from pathlib import Path
 
 import pytest
@@ -106,9 +107,15 @@ class QgisProcess:
         (plugins / PLUGIN_NAME).symlink_to(ROOT, target_is_directory=True)
         profile = base / "profile"
         profile.mkdir()
+        # qgis_process runs the system Python: let it see the venv's laspy/lazrs/pykrige
+        site = sysconfig.get_paths()["purelib"]
+        paths = [p for p in self.env.get("PYTHONPATH", "").split(os.pathsep) if p]
+        if site not in paths:
+            paths.append(site)
         self.env.update(QT_QPA_PLATFORM="offscreen",
                         QGIS_CUSTOM_CONFIG_PATH=str(profile),
-                        QGIS_PLUGINPATH=str(plugins))
+                        QGIS_PLUGINPATH=str(plugins),
+                        PYTHONPATH=os.pathsep.join(paths))
         out = self.call("plugins", "enable", PLUGIN_NAME)
         if out.returncode != 0:
             raise RuntimeError(f"could not enable the plugin: {out.stdout}{out.stderr}")
