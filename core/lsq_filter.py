@@ -128,23 +128,42 @@ def design_matrix(u, v, order: int) -> np.ndarray:
     return np.column_stack((one, u * u, v * v, u * v, u, v))
 
 
+def _cols(coef):
+    """Contiguous coefficient columns (fast ``take`` gathers)."""
+    return [np.ascontiguousarray(coef[:, k]) for k in range(coef.shape[1])]
+
+
 def _eval(coef, tid, u, v, order):
     """ẑ of points with tile index ``tid`` (coefficients per tile, paper order)."""
-    c = coef
+    c = _cols(coef)
     if order == 1:
-        return c[tid, 0] + c[tid, 1] * u + c[tid, 2] * v
-    return (c[tid, 0] + u * (c[tid, 1] * u + c[tid, 3] * v + c[tid, 4])
-            + v * (c[tid, 2] * v + c[tid, 5]))
+        out = c[1].take(tid)
+        out *= u
+        out += c[0].take(tid)
+        out += c[2].take(tid) * v
+        return out
+    a = c[1].take(tid)                   # u·(b1·u + b3·v + b4) + v·(b2·v + b5) + b0
+    a *= u
+    a += c[3].take(tid) * v
+    a += c[4].take(tid)
+    a *= u
+    b = c[2].take(tid)
+    b *= v
+    b += c[5].take(tid)
+    b *= v
+    a += b
+    a += c[0].take(tid)
+    return a
 
 
 def _grad(coef, tid, u, v, order, half):
     """|∇ẑ| (dimensionless slope) of the tile surfaces at the points."""
-    c = coef
+    c = _cols(coef)
     if order == 1:
-        gu, gv = c[tid, 1], c[tid, 2]
+        gu, gv = c[1].take(tid), c[2].take(tid)
     else:
-        gu = 2 * c[tid, 1] * u + c[tid, 3] * v + c[tid, 4]
-        gv = 2 * c[tid, 2] * v + c[tid, 3] * u + c[tid, 5]
+        gu = 2 * c[1].take(tid) * u + c[3].take(tid) * v + c[4].take(tid)
+        gv = 2 * c[2].take(tid) * v + c[3].take(tid) * u + c[5].take(tid)
     return np.hypot(gu, gv) / half
 
 
@@ -158,13 +177,17 @@ def _normal_equations(tid, u, v, z, w, ntiles, order, chunk=2_000_000):
 
     Sums of monomials ``u^a v^b`` (a + b ≤ 2·order) are accumulated per tile with
     ``np.bincount``; the normal matrices are then assembled from them.
-    Returns ``(N, r)`` with shapes ``(ntiles, p, p)`` and ``(ntiles, p)``.
+    Returns ``(N, r, szz)`` with shapes ``(ntiles, p, p)``, ``(ntiles, p)`` and
+    ``(ntiles,)`` — ``szz`` is the sum of ``w·z²`` (for the kept-height σ).
+    Sums are additive, so a change of the kept set is applied as the normal
+    equations of the rows that entered minus those of the rows that left.
     """
     ex = _EXPO[order]
     p = len(ex)
     need = sorted({(a1 + a2, b1 + b2) for (a1, b1) in ex for (a2, b2) in ex})
     mom = {m: np.zeros(ntiles) for m in need}
     rz = {e: np.zeros(ntiles) for e in ex}
+    szz = np.zeros(ntiles)
     n = tid.size
     for s in range(0, n, chunk):
         t = tid[s:s + chunk]
@@ -176,16 +199,25 @@ def _normal_equations(tid, u, v, z, w, ntiles, order, chunk=2_000_000):
             upow.append(upow[-1] * uu)
             vpow.append(vpow[-1] * vv)
         for (a, b) in need:
+            if a == 0 and b == 0 and ww is None:
+                mom[(0, 0)] += np.bincount(t, minlength=ntiles)
+                continue
             mom[(a, b)] += np.bincount(t, weights=upow[a] * vpow[b] if b else upow[a],
                                        minlength=ntiles)
+        wz = zz if ww is None else ww * zz
         for (a, b) in ex:
-            rz[(a, b)] += np.bincount(t, weights=upow[a] * vpow[b] * zz, minlength=ntiles)
+            if a == 0 and b == 0:
+                rz[(0, 0)] += np.bincount(t, weights=wz, minlength=ntiles)
+            else:
+                rz[(a, b)] += np.bincount(t, weights=upow[a] * vpow[b] * zz,
+                                          minlength=ntiles)
+        szz += np.bincount(t, weights=wz * zz, minlength=ntiles)
     N = np.empty((ntiles, p, p))
     for i, (a1, b1) in enumerate(ex):
         for j, (a2, b2) in enumerate(ex):
             N[:, i, j] = mom[(a1 + a2, b1 + b2)]
     r = np.stack([rz[e] for e in ex], axis=1)
-    return N, r
+    return N, r, szz
 
 
 def _solve(N, r, ok):
@@ -256,10 +288,19 @@ def _tile_index(x, y, x0, y0, size):
     ix = np.floor((x - x0) / size).astype(np.int64)
     iy = np.floor((y - y0) / size).astype(np.int64)
     ny = int(iy.max()) + 1
+    nx = int(ix.max()) + 1
     key = ix * ny + iy
-    ukey, tid = np.unique(key, return_inverse=True)
+    del ix, iy
+    if nx * ny <= 4 * key.size + 1_000_000:
+        # dense grid: O(n) compaction of the occupied tiles, no sort
+        occupied = np.bincount(key, minlength=nx * ny) > 0
+        ukey = np.flatnonzero(occupied)
+        remap = np.cumsum(occupied) - 1
+        tid = remap[key]
+    else:
+        ukey, tid = np.unique(key, return_inverse=True)
     grid = TileGrid(float(x0), float(y0), float(size), ukey // ny, ukey % ny)
-    return tid.astype(np.int64), grid
+    return tid.astype(np.int64, copy=False), grid
 
 
 @dataclass
@@ -337,31 +378,40 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
     else:
         threshold = float(threshold)
 
-    def tile_stats(T, Z, cnt=None):
-        if cnt is None:
-            cnt = np.bincount(T, minlength=ntiles)
-        cnt = cnt.astype(np.float64)
-        sz = np.bincount(T, weights=Z, minlength=ntiles)
-        szz = np.bincount(T, weights=Z * Z, minlength=ntiles)
-        st = np.full((ntiles, 5), np.nan)
-        has = cnt > 0
-        st[:, 0] = cnt
-        mean = sz[has] / cnt[has]
-        st[has, 3] = mean + zt0[has]
-        st[has, 4] = np.sqrt(np.maximum(szz[has] / cnt[has] - mean ** 2, 0.0))
+    def minmax(T, Z, cur):
+        """Per-tile min and max of the kept heights (NaN where none)."""
+        lo = np.full(ntiles, np.nan)
+        hi = np.full(ntiles, np.nan)
         if T.size:
             starts = np.flatnonzero(np.r_[True, T[1:] != T[:-1]])
             present = T[starts]
-            st[present, 1] = np.minimum.reduceat(Z, starts) + zt0[present]
-            st[present, 2] = np.maximum.reduceat(Z, starts) + zt0[present]
+            mn = np.minimum.reduceat(np.where(cur, Z, np.inf), starts)
+            mx = np.maximum.reduceat(np.where(cur, Z, -np.inf), starts)
+            ok = np.isfinite(mn)
+            lo[present[ok]] = mn[ok] + zt0[present[ok]]
+            hi[present[ok]] = mx[ok] + zt0[present[ok]]
+        return lo, hi
+
+    def stats_from(cnt, sz, szz, lo, hi):
+        st = np.full((ntiles, 5), np.nan)
+        st[:, 0] = cnt
+        has = cnt > 0
+        mean = sz[has] / cnt[has]
+        st[has, 1] = lo[has]
+        st[has, 2] = hi[has]
+        st[has, 3] = mean + zt0[has]
+        st[has, 4] = np.sqrt(np.maximum(szz[has] / cnt[has] - mean ** 2, 0.0))
         return st
 
     # step 0: every tile (also the under-populated ones), all fitting rows
     live = cnt0 >= min_points               # tiles still iterating
     n_fit_tiles = int(live.sum())
-    st0 = tile_stats(tid[rows], z[rows] - zt0[tid[rows]], cnt0)
+    T0, Z0 = tid[rows], z[rows] - zt0[tid[rows]]
+    N0, r0, szz0 = _normal_equations(T0, u[rows], v[rows], Z0, None, ntiles, order)
+    st0 = stats_from(N0[:, 0, 0], r0[:, 0], szz0, *minmax(T0, Z0, np.ones(T0.size, bool)))
+    del T0, Z0
     steps = [st0]
-    agg = [_aggregate(st0, cnt0 > 0, "all fitting points", active_tiles=int(live.sum()))]
+    agg = [_aggregate(st0, cnt0 > 0, "all fitting points", active_tiles=n_fit_tiles)]
     prev = st0[:, 1:5]
     # working pool: rows of the live tiles (compacted as tiles finish)
     pool = rows[live[tid[rows]]]
@@ -369,17 +419,16 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
     H = threshold[pool] if per_row else threshold
     if start is None:
         cur = np.ones(T.size, dtype=bool)   # kept set within the pool
-        Tc, Uc, Vc, Zc = T, U, V, Z          # the kept rows themselves
+        N, r, szz = N0, r0, szz0
     else:
         cur = np.asarray(start, dtype=bool)[pool]
-        Tc, Uc, Vc, Zc = T[cur], U[cur], V[cur], Z[cur]
+        N, r, szz = _normal_equations(T[cur], U[cur], V[cur], Z[cur], None, ntiles, order)
     for it in range(1, int(max_iterations) + 1):
         # progress: share of tiles finished, blended with the iteration count
-        n_live0 = max(int(n_fit_tiles), 1)
-        mon.step(0.5 * (it - 1) / max_iterations + 0.5 * (1 - live.sum() / n_live0))
+        mon.step(0.5 * (it - 1) / max_iterations
+                 + 0.5 * (1 - live.sum() / max(n_fit_tiles, 1)))
         if not live.any():
             break
-        N, r = _normal_equations(Tc, Uc, Vc, Zc, None, ntiles, order)
         new_coef, solved = _solve(N, r, live & (N[:, 0, 0] >= p))
         # a tile that cannot be solved any more keeps its previous surface
         lost = live & ~solved
@@ -388,16 +437,22 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
         live &= solved
         coef[live] = new_coef[live]
         iterations[live] += 1
+        ok = (Z - _eval(coef, T, U, V, order)) <= H
         if cumulative:
-            # rows once rejected stay out: only the kept ones are tested
-            ok = (Zc - _eval(coef, Tc, Uc, Vc, order)) <= (H[cur] if per_row else H)
-            cur[cur] = ok
+            new = cur & ok                  # rows once rejected stay out
         else:
-            # W = diag(v <= T) re-evaluated from the residuals of every row
-            cur = (Z - _eval(coef, T, U, V, order)) <= H
-        Tc, Uc, Vc, Zc = T[cur], U[cur], V[cur], Z[cur]
-        cnt = np.bincount(Tc, minlength=ntiles)
-        st = tile_stats(Tc, Zc, cnt)
+            new = ok                        # W = diag(v <= T) from every row's residual
+        # the kept set changed by a few rows: update the sums incrementally
+        for sel, sign in ((new & ~cur, 1.0), (cur & ~new, -1.0)):
+            if sel.any():
+                dN, dr, dszz = _normal_equations(T[sel], U[sel], V[sel], Z[sel], None,
+                                                 ntiles, order)
+                N += sign * dN
+                r += sign * dr
+                szz += sign * dszz
+        cur = new
+        cnt = np.rint(N[:, 0, 0])
+        st = stats_from(cnt, r[:, 0], szz, *minmax(T, Z, cur))
         st[~live] = steps[-1][~live]        # finished tiles keep their last statistics
         now = st[:, 1:5]
         same = np.all(np.abs(now - prev) < tolerance, axis=1)
@@ -415,20 +470,13 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
         live &= ~done
         if done.any():
             fin = done[T]
-            kept[pool[fin & cur]] = True
             if fin.any():
+                kept[pool[fin & cur]] = True
                 stay = ~fin
                 pool, T, U, V, Z, cur = (pool[stay], T[stay], U[stay], V[stay], Z[stay],
                                          cur[stay])
                 if per_row:
                     H = H[stay]
-                Tc, Uc, Vc, Zc = T[cur], U[cur], V[cur], Z[cur]
-        if cumulative and T.size != Tc.size:
-            pool = pool[cur]
-            if per_row:
-                H = H[cur]
-            T, U, V, Z = Tc, Uc, Vc, Zc
-            cur = np.ones(T.size, dtype=bool)
     kept[pool[cur]] = True
     coef_out = coef.copy()
     # z was fitted relative to zt0: move it into the constant term
