@@ -335,7 +335,8 @@ class LsqGroundFilterAlgorithm(GeomaticsAlgorithm):
             tile_rows.append((int(res.grid.ix[t]), int(res.grid.iy[t]),
                               int(res.tile_points[t]), int(res.tile_iterations[t]),
                               core_lsq.STATUS_NAMES[int(res.tile_status[t])],
-                              last[0], last[1], last[2], last[3], last[4]))
+                              int(np.nan_to_num(last[0])), last[1], last[2], last[3],
+                              last[4]))
         biggest = int(order[0])
         paper_rows = [(r["step"], r["points"], r["zmin"], r["zmax"], r["zmean"], r["std"])
                       for r in res.tile_table(biggest)]

@@ -1061,6 +1061,7 @@ def _improved(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
             break
     ground = z <= surface + thr
     status = out.status.copy()
+    status[status == 0] = -1        # their points took the neighbouring tiles' surfaces
     extra = dict(grid=grid, coefficients=out.coef, tile_status=status,
                  tile_iterations=out.iterations, tile_points=out.npoints,
                  tile_stats=out.stats, iteration_stats=out.agg, levels=level_info)
