@@ -591,18 +591,54 @@ def _place_buildings(rng, terrain, origin, width, height, n_houses, n_medium,
                      arr[:, 7].astype(np.int8))
 
 
+def _crown_cover_curve(x, y, radius, origin, width, height) -> np.ndarray:
+    """Fraction of the tile under the union of the first k crowns, for k = 1..n.
+
+    Crowns are rasterised on a grid of about 1 m (at most ~4 M cells); each cell
+    remembers the first crown covering it, so the whole curve costs one pass.
+    """
+    cell = max(1.0, math.sqrt(width * height / 4e6))
+    ncx, ncy = max(1, int(math.ceil(width / cell))), max(1, int(math.ceil(height / cell)))
+    lx, ly = x - origin[0], y - origin[1]
+    ix0 = np.clip(np.floor((lx - radius) / cell).astype(np.int64), 0, ncx - 1)
+    ix1 = np.clip(np.floor((lx + radius) / cell).astype(np.int64), 0, ncx - 1)
+    iy0 = np.clip(np.floor((ly - radius) / cell).astype(np.int64), 0, ncy - 1)
+    iy1 = np.clip(np.floor((ly + radius) / cell).astype(np.int64), 0, ncy - 1)
+    nx, ny = ix1 - ix0 + 1, iy1 - iy0 + 1
+    first = np.full(ncx * ncy, x.size, np.int64)
+    per = nx * ny
+    # in batches of trees so the (tree, cell) pairs stay below ~8 M
+    cum = np.cumsum(per)
+    cuts = np.searchsorted(cum, np.arange(8_000_000, cum[-1] if cum.size else 0, 8_000_000))
+    for a, b in zip(np.r_[0, cuts], np.r_[cuts, x.size]):
+        if b <= a:
+            continue
+        t = np.repeat(np.arange(a, b), per[a:b])
+        j = np.arange(t.size) - np.repeat(np.cumsum(per[a:b]) - per[a:b], per[a:b])
+        cx = ix0[t] + j % nx[t]
+        cy = iy0[t] + j // nx[t]
+        inside = np.hypot((cx + 0.5) * cell - lx[t], (cy + 0.5) * cell - ly[t]) <= radius[t]
+        np.minimum.at(first, cy[inside] * ncx + cx[inside], t[inside])
+    counts = np.bincount(first[first < x.size], minlength=x.size)
+    return np.cumsum(counts) / float(ncx * ncy)
+
+
 def _place_trees(rng, terrain, buildings, origin, width, height, tree_cover,
-                 n_trees) -> Trees:
+                 n_trees) -> Tuple[Trees, float]:
+    """Trees in forest patches (one on the hillside) and scattered; (trees, cover)."""
     ox, oy = origin
     area = width * height
-    mean_r = 3.2
+    e = np.empty(0)
+    none = Trees(e, e, e, e, e, np.empty(0, bool)), 0.0
     if n_trees is None:
-        mean_area = np.pi * (mean_r ** 2 + 1.0 ** 2)        # E[R²] for R ~ U(2, 4.5)·
-        n_trees = int(round(tree_cover * area / mean_area * 1.35))
-    if n_trees <= 0:
-        e = np.empty(0)
-        return Trees(e, e, e, e, e, np.empty(0, bool))
-    m = int(n_trees * 1.8) + 20
+        if tree_cover <= 0:
+            return none
+        mean_area = np.pi * 10.5                   # E[R^2] of the crown radii below
+        m = int(tree_cover * area / mean_area * (3.0 + 8.0 * tree_cover)) + 50
+    elif n_trees <= 0:
+        return none
+    else:
+        m = int(n_trees * 1.8) + 20
     # forest patches (one on the steep hillside) plus scattered trees
     n_patch = max(1, int(round(area / 40_000)))
     pc = np.column_stack([rng.uniform(0, width, n_patch), rng.uniform(0, height, n_patch)])
@@ -613,7 +649,7 @@ def _place_trees(rng, terrain, buildings, origin, width, height, tree_cover,
         pc[0] = np.clip(pc[0] + t * np.array([nx, ny]), 0, [width, height])
     sigma = max(15.0, 0.12 * math.sqrt(area))
     which = rng.integers(0, n_patch, m)
-    clustered = rng.random(m) < 0.75
+    clustered = rng.random(m) < 0.75 - 0.6 * max(0.0, tree_cover - 0.3)
     x = np.where(clustered, pc[which, 0] + rng.normal(0, sigma, m), rng.uniform(0, width, m))
     y = np.where(clustered, pc[which, 1] + rng.normal(0, sigma, m), rng.uniform(0, height, m))
     conifer = rng.random(m) < 0.5
@@ -629,8 +665,16 @@ def _place_trees(rng, terrain, buildings, origin, width, height, tree_cover,
     if len(buildings) and idx.size:
         keep = buildings.distance(x[idx], y[idx]) > radius[idx] + 1.5
         idx = idx[keep]
-    idx = idx[:n_trees]
-    return Trees(x[idx], y[idx], h[idx], crown_base[idx], radius[idx], conifer[idx])
+    if not idx.size:
+        return none
+    curve = _crown_cover_curve(x[idx], y[idx], radius[idx], origin, width, height)
+    if n_trees is None:        # as many trees as it takes to reach the cover
+        k = min(idx.size, int(np.searchsorted(curve, tree_cover)) + 1)
+    else:
+        k = min(idx.size, n_trees)
+    idx = idx[:k]
+    trees = Trees(x[idx], y[idx], h[idx], crown_base[idx], radius[idx], conifer[idx])
+    return trees, float(curve[k - 1])
 
 
 # --------------------------------------------------------------------------- main
@@ -743,13 +787,13 @@ def generate_tile(*, extent: Tuple[float, float] = (300.0, 300.0),
         n_halls = max(1 if min(width, height) >= 140 else 0, int(round(ha / 9.0)))
     buildings = _place_buildings(rng, terrain, (ox, oy), width, height, n_houses,
                                  n_medium, n_halls)
-    trees = _place_trees(rng, terrain, buildings, (ox, oy), width, height, tree_cover,
-                         n_trees)
+    trees, crown_frac = _place_trees(rng, terrain, buildings, (ox, oy), width, height,
+                                     tree_cover, n_trees)
 
     # ---- pulses: Poisson in plan, over-generated then thinned to the density
-    crown_frac = min(0.9, float(np.sum(np.pi * trees.radius ** 2)) / area)
-    mean_veg = 1.83                                   # E[vegetation returns | crown]
-    est = 1.0 + 0.6 * crown_frac * (mean_veg + canopy_penetration - 1.0)
+    # expected returns per pulse from the crown cover; 3 % more pulses than needed
+    mean_ret = 1.83 + min(0.97, canopy_penetration * 7.0 / 6.0)   # per crown pulse
+    est = (1.0 + crown_frac * (mean_ret - 1.0)) / 1.03
     px, py, grid = _poisson_pulses(rng, width, height, density / est)
     npulse = px.size
     px = np.round((px + ox) / scale) * scale
