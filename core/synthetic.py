@@ -733,7 +733,8 @@ def generate_tile(*, extent: Tuple[float, float] = (300.0, 300.0),
         0.6 × this, vegetation is rough by construction.
     n_low_outliers, n_high_noise : int, optional
         Number of class 7 points 1.5–15 m below ground and class 18 points
-        40–250 m above it (default: 2e-5 of the points, at least 3 and 2).
+        40–250 m above it (default: 2e-5 of the points, at least 3 and 2 when
+        the tile has 10 000 points or more).
     wall_fraction : float
         Wall points per m² of wall, as a fraction of ``density`` (walls are
         nearly unsampled in ALS).
@@ -842,8 +843,11 @@ def generate_tile(*, extent: Tuple[float, float] = (300.0, 300.0),
     # walls: a few points on the outlines (count from wall area)
     wx, wy, wz = _wall_points(rng, buildings, terrain, density * wall_fraction, scale)
     n_noise_default = max(0, int(round(2e-5 * target)))
-    n_low = max(3, n_noise_default) if n_low_outliers is None else int(n_low_outliers)
-    n_high = max(2, n_noise_default) if n_high_noise is None else int(n_high_noise)
+    small = target < 10_000             # no forced outliers on toy tiles
+    n_low = (max(0 if small else 3, n_noise_default) if n_low_outliers is None
+             else int(n_low_outliers))
+    n_high = (max(0 if small else 2, n_noise_default) if n_high_noise is None
+              else int(n_high_noise))
     extra = wx.size + n_low + n_high
     total = int(n_ret.sum(dtype=np.int64))
     keep_p = min(1.0, max(0.0, target - extra) / total) if total else 1.0

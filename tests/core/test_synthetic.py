@@ -191,6 +191,16 @@ def test_density_parameter(density):
     assert abs(len(t) / t.area - density) / density < 0.06
 
 
+@pytest.mark.parametrize("cover", [0.1, 0.25, 0.6])
+def test_tree_cover_is_the_realised_crown_cover(cover):
+    t = generate_tile(extent=(200.0, 200.0), density=0.5, seed=4, tree_cover=cover)
+    gx, gy = np.meshgrid(np.arange(t.bounds[0] + 0.5, t.bounds[2], 1.0),
+                         np.arange(t.bounds[1] + 0.5, t.bounds[3], 1.0))
+    real = np.mean(t.trees.distance(gx.ravel(), gy.ravel()) == 0)
+    assert abs(real - cover) < 0.03
+    assert abs(len(t) / t.area - 0.5) < 0.03
+
+
 def test_checkpoints_on_open_ground(tile):
     cp = tile.checkpoints(40)
     assert len(cp) == 40 and list(cp.id) == list(range(1, 41))
