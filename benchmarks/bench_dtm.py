@@ -147,8 +147,9 @@ def child(kind, npz, out_npy, n_side, cell):
         else:
             from pykrige.ok import OrdinaryKriging
             kw = {}
-            if len(vparams):
-                kw["variogram_parameters"] = vparams
+            if len(vparams):     # PyKrige's list form wants the full sill: use a dict
+                kw["variogram_parameters"] = {"psill": vparams[0], "range": vparams[1],
+                                              "nugget": vparams[2]}
             ok = OrdinaryKriging(x, y, z, variogram_model="spherical", **kw)
             if kind == "pykrige":
                 zz, _ = ok.execute("grid", grid.x_centers(), grid.y_centers())
@@ -215,7 +216,10 @@ def bench_kriging(sizes, side, cell, tmp, *, like_cells_cell, timeout):
     zo = np.load(a) if os.path.exists(a) else None
     for key, path in (("pykrige", b), ("pykrige_c", c)):
         if zo is not None and os.path.exists(path):
-            like[key]["max_diff"] = float(np.nanmax(np.abs(zo - np.load(path))))
+            dd = np.abs(zo - np.load(path))
+            like[key]["max_diff"] = float(np.nanmax(dd))
+            like[key]["median_diff"] = float(np.nanmedian(dd))
+            like[key]["p99_diff"] = float(np.nanpercentile(dd, 99))
     return rows, like
 
 
@@ -328,6 +332,12 @@ def fmt_t(r):
     return f"{r['time']:.1f} s"
 
 
+def fmt_d(r):
+    if "max_diff" not in r:
+        return "–"
+    return f"{r['median_diff']:.2e} / {r['p99_diff']:.2e} / {r['max_diff']:.2e}"
+
+
 def fmt_m(r):
     if r.get("status") != "ok" or "peak_bytes" not in r:
         return "–"
@@ -361,7 +371,8 @@ def write_md(idw, krig, like, e2e, isprs, args, total):
           "continuous coordinates there are no ties and the grids agree to rounding.", "",
           "## 2. Kriging at LiDAR scale", "",
           "Ours: ordinary kriging, spherical variogram fitted with PyKrige's estimator on "
-          "3000 random points, 16 nearest neighbours per cell, batched local solves, "
+          "pairs around 3000 random points at the local scale (default), 16 nearest "
+          "neighbours per cell, batched local solves, "
           "variance raster computed too. Peak memory = `ru_maxrss` of a fresh child "
           "process (includes Python, NumPy, the points and the output grids). PyKrige "
           f"runs in a child limited to {MEM_LIMIT >> 30} GiB of address space (RLIMIT_AS) "
@@ -375,15 +386,18 @@ def write_md(idw, krig, like, e2e, isprs, args, total):
                  f"({fmt_m(r['pykrige_c'])}) |")
     L += ["", f"Like for like on a grid plain PyKrige can hold ({like['n']:,} points → "
           f"{like['cells']:,} cells; PyKrige given our fitted variogram):", "",
-          "| method | time | peak memory | max \\|diff\\| vs ours (m) |", "|---|---|---|---|",
+          "| method | time | peak memory | \\|diff\\| vs ours (m): median / 99 % / max |",
+          "|---|---|---|---|",
           f"| ours (16 neighbours) | {fmt_t(like['ours'])} | {fmt_m(like['ours'])} | – |",
           f"| plain PyKrige (global, all points) | {fmt_t(like['pykrige'])} | "
-          f"{fmt_m(like['pykrige'])} | {like['pykrige'].get('max_diff', float('nan')):.2e} |",
+          f"{fmt_m(like['pykrige'])} | {fmt_d(like['pykrige'])} |",
           f"| PyKrige C, n_closest_points=16 | {fmt_t(like['pykrige_c'])} | "
-          f"{fmt_m(like['pykrige_c'])} | {like['pykrige_c'].get('max_diff', float('nan')):.2e} |",
-          "", "The difference to PyKrige's moving window (same neighbours, same variogram) is "
-          "rounding; the difference to global PyKrige is the local-neighbourhood "
-          "approximation (far points ignored).", "",
+          f"{fmt_m(like['pykrige_c'])} | {fmt_d(like['pykrige_c'])} |",
+          "", "The difference to PyKrige's moving window (same 16 neighbours, same variogram) "
+          "is rounding. The difference to global PyKrige is the local-neighbourhood "
+          "approximation: these 10 k points are 10 m apart on terrain with a 35° hillside "
+          "and a cliff, so 16 neighbours reach about 25 m; the largest differences are "
+          "at the grid border, where global kriging extrapolates from far points.", "",
           "End to end, as a user runs it: `qgis_process run geomatics:krigingdtm` on a LAZ "
           f"of {e2e.get('n', 0):,} ground points (LAS read, variogram fit, kriging, DTM "
           "and variance GeoTIFFs, HTML report); peak memory = `ru_maxrss` of the "
