@@ -16,6 +16,7 @@ without a decompression backend, unsupported version, empty cloud.
 from __future__ import annotations
 
 import os
+import warnings
 from dataclasses import dataclass, field
 from typing import Dict, Iterator, Mapping, Optional, Sequence, Tuple
 
@@ -30,7 +31,12 @@ _SUPPORTED_VERSIONS = {(1, 0), (1, 1), (1, 2), (1, 3), (1, 4)}
 
 def _laspy():
     try:
-        import laspy
+        with warnings.catch_warnings():
+            # laspy imports pyproj, which warns when its own PROJ data folder is
+            # missing (Debian's pyproj); we never use pyproj for CRS handling.
+            warnings.filterwarnings("ignore", message="Valid PROJ data directory",
+                                    category=UserWarning)
+            import laspy
     except ImportError as exc:  # pragma: no cover - install problem
         raise ValueError("The Python package 'laspy' is not installed; install "
                          "laspy and lazrs (pip install laspy lazrs).") from exc
