@@ -159,7 +159,8 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
             "<li><b>Ground points</b> (GROUND_OUTPUT, optional): only the ground points.</li>"
             "<li><b>Report</b> (OUTPUT_HTML, optional): counts, settings, allowed-rise "
             "table, speed.</li></ul>"
-            "<p>Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE.</p>"
+            "<p>Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE, "
+            "POINTS_PER_SECOND (filter step only).</p>"
             "<p>Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry "
             "data. IAPRS XXXIII-B3, 935–942.</p>")
 
@@ -187,7 +188,8 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
         for name, label in (("N_POINTS", self.tr("Points read")),
                             ("N_GROUND", self.tr("Ground points (class 2)")),
                             ("N_NONGROUND", self.tr("Non-ground points (class 1)")),
-                            ("N_NOISE", self.tr("Low outliers (class 7)"))):
+                            ("N_NOISE", self.tr("Low outliers (class 7)")),
+                            ("POINTS_PER_SECOND", self.tr("Filter speed (points/s)"))):
             self.addOutput(QgsProcessingOutputNumber(name, label))
 
     def process(self, parameters, context, feedback):
@@ -210,8 +212,10 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
         feedback.pushInfo(self.tr("{} points: {} ground, {} non-ground, {} low outliers; "
                                   "filter {:.1f} s").format(
             s.n_points, s.n_ground, s.n_nonground, s.n_noise, s.seconds.get("filter", 0.0)))
+        filt = s.seconds.get("filter") or 0.0
         result = {"N_POINTS": s.n_points, "N_GROUND": s.n_ground,
-                  "N_NONGROUND": s.n_nonground, "N_NOISE": s.n_noise}
+                  "N_NONGROUND": s.n_nonground, "N_NOISE": s.n_noise,
+                  "POINTS_PER_SECOND": s.n_points / filt if filt > 0 else None}
         if out:
             result[self.OUTPUT] = out
         if gout:
