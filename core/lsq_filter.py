@@ -167,6 +167,17 @@ def _grad(coef, tid, u, v, order, half):
     return np.hypot(gu, gv) / half
 
 
+def _within(coef, tid, u, v, z, threshold, order, chunk=2_000_000):
+    """``z − ẑ ≤ threshold`` per row, evaluated in blocks (bounded temporaries)."""
+    out = np.empty(tid.size, dtype=bool)
+    per_row = np.ndim(threshold) > 0
+    for s in range(0, tid.size, chunk):
+        sl = slice(s, s + chunk)
+        res = z[sl] - _eval(coef, tid[sl], u[sl], v[sl], order)
+        np.less_equal(res, threshold[sl] if per_row else threshold, out=out[sl])
+    return out
+
+
 # pairs (i, j), i <= j, of design columns, as exponent pairs of the monomials
 _EXPO = {1: ((0, 0), (1, 0), (0, 1)),
          2: ((0, 0), (2, 0), (0, 2), (1, 1), (1, 0), (0, 1))}
@@ -385,8 +396,15 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
         if T.size:
             starts = np.flatnonzero(np.r_[True, T[1:] != T[:-1]])
             present = T[starts]
-            mn = np.minimum.reduceat(np.where(cur, Z, np.inf), starts)
-            mx = np.maximum.reduceat(np.where(cur, Z, -np.inf), starts)
+            if cur is None:
+                mn = np.minimum.reduceat(Z, starts)
+                mx = np.maximum.reduceat(Z, starts)
+            else:
+                zz = np.where(cur, Z, np.inf)
+                mn = np.minimum.reduceat(zz, starts)
+                zz[~cur] = -np.inf
+                mx = np.maximum.reduceat(zz, starts)
+                del zz
             ok = np.isfinite(mn)
             lo[present[ok]] = mn[ok] + zt0[present[ok]]
             hi[present[ok]] = mx[ok] + zt0[present[ok]]
@@ -403,25 +421,32 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
         st[has, 4] = np.sqrt(np.maximum(szz[has] / cnt[has] - mean ** 2, 0.0))
         return st
 
-    # step 0: every tile (also the under-populated ones), all fitting rows
+    # step 0: every tile (also the under-populated ones), all fitting rows.
+    # The working pool is every active row; with no subset it is the caller's arrays
+    # themselves (no copies: memory matters at tens of millions of points).
     live = cnt0 >= min_points               # tiles still iterating
     n_fit_tiles = int(live.sum())
-    T0, Z0 = tid[rows], z[rows] - zt0[tid[rows]]
-    N0, r0, szz0 = _normal_equations(T0, u[rows], v[rows], Z0, None, ntiles, order)
-    st0 = stats_from(N0[:, 0, 0], r0[:, 0], szz0, *minmax(T0, Z0, np.ones(T0.size, bool)))
-    del T0, Z0
+    if active is None:
+        pool = None
+        T, U, V = tid, u, v
+        Z = z - zt0[tid]
+    else:
+        pool = rows
+        T, U, V = tid[pool], u[pool], v[pool]
+        Z = z[pool] - zt0[T]
+    del rows
+    N0, r0, szz0 = _normal_equations(T, U, V, Z, None, ntiles, order)
+    st0 = stats_from(N0[:, 0, 0], r0[:, 0], szz0, *minmax(T, Z, None))
     steps = [st0]
     agg = [_aggregate(st0, cnt0 > 0, "all fitting points", active_tiles=n_fit_tiles)]
     prev = st0[:, 1:5]
-    # working pool: rows of the live tiles (compacted as tiles finish)
-    pool = rows[live[tid[rows]]]
-    T, U, V, Z = tid[pool], u[pool], v[pool], z[pool] - zt0[tid[pool]]
-    H = threshold[pool] if per_row else threshold
+    H = threshold if not per_row else (threshold if pool is None else threshold[pool])
     if start is None:
         cur = np.ones(T.size, dtype=bool)   # kept set within the pool
         N, r, szz = N0, r0, szz0
     else:
-        cur = np.asarray(start, dtype=bool)[pool]
+        cur = np.asarray(start, dtype=bool)
+        cur = cur.copy() if pool is None else cur[pool]
         N, r, szz = _normal_equations(T[cur], U[cur], V[cur], Z[cur], None, ntiles, order)
     for it in range(1, int(max_iterations) + 1):
         # progress: share of tiles finished, blended with the iteration count
@@ -437,11 +462,14 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
         live &= solved
         coef[live] = new_coef[live]
         iterations[live] += 1
-        ok = (Z - _eval(coef, T, U, V, order)) <= H
+        ok = _within(coef, T, U, V, Z, H, order)
         if cumulative:
-            new = cur & ok                  # rows once rejected stay out
-        else:
-            new = ok                        # W = diag(v <= T) from every row's residual
+            ok &= cur                       # rows once rejected stay out
+        # (re-weighted: W = diag(v <= T) from every row's residual.) Rows of tiles
+        # that have stopped (or never started) keep their kept flag.
+        act = live.take(T)
+        new = np.where(act, ok, cur)
+        del ok, act
         # the kept set changed by a few rows: update the sums incrementally
         for sel, sign in ((new & ~cur, 1.0), (cur & ~new, -1.0)):
             if sel.any():
@@ -450,6 +478,7 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
                 N += sign * dN
                 r += sign * dr
                 szz += sign * dszz
+            del sel
         cur = new
         cnt = np.rint(N[:, 0, 0])
         st = stats_from(cnt, r[:, 0], szz, *minmax(T, Z, cur))
@@ -468,16 +497,24 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
             status[live & ~done] = 2
             done |= live
         live &= ~done
-        if done.any():
-            fin = done[T]
-            if fin.any():
+        # compact the pool once most of its rows belong to finished tiles
+        stay = live.take(T)
+        if stay.sum() < 0.5 * T.size:
+            fin = ~stay
+            if pool is None:
+                kept[fin & cur] = True
+                pool = np.flatnonzero(stay)
+            else:
                 kept[pool[fin & cur]] = True
-                stay = ~fin
-                pool, T, U, V, Z, cur = (pool[stay], T[stay], U[stay], V[stay], Z[stay],
-                                         cur[stay])
-                if per_row:
-                    H = H[stay]
-    kept[pool[cur]] = True
+                pool = pool[stay]
+            T, U, V, Z, cur = T[stay], U[stay], V[stay], Z[stay], cur[stay]
+            if per_row:
+                H = H[stay]
+        del stay
+    if pool is None:
+        kept |= cur
+    else:
+        kept[pool[cur]] = True
     coef_out = coef.copy()
     # z was fitted relative to zt0: move it into the constant term
     coef_out[:, 0] = coef_out[:, 0] + zt0
@@ -811,9 +848,11 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
                                      progress=mon.sub(0.0, 0.15).update, cancel=cancel)
         timings["noise_filter"] = time.perf_counter() - t0
     mon.step(0.15)
-    fit_pts = np.flatnonzero(~is_noise)
-    if fit_pts.size < p:
-        raise ValueError(f"Too few points: only {fit_pts.size} point(s) are left for fitting "
+    n_fit = n - int(is_noise.sum())
+    # None = every point (saves an index array of n entries on large clouds)
+    fit_pts = None if n_fit == n else np.flatnonzero(~is_noise)
+    if n_fit < p:
+        raise ValueError(f"Too few points: only {n_fit} point(s) are left for fitting "
                          f"and an order-{order} surface needs at least {p} in a tile. Use "
                          "ORDER 1, a larger cloud, or switch the noise pre-filter off.")
     x0, y0 = float(x.min()), float(y.min())
@@ -875,13 +914,18 @@ def _faithful(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
     t0 = time.perf_counter()
     n = x.size
     tid_all, grid = _tile_index(x, y, x0, y0, tile_size)
-    ft = tid_all[fit_pts]
-    o = np.argsort(ft, kind="stable")
-    rows = fit_pts[o]
-    T = ft[o]
-    del o, ft
+    if fit_pts is None:
+        rows = np.argsort(tid_all, kind="stable")
+        T = tid_all[rows]
+    else:
+        ft = tid_all[fit_pts]
+        o = np.argsort(ft, kind="stable")
+        rows = fit_pts[o]
+        T = ft[o]
+        del o, ft
     u, v = grid.local(T, x[rows], y[rows])
     Z = z[rows]
+    del rows
     active = None
     if subset_size is not None:
         active = _random_subset(T, subset_size, seed)
@@ -904,15 +948,14 @@ def _faithful(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
     else:
         src = np.arange(grid.count)
     surface = np.full(n, np.nan)
-    slope = np.zeros(n)
     blk = 2_000_000
     for s in range(0, n, blk):
         mon.step(0.85 + 0.15 * s / n)
         sl = slice(s, s + blk)
-        surface[sl], slope[sl] = _surface_at(x[sl], y[sl], grid, out.coef, src,
-                                             tid_all[sl], order)
+        surface[sl] = _surface_at(x[sl], y[sl], grid, out.coef, src, tid_all[sl], order)[0]
+    del tid_all
     ground = z <= surface + threshold          # NaN surface → False
-    thr = np.full(n, threshold)
+    thr = np.broadcast_to(np.float64(threshold), (n,))   # one value, no n-array
     timings["classification"] = time.perf_counter() - t0
     extra = dict(grid=grid, coefficients=out.coef, tile_status=status,
                  tile_iterations=out.iterations, tile_points=out.npoints,
@@ -1009,6 +1052,8 @@ def _improved(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
     """Coarse-to-fine, overlapping, blended, slope-adaptive LSQ (ours, see module doc)."""
     n = x.size
     p = n_coefficients(order)
+    if fit_pts is None:
+        fit_pts = np.arange(n)
     seeds = None                              # bool per point: ground of the previous level
     surface = slope = None
     level_info = []
