@@ -8,6 +8,7 @@ from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
 ICON_PATH = os.path.join(os.path.dirname(__file__), "icons", "geomatics.svg")
+MODELS_DIR = os.path.join(os.path.dirname(os.path.dirname(__file__)), "models")
 
 
 class GeomaticsProvider(QgsProcessingProvider):
@@ -32,3 +33,19 @@ class GeomaticsProvider(QgsProcessingProvider):
         from ..algorithms import all_algorithms
         for alg in all_algorithms():
             self.addAlgorithm(alg)
+        self._load_models()
+
+    def _load_models(self) -> None:
+        """Offer the shipped Processing models (models/*.model3) as algorithms too."""
+        from qgis.core import Qgis, QgsMessageLog, QgsProcessingModelAlgorithm
+        if not os.path.isdir(MODELS_DIR):
+            return
+        for name in sorted(os.listdir(MODELS_DIR)):
+            if not name.endswith(".model3"):
+                continue
+            model = QgsProcessingModelAlgorithm()
+            if model.fromFile(os.path.join(MODELS_DIR, name)):
+                self.addAlgorithm(model)
+            else:
+                QgsMessageLog.logMessage(f"Could not load the model {name}",
+                                         "Geomatics Toolbox", Qgis.Warning)
