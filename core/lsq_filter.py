@@ -885,7 +885,8 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
         params.update(levels=lv, overlap=ov, slope_factor=sf, slope_cap=cap, blend=bl)
         res = _improved(x, y, z, fit_pts, x0, y0, order, float(tile_size), float(threshold),
                         max_iterations, tolerance, subset_size, seed, min_points,
-                        sparse_tiles, lv, ov, sf, cap, bl, mon.sub(0.15, 1.0), timings)
+                        sparse_tiles, lv, ov, sf, cap, bl, rejection, mon.sub(0.15, 1.0),
+                        timings)
     ground, surface, thr, extra = res
     cls[ground] = GROUND
     cls[np.isnan(surface) & ~is_noise] = UNCLASSIFIED
@@ -1048,7 +1049,7 @@ def _blend(x, y, x0, y0, size, ny, ukeys, coef, solved, order, bilinear=True,
 
 def _improved(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterations,
               tolerance, subset_size, seed, min_points, sparse_tiles, levels, overlap,
-              slope_factor, slope_cap, blend, mon, timings):
+              slope_factor, slope_cap, blend, rejection, mon, timings):
     """Coarse-to-fine, overlapping, blended, slope-adaptive LSQ (ours, see module doc)."""
     n = x.size
     p = n_coefficients(order)
@@ -1077,7 +1078,7 @@ def _improved(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
         rthr = threshold if slope is None else threshold + slope_factor * slope[idx]
         out = fit_tiles(T, U, V, z[idx], ukeys.size, order=order, threshold=rthr,
                         max_iterations=max_iterations, tolerance=tolerance,
-                        min_points=min_points, active=active,
+                        min_points=min_points, active=active, rejection=rejection,
                         start=None if seeds is None else seeds[idx], mon=lm.sub(0.0, 0.8))
         solved = out.status != 0
         del T, U, V, idx
