@@ -52,7 +52,7 @@ def build(filter_key: str = "lsq"):
     from qgis.PyQt.QtCore import QPointF
 
     alg_id, filter_label, filter_params = FILTERS[filter_key]
-    m = QgsProcessingModelAlgorithm("lidar_to_dtm", "Geomatics Toolbox", "geomatics")
+    m = QgsProcessingModelAlgorithm("lidar_to_dtm", "Terrain models", "terrain")
     m.setHelpContent({
         "ALG_DESC": ("LiDAR point cloud → ground filter → IDW DTM (p = 3, 12 neighbours) "
                      "→ DTM accuracy against check points (RMSE, r, NMAD, 95 % accuracy). "

@@ -77,3 +77,7 @@ def test_shipped_model(qp, demo):
         pytest.skip("geomatics:lsqgroundfilter is not registered")
     res, out = run_model(qp, MODEL, demo)
     check_outputs(res, out)
+    # the provider also offers the shipped model as geomatics:lidar_to_dtm
+    if "geomatics:lidar_to_dtm" in listing:
+        res, out = run_model(qp, Path("geomatics:lidar_to_dtm"), demo)
+        check_outputs(res, out)
