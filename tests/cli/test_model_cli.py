@@ -37,7 +37,7 @@ def demo(tmp_path_factory):
 
 
 def run_model(qp, model, d, **extra):
-    out = d / model.stem
+    out = d / str(model.stem).replace(":", "_")
     out.mkdir(exist_ok=True)
     params = {"INPUT": d / "demo.laz", "CHECKPOINTS_CSV": d / "checkpoints.csv",
               "CELL_SIZE": 1, "POWER": 3,
