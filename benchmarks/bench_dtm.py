@@ -364,11 +364,11 @@ def write_md(idw, krig, like, e2e, isprs, args, total):
                  f"{r['t_gdal']:.2f} | **{r['ratio']:.3f}** | {r['max_diff']:.2e} | "
                  f"{r['cells_over_1mm']} | {r['same_nodata']} |")
     L += ["", "Targets: ratio ≤ 1.0, max |diff| ≤ 1e-3 m. With coordinates quantised to "
-          "1 cm some cell centres have two points at exactly the same distance at the "
-          "max_points cut-off; GDAL keeps the one its quadtree (overlapping 55 % splits) "
-          "returns first, we keep the lower input index. Both are valid IDW estimates; "
-          "the few cells that differ are listed in the 'cells > 1 mm' column. With "
-          "continuous coordinates there are no ties and the grids agree to rounding.", "",
+          "1 cm many cell centres have two points at exactly the same distance at the "
+          "max_points cut-off; GDAL keeps the one its quadtree returns first, and ours "
+          "orders equidistant points the same way (core.idw.gdal_quadtree_rank rebuilds "
+          "GDAL's bucket quadtree, computed only when a tie occurs), so even those cells "
+          "agree.", "",
           "## 2. Kriging at LiDAR scale", "",
           "Ours: ordinary kriging, spherical variogram fitted with PyKrige's estimator on "
           "pairs around 3000 random points at the local scale (default), 16 nearest "

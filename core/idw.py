@@ -9,16 +9,21 @@ NearestNeighbor``), so results can be compared cell for cell:
   the ``max_points`` closest are used (``max_points = 0``: all within the radius);
 * a cell with fewer than ``min_points`` neighbours (or none at all) is nodata;
 * a cell centre that coincides with a point (``d² + s² < 1e-13``) takes that point's
-  value exactly (with several coincident points GDAL takes the first one its quadtree
-  returns; here the nearest one reported by the KD-tree — they differ only for exact
-  duplicates with different heights);
+  value exactly (with several coincident points, the first one GDAL's quadtree
+  returns — reproduced here, see below);
 * grid nodes are cell centres (pixel-is-area), as in GDAL ≥ 3.
 
 Differences from GDAL, on purpose: ``radius`` may be ``None`` (pure k nearest
 neighbours, GDAL requires a radius), and cells farther than ``max_distance`` from any
 point can be left empty (see :func:`.grid.distance_mask`); pass ``fill=True`` to get
-GDAL's behaviour exactly. Distance ties at the ``max_points`` cut-off (points exactly
-equidistant from a node) may be broken in a different order than GDAL's quadtree.
+GDAL's behaviour exactly.
+
+Ties: with LiDAR coordinates quantised to 1 cm, a node often has two points at exactly
+the same distance at the ``max_points`` cut-off, and which one is used changes the
+result by millimetres to centimetres. GDAL keeps equidistant points in the order its
+point quadtree returns them; :func:`gdal_quadtree_rank` rebuilds that quadtree
+(vectorised, only when a tie actually occurs) so that ties are broken exactly as in
+GDAL (``tie_order='gdal'``, default; ``'input'`` = lower input index first).
 
 Implementation: one :class:`scipy.spatial.cKDTree` k-nearest query per block of grid
 rows (all cores), then vectorised weights; memory is bounded by the block size, not by
@@ -46,6 +51,79 @@ from .progress import Monitor
 #: squared distance below which a node "is on" a point (GDAL's constant)
 COINCIDENT_R2 = 1e-13
 DEFAULT_BLOCK_CELLS = 262_144
+
+
+def gdal_quadtree_rank(x, y, *, capacity: int = 8, ratio: float = 0.55) -> np.ndarray:
+    """Rank of every point in the order GDAL's point quadtree returns them.
+
+    ``gdal_grid`` inserts the points, in input order, into a ``CPLQuadTree`` over the
+    points' bounding box (bucket capacity 8; a full leaf splits into four quadrants
+    made by two successive splits of the longer side, each part 55 % of its parent so
+    that they overlap; a point goes to the first quadrant that contains it). A
+    search returns the features leaf by leaf in depth-first order, and within a leaf
+    in input order. GDAL keeps equidistant neighbours in that order, so it decides
+    which of two equidistant points is used at the ``max_points`` cut-off. Because a
+    leaf splits exactly when a 9th point reaches it, the final tree depends only on
+    the point set, and this vectorised level-by-level construction reproduces it.
+    """
+    x = np.asarray(x, np.float64)
+    y = np.asarray(y, np.float64)
+    n = x.size
+    x0 = np.full(n, x.min())
+    x1 = np.full(n, x.max())
+    y0 = np.full(n, y.min())
+    y1 = np.full(n, y.max())
+    node = np.zeros(n, np.int64)
+    active = np.arange(n)
+    digits = []
+
+    def halves(a0, a1, b0, b1):
+        """Split (a0, a1, b0, b1) = (minx, maxx, miny, maxy) along the longer side."""
+        w, h = a1 - a0, b1 - b0
+        sx = w > h
+        lo1 = (a0, np.where(sx, a0 + w * ratio, a1), b0, np.where(sx, b1, b0 + h * ratio))
+        lo2 = (np.where(sx, a1 - w * ratio, a0), a1, np.where(sx, b0, b1 - h * ratio), b1)
+        return lo1, lo2
+
+    while active.size:
+        _, inv, cnt = np.unique(node[active], return_inverse=True, return_counts=True)
+        full = cnt[inv] > capacity
+        a = active[full]
+        if a.size == 0:
+            break
+        parent = inv[full]
+        rect = (x0[a], x1[a], y0[a], y1[a])
+        h1, h2 = halves(*rect)
+        quads = list(halves(*h1)) + list(halves(*h2))
+        same = np.zeros(a.size, bool)
+        for qd in quads:
+            same |= ((qd[0] == rect[0]) & (qd[1] == rect[1]) & (qd[2] == rect[2])
+                     & (qd[3] == rect[3]))
+        px, py = x[a], y[a]
+        choice = np.full(a.size, -1, np.int64)
+        for k in range(3, -1, -1):       # the first containing quadrant wins
+            qd = quads[k]
+            inside = (px >= qd[0]) & (px <= qd[1]) & (py >= qd[2]) & (py <= qd[3])
+            choice[inside] = k
+        split = ~same & (choice >= 0)
+        a, parent, choice = a[split], parent[split], choice[split]
+        if a.size == 0:
+            break
+        level = np.zeros(n, np.uint8)
+        level[a] = choice
+        digits.append(level)
+        for k in range(4):
+            sel = choice == k
+            qd = quads[k]
+            m = split.nonzero()[0][sel]
+            x0[a[sel]], x1[a[sel]] = qd[0][m], qd[1][m]
+            y0[a[sel]], y1[a[sel]] = qd[2][m], qd[3][m]
+        node[a] = parent * 4 + choice
+        active = a
+    order = np.lexsort([np.arange(n)] + digits[::-1])
+    rank = np.empty(n, np.int64)
+    rank[order] = np.arange(n)
+    return rank
 
 
 def _validate(x, y, z, power, max_points, radius, min_points, smoothing):
@@ -115,7 +193,11 @@ class IDW:
 
     def __init__(self, x, y, z, *, power: float = 2.0, max_points: int = 12,
                  radius: Optional[float] = None, min_points: int = 0,
-                 smoothing: float = 0.0, workers: int = -1):
+                 smoothing: float = 0.0, workers: int = -1, tie_order: str = "gdal"):
+        if tie_order not in ("gdal", "input"):
+            raise ValueError(f"tie_order must be 'gdal' or 'input', got {tie_order!r}.")
+        self.tie_order = tie_order
+        self._rank = None
         (self.x, self.y, self.z, self.power, self.max_points, self.radius,
          self.min_points, self.smoothing) = _validate(x, y, z, power, max_points, radius,
                                                       min_points, smoothing)
@@ -147,11 +229,19 @@ class IDW:
             d[tied], idx[tied] = self._break_ties(q[tied], k, ub)
         return d, idx
 
-    def _break_ties(self, q: np.ndarray, k: int, ub: float):
-        """k nearest with equal distances ordered by point index (lowest first).
+    def tie_rank(self) -> np.ndarray:
+        """Order used between equidistant points (computed once, when first needed)."""
+        if self._rank is None:
+            if self.tie_order == "gdal":
+                self._rank = gdal_quadtree_rank(self.x, self.y)
+            else:
+                self._rank = np.arange(self.n_points)
+        return self._rank
 
-        GDAL keeps equidistant points in the order its quadtree returns them, which
-        for points of one leaf is input order; the KD-tree order is arbitrary.
+    def _break_ties(self, q: np.ndarray, k: int, ub: float):
+        """k nearest, equal distances ordered like GDAL's quadtree (or by input index).
+
+        The KD-tree returns equidistant points in an arbitrary order.
         """
         extra = min(self.n_points, k + 16)
         while True:
@@ -161,7 +251,8 @@ class IDW:
             if not last_tied.any() or extra == self.n_points:
                 break
             extra = min(self.n_points, extra * 2)
-        key_idx = np.where(np.isfinite(d), idx, np.iinfo(np.int64).max)
+        key_idx = np.where(np.isfinite(d), self.tie_rank()[np.minimum(idx, self.n_points - 1)],
+                           np.iinfo(np.int64).max)
         order = np.lexsort((key_idx, d), axis=-1)
         rows = np.arange(d.shape[0])[:, None]
         return d[rows, order][:, :k], idx[rows, order][:, :k]
@@ -193,7 +284,12 @@ class IDW:
         coincident = valid & (r2 < COINCIDENT_R2)
         hit = coincident.any(axis=1)
         if hit.any():
-            first = np.argmax(coincident[hit], axis=1)
+            ch = coincident[hit]
+            if (ch.sum(axis=1) > 1).any():   # several coincident points: GDAL's first
+                rk = np.where(ch, self.tie_rank()[idx_safe[hit]], np.iinfo(np.int64).max)
+                first = np.argmin(rk, axis=1)
+            else:
+                first = np.argmax(ch, axis=1)
             out[hit] = zn[hit, first]
         if max_distance is not None:
             out[~(d[:, 0] <= max_distance)] = np.nan
@@ -204,6 +300,7 @@ def idw_grid(x, y, z, grid: GridSpec, *, power: float = 2.0, max_points: int = 1
              radius: Optional[float] = None, min_points: int = 0, smoothing: float = 0.0,
              max_distance: Optional[float] = None, fill: bool = False,
              block_cells: int = DEFAULT_BLOCK_CELLS, workers: int = -1,
+             tie_order: str = "gdal",
              memory_limit: Optional[int] = None, progress=None, cancel=None) -> np.ndarray:
     """Interpolate points onto ``grid`` by IDW (Shepard 1968; ``gdal_grid invdistnn``).
 
@@ -241,7 +338,8 @@ def idw_grid(x, y, z, grid: GridSpec, *, power: float = 2.0, max_points: int = 1
     mon = Monitor(progress, cancel)
     check_memory(grid, arrays=1, limit=memory_limit)
     interp = IDW(x, y, z, power=power, max_points=max_points, radius=radius,
-                 min_points=min_points, smoothing=smoothing, workers=workers)
+                 min_points=min_points, smoothing=smoothing, workers=workers,
+                 tie_order=tie_order)
     if fill:
         max_distance = None
     elif max_distance is None:

@@ -132,3 +132,21 @@ def test_ties_at_the_cut_off_follow_input_order():
         p = np.array(perm)
         got = IDW(x[p], y[p], z[p], max_points=2).predict([0.5], [0.5])[0]
         assert got == pytest.approx(z[p][:2].mean())   # the two first in input order
+
+
+def test_equidistant_neighbours_ordered_like_gdal_quadtree():
+    # a regular 0.5 m lattice (plus a few random points): many grid nodes have
+    # several points at exactly the same distance at the max_points cut-off
+    rng = np.random.default_rng(3)
+    gx, gy = np.meshgrid(np.arange(0, 30.01, 0.5), np.arange(0, 20.01, 0.5))
+    x = np.concatenate([gx.ravel(), rng.uniform(0, 30, 50).round(2)]) + 700000
+    y = np.concatenate([gy.ravel(), rng.uniform(0, 20, 50).round(2)]) + 3000000
+    z = rng.normal(100, 2, x.size)
+    grid = grid_from_extent((700000.0, 700030.0, 3000000.0, 3000020.0), 0.25)
+    for k in (3, 5, 7):
+        ref = gdal_invdistnn(x, y, z, grid, power=2, max_points=k, radius=3.0)
+        ours = idw_grid(x, y, z, grid, power=2, max_points=k, radius=3.0, fill=True)
+        assert np.nanmax(np.abs(ref - ours)) <= 1e-9
+        by_index = idw_grid(x, y, z, grid, power=2, max_points=k, radius=3.0, fill=True,
+                            tie_order="input")
+        assert np.nanmax(np.abs(ref - by_index)) > 1e-3     # the ties do matter here
