@@ -69,58 +69,69 @@ def gdal_quadtree_rank(x, y, *, capacity: int = 8, ratio: float = 0.55) -> np.nd
     x = np.asarray(x, np.float64)
     y = np.asarray(y, np.float64)
     n = x.size
-    x0 = np.full(n, x.min())
-    x1 = np.full(n, x.max())
-    y0 = np.full(n, y.min())
-    y1 = np.full(n, y.max())
-    node = np.zeros(n, np.int64)
-    active = np.arange(n)
-    digits = []
+    if n == 0:
+        return np.empty(0, np.int64)
 
-    def halves(a0, a1, b0, b1):
-        """Split (a0, a1, b0, b1) = (minx, maxx, miny, maxy) along the longer side."""
+    def split(r):
+        """CPLQuadTreeSplitBounds on node rectangles r = (minx, maxx, miny, maxy)."""
+        a0, a1, b0, b1 = r
         w, h = a1 - a0, b1 - b0
         sx = w > h
-        lo1 = (a0, np.where(sx, a0 + w * ratio, a1), b0, np.where(sx, b1, b0 + h * ratio))
-        lo2 = (np.where(sx, a1 - w * ratio, a0), a1, np.where(sx, b0, b1 - h * ratio), b1)
-        return lo1, lo2
+        cut1 = np.where(sx, a0 + w * ratio, b0 + h * ratio)     # end of the first part
+        cut2 = np.where(sx, a1 - w * ratio, b1 - h * ratio)     # start of the second
+        first = (a0, np.where(sx, cut1, a1), b0, np.where(sx, b1, cut1))
+        second = (np.where(sx, cut2, a0), a1, np.where(sx, b0, cut2), b1)
+        return sx, cut1, first, second
 
+    rects = tuple(np.array([v]) for v in (x.min(), x.max(), y.min(), y.max()))
+    node = np.zeros(n, np.int64)
+    active = np.arange(n)
+    key = np.zeros(n, np.int64)          # quadrant digits, 2 bits per level
+    depth = np.zeros(n, np.int64)
+    deep = []                            # digits beyond 30 levels (rare: duplicates)
+    level = 0
     while active.size:
-        _, inv, cnt = np.unique(node[active], return_inverse=True, return_counts=True)
-        full = cnt[inv] > capacity
-        a = active[full]
+        ids = node[active]
+        cnt = np.bincount(ids, minlength=rects[0].size)
+        full_nodes = np.flatnonzero(cnt > capacity)
+        if full_nodes.size == 0:
+            break
+        r = tuple(v[full_nodes] for v in rects)
+        sx, cut, h1, h2 = split(r)
+        sx1, cut_1, q1, q2 = split(h1)
+        sx2, cut_2, q3, q4 = split(h2)
+        quads = (q1, q2, q3, q4)
+        same = np.zeros(full_nodes.size, bool)
+        for qd in quads:                 # a degenerate rectangle is never split
+            same |= (qd[0] == r[0]) & (qd[1] == r[1]) & (qd[2] == r[2]) & (qd[3] == r[3])
+        remap = np.full(cnt.size, -1, np.int64)
+        ok_nodes = np.flatnonzero(~same)
+        remap[full_nodes[ok_nodes]] = ok_nodes
+        sel = remap[ids] >= 0
+        a = active[sel]
         if a.size == 0:
             break
-        parent = inv[full]
-        rect = (x0[a], x1[a], y0[a], y1[a])
-        h1, h2 = halves(*rect)
-        quads = list(halves(*h1)) + list(halves(*h2))
-        same = np.zeros(a.size, bool)
-        for qd in quads:
-            same |= ((qd[0] == rect[0]) & (qd[1] == rect[1]) & (qd[2] == rect[2])
-                     & (qd[3] == rect[3]))
+        p = remap[ids[sel]]
         px, py = x[a], y[a]
-        choice = np.full(a.size, -1, np.int64)
-        for k in range(3, -1, -1):       # the first containing quadrant wins
-            qd = quads[k]
-            inside = (px >= qd[0]) & (px <= qd[1]) & (py >= qd[2]) & (py <= qd[3])
-            choice[inside] = k
-        split = ~same & (choice >= 0)
-        a, parent, choice = a[split], parent[split], choice[split]
-        if a.size == 0:
-            break
-        level = np.zeros(n, np.uint8)
-        level[a] = choice
-        digits.append(level)
-        for k in range(4):
-            sel = choice == k
-            qd = quads[k]
-            m = split.nonzero()[0][sel]
-            x0[a[sel]], x1[a[sel]] = qd[0][m], qd[1][m]
-            y0[a[sel]], y1[a[sel]] = qd[2][m], qd[3][m]
-        node[a] = parent * 4 + choice
+        second_half = ~(np.where(sx[p], px, py) <= cut[p])
+        sxh = np.where(second_half, sx2[p], sx1[p])
+        cuth = np.where(second_half, cut_2[p], cut_1[p])
+        second_quad = ~(np.where(sxh, px, py) <= cuth)
+        choice = 2 * second_half.astype(np.int64) + second_quad
+        if level < 30:
+            key[a] = key[a] * 4 + choice
+            depth[a] += 1
+        else:
+            d = np.zeros(n, np.uint8)
+            d[a] = choice
+            deep.append(d)
+        node[a] = p * 4 + choice
+        rects = tuple(np.stack([qd[i] for qd in quads], axis=1).ravel() for i in range(4))
         active = a
-    order = np.lexsort([np.arange(n)] + digits[::-1])
+        level += 1
+    # leaves in depth-first order (a leaf path is never a prefix of another), then input
+    key = key << (2 * (depth.max() - depth))
+    order = np.lexsort([np.arange(n)] + deep[::-1] + [key])
     rank = np.empty(n, np.int64)
     rank[order] = np.arange(n)
     return rank
