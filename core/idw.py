@@ -262,9 +262,14 @@ class IDW:
             if not last_tied.any() or extra == self.n_points:
                 break
             extra = min(self.n_points, extra * 2)
-        key_idx = np.where(np.isfinite(d), self.tie_rank()[np.minimum(idx, self.n_points - 1)],
-                           np.iinfo(np.int64).max)
-        order = np.lexsort((key_idx, d), axis=-1)
+        valid = np.isfinite(d)
+        safe = np.where(valid, idx, 0)
+        # exact squared distances as GDAL computes them (sqrt may merge two values)
+        dx = self.x[safe] - q[:, :1]
+        dy = self.y[safe] - q[:, 1:2]
+        r2 = np.where(valid, dx * dx + dy * dy, np.inf)
+        key_idx = np.where(valid, self.tie_rank()[safe], np.iinfo(np.int64).max)
+        order = np.lexsort((key_idx, r2), axis=-1)
         rows = np.arange(d.shape[0])[:, None]
         return d[rows, order][:, :k], idx[rows, order][:, :k]
 
