@@ -38,6 +38,18 @@ echo "== demo data → $OUT/demo"
 run geomatics:gsdcalculator gsd DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 \
   FOCAL_LENGTH=4.6 TARGET_GSD=0.21 OBSERVED_SXYZ=3.85 OUTPUT_HTML="$OUT/gsd_report.html"
 
+run geomatics:lidar_to_dtm lidar_to_dtm INPUT="$OUT/demo/demo.laz" \
+  CHECKPOINTS_CSV="$OUT/demo/checkpoints.csv" CELL_SIZE=1 POWER=3 \
+  groundfilter:CLASSIFIED="$OUT/demo_classified.laz" \
+  groundfilter:FILTER_REPORT="$OUT/ground_filter_report.html" \
+  dtm:DTM="$OUT/dtm_idw.tif" dtm:DTM_REPORT="$OUT/dtm_report.html" \
+  accuracy:RESIDUALS="$OUT/checkpoint_residuals.gpkg" \
+  accuracy:ACCURACY_REPORT="$OUT/dtm_accuracy_report.html"
+
+# the filter's own accuracy: the demo tile carries its true classes (2 = ground)
+run geomatics:groundfilteraccuracy ground_filter_accuracy INPUT="$OUT/demo_classified.laz" \
+  REFERENCE="$OUT/demo/demo.laz" OUTPUT_HTML="$OUT/ground_filter_accuracy.html"
+
 "$PY" - "$OUT" <<'PYEOF'
 import json, sys, pathlib
 out = pathlib.Path(sys.argv[1])
@@ -47,5 +59,9 @@ for f in sorted(out.glob("*.json")):
     nums = {k: round(v, 4) for k, v in res.items() if isinstance(v, float)}
     files = {k: v for k, v in res.items() if isinstance(v, str)}
     print(f"{f.stem}: {nums or ''} {files or ''}")
+    data = json.loads(text[text.find("{"):])
+    for line in data.get("log", {}).get("info", []) if isinstance(data.get("log"), dict) else []:
+        if "RMSE" in line:
+            print("   ", line.strip())
 PYEOF
 echo "demo: all outputs in $OUT"
