@@ -2,6 +2,668 @@
 <!DOCTYPE TS>
 <TS version="2.1">
 <context>
+    <name>@default</name>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="182" />
+        <source>reference ground</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="182" />
+        <source>reference object</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="182" />
+        <source>total</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="171" />
+        <source>Type I (ground rejected) = b/(a+b)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="172" />
+        <source>Type II (object accepted) = c/(c+d)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="173" />
+        <source>Total = (b+c)/n</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="174" />
+        <source>Cohen's kappa</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="176" />
+        <source>filtered cloud</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="176" />
+        <source>its class dimension</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="177" />
+        <source>its ground classes</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="178" />
+        <source>reference</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="178" />
+        <source>(dimension of the filtered cloud)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="179" />
+        <source>reference class dimension</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="180" />
+        <source>reference ground classes</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="182" />
+        <source>item</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="182" />
+        <source>value</source>
+        <translation>القيمة</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="182" />
+        <source>filtered ground</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="182" />
+        <source>filtered object</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="182" />
+        <source>measure</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="182" />
+        <source>Of all misclassified points, {p1:.1f} % are Type I and {p2:.1f} % Type II.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="182" />
+        <source>filtered class</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="353" />
+        <source>points</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="182" />
+        <source>Measures of the ISPRS filter test: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="199" />
+        <source>Ground filter accuracy</source>
+        <translation>دقة فلتر نقاط الأرض</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="296" />
+        <source>input</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="296" />
+        <source>CRS</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="296" />
+        <source>none</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="297" />
+        <source>mode</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="297" />
+        <source>order</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="298" />
+        <source>polynomial</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="363" />
+        <source>tile size (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="302" />
+        <source>threshold T (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="303" />
+        <source>max iterations</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="304" />
+        <source>stop tolerance (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="305" />
+        <source>fitting subset per tile</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="305" />
+        <source>all points</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="306" />
+        <source>seed</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="307" />
+        <source>min points per tile</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="308" />
+        <source>under-populated tiles</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="309" />
+        <source>rejection</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="310" />
+        <source>low-outlier pre-filter</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="311" />
+        <source>pre-filter cell / depth (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="313" />
+        <source>grid origin (min x, min y)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="316" />
+        <source>levels (× tile size)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="317" />
+        <source>window overlap</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="318" />
+        <source>slope factor (m) / cap (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="320" />
+        <source>ground</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="320" />
+        <source>other (object)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="320" />
+        <source>low noise</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="321" />
+        <source>never classified</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="343" />
+        <source>reading</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="346" />
+        <source>filter total</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="347" />
+        <source>run total (read, filter, write)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="348" />
+        <source>points per second (run)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="349" />
+        <source>points per second (filter)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="350" />
+        <source>step</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="351" />
+        <source>Parameters</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="353" />
+        <source>class</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="353" />
+        <source>meaning</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="356" />
+        <source>Kept heights after each iteration, aggregated over the tiles (a tile that has stopped keeps its last values); the layout of the paper's Tables 1–2.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="360" />
+        <source>tiles still iterating</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="363" />
+        <source>level</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="375" />
+        <source>tiles</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="363" />
+        <source>fitted</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="363" />
+        <source>ground seeds</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="363" />
+        <source>seconds</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="368" />
+        <source>The iteration and tile tables below describe the finest level.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="376" />
+        <source>status</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="376" />
+        <source>column</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="376" />
+        <source>row</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="376" />
+        <source>fitting points</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="376" />
+        <source>iterations</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="376" />
+        <source>kept</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="380" />
+        <source>Showing the {k} fullest of {n} tiles.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="384" />
+        <source>stage</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="384" />
+        <source>seconds or points/s</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="386" />
+        <source>Method: tiled least-squares polynomial filter, Damascus Univ. J. Eng. Sci. 29(2), 2013. Improved mode and the low-outlier pre-filter are ours. Accuracy terms (Type I, Type II, total) after Sithole &amp; Vosselman (2004).</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="391" />
+        <source>Ground filter (least-squares polynomial)</source>
+        <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
+    </message>
+</context>
+<context>
+    <name>DsmAlgorithm</name>
+    <message>
+        <location filename="../algorithms/terrain.py" line="527" />
+        <source>DSM and nDSM / canopy height model</source>
+        <translation>نموذج السطح الرقمي (DSM) والنموذج المُطبَّع (nDSM) / نموذج ارتفاع الغطاء النباتي</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="530" />
+        <source>dsm,ndsm,chm,canopy height,surface model,first returns,lidar,raster</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="534" />
+        <source>&lt;p&gt;Digital surface model from a LAS/LAZ file: every cell takes the highest return falling in it (first returns only as an option, the usual canopy surface). With a DTM, also the normalised DSM (nDSM; canopy height model in forests) = DSM − DTM on the DTM's grid. Points are read in chunks, so large files fit in memory.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=cloud.laz CELL_SIZE=1 FIRST_RETURNS=true DTM=dtm.tif OUTPUT=dsm.tif OUTPUT_NDSM=chm.tif.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes used&lt;/b&gt; (CLASSES, default empty = all classes).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Excluded classes&lt;/b&gt; (EXCLUDE_CLASSES, default &lt;code&gt;7,18&lt;/code&gt;: low and high noise).&lt;/li&gt;&lt;li&gt;&lt;b&gt;First returns only&lt;/b&gt; (FIRST_RETURNS, default no).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 1), &lt;b&gt;Extent&lt;/b&gt; (EXTENT), &lt;b&gt;CRS&lt;/b&gt; (CRS): as for the DTM tools; ignored when a DTM is given (its grid and CRS are used so that DSM and DTM align cell for cell).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill distance&lt;/b&gt; (FILL_DISTANCE, m, default 0): empty cells take the value of the nearest non-empty cell within this distance; 0 = leave them nodata.&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM&lt;/b&gt; (DTM, optional raster): needed for the nDSM.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Clamp negative heights to 0&lt;/b&gt; (CLAMP_NEGATIVE, default yes).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DSM&lt;/b&gt; (OUTPUT) and &lt;b&gt;nDSM&lt;/b&gt; (OUTPUT_NDSM, optional, needs DTM): GeoTIFF, nodata −9999.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="562" />
+        <source>Excluded classes</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="565" />
+        <source>First returns only</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="567" />
+        <source>Fill empty cells up to (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="569" />
+        <source>DTM (for the nDSM; its grid is used)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="571" />
+        <source>Clamp negative nDSM heights to 0</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="573" />
+        <source>DSM</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="574" />
+        <source>nDSM / canopy height model</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="602" />
+        <source>The point cloud CRS ({}) differs from the DTM CRS ({}); give a DTM in the point cloud's CRS. No output was written.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="612" />
+        <source>The nDSM needs a DTM: give the DTM parameter (e.g. the output of the IDW DTM algorithm). No output was written.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="668" />
+        <source>DSM / nDSM report</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>DtmAccuracyAlgorithm</name>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="285" />
+        <source>DTM accuracy against check points</source>
+        <translation>دقة نموذج الارتفاعات الرقمي للأرض مقارنةً بنقاط التحقق</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="63" />
+        <source>dtm,dem,accuracy,rmse,check points,gnss,nmad,asprs,vertical accuracy,validation</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="67" />
+        <source>&lt;p&gt;Compares a DTM with independent check points (e.g. GNSS heights). The DTM is sampled at each point (bilinear by default) and the errors e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt; are summarised: N, mean error (bias), MAE, RMSE, standard deviation, max |e|, Pearson r and R² (= r²) between DTM and check heights, NMAD = 1.4826·median|e − median e| (Höhle &amp;amp; Höhle 2009), and the vertical accuracy at 95 % confidence = 1.96·RMSE (ASPRS Positional Accuracy Standards 2014, which assumes unbiased normal errors; the 95th percentile of |e| is reported too). Check points outside the DTM or on nodata are counted and excluded — never read as 0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv → RMSE, r and a report with a scatter plot and an error histogram.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;DTM&lt;/b&gt; (DTM): raster layer; BAND (default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check points&lt;/b&gt; (CHECKPOINTS, optional): point layer; heights from &lt;b&gt;Z_FIELD&lt;/b&gt; or, if empty, from the geometry Z. &lt;b&gt;ID_FIELD&lt;/b&gt; optional.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check point file&lt;/b&gt; (CHECKPOINTS_CSV, optional): delimited text with a header x/easting, y/northing, z/height (and id/name), or columns id x y z without header. Give the layer or the file.&lt;/li&gt;&lt;li&gt;&lt;b&gt;CSV CRS&lt;/b&gt; (CSV_CRS, optional): CRS of the file's coordinates; default = the DTM's CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reproject check points&lt;/b&gt; (REPROJECT, default no): when the check points are in another CRS than the DTM, transform them (x, y only — heights are not converted between vertical datums). Without it such points are an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sampling&lt;/b&gt; (METHOD, 0 bilinear (default), 1 nearest cell).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Residuals&lt;/b&gt; (OUTPUT): point layer with id, z_check, z_dtm, error, abs_error and status (used / outside DTM / DTM nodata).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): HTML with the statistics, a DTM vs check scatter plot, an error histogram and the residual table.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every statistic is also an output number (N, N_OUTSIDE, N_NODATA, ME, MAE, RMSE, STD, MAX_ABS_ERROR, R, R2, NMAD, ACCURACY_95).&lt;/p&gt;</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="101" />
+        <source>DTM</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="102" />
+        <source>Band</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="104" />
+        <source>Check points (point layer)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="107" />
+        <source>Height field (empty = geometry Z)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="111" />
+        <source>Id field</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="114" />
+        <source>Check point file (CSV/TXT)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="118" />
+        <source>CRS of the check point file (default: DTM CRS)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="121" />
+        <source>Reproject check points to the DTM CRS</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="123" />
+        <source>Sampling</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="123" />
+        <source>Bilinear</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="123" />
+        <source>Nearest cell</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="126" />
+        <source>Residuals</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="129" />
+        <source>Report</source>
+        <translation>التقرير</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="129" />
+        <source>HTML files (*.html)</source>
+        <translation>ملفات HTML (*.html)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="141" />
+        <source>Give the check points as a point layer (CHECKPOINTS) or a file (CHECKPOINTS_CSV).</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="145" />
+        <source>Give the check points either as a layer or as a file, not both.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="152" />
+        <source>The check point layer has no Z coordinate; choose the height field (Z_FIELD).</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="170" />
+        <source>The check point layer has no points.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="172" />
+        <source>check point layer</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="176" />
+        <source>check point file</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="180" />
+        <source>The {} is in {} but the DTM is in {}. Reproject the check points first or tick 'Reproject check points to the DTM CRS' (REPROJECT=true; x, y only, heights are not converted). No output was written.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="190" />
+        <source>Check points reprojected from {} to {}</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="193" />
+        <source>Check points assumed to be in the DTM's CRS.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="200" />
+        <source>Choose a DTM raster.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/dtm_accuracy.py" line="212" />
+        <source>N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; {} outside, {} on nodata</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>GcpAccuracyReportAlgorithm</name>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="423" />
+        <source>GCP accuracy report</source>
+        <translation>تقرير دقة نقاط الضبط الأرضي</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="426" />
+        <source>georeference,gcp,ground control points,rms,residuals,accuracy,check points,leave-one-out,polynomial,georeferencer</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="430" />
+        <source>&lt;p&gt;Judges a set of ground control points without warping: fits polynomials of order 1, 2 and 3, reports the residuals and the paper's criteria for the chosen order, compares the three orders and recommends one.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="451" />
+        <source>Image width (px) if no image is given</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="453" />
+        <source>Image height (px) if no image is given</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="456" />
+        <source>Accuracy report</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="456" />
+        <source>HTML files (*.html)</source>
+        <translation>ملفات HTML (*.html)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="459" />
+        <source>Residuals table</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="459" />
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="462" />
+        <source>Report as JSON</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="462" />
+        <source>JSON files (*.json)</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
     <name>GeomaticsAlgorithm</name>
     <message>
         <location filename="../algorithms/base.py" line="38" />
@@ -42,9 +704,77 @@
 <context>
     <name>GeomaticsProvider</name>
     <message>
-        <location filename="../provider/provider.py" line="20" />
+        <location filename="../provider/provider.py" line="21" />
         <source>Geomatics Toolbox</source>
         <translation>صندوق أدوات الجيوماتكس</translation>
+    </message>
+</context>
+<context>
+    <name>GroundFilterAccuracyAlgorithm</name>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="56" />
+        <source>Ground filter accuracy</source>
+        <translation>دقة فلتر نقاط الأرض</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="59" />
+        <source>lidar,ground,filter,accuracy,type i,type ii,total error,kappa,isprs,reference,confusion matrix</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="63" />
+        <source>&lt;p&gt;Compares a filtered point cloud with reference labels, with the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix a (ground kept), b (ground rejected), c (object accepted), d (object rejected), Type I = b/(a+b), Type II = c/(c+d), total = (b+c)/n and Cohen's kappa.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (the ISPRS reference sample, class 2 = ground) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Filtered point cloud&lt;/b&gt; (INPUT, LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Class dimension of the filtered cloud&lt;/b&gt; (FIELD, default classification) and its &lt;b&gt;ground classes&lt;/b&gt; (GROUND_CLASSES, default 2; a list such as 2,8 is accepted). Every other class (1, 7 noise, 0...) counts as object.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference point cloud&lt;/b&gt; (REFERENCE, optional): the same points in the same order (checked: equal count and coordinates). When empty, the reference labels are read from another dimension of INPUT.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference class dimension&lt;/b&gt; (REFERENCE_FIELD, default classification; e.g. user_data or an extra dimension when there is no reference cloud) and its &lt;b&gt;ground classes&lt;/b&gt; (REFERENCE_GROUND_CLASSES, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): the matrix, the errors, and the reference labels of every filtered class.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Per-point error layer&lt;/b&gt; (ERROR_OUTPUT, optional LAS/LAZ): a copy of INPUT, every attribute unchanged except &lt;i&gt;user_data&lt;/i&gt; = 0 correct, 1 Type I (ground rejected), 2 Type II (object accepted); style the point cloud layer by user_data to map where the filter fails.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs A, B, C, D, N, TYPE1, TYPE2, TOTAL and KAPPA are numbers for the graphical modeler.&lt;/p&gt;</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="93" />
+        <source>Filtered point cloud (LAS/LAZ)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="96" />
+        <source>Class dimension of the filtered cloud</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="99" />
+        <source>Ground classes of the filtered cloud</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="101" />
+        <source>Reference point cloud (same points, same order)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="105" />
+        <source>Reference class dimension</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="107" />
+        <source>Reference ground classes</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="109" />
+        <source>Report</source>
+        <translation>التقرير</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="109" />
+        <source>HTML files (*.html)</source>
+        <translation>ملفات HTML (*.html)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="112" />
+        <source>Per-point error layer (user_data: 0 correct, 1 Type I, 2 Type II)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/filter_accuracy.py" line="132" />
+        <source>The error layer must end in .las or .laz: {p}</source>
+        <translation type="unfinished" />
     </message>
 </context>
 <context>
@@ -391,6 +1121,928 @@
         <location filename="../algorithms/gsd_calculator.py" line="294" />
         <source>GSD and photogrammetric accuracy</source>
         <translation>GSD والدقة التصويرية</translation>
+    </message>
+</context>
+<context>
+    <name>IdwDtmAlgorithm</name>
+    <message>
+        <location filename="../algorithms/terrain.py" line="205" />
+        <source>DTM by inverse distance weighting (IDW)</source>
+        <translation>نموذج الارتفاعات الرقمي للأرض بطريقة مقلوب المسافة الموزون (IDW)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="208" />
+        <source>dtm,dem,idw,inverse distance,interpolation,lidar,ground,gdal_grid,invdistnn,raster</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="212" />
+        <source>&lt;p&gt;Interpolates a terrain raster from the ground points of a LAS/LAZ file by inverse distance weighting (Shepard 1968): ẑ = Σ w&lt;sub&gt;i&lt;/sub&gt; z&lt;sub&gt;i&lt;/sub&gt; / Σ w&lt;sub&gt;i&lt;/sub&gt;, w&lt;sub&gt;i&lt;/sub&gt; = 1/d&lt;sub&gt;i&lt;/sub&gt;&lt;sup&gt;p&lt;/sup&gt;, over the nearest neighbours of each cell centre. Same semantics as &lt;code&gt;gdal_grid -a invdistnn&lt;/code&gt; (power, max_points, radius, min_points; a cell centre on a point takes its height exactly), but KD-tree based and processed in blocks: 1 M points onto 1 M cells take seconds.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=1 POWER=3 NEIGHBOURS=12 (the seed paper's best setting, RMSE 0.204 m at 62 GNSS points).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="235" />
+        <source>Power p</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="236" />
+        <source>Neighbours (0 = all within radius)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="238" />
+        <source>Search radius (m, 0 = unlimited)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="240" />
+        <source>Minimum points</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="243" />
+        <source>IDW DTM</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="286" />
+        <source>IDW DTM report</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>KrigingDtmAlgorithm</name>
+    <message>
+        <location filename="../algorithms/terrain.py" line="312" />
+        <source>DTM by kriging (ordinary / universal)</source>
+        <translation>نموذج الارتفاعات الرقمي للأرض بطريقة الكريغينغ (العادي / الشامل)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="315" />
+        <source>dtm,dem,kriging,variogram,geostatistics,pykrige,interpolation,lidar,variance,cross-validation</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="319" />
+        <source>&lt;p&gt;Kriging (Matheron 1963; Cressie 1993) of the ground points of a LAS/LAZ file onto a raster, with a kriging variance (or standard deviation) raster. Ordinary kriging (unknown constant mean) or universal kriging with a linear drift. The variogram is fitted with PyKrige's estimator on a random subsample (or given by you); each cell is then kriged from its nearest points in batched local systems, so 1 M points onto a 1 km² grid at 1 m take about a minute instead of the n×n matrix that makes plain PyKrige run out of memory past ~100 k points.&lt;/p&gt;&lt;p&gt;&lt;b&gt;What is approximated&lt;/b&gt;: the variogram is fitted on a sample of point pairs (FIT_POINTS, reproducible with SEED), by default at the local scale. Local-neighbourhood kriging is not global kriging: only the NEIGHBOURS nearest points are weighted and the mean is re-estimated in every neighbourhood (quasi-stationarity). On terrain this follows the relief better than one global mean (it gave the lowest hold-out RMSE on all four ISPRS samples in the benchmark), but the two differ — typically by centimetres, by decimetres to metres at borders, gaps and steep slopes. With NEIGHBOURS equal to the number of points (≤ 6000) the result is global kriging, identical to PyKrige. With a linear drift the variogram is fitted on the residuals of a least-squares plane; points with identical x, y are merged (mean height). The kriging variance is model-based: check it with CV_POINTS (RMS standardised error near 1 means realistic variances).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=spherical NEIGHBOURS=16 CV_POINTS=1000.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="373" />
+        <source>Kriging type</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="373" />
+        <source>Ordinary</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="373" />
+        <source>Universal (linear drift)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="376" />
+        <source>Variogram model</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="379" />
+        <source>Variogram parameters (e.g. nugget=0.01, sill=4, range=60; empty = fit)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="383" />
+        <source>Neighbours per cell</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="385" />
+        <source>Points for the variogram fit</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="387" />
+        <source>Lag classes</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="389" />
+        <source>Maximum lag (m, 0 = auto: local scale)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="391" />
+        <source>Cross-validation points (0 = off)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="393" />
+        <source>Random seed</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="396" />
+        <source>Kriging DTM</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="397" />
+        <source>Write standard deviation instead of variance</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="400" />
+        <source>Kriging variance</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="439" />
+        <source>Variogram: {}</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="510" />
+        <source>Kriging DTM report</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>LsqGroundFilterAlgorithm</name>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="70" />
+        <source>Ground filter (least-squares polynomial)</source>
+        <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="73" />
+        <source>lidar,ground,filter,bare earth,dtm,classification,least squares,polynomial,tiles,las,laz,isprs</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="77" />
+        <source>&lt;p&gt;Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). In every tile the surface is fitted, points more than THRESHOLD above it are dropped, and the fit is repeated until the minimum, maximum, mean and standard deviation of the kept heights stop changing (TOLERANCE) or MAX_ITERATIONS; then every point with z ≤ ẑ + THRESHOLD is ground. Any classification already in the file is ignored and replaced.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output classes&lt;/b&gt; (ASPRS): 2 ground, 1 other (buildings, vegetation), 7 low noise (pre-filter), 0 never classified (only with SPARSE_TILES = leave unclassified). Every other attribute of every point, the point format, scales, offsets, VLRs and CRS are copied unchanged.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file, projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Order&lt;/b&gt; (ORDER, default 2): 1 = plane z = b0 + b1·x + b2·y; 2 = quadratic z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (better on every sample of the paper).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Tile size&lt;/b&gt; (TILE_SIZE, m, default 50): larger than the largest building, so that every tile holds ground (paper: 100 m for large buildings, 50 m for small ones). Tiles are square, anchored at the minimum x, y.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Threshold&lt;/b&gt; (THRESHOLD, m, default 0.5): 0.5–1.0 m, larger on steeper terrain.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default Faithful): Faithful = the paper. Improved = ours, beyond the paper: coarse-to-fine tiles (2, 1, ½, ¼ × TILE_SIZE) fitted on overlapping windows, each level started from the previous level's ground, and a threshold that grows with the surface slope (by 2.5 m per unit gradient, at most 1 m). On the ISPRS samples it lowers the mean total error from 8.9 % (paper) to about 4.9 % with one parameter set.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours become class 7 and take no part in the fit (NOISE_RADIUS, m, default 5: neighbourhood cell; NOISE_THRESHOLD, m, default 1: depth below the neighbours).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum iterations&lt;/b&gt; (MAX_ITERATIONS, default 5, the paper's tables) and &lt;b&gt;stop tolerance&lt;/b&gt; (TOLERANCE, m, default 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Random fitting subset per tile&lt;/b&gt; (SUBSET_SIZE, points, default 0 = all; the paper used 5000) and its &lt;b&gt;seed&lt;/b&gt; (SEED). All points are classified.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points per tile&lt;/b&gt; (MIN_POINTS, default 0 = 3 × the number of coefficients) and &lt;b&gt;under-populated tiles&lt;/b&gt; (SPARSE_TILES): borrow the nearest fitted tile's surface (default) or leave their points unclassified (class 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rejection&lt;/b&gt; (REJECTION): re-weighted (default; a point dropped earlier may return when the surface moves) or cumulative (dropped for good).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud (OUTPUT, .laz or .las), optional ground-only cloud (GROUND_OUTPUT), optional HTML report (OUTPUT_HTML) with the parameters, class counts, the per-iteration statistics of the paper's Tables 1–2, per-tile statistics, time and points per second; numbers N_GROUND, N_OTHER, N_NOISE, N_UNCLASSIFIED, N_TILES, POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Measure the result against reference labels with &lt;i&gt;Ground filter accuracy&lt;/i&gt;. Nothing is written when the run fails or is cancelled.&lt;/p&gt;</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="132" />
+        <source>Point cloud (LAS/LAZ)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="135" />
+        <source>Polynomial order (1 or 2)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="137" />
+        <source>Tile size (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="138" />
+        <source>Threshold T (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="139" />
+        <source>Mode</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="139" />
+        <source>Faithful (the paper)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="139" />
+        <source>Improved (ours, beyond the paper)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="143" />
+        <source>Remove low outliers first (class 7)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="145" />
+        <source>Low-outlier search cell (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="147" />
+        <source>Low-outlier depth below neighbours (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="150" />
+        <source>Maximum iterations per tile</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="153" />
+        <source>Stop tolerance on min/max/mean/std (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="155" />
+        <source>Random fitting subset per tile (points, 0 = all)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="158" />
+        <source>Random seed of the subset</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="160" />
+        <source>Minimum points per tile (0 = 3 × coefficients)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="163" />
+        <source>Under-populated tiles</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="163" />
+        <source>Borrow the nearest fitted tile's surface</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="163" />
+        <source>Leave their points unclassified (class 0)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="168" />
+        <source>Rejection</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="168" />
+        <source>Re-weighted each iteration (a point may return)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="168" />
+        <source>Cumulative (a rejected point stays out)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="173" />
+        <source>Classified point cloud</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="175" />
+        <source>Ground points only</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="178" />
+        <source>Report</source>
+        <translation>التقرير</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="178" />
+        <source>HTML files (*.html)</source>
+        <translation>ملفات HTML (*.html)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="181" />
+        <source>Ground points</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="181" />
+        <source>Other (object) points</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="181" />
+        <source>Low-noise points</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="181" />
+        <source>Unclassified points</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="181" />
+        <source>Tiles</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="181" />
+        <source>Points per second</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="220" />
+        <source>Choose an output file for the classified cloud (OUTPUT, .laz or .las).</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="224" />
+        <source>Output point clouds must end in .las or .laz: {p}</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="231" />
+        <source>Reading {p}</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="236" />
+        <source>{n} points; filtering ({mode} mode)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="243" />
+        <source>{step}: {n} points kept, ZMin {a:.2f}, ZMax {b:.2f}, ZMean {m:.2f}, σ {s:.2f}; tiles iterating: {t}</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="251" />
+        <source>Ground {g}, other {o}, low noise {z}, unclassified {u}; {t} tiles; {s:.1f} s</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/lsq_filter.py" line="257" />
+        <source>No point was classified as ground, so the ground-only output would be empty; check TILE_SIZE and THRESHOLD.</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>RectifyGcpAlgorithm</name>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="312" />
+        <source>Rectify image with GCPs (polynomial)</source>
+        <translation>التصحيح الهندسي للصورة بنقاط الضبط الأرضي (متعدد حدود)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="315" />
+        <source>georeference,georeferencer,gcp,ground control points,polynomial,rectification,warp,gdalwarp,rms,accuracy</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="319" />
+        <source>&lt;p&gt;Rectifies (warps) an image with ground control points and a 2-D polynomial of order 1, 2 or 3 through GDAL (same result as &lt;i&gt;gdalwarp -order N&lt;/i&gt;), and writes the accuracy report of the fit. The input image is never modified: the GCPs are attached to an in-memory copy.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="343" />
+        <source>Target CRS [default: the GCP CRS]</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="345" />
+        <source>Resampling</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="347" />
+        <source>Output resolution (target CRS units) [default: GR]</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="349" />
+        <source>Output nodata value</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="351" />
+        <source>Rectified image</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="353" />
+        <source>Accuracy report</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="353" />
+        <source>HTML files (*.html)</source>
+        <translation>ملفات HTML (*.html)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="365" />
+        <source>OUTPUT must be a GeoTIFF file (.tif); got {0}.</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>SlopeGroundFilterAlgorithm</name>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="123" />
+        <source>Ground filter (slope-based)</source>
+        <translation>فلتر نقاط الأرض (على أساس الميل)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="126" />
+        <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,vosselman,slope,point cloud</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="130" />
+        <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when some neighbour at horizontal distance 0 &amp;lt; d ≤ r lies more than d·tan θ + h below it. Single pass, neighbours from the whole cloud, exact (labels identical to a brute-force check of every pair) and fast (about a million points per second on one core at r = 3 m). Low outliers get class 7; every other attribute is copied unchanged. The input classification is ignored.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study's setting RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 allows a rise of 2.90 m at 3 m. Tune r and θ to your data with &lt;i&gt;Slope filter threshold sweep&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radius r&lt;/b&gt; (RADIUS, m, default 10, &amp;gt; 0): neighbourhood radius. An object is removed only within r of its edge, so r must exceed half the width of the largest building to remove; larger r costs more time.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope threshold θ&lt;/b&gt; (SLOPE, degrees, default 40, strictly between 0 and 90): the steepest terrain kept. Allowed rise at 3 m: 2.52 m (40°), 2.90 m (44°), 3.33 m (48°), 3.84 m (52°), 4.45 m (56°), 5.20 m (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Height tolerance h&lt;/b&gt; (HEIGHT_TOLERANCE, m, default 0.2, ≥ 0): extra rise allowed for every pair, absorbs ranging noise between close points; 0 is the rule as published.&lt;/li&gt;</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="169" />
+        <source>Radius r (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="171" />
+        <source>Slope threshold θ (degrees)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="173" />
+        <source>Height tolerance h (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="177" />
+        <source>Keep existing noise classes (7, 18)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="180" />
+        <source>Classified point cloud</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="182" />
+        <source>Ground points</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="185" />
+        <source>Report</source>
+        <translation>التقرير</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="185" />
+        <source>HTML files (*.html)</source>
+        <translation>ملفات HTML (*.html)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="188" />
+        <source>Points read</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="188" />
+        <source>Ground points (class 2)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="188" />
+        <source>Non-ground points (class 1)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="188" />
+        <source>Low outliers (class 7)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="188" />
+        <source>Filter speed (points/s)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="204" />
+        <source>Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, mode {}</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="212" />
+        <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>SlopeThresholdSweepAlgorithm</name>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="245" />
+        <source>Slope filter threshold sweep</source>
+        <translation>مسح عتبات فلتر الميل</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="248" />
+        <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="252" />
+        <source>&lt;p&gt;Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h and reports, against reference labels, Type I error (ground rejected), Type II error (objects accepted as ground — the forest study's "error" column, which alone always favours low θ), total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004), then picks the best setting. One exact neighbourhood pass per radius and tolerance: every threshold then costs a single comparison per point.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. ISPRS reference samples: INPUT=samp31.laz (its own classification is the reference).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): LAS/LAZ. Its classification is never used to filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference cloud&lt;/b&gt; (REFERENCE, optional): a labelled copy of the same points in the same order; empty = the input's own classification (e.g. the ISPRS samples).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default "2"): reference classes counted as ground; all others are objects.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope thresholds&lt;/b&gt; (SLOPES, degrees, default "30,35,40,44,48,52,56,60"): a list or start:stop:step.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radii&lt;/b&gt; (RADII, m, default "10") and &lt;b&gt;height tolerances&lt;/b&gt; (HEIGHT_TOLERANCES, m, default "0.2"): lists; each value is one pass.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Best by&lt;/b&gt; (METRIC, default 0): 0 lowest total error, 1 highest kappa, 2 lowest Type I, 3 lowest Type II.&lt;/li&gt;</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="289" />
+        <source>Reference cloud (empty = the input's classification)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="293" />
+        <source>Reference ground classes</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="295" />
+        <source>Slope thresholds θ (degrees; list or start:stop:step)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="298" />
+        <source>Radii r (m; list)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="300" />
+        <source>Height tolerances h (m; list)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="303" />
+        <source>Best by</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="303" />
+        <source>Lowest total error</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="303" />
+        <source>Highest kappa</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="303" />
+        <source>Lowest Type I error</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="303" />
+        <source>Lowest Type II error</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="310" />
+        <source>Sweep table</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="310" />
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="312" />
+        <source>Report</source>
+        <translation>التقرير</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="312" />
+        <source>HTML files (*.html)</source>
+        <translation>ملفات HTML (*.html)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="315" />
+        <source>Classified with the best setting</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="318" />
+        <source>Best radius (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="318" />
+        <source>Best slope threshold (degrees)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="318" />
+        <source>Best height tolerance (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="318" />
+        <source>Type I error at the best setting (%)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="318" />
+        <source>Type II error at the best setting (%)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="318" />
+        <source>Total error at the best setting (%)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="318" />
+        <source>Kappa at the best setting (%)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="318" />
+        <source>Settings evaluated</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="327" />
+        <source>Best setting</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="347" />
+        <source>Sweeping {} thresholds × {} radii × {} tolerances</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="360" />
+        <source>Best ({}): {} — total {:.2f} %</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>_GcpBase</name>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="101" />
+        <source>Image (raster) to rectify</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="101" />
+        <source>Image (raster) the GCPs were measured on</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="104" />
+        <source>GCP file (.points or CSV)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="104" />
+        <source>GCP files (*.points *.csv *.txt);;All files (*.*)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="108" />
+        <source>…or GCP point layer</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="111" />
+        <source>Layer field: image column</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="111" />
+        <source>Layer field: image row</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="111" />
+        <source>Layer field: point id</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="111" />
+        <source>Layer field: enabled (1/0)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="111" />
+        <source>Layer field: role (gcp/check)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="111" />
+        <source>Layer field: weight (&gt; 0)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="121" />
+        <source>Image coordinates refer to</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="121" />
+        <source>pixel corners: (0,0) = top-left corner of the image (GDAL/QGIS)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="121" />
+        <source>pixel centres: integer = centre of a pixel (0-based indices)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="126" />
+        <source>CRS of the GCP map coordinates (if the file does not say)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="128" />
+        <source>Polynomial order (1–3)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="130" />
+        <source>Ground resolution GR (map units/pixel) [default: from the GCPs]</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="149" />
+        <source>INPUT: no image given or it cannot be opened; give a raster file.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="154" />
+        <source>INPUT: {0} is not a local raster file; save the image to a file first.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="169" />
+        <source>Give either GCP_FILE or GCP_LAYER, not both.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="187" />
+        <source>No GCPs: give a GCP file (GCP_FILE, .points or CSV) or a point layer (GCP_LAYER with COL_FIELD and ROW_FIELD); no &lt;image&gt;.points file was found next to the image either.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="202" />
+        <source>GCP_LAYER needs COL_FIELD and ROW_FIELD: the fields holding the image column and row of each point.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="209" />
+        <source>GCP layer feature {0} has no geometry.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="268" />
+        <source>The GCP map coordinates have no CRS: the file has no '#CRS:' line and GCP_CRS is not set. Set GCP_CRS (e.g. EPSG:22780) and run again.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/gcp_rectification.py" line="280" />
+        <source>The GCP CRS is geographic (degrees): the accuracy criteria need map units of length. Set TARGET_CRS (or GCP_CRS) to a projected CRS, e.g. the UTM zone of the image.</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>_GridAlgorithm</name>
+    <message>
+        <location filename="../algorithms/terrain.py" line="97" />
+        <source>Point cloud (LAS/LAZ)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="100" />
+        <source>Classes used (comma-separated; empty = all)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="103" />
+        <source>Cell size (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="104" />
+        <source>Extent</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="105" />
+        <source>CRS (overrides the LAS file's CRS)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="109" />
+        <source>Maximum distance to data (m, 0 = auto)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="111" />
+        <source>Fill data gaps (interpolate far from data)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="116" />
+        <source>Report</source>
+        <translation>التقرير</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="116" />
+        <source>HTML files (*.html)</source>
+        <translation>ملفات HTML (*.html)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="127" />
+        <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="142" />
+        <source>Cell size must be &gt; 0 (metres); give e.g. 1.0. No output was written.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="159" />
+        <source>Reading points of class(es) {} from {}</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/terrain.py" line="162" />
+        <source>{} of {} points selected</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>_SlopeCommon</name>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="43" />
+        <source>Point cloud (LAS/LAZ)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="48" />
+        <source>Returns filtered</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="48" />
+        <source>All returns</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="48" />
+        <source>Last returns only</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="51" />
+        <source>Remove low outliers first (class 7)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="53" />
+        <source>Low-outlier search cell (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="55" />
+        <source>Low-outlier depth below neighbours (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="60" />
+        <source>Mode</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="60" />
+        <source>Exact (Vosselman 2000)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="60" />
+        <source>Terrain-adaptive (toolbox extension)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="64" />
+        <source>Adaptive mode: trend cell (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="66" />
+        <source>Adaptive mode: trend window, &gt; largest building (m)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="75" />
+        <source>TREND_CELL and TREND_WINDOW must be &gt; 0 metres in adaptive mode (e.g. 10 and 60).</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <location filename="../algorithms/slope_filter.py" line="81" />
+        <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
+        <translation type="unfinished" />
     </message>
 </context>
 </TS>
