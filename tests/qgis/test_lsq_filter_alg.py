@@ -74,16 +74,24 @@ def test_input_classification_is_ignored(qgis_processing, tile, tmp_path):
 
 
 def test_improved_mode_and_advanced_parameters(qgis_processing, tile, tmp_path):
+    import csv
     path, t = tile
-    out = tmp_path / "i.laz"
+    out, tiles_csv = tmp_path / "i.laz", tmp_path / "tiles.csv"
     res = qgis_processing.run(ALG, {"INPUT": str(path), "OUTPUT": str(out), "MODE": 1,
                                     "NOISE": False, "SUBSET_SIZE": 2000, "SEED": 5,
-                                    "REJECTION": 1, "MAX_ITERATIONS": 8})
+                                    "REJECTION": 1, "MAX_ITERATIONS": 8,
+                                    "TILE_STATS": str(tiles_csv)})
     core = lsq_ground_filter(t.x, t.y, t.z, mode="improved", noise=False, subset_size=2000,
                              seed=5, rejection="cumulative", max_iterations=8)
     cls = read_las(out, ("classification",))["classification"]
     assert np.array_equal(cls, core.classification)
     assert res["N_NOISE"] == 0
+    rows = list(csv.DictReader(tiles_csv.open(encoding="utf-8")))
+    assert len(rows) == int(np.sum(core.tile_iterations + 1))
+    first = [r for r in rows if r["step"] == "0"]
+    assert len(first) == core.grid.count
+    assert sum(int(r["points"]) for r in first) == core.iteration_stats[0]["points"]
+    assert "b1_x²" in rows[0]
 
 
 class _CancelAfter:
