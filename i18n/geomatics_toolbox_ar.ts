@@ -6,77 +6,77 @@
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>reference ground</source>
-        <translation type="unfinished" />
+        <translation>أرض (في المرجع)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>reference object</source>
-        <translation type="unfinished" />
+        <translation>جسم (في المرجع)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>total</source>
-        <translation type="unfinished" />
+        <translation>المجموع</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="171" />
         <source>Type I (ground rejected) = b/(a+b)</source>
-        <translation type="unfinished" />
+        <translation>خطأ النوع الأول (رفض نقاط الأرض) = b/(a+b)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="172" />
         <source>Type II (object accepted) = c/(c+d)</source>
-        <translation type="unfinished" />
+        <translation>خطأ النوع الثاني (قبول الأجسام كأرض) = c/(c+d)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="173" />
         <source>Total = (b+c)/n</source>
-        <translation type="unfinished" />
+        <translation>الخطأ الكلي = (b+c)/n</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="174" />
         <source>Cohen's kappa</source>
-        <translation type="unfinished" />
+        <translation>معامل كابا لكوهين</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="176" />
         <source>filtered cloud</source>
-        <translation type="unfinished" />
+        <translation>السحابة المفلترة</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="176" />
         <source>its class dimension</source>
-        <translation type="unfinished" />
+        <translation>بُعد الصنف فيها</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="177" />
         <source>its ground classes</source>
-        <translation type="unfinished" />
+        <translation>أصناف الأرض فيها</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="178" />
         <source>reference</source>
-        <translation type="unfinished" />
+        <translation>المرجع</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="178" />
         <source>(dimension of the filtered cloud)</source>
-        <translation type="unfinished" />
+        <translation>(بُعد في السحابة المفلترة)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="179" />
         <source>reference class dimension</source>
-        <translation type="unfinished" />
+        <translation>بُعد الصنف في المرجع</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="180" />
         <source>reference ground classes</source>
-        <translation type="unfinished" />
+        <translation>أصناف الأرض في المرجع</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>item</source>
-        <translation type="unfinished" />
+        <translation>البند</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
@@ -86,37 +86,37 @@
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>filtered ground</source>
-        <translation type="unfinished" />
+        <translation>أرض (بعد الفلترة)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>filtered object</source>
-        <translation type="unfinished" />
+        <translation>جسم (بعد الفلترة)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>measure</source>
-        <translation type="unfinished" />
+        <translation>المقياس</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>Of all misclassified points, {p1:.1f} % are Type I and {p2:.1f} % Type II.</source>
-        <translation type="unfinished" />
+        <translation>من بين جميع النقاط المصنَّفة خطأً، {p1:.1f} % من النوع الأول و{p2:.1f} % من النوع الثاني.</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>filtered class</source>
-        <translation type="unfinished" />
+        <translation>الصنف بعد الفلترة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="353" />
         <source>points</source>
-        <translation type="unfinished" />
+        <translation>عدد النقاط</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>Measures of the ISPRS filter test: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</source>
-        <translation type="unfinished" />
+        <translation>مقاييس اختبار فلاتر ISPRS: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="199" />
@@ -126,267 +126,267 @@
     <message>
         <location filename="../algorithms/lsq_filter.py" line="296" />
         <source>input</source>
-        <translation type="unfinished" />
+        <translation>ملف الإدخال</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="296" />
         <source>CRS</source>
-        <translation type="unfinished" />
+        <translation>نظام الإحداثيات (CRS)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="296" />
         <source>none</source>
-        <translation type="unfinished" />
+        <translation>لا يوجد</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="297" />
         <source>mode</source>
-        <translation type="unfinished" />
+        <translation>النمط</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="297" />
         <source>order</source>
-        <translation type="unfinished" />
+        <translation>الدرجة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="298" />
         <source>polynomial</source>
-        <translation type="unfinished" />
+        <translation>متعدد الحدود</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="363" />
         <source>tile size (m)</source>
-        <translation type="unfinished" />
+        <translation>حجم البلاطة (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="302" />
         <source>threshold T (m)</source>
-        <translation type="unfinished" />
+        <translation>العتبة T (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="303" />
         <source>max iterations</source>
-        <translation type="unfinished" />
+        <translation>الحد الأقصى للتكرارات</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="304" />
         <source>stop tolerance (m)</source>
-        <translation type="unfinished" />
+        <translation>سماحية التوقف (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="305" />
         <source>fitting subset per tile</source>
-        <translation type="unfinished" />
+        <translation>المجموعة الجزئية للمواءمة في كل بلاطة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="305" />
         <source>all points</source>
-        <translation type="unfinished" />
+        <translation>جميع النقاط</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="306" />
         <source>seed</source>
-        <translation type="unfinished" />
+        <translation>البذرة العشوائية</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="307" />
         <source>min points per tile</source>
-        <translation type="unfinished" />
+        <translation>الحد الأدنى للنقاط في البلاطة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="308" />
         <source>under-populated tiles</source>
-        <translation type="unfinished" />
+        <translation>البلاطات قليلة النقاط</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="309" />
         <source>rejection</source>
-        <translation type="unfinished" />
+        <translation>الاستبعاد</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="310" />
         <source>low-outlier pre-filter</source>
-        <translation type="unfinished" />
+        <translation>الفلترة المسبقة للقيم الشاذة المنخفضة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="311" />
         <source>pre-filter cell / depth (m)</source>
-        <translation type="unfinished" />
+        <translation>خلية / عمق الفلترة المسبقة (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="313" />
         <source>grid origin (min x, min y)</source>
-        <translation type="unfinished" />
+        <translation>مبدأ الشبكة (أصغر x، أصغر y)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="316" />
         <source>levels (× tile size)</source>
-        <translation type="unfinished" />
+        <translation>المستويات (× حجم البلاطة)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="317" />
         <source>window overlap</source>
-        <translation type="unfinished" />
+        <translation>تداخل النوافذ</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="318" />
         <source>slope factor (m) / cap (m)</source>
-        <translation type="unfinished" />
+        <translation>معامل الميل (م) / الحد الأعلى (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="320" />
         <source>ground</source>
-        <translation type="unfinished" />
+        <translation>أرض</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="320" />
         <source>other (object)</source>
-        <translation type="unfinished" />
+        <translation>أخرى (جسم)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="320" />
         <source>low noise</source>
-        <translation type="unfinished" />
+        <translation>ضوضاء منخفضة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="321" />
         <source>never classified</source>
-        <translation type="unfinished" />
+        <translation>لم تُصنَّف قط</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="343" />
         <source>reading</source>
-        <translation type="unfinished" />
+        <translation>القراءة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="346" />
         <source>filter total</source>
-        <translation type="unfinished" />
+        <translation>إجمالي الفلترة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="347" />
         <source>run total (read, filter, write)</source>
-        <translation type="unfinished" />
+        <translation>إجمالي التشغيل (قراءة، فلترة، كتابة)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="348" />
         <source>points per second (run)</source>
-        <translation type="unfinished" />
+        <translation>نقطة في الثانية (التشغيل)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="349" />
         <source>points per second (filter)</source>
-        <translation type="unfinished" />
+        <translation>نقطة في الثانية (الفلترة)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="350" />
         <source>step</source>
-        <translation type="unfinished" />
+        <translation>الخطوة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="351" />
         <source>Parameters</source>
-        <translation type="unfinished" />
+        <translation>المعاملات</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="353" />
         <source>class</source>
-        <translation type="unfinished" />
+        <translation>الصنف</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="353" />
         <source>meaning</source>
-        <translation type="unfinished" />
+        <translation>المعنى</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="356" />
         <source>Kept heights after each iteration, aggregated over the tiles (a tile that has stopped keeps its last values); the layout of the paper's Tables 1–2.</source>
-        <translation type="unfinished" />
+        <translation>الارتفاعات المُبقاة بعد كل تكرار، مجمَّعة على البلاطات (البلاطة التي توقفت تحتفظ بآخر قيمها)؛ على نسق الجدولين 1–2 في البحث.</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="360" />
         <source>tiles still iterating</source>
-        <translation type="unfinished" />
+        <translation>بلاطات قيد التكرار</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="363" />
         <source>level</source>
-        <translation type="unfinished" />
+        <translation>المستوى</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="375" />
         <source>tiles</source>
-        <translation type="unfinished" />
+        <translation>عدد البلاطات</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="363" />
         <source>fitted</source>
-        <translation type="unfinished" />
+        <translation>بلاطات مُوائَمة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="363" />
         <source>ground seeds</source>
-        <translation type="unfinished" />
+        <translation>نقاط الأرض الابتدائية</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="363" />
         <source>seconds</source>
-        <translation type="unfinished" />
+        <translation>ثانية</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="368" />
         <source>The iteration and tile tables below describe the finest level.</source>
-        <translation type="unfinished" />
+        <translation>يصف جدولا التكرارات والبلاطات أدناه المستوى الأدق.</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="376" />
         <source>status</source>
-        <translation type="unfinished" />
+        <translation>الحالة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="376" />
         <source>column</source>
-        <translation type="unfinished" />
+        <translation>العمود</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="376" />
         <source>row</source>
-        <translation type="unfinished" />
+        <translation>الصف</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="376" />
         <source>fitting points</source>
-        <translation type="unfinished" />
+        <translation>نقاط المواءمة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="376" />
         <source>iterations</source>
-        <translation type="unfinished" />
+        <translation>التكرارات</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="376" />
         <source>kept</source>
-        <translation type="unfinished" />
+        <translation>المُبقاة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="380" />
         <source>Showing the {k} fullest of {n} tiles.</source>
-        <translation type="unfinished" />
+        <translation>تُعرض البلاطات الـ{k} الأكثر نقاطاً من أصل {n} بلاطة.</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="384" />
         <source>stage</source>
-        <translation type="unfinished" />
+        <translation>المرحلة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="384" />
         <source>seconds or points/s</source>
-        <translation type="unfinished" />
+        <translation>ثانية أو نقطة/ث</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="386" />
         <source>Method: tiled least-squares polynomial filter, Damascus Univ. J. Eng. Sci. 29(2), 2013. Improved mode and the low-outlier pre-filter are ours. Accuracy terms (Type I, Type II, total) after Sithole &amp; Vosselman (2004).</source>
-        <translation type="unfinished" />
+        <translation>الطريقة: فلتر متعدد الحدود بالمربعات الصغرى على بلاطات، مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013. النمط المحسَّن والفلترة المسبقة للقيم الشاذة المنخفضة من إضافتنا. مصطلحات الدقة (النوع الأول، النوع الثاني، الكلي) وفق Sithole &amp; Vosselman (2004).</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="391" />
@@ -404,7 +404,7 @@
     <message>
         <location filename="../algorithms/terrain.py" line="530" />
         <source>dsm,ndsm,chm,canopy height,surface model,first returns,lidar,raster</source>
-        <translation type="unfinished" />
+        <translation>dsm,ndsm,chm,ارتفاع الغطاء النباتي,نموذج السطح,الارتدادات الأولى,ليدار,راستر</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="534" />
@@ -414,52 +414,52 @@
     <message>
         <location filename="../algorithms/terrain.py" line="562" />
         <source>Excluded classes</source>
-        <translation type="unfinished" />
+        <translation>الأصناف المستبعدة</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="565" />
         <source>First returns only</source>
-        <translation type="unfinished" />
+        <translation>الارتدادات الأولى فقط</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="567" />
         <source>Fill empty cells up to (m)</source>
-        <translation type="unfinished" />
+        <translation>ملء الخلايا الفارغة حتى مسافة (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="569" />
         <source>DTM (for the nDSM; its grid is used)</source>
-        <translation type="unfinished" />
+        <translation>نموذج الارتفاعات الرقمي للأرض DTM (لحساب nDSM؛ تُستخدم شبكته)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="571" />
         <source>Clamp negative nDSM heights to 0</source>
-        <translation type="unfinished" />
+        <translation>تحويل ارتفاعات nDSM السالبة إلى 0</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="573" />
         <source>DSM</source>
-        <translation type="unfinished" />
+        <translation>نموذج السطح الرقمي (DSM)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="574" />
         <source>nDSM / canopy height model</source>
-        <translation type="unfinished" />
+        <translation>nDSM / نموذج ارتفاع الغطاء النباتي</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="602" />
         <source>The point cloud CRS ({}) differs from the DTM CRS ({}); give a DTM in the point cloud's CRS. No output was written.</source>
-        <translation type="unfinished" />
+        <translation>نظام إحداثيات سحابة النقاط ({}) يختلف عن نظام إحداثيات نموذج الارتفاعات الرقمي ({})؛ استخدم نموذج ارتفاعات رقمياً بنظام إحداثيات سحابة النقاط. لم تُكتب أي مخرجات.</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="612" />
         <source>The nDSM needs a DTM: give the DTM parameter (e.g. the output of the IDW DTM algorithm). No output was written.</source>
-        <translation type="unfinished" />
+        <translation>يتطلب nDSM نموذج ارتفاعات رقمياً للأرض: حدِّد المعامل DTM (مثلاً مخرج خوارزمية نموذج الارتفاعات الرقمي بطريقة IDW). لم تُكتب أي مخرجات.</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="668" />
         <source>DSM / nDSM report</source>
-        <translation type="unfinished" />
+        <translation>تقرير DSM / nDSM</translation>
     </message>
 </context>
 <context>
@@ -472,7 +472,7 @@
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="63" />
         <source>dtm,dem,accuracy,rmse,check points,gnss,nmad,asprs,vertical accuracy,validation</source>
-        <translation type="unfinished" />
+        <translation>dtm,dem,الدقة,rmse,نقاط التحقق,gnss,nmad,asprs,الدقة الرأسية,التحقق من الصحة</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="67" />
@@ -482,62 +482,62 @@
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="101" />
         <source>DTM</source>
-        <translation type="unfinished" />
+        <translation>نموذج الارتفاعات الرقمي للأرض (DTM)</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="102" />
         <source>Band</source>
-        <translation type="unfinished" />
+        <translation>الحزمة</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="104" />
         <source>Check points (point layer)</source>
-        <translation type="unfinished" />
+        <translation>نقاط التحقق (طبقة نقطية)</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="107" />
         <source>Height field (empty = geometry Z)</source>
-        <translation type="unfinished" />
+        <translation>حقل الارتفاع (فارغ = قيمة Z من الهندسة)</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="111" />
         <source>Id field</source>
-        <translation type="unfinished" />
+        <translation>حقل المعرِّف</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="114" />
         <source>Check point file (CSV/TXT)</source>
-        <translation type="unfinished" />
+        <translation>ملف نقاط التحقق (CSV/TXT)</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="118" />
         <source>CRS of the check point file (default: DTM CRS)</source>
-        <translation type="unfinished" />
+        <translation>نظام إحداثيات ملف نقاط التحقق (الافتراضي: نظام إحداثيات DTM)</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="121" />
         <source>Reproject check points to the DTM CRS</source>
-        <translation type="unfinished" />
+        <translation>إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="123" />
         <source>Sampling</source>
-        <translation type="unfinished" />
+        <translation>طريقة الاعتيان</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="123" />
         <source>Bilinear</source>
-        <translation type="unfinished" />
+        <translation>ثنائي الخطية</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="123" />
         <source>Nearest cell</source>
-        <translation type="unfinished" />
+        <translation>أقرب خلية</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="126" />
         <source>Residuals</source>
-        <translation type="unfinished" />
+        <translation>البواقي</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="129" />
@@ -552,57 +552,57 @@
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="141" />
         <source>Give the check points as a point layer (CHECKPOINTS) or a file (CHECKPOINTS_CSV).</source>
-        <translation type="unfinished" />
+        <translation>حدِّد نقاط التحقق كطبقة نقطية (CHECKPOINTS) أو كملف (CHECKPOINTS_CSV).</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="145" />
         <source>Give the check points either as a layer or as a file, not both.</source>
-        <translation type="unfinished" />
+        <translation>حدِّد نقاط التحقق إما كطبقة أو كملف، لا الاثنين معاً.</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="152" />
         <source>The check point layer has no Z coordinate; choose the height field (Z_FIELD).</source>
-        <translation type="unfinished" />
+        <translation>طبقة نقاط التحقق لا تحوي الإحداثي Z؛ اختر حقل الارتفاع (Z_FIELD).</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="170" />
         <source>The check point layer has no points.</source>
-        <translation type="unfinished" />
+        <translation>طبقة نقاط التحقق لا تحوي أي نقطة.</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="172" />
         <source>check point layer</source>
-        <translation type="unfinished" />
+        <translation>طبقة نقاط التحقق</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="176" />
         <source>check point file</source>
-        <translation type="unfinished" />
+        <translation>ملف نقاط التحقق</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="180" />
         <source>The {} is in {} but the DTM is in {}. Reproject the check points first or tick 'Reproject check points to the DTM CRS' (REPROJECT=true; x, y only, heights are not converted). No output was written.</source>
-        <translation type="unfinished" />
+        <translation>{} بنظام الإحداثيات {} لكن نموذج الارتفاعات الرقمي بنظام {}. أعد إسقاط نقاط التحقق أولاً أو فعِّل الخيار 'إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM' (REPROJECT=true؛ x وy فقط، ولا تُحوَّل الارتفاعات). لم تُكتب أي مخرجات.</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="190" />
         <source>Check points reprojected from {} to {}</source>
-        <translation type="unfinished" />
+        <translation>أُعيد إسقاط نقاط التحقق من {} إلى {}</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="193" />
         <source>Check points assumed to be in the DTM's CRS.</source>
-        <translation type="unfinished" />
+        <translation>افتُرض أن نقاط التحقق بنظام إحداثيات نموذج الارتفاعات الرقمي.</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="200" />
         <source>Choose a DTM raster.</source>
-        <translation type="unfinished" />
+        <translation>اختر طبقة راستر لنموذج الارتفاعات الرقمي للأرض.</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="212" />
         <source>N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; {} outside, {} on nodata</source>
-        <translation type="unfinished" />
+        <translation>N = {}، RMSE = {:.4f} م، ME = {:.4f} م، r = {:.5f}؛ {} خارج النموذج، {} على خلايا nodata</translation>
     </message>
 </context>
 <context>
@@ -615,7 +615,7 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="426" />
         <source>georeference,gcp,ground control points,rms,residuals,accuracy,check points,leave-one-out,polynomial,georeferencer</source>
-        <translation type="unfinished" />
+        <translation>إسناد جغرافي,gcp,نقاط الضبط الأرضي,rms,البواقي,الدقة,نقاط التحقق,الاستبعاد الفردي,متعدد الحدود,georeferencer</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="430" />
@@ -625,17 +625,17 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="451" />
         <source>Image width (px) if no image is given</source>
-        <translation type="unfinished" />
+        <translation>عرض الصورة (بكسل) إن لم تُحدَّد صورة</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="453" />
         <source>Image height (px) if no image is given</source>
-        <translation type="unfinished" />
+        <translation>ارتفاع الصورة (بكسل) إن لم تُحدَّد صورة</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="456" />
         <source>Accuracy report</source>
-        <translation type="unfinished" />
+        <translation>تقرير الدقة</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="456" />
@@ -645,22 +645,22 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="459" />
         <source>Residuals table</source>
-        <translation type="unfinished" />
+        <translation>جدول البواقي</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="459" />
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished" />
+        <translation>ملفات CSV (*.csv)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="462" />
         <source>Report as JSON</source>
-        <translation type="unfinished" />
+        <translation>التقرير بصيغة JSON</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="462" />
         <source>JSON files (*.json)</source>
-        <translation type="unfinished" />
+        <translation>ملفات JSON (*.json)</translation>
     </message>
 </context>
 <context>
@@ -719,7 +719,7 @@
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="59" />
         <source>lidar,ground,filter,accuracy,type i,type ii,total error,kappa,isprs,reference,confusion matrix</source>
-        <translation type="unfinished" />
+        <translation>ليدار,أرض,فلتر,الدقة,النوع الأول,النوع الثاني,الخطأ الكلي,كابا,isprs,مرجع,مصفوفة الالتباس</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="63" />
@@ -729,32 +729,32 @@
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="93" />
         <source>Filtered point cloud (LAS/LAZ)</source>
-        <translation type="unfinished" />
+        <translation>سحابة النقاط المفلترة (LAS/LAZ)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="96" />
         <source>Class dimension of the filtered cloud</source>
-        <translation type="unfinished" />
+        <translation>بُعد الصنف في السحابة المفلترة</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="99" />
         <source>Ground classes of the filtered cloud</source>
-        <translation type="unfinished" />
+        <translation>أصناف الأرض في السحابة المفلترة</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="101" />
         <source>Reference point cloud (same points, same order)</source>
-        <translation type="unfinished" />
+        <translation>سحابة النقاط المرجعية (النقاط نفسها وبالترتيب نفسه)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="105" />
         <source>Reference class dimension</source>
-        <translation type="unfinished" />
+        <translation>بُعد الصنف في المرجع</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="107" />
         <source>Reference ground classes</source>
-        <translation type="unfinished" />
+        <translation>أصناف الأرض في المرجع</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="109" />
@@ -769,12 +769,12 @@
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="112" />
         <source>Per-point error layer (user_data: 0 correct, 1 Type I, 2 Type II)</source>
-        <translation type="unfinished" />
+        <translation>طبقة الخطأ لكل نقطة (user_data: 0 صحيح، 1 النوع الأول، 2 النوع الثاني)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="132" />
         <source>The error layer must end in .las or .laz: {p}</source>
-        <translation type="unfinished" />
+        <translation>يجب أن ينتهي اسم ملف طبقة الخطأ بالامتداد .las أو .laz: {p}</translation>
     </message>
 </context>
 <context>
@@ -1133,7 +1133,7 @@
     <message>
         <location filename="../algorithms/terrain.py" line="208" />
         <source>dtm,dem,idw,inverse distance,interpolation,lidar,ground,gdal_grid,invdistnn,raster</source>
-        <translation type="unfinished" />
+        <translation>dtm,dem,idw,مقلوب المسافة,الاستيفاء,ليدار,أرض,gdal_grid,invdistnn,راستر</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="212" />
@@ -1143,32 +1143,32 @@
     <message>
         <location filename="../algorithms/terrain.py" line="235" />
         <source>Power p</source>
-        <translation type="unfinished" />
+        <translation>الأس p</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="236" />
         <source>Neighbours (0 = all within radius)</source>
-        <translation type="unfinished" />
+        <translation>عدد الجيران (0 = كل النقاط ضمن نصف القطر)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="238" />
         <source>Search radius (m, 0 = unlimited)</source>
-        <translation type="unfinished" />
+        <translation>نصف قطر البحث (م، 0 = غير محدود)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="240" />
         <source>Minimum points</source>
-        <translation type="unfinished" />
+        <translation>الحد الأدنى لعدد النقاط</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="243" />
         <source>IDW DTM</source>
-        <translation type="unfinished" />
+        <translation>نموذج الارتفاعات الرقمي للأرض بطريقة IDW</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="286" />
         <source>IDW DTM report</source>
-        <translation type="unfinished" />
+        <translation>تقرير نموذج الارتفاعات الرقمي بطريقة IDW</translation>
     </message>
 </context>
 <context>
@@ -1181,7 +1181,7 @@
     <message>
         <location filename="../algorithms/terrain.py" line="315" />
         <source>dtm,dem,kriging,variogram,geostatistics,pykrige,interpolation,lidar,variance,cross-validation</source>
-        <translation type="unfinished" />
+        <translation>dtm,dem,كريغينغ,فاريوغرام,الإحصاء الجغرافي,pykrige,الاستيفاء,ليدار,التباين,التحقق المتقاطع</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="319" />
@@ -1191,82 +1191,82 @@
     <message>
         <location filename="../algorithms/terrain.py" line="373" />
         <source>Kriging type</source>
-        <translation type="unfinished" />
+        <translation>نوع الكريغينغ</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="373" />
         <source>Ordinary</source>
-        <translation type="unfinished" />
+        <translation>عادي</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="373" />
         <source>Universal (linear drift)</source>
-        <translation type="unfinished" />
+        <translation>شامل (انجراف خطي)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="376" />
         <source>Variogram model</source>
-        <translation type="unfinished" />
+        <translation>نموذج الفاريوغرام</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="379" />
         <source>Variogram parameters (e.g. nugget=0.01, sill=4, range=60; empty = fit)</source>
-        <translation type="unfinished" />
+        <translation>معاملات الفاريوغرام (مثلاً nugget=0.01, sill=4, range=60؛ فارغ = مواءمة تلقائية)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="383" />
         <source>Neighbours per cell</source>
-        <translation type="unfinished" />
+        <translation>عدد الجيران لكل خلية</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="385" />
         <source>Points for the variogram fit</source>
-        <translation type="unfinished" />
+        <translation>عدد النقاط لمواءمة الفاريوغرام</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="387" />
         <source>Lag classes</source>
-        <translation type="unfinished" />
+        <translation>عدد فئات مسافة الإزاحة (lag)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="389" />
         <source>Maximum lag (m, 0 = auto: local scale)</source>
-        <translation type="unfinished" />
+        <translation>أقصى مسافة إزاحة (م، 0 = تلقائي: المقياس المحلي)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="391" />
         <source>Cross-validation points (0 = off)</source>
-        <translation type="unfinished" />
+        <translation>نقاط التحقق المتقاطع (0 = معطَّل)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="393" />
         <source>Random seed</source>
-        <translation type="unfinished" />
+        <translation>البذرة العشوائية</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="396" />
         <source>Kriging DTM</source>
-        <translation type="unfinished" />
+        <translation>نموذج الارتفاعات الرقمي للأرض بطريقة الكريغينغ</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="397" />
         <source>Write standard deviation instead of variance</source>
-        <translation type="unfinished" />
+        <translation>كتابة الانحراف المعياري بدلاً من التباين</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="400" />
         <source>Kriging variance</source>
-        <translation type="unfinished" />
+        <translation>تباين الكريغينغ</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="439" />
         <source>Variogram: {}</source>
-        <translation type="unfinished" />
+        <translation>الفاريوغرام: {}</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="510" />
         <source>Kriging DTM report</source>
-        <translation type="unfinished" />
+        <translation>تقرير نموذج الارتفاعات الرقمي بطريقة الكريغينغ</translation>
     </message>
 </context>
 <context>
@@ -1279,7 +1279,7 @@
     <message>
         <location filename="../algorithms/lsq_filter.py" line="73" />
         <source>lidar,ground,filter,bare earth,dtm,classification,least squares,polynomial,tiles,las,laz,isprs</source>
-        <translation type="unfinished" />
+        <translation>ليدار,أرض,فلتر,الأرض العارية,dtm,تصنيف,المربعات الصغرى,متعدد الحدود,بلاطات,las,laz,isprs</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="77" />
@@ -1289,117 +1289,117 @@
     <message>
         <location filename="../algorithms/lsq_filter.py" line="132" />
         <source>Point cloud (LAS/LAZ)</source>
-        <translation type="unfinished" />
+        <translation>سحابة النقاط (LAS/LAZ)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="135" />
         <source>Polynomial order (1 or 2)</source>
-        <translation type="unfinished" />
+        <translation>درجة متعدد الحدود (1 أو 2)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="137" />
         <source>Tile size (m)</source>
-        <translation type="unfinished" />
+        <translation>حجم البلاطة (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="138" />
         <source>Threshold T (m)</source>
-        <translation type="unfinished" />
+        <translation>العتبة T (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="139" />
         <source>Mode</source>
-        <translation type="unfinished" />
+        <translation>النمط</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="139" />
         <source>Faithful (the paper)</source>
-        <translation type="unfinished" />
+        <translation>مطابق (طريقة البحث)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="139" />
         <source>Improved (ours, beyond the paper)</source>
-        <translation type="unfinished" />
+        <translation>محسَّن (من إضافتنا، يتجاوز البحث)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="143" />
         <source>Remove low outliers first (class 7)</source>
-        <translation type="unfinished" />
+        <translation>إزالة القيم الشاذة المنخفضة أولاً (الصنف 7)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="145" />
         <source>Low-outlier search cell (m)</source>
-        <translation type="unfinished" />
+        <translation>خلية البحث عن القيم الشاذة المنخفضة (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="147" />
         <source>Low-outlier depth below neighbours (m)</source>
-        <translation type="unfinished" />
+        <translation>عمق القيمة الشاذة المنخفضة تحت الجيران (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="150" />
         <source>Maximum iterations per tile</source>
-        <translation type="unfinished" />
+        <translation>الحد الأقصى للتكرارات في كل بلاطة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="153" />
         <source>Stop tolerance on min/max/mean/std (m)</source>
-        <translation type="unfinished" />
+        <translation>سماحية التوقف على الأدنى/الأعلى/المتوسط/الانحراف المعياري (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="155" />
         <source>Random fitting subset per tile (points, 0 = all)</source>
-        <translation type="unfinished" />
+        <translation>مجموعة جزئية عشوائية للمواءمة في كل بلاطة (نقاط، 0 = الكل)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="158" />
         <source>Random seed of the subset</source>
-        <translation type="unfinished" />
+        <translation>البذرة العشوائية للمجموعة الجزئية</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="160" />
         <source>Minimum points per tile (0 = 3 × coefficients)</source>
-        <translation type="unfinished" />
+        <translation>الحد الأدنى للنقاط في البلاطة (0 = 3 × عدد المعاملات)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="163" />
         <source>Under-populated tiles</source>
-        <translation type="unfinished" />
+        <translation>البلاطات قليلة النقاط</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="163" />
         <source>Borrow the nearest fitted tile's surface</source>
-        <translation type="unfinished" />
+        <translation>استعارة سطح أقرب بلاطة مُوائَمة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="163" />
         <source>Leave their points unclassified (class 0)</source>
-        <translation type="unfinished" />
+        <translation>ترك نقاطها دون تصنيف (الصنف 0)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="168" />
         <source>Rejection</source>
-        <translation type="unfinished" />
+        <translation>الاستبعاد</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="168" />
         <source>Re-weighted each iteration (a point may return)</source>
-        <translation type="unfinished" />
+        <translation>إعادة الترجيح في كل تكرار (قد تعود النقطة)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="168" />
         <source>Cumulative (a rejected point stays out)</source>
-        <translation type="unfinished" />
+        <translation>تراكمي (النقطة المستبعدة تبقى مستبعدة)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="173" />
         <source>Classified point cloud</source>
-        <translation type="unfinished" />
+        <translation>سحابة النقاط المصنَّفة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="175" />
         <source>Ground points only</source>
-        <translation type="unfinished" />
+        <translation>نقاط الأرض فقط</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="178" />
@@ -1414,67 +1414,67 @@
     <message>
         <location filename="../algorithms/lsq_filter.py" line="181" />
         <source>Ground points</source>
-        <translation type="unfinished" />
+        <translation>نقاط الأرض</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="181" />
         <source>Other (object) points</source>
-        <translation type="unfinished" />
+        <translation>النقاط الأخرى (الأجسام)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="181" />
         <source>Low-noise points</source>
-        <translation type="unfinished" />
+        <translation>نقاط الضوضاء المنخفضة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="181" />
         <source>Unclassified points</source>
-        <translation type="unfinished" />
+        <translation>النقاط غير المصنَّفة</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="181" />
         <source>Tiles</source>
-        <translation type="unfinished" />
+        <translation>البلاطات</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="181" />
         <source>Points per second</source>
-        <translation type="unfinished" />
+        <translation>نقطة في الثانية</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="220" />
         <source>Choose an output file for the classified cloud (OUTPUT, .laz or .las).</source>
-        <translation type="unfinished" />
+        <translation>اختر ملف إخراج للسحابة المصنَّفة (OUTPUT، بالامتداد .laz أو .las).</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="224" />
         <source>Output point clouds must end in .las or .laz: {p}</source>
-        <translation type="unfinished" />
+        <translation>يجب أن تنتهي أسماء ملفات سحب النقاط الناتجة بالامتداد .las أو .laz: {p}</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="231" />
         <source>Reading {p}</source>
-        <translation type="unfinished" />
+        <translation>جارٍ قراءة {p}</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="236" />
         <source>{n} points; filtering ({mode} mode)</source>
-        <translation type="unfinished" />
+        <translation>{n} نقطة؛ جارٍ الفلترة (النمط {mode})</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="243" />
         <source>{step}: {n} points kept, ZMin {a:.2f}, ZMax {b:.2f}, ZMean {m:.2f}, σ {s:.2f}; tiles iterating: {t}</source>
-        <translation type="unfinished" />
+        <translation>{step}: أُبقيت {n} نقطة، ZMin {a:.2f}، ZMax {b:.2f}، ZMean {m:.2f}، σ {s:.2f}؛ بلاطات قيد التكرار: {t}</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="251" />
         <source>Ground {g}, other {o}, low noise {z}, unclassified {u}; {t} tiles; {s:.1f} s</source>
-        <translation type="unfinished" />
+        <translation>أرض {g}، أخرى {o}، ضوضاء منخفضة {z}، غير مصنَّفة {u}؛ {t} بلاطة؛ {s:.1f} ث</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="257" />
         <source>No point was classified as ground, so the ground-only output would be empty; check TILE_SIZE and THRESHOLD.</source>
-        <translation type="unfinished" />
+        <translation>لم تُصنَّف أي نقطة كأرض، لذا سيكون مخرج نقاط الأرض فارغاً؛ راجع TILE_SIZE وTHRESHOLD.</translation>
     </message>
 </context>
 <context>
@@ -1487,7 +1487,7 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="315" />
         <source>georeference,georeferencer,gcp,ground control points,polynomial,rectification,warp,gdalwarp,rms,accuracy</source>
-        <translation type="unfinished" />
+        <translation>إسناد جغرافي,georeferencer,gcp,نقاط الضبط الأرضي,متعدد الحدود,تصحيح هندسي,warp,gdalwarp,rms,الدقة</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="319" />
@@ -1497,32 +1497,32 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="343" />
         <source>Target CRS [default: the GCP CRS]</source>
-        <translation type="unfinished" />
+        <translation>نظام الإحداثيات الهدف [الافتراضي: نظام إحداثيات نقاط الضبط]</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="345" />
         <source>Resampling</source>
-        <translation type="unfinished" />
+        <translation>إعادة الاعتيان</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="347" />
         <source>Output resolution (target CRS units) [default: GR]</source>
-        <translation type="unfinished" />
+        <translation>دقة تمييز المخرج (بوحدات نظام الإحداثيات الهدف) [الافتراضي: GR]</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="349" />
         <source>Output nodata value</source>
-        <translation type="unfinished" />
+        <translation>قيمة nodata في المخرج</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="351" />
         <source>Rectified image</source>
-        <translation type="unfinished" />
+        <translation>الصورة المصحَّحة هندسياً</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="353" />
         <source>Accuracy report</source>
-        <translation type="unfinished" />
+        <translation>تقرير الدقة</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="353" />
@@ -1532,7 +1532,7 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="365" />
         <source>OUTPUT must be a GeoTIFF file (.tif); got {0}.</source>
-        <translation type="unfinished" />
+        <translation>يجب أن يكون OUTPUT ملف GeoTIFF (.tif)؛ القيمة المعطاة: {0}.</translation>
     </message>
 </context>
 <context>
@@ -1545,7 +1545,7 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="126" />
         <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,vosselman,slope,point cloud</source>
-        <translation type="unfinished" />
+        <translation>ليدار,las,laz,أرض,فلتر,تصنيف,dtm,الأرض العارية,vosselman,الميل,سحابة النقاط</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="130" />
@@ -1555,32 +1555,32 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="169" />
         <source>Radius r (m)</source>
-        <translation type="unfinished" />
+        <translation>نصف القطر r (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="171" />
         <source>Slope threshold θ (degrees)</source>
-        <translation type="unfinished" />
+        <translation>عتبة الميل θ (درجة)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="173" />
         <source>Height tolerance h (m)</source>
-        <translation type="unfinished" />
+        <translation>سماحية الارتفاع h (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="177" />
         <source>Keep existing noise classes (7, 18)</source>
-        <translation type="unfinished" />
+        <translation>الإبقاء على أصناف الضوضاء الموجودة (7, 18)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="180" />
         <source>Classified point cloud</source>
-        <translation type="unfinished" />
+        <translation>سحابة النقاط المصنَّفة</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="182" />
         <source>Ground points</source>
-        <translation type="unfinished" />
+        <translation>نقاط الأرض</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="185" />
@@ -1595,37 +1595,37 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="188" />
         <source>Points read</source>
-        <translation type="unfinished" />
+        <translation>النقاط المقروءة</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="188" />
         <source>Ground points (class 2)</source>
-        <translation type="unfinished" />
+        <translation>نقاط الأرض (الصنف 2)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="188" />
         <source>Non-ground points (class 1)</source>
-        <translation type="unfinished" />
+        <translation>النقاط غير الأرضية (الصنف 1)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="188" />
         <source>Low outliers (class 7)</source>
-        <translation type="unfinished" />
+        <translation>القيم الشاذة المنخفضة (الصنف 7)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="188" />
         <source>Filter speed (points/s)</source>
-        <translation type="unfinished" />
+        <translation>سرعة الفلترة (نقطة/ث)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="204" />
         <source>Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, mode {}</source>
-        <translation type="unfinished" />
+        <translation>فلتر الميل: r = {} م، θ = {}°، h = {} م، الارتدادات: {}، النمط: {}</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="212" />
         <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
-        <translation type="unfinished" />
+        <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الفلترة {:.1f} ث</translation>
     </message>
 </context>
 <context>
@@ -1638,7 +1638,7 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="248" />
         <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
-        <translation type="unfinished" />
+        <translation>ليدار,أرض,فلتر,vosselman,الميل,العتبة,المعايرة,الدقة,النوع الأول,النوع الثاني,كابا,isprs</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="252" />
@@ -1648,62 +1648,62 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="289" />
         <source>Reference cloud (empty = the input's classification)</source>
-        <translation type="unfinished" />
+        <translation>السحابة المرجعية (فارغ = تصنيف سحابة الإدخال نفسها)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="293" />
         <source>Reference ground classes</source>
-        <translation type="unfinished" />
+        <translation>أصناف الأرض في المرجع</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="295" />
         <source>Slope thresholds θ (degrees; list or start:stop:step)</source>
-        <translation type="unfinished" />
+        <translation>عتبات الميل θ (درجات؛ قائمة أو بداية:نهاية:خطوة)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="298" />
         <source>Radii r (m; list)</source>
-        <translation type="unfinished" />
+        <translation>أنصاف الأقطار r (م؛ قائمة)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="300" />
         <source>Height tolerances h (m; list)</source>
-        <translation type="unfinished" />
+        <translation>سماحيات الارتفاع h (م؛ قائمة)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="303" />
         <source>Best by</source>
-        <translation type="unfinished" />
+        <translation>معيار الأفضلية</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="303" />
         <source>Lowest total error</source>
-        <translation type="unfinished" />
+        <translation>أدنى خطأ كلي</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="303" />
         <source>Highest kappa</source>
-        <translation type="unfinished" />
+        <translation>أعلى كابا</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="303" />
         <source>Lowest Type I error</source>
-        <translation type="unfinished" />
+        <translation>أدنى خطأ من النوع الأول</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="303" />
         <source>Lowest Type II error</source>
-        <translation type="unfinished" />
+        <translation>أدنى خطأ من النوع الثاني</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="310" />
         <source>Sweep table</source>
-        <translation type="unfinished" />
+        <translation>جدول المسح</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="310" />
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished" />
+        <translation>ملفات CSV (*.csv)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="312" />
@@ -1718,62 +1718,62 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="315" />
         <source>Classified with the best setting</source>
-        <translation type="unfinished" />
+        <translation>السحابة المصنَّفة بأفضل إعداد</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Best radius (m)</source>
-        <translation type="unfinished" />
+        <translation>أفضل نصف قطر (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Best slope threshold (degrees)</source>
-        <translation type="unfinished" />
+        <translation>أفضل عتبة ميل (درجة)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Best height tolerance (m)</source>
-        <translation type="unfinished" />
+        <translation>أفضل سماحية ارتفاع (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Type I error at the best setting (%)</source>
-        <translation type="unfinished" />
+        <translation>خطأ النوع الأول عند أفضل إعداد (%)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Type II error at the best setting (%)</source>
-        <translation type="unfinished" />
+        <translation>خطأ النوع الثاني عند أفضل إعداد (%)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Total error at the best setting (%)</source>
-        <translation type="unfinished" />
+        <translation>الخطأ الكلي عند أفضل إعداد (%)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Kappa at the best setting (%)</source>
-        <translation type="unfinished" />
+        <translation>كابا عند أفضل إعداد (%)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Settings evaluated</source>
-        <translation type="unfinished" />
+        <translation>عدد الإعدادات المقيَّمة</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="327" />
         <source>Best setting</source>
-        <translation type="unfinished" />
+        <translation>أفضل إعداد</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="347" />
         <source>Sweeping {} thresholds × {} radii × {} tolerances</source>
-        <translation type="unfinished" />
+        <translation>مسح {} عتبات × {} أنصاف أقطار × {} سماحيات</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="360" />
         <source>Best ({}): {} — total {:.2f} %</source>
-        <translation type="unfinished" />
+        <translation>الأفضل ({}): {} — الخطأ الكلي {:.2f} %</translation>
     </message>
 </context>
 <context>
@@ -1781,127 +1781,127 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="101" />
         <source>Image (raster) to rectify</source>
-        <translation type="unfinished" />
+        <translation>الصورة (راستر) المراد تصحيحها</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="101" />
         <source>Image (raster) the GCPs were measured on</source>
-        <translation type="unfinished" />
+        <translation>الصورة (راستر) التي قيست عليها نقاط الضبط</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="104" />
         <source>GCP file (.points or CSV)</source>
-        <translation type="unfinished" />
+        <translation>ملف نقاط الضبط الأرضي (.points أو CSV)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="104" />
         <source>GCP files (*.points *.csv *.txt);;All files (*.*)</source>
-        <translation type="unfinished" />
+        <translation>ملفات نقاط الضبط (*.points *.csv *.txt);;جميع الملفات (*.*)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="108" />
         <source>…or GCP point layer</source>
-        <translation type="unfinished" />
+        <translation>…أو طبقة نقطية لنقاط الضبط</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="111" />
         <source>Layer field: image column</source>
-        <translation type="unfinished" />
+        <translation>حقل الطبقة: عمود الصورة</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="111" />
         <source>Layer field: image row</source>
-        <translation type="unfinished" />
+        <translation>حقل الطبقة: صف الصورة</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="111" />
         <source>Layer field: point id</source>
-        <translation type="unfinished" />
+        <translation>حقل الطبقة: معرِّف النقطة</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="111" />
         <source>Layer field: enabled (1/0)</source>
-        <translation type="unfinished" />
+        <translation>حقل الطبقة: مفعَّلة (1/0)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="111" />
         <source>Layer field: role (gcp/check)</source>
-        <translation type="unfinished" />
+        <translation>حقل الطبقة: الدور (gcp/check)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="111" />
         <source>Layer field: weight (&gt; 0)</source>
-        <translation type="unfinished" />
+        <translation>حقل الطبقة: الوزن (&gt; 0)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="121" />
         <source>Image coordinates refer to</source>
-        <translation type="unfinished" />
+        <translation>إحداثيات الصورة تشير إلى</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="121" />
         <source>pixel corners: (0,0) = top-left corner of the image (GDAL/QGIS)</source>
-        <translation type="unfinished" />
+        <translation>أركان البكسلات: (0,0) = الركن العلوي الأيسر للصورة (GDAL/QGIS)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="121" />
         <source>pixel centres: integer = centre of a pixel (0-based indices)</source>
-        <translation type="unfinished" />
+        <translation>مراكز البكسلات: العدد الصحيح = مركز بكسل (فهارس تبدأ من 0)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="126" />
         <source>CRS of the GCP map coordinates (if the file does not say)</source>
-        <translation type="unfinished" />
+        <translation>نظام الإحداثيات للإحداثيات الخرائطية لنقاط الضبط (إن لم يحدده الملف)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="128" />
         <source>Polynomial order (1–3)</source>
-        <translation type="unfinished" />
+        <translation>درجة متعدد الحدود (1–3)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="130" />
         <source>Ground resolution GR (map units/pixel) [default: from the GCPs]</source>
-        <translation type="unfinished" />
+        <translation>الدقة الأرضية GR (وحدة خريطة/بكسل) [الافتراضي: من نقاط الضبط]</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="149" />
         <source>INPUT: no image given or it cannot be opened; give a raster file.</source>
-        <translation type="unfinished" />
+        <translation>INPUT: لم تُحدَّد صورة أو تعذّر فتحها؛ حدِّد ملف راستر.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="154" />
         <source>INPUT: {0} is not a local raster file; save the image to a file first.</source>
-        <translation type="unfinished" />
+        <translation>INPUT: {0} ليس ملف راستر محلياً؛ احفظ الصورة في ملف أولاً.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="169" />
         <source>Give either GCP_FILE or GCP_LAYER, not both.</source>
-        <translation type="unfinished" />
+        <translation>حدِّد GCP_FILE أو GCP_LAYER، لا الاثنين معاً.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="187" />
         <source>No GCPs: give a GCP file (GCP_FILE, .points or CSV) or a point layer (GCP_LAYER with COL_FIELD and ROW_FIELD); no &lt;image&gt;.points file was found next to the image either.</source>
-        <translation type="unfinished" />
+        <translation>لا توجد نقاط ضبط: حدِّد ملف نقاط ضبط (GCP_FILE، بالامتداد .points أو CSV) أو طبقة نقطية (GCP_LAYER مع COL_FIELD وROW_FIELD)؛ ولم يُعثر كذلك على ملف &lt;image&gt;.points بجوار الصورة.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="202" />
         <source>GCP_LAYER needs COL_FIELD and ROW_FIELD: the fields holding the image column and row of each point.</source>
-        <translation type="unfinished" />
+        <translation>تتطلب GCP_LAYER الحقلين COL_FIELD وROW_FIELD: الحقلين اللذين يحويان عمود الصورة وصفّها لكل نقطة.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="209" />
         <source>GCP layer feature {0} has no geometry.</source>
-        <translation type="unfinished" />
+        <translation>العنصر {0} في طبقة نقاط الضبط ليست له هندسة.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="268" />
         <source>The GCP map coordinates have no CRS: the file has no '#CRS:' line and GCP_CRS is not set. Set GCP_CRS (e.g. EPSG:22780) and run again.</source>
-        <translation type="unfinished" />
+        <translation>الإحداثيات الخرائطية لنقاط الضبط بلا نظام إحداثيات: لا يحوي الملف السطر '#CRS:' ولم يُضبط GCP_CRS. اضبط GCP_CRS (مثلاً EPSG:22780) وأعد التشغيل.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="280" />
         <source>The GCP CRS is geographic (degrees): the accuracy criteria need map units of length. Set TARGET_CRS (or GCP_CRS) to a projected CRS, e.g. the UTM zone of the image.</source>
-        <translation type="unfinished" />
+        <translation>نظام إحداثيات نقاط الضبط جغرافي (بالدرجات): تتطلب معايير الدقة وحدات خريطة طولية. اضبط TARGET_CRS (أو GCP_CRS) على نظام إحداثيات مُسقَط، مثل نطاق UTM الذي تقع فيه الصورة.</translation>
     </message>
 </context>
 <context>
@@ -1909,37 +1909,37 @@
     <message>
         <location filename="../algorithms/terrain.py" line="97" />
         <source>Point cloud (LAS/LAZ)</source>
-        <translation type="unfinished" />
+        <translation>سحابة النقاط (LAS/LAZ)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="100" />
         <source>Classes used (comma-separated; empty = all)</source>
-        <translation type="unfinished" />
+        <translation>الأصناف المستخدمة (مفصولة بفواصل؛ فارغ = الكل)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="103" />
         <source>Cell size (m)</source>
-        <translation type="unfinished" />
+        <translation>حجم الخلية (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="104" />
         <source>Extent</source>
-        <translation type="unfinished" />
+        <translation>النطاق</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="105" />
         <source>CRS (overrides the LAS file's CRS)</source>
-        <translation type="unfinished" />
+        <translation>نظام الإحداثيات (يتقدّم على نظام إحداثيات ملف LAS)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="109" />
         <source>Maximum distance to data (m, 0 = auto)</source>
-        <translation type="unfinished" />
+        <translation>أقصى مسافة إلى البيانات (م، 0 = تلقائي)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="111" />
         <source>Fill data gaps (interpolate far from data)</source>
-        <translation type="unfinished" />
+        <translation>ملء فجوات البيانات (الاستيفاء بعيداً عن البيانات)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="116" />
@@ -1954,22 +1954,22 @@
     <message>
         <location filename="../algorithms/terrain.py" line="127" />
         <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
-        <translation type="unfinished" />
+        <translation>سحابة النقاط لا تحوي سجل نظام إحداثيات ولم يُحدَّد نظام إحداثيات؛ اضبط المعامل CRS (مثلاً EPSG:32632). لم تُكتب أي مخرجات.</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="142" />
         <source>Cell size must be &gt; 0 (metres); give e.g. 1.0. No output was written.</source>
-        <translation type="unfinished" />
+        <translation>يجب أن يكون حجم الخلية &gt; 0 (بالأمتار)؛ أدخل مثلاً 1.0. لم تُكتب أي مخرجات.</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="159" />
         <source>Reading points of class(es) {} from {}</source>
-        <translation type="unfinished" />
+        <translation>جارٍ قراءة نقاط الصنف (الأصناف) {} من {}</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="162" />
         <source>{} of {} points selected</source>
-        <translation type="unfinished" />
+        <translation>اختيرت {} نقطة من أصل {}</translation>
     </message>
 </context>
 <context>
@@ -1977,72 +1977,72 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="43" />
         <source>Point cloud (LAS/LAZ)</source>
-        <translation type="unfinished" />
+        <translation>سحابة النقاط (LAS/LAZ)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="48" />
         <source>Returns filtered</source>
-        <translation type="unfinished" />
+        <translation>الارتدادات المفلترة</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="48" />
         <source>All returns</source>
-        <translation type="unfinished" />
+        <translation>جميع الارتدادات</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="48" />
         <source>Last returns only</source>
-        <translation type="unfinished" />
+        <translation>الارتدادات الأخيرة فقط</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="51" />
         <source>Remove low outliers first (class 7)</source>
-        <translation type="unfinished" />
+        <translation>إزالة القيم الشاذة المنخفضة أولاً (الصنف 7)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="53" />
         <source>Low-outlier search cell (m)</source>
-        <translation type="unfinished" />
+        <translation>خلية البحث عن القيم الشاذة المنخفضة (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="55" />
         <source>Low-outlier depth below neighbours (m)</source>
-        <translation type="unfinished" />
+        <translation>عمق القيمة الشاذة المنخفضة تحت الجيران (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="60" />
         <source>Mode</source>
-        <translation type="unfinished" />
+        <translation>النمط</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="60" />
         <source>Exact (Vosselman 2000)</source>
-        <translation type="unfinished" />
+        <translation>دقيق (Vosselman 2000)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="60" />
         <source>Terrain-adaptive (toolbox extension)</source>
-        <translation type="unfinished" />
+        <translation>متكيِّف مع التضاريس (إضافة من صندوق الأدوات)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="64" />
         <source>Adaptive mode: trend cell (m)</source>
-        <translation type="unfinished" />
+        <translation>النمط المتكيِّف: خلية الاتجاه العام (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="66" />
         <source>Adaptive mode: trend window, &gt; largest building (m)</source>
-        <translation type="unfinished" />
+        <translation>النمط المتكيِّف: نافذة الاتجاه العام، &gt; أكبر مبنى (م)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="75" />
         <source>TREND_CELL and TREND_WINDOW must be &gt; 0 metres in adaptive mode (e.g. 10 and 60).</source>
-        <translation type="unfinished" />
+        <translation>يجب أن تكون قيمتا TREND_CELL وTREND_WINDOW &gt; 0 م في النمط المتكيِّف (مثلاً 10 و60).</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="81" />
         <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
-        <translation type="unfinished" />
+        <translation>يجب أن تكون قيمتا NOISE_RADIUS وNOISE_THRESHOLD &gt; 0 م (مثلاً 5 و1)، أو أوقف الفلترة المسبقة NOISE.</translation>
     </message>
 </context>
 </TS>

@@ -6,77 +6,77 @@
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>reference ground</source>
-        <translation type="unfinished" />
+        <translation>زمینی (در مرجع)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>reference object</source>
-        <translation type="unfinished" />
+        <translation>عارضه (در مرجع)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>total</source>
-        <translation type="unfinished" />
+        <translation>مجموع</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="171" />
         <source>Type I (ground rejected) = b/(a+b)</source>
-        <translation type="unfinished" />
+        <translation>خطای نوع اول (رد نقاط زمینی) = b/(a+b)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="172" />
         <source>Type II (object accepted) = c/(c+d)</source>
-        <translation type="unfinished" />
+        <translation>خطای نوع دوم (پذیرش عوارض به‌عنوان زمین) = c/(c+d)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="173" />
         <source>Total = (b+c)/n</source>
-        <translation type="unfinished" />
+        <translation>خطای کل = (b+c)/n</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="174" />
         <source>Cohen's kappa</source>
-        <translation type="unfinished" />
+        <translation>ضریب کاپای کوهن</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="176" />
         <source>filtered cloud</source>
-        <translation type="unfinished" />
+        <translation>ابر فیلترشده</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="176" />
         <source>its class dimension</source>
-        <translation type="unfinished" />
+        <translation>بُعد کلاس آن</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="177" />
         <source>its ground classes</source>
-        <translation type="unfinished" />
+        <translation>کلاس‌های زمینی آن</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="178" />
         <source>reference</source>
-        <translation type="unfinished" />
+        <translation>مرجع</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="178" />
         <source>(dimension of the filtered cloud)</source>
-        <translation type="unfinished" />
+        <translation>(بُعدی از ابر فیلترشده)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="179" />
         <source>reference class dimension</source>
-        <translation type="unfinished" />
+        <translation>بُعد کلاس مرجع</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="180" />
         <source>reference ground classes</source>
-        <translation type="unfinished" />
+        <translation>کلاس‌های زمینی مرجع</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>item</source>
-        <translation type="unfinished" />
+        <translation>مورد</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
@@ -86,37 +86,37 @@
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>filtered ground</source>
-        <translation type="unfinished" />
+        <translation>زمینی (پس از فیلتر)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>filtered object</source>
-        <translation type="unfinished" />
+        <translation>عارضه (پس از فیلتر)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>measure</source>
-        <translation type="unfinished" />
+        <translation>سنجه</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>Of all misclassified points, {p1:.1f} % are Type I and {p2:.1f} % Type II.</source>
-        <translation type="unfinished" />
+        <translation>از همهٔ نقاطی که نادرست طبقه‌بندی شده‌اند، {p1:.1f} % از نوع اول و {p2:.1f} % از نوع دوم هستند.</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>filtered class</source>
-        <translation type="unfinished" />
+        <translation>کلاس پس از فیلتر</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="353" />
         <source>points</source>
-        <translation type="unfinished" />
+        <translation>تعداد نقاط</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="182" />
         <source>Measures of the ISPRS filter test: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</source>
-        <translation type="unfinished" />
+        <translation>سنجه‌های آزمون فیلترهای ISPRS: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="199" />
@@ -126,267 +126,267 @@
     <message>
         <location filename="../algorithms/lsq_filter.py" line="296" />
         <source>input</source>
-        <translation type="unfinished" />
+        <translation>پروندهٔ ورودی</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="296" />
         <source>CRS</source>
-        <translation type="unfinished" />
+        <translation>سیستم مختصات (CRS)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="296" />
         <source>none</source>
-        <translation type="unfinished" />
+        <translation>ندارد</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="297" />
         <source>mode</source>
-        <translation type="unfinished" />
+        <translation>حالت</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="297" />
         <source>order</source>
-        <translation type="unfinished" />
+        <translation>درجه</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="298" />
         <source>polynomial</source>
-        <translation type="unfinished" />
+        <translation>چندجمله‌ای</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="363" />
         <source>tile size (m)</source>
-        <translation type="unfinished" />
+        <translation>اندازهٔ کاشی (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="302" />
         <source>threshold T (m)</source>
-        <translation type="unfinished" />
+        <translation>آستانهٔ T (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="303" />
         <source>max iterations</source>
-        <translation type="unfinished" />
+        <translation>حداکثر تکرار</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="304" />
         <source>stop tolerance (m)</source>
-        <translation type="unfinished" />
+        <translation>تلورانس توقف (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="305" />
         <source>fitting subset per tile</source>
-        <translation type="unfinished" />
+        <translation>زیرمجموعهٔ برازش در هر کاشی</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="305" />
         <source>all points</source>
-        <translation type="unfinished" />
+        <translation>همهٔ نقاط</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="306" />
         <source>seed</source>
-        <translation type="unfinished" />
+        <translation>بذر تصادفی</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="307" />
         <source>min points per tile</source>
-        <translation type="unfinished" />
+        <translation>حداقل نقاط هر کاشی</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="308" />
         <source>under-populated tiles</source>
-        <translation type="unfinished" />
+        <translation>کاشی‌های کم‌نقطه</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="309" />
         <source>rejection</source>
-        <translation type="unfinished" />
+        <translation>شیوهٔ رد نقاط</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="310" />
         <source>low-outlier pre-filter</source>
-        <translation type="unfinished" />
+        <translation>پیش‌فیلتر نقاط پرت پایین</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="311" />
         <source>pre-filter cell / depth (m)</source>
-        <translation type="unfinished" />
+        <translation>سلول / عمق پیش‌فیلتر (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="313" />
         <source>grid origin (min x, min y)</source>
-        <translation type="unfinished" />
+        <translation>مبدأ شبکه (کمینهٔ x، کمینهٔ y)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="316" />
         <source>levels (× tile size)</source>
-        <translation type="unfinished" />
+        <translation>سطوح (× اندازهٔ کاشی)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="317" />
         <source>window overlap</source>
-        <translation type="unfinished" />
+        <translation>همپوشانی پنجره‌ها</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="318" />
         <source>slope factor (m) / cap (m)</source>
-        <translation type="unfinished" />
+        <translation>ضریب شیب (متر) / سقف (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="320" />
         <source>ground</source>
-        <translation type="unfinished" />
+        <translation>زمینی</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="320" />
         <source>other (object)</source>
-        <translation type="unfinished" />
+        <translation>سایر (عارضه)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="320" />
         <source>low noise</source>
-        <translation type="unfinished" />
+        <translation>نویز پایین</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="321" />
         <source>never classified</source>
-        <translation type="unfinished" />
+        <translation>هرگز طبقه‌بندی‌نشده</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="343" />
         <source>reading</source>
-        <translation type="unfinished" />
+        <translation>خواندن</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="346" />
         <source>filter total</source>
-        <translation type="unfinished" />
+        <translation>کل فیلتر کردن</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="347" />
         <source>run total (read, filter, write)</source>
-        <translation type="unfinished" />
+        <translation>کل اجرا (خواندن، فیلتر، نوشتن)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="348" />
         <source>points per second (run)</source>
-        <translation type="unfinished" />
+        <translation>نقطه در ثانیه (اجرا)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="349" />
         <source>points per second (filter)</source>
-        <translation type="unfinished" />
+        <translation>نقطه در ثانیه (فیلتر)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="350" />
         <source>step</source>
-        <translation type="unfinished" />
+        <translation>گام</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="351" />
         <source>Parameters</source>
-        <translation type="unfinished" />
+        <translation>پارامترها</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="353" />
         <source>class</source>
-        <translation type="unfinished" />
+        <translation>کلاس</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="353" />
         <source>meaning</source>
-        <translation type="unfinished" />
+        <translation>معنا</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="356" />
         <source>Kept heights after each iteration, aggregated over the tiles (a tile that has stopped keeps its last values); the layout of the paper's Tables 1–2.</source>
-        <translation type="unfinished" />
+        <translation>ارتفاع‌های نگه‌داشته‌شده پس از هر تکرار، تجمیع‌شده روی کاشی‌ها (کاشی‌ای که متوقف شده آخرین مقادیرش را نگه می‌دارد)؛ با چیدمان جدول‌های 1–2 مقاله.</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="360" />
         <source>tiles still iterating</source>
-        <translation type="unfinished" />
+        <translation>کاشی‌های در حال تکرار</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="363" />
         <source>level</source>
-        <translation type="unfinished" />
+        <translation>سطح</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="375" />
         <source>tiles</source>
-        <translation type="unfinished" />
+        <translation>تعداد کاشی‌ها</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="363" />
         <source>fitted</source>
-        <translation type="unfinished" />
+        <translation>برازش‌شده</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="363" />
         <source>ground seeds</source>
-        <translation type="unfinished" />
+        <translation>نقاط زمینی اولیه</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="363" />
         <source>seconds</source>
-        <translation type="unfinished" />
+        <translation>ثانیه</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="368" />
         <source>The iteration and tile tables below describe the finest level.</source>
-        <translation type="unfinished" />
+        <translation>جدول‌های تکرار و کاشی در زیر، ریزترین سطح را توصیف می‌کنند.</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="376" />
         <source>status</source>
-        <translation type="unfinished" />
+        <translation>وضعیت</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="376" />
         <source>column</source>
-        <translation type="unfinished" />
+        <translation>ستون</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="376" />
         <source>row</source>
-        <translation type="unfinished" />
+        <translation>سطر</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="376" />
         <source>fitting points</source>
-        <translation type="unfinished" />
+        <translation>نقاط برازش</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="376" />
         <source>iterations</source>
-        <translation type="unfinished" />
+        <translation>تکرارها</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="376" />
         <source>kept</source>
-        <translation type="unfinished" />
+        <translation>نگه‌داشته</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="380" />
         <source>Showing the {k} fullest of {n} tiles.</source>
-        <translation type="unfinished" />
+        <translation>{k} کاشیِ پرنقطه‌تر از میان {n} کاشی نمایش داده شده است.</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="384" />
         <source>stage</source>
-        <translation type="unfinished" />
+        <translation>مرحله</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="384" />
         <source>seconds or points/s</source>
-        <translation type="unfinished" />
+        <translation>ثانیه یا نقطه/ثانیه</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="386" />
         <source>Method: tiled least-squares polynomial filter, Damascus Univ. J. Eng. Sci. 29(2), 2013. Improved mode and the low-outlier pre-filter are ours. Accuracy terms (Type I, Type II, total) after Sithole &amp; Vosselman (2004).</source>
-        <translation type="unfinished" />
+        <translation>روش: فیلتر چندجمله‌ای کمترین مربعات روی کاشی‌ها، مجلهٔ علوم مهندسی دانشگاه دمشق 29(2)، 2013. حالت بهبودیافته و پیش‌فیلتر نقاط پرت پایین افزودهٔ ما هستند. اصطلاحات دقت (نوع اول، نوع دوم، کل) برگرفته از Sithole &amp; Vosselman (2004).</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="391" />
@@ -404,7 +404,7 @@
     <message>
         <location filename="../algorithms/terrain.py" line="530" />
         <source>dsm,ndsm,chm,canopy height,surface model,first returns,lidar,raster</source>
-        <translation type="unfinished" />
+        <translation>dsm,ndsm,chm,ارتفاع تاج پوشش,مدل سطح,بازگشت‌های اول,لایدار,رستر</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="534" />
@@ -414,52 +414,52 @@
     <message>
         <location filename="../algorithms/terrain.py" line="562" />
         <source>Excluded classes</source>
-        <translation type="unfinished" />
+        <translation>کلاس‌های کنارگذاشته</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="565" />
         <source>First returns only</source>
-        <translation type="unfinished" />
+        <translation>فقط بازگشت‌های اول</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="567" />
         <source>Fill empty cells up to (m)</source>
-        <translation type="unfinished" />
+        <translation>پر کردن سلول‌های خالی تا فاصلهٔ (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="569" />
         <source>DTM (for the nDSM; its grid is used)</source>
-        <translation type="unfinished" />
+        <translation>مدل رقومی زمین DTM (برای nDSM؛ شبکهٔ آن به کار می‌رود)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="571" />
         <source>Clamp negative nDSM heights to 0</source>
-        <translation type="unfinished" />
+        <translation>برابر 0 قرار دادن ارتفاع‌های منفی nDSM</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="573" />
         <source>DSM</source>
-        <translation type="unfinished" />
+        <translation>مدل رقومی سطح (DSM)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="574" />
         <source>nDSM / canopy height model</source>
-        <translation type="unfinished" />
+        <translation>nDSM / مدل ارتفاع تاج پوشش گیاهی</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="602" />
         <source>The point cloud CRS ({}) differs from the DTM CRS ({}); give a DTM in the point cloud's CRS. No output was written.</source>
-        <translation type="unfinished" />
+        <translation>سیستم مختصات ابر نقاط ({}) با سیستم مختصات مدل رقومی زمین ({}) متفاوت است؛ مدل رقومی زمینی در سیستم مختصات ابر نقاط بدهید. هیچ خروجی‌ای نوشته نشد.</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="612" />
         <source>The nDSM needs a DTM: give the DTM parameter (e.g. the output of the IDW DTM algorithm). No output was written.</source>
-        <translation type="unfinished" />
+        <translation>nDSM به مدل رقومی زمین نیاز دارد: پارامتر DTM را بدهید (مثلاً خروجی الگوریتم مدل رقومی زمین به روش IDW). هیچ خروجی‌ای نوشته نشد.</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="668" />
         <source>DSM / nDSM report</source>
-        <translation type="unfinished" />
+        <translation>گزارش DSM / nDSM</translation>
     </message>
 </context>
 <context>
@@ -472,7 +472,7 @@
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="63" />
         <source>dtm,dem,accuracy,rmse,check points,gnss,nmad,asprs,vertical accuracy,validation</source>
-        <translation type="unfinished" />
+        <translation>dtm,dem,دقت,rmse,نقاط چک,gnss,nmad,asprs,دقت ارتفاعی,اعتبارسنجی</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="67" />
@@ -482,62 +482,62 @@
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="101" />
         <source>DTM</source>
-        <translation type="unfinished" />
+        <translation>مدل رقومی زمین (DTM)</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="102" />
         <source>Band</source>
-        <translation type="unfinished" />
+        <translation>باند</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="104" />
         <source>Check points (point layer)</source>
-        <translation type="unfinished" />
+        <translation>نقاط چک (لایهٔ نقطه‌ای)</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="107" />
         <source>Height field (empty = geometry Z)</source>
-        <translation type="unfinished" />
+        <translation>فیلد ارتفاع (خالی = Z هندسه)</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="111" />
         <source>Id field</source>
-        <translation type="unfinished" />
+        <translation>فیلد شناسه</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="114" />
         <source>Check point file (CSV/TXT)</source>
-        <translation type="unfinished" />
+        <translation>پروندهٔ نقاط چک (CSV/TXT)</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="118" />
         <source>CRS of the check point file (default: DTM CRS)</source>
-        <translation type="unfinished" />
+        <translation>سیستم مختصات پروندهٔ نقاط چک (پیش‌فرض: سیستم مختصات DTM)</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="121" />
         <source>Reproject check points to the DTM CRS</source>
-        <translation type="unfinished" />
+        <translation>بازتصویر نقاط چک به سیستم مختصات DTM</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="123" />
         <source>Sampling</source>
-        <translation type="unfinished" />
+        <translation>روش نمونه‌برداری</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="123" />
         <source>Bilinear</source>
-        <translation type="unfinished" />
+        <translation>دوخطی</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="123" />
         <source>Nearest cell</source>
-        <translation type="unfinished" />
+        <translation>نزدیک‌ترین سلول</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="126" />
         <source>Residuals</source>
-        <translation type="unfinished" />
+        <translation>باقی‌مانده‌ها</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="129" />
@@ -552,57 +552,57 @@
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="141" />
         <source>Give the check points as a point layer (CHECKPOINTS) or a file (CHECKPOINTS_CSV).</source>
-        <translation type="unfinished" />
+        <translation>نقاط چک را به‌صورت لایهٔ نقطه‌ای (CHECKPOINTS) یا پرونده (CHECKPOINTS_CSV) بدهید.</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="145" />
         <source>Give the check points either as a layer or as a file, not both.</source>
-        <translation type="unfinished" />
+        <translation>نقاط چک را یا به‌صورت لایه یا به‌صورت پرونده بدهید، نه هر دو.</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="152" />
         <source>The check point layer has no Z coordinate; choose the height field (Z_FIELD).</source>
-        <translation type="unfinished" />
+        <translation>لایهٔ نقاط چک مختصات Z ندارد؛ فیلد ارتفاع (Z_FIELD) را انتخاب کنید.</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="170" />
         <source>The check point layer has no points.</source>
-        <translation type="unfinished" />
+        <translation>لایهٔ نقاط چک هیچ نقطه‌ای ندارد.</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="172" />
         <source>check point layer</source>
-        <translation type="unfinished" />
+        <translation>لایهٔ نقاط چک</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="176" />
         <source>check point file</source>
-        <translation type="unfinished" />
+        <translation>پروندهٔ نقاط چک</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="180" />
         <source>The {} is in {} but the DTM is in {}. Reproject the check points first or tick 'Reproject check points to the DTM CRS' (REPROJECT=true; x, y only, heights are not converted). No output was written.</source>
-        <translation type="unfinished" />
+        <translation>{} در سیستم مختصات {} است ولی مدل رقومی زمین در {} است. ابتدا نقاط چک را بازتصویر کنید یا گزینهٔ 'بازتصویر نقاط چک به سیستم مختصات DTM' را فعال کنید (REPROJECT=true؛ فقط x و y، ارتفاع‌ها تبدیل نمی‌شوند). هیچ خروجی‌ای نوشته نشد.</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="190" />
         <source>Check points reprojected from {} to {}</source>
-        <translation type="unfinished" />
+        <translation>نقاط چک از {} به {} بازتصویر شدند</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="193" />
         <source>Check points assumed to be in the DTM's CRS.</source>
-        <translation type="unfinished" />
+        <translation>فرض شد نقاط چک در سیستم مختصات مدل رقومی زمین هستند.</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="200" />
         <source>Choose a DTM raster.</source>
-        <translation type="unfinished" />
+        <translation>یک رستر مدل رقومی زمین انتخاب کنید.</translation>
     </message>
     <message>
         <location filename="../algorithms/dtm_accuracy.py" line="212" />
         <source>N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; {} outside, {} on nodata</source>
-        <translation type="unfinished" />
+        <translation>N = {}، RMSE = {:.4f} متر، ME = {:.4f} متر، r = {:.5f}؛ {} بیرون از مدل، {} روی nodata</translation>
     </message>
 </context>
 <context>
@@ -615,7 +615,7 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="426" />
         <source>georeference,gcp,ground control points,rms,residuals,accuracy,check points,leave-one-out,polynomial,georeferencer</source>
-        <translation type="unfinished" />
+        <translation>زمین‌مرجع‌سازی,gcp,نقاط کنترل زمینی,rms,باقی‌مانده‌ها,دقت,نقاط چک,حذف‌یکی,چندجمله‌ای,georeferencer</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="430" />
@@ -625,17 +625,17 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="451" />
         <source>Image width (px) if no image is given</source>
-        <translation type="unfinished" />
+        <translation>عرض تصویر (پیکسل) اگر تصویری داده نشود</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="453" />
         <source>Image height (px) if no image is given</source>
-        <translation type="unfinished" />
+        <translation>ارتفاع تصویر (پیکسل) اگر تصویری داده نشود</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="456" />
         <source>Accuracy report</source>
-        <translation type="unfinished" />
+        <translation>گزارش دقت</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="456" />
@@ -645,22 +645,22 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="459" />
         <source>Residuals table</source>
-        <translation type="unfinished" />
+        <translation>جدول باقی‌مانده‌ها</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="459" />
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished" />
+        <translation>پرونده‌های CSV (*.csv)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="462" />
         <source>Report as JSON</source>
-        <translation type="unfinished" />
+        <translation>گزارش به قالب JSON</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="462" />
         <source>JSON files (*.json)</source>
-        <translation type="unfinished" />
+        <translation>پرونده‌های JSON (*.json)</translation>
     </message>
 </context>
 <context>
@@ -719,7 +719,7 @@
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="59" />
         <source>lidar,ground,filter,accuracy,type i,type ii,total error,kappa,isprs,reference,confusion matrix</source>
-        <translation type="unfinished" />
+        <translation>لایدار,زمین,فیلتر,دقت,نوع اول,نوع دوم,خطای کل,کاپا,isprs,مرجع,ماتریس درهم‌ریختگی</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="63" />
@@ -729,32 +729,32 @@
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="93" />
         <source>Filtered point cloud (LAS/LAZ)</source>
-        <translation type="unfinished" />
+        <translation>ابر نقاط فیلترشده (LAS/LAZ)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="96" />
         <source>Class dimension of the filtered cloud</source>
-        <translation type="unfinished" />
+        <translation>بُعد کلاس ابر فیلترشده</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="99" />
         <source>Ground classes of the filtered cloud</source>
-        <translation type="unfinished" />
+        <translation>کلاس‌های زمینی ابر فیلترشده</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="101" />
         <source>Reference point cloud (same points, same order)</source>
-        <translation type="unfinished" />
+        <translation>ابر نقاط مرجع (همان نقاط، با همان ترتیب)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="105" />
         <source>Reference class dimension</source>
-        <translation type="unfinished" />
+        <translation>بُعد کلاس مرجع</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="107" />
         <source>Reference ground classes</source>
-        <translation type="unfinished" />
+        <translation>کلاس‌های زمینی مرجع</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="109" />
@@ -769,12 +769,12 @@
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="112" />
         <source>Per-point error layer (user_data: 0 correct, 1 Type I, 2 Type II)</source>
-        <translation type="unfinished" />
+        <translation>لایهٔ خطای نقطه‌به‌نقطه (user_data: 0 درست، 1 نوع اول، 2 نوع دوم)</translation>
     </message>
     <message>
         <location filename="../algorithms/filter_accuracy.py" line="132" />
         <source>The error layer must end in .las or .laz: {p}</source>
-        <translation type="unfinished" />
+        <translation>پروندهٔ لایهٔ خطا باید پسوند .las یا .laz داشته باشد: {p}</translation>
     </message>
 </context>
 <context>
@@ -1133,7 +1133,7 @@
     <message>
         <location filename="../algorithms/terrain.py" line="208" />
         <source>dtm,dem,idw,inverse distance,interpolation,lidar,ground,gdal_grid,invdistnn,raster</source>
-        <translation type="unfinished" />
+        <translation>dtm,dem,idw,معکوس فاصله,درون‌یابی,لایدار,زمین,gdal_grid,invdistnn,رستر</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="212" />
@@ -1143,32 +1143,32 @@
     <message>
         <location filename="../algorithms/terrain.py" line="235" />
         <source>Power p</source>
-        <translation type="unfinished" />
+        <translation>توان p</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="236" />
         <source>Neighbours (0 = all within radius)</source>
-        <translation type="unfinished" />
+        <translation>تعداد همسایه‌ها (0 = همهٔ نقاط درون شعاع)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="238" />
         <source>Search radius (m, 0 = unlimited)</source>
-        <translation type="unfinished" />
+        <translation>شعاع جست‌وجو (متر، 0 = نامحدود)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="240" />
         <source>Minimum points</source>
-        <translation type="unfinished" />
+        <translation>حداقل تعداد نقاط</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="243" />
         <source>IDW DTM</source>
-        <translation type="unfinished" />
+        <translation>مدل رقومی زمین به روش IDW</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="286" />
         <source>IDW DTM report</source>
-        <translation type="unfinished" />
+        <translation>گزارش مدل رقومی زمین به روش IDW</translation>
     </message>
 </context>
 <context>
@@ -1181,7 +1181,7 @@
     <message>
         <location filename="../algorithms/terrain.py" line="315" />
         <source>dtm,dem,kriging,variogram,geostatistics,pykrige,interpolation,lidar,variance,cross-validation</source>
-        <translation type="unfinished" />
+        <translation>dtm,dem,کریجینگ,واریوگرام,زمین‌آمار,pykrige,درون‌یابی,لایدار,واریانس,اعتبارسنجی متقابل</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="319" />
@@ -1191,82 +1191,82 @@
     <message>
         <location filename="../algorithms/terrain.py" line="373" />
         <source>Kriging type</source>
-        <translation type="unfinished" />
+        <translation>نوع کریجینگ</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="373" />
         <source>Ordinary</source>
-        <translation type="unfinished" />
+        <translation>معمولی</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="373" />
         <source>Universal (linear drift)</source>
-        <translation type="unfinished" />
+        <translation>عام (روند خطی)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="376" />
         <source>Variogram model</source>
-        <translation type="unfinished" />
+        <translation>مدل واریوگرام</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="379" />
         <source>Variogram parameters (e.g. nugget=0.01, sill=4, range=60; empty = fit)</source>
-        <translation type="unfinished" />
+        <translation>پارامترهای واریوگرام (مثلاً nugget=0.01, sill=4, range=60؛ خالی = برازش خودکار)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="383" />
         <source>Neighbours per cell</source>
-        <translation type="unfinished" />
+        <translation>تعداد همسایه‌ها برای هر سلول</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="385" />
         <source>Points for the variogram fit</source>
-        <translation type="unfinished" />
+        <translation>تعداد نقاط برای برازش واریوگرام</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="387" />
         <source>Lag classes</source>
-        <translation type="unfinished" />
+        <translation>تعداد کلاس‌های فاصلهٔ تأخیر (lag)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="389" />
         <source>Maximum lag (m, 0 = auto: local scale)</source>
-        <translation type="unfinished" />
+        <translation>بیشینهٔ فاصلهٔ تأخیر (متر، 0 = خودکار: مقیاس محلی)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="391" />
         <source>Cross-validation points (0 = off)</source>
-        <translation type="unfinished" />
+        <translation>نقاط اعتبارسنجی متقابل (0 = خاموش)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="393" />
         <source>Random seed</source>
-        <translation type="unfinished" />
+        <translation>بذر تصادفی</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="396" />
         <source>Kriging DTM</source>
-        <translation type="unfinished" />
+        <translation>مدل رقومی زمین به روش کریجینگ</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="397" />
         <source>Write standard deviation instead of variance</source>
-        <translation type="unfinished" />
+        <translation>نوشتن انحراف معیار به‌جای واریانس</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="400" />
         <source>Kriging variance</source>
-        <translation type="unfinished" />
+        <translation>واریانس کریجینگ</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="439" />
         <source>Variogram: {}</source>
-        <translation type="unfinished" />
+        <translation>واریوگرام: {}</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="510" />
         <source>Kriging DTM report</source>
-        <translation type="unfinished" />
+        <translation>گزارش مدل رقومی زمین به روش کریجینگ</translation>
     </message>
 </context>
 <context>
@@ -1279,7 +1279,7 @@
     <message>
         <location filename="../algorithms/lsq_filter.py" line="73" />
         <source>lidar,ground,filter,bare earth,dtm,classification,least squares,polynomial,tiles,las,laz,isprs</source>
-        <translation type="unfinished" />
+        <translation>لایدار,زمین,فیلتر,زمین لخت,dtm,طبقه‌بندی,کمترین مربعات,چندجمله‌ای,کاشی‌ها,las,laz,isprs</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="77" />
@@ -1289,117 +1289,117 @@
     <message>
         <location filename="../algorithms/lsq_filter.py" line="132" />
         <source>Point cloud (LAS/LAZ)</source>
-        <translation type="unfinished" />
+        <translation>ابر نقاط (LAS/LAZ)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="135" />
         <source>Polynomial order (1 or 2)</source>
-        <translation type="unfinished" />
+        <translation>درجهٔ چندجمله‌ای (1 یا 2)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="137" />
         <source>Tile size (m)</source>
-        <translation type="unfinished" />
+        <translation>اندازهٔ کاشی (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="138" />
         <source>Threshold T (m)</source>
-        <translation type="unfinished" />
+        <translation>آستانهٔ T (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="139" />
         <source>Mode</source>
-        <translation type="unfinished" />
+        <translation>حالت</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="139" />
         <source>Faithful (the paper)</source>
-        <translation type="unfinished" />
+        <translation>مطابق (روش مقاله)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="139" />
         <source>Improved (ours, beyond the paper)</source>
-        <translation type="unfinished" />
+        <translation>بهبودیافته (افزودهٔ ما، فراتر از مقاله)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="143" />
         <source>Remove low outliers first (class 7)</source>
-        <translation type="unfinished" />
+        <translation>حذف نقاط پرت پایین در آغاز (کلاس 7)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="145" />
         <source>Low-outlier search cell (m)</source>
-        <translation type="unfinished" />
+        <translation>سلول جست‌وجوی نقاط پرت پایین (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="147" />
         <source>Low-outlier depth below neighbours (m)</source>
-        <translation type="unfinished" />
+        <translation>عمق نقطهٔ پرت پایین نسبت به همسایه‌ها (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="150" />
         <source>Maximum iterations per tile</source>
-        <translation type="unfinished" />
+        <translation>حداکثر تکرار در هر کاشی</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="153" />
         <source>Stop tolerance on min/max/mean/std (m)</source>
-        <translation type="unfinished" />
+        <translation>تلورانس توقف برای کمینه/بیشینه/میانگین/انحراف معیار (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="155" />
         <source>Random fitting subset per tile (points, 0 = all)</source>
-        <translation type="unfinished" />
+        <translation>زیرمجموعهٔ تصادفی برازش در هر کاشی (نقطه، 0 = همه)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="158" />
         <source>Random seed of the subset</source>
-        <translation type="unfinished" />
+        <translation>بذر تصادفی زیرمجموعه</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="160" />
         <source>Minimum points per tile (0 = 3 × coefficients)</source>
-        <translation type="unfinished" />
+        <translation>حداقل نقاط هر کاشی (0 = 3 × تعداد ضرایب)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="163" />
         <source>Under-populated tiles</source>
-        <translation type="unfinished" />
+        <translation>کاشی‌های کم‌نقطه</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="163" />
         <source>Borrow the nearest fitted tile's surface</source>
-        <translation type="unfinished" />
+        <translation>استفاده از سطح نزدیک‌ترین کاشی برازش‌شده</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="163" />
         <source>Leave their points unclassified (class 0)</source>
-        <translation type="unfinished" />
+        <translation>طبقه‌بندی‌نشده ماندن نقاط آن‌ها (کلاس 0)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="168" />
         <source>Rejection</source>
-        <translation type="unfinished" />
+        <translation>شیوهٔ رد نقاط</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="168" />
         <source>Re-weighted each iteration (a point may return)</source>
-        <translation type="unfinished" />
+        <translation>وزن‌دهی دوباره در هر تکرار (نقطه ممکن است بازگردد)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="168" />
         <source>Cumulative (a rejected point stays out)</source>
-        <translation type="unfinished" />
+        <translation>تجمعی (نقطهٔ ردشده بیرون می‌ماند)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="173" />
         <source>Classified point cloud</source>
-        <translation type="unfinished" />
+        <translation>ابر نقاط طبقه‌بندی‌شده</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="175" />
         <source>Ground points only</source>
-        <translation type="unfinished" />
+        <translation>فقط نقاط زمینی</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="178" />
@@ -1414,67 +1414,67 @@
     <message>
         <location filename="../algorithms/lsq_filter.py" line="181" />
         <source>Ground points</source>
-        <translation type="unfinished" />
+        <translation>نقاط زمینی</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="181" />
         <source>Other (object) points</source>
-        <translation type="unfinished" />
+        <translation>نقاط دیگر (عوارض)</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="181" />
         <source>Low-noise points</source>
-        <translation type="unfinished" />
+        <translation>نقاط نویز پایین</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="181" />
         <source>Unclassified points</source>
-        <translation type="unfinished" />
+        <translation>نقاط طبقه‌بندی‌نشده</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="181" />
         <source>Tiles</source>
-        <translation type="unfinished" />
+        <translation>کاشی‌ها</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="181" />
         <source>Points per second</source>
-        <translation type="unfinished" />
+        <translation>نقطه در ثانیه</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="220" />
         <source>Choose an output file for the classified cloud (OUTPUT, .laz or .las).</source>
-        <translation type="unfinished" />
+        <translation>یک پروندهٔ خروجی برای ابر طبقه‌بندی‌شده انتخاب کنید (OUTPUT، با پسوند .laz یا .las).</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="224" />
         <source>Output point clouds must end in .las or .laz: {p}</source>
-        <translation type="unfinished" />
+        <translation>پرونده‌های ابر نقاط خروجی باید پسوند .las یا .laz داشته باشند: {p}</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="231" />
         <source>Reading {p}</source>
-        <translation type="unfinished" />
+        <translation>در حال خواندن {p}</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="236" />
         <source>{n} points; filtering ({mode} mode)</source>
-        <translation type="unfinished" />
+        <translation>{n} نقطه؛ در حال فیلتر کردن (حالت {mode})</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="243" />
         <source>{step}: {n} points kept, ZMin {a:.2f}, ZMax {b:.2f}, ZMean {m:.2f}, σ {s:.2f}; tiles iterating: {t}</source>
-        <translation type="unfinished" />
+        <translation>{step}: {n} نقطه نگه داشته شد، ZMin {a:.2f}، ZMax {b:.2f}، ZMean {m:.2f}، σ {s:.2f}؛ کاشی‌های در حال تکرار: {t}</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="251" />
         <source>Ground {g}, other {o}, low noise {z}, unclassified {u}; {t} tiles; {s:.1f} s</source>
-        <translation type="unfinished" />
+        <translation>زمینی {g}، سایر {o}، نویز پایین {z}، طبقه‌بندی‌نشده {u}؛ {t} کاشی؛ {s:.1f} ثانیه</translation>
     </message>
     <message>
         <location filename="../algorithms/lsq_filter.py" line="257" />
         <source>No point was classified as ground, so the ground-only output would be empty; check TILE_SIZE and THRESHOLD.</source>
-        <translation type="unfinished" />
+        <translation>هیچ نقطه‌ای زمینی طبقه‌بندی نشد، پس خروجی نقاط زمینی خالی می‌شد؛ TILE_SIZE و THRESHOLD را بررسی کنید.</translation>
     </message>
 </context>
 <context>
@@ -1487,7 +1487,7 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="315" />
         <source>georeference,georeferencer,gcp,ground control points,polynomial,rectification,warp,gdalwarp,rms,accuracy</source>
-        <translation type="unfinished" />
+        <translation>زمین‌مرجع‌سازی,georeferencer,gcp,نقاط کنترل زمینی,چندجمله‌ای,تصحیح هندسی,warp,gdalwarp,rms,دقت</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="319" />
@@ -1497,32 +1497,32 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="343" />
         <source>Target CRS [default: the GCP CRS]</source>
-        <translation type="unfinished" />
+        <translation>سیستم مختصات مقصد [پیش‌فرض: سیستم مختصات نقاط کنترل]</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="345" />
         <source>Resampling</source>
-        <translation type="unfinished" />
+        <translation>بازنمونه‌برداری</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="347" />
         <source>Output resolution (target CRS units) [default: GR]</source>
-        <translation type="unfinished" />
+        <translation>قدرت تفکیک خروجی (به واحد سیستم مختصات مقصد) [پیش‌فرض: GR]</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="349" />
         <source>Output nodata value</source>
-        <translation type="unfinished" />
+        <translation>مقدار nodata خروجی</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="351" />
         <source>Rectified image</source>
-        <translation type="unfinished" />
+        <translation>تصویر تصحیح‌شده</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="353" />
         <source>Accuracy report</source>
-        <translation type="unfinished" />
+        <translation>گزارش دقت</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="353" />
@@ -1532,7 +1532,7 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="365" />
         <source>OUTPUT must be a GeoTIFF file (.tif); got {0}.</source>
-        <translation type="unfinished" />
+        <translation>OUTPUT باید پروندهٔ GeoTIFF (.tif) باشد؛ مقدار داده‌شده: {0}.</translation>
     </message>
 </context>
 <context>
@@ -1545,7 +1545,7 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="126" />
         <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,vosselman,slope,point cloud</source>
-        <translation type="unfinished" />
+        <translation>لایدار,las,laz,زمین,فیلتر,طبقه‌بندی,dtm,زمین لخت,vosselman,شیب,ابر نقاط</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="130" />
@@ -1555,32 +1555,32 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="169" />
         <source>Radius r (m)</source>
-        <translation type="unfinished" />
+        <translation>شعاع r (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="171" />
         <source>Slope threshold θ (degrees)</source>
-        <translation type="unfinished" />
+        <translation>آستانهٔ شیب θ (درجه)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="173" />
         <source>Height tolerance h (m)</source>
-        <translation type="unfinished" />
+        <translation>تلورانس ارتفاعی h (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="177" />
         <source>Keep existing noise classes (7, 18)</source>
-        <translation type="unfinished" />
+        <translation>حفظ کلاس‌های نویز موجود (7, 18)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="180" />
         <source>Classified point cloud</source>
-        <translation type="unfinished" />
+        <translation>ابر نقاط طبقه‌بندی‌شده</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="182" />
         <source>Ground points</source>
-        <translation type="unfinished" />
+        <translation>نقاط زمینی</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="185" />
@@ -1595,37 +1595,37 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="188" />
         <source>Points read</source>
-        <translation type="unfinished" />
+        <translation>نقاط خوانده‌شده</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="188" />
         <source>Ground points (class 2)</source>
-        <translation type="unfinished" />
+        <translation>نقاط زمینی (کلاس 2)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="188" />
         <source>Non-ground points (class 1)</source>
-        <translation type="unfinished" />
+        <translation>نقاط غیرزمینی (کلاس 1)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="188" />
         <source>Low outliers (class 7)</source>
-        <translation type="unfinished" />
+        <translation>نقاط پرت پایین (کلاس 7)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="188" />
         <source>Filter speed (points/s)</source>
-        <translation type="unfinished" />
+        <translation>سرعت فیلتر (نقطه/ثانیه)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="204" />
         <source>Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, mode {}</source>
-        <translation type="unfinished" />
+        <translation>فیلتر شیب: r = {} متر، θ = {}°، h = {} متر، بازگشت‌ها: {}، حالت: {}</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="212" />
         <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
-        <translation type="unfinished" />
+        <translation>{} نقطه: {} زمینی، {} غیرزمینی، {} پرت پایین؛ فیلتر {:.1f} ثانیه</translation>
     </message>
 </context>
 <context>
@@ -1638,7 +1638,7 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="248" />
         <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
-        <translation type="unfinished" />
+        <translation>لایدار,زمین,فیلتر,vosselman,شیب,آستانه,تنظیم,دقت,نوع اول,نوع دوم,کاپا,isprs</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="252" />
@@ -1648,62 +1648,62 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="289" />
         <source>Reference cloud (empty = the input's classification)</source>
-        <translation type="unfinished" />
+        <translation>ابر مرجع (خالی = طبقه‌بندی خود ورودی)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="293" />
         <source>Reference ground classes</source>
-        <translation type="unfinished" />
+        <translation>کلاس‌های زمینی مرجع</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="295" />
         <source>Slope thresholds θ (degrees; list or start:stop:step)</source>
-        <translation type="unfinished" />
+        <translation>آستانه‌های شیب θ (درجه؛ فهرست یا شروع:پایان:گام)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="298" />
         <source>Radii r (m; list)</source>
-        <translation type="unfinished" />
+        <translation>شعاع‌های r (متر؛ فهرست)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="300" />
         <source>Height tolerances h (m; list)</source>
-        <translation type="unfinished" />
+        <translation>تلورانس‌های ارتفاعی h (متر؛ فهرست)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="303" />
         <source>Best by</source>
-        <translation type="unfinished" />
+        <translation>معیار انتخاب بهترین</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="303" />
         <source>Lowest total error</source>
-        <translation type="unfinished" />
+        <translation>کمترین خطای کل</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="303" />
         <source>Highest kappa</source>
-        <translation type="unfinished" />
+        <translation>بیشترین کاپا</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="303" />
         <source>Lowest Type I error</source>
-        <translation type="unfinished" />
+        <translation>کمترین خطای نوع اول</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="303" />
         <source>Lowest Type II error</source>
-        <translation type="unfinished" />
+        <translation>کمترین خطای نوع دوم</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="310" />
         <source>Sweep table</source>
-        <translation type="unfinished" />
+        <translation>جدول پیمایش</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="310" />
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished" />
+        <translation>پرونده‌های CSV (*.csv)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="312" />
@@ -1718,62 +1718,62 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="315" />
         <source>Classified with the best setting</source>
-        <translation type="unfinished" />
+        <translation>طبقه‌بندی‌شده با بهترین تنظیم</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Best radius (m)</source>
-        <translation type="unfinished" />
+        <translation>بهترین شعاع (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Best slope threshold (degrees)</source>
-        <translation type="unfinished" />
+        <translation>بهترین آستانهٔ شیب (درجه)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Best height tolerance (m)</source>
-        <translation type="unfinished" />
+        <translation>بهترین تلورانس ارتفاعی (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Type I error at the best setting (%)</source>
-        <translation type="unfinished" />
+        <translation>خطای نوع اول در بهترین تنظیم (%)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Type II error at the best setting (%)</source>
-        <translation type="unfinished" />
+        <translation>خطای نوع دوم در بهترین تنظیم (%)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Total error at the best setting (%)</source>
-        <translation type="unfinished" />
+        <translation>خطای کل در بهترین تنظیم (%)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Kappa at the best setting (%)</source>
-        <translation type="unfinished" />
+        <translation>کاپا در بهترین تنظیم (%)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="318" />
         <source>Settings evaluated</source>
-        <translation type="unfinished" />
+        <translation>تعداد تنظیمات ارزیابی‌شده</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="327" />
         <source>Best setting</source>
-        <translation type="unfinished" />
+        <translation>بهترین تنظیم</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="347" />
         <source>Sweeping {} thresholds × {} radii × {} tolerances</source>
-        <translation type="unfinished" />
+        <translation>پیمایش {} آستانه × {} شعاع × {} تلورانس</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="360" />
         <source>Best ({}): {} — total {:.2f} %</source>
-        <translation type="unfinished" />
+        <translation>بهترین ({}): {} — خطای کل {:.2f} %</translation>
     </message>
 </context>
 <context>
@@ -1781,127 +1781,127 @@
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="101" />
         <source>Image (raster) to rectify</source>
-        <translation type="unfinished" />
+        <translation>تصویر (رستر) برای تصحیح</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="101" />
         <source>Image (raster) the GCPs were measured on</source>
-        <translation type="unfinished" />
+        <translation>تصویر (رستر) که نقاط کنترل روی آن اندازه‌گیری شده‌اند</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="104" />
         <source>GCP file (.points or CSV)</source>
-        <translation type="unfinished" />
+        <translation>پروندهٔ نقاط کنترل زمینی (.points یا CSV)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="104" />
         <source>GCP files (*.points *.csv *.txt);;All files (*.*)</source>
-        <translation type="unfinished" />
+        <translation>پرونده‌های نقاط کنترل (*.points *.csv *.txt);;همهٔ پرونده‌ها (*.*)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="108" />
         <source>…or GCP point layer</source>
-        <translation type="unfinished" />
+        <translation>…یا لایهٔ نقطه‌ای نقاط کنترل</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="111" />
         <source>Layer field: image column</source>
-        <translation type="unfinished" />
+        <translation>فیلد لایه: ستون تصویر</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="111" />
         <source>Layer field: image row</source>
-        <translation type="unfinished" />
+        <translation>فیلد لایه: سطر تصویر</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="111" />
         <source>Layer field: point id</source>
-        <translation type="unfinished" />
+        <translation>فیلد لایه: شناسهٔ نقطه</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="111" />
         <source>Layer field: enabled (1/0)</source>
-        <translation type="unfinished" />
+        <translation>فیلد لایه: فعال (1/0)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="111" />
         <source>Layer field: role (gcp/check)</source>
-        <translation type="unfinished" />
+        <translation>فیلد لایه: نقش (gcp/check)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="111" />
         <source>Layer field: weight (&gt; 0)</source>
-        <translation type="unfinished" />
+        <translation>فیلد لایه: وزن (&gt; 0)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="121" />
         <source>Image coordinates refer to</source>
-        <translation type="unfinished" />
+        <translation>مختصات تصویر مربوط است به</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="121" />
         <source>pixel corners: (0,0) = top-left corner of the image (GDAL/QGIS)</source>
-        <translation type="unfinished" />
+        <translation>گوشه‌های پیکسل: (0,0) = گوشهٔ بالا-چپ تصویر (GDAL/QGIS)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="121" />
         <source>pixel centres: integer = centre of a pixel (0-based indices)</source>
-        <translation type="unfinished" />
+        <translation>مراکز پیکسل: عدد صحیح = مرکز یک پیکسل (اندیس‌ها از 0)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="126" />
         <source>CRS of the GCP map coordinates (if the file does not say)</source>
-        <translation type="unfinished" />
+        <translation>سیستم مختصاتِ مختصات نقشه‌ای نقاط کنترل (اگر پرونده آن را مشخص نکند)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="128" />
         <source>Polynomial order (1–3)</source>
-        <translation type="unfinished" />
+        <translation>درجهٔ چندجمله‌ای (1–3)</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="130" />
         <source>Ground resolution GR (map units/pixel) [default: from the GCPs]</source>
-        <translation type="unfinished" />
+        <translation>قدرت تفکیک زمینی GR (واحد نقشه/پیکسل) [پیش‌فرض: از نقاط کنترل]</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="149" />
         <source>INPUT: no image given or it cannot be opened; give a raster file.</source>
-        <translation type="unfinished" />
+        <translation>INPUT: تصویری داده نشده یا باز نمی‌شود؛ یک پروندهٔ رستری بدهید.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="154" />
         <source>INPUT: {0} is not a local raster file; save the image to a file first.</source>
-        <translation type="unfinished" />
+        <translation>INPUT: {0} پروندهٔ رستری محلی نیست؛ ابتدا تصویر را در یک پرونده ذخیره کنید.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="169" />
         <source>Give either GCP_FILE or GCP_LAYER, not both.</source>
-        <translation type="unfinished" />
+        <translation>یا GCP_FILE یا GCP_LAYER را بدهید، نه هر دو.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="187" />
         <source>No GCPs: give a GCP file (GCP_FILE, .points or CSV) or a point layer (GCP_LAYER with COL_FIELD and ROW_FIELD); no &lt;image&gt;.points file was found next to the image either.</source>
-        <translation type="unfinished" />
+        <translation>نقطهٔ کنترلی وجود ندارد: یک پروندهٔ نقاط کنترل (GCP_FILE، .points یا CSV) یا یک لایهٔ نقطه‌ای (GCP_LAYER با COL_FIELD و ROW_FIELD) بدهید؛ پروندهٔ &lt;image&gt;.points هم کنار تصویر یافت نشد.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="202" />
         <source>GCP_LAYER needs COL_FIELD and ROW_FIELD: the fields holding the image column and row of each point.</source>
-        <translation type="unfinished" />
+        <translation>GCP_LAYER به COL_FIELD و ROW_FIELD نیاز دارد: فیلدهایی که ستون و سطر تصویر هر نقطه را در خود دارند.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="209" />
         <source>GCP layer feature {0} has no geometry.</source>
-        <translation type="unfinished" />
+        <translation>عارضهٔ {0} در لایهٔ نقاط کنترل هندسه ندارد.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="268" />
         <source>The GCP map coordinates have no CRS: the file has no '#CRS:' line and GCP_CRS is not set. Set GCP_CRS (e.g. EPSG:22780) and run again.</source>
-        <translation type="unfinished" />
+        <translation>مختصات نقشه‌ای نقاط کنترل سیستم مختصات ندارند: پرونده خط '#CRS:' ندارد و GCP_CRS تنظیم نشده است. GCP_CRS را تنظیم کنید (مثلاً EPSG:22780) و دوباره اجرا کنید.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="280" />
         <source>The GCP CRS is geographic (degrees): the accuracy criteria need map units of length. Set TARGET_CRS (or GCP_CRS) to a projected CRS, e.g. the UTM zone of the image.</source>
-        <translation type="unfinished" />
+        <translation>سیستم مختصات نقاط کنترل جغرافیایی (درجه) است: معیارهای دقت به واحدهای طولی نقشه نیاز دارند. TARGET_CRS (یا GCP_CRS) را روی یک سیستم مختصات تصویرشده تنظیم کنید، مثلاً زون UTM تصویر.</translation>
     </message>
 </context>
 <context>
@@ -1909,37 +1909,37 @@
     <message>
         <location filename="../algorithms/terrain.py" line="97" />
         <source>Point cloud (LAS/LAZ)</source>
-        <translation type="unfinished" />
+        <translation>ابر نقاط (LAS/LAZ)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="100" />
         <source>Classes used (comma-separated; empty = all)</source>
-        <translation type="unfinished" />
+        <translation>کلاس‌های به‌کاررفته (جداشده با ویرگول؛ خالی = همه)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="103" />
         <source>Cell size (m)</source>
-        <translation type="unfinished" />
+        <translation>اندازهٔ سلول (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="104" />
         <source>Extent</source>
-        <translation type="unfinished" />
+        <translation>محدوده</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="105" />
         <source>CRS (overrides the LAS file's CRS)</source>
-        <translation type="unfinished" />
+        <translation>سیستم مختصات (بر سیستم مختصات پروندهٔ LAS مقدم است)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="109" />
         <source>Maximum distance to data (m, 0 = auto)</source>
-        <translation type="unfinished" />
+        <translation>بیشینهٔ فاصله تا داده (متر، 0 = خودکار)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="111" />
         <source>Fill data gaps (interpolate far from data)</source>
-        <translation type="unfinished" />
+        <translation>پر کردن شکاف‌های داده (درون‌یابی دور از داده)</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="116" />
@@ -1954,22 +1954,22 @@
     <message>
         <location filename="../algorithms/terrain.py" line="127" />
         <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
-        <translation type="unfinished" />
+        <translation>ابر نقاط رکورد سیستم مختصات ندارد و سیستم مختصاتی هم داده نشده است؛ پارامتر CRS را تنظیم کنید (مثلاً EPSG:32632). هیچ خروجی‌ای نوشته نشد.</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="142" />
         <source>Cell size must be &gt; 0 (metres); give e.g. 1.0. No output was written.</source>
-        <translation type="unfinished" />
+        <translation>اندازهٔ سلول باید &gt; 0 (متر) باشد؛ مثلاً 1.0 بدهید. هیچ خروجی‌ای نوشته نشد.</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="159" />
         <source>Reading points of class(es) {} from {}</source>
-        <translation type="unfinished" />
+        <translation>در حال خواندن نقاط کلاس(های) {} از {}</translation>
     </message>
     <message>
         <location filename="../algorithms/terrain.py" line="162" />
         <source>{} of {} points selected</source>
-        <translation type="unfinished" />
+        <translation>{} نقطه از {} نقطه انتخاب شد</translation>
     </message>
 </context>
 <context>
@@ -1977,72 +1977,72 @@
     <message>
         <location filename="../algorithms/slope_filter.py" line="43" />
         <source>Point cloud (LAS/LAZ)</source>
-        <translation type="unfinished" />
+        <translation>ابر نقاط (LAS/LAZ)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="48" />
         <source>Returns filtered</source>
-        <translation type="unfinished" />
+        <translation>بازگشت‌های فیلترشونده</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="48" />
         <source>All returns</source>
-        <translation type="unfinished" />
+        <translation>همهٔ بازگشت‌ها</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="48" />
         <source>Last returns only</source>
-        <translation type="unfinished" />
+        <translation>فقط بازگشت‌های آخر</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="51" />
         <source>Remove low outliers first (class 7)</source>
-        <translation type="unfinished" />
+        <translation>حذف نقاط پرت پایین در آغاز (کلاس 7)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="53" />
         <source>Low-outlier search cell (m)</source>
-        <translation type="unfinished" />
+        <translation>سلول جست‌وجوی نقاط پرت پایین (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="55" />
         <source>Low-outlier depth below neighbours (m)</source>
-        <translation type="unfinished" />
+        <translation>عمق نقطهٔ پرت پایین نسبت به همسایه‌ها (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="60" />
         <source>Mode</source>
-        <translation type="unfinished" />
+        <translation>حالت</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="60" />
         <source>Exact (Vosselman 2000)</source>
-        <translation type="unfinished" />
+        <translation>دقیق (Vosselman 2000)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="60" />
         <source>Terrain-adaptive (toolbox extension)</source>
-        <translation type="unfinished" />
+        <translation>سازگار با ناهمواری زمین (افزودهٔ جعبه‌ابزار)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="64" />
         <source>Adaptive mode: trend cell (m)</source>
-        <translation type="unfinished" />
+        <translation>حالت سازگار: سلول روند (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="66" />
         <source>Adaptive mode: trend window, &gt; largest building (m)</source>
-        <translation type="unfinished" />
+        <translation>حالت سازگار: پنجرهٔ روند، &gt; بزرگ‌ترین ساختمان (متر)</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="75" />
         <source>TREND_CELL and TREND_WINDOW must be &gt; 0 metres in adaptive mode (e.g. 10 and 60).</source>
-        <translation type="unfinished" />
+        <translation>در حالت سازگار، TREND_CELL و TREND_WINDOW باید &gt; 0 متر باشند (مثلاً 10 و 60).</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="81" />
         <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
-        <translation type="unfinished" />
+        <translation>NOISE_RADIUS و NOISE_THRESHOLD باید &gt; 0 متر باشند (مثلاً 5 و 1)، یا پیش‌فیلتر NOISE را خاموش کنید.</translation>
     </message>
 </context>
 </TS>
