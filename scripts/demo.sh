@@ -46,6 +46,10 @@ run geomatics:lidar_to_dtm lidar_to_dtm INPUT="$OUT/demo/demo.laz" \
   accuracy:RESIDUALS="$OUT/checkpoint_residuals.gpkg" \
   accuracy:ACCURACY_REPORT="$OUT/dtm_accuracy_report.html"
 
+# the accuracy numbers again as outputs (models in QGIS 3.22 expose only file outputs)
+run geomatics:dtmaccuracy dtm_accuracy DTM="$OUT/dtm_idw.tif" \
+  CHECKPOINTS_CSV="$OUT/demo/checkpoints.csv"
+
 # the filter's own accuracy: the demo tile carries its true classes (2 = ground)
 run geomatics:groundfilteraccuracy ground_filter_accuracy INPUT="$OUT/demo_classified.laz" \
   REFERENCE="$OUT/demo/demo.laz" OUTPUT_HTML="$OUT/ground_filter_accuracy.html"

@@ -1,8 +1,6 @@
 """qgis_process smoke tests for the LSQ ground filter and the filter accuracy."""
 from __future__ import annotations
 
-import sys
-import sysconfig
 
 import laspy
 import numpy as np
@@ -11,11 +9,7 @@ import pytest
 
 @pytest.fixture(scope="module")
 def qp(qgis_process):
-    """qgis_process runs the system Python: let it see the venv's laspy/lazrs."""
-    site = sysconfig.get_paths()["purelib"]
-    paths = [p for p in qgis_process.env.get("PYTHONPATH", "").split(":") if p]
-    if site not in paths and site in sys.path:
-        qgis_process.env["PYTHONPATH"] = ":".join(paths + [site])
+    """The shared runner (conftest puts the venv's packages on its PYTHONPATH)."""
     return qgis_process
 
 

@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import subprocess
 import sys
-import sysconfig
 from pathlib import Path
 
 import pytest
@@ -17,11 +16,7 @@ MODEL = ROOT / "models" / "lidar_to_dtm.model3"
 
 @pytest.fixture(scope="module")
 def qp(qgis_process):
-    """qgis_process runs the system Python: let it see the venv's laspy/lazrs/pykrige."""
-    site = sysconfig.get_paths()["purelib"]
-    paths = [p for p in qgis_process.env.get("PYTHONPATH", "").split(":") if p]
-    if site not in paths and site in sys.path:
-        qgis_process.env["PYTHONPATH"] = ":".join(paths + [site])
+    """The shared runner (conftest puts the venv's packages on its PYTHONPATH)."""
     return qgis_process
 
 

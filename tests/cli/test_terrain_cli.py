@@ -1,8 +1,6 @@
 """qgis_process smoke tests: one run per terrain algorithm, plus one failure."""
 from __future__ import annotations
 
-import sys
-import sysconfig
 
 import pytest
 
@@ -12,11 +10,7 @@ from geomatics_toolbox.core.synthetic import generate_tile, write_tile
 
 @pytest.fixture(scope="module")
 def qp(qgis_process):
-    """qgis_process runs the system Python: let it see the venv's laspy/lazrs/pykrige."""
-    site = sysconfig.get_paths()["purelib"]
-    paths = [p for p in qgis_process.env.get("PYTHONPATH", "").split(":") if p]
-    if site not in paths and site in sys.path:
-        qgis_process.env["PYTHONPATH"] = ":".join(paths + [site])
+    """The shared runner (conftest puts the venv's packages on its PYTHONPATH)."""
     return qgis_process
 
 
