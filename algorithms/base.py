@@ -56,15 +56,20 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
     # ---------------------------------------------------------------- metadata
     def tr(self, text: str) -> str:
         """Translate ``text``: the class's own context first, then its base classes'
-        (shared strings written in a common base), then ``@default`` (pylupdate5's
-        context for ``tr`` aliases such as ``tr = self.tr``)."""
+        (shared strings written in a common base), then the shared ``GeomaticsAlgorithm`` context
+        (``QT_TRANSLATE_NOOP`` help pieces), then ``@default`` (pylupdate5's context
+        for ``tr`` aliases such as ``tr = self.tr``)."""
         for cls in type(self).__mro__:
             if cls is GeomaticsAlgorithm:
                 break
             out = QCoreApplication.translate(cls.__name__, text)
             if out != text:
                 return out
-        return QCoreApplication.translate("@default", text)
+        for context in ("GeomaticsAlgorithm", "@default"):
+            out = QCoreApplication.translate(context, text)
+            if out != text:
+                return out
+        return text
 
     def createInstance(self):  # noqa: N802 - QGIS API name
         return type(self)()

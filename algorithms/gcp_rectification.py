@@ -18,6 +18,8 @@ from qgis.core import (QgsProcessing, QgsProcessingException, QgsProcessingOutpu
 
 from ..core import gcp_io, gcp_report, warp
 from ..core.atomic import check_not_input
+from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
+
 from .base import GeomaticsAlgorithm
 
 PIXEL_ORIGINS = ("corner", "center")
@@ -39,7 +41,8 @@ NUMBERS = (
     ("ACCEPTED", "Accepted by criteria C4–C6 (1/0)"),
 )
 
-_HELP_GCP = (
+_HELP_GCP = QT_TRANSLATE_NOOP(
+    "GeomaticsAlgorithm",
     "<li><b>GCP file</b> (GCP_FILE): a QGIS Georeferencer <i>.points</i> file "
     "(mapX,mapY,pixelX,pixelY,enable,…; pixelY is minus the row) or a CSV table with "
     "columns id, col,row (or pixel,line; or image_x,image_y in the QGIS sign convention), "
@@ -64,7 +67,8 @@ _HELP_GCP = (
     "the ground for the criteria; default sqrt|det J| of the affine fit of the "
     "GCPs.</li>")
 
-_HELP_CRITERIA = (
+_HELP_CRITERIA = QT_TRANSLATE_NOOP(
+    "GeomaticsAlgorithm",
     "<p><b>Criteria</b> (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and "
     "contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, "
     "n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band "
@@ -316,7 +320,7 @@ class RectifyGcpAlgorithm(_GcpBase):
                        "rectification,warp,gdalwarp,rms,accuracy").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
+        return (self.tr(
             "<p>Rectifies (warps) an image with ground control points and a 2-D polynomial "
             "of order 1, 2 or 3 through GDAL (same result as <i>gdalwarp -order N</i>), and "
             "writes the accuracy report of the fit. The input image is never modified: the "
@@ -324,7 +328,7 @@ class RectifyGcpAlgorithm(_GcpBase):
             "<p><b>Example</b>: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 "
             "RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html</p>"
             "<p><b>Parameters</b></p><ul>"
-            "<li><b>Image</b> (INPUT): the raster to rectify.</li>" + _HELP_GCP +
+            "<li><b>Image</b> (INPUT): the raster to rectify.</li>") + self.tr(_HELP_GCP) + self.tr(
             "<li><b>Target CRS</b> (TARGET_CRS, default the GCP CRS): output CRS; GDAL "
             "reprojects after the polynomial.</li>"
             "<li><b>Resampling</b> (RESAMPLING, default 0 = nearest neighbour as in the "
@@ -335,8 +339,8 @@ class RectifyGcpAlgorithm(_GcpBase):
             "(default: the input's nodata, else 0).</li>"
             "<li><b>Rectified image</b> (OUTPUT): GeoTIFF (written under a temporary name, "
             "renamed on success; nothing is left behind on failure).</li>"
-            "<li><b>Report</b> (OUTPUT_HTML, optional): HTML accuracy report.</li></ul>"
-            + _HELP_CRITERIA)
+            "<li><b>Report</b> (OUTPUT_HTML, optional): HTML accuracy report.</li></ul>")
+            + self.tr(_HELP_CRITERIA))
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_gcp_parameters(raster_optional=False)
@@ -427,7 +431,7 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
                        "check points,leave-one-out,polynomial,georeferencer").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
+        return (self.tr(
             "<p>Judges a set of ground control points without warping: fits polynomials "
             "of order 1, 2 and 3, reports the residuals and the paper's criteria for the "
             "chosen order, compares the three orders and recommends one.</p>"
@@ -437,14 +441,14 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
             "<li><b>Image</b> (INPUT, optional): gives the image size (GCPs outside it are "
             "an error; quadrants and the plot use its footprint). Without it, give "
             "IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.</li>"
-            + _HELP_GCP +
+           ) + self.tr(_HELP_GCP) + self.tr(
             "<li><b>Report</b> (OUTPUT_HTML), <b>residual table</b> (OUTPUT_CSV: one row "
             "per point with v_x, v_y, RMS_i, C_i, pixel residuals, leave-one-out "
             "residuals) and <b>JSON</b> (OUTPUT_JSON: everything, all orders), each "
-            "optional.</li></ul>" + _HELP_CRITERIA +
+            "optional.</li></ul>") + self.tr(_HELP_CRITERIA) + self.tr(
             "<p>Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, "
             "SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, "
-            "…) for the graphical modeler.</p>")
+            "…) for the graphical modeler.</p>"))
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_gcp_parameters(raster_optional=True)

@@ -8,6 +8,8 @@ from qgis.core import (QgsProcessingOutputNumber, QgsProcessingOutputString,
 
 from ..core import slope_filter as core_sf
 from ..core import slope_pipeline as core_sp
+from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
+
 from .base import GeomaticsAlgorithm
 
 LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
@@ -86,7 +88,8 @@ class _SlopeCommon(GeomaticsAlgorithm):
                     trend_cell=cell, trend_window=window)
 
 
-_SELECTION_HELP = (
+_SELECTION_HELP = QT_TRANSLATE_NOOP(
+    "GeomaticsAlgorithm",
     "<li><b>Returns filtered</b> (RETURNS, default 0 = all): 0 all returns are "
     "classified and serve as neighbours (the forest study); 1 last returns only: only "
     "last (or single) returns are classified and only they may reject others; first "
@@ -127,7 +130,7 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
                        "slope,point cloud").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
+        return (self.tr(
             "<p>Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground "
             "(class 1) with Vosselman's (2000) slope-based filter: a point is non-ground "
             "when some neighbour at horizontal distance 0 &lt; d ≤ r lies more than "
@@ -151,7 +154,7 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
             "<li><b>Height tolerance h</b> (HEIGHT_TOLERANCE, m, default 0.2, ≥ 0): extra "
             "rise allowed for every pair, absorbs ranging noise between close points; 0 "
             "is the rule as published.</li>"
-            + _SELECTION_HELP +
+           ) + self.tr(_SELECTION_HELP) + self.tr(
             "<li><b>Keep existing noise classes</b> (KEEP_NOISE, default yes, advanced): "
             "points already classified 7 or 18 keep their class and take no part.</li>"
             "<li><b>Classified point cloud</b> (OUTPUT, .laz/.las): every point, classes "
@@ -162,7 +165,7 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
             "<p>Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE, "
             "POINTS_PER_SECOND (filter step only).</p>"
             "<p>Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry "
-            "data. IAPRS XXXIII-B3, 935–942.</p>")
+            "data. IAPRS XXXIII-B3, 935–942.</p>"))
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input()
@@ -249,7 +252,7 @@ class SlopeThresholdSweepAlgorithm(_SlopeCommon):
                        "type I,type II,kappa,isprs").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
+        return (self.tr(
             "<p>Runs the slope-based ground filter for every combination of slope "
             "thresholds θ, radii r and height tolerances h and reports, against reference "
             "labels, Type I error (ground rejected), Type II error (objects accepted as "
@@ -274,7 +277,7 @@ class SlopeThresholdSweepAlgorithm(_SlopeCommon):
             "(HEIGHT_TOLERANCES, m, default \"0.2\"): lists; each value is one pass.</li>"
             "<li><b>Best by</b> (METRIC, default 0): 0 lowest total error, 1 highest kappa, "
             "2 lowest Type I, 3 lowest Type II.</li>"
-            + _SELECTION_HELP +
+           ) + self.tr(_SELECTION_HELP) + self.tr(
             "<li><b>Sweep table</b> (OUTPUT_CSV): one row per setting: radius_m, "
             "slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, "
             "type1_pct, type2_pct, total_pct, kappa_pct.</li>"
@@ -282,7 +285,7 @@ class SlopeThresholdSweepAlgorithm(_SlopeCommon):
             "the errors against θ.</li>"
             "<li><b>Classified with the best setting</b> (OUTPUT, optional LAS/LAZ).</li>"
             "</ul><p>Output numbers: BEST_RADIUS, BEST_SLOPE, BEST_HEIGHT_TOLERANCE, "
-            "BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.</p>")
+            "BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.</p>"))
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input()

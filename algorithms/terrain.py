@@ -26,12 +26,15 @@ from ..core.las_io import iter_las_chunks, las_info
 from ..core.raster_io import read_raster
 from ..core.report import html_page, html_params, html_table, svg_histogram, svg_scatter
 from ..core.terrain_io import parse_classes, read_class_points, write_grid
+from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
+
 from .base import GeomaticsAlgorithm
 
 NAN = float("nan")
 LAS_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
 
-_HELP_COMMON = (
+_HELP_COMMON = QT_TRANSLATE_NOOP(
+    "GeomaticsAlgorithm",
     "<li><b>Point cloud</b> (INPUT): a .las or .laz file (LAS 1.0–1.4), e.g. the output "
     "of a ground filter.</li>"
     "<li><b>Classes used</b> (CLASSES, default <code>2</code> = ground): comma-separated "
@@ -209,7 +212,7 @@ class IdwDtmAlgorithm(_GridAlgorithm):
                        "invdistnn,raster").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
+        return (self.tr(
             "<p>Interpolates a terrain raster from the ground points of a LAS/LAZ file by "
             "inverse distance weighting (Shepard 1968): ẑ = Σ w<sub>i</sub> z<sub>i</sub> / "
             "Σ w<sub>i</sub>, w<sub>i</sub> = 1/d<sub>i</sub><sup>p</sup>, over the nearest "
@@ -219,7 +222,7 @@ class IdwDtmAlgorithm(_GridAlgorithm):
             "1 M points onto 1 M cells take seconds.</p>"
             "<p><b>Example</b>: INPUT=ground.laz CLASSES=2 CELL_SIZE=1 POWER=3 NEIGHBOURS=12 "
             "(the seed paper's best setting, RMSE 0.204 m at 62 GNSS points).</p>"
-            "<p><b>Parameters</b></p><ul>" + _HELP_COMMON +
+            "<p><b>Parameters</b></p><ul>") + self.tr(_HELP_COMMON) + self.tr(
             "<li><b>Power</b> (POWER, default 2; the paper found 3 best).</li>"
             "<li><b>Neighbours</b> (NEIGHBOURS, default 12): nearest points used (gdal "
             "max_points); 0 = all points within the radius (needs RADIUS). More "
@@ -228,7 +231,7 @@ class IdwDtmAlgorithm(_GridAlgorithm):
             "within it are used (gdal radius).</li>"
             "<li><b>Minimum points</b> (MIN_POINTS, default 0): cells with fewer "
             "neighbours within the radius are nodata (gdal min_points).</li></ul>"
-            "<p>Outputs also the numbers N_POINTS, VALID_CELLS, NODATA_CELLS.</p>")
+            "<p>Outputs also the numbers N_POINTS, VALID_CELLS, NODATA_CELLS.</p>"))
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input_params()
@@ -316,7 +319,7 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
                        "variance,cross-validation").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
+        return (self.tr(
             "<p>Kriging (Matheron 1963; Cressie 1993) of the ground points of a LAS/LAZ "
             "file onto a raster, with a kriging variance (or standard deviation) raster. "
             "Ordinary kriging (unknown constant mean) or universal kriging with a linear "
@@ -340,7 +343,7 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
             "standardised error near 1 means realistic variances).</p>"
             "<p><b>Example</b>: INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=spherical "
             "NEIGHBOURS=16 CV_POINTS=1000.</p>"
-            "<p><b>Parameters</b></p><ul>" + _HELP_COMMON +
+            "<p><b>Parameters</b></p><ul>") + self.tr(_HELP_COMMON) + self.tr(
             "<li><b>Kriging type</b> (KRIGING_TYPE, 0 ordinary (default), 1 universal with "
             "linear drift).</li>"
             "<li><b>Variogram model</b> (VARIOGRAM, 0 linear, 1 power, 2 gaussian, 3 "
@@ -366,7 +369,7 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
             "<li><b>Variance output</b> (OUTPUT_VARIANCE, optional GeoTIFF): kriging "
             "variance (m²), or standard deviation (m) with VARIANCE_AS_STD.</li></ul>"
             "<p>Output numbers: NUGGET, SILL, RANGE (NaN for linear/power), N_POINTS, "
-            "VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).</p>")
+            "VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).</p>"))
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input_params()
