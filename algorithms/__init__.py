@@ -1,7 +1,4 @@
-"""READ /work/main/DEVELOPERS.md FIRST: conventions, venv, test tiers, and the session's
-coordination rules (commit only your own files, deadline 10:25 UTC).
-
-Processing algorithms: thin wrappers over :mod:`geomatics_toolbox.core`.
+"""Processing algorithms: thin wrappers over :mod:`geomatics_toolbox.core`.
 
 :func:`all_algorithms` is the single registry the provider loads; add one import
 and one entry per algorithm.

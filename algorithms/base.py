@@ -1,7 +1,4 @@
-"""READ /work/main/DEVELOPERS.md FIRST: conventions, venv, test tiers, and the session's
-coordination rules (commit only your own files, deadline 10:25 UTC).
-
-Common base for every Geomatics Toolbox Processing algorithm.
+"""Common base for every Geomatics Toolbox Processing algorithm.
 
 Subclasses set ``GROUP`` to one of the keys of :data:`GROUPS`, implement
 ``name``/``displayName``/``shortHelpString``/``initAlgorithm`` and put their work in

@@ -1,7 +1,4 @@
-"""READ /work/main/DEVELOPERS.md FIRST: conventions, venv, test tiers, and the session's
-coordination rules (commit only your own files, deadline 10:25 UTC).
-
-Qt-free computational core of the Geomatics Toolbox.
+"""Qt-free computational core of the Geomatics Toolbox.
 
 Everything below this package takes and returns numpy arrays (or plain Python
 objects) and never imports ``qgis``, ``PyQt`` or ``processing``: the Processing

@@ -1,7 +1,4 @@
-"""READ /work/main/DEVELOPERS.md FIRST: conventions, venv, test tiers, and the session's
-coordination rules (commit only your own files, deadline 10:25 UTC).
-
-Shared test fixtures.
+"""Shared test fixtures.
 
 The checkout is a QGIS plugin package whose folder name is arbitrary, so the tests
 load it under its installed name ``geomatics_toolbox`` (the same name ``make deploy``
