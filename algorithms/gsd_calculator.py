@@ -324,7 +324,7 @@ class GsdBatchAlgorithm(GeomaticsAlgorithm):
         return self.tr("GSD and photogrammetric accuracy calculator (batch table)")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
+        return (self.tr(
             "<p>Runs the GSD / accuracy calculator for every row of a table (CSV, "
             "spreadsheet or any layer) and writes a table with the inputs and all "
             "results.</p><p><b>Input columns</b> (case-insensitive): <i>camera</i> "
@@ -338,6 +338,8 @@ class GsdBatchAlgorithm(GeomaticsAlgorithm):
             "<p><b>Output</b>: the input columns plus gsd_cm, footprint_width_m, "
             "sigma_xyz_mm, dense_resolution_cm and every other result. A row with an "
             "invalid value stops the run with an error naming the row and column.</p>")
+            + self.tr("<p><b>Round GSD like the paper</b> (ROUND_GSD, default no): round "
+                      "the GSD to 0.01 cm/px before the derived quantities.</p>"))
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add(QgsProcessingParameterFeatureSource(

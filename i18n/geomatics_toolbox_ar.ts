@@ -676,49 +676,49 @@
 <context>
     <name>GeomaticsAlgorithm</name>
     <message>
-        <location filename="../algorithms/base.py" line="38"/>
+        <location filename="../algorithms/base.py" line="35"/>
         <source>LiDAR ground filtering</source>
         <translation>فلترة نقاط الأرض في بيانات الليدار</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="40"/>
+        <location filename="../algorithms/base.py" line="37"/>
         <source>Terrain models</source>
         <translation>نماذج التضاريس</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="41"/>
+        <location filename="../algorithms/base.py" line="38"/>
         <source>Image rectification</source>
         <translation>التصحيح الهندسي للصور</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="43"/>
+        <location filename="../algorithms/base.py" line="40"/>
         <source>Photogrammetry</source>
         <translation>المساحة التصويرية</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="44"/>
+        <location filename="../algorithms/base.py" line="41"/>
         <source>Accuracy assessment</source>
         <translation>تقييم الدقة</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="139"/>
+        <location filename="../algorithms/base.py" line="136"/>
         <source>Cancelled by the user; no output was written.</source>
         <translation>ألغى المستخدم العملية؛ لم تُكتب أي مخرجات.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="144"/>
+        <location filename="../algorithms/base.py" line="141"/>
         <source>Out of memory. Use a coarser cell size, a smaller extent or fewer points; no output was written.</source>
         <translation>نفدت الذاكرة. استخدم حجم خلية أكبر أو نطاقاً أصغر أو نقاطاً أقل؛ لم تُكتب أي مخرجات.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="44"/>
         <source>&lt;li&gt;&lt;b&gt;GCP file&lt;/b&gt; (GCP_FILE): a QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file (mapX,mapY,pixelX,pixelY,enable,…; pixelY is minus the row) or a CSV table with columns id, col,row (or pixel,line; or image_x,image_y in the QGIS sign convention), X,Y (or map_x,map_y / easting,northing) and optional enabled (1/0), role (gcp or check) and weight. Give the file &lt;i&gt;or&lt;/i&gt; a point layer; with neither, the Georeferencer's &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; next to the image is used.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP point layer&lt;/b&gt; (GCP_LAYER): points whose geometry holds the map coordinates (in the layer CRS) with fields for the image column and row (COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD, WEIGHT_FIELD (least-squares weights, e.g. 1/σ²; the report uses them, GDAL's warp fits unweighted).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pixel origin&lt;/b&gt; (PIXEL_ORIGIN, default 0 = corner): 0 — image coordinates in the GDAL/QGIS convention, (0,0) is the top-left corner of the image and the centre of the first pixel is (0.5, 0.5); 1 — integer values are pixel centres (0-based array indices), 0.5 is added. Rows always grow downwards (a negative row column is read as QGIS's −row). .points files are always corner-based.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): CRS of the map coordinates when the file has no '#CRS:' line (CSV files never have one). Missing CRS is an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, 1–3, default 1): 1 affine (≥ 3 GCPs), 2 (≥ 6), 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground resolution GR&lt;/b&gt; (GR, map units per pixel, optional): pixel size on the ground for the criteria; default sqrt|det J| of the affine fit of the GCPs.&lt;/li&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;ملف نقاط الضبط الأرضي&lt;/b&gt; (GCP_FILE): ملف &lt;i&gt;.points&lt;/i&gt; من أداة Georeferencer في QGIS (mapX,mapY,pixelX,pixelY,enable,…؛ وpixelY هو سالب رقم الصف) أو جدول CSV بالأعمدة id وcol,row (أو pixel,line؛ أو image_x,image_y باصطلاح الإشارة في QGIS) وX,Y (أو map_x,map_y / easting,northing) والأعمدة الاختيارية enabled (1/0) وrole (gcp أو check) وweight. حدِّد الملف &lt;i&gt;أو&lt;/i&gt; طبقة نقطية؛ وإن لم يُحدَّد أيٌّ منهما يُستخدم ملف &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; الخاص بأداة Georeferencer المجاور للصورة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقة نقطية لنقاط الضبط&lt;/b&gt; (GCP_LAYER): نقاط تحمل هندستُها الإحداثيات الخرائطية (بنظام إحداثيات الطبقة) مع حقلين لعمود الصورة وصفّها (COL_FIELD وROW_FIELD) والحقول الاختيارية ID_FIELD وENABLED_FIELD وROLE_FIELD وWEIGHT_FIELD (أوزان المربعات الصغرى، مثلاً 1/σ²؛ يستخدمها التقرير، أما التحويل الهندسي (warp) في GDAL فيُوائم دون أوزان).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مبدأ البكسل&lt;/b&gt; (PIXEL_ORIGIN، الافتراضي 0 = الركن): 0 — إحداثيات الصورة باصطلاح GDAL/QGIS، حيث (0,0) هو الركن العلوي الأيسر للصورة ومركز البكسل الأول هو (0.5, 0.5)؛ 1 — القيم الصحيحة هي مراكز البكسلات (فهارس مصفوفة تبدأ من 0)، وتُضاف إليها 0.5. تتزايد الصفوف دائماً نحو الأسفل (يُقرأ عمود الصفوف السالب على أنه −row بحسب اصطلاح QGIS). ملفات .points تعتمد دائماً على الأركان.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام إحداثيات نقاط الضبط&lt;/b&gt; (GCP_CRS): نظام الإحداثيات للإحداثيات الخرائطية حين لا يحوي الملف السطر &apos;#CRS:&apos; (ولا تحويه ملفات CSV أبداً). غياب نظام الإحداثيات خطأ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجة متعدد الحدود&lt;/b&gt; (ORDER، 1–3، الافتراضي 1): 1 تحويل تآلفي (≥ 3 نقاط ضبط)، 2 (≥ 6)، 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الدقة الأرضية GR&lt;/b&gt; (GR، وحدة خريطة لكل بكسل، اختياري): حجم البكسل على الأرض المستخدم في المعايير؛ الافتراضي sqrt|det J| من المواءمة التآلفية لنقاط الضبط.&lt;/li&gt;</translation>
+        <translation>&lt;li&gt;&lt;b&gt;ملف نقاط الضبط الأرضي&lt;/b&gt; (GCP_FILE): ملف &lt;i&gt;.points&lt;/i&gt; من أداة Georeferencer في QGIS (mapX,mapY,pixelX,pixelY,enable,…؛ وpixelY هو سالب رقم الصف) أو جدول CSV بالأعمدة id وcol,row (أو pixel,line؛ أو image_x,image_y باصطلاح الإشارة في QGIS) وX,Y (أو map_x,map_y / easting,northing) والأعمدة الاختيارية enabled (1/0) وrole (gcp أو check) وweight. حدِّد الملف &lt;i&gt;أو&lt;/i&gt; طبقة نقطية؛ وإن لم يُحدَّد أيٌّ منهما يُستخدم ملف &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; الخاص بأداة Georeferencer المجاور للصورة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقة نقطية لنقاط الضبط&lt;/b&gt; (GCP_LAYER): نقاط تحمل هندستُها الإحداثيات الخرائطية (بنظام إحداثيات الطبقة) مع حقلين لعمود الصورة وصفّها (COL_FIELD وROW_FIELD) والحقول الاختيارية ID_FIELD وENABLED_FIELD وROLE_FIELD وWEIGHT_FIELD (أوزان المربعات الصغرى، مثلاً 1/σ²؛ يستخدمها التقرير، أما التحويل الهندسي (warp) في GDAL فيُوائم دون أوزان).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مبدأ البكسل&lt;/b&gt; (PIXEL_ORIGIN، الافتراضي 0 = الركن): 0 — إحداثيات الصورة باصطلاح GDAL/QGIS، حيث (0,0) هو الركن العلوي الأيسر للصورة ومركز البكسل الأول هو (0.5, 0.5)؛ 1 — القيم الصحيحة هي مراكز البكسلات (فهارس مصفوفة تبدأ من 0)، وتُضاف إليها 0.5. تتزايد الصفوف دائماً نحو الأسفل (يُقرأ عمود الصفوف السالب على أنه −row بحسب اصطلاح QGIS). ملفات .points تعتمد دائماً على الأركان.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام إحداثيات نقاط الضبط&lt;/b&gt; (GCP_CRS): نظام الإحداثيات للإحداثيات الخرائطية حين لا يحوي الملف السطر '#CRS:' (ولا تحويه ملفات CSV أبداً). غياب نظام الإحداثيات خطأ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجة متعدد الحدود&lt;/b&gt; (ORDER، 1–3، الافتراضي 1): 1 تحويل تآلفي (≥ 3 نقاط ضبط)، 2 (≥ 6)، 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الدقة الأرضية GR&lt;/b&gt; (GR، وحدة خريطة لكل بكسل، اختياري): حجم البكسل على الأرض المستخدم في المعايير؛ الافتراضي sqrt|det J| من المواءمة التآلفية لنقاط الضبط.&lt;/li&gt;</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="70"/>
         <source>&lt;p&gt;&lt;b&gt;Criteria&lt;/b&gt; (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band 4·GR … 6·GR for RMS_T; per-point limit 0.25 mm·S = 5·GR; ≥ 68 % (strict 90 %) of points within RMS_T; no directional bias (quadrant sign balance, inner vs edge radial residuals, residual-vector plot). Also: independent check points (role 'check', never fitted), leave-one-out residuals, orders 1–3 side by side with a recommended order (never one whose redundancy n − N is below max(2, ⌈N/2⌉)) and suggested points to drop. Residuals are predicted − given, in map units and pixels.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;المعايير&lt;/b&gt; (مجلة جامعة تشرين للعلوم الهندسية 38(2)، 2016): RMS_i لكل نقطة ومساهمتها C_i = RMS_i/RMS_T؛ وRMS_x وRMS_y وRMS_T بالقسمة على n (وكذلك، مع الإشارة إلى ذلك، على n − N كما في أداة Georeferencer في QGIS)؛ ومقياس الخريطة S = 20000·GR ونطاق السماحية 4·GR … 6·GR لقيمة RMS_T؛ والحد لكل نقطة 0.25 mm·S = 5·GR؛ وأن تقع ≥ 68 % من النقاط (90 % في الصيغة الصارمة) ضمن RMS_T؛ وانعدام الانحياز الاتجاهي (توازن الإشارات بين الأرباع، والبواقي الشعاعية للنقاط الداخلية مقابل نقاط الحواف، ومخطط متجهات البواقي). وأيضاً: نقاط تحقق مستقلة (الدور &apos;check&apos;، لا تدخل في المواءمة أبداً)، وبواقي الاستبعاد الفردي، والدرجات 1–3 جنباً إلى جنب مع درجة موصى بها (لا تكون أبداً درجةً فائضها n − N أقل من max(2, ⌈N/2⌉)) ونقاط مقترحة للحذف. البواقي = القيمة المتنبأ بها − القيمة المعطاة، بوحدات الخريطة وبالبكسل.&lt;/p&gt;</translation>
+        <translation>&lt;p&gt;&lt;b&gt;المعايير&lt;/b&gt; (مجلة جامعة تشرين للعلوم الهندسية 38(2)، 2016): RMS_i لكل نقطة ومساهمتها C_i = RMS_i/RMS_T؛ وRMS_x وRMS_y وRMS_T بالقسمة على n (وكذلك، مع الإشارة إلى ذلك، على n − N كما في أداة Georeferencer في QGIS)؛ ومقياس الخريطة S = 20000·GR ونطاق السماحية 4·GR … 6·GR لقيمة RMS_T؛ والحد لكل نقطة 0.25 mm·S = 5·GR؛ وأن تقع ≥ 68 % من النقاط (90 % في الصيغة الصارمة) ضمن RMS_T؛ وانعدام الانحياز الاتجاهي (توازن الإشارات بين الأرباع، والبواقي الشعاعية للنقاط الداخلية مقابل نقاط الحواف، ومخطط متجهات البواقي). وأيضاً: نقاط تحقق مستقلة (الدور 'check'، لا تدخل في المواءمة أبداً)، وبواقي الاستبعاد الفردي، والدرجات 1–3 جنباً إلى جنب مع درجة موصى بها (لا تكون أبداً درجةً فائضها n − N أقل من max(2, ⌈N/2⌉)) ونقاط مقترحة للحذف. البواقي = القيمة المتنبأ بها − القيمة المعطاة، بوحدات الخريطة وبالبكسل.&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="91"/>
@@ -820,49 +820,54 @@
         <translation>&lt;p&gt;تشغّل حاسبة GSD والدقة لكل سطر من جدول (CSV أو جدول بيانات أو أي طبقة) وتكتب جدولاً بالمدخلات وجميع النتائج.&lt;/p&gt;&lt;p&gt;&lt;b&gt;أعمدة الإدخال&lt;/b&gt; (دون تمييز حالة الأحرف): &lt;i&gt;camera&lt;/i&gt; (اختياري، مفتاح كاميرا معرّفة: nikon_p100، dji_p4rtk، dji_p1_35، phaseone_ixm100_80)، &lt;i&gt;distance&lt;/i&gt; (م، إلزامي)، &lt;i&gt;sensor_width&lt;/i&gt; (مم)، &lt;i&gt;image_width&lt;/i&gt; (بكسل)، &lt;i&gt;focal_length&lt;/i&gt; (مم) — إلزامية ما لم تُحدَّد كاميرا — واختيارياً sensor_height وimage_height وtarget_gsd وk_m وk_s وpyramid_level وsubsampling_step وobserved_sx وobserved_sy وobserved_sz وobserved_sxyz وobserved_dense_std وforward_overlap وside_overlap وstereo_base (بالوحدات نفسها كما في الحاسبة المفردة).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المخرج&lt;/b&gt;: أعمدة الإدخال مضافاً إليها gsd_cm وfootprint_width_m وsigma_xyz_mm وdense_resolution_cm وسائر النتائج. السطر الذي يحوي قيمة غير صالحة يوقف التشغيل برسالة تذكر السطر والعمود.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="343"/>
+        <location filename="../algorithms/gsd_calculator.py" line="345"/>
         <source>Table of cameras and distances</source>
         <translation>جدول الكاميرات والمسافات</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="346"/>
+        <location filename="../algorithms/gsd_calculator.py" line="348"/>
         <source>Round GSD to 0.01 cm/px like the paper</source>
         <translation>تقريب GSD إلى 0.01 سم/بكسل كما في البحث</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="348"/>
+        <location filename="../algorithms/gsd_calculator.py" line="350"/>
         <source>GSD results</source>
         <translation>نتائج GSD</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="357"/>
+        <location filename="../algorithms/gsd_calculator.py" line="359"/>
         <source>The table has no &apos;distance&apos; column (m); columns found: {0}.</source>
         <translation>لا يحتوي الجدول على العمود 'distance' (م)؛ الأعمدة الموجودة: {0}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="373"/>
+        <location filename="../algorithms/gsd_calculator.py" line="375"/>
         <source>Cancelled by the user.</source>
         <translation>ألغى المستخدم العملية.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="379"/>
+        <location filename="../algorithms/gsd_calculator.py" line="381"/>
         <source>Row {row}: unknown camera &apos;{cam}&apos;; known: {known}.</source>
         <translation>السطر {row}: كاميرا غير معروفة '{cam}'؛ المعروفة: {known}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="396"/>
+        <location filename="../algorithms/gsd_calculator.py" line="398"/>
         <source>Row {row}, column &apos;{col}&apos;: &apos;{val}&apos; is not a number.</source>
         <translation>السطر {row}، العمود '{col}': القيمة '{val}' ليست رقماً.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="402"/>
+        <location filename="../algorithms/gsd_calculator.py" line="404"/>
         <source>Row {row}: missing {cols}; give the columns or a camera preset.</source>
         <translation>السطر {row}: القيم {cols} ناقصة؛ أضف الأعمدة أو حدّد كاميرا معرّفة مسبقاً.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="408"/>
+        <location filename="../algorithms/gsd_calculator.py" line="410"/>
         <source>Row {row}: {err}</source>
         <translation>السطر {row}: {err}</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/gsd_calculator.py" line="327"/>
+        <source>&lt;p&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;تقريب GSD كما في البحث&lt;/b&gt; (ROUND_GSD، الافتراضي: لا): يقرّب GSD إلى 0.01 سم/بكسل قبل حساب الكميات المشتقة.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>

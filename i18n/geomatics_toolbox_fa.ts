@@ -676,49 +676,49 @@
 <context>
     <name>GeomaticsAlgorithm</name>
     <message>
-        <location filename="../algorithms/base.py" line="38"/>
+        <location filename="../algorithms/base.py" line="35"/>
         <source>LiDAR ground filtering</source>
         <translation>فیلتر کردن نقاط زمینی لایدار</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="40"/>
+        <location filename="../algorithms/base.py" line="37"/>
         <source>Terrain models</source>
         <translation>مدل‌های رقومی زمین</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="41"/>
+        <location filename="../algorithms/base.py" line="38"/>
         <source>Image rectification</source>
         <translation>تصحیح هندسی تصویر</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="43"/>
+        <location filename="../algorithms/base.py" line="40"/>
         <source>Photogrammetry</source>
         <translation>فتوگرامتری</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="44"/>
+        <location filename="../algorithms/base.py" line="41"/>
         <source>Accuracy assessment</source>
         <translation>ارزیابی دقت</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="139"/>
+        <location filename="../algorithms/base.py" line="136"/>
         <source>Cancelled by the user; no output was written.</source>
         <translation>کاربر عملیات را لغو کرد؛ هیچ خروجی‌ای نوشته نشد.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="144"/>
+        <location filename="../algorithms/base.py" line="141"/>
         <source>Out of memory. Use a coarser cell size, a smaller extent or fewer points; no output was written.</source>
         <translation>حافظه کافی نیست. اندازهٔ سلول بزرگ‌تر، محدودهٔ کوچک‌تر یا نقاط کمتری به کار ببرید؛ هیچ خروجی‌ای نوشته نشد.</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="44"/>
         <source>&lt;li&gt;&lt;b&gt;GCP file&lt;/b&gt; (GCP_FILE): a QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file (mapX,mapY,pixelX,pixelY,enable,…; pixelY is minus the row) or a CSV table with columns id, col,row (or pixel,line; or image_x,image_y in the QGIS sign convention), X,Y (or map_x,map_y / easting,northing) and optional enabled (1/0), role (gcp or check) and weight. Give the file &lt;i&gt;or&lt;/i&gt; a point layer; with neither, the Georeferencer's &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; next to the image is used.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP point layer&lt;/b&gt; (GCP_LAYER): points whose geometry holds the map coordinates (in the layer CRS) with fields for the image column and row (COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD, WEIGHT_FIELD (least-squares weights, e.g. 1/σ²; the report uses them, GDAL's warp fits unweighted).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pixel origin&lt;/b&gt; (PIXEL_ORIGIN, default 0 = corner): 0 — image coordinates in the GDAL/QGIS convention, (0,0) is the top-left corner of the image and the centre of the first pixel is (0.5, 0.5); 1 — integer values are pixel centres (0-based array indices), 0.5 is added. Rows always grow downwards (a negative row column is read as QGIS's −row). .points files are always corner-based.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): CRS of the map coordinates when the file has no '#CRS:' line (CSV files never have one). Missing CRS is an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, 1–3, default 1): 1 affine (≥ 3 GCPs), 2 (≥ 6), 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground resolution GR&lt;/b&gt; (GR, map units per pixel, optional): pixel size on the ground for the criteria; default sqrt|det J| of the affine fit of the GCPs.&lt;/li&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;پروندهٔ نقاط کنترل زمینی&lt;/b&gt; (GCP_FILE): پروندهٔ &lt;i&gt;.points&lt;/i&gt; ابزار Georeferencer در QGIS (mapX,mapY,pixelX,pixelY,enable,…؛ pixelY منفیِ شمارهٔ سطر است) یا جدول CSV با ستون‌های id، col,row (یا pixel,line؛ یا image_x,image_y با قرارداد علامت QGIS)، X,Y (یا map_x,map_y / easting,northing) و ستون‌های اختیاری enabled (1/0)، role (gcp یا check) و weight. پرونده &lt;i&gt;یا&lt;/i&gt; یک لایهٔ نقطه‌ای را بدهید؛ اگر هیچ‌کدام داده نشود، پروندهٔ &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; ابزار Georeferencer در کنار تصویر به کار می‌رود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;لایهٔ نقطه‌ای نقاط کنترل&lt;/b&gt; (GCP_LAYER): نقاطی که هندسه‌شان مختصات نقشه‌ای را (در سیستم مختصات لایه) در خود دارد، با فیلدهایی برای ستون و سطر تصویر (COL_FIELD، ROW_FIELD) و فیلدهای اختیاری ID_FIELD، ENABLED_FIELD، ROLE_FIELD، WEIGHT_FIELD (وزن‌های کمترین مربعات، مثلاً 1/σ²؛ گزارش از آن‌ها استفاده می‌کند، اما warp در GDAL بدون وزن برازش می‌دهد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مبدأ پیکسل&lt;/b&gt; (PIXEL_ORIGIN، پیش‌فرض 0 = گوشه): 0 — مختصات تصویر با قرارداد GDAL/QGIS، که در آن (0,0) گوشهٔ بالا-چپ تصویر و مرکز نخستین پیکسل (0.5, 0.5) است؛ 1 — مقادیر صحیح مراکز پیکسل‌اند (اندیس‌های آرایه از 0)، و 0.5 به آن‌ها افزوده می‌شود. سطرها همیشه رو به پایین افزایش می‌یابند (ستون سطرِ منفی به‌صورت −row در قرارداد QGIS خوانده می‌شود). پرونده‌های .points همیشه بر پایهٔ گوشه‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات نقاط کنترل&lt;/b&gt; (GCP_CRS): سیستم مختصاتِ مختصات نقشه‌ای وقتی پرونده خط &apos;#CRS:&apos; ندارد (پرونده‌های CSV هرگز آن را ندارند). نبودِ سیستم مختصات خطا است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجهٔ چندجمله‌ای&lt;/b&gt; (ORDER، 1–3، پیش‌فرض 1): 1 آفین (≥ 3 نقطهٔ کنترل)، 2 (≥ 6)، 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;قدرت تفکیک زمینی GR&lt;/b&gt; (GR، واحد نقشه بر پیکسل، اختیاری): اندازهٔ پیکسل روی زمین برای معیارها؛ پیش‌فرض sqrt|det J| برازش آفین نقاط کنترل.&lt;/li&gt;</translation>
+        <translation>&lt;li&gt;&lt;b&gt;پروندهٔ نقاط کنترل زمینی&lt;/b&gt; (GCP_FILE): پروندهٔ &lt;i&gt;.points&lt;/i&gt; ابزار Georeferencer در QGIS (mapX,mapY,pixelX,pixelY,enable,…؛ pixelY منفیِ شمارهٔ سطر است) یا جدول CSV با ستون‌های id، col,row (یا pixel,line؛ یا image_x,image_y با قرارداد علامت QGIS)، X,Y (یا map_x,map_y / easting,northing) و ستون‌های اختیاری enabled (1/0)، role (gcp یا check) و weight. پرونده &lt;i&gt;یا&lt;/i&gt; یک لایهٔ نقطه‌ای را بدهید؛ اگر هیچ‌کدام داده نشود، پروندهٔ &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; ابزار Georeferencer در کنار تصویر به کار می‌رود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;لایهٔ نقطه‌ای نقاط کنترل&lt;/b&gt; (GCP_LAYER): نقاطی که هندسه‌شان مختصات نقشه‌ای را (در سیستم مختصات لایه) در خود دارد، با فیلدهایی برای ستون و سطر تصویر (COL_FIELD، ROW_FIELD) و فیلدهای اختیاری ID_FIELD، ENABLED_FIELD، ROLE_FIELD، WEIGHT_FIELD (وزن‌های کمترین مربعات، مثلاً 1/σ²؛ گزارش از آن‌ها استفاده می‌کند، اما warp در GDAL بدون وزن برازش می‌دهد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مبدأ پیکسل&lt;/b&gt; (PIXEL_ORIGIN، پیش‌فرض 0 = گوشه): 0 — مختصات تصویر با قرارداد GDAL/QGIS، که در آن (0,0) گوشهٔ بالا-چپ تصویر و مرکز نخستین پیکسل (0.5, 0.5) است؛ 1 — مقادیر صحیح مراکز پیکسل‌اند (اندیس‌های آرایه از 0)، و 0.5 به آن‌ها افزوده می‌شود. سطرها همیشه رو به پایین افزایش می‌یابند (ستون سطرِ منفی به‌صورت −row در قرارداد QGIS خوانده می‌شود). پرونده‌های .points همیشه بر پایهٔ گوشه‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات نقاط کنترل&lt;/b&gt; (GCP_CRS): سیستم مختصاتِ مختصات نقشه‌ای وقتی پرونده خط '#CRS:' ندارد (پرونده‌های CSV هرگز آن را ندارند). نبودِ سیستم مختصات خطا است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجهٔ چندجمله‌ای&lt;/b&gt; (ORDER، 1–3، پیش‌فرض 1): 1 آفین (≥ 3 نقطهٔ کنترل)، 2 (≥ 6)، 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;قدرت تفکیک زمینی GR&lt;/b&gt; (GR، واحد نقشه بر پیکسل، اختیاری): اندازهٔ پیکسل روی زمین برای معیارها؛ پیش‌فرض sqrt|det J| برازش آفین نقاط کنترل.&lt;/li&gt;</translation>
     </message>
     <message>
         <location filename="../algorithms/gcp_rectification.py" line="70"/>
         <source>&lt;p&gt;&lt;b&gt;Criteria&lt;/b&gt; (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band 4·GR … 6·GR for RMS_T; per-point limit 0.25 mm·S = 5·GR; ≥ 68 % (strict 90 %) of points within RMS_T; no directional bias (quadrant sign balance, inner vs edge radial residuals, residual-vector plot). Also: independent check points (role 'check', never fitted), leave-one-out residuals, orders 1–3 side by side with a recommended order (never one whose redundancy n − N is below max(2, ⌈N/2⌉)) and suggested points to drop. Residuals are predicted − given, in map units and pixels.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;معیارها&lt;/b&gt; (مجلهٔ علوم مهندسی دانشگاه تشرین 38(2)، 2016): RMS_i هر نقطه و سهم آن C_i = RMS_i/RMS_T؛ RMS_x، RMS_y و RMS_T با مقسوم‌علیه n (و، با برچسب جداگانه، n − N مانند Georeferencer در QGIS)؛ مقیاس نقشه S = 20000·GR و بازهٔ تلورانس 4·GR … 6·GR برای RMS_T؛ حد مجاز هر نقطه 0.25 mm·S = 5·GR؛ ≥ 68 % (در حالت سخت‌گیرانه 90 %) نقاط در محدودهٔ RMS_T؛ نبودِ سوگیری جهت‌دار (توازن علامت‌ها در ربع‌ها، باقی‌مانده‌های شعاعی نقاط درونی در برابر نقاط لبه، نمودار بردارهای باقی‌مانده). همچنین: نقاط چک مستقل (نقش &apos;check&apos;، هرگز در برازش وارد نمی‌شوند)، باقی‌مانده‌های حذف‌یکی، درجه‌های 1–3 در کنار هم با یک درجهٔ پیشنهادی (هرگز درجه‌ای که افزونگی n − N آن کمتر از max(2, ⌈N/2⌉) باشد) و نقاط پیشنهادی برای حذف. باقی‌مانده‌ها برابر مقدار پیش‌بینی‌شده − مقدار داده‌شده‌اند، به واحد نقشه و پیکسل.&lt;/p&gt;</translation>
+        <translation>&lt;p&gt;&lt;b&gt;معیارها&lt;/b&gt; (مجلهٔ علوم مهندسی دانشگاه تشرین 38(2)، 2016): RMS_i هر نقطه و سهم آن C_i = RMS_i/RMS_T؛ RMS_x، RMS_y و RMS_T با مقسوم‌علیه n (و، با برچسب جداگانه، n − N مانند Georeferencer در QGIS)؛ مقیاس نقشه S = 20000·GR و بازهٔ تلورانس 4·GR … 6·GR برای RMS_T؛ حد مجاز هر نقطه 0.25 mm·S = 5·GR؛ ≥ 68 % (در حالت سخت‌گیرانه 90 %) نقاط در محدودهٔ RMS_T؛ نبودِ سوگیری جهت‌دار (توازن علامت‌ها در ربع‌ها، باقی‌مانده‌های شعاعی نقاط درونی در برابر نقاط لبه، نمودار بردارهای باقی‌مانده). همچنین: نقاط چک مستقل (نقش 'check'، هرگز در برازش وارد نمی‌شوند)، باقی‌مانده‌های حذف‌یکی، درجه‌های 1–3 در کنار هم با یک درجهٔ پیشنهادی (هرگز درجه‌ای که افزونگی n − N آن کمتر از max(2, ⌈N/2⌉) باشد) و نقاط پیشنهادی برای حذف. باقی‌مانده‌ها برابر مقدار پیش‌بینی‌شده − مقدار داده‌شده‌اند، به واحد نقشه و پیکسل.&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="91"/>
@@ -820,49 +820,54 @@
         <translation>&lt;p&gt;محاسبه‌گر GSD و دقت را برای هر ردیف یک جدول (CSV، صفحه‌گسترده یا هر لایه) اجرا می‌کند و جدولی با ورودی‌ها و همهٔ نتایج می‌نویسد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;ستون‌های ورودی&lt;/b&gt; (بدون حساسیت به حروف بزرگ و کوچک): &lt;i&gt;camera&lt;/i&gt; (اختیاری، کلید دوربین: nikon_p100، dji_p4rtk، dji_p1_35، phaseone_ixm100_80)، &lt;i&gt;distance&lt;/i&gt; (متر، الزامی)، &lt;i&gt;sensor_width&lt;/i&gt; (میلی‌متر)، &lt;i&gt;image_width&lt;/i&gt; (پیکسل)، &lt;i&gt;focal_length&lt;/i&gt; (میلی‌متر) — الزامی مگر آنکه دوربین داده شود — و به‌اختیار sensor_height، image_height، target_gsd، k_m، k_s، pyramid_level، subsampling_step، observed_sx، observed_sy، observed_sz، observed_sxyz، observed_dense_std، forward_overlap، side_overlap، stereo_base (با همان واحدهای محاسبه‌گر تکی).&lt;/p&gt;&lt;p&gt;&lt;b&gt;خروجی&lt;/b&gt;: ستون‌های ورودی به‌علاوهٔ gsd_cm، footprint_width_m، sigma_xyz_mm، dense_resolution_cm و دیگر نتایج. ردیفی با مقدار نامعتبر اجرا را با پیامی که ردیف و ستون را نام می‌برد متوقف می‌کند.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="343"/>
+        <location filename="../algorithms/gsd_calculator.py" line="345"/>
         <source>Table of cameras and distances</source>
         <translation>جدول دوربین‌ها و فاصله‌ها</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="346"/>
+        <location filename="../algorithms/gsd_calculator.py" line="348"/>
         <source>Round GSD to 0.01 cm/px like the paper</source>
         <translation>گرد کردن GSD به ۰٫۰۱ سانتی‌متر/پیکسل مانند مقاله</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="348"/>
+        <location filename="../algorithms/gsd_calculator.py" line="350"/>
         <source>GSD results</source>
         <translation>نتایج GSD</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="357"/>
+        <location filename="../algorithms/gsd_calculator.py" line="359"/>
         <source>The table has no &apos;distance&apos; column (m); columns found: {0}.</source>
         <translation>جدول ستون 'distance' (متر) ندارد؛ ستون‌های موجود: {0}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="373"/>
+        <location filename="../algorithms/gsd_calculator.py" line="375"/>
         <source>Cancelled by the user.</source>
         <translation>کاربر عملیات را لغو کرد.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="379"/>
+        <location filename="../algorithms/gsd_calculator.py" line="381"/>
         <source>Row {row}: unknown camera &apos;{cam}&apos;; known: {known}.</source>
         <translation>ردیف {row}: دوربین ناشناختهٔ '{cam}'؛ دوربین‌های شناخته: {known}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="396"/>
+        <location filename="../algorithms/gsd_calculator.py" line="398"/>
         <source>Row {row}, column &apos;{col}&apos;: &apos;{val}&apos; is not a number.</source>
         <translation>ردیف {row}، ستون '{col}': مقدار '{val}' عدد نیست.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="402"/>
+        <location filename="../algorithms/gsd_calculator.py" line="404"/>
         <source>Row {row}: missing {cols}; give the columns or a camera preset.</source>
         <translation>ردیف {row}: مقادیر {cols} وجود ندارد؛ ستون‌ها یا یک دوربین از پیش تعریف‌شده بدهید.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="408"/>
+        <location filename="../algorithms/gsd_calculator.py" line="410"/>
         <source>Row {row}: {err}</source>
         <translation>ردیف {row}: {err}</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/gsd_calculator.py" line="327"/>
+        <source>&lt;p&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;گرد کردن GSD مانند مقاله&lt;/b&gt; (ROUND_GSD، پیش‌فرض: خیر): GSD را پیش از محاسبهٔ کمیت‌های وابسته به ۰٫۰۱ سانتی‌متر/پیکسل گرد می‌کند.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>

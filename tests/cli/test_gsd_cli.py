@@ -35,3 +35,17 @@ def test_run_gsd_bad_focal_length_fails(qgis_process, tmp_path):
                                           FOCAL_LENGTH=0, OUTPUT_HTML=html)
     assert "focal_length" in msg
     assert not html.exists()
+
+
+def test_every_algorithm_has_help_with_defaults(qgis_process):
+    """`qgis_process help` works for every registered algorithm and documents defaults."""
+    listing = qgis_process.call("list").stdout
+    ids = sorted({line.split()[0] for line in listing.splitlines()
+                  if line.strip().startswith("geomatics:")})
+    assert len(ids) >= 13, ids
+    for alg in ids:
+        out = qgis_process.call("help", alg)
+        assert out.returncode == 0, (alg, out.stderr)
+        assert "Arguments" in out.stdout, alg
+        if alg != "geomatics:lidar_to_dtm":  # the model documents its inputs per parameter
+            assert "default" in out.stdout.lower(), alg
