@@ -46,7 +46,16 @@ $(VENV)/.stamp: requirements.txt requirements-dev.txt | system-deps
 		-r requirements-dev.txt
 	touch $@
 
-venv: $(VENV)/.stamp
+# `import geomatics_toolbox` from the venv (scripts, benchmarks): a link under the
+# installed name and a .pth file pointing at it.
+$(VENV)/.plugin-link: $(VENV)/.stamp
+	mkdir -p $(VENV)/plugin-path
+	ln -sfn "$(CURDIR)" $(VENV)/plugin-path/$(PLUGIN)
+	echo "$(CURDIR)/$(VENV)/plugin-path" > \
+		"$$($(PY) -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')/$(PLUGIN).pth"
+	touch $@
+
+venv: $(VENV)/.stamp $(VENV)/.plugin-link
 
 # --------------------------------------------------------------------------- i18n
 ts: venv

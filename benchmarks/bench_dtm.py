@@ -25,7 +25,6 @@ Usage: ``.venv/bin/python benchmarks/bench_dtm.py [--quick]``; writes
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import json
 import os
 import platform
@@ -44,17 +43,8 @@ ISPRS = Path(os.environ.get("GEOMATICS_ISPRS_DIR", ROOT.parent / "shared" / "dat
 MEM_LIMIT = 8 << 30   # for the PyKrige peers (ours is measured against 4 GiB)
 
 
-def load_package():
-    if "geomatics_toolbox" in sys.modules:
-        return
-    spec = importlib.util.spec_from_file_location(
-        "geomatics_toolbox", ROOT / "__init__.py", submodule_search_locations=[str(ROOT)])
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules["geomatics_toolbox"] = mod
-    spec.loader.exec_module(mod)
 
 
-load_package()
 from geomatics_toolbox.core.dtm_accuracy import dtm_accuracy  # noqa: E402
 from geomatics_toolbox.core.grid import grid_from_extent  # noqa: E402
 from geomatics_toolbox.core.idw import idw_grid  # noqa: E402

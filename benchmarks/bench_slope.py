@@ -25,7 +25,6 @@ Rows written to ``benchmarks/results/slope.md``:
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import json
 import os
 import subprocess
@@ -47,14 +46,6 @@ LSQ = {"samp11": 22.1, "samp12": 6.44, "samp31": 3.03, "samp54": 4.04}
 LIMITS = {"samp11": 21.0, "samp12": 11.0, "samp31": 8.0, "samp54": 5.5}
 
 
-def _load_package():
-    if "geomatics_toolbox" in sys.modules:
-        return
-    spec = importlib.util.spec_from_file_location(
-        "geomatics_toolbox", ROOT / "__init__.py", submodule_search_locations=[str(ROOT)])
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules["geomatics_toolbox"] = mod
-    spec.loader.exec_module(mod)
 
 
 # ----------------------------------------------------------------------------- ISPRS
@@ -116,11 +107,6 @@ _CHILD = r"""
 import json, os, resource, sys, time
 import numpy as np
 sys.path.insert(0, {root!r})
-import importlib.util
-spec = importlib.util.spec_from_file_location("geomatics_toolbox", {init!r},
-                                              submodule_search_locations=[{root!r}])
-mod = importlib.util.module_from_spec(spec); sys.modules["geomatics_toolbox"] = mod
-spec.loader.exec_module(mod)
 from geomatics_toolbox.core import slope_filter as sf
 x = np.load({xyz!r} + ".x.npy"); y = np.load({xyz!r} + ".y.npy"); z = np.load({xyz!r} + ".z.npy")
 sel = None
@@ -348,7 +334,6 @@ def main(argv=None) -> int:
     ap.add_argument("--quick", action="store_true", help="1 M tile, smaller sweep")
     ap.add_argument("--skip-speed", action="store_true", help="ISPRS rows only")
     args = ap.parse_args(argv)
-    _load_package()
     isprs, info = isprs_rows(args.quick)
     speed = None
     if not args.skip_speed:

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import argparse
 import datetime
-import importlib.util
 import json
 import os
 import platform
@@ -28,19 +27,9 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 RESULTS = Path(__file__).resolve().parent / "results"
-PLUGIN_NAME = "geomatics_toolbox"
 DENSITY = 10.0
 
 
-def load_plugin_package() -> None:
-    """Import the checkout as package ``geomatics_toolbox`` (as tests/conftest.py)."""
-    if PLUGIN_NAME in sys.modules:
-        return
-    spec = importlib.util.spec_from_file_location(
-        PLUGIN_NAME, ROOT / "__init__.py", submodule_search_locations=[str(ROOT)])
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[PLUGIN_NAME] = module
-    spec.loader.exec_module(module)
 
 
 def _rss_mb() -> float:
@@ -58,7 +47,6 @@ def _rss_mb() -> float:
 
 def worker(n_points: int, seed: int) -> dict:
     """Generate ``n_points`` (approx.) and write them as LAZ; returns the timings."""
-    load_plugin_package()
     import numpy as np  # noqa: F401  (import cost outside the timings)
     from geomatics_toolbox.core import las_io  # noqa: F401
     from geomatics_toolbox.core.synthetic import generate_tile, write_tile

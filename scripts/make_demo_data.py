@@ -16,27 +16,16 @@ Usage: ``python scripts/make_demo_data.py [--out DIR] [--seed N]``.
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-PLUGIN_NAME = "geomatics_toolbox"
 
 DEMO = dict(extent=(300.0, 300.0), origin=(500_000.0, 4_000_000.0), density=4.0)
 CRS = "EPSG:32632"
 N_CHECKPOINTS = 62
 
 
-def load_plugin_package() -> None:
-    """Import the checkout as package ``geomatics_toolbox`` (as tests/conftest.py)."""
-    if PLUGIN_NAME in sys.modules:
-        return
-    spec = importlib.util.spec_from_file_location(
-        PLUGIN_NAME, ROOT / "__init__.py", submodule_search_locations=[str(ROOT)])
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[PLUGIN_NAME] = module
-    spec.loader.exec_module(module)
 
 
 def write_checkpoints_csv(cp, path) -> None:
@@ -82,7 +71,6 @@ def write_checkpoints_gpkg(cp, path, crs: str = CRS) -> None:
 
 def make_demo(out_dir, *, seed: int = 2) -> dict:
     """Generate the demo tile and check points into ``out_dir``; returns the paths."""
-    load_plugin_package()
     from geomatics_toolbox.core.synthetic import generate_tile, write_tile
 
     out = Path(out_dir)
