@@ -26,7 +26,6 @@ from __future__ import annotations
 
 import argparse
 import datetime
-import importlib.util
 import itertools
 import json
 import os
@@ -46,14 +45,6 @@ PAPER = {"samp31": (100, 3.03), "samp54": (50, 4.04), "samp12": (100, 6.44),
 CSF_PUBLISHED = {"samp11": 12.01, "samp12": 2.97, "samp31": 1.61, "samp54": 3.18}
 
 
-def _load_package():
-    if "geomatics_toolbox" in sys.modules:
-        return
-    spec = importlib.util.spec_from_file_location(
-        "geomatics_toolbox", ROOT / "__init__.py", submodule_search_locations=[str(ROOT)])
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules["geomatics_toolbox"] = mod
-    spec.loader.exec_module(mod)
 
 
 def _acc(pred, ref):
@@ -187,11 +178,6 @@ def isprs_section(quick):
 _CHILD = r"""
 import json, os, resource, sys, time
 import numpy as np
-import importlib.util
-spec = importlib.util.spec_from_file_location("geomatics_toolbox", {init!r},
-                                              submodule_search_locations=[{root!r}])
-mod = importlib.util.module_from_spec(spec); sys.modules["geomatics_toolbox"] = mod
-spec.loader.exec_module(mod)
 from geomatics_toolbox.core.lsq_filter import lsq_ground_filter
 x = np.load({xyz!r} + ".x.npy"); y = np.load({xyz!r} + ".y.npy"); z = np.load({xyz!r} + ".z.npy")
 def status(key):
@@ -429,7 +415,6 @@ def main(argv=None):
     ap.add_argument("--quick", action="store_true", help="smaller tiles and CSF grid")
     ap.add_argument("--no-speed", action="store_true", help="ISPRS rows only")
     args = ap.parse_args(argv)
-    _load_package()
     isprs, msg = isprs_section(args.quick)
     if msg:
         print(msg, flush=True)
