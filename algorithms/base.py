@@ -116,6 +116,15 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
                 "cancel": feedback.isCanceled}
 
     @staticmethod
+    def report_lang() -> str:
+        """Language code of the user interface, for the ``lang`` of HTML reports."""
+        try:
+            from ..plugin import user_locale
+            return user_locale()
+        except Exception:  # noqa: BLE001 - the report language is cosmetic
+            return "en"
+
+    @staticmethod
     def write_text(path: str, text: str) -> str:
         """Write a text output (HTML, CSV, JSON) atomically; returns ``path``."""
         with atomic_output(path) as tmp:

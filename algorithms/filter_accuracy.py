@@ -17,12 +17,6 @@ LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
 LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
 
 
-def _locale() -> str:
-    try:
-        from ..plugin import user_locale
-        return user_locale()
-    except Exception:  # noqa: BLE001 - the report language is a nicety
-        return "en"
 
 
 class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
@@ -196,4 +190,4 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
             "<p class='note'>" + esc(tr(
                 "Measures of the ISPRS filter test: Sithole, G. & Vosselman, G. (2004), "
                 "ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.")) + "</p>"])
-        return html_page(tr("Ground filter accuracy"), body, lang=_locale())
+        return html_page(tr("Ground filter accuracy"), body, lang=self.report_lang())

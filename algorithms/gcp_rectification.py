@@ -292,12 +292,6 @@ class _GcpBase(GeomaticsAlgorithm):
         return {k: (None if isinstance(v, float) and math.isnan(v) else v)
                 for k, v in out.items()}
 
-    def html_lang(self):
-        try:
-            from ..plugin import user_locale
-            return user_locale()
-        except Exception:  # noqa: BLE001 - language is cosmetic
-            return "en"
 
 
 class RectifyGcpAlgorithm(_GcpBase):
@@ -405,7 +399,7 @@ class RectifyGcpAlgorithm(_GcpBase):
             extra = {"rectified image": out, "resampling": resampling,
                      "output resolution": f"{res.resolution:.6g}",
                      "output size": f"{res.width} × {res.height} px"}
-            self.write_text(html, gcp_report.to_html(acc, lang=self.html_lang(),
+            self.write_text(html, gcp_report.to_html(acc, lang=self.report_lang(),
                                                      extra_params=extra))
             outputs[self.OUTPUT_HTML] = html
         feedback.setProgress(100)
@@ -512,7 +506,7 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
             outputs[f"LOO_RMS_T_ORDER{t}"] = (r.loo_rms if r is not None and r.ok else None)
         if paths[self.OUTPUT_HTML]:
             self.write_text(paths[self.OUTPUT_HTML],
-                            gcp_report.to_html(acc, lang=self.html_lang()))
+                            gcp_report.to_html(acc, lang=self.report_lang()))
             outputs[self.OUTPUT_HTML] = paths[self.OUTPUT_HTML]
         if paths[self.OUTPUT_CSV]:
             self.write_text(paths[self.OUTPUT_CSV], gcp_report.to_csv(acc))

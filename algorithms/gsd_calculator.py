@@ -290,9 +290,8 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
                     "Formulas and defaults from Al Khalil (2019); the paper finds observed "
                     "phototriangulation accuracy about 3–5 times the theoretical value. "
                     "Items marked (extension) are not in the paper.") + "</p>")
-        from ..plugin import user_locale
         return html_page(self.tr("GSD and photogrammetric accuracy"), body,
-                         lang=user_locale())
+                         lang=self.report_lang())
 
 
 class GsdBatchAlgorithm(GeomaticsAlgorithm):

@@ -24,12 +24,6 @@ REJECTION_KEYS = ["reweighted", "cumulative"]
 MAX_TILE_ROWS = 200
 
 
-def _locale() -> str:
-    try:
-        from ..plugin import user_locale
-        return user_locale()
-    except Exception:  # noqa: BLE001 - the report language is a nicety
-        return "en"
 
 
 class LsqGroundFilterAlgorithm(GeomaticsAlgorithm):
@@ -423,5 +417,5 @@ class LsqGroundFilterAlgorithm(GeomaticsAlgorithm):
                      "ours. Accuracy terms (Type I, Type II, total) after Sithole & "
                      "Vosselman (2004).")) + "</p>"]
         return html_page(tr("Ground filter (least-squares polynomial)"), "\n".join(body),
-                         lang=_locale())
+                         lang=self.report_lang())
 

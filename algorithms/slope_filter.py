@@ -19,12 +19,6 @@ MODE_KEYS = list(core_sf.MODES)                # exact, adaptive
 METRIC_KEYS = ["total", "kappa", "type1", "type2"]
 
 
-def _locale() -> str:
-    try:
-        from ..plugin import user_locale
-        return user_locale()
-    except Exception:  # noqa: BLE001 - the report language is a nicety
-        return "en"
 
 
 class _SlopeCommon(GeomaticsAlgorithm):
@@ -211,7 +205,7 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
             src, out or None, ground_output=gout or None, html_output=html or None,
             radius=radius, slope=slope, height_tolerance=h,
             keep_noise_classes=self.parameterAsBool(parameters, self.KEEP_NOISE, context),
-            lang=_locale(), **kw, **self.core_callbacks(feedback))
+            lang=self.report_lang(), **kw, **self.core_callbacks(feedback))
         feedback.pushInfo(self.tr("{} points: {} ground, {} non-ground, {} low outliers; "
                                   "filter {:.1f} s").format(
             s.n_points, s.n_ground, s.n_nonground, s.n_noise, s.seconds.get("filter", 0.0)))
@@ -352,7 +346,7 @@ class SlopeThresholdSweepAlgorithm(_SlopeCommon):
         s = core_sp.sweep_file(src, reference=ref, ground_classes=classes, slopes=slopes,
                                radii=radii, height_tolerances=hs, metric=metric,
                                csv_output=csv or None, html_output=html or None,
-                               output=out or None, lang=_locale(), **kw,
+                               output=out or None, lang=self.report_lang(), **kw,
                                **self.core_callbacks(feedback))
         b = s.result.best
         for row in s.result.rows:

@@ -45,6 +45,7 @@ from typing import Optional
 import numpy as np
 from scipy.spatial import cKDTree
 
+from .coords import as_xyz
 from .grid import GridSpec, check_memory, default_max_distance, row_blocks
 from .progress import Monitor
 
@@ -138,18 +139,8 @@ def gdal_quadtree_rank(x, y, *, capacity: int = 8, ratio: float = 0.55) -> np.nd
 
 
 def _validate(x, y, z, power, max_points, radius, min_points, smoothing):
-    x = np.asarray(x, dtype=np.float64).ravel()
-    y = np.asarray(y, dtype=np.float64).ravel()
-    z = np.asarray(z, dtype=np.float64).ravel()
-    if not (x.size == y.size == z.size):
-        raise ValueError(f"x, y and z must have the same length, got {x.size}, {y.size}, "
-                         f"{z.size}.")
-    ok = np.isfinite(x) & np.isfinite(y) & np.isfinite(z)
-    if not ok.all():
-        x, y, z = x[ok], y[ok], z[ok]
-    if x.size == 0:
-        raise ValueError("No points to interpolate from (check the class filter and "
-                         "the extent).")
+    x, y, z = as_xyz(x, y, z, nonfinite="drop", empty_error=(
+        "No points to interpolate from (check the class filter and the extent)."))
     power = float(power)
     if not math.isfinite(power) or power <= 0:
         raise ValueError(f"power must be > 0 (typically 2 or 3), got {power}.")

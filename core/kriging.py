@@ -64,6 +64,7 @@ from typing import Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 from scipy.spatial import cKDTree
 
+from .coords import as_xyz
 from .grid import GridSpec, check_memory, default_max_distance, row_blocks
 from .progress import Monitor
 
@@ -134,14 +135,7 @@ class Variogram:
 
 
 def _check_xyz(x, y, z):
-    x = np.asarray(x, dtype=np.float64).ravel()
-    y = np.asarray(y, dtype=np.float64).ravel()
-    z = np.asarray(z, dtype=np.float64).ravel()
-    if not (x.size == y.size == z.size):
-        raise ValueError(f"x, y and z must have the same length, got {x.size}, {y.size}, "
-                         f"{z.size}.")
-    ok = np.isfinite(x) & np.isfinite(y) & np.isfinite(z)
-    x, y, z = x[ok], y[ok], z[ok]
+    x, y, z = as_xyz(x, y, z, nonfinite="drop")
     if x.size < 3:
         raise ValueError(f"Kriging needs at least 3 points, got {x.size} (check the class "
                          "filter and the extent).")

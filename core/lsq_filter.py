@@ -75,6 +75,7 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
+from .coords import as_xyz
 from .noise import NOISE_CLASS, flag_low_outliers
 from .progress import Monitor
 
@@ -631,20 +632,8 @@ class LsqResult:
 
 def _validate(x, y, z, order, tile_size, threshold, max_iterations, tolerance, subset_size,
               mode, sparse_tiles, rejection="reweighted"):
-    x = np.asarray(x, dtype=np.float64).ravel()
-    y = np.asarray(y, dtype=np.float64).ravel()
-    z = np.asarray(z, dtype=np.float64).ravel()
-    if not (x.size == y.size == z.size):
-        raise ValueError(f"x, y and z must have the same length (got {x.size}, {y.size}, "
-                         f"{z.size}).")
-    if x.size == 0:
-        raise ValueError("The point cloud is empty: there is nothing to filter. "
-                         "Choose a file that holds points.")
-    finite = np.isfinite(x) & np.isfinite(y) & np.isfinite(z)
-    if not finite.all():
-        raise ValueError(f"{int((~finite).sum())} point(s) have non-finite (NaN or infinite) "
-                         "coordinates; repair or remove them (e.g. PDAL filters.range) "
-                         "before filtering.")
+    x, y, z = as_xyz(x, y, z, empty_error="The point cloud is empty: there is nothing to "
+                     "filter. Choose a file that holds points.")
     if int(order) not in (1, 2) or int(order) != order:
         raise ValueError(f"ORDER must be 1 or 2 (the paper's planar or quadratic "
                          f"surface), got {order}.")

@@ -45,6 +45,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import cKDTree
 
+from .coords import as_xyz
 from .progress import Monitor
 
 __all__ = ["flag_low_outliers", "NOISE_CLASS"]
@@ -53,19 +54,6 @@ __all__ = ["flag_low_outliers", "NOISE_CLASS"]
 NOISE_CLASS = 7
 
 
-def _check_xyz(x, y, z):
-    x = np.asarray(x, dtype=np.float64).ravel()
-    y = np.asarray(y, dtype=np.float64).ravel()
-    z = np.asarray(z, dtype=np.float64).ravel()
-    if not (x.size == y.size == z.size):
-        raise ValueError(f"x, y and z must have the same length (got {x.size}, {y.size}, "
-                         f"{z.size}).")
-    if x.size and not (np.isfinite(x).all() and np.isfinite(y).all()
-                       and np.isfinite(z).all()):
-        bad = int(np.count_nonzero(~(np.isfinite(x) & np.isfinite(y) & np.isfinite(z))))
-        raise ValueError(f"{bad} point(s) have non-finite (NaN or infinite) coordinates; "
-                         "remove or repair them before filtering.")
-    return x, y, z
 
 
 def _block_reference(x, y, z, cell, rank, origin=None):
@@ -213,7 +201,7 @@ def flag_low_outliers(x, y, z, *, radius: float = 5.0, threshold: float = 1.0,
     >>> np.flatnonzero(flag_low_outliers(x, y, z, radius=3.0)).tolist()
     [210]
     """
-    x, y, z = _check_xyz(x, y, z)
+    x, y, z = as_xyz(x, y, z)
     if not np.isfinite(radius) or radius <= 0:
         raise ValueError(f"radius must be a positive number of metres, got {radius}.")
     if not np.isfinite(threshold) or threshold <= 0:

@@ -70,6 +70,7 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
+from .coords import as_xyz
 from .filter_accuracy import assess
 from .progress import Monitor
 
@@ -107,20 +108,10 @@ _MIN_CELL_FRACTION = 1.0 / 16  # smallest grid cell, as a fraction of r
 
 # ============================================================================ helpers
 def _xyz(x, y, z):
-    x = np.ascontiguousarray(x, dtype=np.float64).ravel()
-    y = np.ascontiguousarray(y, dtype=np.float64).ravel()
-    z = np.ascontiguousarray(z, dtype=np.float64).ravel()
-    if not (x.size == y.size == z.size):
-        raise ValueError(f"x, y and z must have the same length (got {x.size}, {y.size}, "
-                         f"{z.size}).")
-    if x.size == 0:
-        raise ValueError("The point cloud is empty: there is nothing to filter. Check the "
-                         "input file or the return/noise selection.")
-    ok = np.isfinite(x) & np.isfinite(y) & np.isfinite(z)
-    if not ok.all():
-        raise ValueError(f"{int(np.count_nonzero(~ok))} point(s) have non-finite (NaN or "
-                         "infinite) coordinates; remove or repair them before filtering.")
-    return x, y, z
+    return as_xyz(x, y, z, empty_error=(
+        "The point cloud is empty: there is nothing to filter. Check the input file or "
+        "the return/noise selection."))
+
 
 
 def _check_radius(radius) -> float:

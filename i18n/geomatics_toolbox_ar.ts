@@ -4,392 +4,392 @@
 <context>
     <name>@default</name>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="182"/>
+        <location filename="../algorithms/filter_accuracy.py" line="176"/>
         <source>reference ground</source>
         <translation>أرض (في المرجع)</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="182"/>
+        <location filename="../algorithms/filter_accuracy.py" line="176"/>
         <source>reference object</source>
         <translation>جسم (في المرجع)</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="182"/>
+        <location filename="../algorithms/filter_accuracy.py" line="176"/>
         <source>total</source>
         <translation>المجموع</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="171"/>
+        <location filename="../algorithms/filter_accuracy.py" line="165"/>
         <source>Type I (ground rejected) = b/(a+b)</source>
         <translation>خطأ النوع الأول (رفض نقاط الأرض) = b/(a+b)</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="172"/>
+        <location filename="../algorithms/filter_accuracy.py" line="166"/>
         <source>Type II (object accepted) = c/(c+d)</source>
         <translation>خطأ النوع الثاني (قبول الأجسام كأرض) = c/(c+d)</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="173"/>
+        <location filename="../algorithms/filter_accuracy.py" line="167"/>
         <source>Total = (b+c)/n</source>
         <translation>الخطأ الكلي = (b+c)/n</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="174"/>
+        <location filename="../algorithms/filter_accuracy.py" line="168"/>
         <source>Cohen&apos;s kappa</source>
         <translation>معامل كابا لكوهين</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
+        <location filename="../algorithms/filter_accuracy.py" line="170"/>
         <source>filtered cloud</source>
         <translation>السحابة المفلترة</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
+        <location filename="../algorithms/filter_accuracy.py" line="170"/>
         <source>its class dimension</source>
         <translation>بُعد الصنف فيها</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="177"/>
+        <location filename="../algorithms/filter_accuracy.py" line="171"/>
         <source>its ground classes</source>
         <translation>أصناف الأرض فيها</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="178"/>
+        <location filename="../algorithms/filter_accuracy.py" line="172"/>
         <source>reference</source>
         <translation>المرجع</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="178"/>
+        <location filename="../algorithms/filter_accuracy.py" line="172"/>
         <source>(dimension of the filtered cloud)</source>
         <translation>(بُعد في السحابة المفلترة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="179"/>
+        <location filename="../algorithms/filter_accuracy.py" line="173"/>
         <source>reference class dimension</source>
         <translation>بُعد الصنف في المرجع</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="180"/>
+        <location filename="../algorithms/filter_accuracy.py" line="174"/>
         <source>reference ground classes</source>
         <translation>أصناف الأرض في المرجع</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="182"/>
+        <location filename="../algorithms/filter_accuracy.py" line="176"/>
         <source>item</source>
         <translation>البند</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="182"/>
+        <location filename="../algorithms/filter_accuracy.py" line="176"/>
         <source>value</source>
         <translation>القيمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="182"/>
+        <location filename="../algorithms/filter_accuracy.py" line="176"/>
         <source>filtered ground</source>
         <translation>أرض (بعد الفلترة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="182"/>
+        <location filename="../algorithms/filter_accuracy.py" line="176"/>
         <source>filtered object</source>
         <translation>جسم (بعد الفلترة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="182"/>
+        <location filename="../algorithms/filter_accuracy.py" line="176"/>
         <source>measure</source>
         <translation>المقياس</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="182"/>
+        <location filename="../algorithms/filter_accuracy.py" line="176"/>
         <source>Of all misclassified points, {p1:.1f} % are Type I and {p2:.1f} % Type II.</source>
         <translation>من بين جميع النقاط المصنَّفة خطأً، {p1:.1f} % من النوع الأول و{p2:.1f} % من النوع الثاني.</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="182"/>
+        <location filename="../algorithms/filter_accuracy.py" line="176"/>
         <source>filtered class</source>
         <translation>الصنف بعد الفلترة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="387"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>points</source>
         <translation>عدد النقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="182"/>
+        <location filename="../algorithms/filter_accuracy.py" line="176"/>
         <source>Measures of the ISPRS filter test: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</source>
         <translation>مقاييس اختبار فلاتر ISPRS: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="199"/>
+        <location filename="../algorithms/filter_accuracy.py" line="193"/>
         <source>Ground filter accuracy</source>
         <translation>دقة فلتر نقاط الأرض</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="330"/>
+        <location filename="../algorithms/lsq_filter.py" line="324"/>
         <source>input</source>
         <translation>ملف الإدخال</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="330"/>
+        <location filename="../algorithms/lsq_filter.py" line="324"/>
         <source>CRS</source>
         <translation>نظام الإحداثيات (CRS)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="330"/>
+        <location filename="../algorithms/lsq_filter.py" line="324"/>
         <source>none</source>
         <translation>لا يوجد</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="331"/>
+        <location filename="../algorithms/lsq_filter.py" line="325"/>
         <source>mode</source>
         <translation>النمط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="331"/>
+        <location filename="../algorithms/lsq_filter.py" line="325"/>
         <source>order</source>
         <translation>الدرجة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="332"/>
+        <location filename="../algorithms/lsq_filter.py" line="326"/>
         <source>polynomial</source>
         <translation>متعدد الحدود</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="397"/>
+        <location filename="../algorithms/lsq_filter.py" line="391"/>
         <source>tile size (m)</source>
         <translation>حجم البلاطة (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="336"/>
+        <location filename="../algorithms/lsq_filter.py" line="330"/>
         <source>threshold T (m)</source>
         <translation>العتبة T (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="337"/>
+        <location filename="../algorithms/lsq_filter.py" line="331"/>
         <source>max iterations</source>
         <translation>الحد الأقصى للتكرارات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="338"/>
+        <location filename="../algorithms/lsq_filter.py" line="332"/>
         <source>stop tolerance (m)</source>
         <translation>سماحية التوقف (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="339"/>
+        <location filename="../algorithms/lsq_filter.py" line="333"/>
         <source>fitting subset per tile</source>
         <translation>المجموعة الجزئية للمواءمة في كل بلاطة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="339"/>
+        <location filename="../algorithms/lsq_filter.py" line="333"/>
         <source>all points</source>
         <translation>جميع النقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="340"/>
+        <location filename="../algorithms/lsq_filter.py" line="334"/>
         <source>seed</source>
         <translation>البذرة العشوائية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="341"/>
+        <location filename="../algorithms/lsq_filter.py" line="335"/>
         <source>min points per tile</source>
         <translation>الحد الأدنى للنقاط في البلاطة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="342"/>
+        <location filename="../algorithms/lsq_filter.py" line="336"/>
         <source>under-populated tiles</source>
         <translation>البلاطات قليلة النقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="343"/>
+        <location filename="../algorithms/lsq_filter.py" line="337"/>
         <source>rejection</source>
         <translation>الاستبعاد</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="344"/>
+        <location filename="../algorithms/lsq_filter.py" line="338"/>
         <source>low-outlier pre-filter</source>
         <translation>الفلترة المسبقة للقيم الشاذة المنخفضة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="345"/>
+        <location filename="../algorithms/lsq_filter.py" line="339"/>
         <source>pre-filter cell / depth (m)</source>
         <translation>خلية / عمق الفلترة المسبقة (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="347"/>
+        <location filename="../algorithms/lsq_filter.py" line="341"/>
         <source>grid origin (min x, min y)</source>
         <translation>مبدأ الشبكة (أصغر x، أصغر y)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="350"/>
+        <location filename="../algorithms/lsq_filter.py" line="344"/>
         <source>levels (× tile size)</source>
         <translation>المستويات (× حجم البلاطة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="351"/>
+        <location filename="../algorithms/lsq_filter.py" line="345"/>
         <source>window overlap</source>
         <translation>تداخل النوافذ</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="352"/>
+        <location filename="../algorithms/lsq_filter.py" line="346"/>
         <source>slope factor (m) / cap (m)</source>
         <translation>معامل الميل (م) / الحد الأعلى (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="354"/>
+        <location filename="../algorithms/lsq_filter.py" line="348"/>
         <source>ground</source>
         <translation>أرض</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="354"/>
+        <location filename="../algorithms/lsq_filter.py" line="348"/>
         <source>other (object)</source>
         <translation>أخرى (جسم)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="354"/>
+        <location filename="../algorithms/lsq_filter.py" line="348"/>
         <source>low noise</source>
         <translation>ضوضاء منخفضة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="355"/>
+        <location filename="../algorithms/lsq_filter.py" line="349"/>
         <source>never classified</source>
         <translation>لم تُصنَّف قط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="377"/>
+        <location filename="../algorithms/lsq_filter.py" line="371"/>
         <source>reading</source>
         <translation>القراءة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="380"/>
+        <location filename="../algorithms/lsq_filter.py" line="374"/>
         <source>filter total</source>
         <translation>إجمالي الفلترة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="381"/>
+        <location filename="../algorithms/lsq_filter.py" line="375"/>
         <source>run total (read, filter, write)</source>
         <translation>إجمالي التشغيل (قراءة، فلترة، كتابة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="382"/>
+        <location filename="../algorithms/lsq_filter.py" line="376"/>
         <source>points per second (run)</source>
         <translation>نقطة في الثانية (التشغيل)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="383"/>
+        <location filename="../algorithms/lsq_filter.py" line="377"/>
         <source>points per second (filter)</source>
         <translation>نقطة في الثانية (الفلترة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="384"/>
+        <location filename="../algorithms/lsq_filter.py" line="378"/>
         <source>step</source>
         <translation>الخطوة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="385"/>
+        <location filename="../algorithms/lsq_filter.py" line="379"/>
         <source>Parameters</source>
         <translation>المعاملات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="387"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>class</source>
         <translation>الصنف</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="387"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>meaning</source>
         <translation>المعنى</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="390"/>
+        <location filename="../algorithms/lsq_filter.py" line="384"/>
         <source>Kept heights after each iteration, aggregated over the tiles (a tile that has stopped keeps its last values); the layout of the paper's Tables 1–2.</source>
         <translation>الارتفاعات المُبقاة بعد كل تكرار، مجمَّعة على البلاطات (البلاطة التي توقفت تحتفظ بآخر قيمها)؛ على نسق الجدولين 1–2 في البحث.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="394"/>
+        <location filename="../algorithms/lsq_filter.py" line="388"/>
         <source>tiles still iterating</source>
         <translation>بلاطات قيد التكرار</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="397"/>
+        <location filename="../algorithms/lsq_filter.py" line="391"/>
         <source>level</source>
         <translation>المستوى</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="409"/>
+        <location filename="../algorithms/lsq_filter.py" line="403"/>
         <source>tiles</source>
         <translation>عدد البلاطات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="397"/>
+        <location filename="../algorithms/lsq_filter.py" line="391"/>
         <source>fitted</source>
         <translation>بلاطات مُوائَمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="397"/>
+        <location filename="../algorithms/lsq_filter.py" line="391"/>
         <source>ground seeds</source>
         <translation>نقاط الأرض الابتدائية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="397"/>
+        <location filename="../algorithms/lsq_filter.py" line="391"/>
         <source>seconds</source>
         <translation>ثانية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="402"/>
+        <location filename="../algorithms/lsq_filter.py" line="396"/>
         <source>The iteration and tile tables below describe the finest level.</source>
         <translation>يصف جدولا التكرارات والبلاطات أدناه المستوى الأدق.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="410"/>
+        <location filename="../algorithms/lsq_filter.py" line="404"/>
         <source>status</source>
         <translation>الحالة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="410"/>
+        <location filename="../algorithms/lsq_filter.py" line="404"/>
         <source>column</source>
         <translation>العمود</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="410"/>
+        <location filename="../algorithms/lsq_filter.py" line="404"/>
         <source>row</source>
         <translation>الصف</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="410"/>
+        <location filename="../algorithms/lsq_filter.py" line="404"/>
         <source>fitting points</source>
         <translation>نقاط المواءمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="410"/>
+        <location filename="../algorithms/lsq_filter.py" line="404"/>
         <source>iterations</source>
         <translation>التكرارات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="410"/>
+        <location filename="../algorithms/lsq_filter.py" line="404"/>
         <source>kept</source>
         <translation>المُبقاة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="414"/>
+        <location filename="../algorithms/lsq_filter.py" line="408"/>
         <source>Showing the {k} fullest of {n} tiles.</source>
         <translation>تُعرض البلاطات الـ{k} الأكثر نقاطاً من أصل {n} بلاطة.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="418"/>
+        <location filename="../algorithms/lsq_filter.py" line="412"/>
         <source>stage</source>
         <translation>المرحلة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="418"/>
+        <location filename="../algorithms/lsq_filter.py" line="412"/>
         <source>seconds or points/s</source>
         <translation>ثانية أو نقطة/ث</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="420"/>
+        <location filename="../algorithms/lsq_filter.py" line="414"/>
         <source>Method: tiled least-squares polynomial filter, Damascus Univ. J. Eng. Sci. 29(2), 2013. Improved mode and the low-outlier pre-filter are ours. Accuracy terms (Type I, Type II, total) after Sithole &amp; Vosselman (2004).</source>
         <translation>الطريقة: فلتر متعدد الحدود بالمربعات الصغرى على بلاطات، مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013. النمط المحسَّن والفلترة المسبقة للقيم الشاذة المنخفضة من إضافتنا. مصطلحات الدقة (النوع الأول، النوع الثاني، الكلي) وفق Sithole &amp; Vosselman (2004).</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="425"/>
+        <location filename="../algorithms/lsq_filter.py" line="419"/>
         <source>Ground filter (least-squares polynomial)</source>
         <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
     </message>
@@ -608,67 +608,67 @@
 <context>
     <name>GcpAccuracyReportAlgorithm</name>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="427"/>
+        <location filename="../algorithms/gcp_rectification.py" line="421"/>
         <source>GCP accuracy report</source>
         <translation>تقرير دقة نقاط الضبط الأرضي</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="430"/>
+        <location filename="../algorithms/gcp_rectification.py" line="424"/>
         <source>georeference,gcp,ground control points,rms,residuals,accuracy,check points,leave-one-out,polynomial,georeferencer</source>
         <translation>إسناد جغرافي,gcp,نقاط الضبط الأرضي,rms,البواقي,الدقة,نقاط التحقق,الاستبعاد الفردي,متعدد الحدود,georeferencer</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="434"/>
+        <location filename="../algorithms/gcp_rectification.py" line="428"/>
         <source>&lt;p&gt;Judges a set of ground control points without warping: fits polynomials of order 1, 2 and 3, reports the residuals and the paper&apos;s criteria for the chosen order, compares the three orders and recommends one.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
         <translation>&lt;p&gt;تقيِّم مجموعة من نقاط الضبط الأرضي دون تحويل الصورة هندسياً: تُوائم متعددات حدود من الدرجات 1 و2 و3، وتعرض البواقي ومعايير البحث للدرجة المختارة، وتقارن الدرجات الثلاث وتوصي بإحداها.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT، اختياري): تعطي أبعاد الصورة (نقاط الضبط الواقعة خارجها خطأ؛ وتعتمد الأرباع والمخطط على حدودها). ودونها حدِّد IMAGE_WIDTH وIMAGE_HEIGHT (بالبكسل) وإلا استُخدم مركز ثقل نقاط الضبط.&lt;/li&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="455"/>
+        <location filename="../algorithms/gcp_rectification.py" line="449"/>
         <source>Image width (px) if no image is given</source>
         <translation>عرض الصورة (بكسل) إن لم تُحدَّد صورة</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="457"/>
+        <location filename="../algorithms/gcp_rectification.py" line="451"/>
         <source>Image height (px) if no image is given</source>
         <translation>ارتفاع الصورة (بكسل) إن لم تُحدَّد صورة</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="460"/>
+        <location filename="../algorithms/gcp_rectification.py" line="454"/>
         <source>Accuracy report</source>
         <translation>تقرير الدقة</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="460"/>
+        <location filename="../algorithms/gcp_rectification.py" line="454"/>
         <source>HTML files (*.html)</source>
         <translation>ملفات HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="463"/>
+        <location filename="../algorithms/gcp_rectification.py" line="457"/>
         <source>Residuals table</source>
         <translation>جدول البواقي</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="463"/>
+        <location filename="../algorithms/gcp_rectification.py" line="457"/>
         <source>CSV files (*.csv)</source>
         <translation>ملفات CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="466"/>
+        <location filename="../algorithms/gcp_rectification.py" line="460"/>
         <source>Report as JSON</source>
         <translation>التقرير بصيغة JSON</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="466"/>
+        <location filename="../algorithms/gcp_rectification.py" line="460"/>
         <source>JSON files (*.json)</source>
         <translation>ملفات JSON (*.json)</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="434"/>
+        <location filename="../algorithms/gcp_rectification.py" line="428"/>
         <source>&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML), &lt;b&gt;residual table&lt;/b&gt; (OUTPUT_CSV: one row per point with v_x, v_y, RMS_i, C_i, pixel residuals, leave-one-out residuals) and &lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: everything, all orders), each optional.&lt;/li&gt;&lt;/ul&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML)، و&lt;b&gt;جدول البواقي&lt;/b&gt; (OUTPUT_CSV: صف لكل نقطة فيه v_x وv_y وRMS_i وC_i والبواقي بالبكسل وبواقي الاستبعاد الفردي) و&lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: كل شيء، لجميع الدرجات)، وكلها اختيارية.&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="434"/>
+        <location filename="../algorithms/gcp_rectification.py" line="428"/>
         <source>&lt;p&gt;Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, …) for the graphical modeler.&lt;/p&gt;</source>
         <translation>&lt;p&gt;كل رقم في الملخص هو أيضاً مخرج رقمي (RMS_T وRMS_T_QGIS وGR وSCALE وLOO_RMS_T وCHECK_RMS_T وRECOMMENDED_ORDER وACCEPTED وRMS_T_ORDER1…3 و…) لاستخدامه في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
     </message>
@@ -701,12 +701,12 @@
         <translation>تقييم الدقة</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="136"/>
+        <location filename="../algorithms/base.py" line="145"/>
         <source>Cancelled by the user; no output was written.</source>
         <translation>ألغى المستخدم العملية؛ لم تُكتب أي مخرجات.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="141"/>
+        <location filename="../algorithms/base.py" line="150"/>
         <source>Out of memory. Use a coarser cell size, a smaller extent or fewer points; no output was written.</source>
         <translation>نفدت الذاكرة. استخدم حجم خلية أكبر أو نطاقاً أصغر أو نقاطاً أقل؛ لم تُكتب أي مخرجات.</translation>
     </message>
@@ -721,7 +721,7 @@
         <translation>&lt;p&gt;&lt;b&gt;المعايير&lt;/b&gt; (مجلة جامعة تشرين للعلوم الهندسية 38(2)، 2016): RMS_i لكل نقطة ومساهمتها C_i = RMS_i/RMS_T؛ وRMS_x وRMS_y وRMS_T بالقسمة على n (وكذلك، مع الإشارة إلى ذلك، على n − N كما في أداة Georeferencer في QGIS)؛ ومقياس الخريطة S = 20000·GR ونطاق السماحية 4·GR … 6·GR لقيمة RMS_T؛ والحد لكل نقطة 0.25 mm·S = 5·GR؛ وأن تقع ≥ 68 % من النقاط (90 % في الصيغة الصارمة) ضمن RMS_T؛ وانعدام الانحياز الاتجاهي (توازن الإشارات بين الأرباع، والبواقي الشعاعية للنقاط الداخلية مقابل نقاط الحواف، ومخطط متجهات البواقي). وأيضاً: نقاط تحقق مستقلة (الدور 'check'، لا تدخل في المواءمة أبداً)، وبواقي الاستبعاد الفردي، والدرجات 1–3 جنباً إلى جنب مع درجة موصى بها (لا تكون أبداً درجةً فائضها n − N أقل من max(2, ⌈N/2⌉)) ونقاط مقترحة للحذف. البواقي = القيمة المتنبأ بها − القيمة المعطاة، بوحدات الخريطة وبالبكسل.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="91"/>
+        <location filename="../algorithms/slope_filter.py" line="85"/>
         <source>&lt;li&gt;&lt;b&gt;Returns filtered&lt;/b&gt; (RETURNS, default 0 = all): 0 all returns are classified and serve as neighbours (the forest study); 1 last returns only: only last (or single) returns are classified and only they may reject others; first and intermediate returns of multi-return pulses get class 1. Files without return numbers (e.g. the ISPRS samples) count every point as a last return.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours (multipath) get class 7 and take no part in the filter — one stray low point would reject every ground point within r. Advanced: NOISE_RADIUS (m, default 5) and NOISE_THRESHOLD (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default 0): 0 exact Vosselman rule; 1 terrain-adaptive (&lt;i&gt;this toolbox's extension&lt;/i&gt;): the rule is applied to heights above a smooth low terrain trend (minimum grid of TREND_CELL m, opening and mean filter of TREND_WINDOW m, defaults 10 and 60), so natural slopes steeper than θ are not rejected (ISPRS samp11, steep: total error 21.0 % → 16.4 % at the defaults). Because the terrain slope is removed first, lower θ (about 30–35°) usually works best in this mode.&lt;/li&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;الارتدادات المفلترة&lt;/b&gt; (RETURNS، الافتراضي 0 = الكل): 0 تُصنَّف جميع الارتدادات وتُستخدم كلها نقاطاً مجاورة (دراسة الغابات)؛ 1 الارتدادات الأخيرة فقط: لا تُصنَّف إلا الارتدادات الأخيرة (أو المنفردة) ولا يستبعد النقاطَ الأخرى إلا هي؛ وتأخذ الارتدادات الأولى والوسيطة للنبضات متعددة الارتدادات الصنف 1. في الملفات الخالية من أرقام الارتدادات (مثل عيّنات ISPRS) تُعَدّ كل نقطة ارتداداً أخيراً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة القيم الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي: نعم): النقاط الواقعة أسفل جيرانها بكثير (بسبب تعدد المسارات) تأخذ الصنف 7 ولا تشارك في الفلترة — فنقطة منخفضة شاردة واحدة كانت ستستبعد كل نقاط الأرض ضمن r. خيارات متقدمة: NOISE_RADIUS (م، الافتراضي 5) وNOISE_THRESHOLD (م، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;النمط&lt;/b&gt; (MODE، الافتراضي 0): 0 قاعدة Vosselman كما هي؛ 1 متكيِّف مع التضاريس (&lt;i&gt;إضافة من صندوق الأدوات هذا&lt;/i&gt;): تُطبَّق القاعدة على الارتفاعات فوق اتجاه عام منخفض وأملس للتضاريس (شبكة القيم الدنيا بخلية TREND_CELL م، ثم فتح مورفولوجي (opening) وفلتر متوسط بنافذة TREND_WINDOW م، والقيمتان الافتراضيتان 10 و60)، فلا تُستبعد المنحدرات الطبيعية الأشد انحداراً من θ (عيّنة ISPRS samp11 شديدة الانحدار: الخطأ الكلي 21.0 % → 16.4 % بالقيم الافتراضية). ولأن ميل التضاريس يُزال أولاً، فإن قيم θ الأدنى (نحو 30–35°) تعطي عادةً أفضل النتائج في هذا النمط.&lt;/li&gt;</translation>
     </message>
@@ -742,67 +742,67 @@
 <context>
     <name>GroundFilterAccuracyAlgorithm</name>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="56"/>
+        <location filename="../algorithms/filter_accuracy.py" line="50"/>
         <source>Ground filter accuracy</source>
         <translation>دقة فلتر نقاط الأرض</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="59"/>
+        <location filename="../algorithms/filter_accuracy.py" line="53"/>
         <source>lidar,ground,filter,accuracy,type i,type ii,total error,kappa,isprs,reference,confusion matrix</source>
         <translation>ليدار,أرض,فلتر,الدقة,النوع الأول,النوع الثاني,الخطأ الكلي,كابا,isprs,مرجع,مصفوفة الالتباس</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="63"/>
+        <location filename="../algorithms/filter_accuracy.py" line="57"/>
         <source>&lt;p&gt;Compares a filtered point cloud with reference labels, with the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix a (ground kept), b (ground rejected), c (object accepted), d (object rejected), Type I = b/(a+b), Type II = c/(c+d), total = (b+c)/n and Cohen&apos;s kappa.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (the ISPRS reference sample, class 2 = ground) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Filtered point cloud&lt;/b&gt; (INPUT, LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Class dimension of the filtered cloud&lt;/b&gt; (FIELD, default classification) and its &lt;b&gt;ground classes&lt;/b&gt; (GROUND_CLASSES, default 2; a list such as 2,8 is accepted). Every other class (1, 7 noise, 0...) counts as object.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference point cloud&lt;/b&gt; (REFERENCE, optional): the same points in the same order (checked: equal count and coordinates). When empty, the reference labels are read from another dimension of INPUT.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference class dimension&lt;/b&gt; (REFERENCE_FIELD, default classification; e.g. user_data or an extra dimension when there is no reference cloud) and its &lt;b&gt;ground classes&lt;/b&gt; (REFERENCE_GROUND_CLASSES, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): the matrix, the errors, and the reference labels of every filtered class.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Per-point error layer&lt;/b&gt; (ERROR_OUTPUT, optional LAS/LAZ): a copy of INPUT, every attribute unchanged except &lt;i&gt;user_data&lt;/i&gt; = 0 correct, 1 Type I (ground rejected), 2 Type II (object accepted); style the point cloud layer by user_data to map where the filter fails.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs A, B, C, D, N, TYPE1, TYPE2, TOTAL and KAPPA are numbers for the graphical modeler.&lt;/p&gt;</source>
         <translation>&lt;p&gt;تقارن سحابة نقاط مفلترة بتصنيفات مرجعية، بمقاييس اختبار فلاتر ISPRS (Sithole &amp; Vosselman 2004): مصفوفة التقاطع a (أرض مُبقاة)، b (أرض مرفوضة)، c (أجسام مقبولة)، d (أجسام مرفوضة)، والنوع الأول = b/(a+b)، والنوع الثاني = c/(c+d)، والخطأ الكلي = (b+c)/n، ومعامل كابا لكوهين.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (عيّنة ISPRS المرجعية، الصنف 2 = أرض) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المفلترة&lt;/b&gt; (INPUT، LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد الصنف في السحابة المفلترة&lt;/b&gt; (FIELD، الافتراضي classification) و&lt;b&gt;أصناف الأرض&lt;/b&gt; فيها (GROUND_CLASSES، الافتراضي 2؛ تُقبل قائمة مثل 2,8). أي صنف آخر (1، 7 ضوضاء، 0...) يُعَدّ جسماً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المرجعية&lt;/b&gt; (REFERENCE، اختياري): النقاط نفسها وبالترتيب نفسه (يُتحقَّق من تساوي العدد والإحداثيات). إذا تُركت فارغة تُقرأ التصنيفات المرجعية من بُعد آخر في INPUT.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد الصنف في المرجع&lt;/b&gt; (REFERENCE_FIELD، الافتراضي classification؛ مثلاً user_data أو بُعد إضافي عند عدم وجود سحابة مرجعية) و&lt;b&gt;أصناف الأرض&lt;/b&gt; فيه (REFERENCE_GROUND_CLASSES، الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): المصفوفة والأخطاء والتصنيفات المرجعية لكل صنف بعد الفلترة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقة الخطأ لكل نقطة&lt;/b&gt; (ERROR_OUTPUT، ملف LAS/LAZ اختياري): نسخة من INPUT بكل خصائصها دون تغيير عدا &lt;i&gt;user_data&lt;/i&gt; = 0 صحيح، 1 النوع الأول (أرض مرفوضة)، 2 النوع الثاني (جسم مقبول)؛ نسِّق طبقة سحابة النقاط حسب user_data لترى على الخريطة أين يخفق الفلتر.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;المخرجات A وB وC وD وN وTYPE1 وTYPE2 وTOTAL وKAPPA أرقام تُستخدم في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="93"/>
+        <location filename="../algorithms/filter_accuracy.py" line="87"/>
         <source>Filtered point cloud (LAS/LAZ)</source>
         <translation>سحابة النقاط المفلترة (LAS/LAZ)</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="96"/>
+        <location filename="../algorithms/filter_accuracy.py" line="90"/>
         <source>Class dimension of the filtered cloud</source>
         <translation>بُعد الصنف في السحابة المفلترة</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="99"/>
+        <location filename="../algorithms/filter_accuracy.py" line="93"/>
         <source>Ground classes of the filtered cloud</source>
         <translation>أصناف الأرض في السحابة المفلترة</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="101"/>
+        <location filename="../algorithms/filter_accuracy.py" line="95"/>
         <source>Reference point cloud (same points, same order)</source>
         <translation>سحابة النقاط المرجعية (النقاط نفسها وبالترتيب نفسه)</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="105"/>
+        <location filename="../algorithms/filter_accuracy.py" line="99"/>
         <source>Reference class dimension</source>
         <translation>بُعد الصنف في المرجع</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="107"/>
+        <location filename="../algorithms/filter_accuracy.py" line="101"/>
         <source>Reference ground classes</source>
         <translation>أصناف الأرض في المرجع</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="109"/>
+        <location filename="../algorithms/filter_accuracy.py" line="103"/>
         <source>Report</source>
         <translation>التقرير</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="109"/>
+        <location filename="../algorithms/filter_accuracy.py" line="103"/>
         <source>HTML files (*.html)</source>
         <translation>ملفات HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="112"/>
+        <location filename="../algorithms/filter_accuracy.py" line="106"/>
         <source>Per-point error layer (user_data: 0 correct, 1 Type I, 2 Type II)</source>
         <translation>طبقة الخطأ لكل نقطة (user_data: 0 صحيح، 1 النوع الأول، 2 النوع الثاني)</translation>
     </message>
     <message>
-        <location filename="../algorithms/filter_accuracy.py" line="132"/>
+        <location filename="../algorithms/filter_accuracy.py" line="126"/>
         <source>The error layer must end in .las or .laz: {p}</source>
         <translation>يجب أن ينتهي اسم ملف طبقة الخطأ بالامتداد .las أو .laz: {p}</translation>
     </message>
@@ -810,62 +810,62 @@
 <context>
     <name>GsdBatchAlgorithm</name>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="324"/>
+        <location filename="../algorithms/gsd_calculator.py" line="323"/>
         <source>GSD and photogrammetric accuracy calculator (batch table)</source>
         <translation>حاسبة GSD والدقة التصويرية (جدول دفعي)</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="327"/>
+        <location filename="../algorithms/gsd_calculator.py" line="326"/>
         <source>&lt;p&gt;Runs the GSD / accuracy calculator for every row of a table (CSV, spreadsheet or any layer) and writes a table with the inputs and all results.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Input columns&lt;/b&gt; (case-insensitive): &lt;i&gt;camera&lt;/i&gt; (optional preset key: nikon_p100, dji_p4rtk, dji_p1_35, phaseone_ixm100_80), &lt;i&gt;distance&lt;/i&gt; (m, required), &lt;i&gt;sensor_width&lt;/i&gt; (mm), &lt;i&gt;image_width&lt;/i&gt; (px), &lt;i&gt;focal_length&lt;/i&gt; (mm) — required unless a camera preset is given — and optionally sensor_height, image_height, target_gsd, k_m, k_s, pyramid_level, subsampling_step, observed_sx, observed_sy, observed_sz, observed_sxyz, observed_dense_std, forward_overlap, side_overlap, stereo_base (units as in the single calculator).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output&lt;/b&gt;: the input columns plus gsd_cm, footprint_width_m, sigma_xyz_mm, dense_resolution_cm and every other result. A row with an invalid value stops the run with an error naming the row and column.&lt;/p&gt;</source>
         <translation>&lt;p&gt;تشغّل حاسبة GSD والدقة لكل سطر من جدول (CSV أو جدول بيانات أو أي طبقة) وتكتب جدولاً بالمدخلات وجميع النتائج.&lt;/p&gt;&lt;p&gt;&lt;b&gt;أعمدة الإدخال&lt;/b&gt; (دون تمييز حالة الأحرف): &lt;i&gt;camera&lt;/i&gt; (اختياري، مفتاح كاميرا معرّفة: nikon_p100، dji_p4rtk، dji_p1_35، phaseone_ixm100_80)، &lt;i&gt;distance&lt;/i&gt; (م، إلزامي)، &lt;i&gt;sensor_width&lt;/i&gt; (مم)، &lt;i&gt;image_width&lt;/i&gt; (بكسل)، &lt;i&gt;focal_length&lt;/i&gt; (مم) — إلزامية ما لم تُحدَّد كاميرا — واختيارياً sensor_height وimage_height وtarget_gsd وk_m وk_s وpyramid_level وsubsampling_step وobserved_sx وobserved_sy وobserved_sz وobserved_sxyz وobserved_dense_std وforward_overlap وside_overlap وstereo_base (بالوحدات نفسها كما في الحاسبة المفردة).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المخرج&lt;/b&gt;: أعمدة الإدخال مضافاً إليها gsd_cm وfootprint_width_m وsigma_xyz_mm وdense_resolution_cm وسائر النتائج. السطر الذي يحوي قيمة غير صالحة يوقف التشغيل برسالة تذكر السطر والعمود.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="345"/>
+        <location filename="../algorithms/gsd_calculator.py" line="344"/>
         <source>Table of cameras and distances</source>
         <translation>جدول الكاميرات والمسافات</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="348"/>
+        <location filename="../algorithms/gsd_calculator.py" line="347"/>
         <source>Round GSD to 0.01 cm/px like the paper</source>
         <translation>تقريب GSD إلى 0.01 سم/بكسل كما في البحث</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="350"/>
+        <location filename="../algorithms/gsd_calculator.py" line="349"/>
         <source>GSD results</source>
         <translation>نتائج GSD</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="359"/>
+        <location filename="../algorithms/gsd_calculator.py" line="358"/>
         <source>The table has no &apos;distance&apos; column (m); columns found: {0}.</source>
         <translation>لا يحتوي الجدول على العمود 'distance' (م)؛ الأعمدة الموجودة: {0}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="375"/>
+        <location filename="../algorithms/gsd_calculator.py" line="374"/>
         <source>Cancelled by the user.</source>
         <translation>ألغى المستخدم العملية.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="381"/>
+        <location filename="../algorithms/gsd_calculator.py" line="380"/>
         <source>Row {row}: unknown camera &apos;{cam}&apos;; known: {known}.</source>
         <translation>السطر {row}: كاميرا غير معروفة '{cam}'؛ المعروفة: {known}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="398"/>
+        <location filename="../algorithms/gsd_calculator.py" line="397"/>
         <source>Row {row}, column &apos;{col}&apos;: &apos;{val}&apos; is not a number.</source>
         <translation>السطر {row}، العمود '{col}': القيمة '{val}' ليست رقماً.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="404"/>
+        <location filename="../algorithms/gsd_calculator.py" line="403"/>
         <source>Row {row}: missing {cols}; give the columns or a camera preset.</source>
         <translation>السطر {row}: القيم {cols} ناقصة؛ أضف الأعمدة أو حدّد كاميرا معرّفة مسبقاً.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="410"/>
+        <location filename="../algorithms/gsd_calculator.py" line="409"/>
         <source>Row {row}: {err}</source>
         <translation>السطر {row}: {err}</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="327"/>
+        <location filename="../algorithms/gsd_calculator.py" line="326"/>
         <source>&lt;p&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;تقريب GSD كما في البحث&lt;/b&gt; (ROUND_GSD، الافتراضي: لا): يقرّب GSD إلى 0.01 سم/بكسل قبل حساب الكميات المشتقة.&lt;/p&gt;</translation>
     </message>
@@ -1153,7 +1153,7 @@
         <translation>المعادلات والقيم الافتراضية من الخليل (2019)؛ وجد البحث أن دقة التثليث التصويري المرصودة تعادل نحو 3–5 أضعاف القيمة النظرية. البنود المعلَّمة بـ(إضافة) ليست من البحث.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="294"/>
+        <location filename="../algorithms/gsd_calculator.py" line="293"/>
         <source>GSD and photogrammetric accuracy</source>
         <translation>GSD والدقة التصويرية</translation>
     </message>
@@ -1317,217 +1317,217 @@
 <context>
     <name>LsqGroundFilterAlgorithm</name>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="71"/>
+        <location filename="../algorithms/lsq_filter.py" line="65"/>
         <source>Ground filter (least-squares polynomial)</source>
         <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="74"/>
+        <location filename="../algorithms/lsq_filter.py" line="68"/>
         <source>lidar,ground,filter,bare earth,dtm,classification,least squares,polynomial,tiles,las,laz,isprs</source>
         <translation>ليدار,أرض,فلتر,الأرض العارية,dtm,تصنيف,المربعات الصغرى,متعدد الحدود,بلاطات,las,laz,isprs</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="136"/>
+        <location filename="../algorithms/lsq_filter.py" line="130"/>
         <source>Point cloud (LAS/LAZ)</source>
         <translation>سحابة النقاط (LAS/LAZ)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="139"/>
+        <location filename="../algorithms/lsq_filter.py" line="133"/>
         <source>Polynomial order (1 or 2)</source>
         <translation>درجة متعدد الحدود (1 أو 2)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="141"/>
+        <location filename="../algorithms/lsq_filter.py" line="135"/>
         <source>Tile size (m)</source>
         <translation>حجم البلاطة (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="142"/>
+        <location filename="../algorithms/lsq_filter.py" line="136"/>
         <source>Threshold T (m)</source>
         <translation>العتبة T (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="143"/>
+        <location filename="../algorithms/lsq_filter.py" line="137"/>
         <source>Mode</source>
         <translation>النمط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="143"/>
+        <location filename="../algorithms/lsq_filter.py" line="137"/>
         <source>Faithful (the paper)</source>
         <translation>مطابق (طريقة البحث)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="143"/>
+        <location filename="../algorithms/lsq_filter.py" line="137"/>
         <source>Improved (ours, beyond the paper)</source>
         <translation>محسَّن (من إضافتنا، يتجاوز البحث)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="147"/>
+        <location filename="../algorithms/lsq_filter.py" line="141"/>
         <source>Remove low outliers first (class 7)</source>
         <translation>إزالة القيم الشاذة المنخفضة أولاً (الصنف 7)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="149"/>
+        <location filename="../algorithms/lsq_filter.py" line="143"/>
         <source>Low-outlier search cell (m)</source>
         <translation>خلية البحث عن القيم الشاذة المنخفضة (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="151"/>
+        <location filename="../algorithms/lsq_filter.py" line="145"/>
         <source>Low-outlier depth below neighbours (m)</source>
         <translation>عمق القيمة الشاذة المنخفضة تحت الجيران (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="154"/>
+        <location filename="../algorithms/lsq_filter.py" line="148"/>
         <source>Maximum iterations per tile</source>
         <translation>الحد الأقصى للتكرارات في كل بلاطة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="157"/>
+        <location filename="../algorithms/lsq_filter.py" line="151"/>
         <source>Stop tolerance on min/max/mean/std (m)</source>
         <translation>سماحية التوقف على الأدنى/الأعلى/المتوسط/الانحراف المعياري (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="159"/>
+        <location filename="../algorithms/lsq_filter.py" line="153"/>
         <source>Random fitting subset per tile (points, 0 = all)</source>
         <translation>مجموعة جزئية عشوائية للمواءمة في كل بلاطة (نقاط، 0 = الكل)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="162"/>
+        <location filename="../algorithms/lsq_filter.py" line="156"/>
         <source>Random seed of the subset</source>
         <translation>البذرة العشوائية للمجموعة الجزئية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="164"/>
+        <location filename="../algorithms/lsq_filter.py" line="158"/>
         <source>Minimum points per tile (0 = 3 × coefficients)</source>
         <translation>الحد الأدنى للنقاط في البلاطة (0 = 3 × عدد معاملات متعدد الحدود)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="167"/>
+        <location filename="../algorithms/lsq_filter.py" line="161"/>
         <source>Under-populated tiles</source>
         <translation>البلاطات قليلة النقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="167"/>
+        <location filename="../algorithms/lsq_filter.py" line="161"/>
         <source>Borrow the nearest fitted tile&apos;s surface</source>
         <translation>استعارة سطح أقرب بلاطة مُوائَمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="167"/>
+        <location filename="../algorithms/lsq_filter.py" line="161"/>
         <source>Leave their points unclassified (class 0)</source>
         <translation>ترك نقاطها دون تصنيف (الصنف 0)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="172"/>
+        <location filename="../algorithms/lsq_filter.py" line="166"/>
         <source>Rejection</source>
         <translation>الاستبعاد</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="172"/>
+        <location filename="../algorithms/lsq_filter.py" line="166"/>
         <source>Re-weighted each iteration (a point may return)</source>
         <translation>إعادة الترجيح في كل تكرار (قد تعود النقطة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="172"/>
+        <location filename="../algorithms/lsq_filter.py" line="166"/>
         <source>Cumulative (a rejected point stays out)</source>
         <translation>تراكمي (النقطة المستبعدة تبقى مستبعدة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="177"/>
+        <location filename="../algorithms/lsq_filter.py" line="171"/>
         <source>Classified point cloud</source>
         <translation>سحابة النقاط المصنَّفة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="179"/>
+        <location filename="../algorithms/lsq_filter.py" line="173"/>
         <source>Ground points only</source>
         <translation>نقاط الأرض فقط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="176"/>
         <source>Report</source>
         <translation>التقرير</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="176"/>
         <source>HTML files (*.html)</source>
         <translation>ملفات HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="188"/>
+        <location filename="../algorithms/lsq_filter.py" line="182"/>
         <source>Ground points</source>
         <translation>نقاط الأرض</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="188"/>
+        <location filename="../algorithms/lsq_filter.py" line="182"/>
         <source>Other (object) points</source>
         <translation>النقاط الأخرى (الأجسام)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="188"/>
+        <location filename="../algorithms/lsq_filter.py" line="182"/>
         <source>Low-noise points</source>
         <translation>نقاط الضوضاء المنخفضة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="188"/>
+        <location filename="../algorithms/lsq_filter.py" line="182"/>
         <source>Unclassified points</source>
         <translation>النقاط غير المصنَّفة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="188"/>
+        <location filename="../algorithms/lsq_filter.py" line="182"/>
         <source>Tiles</source>
         <translation>البلاطات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="188"/>
+        <location filename="../algorithms/lsq_filter.py" line="182"/>
         <source>Points per second</source>
         <translation>نقطة في الثانية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="228"/>
+        <location filename="../algorithms/lsq_filter.py" line="222"/>
         <source>Choose an output file for the classified cloud (OUTPUT, .laz or .las).</source>
         <translation>اختر ملف إخراج للسحابة المصنَّفة (OUTPUT، بالامتداد .laz أو .las).</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="232"/>
+        <location filename="../algorithms/lsq_filter.py" line="226"/>
         <source>Output point clouds must end in .las or .laz: {p}</source>
         <translation>يجب أن تنتهي أسماء ملفات سحب النقاط الناتجة بالامتداد .las أو .laz: {p}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="239"/>
+        <location filename="../algorithms/lsq_filter.py" line="233"/>
         <source>Reading {p}</source>
         <translation>جارٍ قراءة {p}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="244"/>
+        <location filename="../algorithms/lsq_filter.py" line="238"/>
         <source>{n} points; filtering ({mode} mode)</source>
         <translation>{n} نقطة؛ جارٍ الفلترة (النمط {mode})</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="251"/>
+        <location filename="../algorithms/lsq_filter.py" line="245"/>
         <source>{step}: {n} points kept, ZMin {a:.2f}, ZMax {b:.2f}, ZMean {m:.2f}, σ {s:.2f}; tiles iterating: {t}</source>
         <translation>{step}: أُبقيت {n} نقطة، ZMin {a:.2f}، ZMax {b:.2f}، ZMean {m:.2f}، σ {s:.2f}؛ بلاطات قيد التكرار: {t}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="259"/>
+        <location filename="../algorithms/lsq_filter.py" line="253"/>
         <source>Ground {g}, other {o}, low noise {z}, unclassified {u}; {t} tiles; {s:.1f} s</source>
         <translation>أرض {g}، أخرى {o}، ضوضاء منخفضة {z}، غير مصنَّفة {u}؛ {t} بلاطة؛ {s:.1f} ث</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="265"/>
+        <location filename="../algorithms/lsq_filter.py" line="259"/>
         <source>No point was classified as ground, so the ground-only output would be empty; check TILE_SIZE and THRESHOLD.</source>
         <translation>لم تُصنَّف أي نقطة كأرض، لذا سيكون مخرج نقاط الأرض فارغاً؛ راجع TILE_SIZE وTHRESHOLD.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="78"/>
+        <location filename="../algorithms/lsq_filter.py" line="72"/>
         <source>&lt;p&gt;Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). In every tile the surface is fitted, points more than THRESHOLD above it are dropped, and the fit is repeated until the minimum, maximum, mean and standard deviation of the kept heights stop changing (TOLERANCE) or MAX_ITERATIONS; then every point with z ≤ ẑ + THRESHOLD is ground. Any classification already in the file is ignored and replaced.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output classes&lt;/b&gt; (ASPRS): 2 ground, 1 other (buildings, vegetation), 7 low noise (pre-filter), 0 never classified (only with SPARSE_TILES = leave unclassified). Every other attribute of every point, the point format, scales, offsets, VLRs and CRS are copied unchanged.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file, projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Order&lt;/b&gt; (ORDER, default 2): 1 = plane z = b0 + b1·x + b2·y; 2 = quadratic z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (better on every sample of the paper).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Tile size&lt;/b&gt; (TILE_SIZE, m, default 50): larger than the largest building, so that every tile holds ground (paper: 100 m for large buildings, 50 m for small ones). Tiles are square, anchored at the minimum x, y.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Threshold&lt;/b&gt; (THRESHOLD, m, default 0.5): 0.5–1.0 m, larger on steeper terrain.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default Faithful): Faithful = the paper. Improved = ours, beyond the paper: coarse-to-fine tiles (2, 1, ½, ¼ × TILE_SIZE) fitted on overlapping windows, each level started from the previous level's ground, and a threshold that grows with the surface slope (by 2.5 m per unit gradient, at most 1 m). On the ISPRS samples it lowers the mean total error from 8.9 % (paper) to about 4.9 % with one parameter set; it costs about 15 times the time and twice the memory of the faithful mode (about 2 M points/s and 100 bytes per point in faithful mode).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours become class 7 and take no part in the fit (NOISE_RADIUS, m, default 5: neighbourhood cell; NOISE_THRESHOLD, m, default 1: depth below the neighbours).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum iterations&lt;/b&gt; (MAX_ITERATIONS, default 5, the paper's tables) and &lt;b&gt;stop tolerance&lt;/b&gt; (TOLERANCE, m, default 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Random fitting subset per tile&lt;/b&gt; (SUBSET_SIZE, points, default 0 = all; the paper used 5000) and its &lt;b&gt;seed&lt;/b&gt; (SEED). All points are classified.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points per tile&lt;/b&gt; (MIN_POINTS, default 0 = 3 × the number of coefficients) and &lt;b&gt;under-populated tiles&lt;/b&gt; (SPARSE_TILES): borrow the nearest fitted tile's surface (default) or leave their points unclassified (class 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rejection&lt;/b&gt; (REJECTION): re-weighted (default; a point dropped earlier may return when the surface moves) or cumulative (dropped for good).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud (OUTPUT, .laz or .las), optional ground-only cloud (GROUND_OUTPUT), optional HTML report (OUTPUT_HTML) with the parameters, class counts, the per-iteration statistics of the paper's Tables 1–2, per-tile statistics, time and points per second; optional CSV of every tile's iterations and coefficients (TILE_STATS); numbers N_GROUND, N_OTHER, N_NOISE, N_UNCLASSIFIED, N_TILES, POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Measure the result against reference labels with &lt;i&gt;Ground filter accuracy&lt;/i&gt;. Nothing is written when the run fails or is cancelled.&lt;/p&gt;</source>
         <translation>&lt;p&gt;تفصل نقاط سطح الأرض العارية عن المباني والغطاء النباتي في سحابة ليدار جوية بمواءمة سطوح متعددة حدود بالمربعات الصغرى في كل بلاطة مربعة (مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013). في كل بلاطة يُوائَم السطح، وتُستبعد النقاط التي تعلوه بأكثر من THRESHOLD، وتُكرَّر المواءمة حتى تتوقف القيمة الدنيا والعليا والمتوسط والانحراف المعياري للارتفاعات المُبقاة عن التغيُّر (TOLERANCE) أو يُبلغ MAX_ITERATIONS؛ ثم تُعَدّ أرضاً كل نقطة تحقق z ≤ ẑ + THRESHOLD. يُتجاهَل أي تصنيف موجود في الملف ويُستبدل.&lt;/p&gt;&lt;p&gt;&lt;b&gt;أصناف المخرج&lt;/b&gt; (ASPRS): 2 أرض، 1 أخرى (مبانٍ، غطاء نباتي)، 7 ضوضاء منخفضة (الفلترة المسبقة)، 0 لم تُصنَّف قط (فقط مع SPARSE_TILES = ترك النقاط دون تصنيف). تُنسخ دون تغيير جميع الخصائص الأخرى لكل نقطة، وصيغة النقاط، ومعاملات المقياس والإزاحة، وسجلات VLR، ونظام الإحداثيات.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz بنظام إحداثيات مُسقَط بالأمتار.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الدرجة&lt;/b&gt; (ORDER، الافتراضي 2): 1 = مستوٍ z = b0 + b1·x + b2·y؛ 2 = سطح تربيعي z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (أفضل في جميع عيّنات البحث).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم البلاطة&lt;/b&gt; (TILE_SIZE، م، الافتراضي 50): أكبر من أكبر مبنى، كي تحوي كل بلاطة نقاطاً من الأرض (البحث: 100 م للمباني الكبيرة، 50 م للصغيرة). البلاطات مربعة، ومبدؤها عند أصغر x وy.&lt;/li&gt;&lt;li&gt;&lt;b&gt;العتبة&lt;/b&gt; (THRESHOLD، م، الافتراضي 0.5): 0.5–1.0 م، وأكبر في التضاريس الأشد انحداراً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;النمط&lt;/b&gt; (MODE، الافتراضي: مطابق): مطابق = طريقة البحث. محسَّن = من إضافتنا، يتجاوز البحث: بلاطات من الخشن إلى الدقيق (2، 1، ½، ¼ × TILE_SIZE) تُوائَم على نوافذ متداخلة، ويبدأ كل مستوى من نقاط الأرض في المستوى السابق، مع عتبة تزداد بازدياد ميل السطح (بمقدار 2.5 م لكل وحدة تدرّج، وبحد أقصى 1 م). على عيّنات ISPRS يخفض متوسط الخطأ الكلي من 8.9 % (البحث) إلى نحو 4.9 % بمجموعة معاملات واحدة؛ ويستغرق نحو 15 ضعف زمن النمط المطابق وضعف ذاكرته (نحو 2 مليون نقطة/ث و100 بايت لكل نقطة في النمط المطابق).&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة القيم الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي: نعم): النقاط الواقعة أسفل جيرانها بكثير تصبح من الصنف 7 ولا تشارك في المواءمة (NOISE_RADIUS، م، الافتراضي 5: خلية الجوار؛ NOISE_THRESHOLD، م، الافتراضي 1: العمق تحت الجيران).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأقصى للتكرارات&lt;/b&gt; (MAX_ITERATIONS، الافتراضي 5، كما في جداول البحث) و&lt;b&gt;سماحية التوقف&lt;/b&gt; (TOLERANCE، م، الافتراضي 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مجموعة جزئية عشوائية للمواءمة في كل بلاطة&lt;/b&gt; (SUBSET_SIZE، نقاط، الافتراضي 0 = الكل؛ استخدم البحث 5000) و&lt;b&gt;بذرتها العشوائية&lt;/b&gt; (SEED). تُصنَّف جميع النقاط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأدنى للنقاط في البلاطة&lt;/b&gt; (MIN_POINTS، الافتراضي 0 = 3 × عدد معاملات متعدد الحدود) و&lt;b&gt;البلاطات قليلة النقاط&lt;/b&gt; (SPARSE_TILES): استعارة سطح أقرب بلاطة مُوائَمة (الافتراضي) أو ترك نقاطها دون تصنيف (الصنف 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الاستبعاد&lt;/b&gt; (REJECTION): إعادة الترجيح (الافتراضي؛ قد تعود نقطة استُبعدت سابقاً عندما يتحرك السطح) أو تراكمي (تُستبعد النقطة نهائياً).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المخرجات&lt;/b&gt;: السحابة المصنَّفة (OUTPUT، بالامتداد .laz أو .las)، وسحابة نقاط الأرض فقط اختيارياً (GROUND_OUTPUT)، وتقرير HTML اختياري (OUTPUT_HTML) فيه المعاملات وأعداد النقاط في كل صنف وإحصاءات كل تكرار كما في الجدولين 1–2 من البحث وإحصاءات كل بلاطة والزمن وعدد النقاط في الثانية؛ وملف CSV اختياري بتكرارات كل بلاطة ومعاملاتها (TILE_STATS)؛ والأرقام N_GROUND وN_OTHER وN_NOISE وN_UNCLASSIFIED وN_TILES وPOINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;قِس النتيجة مقارنةً بالتصنيفات المرجعية باستخدام &lt;i&gt;دقة فلتر نقاط الأرض&lt;/i&gt;. لا يُكتب أي شيء إذا فشل التشغيل أو أُلغي.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="185"/>
+        <location filename="../algorithms/lsq_filter.py" line="179"/>
         <source>Per-tile iteration statistics (CSV)</source>
         <translation>إحصاءات التكرارات لكل بلاطة (CSV)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="185"/>
+        <location filename="../algorithms/lsq_filter.py" line="179"/>
         <source>CSV files (*.csv)</source>
         <translation>ملفات CSV (*.csv)</translation>
     </message>
@@ -1535,62 +1535,62 @@
 <context>
     <name>RectifyGcpAlgorithm</name>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="316"/>
+        <location filename="../algorithms/gcp_rectification.py" line="310"/>
         <source>Rectify image with GCPs (polynomial)</source>
         <translation>التصحيح الهندسي للصورة بنقاط الضبط الأرضي (متعدد حدود)</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="319"/>
+        <location filename="../algorithms/gcp_rectification.py" line="313"/>
         <source>georeference,georeferencer,gcp,ground control points,polynomial,rectification,warp,gdalwarp,rms,accuracy</source>
         <translation>إسناد جغرافي,georeferencer,gcp,نقاط الضبط الأرضي,متعدد الحدود,تصحيح هندسي,warp,gdalwarp,rms,الدقة</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="323"/>
+        <location filename="../algorithms/gcp_rectification.py" line="317"/>
         <source>&lt;p&gt;Rectifies (warps) an image with ground control points and a 2-D polynomial of order 1, 2 or 3 through GDAL (same result as &lt;i&gt;gdalwarp -order N&lt;/i&gt;), and writes the accuracy report of the fit. The input image is never modified: the GCPs are attached to an in-memory copy.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
         <translation>&lt;p&gt;تصحِّح صورة هندسياً (warp) باستخدام نقاط الضبط الأرضي ومتعدد حدود ثنائي الأبعاد من الدرجة 1 أو 2 أو 3 عبر GDAL (النتيجة نفسها التي يعطيها &lt;i&gt;gdalwarp -order N&lt;/i&gt;)، وتكتب تقرير دقة المواءمة. لا تُعدَّل صورة الإدخال أبداً: تُرفق نقاط الضبط بنسخة منها في الذاكرة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT): الراستر المراد تصحيحه.&lt;/li&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="347"/>
+        <location filename="../algorithms/gcp_rectification.py" line="341"/>
         <source>Target CRS [default: the GCP CRS]</source>
         <translation>نظام الإحداثيات الهدف [الافتراضي: نظام إحداثيات نقاط الضبط]</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="349"/>
+        <location filename="../algorithms/gcp_rectification.py" line="343"/>
         <source>Resampling</source>
         <translation>إعادة الاعتيان</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="351"/>
+        <location filename="../algorithms/gcp_rectification.py" line="345"/>
         <source>Output resolution (target CRS units) [default: GR]</source>
         <translation>دقة تمييز المخرج (بوحدات نظام الإحداثيات الهدف) [الافتراضي: GR]</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="353"/>
+        <location filename="../algorithms/gcp_rectification.py" line="347"/>
         <source>Output nodata value</source>
         <translation>قيمة nodata في المخرج</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="355"/>
+        <location filename="../algorithms/gcp_rectification.py" line="349"/>
         <source>Rectified image</source>
         <translation>الصورة المصحَّحة هندسياً</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="357"/>
+        <location filename="../algorithms/gcp_rectification.py" line="351"/>
         <source>Accuracy report</source>
         <translation>تقرير الدقة</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="357"/>
+        <location filename="../algorithms/gcp_rectification.py" line="351"/>
         <source>HTML files (*.html)</source>
         <translation>ملفات HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="369"/>
+        <location filename="../algorithms/gcp_rectification.py" line="363"/>
         <source>OUTPUT must be a GeoTIFF file (.tif); got {0}.</source>
         <translation>يجب أن يكون OUTPUT ملف GeoTIFF (.tif)؛ القيمة المعطاة: {0}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gcp_rectification.py" line="323"/>
+        <location filename="../algorithms/gcp_rectification.py" line="317"/>
         <source>&lt;li&gt;&lt;b&gt;Target CRS&lt;/b&gt; (TARGET_CRS, default the GCP CRS): output CRS; GDAL reprojects after the polynomial.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest neighbour as in the paper): 0 near, 1 bilinear, 2 cubic, 3 cubic spline, 4 Lanczos, 5 average, 6 mode.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output resolution&lt;/b&gt; (RESOLUTION, target-CRS units, default GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Nodata&lt;/b&gt; (NODATA, optional): value outside the image footprint (default: the input&apos;s nodata, else 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rectified image&lt;/b&gt; (OUTPUT): GeoTIFF (written under a temporary name, renamed on success; nothing is left behind on failure).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML accuracy report.&lt;/li&gt;&lt;/ul&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;نظام الإحداثيات الهدف&lt;/b&gt; (TARGET_CRS، الافتراضي نظام إحداثيات نقاط الضبط): نظام إحداثيات المخرج؛ يعيد GDAL الإسقاط بعد تطبيق متعدد الحدود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إعادة الاعتيان&lt;/b&gt; (RESAMPLING، الافتراضي 0 = أقرب جار كما في البحث): 0 أقرب جار، 1 ثنائي الخطية، 2 تكعيبي، 3 شريحة تكعيبية (cubic spline)، 4 Lanczos، 5 المتوسط، 6 المنوال.&lt;/li&gt;&lt;li&gt;&lt;b&gt;دقة تمييز المخرج&lt;/b&gt; (RESOLUTION، بوحدات نظام الإحداثيات الهدف، الافتراضي GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;قيمة nodata&lt;/b&gt; (NODATA، اختياري): القيمة خارج حدود الصورة (الافتراضي: قيمة nodata في الإدخال، وإلا 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الصورة المصحَّحة هندسياً&lt;/b&gt; (OUTPUT): GeoTIFF (يُكتب باسم مؤقت ثم يُعاد تسميته عند النجاح؛ ولا يبقى أي أثر عند الفشل).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): تقرير دقة بصيغة HTML.&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
@@ -1598,97 +1598,97 @@
 <context>
     <name>SlopeGroundFilterAlgorithm</name>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="126"/>
+        <location filename="../algorithms/slope_filter.py" line="120"/>
         <source>Ground filter (slope-based)</source>
         <translation>فلتر نقاط الأرض (على أساس الميل)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="129"/>
+        <location filename="../algorithms/slope_filter.py" line="123"/>
         <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,vosselman,slope,point cloud</source>
         <translation>ليدار,las,laz,أرض,فلتر,تصنيف,dtm,الأرض العارية,vosselman,الميل,سحابة النقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="133"/>
+        <location filename="../algorithms/slope_filter.py" line="127"/>
         <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when some neighbour at horizontal distance 0 &amp;lt; d ≤ r lies more than d·tan θ + h below it. Single pass, neighbours from the whole cloud, exact (labels identical to a brute-force check of every pair) and fast (about a million points per second on one core at r = 3 m). Low outliers get class 7; every other attribute is copied unchanged. The input classification is ignored.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study's setting RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 allows a rise of 2.90 m at 3 m. Tune r and θ to your data with &lt;i&gt;Slope filter threshold sweep&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radius r&lt;/b&gt; (RADIUS, m, default 10, &amp;gt; 0): neighbourhood radius. An object is removed only within r of its edge, so r must exceed half the width of the largest building to remove; larger r costs more time.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope threshold θ&lt;/b&gt; (SLOPE, degrees, default 40, strictly between 0 and 90): the steepest terrain kept. Allowed rise at 3 m: 2.52 m (40°), 2.90 m (44°), 3.33 m (48°), 3.84 m (52°), 4.45 m (56°), 5.20 m (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Height tolerance h&lt;/b&gt; (HEIGHT_TOLERANCE, m, default 0.2, ≥ 0): extra rise allowed for every pair, absorbs ranging noise between close points; 0 is the rule as published.&lt;/li&gt;</source>
         <translation>&lt;p&gt;تصنِّف سحابة نقاط LAS/LAZ إلى أرض (الصنف 2) وغير أرض (الصنف 1) بفلتر الميل الذي اقترحه Vosselman (2000): تُعَدّ النقطة غير أرضية إذا وُجدت نقطة مجاورة على مسافة أفقية 0 &lt; d ≤ r تقع أسفلها بأكثر من d·tan θ + h. مرور واحد، والجيران من السحابة كلها، ودقيق (التصنيفات مطابقة لفحص شامل لكل الأزواج) وسريع (نحو مليون نقطة في الثانية على نواة معالج واحدة عند r = 3 م). تأخذ القيم الشاذة المنخفضة الصنف 7؛ وتُنسخ سائر الخصائص دون تغيير. يُتجاهَل تصنيف الإدخال.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: إعداد دراسة الغابات RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 يسمح بفرق ارتفاع 2.90 م على مسافة 3 م. اضبط r وθ لبياناتك باستخدام &lt;i&gt;مسح عتبات فلتر الميل&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz بنظام إحداثيات مُسقَط (بالأمتار).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نصف القطر r&lt;/b&gt; (RADIUS، م، الافتراضي 10، &gt; 0): نصف قطر الجوار. لا يُزال الجسم إلا ضمن مسافة r من حافته، لذا يجب أن يتجاوز r نصف عرض أكبر مبنى يُراد إزالته؛ وكلما كبر r زاد الزمن.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عتبة الميل θ&lt;/b&gt; (SLOPE، درجات، الافتراضي 40، بين 0 و90 حصراً): أشد انحدار للتضاريس يُحتفظ به. فرق الارتفاع المسموح على مسافة 3 م: 2.52 م (40°)، 2.90 م (44°)، 3.33 م (48°)، 3.84 م (52°)، 4.45 م (56°)، 5.20 م (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;سماحية الارتفاع h&lt;/b&gt; (HEIGHT_TOLERANCE، م، الافتراضي 0.2، ≥ 0): فرق ارتفاع إضافي مسموح لكل زوج، يمتص ضوضاء قياس المسافة بين النقاط المتقاربة؛ والقيمة 0 هي القاعدة كما نُشرت.&lt;/li&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="172"/>
+        <location filename="../algorithms/slope_filter.py" line="166"/>
         <source>Radius r (m)</source>
         <translation>نصف القطر r (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="174"/>
+        <location filename="../algorithms/slope_filter.py" line="168"/>
         <source>Slope threshold θ (degrees)</source>
         <translation>عتبة الميل θ (درجة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="176"/>
+        <location filename="../algorithms/slope_filter.py" line="170"/>
         <source>Height tolerance h (m)</source>
         <translation>سماحية الارتفاع h (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="180"/>
+        <location filename="../algorithms/slope_filter.py" line="174"/>
         <source>Keep existing noise classes (7, 18)</source>
         <translation>الإبقاء على أصناف الضوضاء الموجودة (7, 18)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="183"/>
+        <location filename="../algorithms/slope_filter.py" line="177"/>
         <source>Classified point cloud</source>
         <translation>سحابة النقاط المصنَّفة</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="185"/>
+        <location filename="../algorithms/slope_filter.py" line="179"/>
         <source>Ground points</source>
         <translation>نقاط الأرض</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="188"/>
+        <location filename="../algorithms/slope_filter.py" line="182"/>
         <source>Report</source>
         <translation>التقرير</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="188"/>
+        <location filename="../algorithms/slope_filter.py" line="182"/>
         <source>HTML files (*.html)</source>
         <translation>ملفات HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="191"/>
+        <location filename="../algorithms/slope_filter.py" line="185"/>
         <source>Points read</source>
         <translation>النقاط المقروءة</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="191"/>
+        <location filename="../algorithms/slope_filter.py" line="185"/>
         <source>Ground points (class 2)</source>
         <translation>نقاط الأرض (الصنف 2)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="191"/>
+        <location filename="../algorithms/slope_filter.py" line="185"/>
         <source>Non-ground points (class 1)</source>
         <translation>النقاط غير الأرضية (الصنف 1)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="191"/>
+        <location filename="../algorithms/slope_filter.py" line="185"/>
         <source>Low outliers (class 7)</source>
         <translation>القيم الشاذة المنخفضة (الصنف 7)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="191"/>
+        <location filename="../algorithms/slope_filter.py" line="185"/>
         <source>Filter speed (points/s)</source>
         <translation>سرعة الفلترة (نقطة/ث)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="207"/>
+        <location filename="../algorithms/slope_filter.py" line="201"/>
         <source>Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, mode {}</source>
         <translation>فلتر الميل: r = {} م، θ = {}°، h = {} م، الارتدادات: {}، النمط: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="215"/>
+        <location filename="../algorithms/slope_filter.py" line="209"/>
         <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
         <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الفلترة {:.1f} ث</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="133"/>
+        <location filename="../algorithms/slope_filter.py" line="127"/>
         <source>&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, default yes, advanced): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point, classes 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): counts, settings, allowed-rise table, speed.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE, POINTS_PER_SECOND (filter step only).&lt;/p&gt;&lt;p&gt;Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;الإبقاء على أصناف الضوضاء الموجودة&lt;/b&gt; (KEEP_NOISE، الافتراضي: نعم، خيار متقدم): النقاط المصنَّفة مسبقاً 7 أو 18 تحتفظ بصنفها ولا تشارك في الفلترة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المصنَّفة&lt;/b&gt; (OUTPUT، .laz/.las): كل النقاط، بالأصناف 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط الأرض&lt;/b&gt; (GROUND_OUTPUT، اختياري): نقاط الأرض فقط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): الأعداد والإعدادات وجدول فرق الارتفاع المسموح والسرعة.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: N_POINTS وN_GROUND وN_NONGROUND وN_NOISE وPOINTS_PER_SECOND (لخطوة الفلترة وحدها).&lt;/p&gt;&lt;p&gt;المرجع: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</translation>
     </message>
@@ -1696,152 +1696,152 @@
 <context>
     <name>SlopeThresholdSweepAlgorithm</name>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="248"/>
+        <location filename="../algorithms/slope_filter.py" line="242"/>
         <source>Slope filter threshold sweep</source>
         <translation>مسح عتبات فلتر الميل</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="251"/>
+        <location filename="../algorithms/slope_filter.py" line="245"/>
         <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
         <translation>ليدار,أرض,فلتر,vosselman,الميل,العتبة,المعايرة,الدقة,النوع الأول,النوع الثاني,كابا,isprs</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="255"/>
+        <location filename="../algorithms/slope_filter.py" line="249"/>
         <source>&lt;p&gt;Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h and reports, against reference labels, Type I error (ground rejected), Type II error (objects accepted as ground — the forest study's &quot;error&quot; column, which alone always favours low θ), total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004), then picks the best setting. One exact neighbourhood pass per radius and tolerance: every threshold then costs a single comparison per point.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. ISPRS reference samples: INPUT=samp31.laz (its own classification is the reference).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): LAS/LAZ. Its classification is never used to filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference cloud&lt;/b&gt; (REFERENCE, optional): a labelled copy of the same points in the same order; empty = the input's own classification (e.g. the ISPRS samples).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &quot;2&quot;): reference classes counted as ground; all others are objects.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope thresholds&lt;/b&gt; (SLOPES, degrees, default &quot;30,35,40,44,48,52,56,60&quot;): a list or start:stop:step.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radii&lt;/b&gt; (RADII, m, default &quot;10&quot;) and &lt;b&gt;height tolerances&lt;/b&gt; (HEIGHT_TOLERANCES, m, default &quot;0.2&quot;): lists; each value is one pass.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Best by&lt;/b&gt; (METRIC, default 0): 0 lowest total error, 1 highest kappa, 2 lowest Type I, 3 lowest Type II.&lt;/li&gt;</source>
         <translation>&lt;p&gt;تشغِّل فلتر الأرض القائم على الميل لكل توليفة من عتبات الميل θ وأنصاف الأقطار r وسماحيات الارتفاع h، وتحسب مقارنةً بالتصنيفات المرجعية خطأ النوع الأول (رفض نقاط الأرض)، وخطأ النوع الثاني (قبول الأجسام كأرض — وهو عمود &quot;الخطأ&quot; في دراسة الغابات، الذي يرجِّح وحده دائماً قيم θ المنخفضة)، والخطأ الكلي، ومعامل كابا لكوهين (Sithole &amp; Vosselman 2004)، ثم تختار أفضل إعداد. مرور دقيق واحد على الجوار لكل نصف قطر وسماحية: بعدها لا تكلِّف كل عتبة سوى مقارنة واحدة لكل نقطة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: دراسة الغابات: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. عيّنات ISPRS المرجعية: INPUT=samp31.laz (تصنيفها نفسه هو المرجع).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): LAS/LAZ. لا يُستخدم تصنيفها في الفلترة أبداً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المرجعية&lt;/b&gt; (REFERENCE، اختياري): نسخة مصنَّفة من النقاط نفسها وبالترتيب نفسه؛ فارغ = تصنيف سحابة الإدخال نفسها (مثل عيّنات ISPRS).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أصناف الأرض&lt;/b&gt; (GROUND_CLASSES، الافتراضي &quot;2&quot;): الأصناف المرجعية التي تُعَدّ أرضاً؛ وكل ما عداها أجسام.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عتبات الميل&lt;/b&gt; (SLOPES، درجات، الافتراضي &quot;30,35,40,44,48,52,56,60&quot;): قائمة أو start:stop:step (بداية:نهاية:خطوة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أنصاف الأقطار&lt;/b&gt; (RADII، م، الافتراضي &quot;10&quot;) و&lt;b&gt;سماحيات الارتفاع&lt;/b&gt; (HEIGHT_TOLERANCES، م، الافتراضي &quot;0.2&quot;): قوائم؛ كل قيمة تعني مروراً واحداً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;معيار الأفضلية&lt;/b&gt; (METRIC، الافتراضي 0): 0 أدنى خطأ كلي، 1 أعلى كابا، 2 أدنى خطأ من النوع الأول، 3 أدنى خطأ من النوع الثاني.&lt;/li&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="292"/>
+        <location filename="../algorithms/slope_filter.py" line="286"/>
         <source>Reference cloud (empty = the input&apos;s classification)</source>
         <translation>السحابة المرجعية (فارغ = تصنيف سحابة الإدخال نفسها)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="296"/>
+        <location filename="../algorithms/slope_filter.py" line="290"/>
         <source>Reference ground classes</source>
         <translation>أصناف الأرض في المرجع</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="298"/>
+        <location filename="../algorithms/slope_filter.py" line="292"/>
         <source>Slope thresholds θ (degrees; list or start:stop:step)</source>
         <translation>عتبات الميل θ (درجات؛ قائمة أو بداية:نهاية:خطوة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="301"/>
+        <location filename="../algorithms/slope_filter.py" line="295"/>
         <source>Radii r (m; list)</source>
         <translation>أنصاف الأقطار r (م؛ قائمة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="303"/>
+        <location filename="../algorithms/slope_filter.py" line="297"/>
         <source>Height tolerances h (m; list)</source>
         <translation>سماحيات الارتفاع h (م؛ قائمة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
+        <location filename="../algorithms/slope_filter.py" line="300"/>
         <source>Best by</source>
         <translation>معيار الأفضلية</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
+        <location filename="../algorithms/slope_filter.py" line="300"/>
         <source>Lowest total error</source>
         <translation>أدنى خطأ كلي</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
+        <location filename="../algorithms/slope_filter.py" line="300"/>
         <source>Highest kappa</source>
         <translation>أعلى كابا</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
+        <location filename="../algorithms/slope_filter.py" line="300"/>
         <source>Lowest Type I error</source>
         <translation>أدنى خطأ من النوع الأول</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
+        <location filename="../algorithms/slope_filter.py" line="300"/>
         <source>Lowest Type II error</source>
         <translation>أدنى خطأ من النوع الثاني</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="313"/>
+        <location filename="../algorithms/slope_filter.py" line="307"/>
         <source>Sweep table</source>
         <translation>جدول المسح</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="313"/>
+        <location filename="../algorithms/slope_filter.py" line="307"/>
         <source>CSV files (*.csv)</source>
         <translation>ملفات CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="309"/>
         <source>Report</source>
         <translation>التقرير</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="309"/>
         <source>HTML files (*.html)</source>
         <translation>ملفات HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="318"/>
+        <location filename="../algorithms/slope_filter.py" line="312"/>
         <source>Classified with the best setting</source>
         <translation>السحابة المصنَّفة بأفضل إعداد</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="321"/>
+        <location filename="../algorithms/slope_filter.py" line="315"/>
         <source>Best radius (m)</source>
         <translation>أفضل نصف قطر (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="321"/>
+        <location filename="../algorithms/slope_filter.py" line="315"/>
         <source>Best slope threshold (degrees)</source>
         <translation>أفضل عتبة ميل (درجة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="321"/>
+        <location filename="../algorithms/slope_filter.py" line="315"/>
         <source>Best height tolerance (m)</source>
         <translation>أفضل سماحية ارتفاع (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="321"/>
+        <location filename="../algorithms/slope_filter.py" line="315"/>
         <source>Type I error at the best setting (%)</source>
         <translation>خطأ النوع الأول عند أفضل إعداد (%)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="321"/>
+        <location filename="../algorithms/slope_filter.py" line="315"/>
         <source>Type II error at the best setting (%)</source>
         <translation>خطأ النوع الثاني عند أفضل إعداد (%)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="321"/>
+        <location filename="../algorithms/slope_filter.py" line="315"/>
         <source>Total error at the best setting (%)</source>
         <translation>الخطأ الكلي عند أفضل إعداد (%)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="321"/>
+        <location filename="../algorithms/slope_filter.py" line="315"/>
         <source>Kappa at the best setting (%)</source>
         <translation>كابا عند أفضل إعداد (%)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="321"/>
+        <location filename="../algorithms/slope_filter.py" line="315"/>
         <source>Settings evaluated</source>
         <translation>عدد الإعدادات المقيَّمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="330"/>
+        <location filename="../algorithms/slope_filter.py" line="324"/>
         <source>Best setting</source>
         <translation>أفضل إعداد</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="350"/>
+        <location filename="../algorithms/slope_filter.py" line="344"/>
         <source>Sweeping {} thresholds × {} radii × {} tolerances</source>
         <translation>مسح {} عتبات × {} أنصاف أقطار × {} سماحيات</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="363"/>
+        <location filename="../algorithms/slope_filter.py" line="357"/>
         <source>Best ({}): {} — total {:.2f} %</source>
         <translation>الأفضل ({}): {} — الخطأ الكلي {:.2f} %</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="255"/>
+        <location filename="../algorithms/slope_filter.py" line="249"/>
         <source>&lt;li&gt;&lt;b&gt;Sweep table&lt;/b&gt; (OUTPUT_CSV): one row per setting: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): the table, the best setting and a chart of the errors against θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified with the best setting&lt;/b&gt; (OUTPUT, optional LAS/LAZ).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: BEST_RADIUS, BEST_SLOPE, BEST_HEIGHT_TOLERANCE, BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.&lt;/p&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;جدول المسح&lt;/b&gt; (OUTPUT_CSV): صف لكل إعداد: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML): الجدول وأفضل إعداد ومخطط للأخطاء مقابل θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المصنَّفة بأفضل إعداد&lt;/b&gt; (OUTPUT، LAS/LAZ اختياري).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: BEST_RADIUS وBEST_SLOPE وBEST_HEIGHT_TOLERANCE وBEST_TYPE1 وBEST_TYPE2 وBEST_TOTAL وBEST_KAPPA (بالنسبة المئوية) وN_SETTINGS.&lt;/p&gt;</translation>
     </message>
@@ -2045,72 +2045,72 @@
 <context>
     <name>_SlopeCommon</name>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="45"/>
+        <location filename="../algorithms/slope_filter.py" line="39"/>
         <source>Point cloud (LAS/LAZ)</source>
         <translation>سحابة النقاط (LAS/LAZ)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="50"/>
+        <location filename="../algorithms/slope_filter.py" line="44"/>
         <source>Returns filtered</source>
         <translation>الارتدادات المفلترة</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="50"/>
+        <location filename="../algorithms/slope_filter.py" line="44"/>
         <source>All returns</source>
         <translation>جميع الارتدادات</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="50"/>
+        <location filename="../algorithms/slope_filter.py" line="44"/>
         <source>Last returns only</source>
         <translation>الارتدادات الأخيرة فقط</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="53"/>
+        <location filename="../algorithms/slope_filter.py" line="47"/>
         <source>Remove low outliers first (class 7)</source>
         <translation>إزالة القيم الشاذة المنخفضة أولاً (الصنف 7)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="55"/>
+        <location filename="../algorithms/slope_filter.py" line="49"/>
         <source>Low-outlier search cell (m)</source>
         <translation>خلية البحث عن القيم الشاذة المنخفضة (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="57"/>
+        <location filename="../algorithms/slope_filter.py" line="51"/>
         <source>Low-outlier depth below neighbours (m)</source>
         <translation>عمق القيمة الشاذة المنخفضة تحت الجيران (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="62"/>
+        <location filename="../algorithms/slope_filter.py" line="56"/>
         <source>Mode</source>
         <translation>النمط</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="62"/>
+        <location filename="../algorithms/slope_filter.py" line="56"/>
         <source>Exact (Vosselman 2000)</source>
         <translation>دقيق (Vosselman 2000)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="62"/>
+        <location filename="../algorithms/slope_filter.py" line="56"/>
         <source>Terrain-adaptive (toolbox extension)</source>
         <translation>متكيِّف مع التضاريس (إضافة من صندوق الأدوات)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="66"/>
+        <location filename="../algorithms/slope_filter.py" line="60"/>
         <source>Adaptive mode: trend cell (m)</source>
         <translation>النمط المتكيِّف: خلية الاتجاه العام (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="68"/>
+        <location filename="../algorithms/slope_filter.py" line="62"/>
         <source>Adaptive mode: trend window, &gt; largest building (m)</source>
         <translation>النمط المتكيِّف: نافذة الاتجاه العام، &gt; أكبر مبنى (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="77"/>
+        <location filename="../algorithms/slope_filter.py" line="71"/>
         <source>TREND_CELL and TREND_WINDOW must be &gt; 0 metres in adaptive mode (e.g. 10 and 60).</source>
         <translation>يجب أن تكون قيمتا TREND_CELL وTREND_WINDOW &gt; 0 م في النمط المتكيِّف (مثلاً 10 و60).</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="83"/>
+        <location filename="../algorithms/slope_filter.py" line="77"/>
         <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
         <translation>يجب أن تكون قيمتا NOISE_RADIUS وNOISE_THRESHOLD &gt; 0 م (مثلاً 5 و1)، أو أوقف الفلترة المسبقة NOISE.</translation>
     </message>
