@@ -18,7 +18,8 @@ import os
 import traceback
 
 from qgis.core import (QgsProcessingAlgorithm, QgsProcessingException,
-                       QgsProcessingParameterDefinition, QgsProcessingParameterNumber)
+                       QgsProcessingParameterBoolean, QgsProcessingParameterDefinition,
+                       QgsProcessingParameterNumber)
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
@@ -105,6 +106,21 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
             param.setHelp(help_text)
         self.addParameter(param)
         return param
+
+    # Shared low-outlier pre-filter (core.noise.flag_low_outliers) of the ground filters
+    NOISE = "NOISE"
+    NOISE_RADIUS = "NOISE_RADIUS"
+    NOISE_THRESHOLD = "NOISE_THRESHOLD"
+
+    def add_noise_params(self) -> None:
+        """NOISE (default yes), NOISE_RADIUS (m, 5) and NOISE_THRESHOLD (m, 1)."""
+        self.add(QgsProcessingParameterBoolean(
+            self.NOISE, self.tr("Remove low outliers first (class 7)"), True))
+        self.add_number(self.NOISE_RADIUS, self.tr("Low-outlier search cell (m)"), 5.0,
+                        minimum=0.0, advanced=True)
+        self.add_number(self.NOISE_THRESHOLD,
+                        self.tr("Low-outlier depth below neighbours (m)"), 1.0,
+                        minimum=0.0, advanced=True)
 
     # ---------------------------------------------------------------- running
     @staticmethod

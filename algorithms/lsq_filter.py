@@ -5,9 +5,8 @@ import contextlib
 import time
 
 import numpy as np
-from qgis.core import (QgsProcessingOutputNumber, QgsProcessingParameterBoolean,
-                       QgsProcessingParameterEnum, QgsProcessingParameterFile,
-                       QgsProcessingParameterFileDestination)
+from qgis.core import (QgsProcessingOutputNumber, QgsProcessingParameterEnum,
+                       QgsProcessingParameterFile, QgsProcessingParameterFileDestination)
 
 from ..core import lsq_filter as core_lsq
 from ..core.atomic import atomic_output, check_not_input
@@ -47,9 +46,6 @@ class LsqGroundFilterAlgorithm(GeomaticsAlgorithm):
     MIN_POINTS = "MIN_POINTS"
     SPARSE_TILES = "SPARSE_TILES"
     REJECTION = "REJECTION"
-    NOISE = "NOISE"
-    NOISE_RADIUS = "NOISE_RADIUS"
-    NOISE_THRESHOLD = "NOISE_THRESHOLD"
 
     N_GROUND = "N_GROUND"
     N_OTHER = "N_OTHER"
@@ -138,13 +134,7 @@ class LsqGroundFilterAlgorithm(GeomaticsAlgorithm):
             self.MODE, self.tr("Mode"),
             [self.tr("Faithful (the paper)"), self.tr("Improved (ours, beyond the paper)")],
             defaultValue=0))
-        self.add(QgsProcessingParameterBoolean(
-            self.NOISE, self.tr("Remove low outliers first (class 7)"), True))
-        self.add_number(self.NOISE_RADIUS, self.tr("Low-outlier search cell (m)"), 5.0,
-                        minimum=0.0, advanced=True)
-        self.add_number(self.NOISE_THRESHOLD,
-                        self.tr("Low-outlier depth below neighbours (m)"), 1.0,
-                        minimum=0.0, advanced=True)
+        self.add_noise_params()
         self.add_number(self.MAX_ITERATIONS, self.tr("Maximum iterations per tile"),
                         core_lsq.FAITHFUL_MAX_ITERATIONS, minimum=1, maximum=1000,
                         integer=True, advanced=True)

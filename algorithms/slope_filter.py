@@ -28,9 +28,6 @@ class _SlopeCommon(GeomaticsAlgorithm):
 
     INPUT = "INPUT"
     RETURNS = "RETURNS"
-    NOISE = "NOISE"
-    NOISE_RADIUS = "NOISE_RADIUS"
-    NOISE_THRESHOLD = "NOISE_THRESHOLD"
     MODE = "MODE"
     TREND_CELL = "TREND_CELL"
     TREND_WINDOW = "TREND_WINDOW"
@@ -44,13 +41,7 @@ class _SlopeCommon(GeomaticsAlgorithm):
         self.add(QgsProcessingParameterEnum(
             self.RETURNS, self.tr("Returns filtered"),
             [self.tr("All returns"), self.tr("Last returns only")], defaultValue=0))
-        self.add(QgsProcessingParameterBoolean(
-            self.NOISE, self.tr("Remove low outliers first (class 7)"), True))
-        self.add_number(self.NOISE_RADIUS, self.tr("Low-outlier search cell (m)"), 5.0,
-                        minimum=0.0, advanced=True)
-        self.add_number(self.NOISE_THRESHOLD,
-                        self.tr("Low-outlier depth below neighbours (m)"), 1.0,
-                        minimum=0.0, advanced=True)
+        self.add_noise_params()
 
     def add_mode_params(self):
         self.add(QgsProcessingParameterEnum(

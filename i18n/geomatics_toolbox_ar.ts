@@ -109,7 +109,7 @@
         <translation>الصنف بعد الفلترة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="381"/>
+        <location filename="../algorithms/lsq_filter.py" line="371"/>
         <source>points</source>
         <translation>عدد النقاط</translation>
     </message>
@@ -124,272 +124,272 @@
         <translation>دقة فلتر نقاط الأرض</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="324"/>
+        <location filename="../algorithms/lsq_filter.py" line="314"/>
         <source>input</source>
         <translation>ملف الإدخال</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="324"/>
+        <location filename="../algorithms/lsq_filter.py" line="314"/>
         <source>CRS</source>
         <translation>نظام الإحداثيات (CRS)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="324"/>
+        <location filename="../algorithms/lsq_filter.py" line="314"/>
         <source>none</source>
         <translation>لا يوجد</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="325"/>
+        <location filename="../algorithms/lsq_filter.py" line="315"/>
         <source>mode</source>
         <translation>النمط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="325"/>
+        <location filename="../algorithms/lsq_filter.py" line="315"/>
         <source>order</source>
         <translation>الدرجة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="326"/>
+        <location filename="../algorithms/lsq_filter.py" line="316"/>
         <source>polynomial</source>
         <translation>متعدد الحدود</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="391"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>tile size (m)</source>
         <translation>حجم البلاطة (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="330"/>
+        <location filename="../algorithms/lsq_filter.py" line="320"/>
         <source>threshold T (m)</source>
         <translation>العتبة T (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="331"/>
+        <location filename="../algorithms/lsq_filter.py" line="321"/>
         <source>max iterations</source>
         <translation>الحد الأقصى للتكرارات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="332"/>
+        <location filename="../algorithms/lsq_filter.py" line="322"/>
         <source>stop tolerance (m)</source>
         <translation>سماحية التوقف (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="333"/>
+        <location filename="../algorithms/lsq_filter.py" line="323"/>
         <source>fitting subset per tile</source>
         <translation>المجموعة الجزئية للمواءمة في كل بلاطة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="333"/>
+        <location filename="../algorithms/lsq_filter.py" line="323"/>
         <source>all points</source>
         <translation>جميع النقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="334"/>
+        <location filename="../algorithms/lsq_filter.py" line="324"/>
         <source>seed</source>
         <translation>البذرة العشوائية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="335"/>
+        <location filename="../algorithms/lsq_filter.py" line="325"/>
         <source>min points per tile</source>
         <translation>الحد الأدنى للنقاط في البلاطة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="336"/>
+        <location filename="../algorithms/lsq_filter.py" line="326"/>
         <source>under-populated tiles</source>
         <translation>البلاطات قليلة النقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="337"/>
+        <location filename="../algorithms/lsq_filter.py" line="327"/>
         <source>rejection</source>
         <translation>الاستبعاد</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="338"/>
+        <location filename="../algorithms/lsq_filter.py" line="328"/>
         <source>low-outlier pre-filter</source>
         <translation>الفلترة المسبقة للقيم الشاذة المنخفضة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="339"/>
+        <location filename="../algorithms/lsq_filter.py" line="329"/>
         <source>pre-filter cell / depth (m)</source>
         <translation>خلية / عمق الفلترة المسبقة (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="341"/>
+        <location filename="../algorithms/lsq_filter.py" line="331"/>
         <source>grid origin (min x, min y)</source>
         <translation>مبدأ الشبكة (أصغر x، أصغر y)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="344"/>
+        <location filename="../algorithms/lsq_filter.py" line="334"/>
         <source>levels (× tile size)</source>
         <translation>المستويات (× حجم البلاطة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="345"/>
+        <location filename="../algorithms/lsq_filter.py" line="335"/>
         <source>window overlap</source>
         <translation>تداخل النوافذ</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="346"/>
+        <location filename="../algorithms/lsq_filter.py" line="336"/>
         <source>slope factor (m) / cap (m)</source>
         <translation>معامل الميل (م) / الحد الأعلى (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="348"/>
+        <location filename="../algorithms/lsq_filter.py" line="338"/>
         <source>ground</source>
         <translation>أرض</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="348"/>
+        <location filename="../algorithms/lsq_filter.py" line="338"/>
         <source>other (object)</source>
         <translation>أخرى (جسم)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="348"/>
+        <location filename="../algorithms/lsq_filter.py" line="338"/>
         <source>low noise</source>
         <translation>ضوضاء منخفضة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="349"/>
+        <location filename="../algorithms/lsq_filter.py" line="339"/>
         <source>never classified</source>
         <translation>لم تُصنَّف قط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="371"/>
+        <location filename="../algorithms/lsq_filter.py" line="361"/>
         <source>reading</source>
         <translation>القراءة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="374"/>
+        <location filename="../algorithms/lsq_filter.py" line="364"/>
         <source>filter total</source>
         <translation>إجمالي الفلترة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="375"/>
+        <location filename="../algorithms/lsq_filter.py" line="365"/>
         <source>run total (read, filter, write)</source>
         <translation>إجمالي التشغيل (قراءة، فلترة، كتابة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="376"/>
+        <location filename="../algorithms/lsq_filter.py" line="366"/>
         <source>points per second (run)</source>
         <translation>نقطة في الثانية (التشغيل)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="377"/>
+        <location filename="../algorithms/lsq_filter.py" line="367"/>
         <source>points per second (filter)</source>
         <translation>نقطة في الثانية (الفلترة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="378"/>
+        <location filename="../algorithms/lsq_filter.py" line="368"/>
         <source>step</source>
         <translation>الخطوة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="379"/>
+        <location filename="../algorithms/lsq_filter.py" line="369"/>
         <source>Parameters</source>
         <translation>المعاملات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="381"/>
+        <location filename="../algorithms/lsq_filter.py" line="371"/>
         <source>class</source>
         <translation>الصنف</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="381"/>
+        <location filename="../algorithms/lsq_filter.py" line="371"/>
         <source>meaning</source>
         <translation>المعنى</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="384"/>
+        <location filename="../algorithms/lsq_filter.py" line="374"/>
         <source>Kept heights after each iteration, aggregated over the tiles (a tile that has stopped keeps its last values); the layout of the paper's Tables 1–2.</source>
         <translation>الارتفاعات المُبقاة بعد كل تكرار، مجمَّعة على البلاطات (البلاطة التي توقفت تحتفظ بآخر قيمها)؛ على نسق الجدولين 1–2 في البحث.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="388"/>
+        <location filename="../algorithms/lsq_filter.py" line="378"/>
         <source>tiles still iterating</source>
         <translation>بلاطات قيد التكرار</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="391"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>level</source>
         <translation>المستوى</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="403"/>
+        <location filename="../algorithms/lsq_filter.py" line="393"/>
         <source>tiles</source>
         <translation>عدد البلاطات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="391"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>fitted</source>
         <translation>بلاطات مُوائَمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="391"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>ground seeds</source>
         <translation>نقاط الأرض الابتدائية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="391"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>seconds</source>
         <translation>ثانية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
+        <location filename="../algorithms/lsq_filter.py" line="386"/>
         <source>The iteration and tile tables below describe the finest level.</source>
         <translation>يصف جدولا التكرارات والبلاطات أدناه المستوى الأدق.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="394"/>
         <source>status</source>
         <translation>الحالة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="394"/>
         <source>column</source>
         <translation>العمود</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="394"/>
         <source>row</source>
         <translation>الصف</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="394"/>
         <source>fitting points</source>
         <translation>نقاط المواءمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="394"/>
         <source>iterations</source>
         <translation>التكرارات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="394"/>
         <source>kept</source>
         <translation>المُبقاة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="408"/>
+        <location filename="../algorithms/lsq_filter.py" line="398"/>
         <source>Showing the {k} fullest of {n} tiles.</source>
         <translation>تُعرض البلاطات الـ{k} الأكثر نقاطاً من أصل {n} بلاطة.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="412"/>
+        <location filename="../algorithms/lsq_filter.py" line="402"/>
         <source>stage</source>
         <translation>المرحلة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="412"/>
+        <location filename="../algorithms/lsq_filter.py" line="402"/>
         <source>seconds or points/s</source>
         <translation>ثانية أو نقطة/ث</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="414"/>
+        <location filename="../algorithms/lsq_filter.py" line="404"/>
         <source>Method: tiled least-squares polynomial filter, Damascus Univ. J. Eng. Sci. 29(2), 2013. Improved mode and the low-outlier pre-filter are ours. Accuracy terms (Type I, Type II, total) after Sithole &amp; Vosselman (2004).</source>
         <translation>الطريقة: فلتر متعدد الحدود بالمربعات الصغرى على بلاطات، مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013. النمط المحسَّن والفلترة المسبقة للقيم الشاذة المنخفضة من إضافتنا. مصطلحات الدقة (النوع الأول، النوع الثاني، الكلي) وفق Sithole &amp; Vosselman (2004).</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="419"/>
+        <location filename="../algorithms/lsq_filter.py" line="409"/>
         <source>Ground filter (least-squares polynomial)</source>
         <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
     </message>
@@ -676,37 +676,37 @@
 <context>
     <name>GeomaticsAlgorithm</name>
     <message>
-        <location filename="../algorithms/base.py" line="35"/>
+        <location filename="../algorithms/base.py" line="36"/>
         <source>LiDAR ground filtering</source>
         <translation>فلترة نقاط الأرض في بيانات الليدار</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="37"/>
+        <location filename="../algorithms/base.py" line="38"/>
         <source>Terrain models</source>
         <translation>نماذج التضاريس</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="38"/>
+        <location filename="../algorithms/base.py" line="39"/>
         <source>Image rectification</source>
         <translation>التصحيح الهندسي للصور</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="40"/>
+        <location filename="../algorithms/base.py" line="41"/>
         <source>Photogrammetry</source>
         <translation>المساحة التصويرية</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="41"/>
+        <location filename="../algorithms/base.py" line="42"/>
         <source>Accuracy assessment</source>
         <translation>تقييم الدقة</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="145"/>
+        <location filename="../algorithms/base.py" line="161"/>
         <source>Cancelled by the user; no output was written.</source>
         <translation>ألغى المستخدم العملية؛ لم تُكتب أي مخرجات.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="150"/>
+        <location filename="../algorithms/base.py" line="166"/>
         <source>Out of memory. Use a coarser cell size, a smaller extent or fewer points; no output was written.</source>
         <translation>نفدت الذاكرة. استخدم حجم خلية أكبر أو نطاقاً أصغر أو نقاطاً أقل؛ لم تُكتب أي مخرجات.</translation>
     </message>
@@ -721,7 +721,7 @@
         <translation>&lt;p&gt;&lt;b&gt;المعايير&lt;/b&gt; (مجلة جامعة تشرين للعلوم الهندسية 38(2)، 2016): RMS_i لكل نقطة ومساهمتها C_i = RMS_i/RMS_T؛ وRMS_x وRMS_y وRMS_T بالقسمة على n (وكذلك، مع الإشارة إلى ذلك، على n − N كما في أداة Georeferencer في QGIS)؛ ومقياس الخريطة S = 20000·GR ونطاق السماحية 4·GR … 6·GR لقيمة RMS_T؛ والحد لكل نقطة 0.25 mm·S = 5·GR؛ وأن تقع ≥ 68 % من النقاط (90 % في الصيغة الصارمة) ضمن RMS_T؛ وانعدام الانحياز الاتجاهي (توازن الإشارات بين الأرباع، والبواقي الشعاعية للنقاط الداخلية مقابل نقاط الحواف، ومخطط متجهات البواقي). وأيضاً: نقاط تحقق مستقلة (الدور 'check'، لا تدخل في المواءمة أبداً)، وبواقي الاستبعاد الفردي، والدرجات 1–3 جنباً إلى جنب مع درجة موصى بها (لا تكون أبداً درجةً فائضها n − N أقل من max(2, ⌈N/2⌉)) ونقاط مقترحة للحذف. البواقي = القيمة المتنبأ بها − القيمة المعطاة، بوحدات الخريطة وبالبكسل.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="85"/>
+        <location filename="../algorithms/slope_filter.py" line="76"/>
         <source>&lt;li&gt;&lt;b&gt;Returns filtered&lt;/b&gt; (RETURNS, default 0 = all): 0 all returns are classified and serve as neighbours (the forest study); 1 last returns only: only last (or single) returns are classified and only they may reject others; first and intermediate returns of multi-return pulses get class 1. Files without return numbers (e.g. the ISPRS samples) count every point as a last return.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours (multipath) get class 7 and take no part in the filter — one stray low point would reject every ground point within r. Advanced: NOISE_RADIUS (m, default 5) and NOISE_THRESHOLD (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default 0): 0 exact Vosselman rule; 1 terrain-adaptive (&lt;i&gt;this toolbox's extension&lt;/i&gt;): the rule is applied to heights above a smooth low terrain trend (minimum grid of TREND_CELL m, opening and mean filter of TREND_WINDOW m, defaults 10 and 60), so natural slopes steeper than θ are not rejected (ISPRS samp11, steep: total error 21.0 % → 16.4 % at the defaults). Because the terrain slope is removed first, lower θ (about 30–35°) usually works best in this mode.&lt;/li&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;الارتدادات المفلترة&lt;/b&gt; (RETURNS، الافتراضي 0 = الكل): 0 تُصنَّف جميع الارتدادات وتُستخدم كلها نقاطاً مجاورة (دراسة الغابات)؛ 1 الارتدادات الأخيرة فقط: لا تُصنَّف إلا الارتدادات الأخيرة (أو المنفردة) ولا يستبعد النقاطَ الأخرى إلا هي؛ وتأخذ الارتدادات الأولى والوسيطة للنبضات متعددة الارتدادات الصنف 1. في الملفات الخالية من أرقام الارتدادات (مثل عيّنات ISPRS) تُعَدّ كل نقطة ارتداداً أخيراً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة القيم الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي: نعم): النقاط الواقعة أسفل جيرانها بكثير (بسبب تعدد المسارات) تأخذ الصنف 7 ولا تشارك في الفلترة — فنقطة منخفضة شاردة واحدة كانت ستستبعد كل نقاط الأرض ضمن r. خيارات متقدمة: NOISE_RADIUS (م، الافتراضي 5) وNOISE_THRESHOLD (م، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;النمط&lt;/b&gt; (MODE، الافتراضي 0): 0 قاعدة Vosselman كما هي؛ 1 متكيِّف مع التضاريس (&lt;i&gt;إضافة من صندوق الأدوات هذا&lt;/i&gt;): تُطبَّق القاعدة على الارتفاعات فوق اتجاه عام منخفض وأملس للتضاريس (شبكة القيم الدنيا بخلية TREND_CELL م، ثم فتح مورفولوجي (opening) وفلتر متوسط بنافذة TREND_WINDOW م، والقيمتان الافتراضيتان 10 و60)، فلا تُستبعد المنحدرات الطبيعية الأشد انحداراً من θ (عيّنة ISPRS samp11 شديدة الانحدار: الخطأ الكلي 21.0 % → 16.4 % بالقيم الافتراضية). ولأن ميل التضاريس يُزال أولاً، فإن قيم θ الأدنى (نحو 30–35°) تعطي عادةً أفضل النتائج في هذا النمط.&lt;/li&gt;</translation>
     </message>
@@ -729,6 +729,21 @@
         <location filename="../algorithms/terrain.py" line="36"/>
         <source>&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): a .las or .laz file (LAS 1.0–1.4), e.g. the output of a ground filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes used&lt;/b&gt; (CLASSES, default &lt;code&gt;2&lt;/code&gt; = ground): comma-separated LAS classes interpolated; empty = every point. No point of these classes → error that lists the classes present.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 1.0, &amp;gt; 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extent&lt;/b&gt; (EXTENT, optional): default = the selected points' extent. The grid is snapped outward to multiples of the cell size so that tiles line up.&lt;/li&gt;&lt;li&gt;&lt;b&gt;CRS&lt;/b&gt; (CRS, optional): overrides the CRS of the LAS file. If the file has no CRS and none is given the algorithm stops with an error (a DTM without a CRS is a common source of misplaced data).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum distance to data&lt;/b&gt; (MAX_DISTANCE, m, default 0 = automatic: five mean point spacings, at least two cells): cells whose nearest point is farther are nodata, so no terrain is invented under water, removed buildings or missing strips.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill data gaps&lt;/b&gt; (FILL_GAPS, default no): interpolate every cell however far from the data (ignores MAX_DISTANCE).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output&lt;/b&gt; (OUTPUT): GeoTIFF (float32, DEFLATE, nodata −9999) in the input CRS; values belong to cell centres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML report.&lt;/li&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz (LAS 1.0–1.4)، مثل مخرج أحد فلاتر نقاط الأرض.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الأصناف المستخدمة&lt;/b&gt; (CLASSES، الافتراضي &lt;code&gt;2&lt;/code&gt; = الأرض): أصناف LAS التي تُستوفى، مفصولة بفواصل؛ فارغ = كل النقاط. عدم وجود أي نقطة من هذه الأصناف → خطأ يسرد الأصناف الموجودة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 1.0، &amp;gt; 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;النطاق&lt;/b&gt; (EXTENT، اختياري): الافتراضي = نطاق النقاط المختارة. تُوسَّع الشبكة نحو الخارج لتقع حدودها على مضاعفات حجم الخلية كي تتراصف البلاطات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام الإحداثيات&lt;/b&gt; (CRS، اختياري): يحل محل نظام إحداثيات ملف LAS. إذا لم يكن للملف نظام إحداثيات ولم يُحدَّد أي نظام، تتوقف الخوارزمية بخطأ (فنموذج الارتفاعات بلا نظام إحداثيات مصدر شائع لبيانات في غير موضعها).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أقصى مسافة إلى البيانات&lt;/b&gt; (MAX_DISTANCE، م، الافتراضي 0 = تلقائي: خمسة أضعاف متوسط التباعد بين النقاط، وخليتان على الأقل): الخلايا التي تبعد عنها أقرب نقطة أكثر من ذلك تُجعل nodata، فلا تُختلق تضاريس تحت المياه أو المباني المُزالة أو الشرائط المفقودة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ملء فجوات البيانات&lt;/b&gt; (FILL_GAPS، الافتراضي: لا): استيفاء كل خلية مهما بعدت عن البيانات (يتجاهل MAX_DISTANCE).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المخرج&lt;/b&gt; (OUTPUT): GeoTIFF (float32، DEFLATE، nodata −9999) بنظام إحداثيات الإدخال؛ وتعود القيم إلى مراكز الخلايا.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): تقرير HTML.&lt;/li&gt;</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="117"/>
+        <source>Remove low outliers first (class 7)</source>
+        <translation>إزالة القيم الشاذة المنخفضة أولاً (الصنف 7)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="119"/>
+        <source>Low-outlier search cell (m)</source>
+        <translation>خلية البحث عن القيم الشاذة المنخفضة (م)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="121"/>
+        <source>Low-outlier depth below neighbours (m)</source>
+        <translation>عمق القيمة الشاذة المنخفضة تحت الجيران (م)</translation>
     </message>
 </context>
 <context>
@@ -1317,217 +1332,202 @@
 <context>
     <name>LsqGroundFilterAlgorithm</name>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="65"/>
+        <location filename="../algorithms/lsq_filter.py" line="61"/>
         <source>Ground filter (least-squares polynomial)</source>
         <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="68"/>
+        <location filename="../algorithms/lsq_filter.py" line="64"/>
         <source>lidar,ground,filter,bare earth,dtm,classification,least squares,polynomial,tiles,las,laz,isprs</source>
         <translation>ليدار,أرض,فلتر,الأرض العارية,dtm,تصنيف,المربعات الصغرى,متعدد الحدود,بلاطات,las,laz,isprs</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="130"/>
+        <location filename="../algorithms/lsq_filter.py" line="126"/>
         <source>Point cloud (LAS/LAZ)</source>
         <translation>سحابة النقاط (LAS/LAZ)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="133"/>
+        <location filename="../algorithms/lsq_filter.py" line="129"/>
         <source>Polynomial order (1 or 2)</source>
         <translation>درجة متعدد الحدود (1 أو 2)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="135"/>
+        <location filename="../algorithms/lsq_filter.py" line="131"/>
         <source>Tile size (m)</source>
         <translation>حجم البلاطة (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="136"/>
+        <location filename="../algorithms/lsq_filter.py" line="132"/>
         <source>Threshold T (m)</source>
         <translation>العتبة T (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="137"/>
+        <location filename="../algorithms/lsq_filter.py" line="133"/>
         <source>Mode</source>
         <translation>النمط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="137"/>
+        <location filename="../algorithms/lsq_filter.py" line="133"/>
         <source>Faithful (the paper)</source>
         <translation>مطابق (طريقة البحث)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="137"/>
+        <location filename="../algorithms/lsq_filter.py" line="133"/>
         <source>Improved (ours, beyond the paper)</source>
         <translation>محسَّن (من إضافتنا، يتجاوز البحث)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="141"/>
-        <source>Remove low outliers first (class 7)</source>
-        <translation>إزالة القيم الشاذة المنخفضة أولاً (الصنف 7)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="143"/>
-        <source>Low-outlier search cell (m)</source>
-        <translation>خلية البحث عن القيم الشاذة المنخفضة (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="145"/>
-        <source>Low-outlier depth below neighbours (m)</source>
-        <translation>عمق القيمة الشاذة المنخفضة تحت الجيران (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="148"/>
+        <location filename="../algorithms/lsq_filter.py" line="138"/>
         <source>Maximum iterations per tile</source>
         <translation>الحد الأقصى للتكرارات في كل بلاطة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="151"/>
+        <location filename="../algorithms/lsq_filter.py" line="141"/>
         <source>Stop tolerance on min/max/mean/std (m)</source>
         <translation>سماحية التوقف على الأدنى/الأعلى/المتوسط/الانحراف المعياري (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="153"/>
+        <location filename="../algorithms/lsq_filter.py" line="143"/>
         <source>Random fitting subset per tile (points, 0 = all)</source>
         <translation>مجموعة جزئية عشوائية للمواءمة في كل بلاطة (نقاط، 0 = الكل)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="156"/>
+        <location filename="../algorithms/lsq_filter.py" line="146"/>
         <source>Random seed of the subset</source>
         <translation>البذرة العشوائية للمجموعة الجزئية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="158"/>
+        <location filename="../algorithms/lsq_filter.py" line="148"/>
         <source>Minimum points per tile (0 = 3 × coefficients)</source>
         <translation>الحد الأدنى للنقاط في البلاطة (0 = 3 × عدد معاملات متعدد الحدود)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="161"/>
+        <location filename="../algorithms/lsq_filter.py" line="151"/>
         <source>Under-populated tiles</source>
         <translation>البلاطات قليلة النقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="161"/>
+        <location filename="../algorithms/lsq_filter.py" line="151"/>
         <source>Borrow the nearest fitted tile&apos;s surface</source>
         <translation>استعارة سطح أقرب بلاطة مُوائَمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="161"/>
+        <location filename="../algorithms/lsq_filter.py" line="151"/>
         <source>Leave their points unclassified (class 0)</source>
         <translation>ترك نقاطها دون تصنيف (الصنف 0)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="166"/>
+        <location filename="../algorithms/lsq_filter.py" line="156"/>
         <source>Rejection</source>
         <translation>الاستبعاد</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="166"/>
+        <location filename="../algorithms/lsq_filter.py" line="156"/>
         <source>Re-weighted each iteration (a point may return)</source>
         <translation>إعادة الترجيح في كل تكرار (قد تعود النقطة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="166"/>
+        <location filename="../algorithms/lsq_filter.py" line="156"/>
         <source>Cumulative (a rejected point stays out)</source>
         <translation>تراكمي (النقطة المستبعدة تبقى مستبعدة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="171"/>
+        <location filename="../algorithms/lsq_filter.py" line="161"/>
         <source>Classified point cloud</source>
         <translation>سحابة النقاط المصنَّفة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
+        <location filename="../algorithms/lsq_filter.py" line="163"/>
         <source>Ground points only</source>
         <translation>نقاط الأرض فقط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="176"/>
+        <location filename="../algorithms/lsq_filter.py" line="166"/>
         <source>Report</source>
         <translation>التقرير</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="176"/>
+        <location filename="../algorithms/lsq_filter.py" line="166"/>
         <source>HTML files (*.html)</source>
         <translation>ملفات HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="172"/>
         <source>Ground points</source>
         <translation>نقاط الأرض</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="172"/>
         <source>Other (object) points</source>
         <translation>النقاط الأخرى (الأجسام)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="172"/>
         <source>Low-noise points</source>
         <translation>نقاط الضوضاء المنخفضة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="172"/>
         <source>Unclassified points</source>
         <translation>النقاط غير المصنَّفة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="172"/>
         <source>Tiles</source>
         <translation>البلاطات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="172"/>
         <source>Points per second</source>
         <translation>نقطة في الثانية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="222"/>
+        <location filename="../algorithms/lsq_filter.py" line="212"/>
         <source>Choose an output file for the classified cloud (OUTPUT, .laz or .las).</source>
         <translation>اختر ملف إخراج للسحابة المصنَّفة (OUTPUT، بالامتداد .laz أو .las).</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="226"/>
+        <location filename="../algorithms/lsq_filter.py" line="216"/>
         <source>Output point clouds must end in .las or .laz: {p}</source>
         <translation>يجب أن تنتهي أسماء ملفات سحب النقاط الناتجة بالامتداد .las أو .laz: {p}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="233"/>
+        <location filename="../algorithms/lsq_filter.py" line="223"/>
         <source>Reading {p}</source>
         <translation>جارٍ قراءة {p}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="238"/>
+        <location filename="../algorithms/lsq_filter.py" line="228"/>
         <source>{n} points; filtering ({mode} mode)</source>
         <translation>{n} نقطة؛ جارٍ الفلترة (النمط {mode})</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="245"/>
+        <location filename="../algorithms/lsq_filter.py" line="235"/>
         <source>{step}: {n} points kept, ZMin {a:.2f}, ZMax {b:.2f}, ZMean {m:.2f}, σ {s:.2f}; tiles iterating: {t}</source>
         <translation>{step}: أُبقيت {n} نقطة، ZMin {a:.2f}، ZMax {b:.2f}، ZMean {m:.2f}، σ {s:.2f}؛ بلاطات قيد التكرار: {t}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="253"/>
+        <location filename="../algorithms/lsq_filter.py" line="243"/>
         <source>Ground {g}, other {o}, low noise {z}, unclassified {u}; {t} tiles; {s:.1f} s</source>
         <translation>أرض {g}، أخرى {o}، ضوضاء منخفضة {z}، غير مصنَّفة {u}؛ {t} بلاطة؛ {s:.1f} ث</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="259"/>
+        <location filename="../algorithms/lsq_filter.py" line="249"/>
         <source>No point was classified as ground, so the ground-only output would be empty; check TILE_SIZE and THRESHOLD.</source>
         <translation>لم تُصنَّف أي نقطة كأرض، لذا سيكون مخرج نقاط الأرض فارغاً؛ راجع TILE_SIZE وTHRESHOLD.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="72"/>
+        <location filename="../algorithms/lsq_filter.py" line="68"/>
         <source>&lt;p&gt;Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). In every tile the surface is fitted, points more than THRESHOLD above it are dropped, and the fit is repeated until the minimum, maximum, mean and standard deviation of the kept heights stop changing (TOLERANCE) or MAX_ITERATIONS; then every point with z ≤ ẑ + THRESHOLD is ground. Any classification already in the file is ignored and replaced.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output classes&lt;/b&gt; (ASPRS): 2 ground, 1 other (buildings, vegetation), 7 low noise (pre-filter), 0 never classified (only with SPARSE_TILES = leave unclassified). Every other attribute of every point, the point format, scales, offsets, VLRs and CRS are copied unchanged.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file, projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Order&lt;/b&gt; (ORDER, default 2): 1 = plane z = b0 + b1·x + b2·y; 2 = quadratic z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (better on every sample of the paper).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Tile size&lt;/b&gt; (TILE_SIZE, m, default 50): larger than the largest building, so that every tile holds ground (paper: 100 m for large buildings, 50 m for small ones). Tiles are square, anchored at the minimum x, y.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Threshold&lt;/b&gt; (THRESHOLD, m, default 0.5): 0.5–1.0 m, larger on steeper terrain.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default Faithful): Faithful = the paper. Improved = ours, beyond the paper: coarse-to-fine tiles (2, 1, ½, ¼ × TILE_SIZE) fitted on overlapping windows, each level started from the previous level's ground, and a threshold that grows with the surface slope (by 2.5 m per unit gradient, at most 1 m). On the ISPRS samples it lowers the mean total error from 8.9 % (paper) to about 4.9 % with one parameter set; it costs about 15 times the time and twice the memory of the faithful mode (about 2 M points/s and 100 bytes per point in faithful mode).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours become class 7 and take no part in the fit (NOISE_RADIUS, m, default 5: neighbourhood cell; NOISE_THRESHOLD, m, default 1: depth below the neighbours).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum iterations&lt;/b&gt; (MAX_ITERATIONS, default 5, the paper's tables) and &lt;b&gt;stop tolerance&lt;/b&gt; (TOLERANCE, m, default 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Random fitting subset per tile&lt;/b&gt; (SUBSET_SIZE, points, default 0 = all; the paper used 5000) and its &lt;b&gt;seed&lt;/b&gt; (SEED). All points are classified.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points per tile&lt;/b&gt; (MIN_POINTS, default 0 = 3 × the number of coefficients) and &lt;b&gt;under-populated tiles&lt;/b&gt; (SPARSE_TILES): borrow the nearest fitted tile's surface (default) or leave their points unclassified (class 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rejection&lt;/b&gt; (REJECTION): re-weighted (default; a point dropped earlier may return when the surface moves) or cumulative (dropped for good).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud (OUTPUT, .laz or .las), optional ground-only cloud (GROUND_OUTPUT), optional HTML report (OUTPUT_HTML) with the parameters, class counts, the per-iteration statistics of the paper's Tables 1–2, per-tile statistics, time and points per second; optional CSV of every tile's iterations and coefficients (TILE_STATS); numbers N_GROUND, N_OTHER, N_NOISE, N_UNCLASSIFIED, N_TILES, POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Measure the result against reference labels with &lt;i&gt;Ground filter accuracy&lt;/i&gt;. Nothing is written when the run fails or is cancelled.&lt;/p&gt;</source>
         <translation>&lt;p&gt;تفصل نقاط سطح الأرض العارية عن المباني والغطاء النباتي في سحابة ليدار جوية بمواءمة سطوح متعددة حدود بالمربعات الصغرى في كل بلاطة مربعة (مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013). في كل بلاطة يُوائَم السطح، وتُستبعد النقاط التي تعلوه بأكثر من THRESHOLD، وتُكرَّر المواءمة حتى تتوقف القيمة الدنيا والعليا والمتوسط والانحراف المعياري للارتفاعات المُبقاة عن التغيُّر (TOLERANCE) أو يُبلغ MAX_ITERATIONS؛ ثم تُعَدّ أرضاً كل نقطة تحقق z ≤ ẑ + THRESHOLD. يُتجاهَل أي تصنيف موجود في الملف ويُستبدل.&lt;/p&gt;&lt;p&gt;&lt;b&gt;أصناف المخرج&lt;/b&gt; (ASPRS): 2 أرض، 1 أخرى (مبانٍ، غطاء نباتي)، 7 ضوضاء منخفضة (الفلترة المسبقة)، 0 لم تُصنَّف قط (فقط مع SPARSE_TILES = ترك النقاط دون تصنيف). تُنسخ دون تغيير جميع الخصائص الأخرى لكل نقطة، وصيغة النقاط، ومعاملات المقياس والإزاحة، وسجلات VLR، ونظام الإحداثيات.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz بنظام إحداثيات مُسقَط بالأمتار.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الدرجة&lt;/b&gt; (ORDER، الافتراضي 2): 1 = مستوٍ z = b0 + b1·x + b2·y؛ 2 = سطح تربيعي z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (أفضل في جميع عيّنات البحث).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم البلاطة&lt;/b&gt; (TILE_SIZE، م، الافتراضي 50): أكبر من أكبر مبنى، كي تحوي كل بلاطة نقاطاً من الأرض (البحث: 100 م للمباني الكبيرة، 50 م للصغيرة). البلاطات مربعة، ومبدؤها عند أصغر x وy.&lt;/li&gt;&lt;li&gt;&lt;b&gt;العتبة&lt;/b&gt; (THRESHOLD، م، الافتراضي 0.5): 0.5–1.0 م، وأكبر في التضاريس الأشد انحداراً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;النمط&lt;/b&gt; (MODE، الافتراضي: مطابق): مطابق = طريقة البحث. محسَّن = من إضافتنا، يتجاوز البحث: بلاطات من الخشن إلى الدقيق (2، 1، ½، ¼ × TILE_SIZE) تُوائَم على نوافذ متداخلة، ويبدأ كل مستوى من نقاط الأرض في المستوى السابق، مع عتبة تزداد بازدياد ميل السطح (بمقدار 2.5 م لكل وحدة تدرّج، وبحد أقصى 1 م). على عيّنات ISPRS يخفض متوسط الخطأ الكلي من 8.9 % (البحث) إلى نحو 4.9 % بمجموعة معاملات واحدة؛ ويستغرق نحو 15 ضعف زمن النمط المطابق وضعف ذاكرته (نحو 2 مليون نقطة/ث و100 بايت لكل نقطة في النمط المطابق).&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة القيم الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي: نعم): النقاط الواقعة أسفل جيرانها بكثير تصبح من الصنف 7 ولا تشارك في المواءمة (NOISE_RADIUS، م، الافتراضي 5: خلية الجوار؛ NOISE_THRESHOLD، م، الافتراضي 1: العمق تحت الجيران).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأقصى للتكرارات&lt;/b&gt; (MAX_ITERATIONS، الافتراضي 5، كما في جداول البحث) و&lt;b&gt;سماحية التوقف&lt;/b&gt; (TOLERANCE، م، الافتراضي 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مجموعة جزئية عشوائية للمواءمة في كل بلاطة&lt;/b&gt; (SUBSET_SIZE، نقاط، الافتراضي 0 = الكل؛ استخدم البحث 5000) و&lt;b&gt;بذرتها العشوائية&lt;/b&gt; (SEED). تُصنَّف جميع النقاط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأدنى للنقاط في البلاطة&lt;/b&gt; (MIN_POINTS، الافتراضي 0 = 3 × عدد معاملات متعدد الحدود) و&lt;b&gt;البلاطات قليلة النقاط&lt;/b&gt; (SPARSE_TILES): استعارة سطح أقرب بلاطة مُوائَمة (الافتراضي) أو ترك نقاطها دون تصنيف (الصنف 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الاستبعاد&lt;/b&gt; (REJECTION): إعادة الترجيح (الافتراضي؛ قد تعود نقطة استُبعدت سابقاً عندما يتحرك السطح) أو تراكمي (تُستبعد النقطة نهائياً).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المخرجات&lt;/b&gt;: السحابة المصنَّفة (OUTPUT، بالامتداد .laz أو .las)، وسحابة نقاط الأرض فقط اختيارياً (GROUND_OUTPUT)، وتقرير HTML اختياري (OUTPUT_HTML) فيه المعاملات وأعداد النقاط في كل صنف وإحصاءات كل تكرار كما في الجدولين 1–2 من البحث وإحصاءات كل بلاطة والزمن وعدد النقاط في الثانية؛ وملف CSV اختياري بتكرارات كل بلاطة ومعاملاتها (TILE_STATS)؛ والأرقام N_GROUND وN_OTHER وN_NOISE وN_UNCLASSIFIED وN_TILES وPOINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;قِس النتيجة مقارنةً بالتصنيفات المرجعية باستخدام &lt;i&gt;دقة فلتر نقاط الأرض&lt;/i&gt;. لا يُكتب أي شيء إذا فشل التشغيل أو أُلغي.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="179"/>
+        <location filename="../algorithms/lsq_filter.py" line="169"/>
         <source>Per-tile iteration statistics (CSV)</source>
         <translation>إحصاءات التكرارات لكل بلاطة (CSV)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="179"/>
+        <location filename="../algorithms/lsq_filter.py" line="169"/>
         <source>CSV files (*.csv)</source>
         <translation>ملفات CSV (*.csv)</translation>
     </message>
@@ -1598,97 +1598,97 @@
 <context>
     <name>SlopeGroundFilterAlgorithm</name>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="120"/>
+        <location filename="../algorithms/slope_filter.py" line="111"/>
         <source>Ground filter (slope-based)</source>
         <translation>فلتر نقاط الأرض (على أساس الميل)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="123"/>
+        <location filename="../algorithms/slope_filter.py" line="114"/>
         <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,vosselman,slope,point cloud</source>
         <translation>ليدار,las,laz,أرض,فلتر,تصنيف,dtm,الأرض العارية,vosselman,الميل,سحابة النقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="127"/>
+        <location filename="../algorithms/slope_filter.py" line="118"/>
         <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when some neighbour at horizontal distance 0 &amp;lt; d ≤ r lies more than d·tan θ + h below it. Single pass, neighbours from the whole cloud, exact (labels identical to a brute-force check of every pair) and fast (about a million points per second on one core at r = 3 m). Low outliers get class 7; every other attribute is copied unchanged. The input classification is ignored.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study's setting RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 allows a rise of 2.90 m at 3 m. Tune r and θ to your data with &lt;i&gt;Slope filter threshold sweep&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radius r&lt;/b&gt; (RADIUS, m, default 10, &amp;gt; 0): neighbourhood radius. An object is removed only within r of its edge, so r must exceed half the width of the largest building to remove; larger r costs more time.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope threshold θ&lt;/b&gt; (SLOPE, degrees, default 40, strictly between 0 and 90): the steepest terrain kept. Allowed rise at 3 m: 2.52 m (40°), 2.90 m (44°), 3.33 m (48°), 3.84 m (52°), 4.45 m (56°), 5.20 m (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Height tolerance h&lt;/b&gt; (HEIGHT_TOLERANCE, m, default 0.2, ≥ 0): extra rise allowed for every pair, absorbs ranging noise between close points; 0 is the rule as published.&lt;/li&gt;</source>
         <translation>&lt;p&gt;تصنِّف سحابة نقاط LAS/LAZ إلى أرض (الصنف 2) وغير أرض (الصنف 1) بفلتر الميل الذي اقترحه Vosselman (2000): تُعَدّ النقطة غير أرضية إذا وُجدت نقطة مجاورة على مسافة أفقية 0 &lt; d ≤ r تقع أسفلها بأكثر من d·tan θ + h. مرور واحد، والجيران من السحابة كلها، ودقيق (التصنيفات مطابقة لفحص شامل لكل الأزواج) وسريع (نحو مليون نقطة في الثانية على نواة معالج واحدة عند r = 3 م). تأخذ القيم الشاذة المنخفضة الصنف 7؛ وتُنسخ سائر الخصائص دون تغيير. يُتجاهَل تصنيف الإدخال.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: إعداد دراسة الغابات RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 يسمح بفرق ارتفاع 2.90 م على مسافة 3 م. اضبط r وθ لبياناتك باستخدام &lt;i&gt;مسح عتبات فلتر الميل&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz بنظام إحداثيات مُسقَط (بالأمتار).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نصف القطر r&lt;/b&gt; (RADIUS، م، الافتراضي 10، &gt; 0): نصف قطر الجوار. لا يُزال الجسم إلا ضمن مسافة r من حافته، لذا يجب أن يتجاوز r نصف عرض أكبر مبنى يُراد إزالته؛ وكلما كبر r زاد الزمن.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عتبة الميل θ&lt;/b&gt; (SLOPE، درجات، الافتراضي 40، بين 0 و90 حصراً): أشد انحدار للتضاريس يُحتفظ به. فرق الارتفاع المسموح على مسافة 3 م: 2.52 م (40°)، 2.90 م (44°)، 3.33 م (48°)، 3.84 م (52°)، 4.45 م (56°)، 5.20 م (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;سماحية الارتفاع h&lt;/b&gt; (HEIGHT_TOLERANCE، م، الافتراضي 0.2، ≥ 0): فرق ارتفاع إضافي مسموح لكل زوج، يمتص ضوضاء قياس المسافة بين النقاط المتقاربة؛ والقيمة 0 هي القاعدة كما نُشرت.&lt;/li&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="166"/>
+        <location filename="../algorithms/slope_filter.py" line="157"/>
         <source>Radius r (m)</source>
         <translation>نصف القطر r (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="168"/>
+        <location filename="../algorithms/slope_filter.py" line="159"/>
         <source>Slope threshold θ (degrees)</source>
         <translation>عتبة الميل θ (درجة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="170"/>
+        <location filename="../algorithms/slope_filter.py" line="161"/>
         <source>Height tolerance h (m)</source>
         <translation>سماحية الارتفاع h (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="174"/>
+        <location filename="../algorithms/slope_filter.py" line="165"/>
         <source>Keep existing noise classes (7, 18)</source>
         <translation>الإبقاء على أصناف الضوضاء الموجودة (7, 18)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="177"/>
+        <location filename="../algorithms/slope_filter.py" line="168"/>
         <source>Classified point cloud</source>
         <translation>سحابة النقاط المصنَّفة</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="179"/>
+        <location filename="../algorithms/slope_filter.py" line="170"/>
         <source>Ground points</source>
         <translation>نقاط الأرض</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="182"/>
+        <location filename="../algorithms/slope_filter.py" line="173"/>
         <source>Report</source>
         <translation>التقرير</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="182"/>
+        <location filename="../algorithms/slope_filter.py" line="173"/>
         <source>HTML files (*.html)</source>
         <translation>ملفات HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="185"/>
+        <location filename="../algorithms/slope_filter.py" line="176"/>
         <source>Points read</source>
         <translation>النقاط المقروءة</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="185"/>
+        <location filename="../algorithms/slope_filter.py" line="176"/>
         <source>Ground points (class 2)</source>
         <translation>نقاط الأرض (الصنف 2)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="185"/>
+        <location filename="../algorithms/slope_filter.py" line="176"/>
         <source>Non-ground points (class 1)</source>
         <translation>النقاط غير الأرضية (الصنف 1)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="185"/>
+        <location filename="../algorithms/slope_filter.py" line="176"/>
         <source>Low outliers (class 7)</source>
         <translation>القيم الشاذة المنخفضة (الصنف 7)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="185"/>
+        <location filename="../algorithms/slope_filter.py" line="176"/>
         <source>Filter speed (points/s)</source>
         <translation>سرعة الفلترة (نقطة/ث)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="201"/>
+        <location filename="../algorithms/slope_filter.py" line="192"/>
         <source>Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, mode {}</source>
         <translation>فلتر الميل: r = {} م، θ = {}°، h = {} م، الارتدادات: {}، النمط: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="209"/>
+        <location filename="../algorithms/slope_filter.py" line="200"/>
         <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
         <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الفلترة {:.1f} ث</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="127"/>
+        <location filename="../algorithms/slope_filter.py" line="118"/>
         <source>&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, default yes, advanced): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point, classes 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): counts, settings, allowed-rise table, speed.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE, POINTS_PER_SECOND (filter step only).&lt;/p&gt;&lt;p&gt;Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;الإبقاء على أصناف الضوضاء الموجودة&lt;/b&gt; (KEEP_NOISE، الافتراضي: نعم، خيار متقدم): النقاط المصنَّفة مسبقاً 7 أو 18 تحتفظ بصنفها ولا تشارك في الفلترة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المصنَّفة&lt;/b&gt; (OUTPUT، .laz/.las): كل النقاط، بالأصناف 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط الأرض&lt;/b&gt; (GROUND_OUTPUT، اختياري): نقاط الأرض فقط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): الأعداد والإعدادات وجدول فرق الارتفاع المسموح والسرعة.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: N_POINTS وN_GROUND وN_NONGROUND وN_NOISE وPOINTS_PER_SECOND (لخطوة الفلترة وحدها).&lt;/p&gt;&lt;p&gt;المرجع: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</translation>
     </message>
@@ -1696,152 +1696,152 @@
 <context>
     <name>SlopeThresholdSweepAlgorithm</name>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="242"/>
+        <location filename="../algorithms/slope_filter.py" line="233"/>
         <source>Slope filter threshold sweep</source>
         <translation>مسح عتبات فلتر الميل</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="245"/>
+        <location filename="../algorithms/slope_filter.py" line="236"/>
         <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
         <translation>ليدار,أرض,فلتر,vosselman,الميل,العتبة,المعايرة,الدقة,النوع الأول,النوع الثاني,كابا,isprs</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="249"/>
+        <location filename="../algorithms/slope_filter.py" line="240"/>
         <source>&lt;p&gt;Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h and reports, against reference labels, Type I error (ground rejected), Type II error (objects accepted as ground — the forest study's &quot;error&quot; column, which alone always favours low θ), total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004), then picks the best setting. One exact neighbourhood pass per radius and tolerance: every threshold then costs a single comparison per point.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. ISPRS reference samples: INPUT=samp31.laz (its own classification is the reference).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): LAS/LAZ. Its classification is never used to filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference cloud&lt;/b&gt; (REFERENCE, optional): a labelled copy of the same points in the same order; empty = the input's own classification (e.g. the ISPRS samples).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &quot;2&quot;): reference classes counted as ground; all others are objects.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope thresholds&lt;/b&gt; (SLOPES, degrees, default &quot;30,35,40,44,48,52,56,60&quot;): a list or start:stop:step.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radii&lt;/b&gt; (RADII, m, default &quot;10&quot;) and &lt;b&gt;height tolerances&lt;/b&gt; (HEIGHT_TOLERANCES, m, default &quot;0.2&quot;): lists; each value is one pass.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Best by&lt;/b&gt; (METRIC, default 0): 0 lowest total error, 1 highest kappa, 2 lowest Type I, 3 lowest Type II.&lt;/li&gt;</source>
         <translation>&lt;p&gt;تشغِّل فلتر الأرض القائم على الميل لكل توليفة من عتبات الميل θ وأنصاف الأقطار r وسماحيات الارتفاع h، وتحسب مقارنةً بالتصنيفات المرجعية خطأ النوع الأول (رفض نقاط الأرض)، وخطأ النوع الثاني (قبول الأجسام كأرض — وهو عمود &quot;الخطأ&quot; في دراسة الغابات، الذي يرجِّح وحده دائماً قيم θ المنخفضة)، والخطأ الكلي، ومعامل كابا لكوهين (Sithole &amp; Vosselman 2004)، ثم تختار أفضل إعداد. مرور دقيق واحد على الجوار لكل نصف قطر وسماحية: بعدها لا تكلِّف كل عتبة سوى مقارنة واحدة لكل نقطة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: دراسة الغابات: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. عيّنات ISPRS المرجعية: INPUT=samp31.laz (تصنيفها نفسه هو المرجع).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): LAS/LAZ. لا يُستخدم تصنيفها في الفلترة أبداً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المرجعية&lt;/b&gt; (REFERENCE، اختياري): نسخة مصنَّفة من النقاط نفسها وبالترتيب نفسه؛ فارغ = تصنيف سحابة الإدخال نفسها (مثل عيّنات ISPRS).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أصناف الأرض&lt;/b&gt; (GROUND_CLASSES، الافتراضي &quot;2&quot;): الأصناف المرجعية التي تُعَدّ أرضاً؛ وكل ما عداها أجسام.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عتبات الميل&lt;/b&gt; (SLOPES، درجات، الافتراضي &quot;30,35,40,44,48,52,56,60&quot;): قائمة أو start:stop:step (بداية:نهاية:خطوة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أنصاف الأقطار&lt;/b&gt; (RADII، م، الافتراضي &quot;10&quot;) و&lt;b&gt;سماحيات الارتفاع&lt;/b&gt; (HEIGHT_TOLERANCES، م، الافتراضي &quot;0.2&quot;): قوائم؛ كل قيمة تعني مروراً واحداً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;معيار الأفضلية&lt;/b&gt; (METRIC، الافتراضي 0): 0 أدنى خطأ كلي، 1 أعلى كابا، 2 أدنى خطأ من النوع الأول، 3 أدنى خطأ من النوع الثاني.&lt;/li&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="286"/>
+        <location filename="../algorithms/slope_filter.py" line="277"/>
         <source>Reference cloud (empty = the input&apos;s classification)</source>
         <translation>السحابة المرجعية (فارغ = تصنيف سحابة الإدخال نفسها)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="290"/>
+        <location filename="../algorithms/slope_filter.py" line="281"/>
         <source>Reference ground classes</source>
         <translation>أصناف الأرض في المرجع</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="292"/>
+        <location filename="../algorithms/slope_filter.py" line="283"/>
         <source>Slope thresholds θ (degrees; list or start:stop:step)</source>
         <translation>عتبات الميل θ (درجات؛ قائمة أو بداية:نهاية:خطوة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="295"/>
+        <location filename="../algorithms/slope_filter.py" line="286"/>
         <source>Radii r (m; list)</source>
         <translation>أنصاف الأقطار r (م؛ قائمة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="297"/>
+        <location filename="../algorithms/slope_filter.py" line="288"/>
         <source>Height tolerances h (m; list)</source>
         <translation>سماحيات الارتفاع h (م؛ قائمة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
+        <location filename="../algorithms/slope_filter.py" line="291"/>
         <source>Best by</source>
         <translation>معيار الأفضلية</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
+        <location filename="../algorithms/slope_filter.py" line="291"/>
         <source>Lowest total error</source>
         <translation>أدنى خطأ كلي</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
+        <location filename="../algorithms/slope_filter.py" line="291"/>
         <source>Highest kappa</source>
         <translation>أعلى كابا</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
+        <location filename="../algorithms/slope_filter.py" line="291"/>
         <source>Lowest Type I error</source>
         <translation>أدنى خطأ من النوع الأول</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
+        <location filename="../algorithms/slope_filter.py" line="291"/>
         <source>Lowest Type II error</source>
         <translation>أدنى خطأ من النوع الثاني</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="307"/>
+        <location filename="../algorithms/slope_filter.py" line="298"/>
         <source>Sweep table</source>
         <translation>جدول المسح</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="307"/>
+        <location filename="../algorithms/slope_filter.py" line="298"/>
         <source>CSV files (*.csv)</source>
         <translation>ملفات CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="309"/>
+        <location filename="../algorithms/slope_filter.py" line="300"/>
         <source>Report</source>
         <translation>التقرير</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="309"/>
+        <location filename="../algorithms/slope_filter.py" line="300"/>
         <source>HTML files (*.html)</source>
         <translation>ملفات HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="312"/>
+        <location filename="../algorithms/slope_filter.py" line="303"/>
         <source>Classified with the best setting</source>
         <translation>السحابة المصنَّفة بأفضل إعداد</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Best radius (m)</source>
         <translation>أفضل نصف قطر (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Best slope threshold (degrees)</source>
         <translation>أفضل عتبة ميل (درجة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Best height tolerance (m)</source>
         <translation>أفضل سماحية ارتفاع (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Type I error at the best setting (%)</source>
         <translation>خطأ النوع الأول عند أفضل إعداد (%)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Type II error at the best setting (%)</source>
         <translation>خطأ النوع الثاني عند أفضل إعداد (%)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Total error at the best setting (%)</source>
         <translation>الخطأ الكلي عند أفضل إعداد (%)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Kappa at the best setting (%)</source>
         <translation>كابا عند أفضل إعداد (%)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Settings evaluated</source>
         <translation>عدد الإعدادات المقيَّمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="324"/>
+        <location filename="../algorithms/slope_filter.py" line="315"/>
         <source>Best setting</source>
         <translation>أفضل إعداد</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="344"/>
+        <location filename="../algorithms/slope_filter.py" line="335"/>
         <source>Sweeping {} thresholds × {} radii × {} tolerances</source>
         <translation>مسح {} عتبات × {} أنصاف أقطار × {} سماحيات</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="357"/>
+        <location filename="../algorithms/slope_filter.py" line="348"/>
         <source>Best ({}): {} — total {:.2f} %</source>
         <translation>الأفضل ({}): {} — الخطأ الكلي {:.2f} %</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="249"/>
+        <location filename="../algorithms/slope_filter.py" line="240"/>
         <source>&lt;li&gt;&lt;b&gt;Sweep table&lt;/b&gt; (OUTPUT_CSV): one row per setting: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): the table, the best setting and a chart of the errors against θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified with the best setting&lt;/b&gt; (OUTPUT, optional LAS/LAZ).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: BEST_RADIUS, BEST_SLOPE, BEST_HEIGHT_TOLERANCE, BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.&lt;/p&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;جدول المسح&lt;/b&gt; (OUTPUT_CSV): صف لكل إعداد: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML): الجدول وأفضل إعداد ومخطط للأخطاء مقابل θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المصنَّفة بأفضل إعداد&lt;/b&gt; (OUTPUT، LAS/LAZ اختياري).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: BEST_RADIUS وBEST_SLOPE وBEST_HEIGHT_TOLERANCE وBEST_TYPE1 وBEST_TYPE2 وBEST_TOTAL وBEST_KAPPA (بالنسبة المئوية) وN_SETTINGS.&lt;/p&gt;</translation>
     </message>
@@ -2045,72 +2045,57 @@
 <context>
     <name>_SlopeCommon</name>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="39"/>
+        <location filename="../algorithms/slope_filter.py" line="36"/>
         <source>Point cloud (LAS/LAZ)</source>
         <translation>سحابة النقاط (LAS/LAZ)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="44"/>
+        <location filename="../algorithms/slope_filter.py" line="41"/>
         <source>Returns filtered</source>
         <translation>الارتدادات المفلترة</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="44"/>
+        <location filename="../algorithms/slope_filter.py" line="41"/>
         <source>All returns</source>
         <translation>جميع الارتدادات</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="44"/>
+        <location filename="../algorithms/slope_filter.py" line="41"/>
         <source>Last returns only</source>
         <translation>الارتدادات الأخيرة فقط</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="47"/>
-        <source>Remove low outliers first (class 7)</source>
-        <translation>إزالة القيم الشاذة المنخفضة أولاً (الصنف 7)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="49"/>
-        <source>Low-outlier search cell (m)</source>
-        <translation>خلية البحث عن القيم الشاذة المنخفضة (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="51"/>
-        <source>Low-outlier depth below neighbours (m)</source>
-        <translation>عمق القيمة الشاذة المنخفضة تحت الجيران (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="56"/>
         <source>Mode</source>
         <translation>النمط</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="56"/>
+        <location filename="../algorithms/slope_filter.py" line="47"/>
         <source>Exact (Vosselman 2000)</source>
         <translation>دقيق (Vosselman 2000)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="56"/>
+        <location filename="../algorithms/slope_filter.py" line="47"/>
         <source>Terrain-adaptive (toolbox extension)</source>
         <translation>متكيِّف مع التضاريس (إضافة من صندوق الأدوات)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="60"/>
+        <location filename="../algorithms/slope_filter.py" line="51"/>
         <source>Adaptive mode: trend cell (m)</source>
         <translation>النمط المتكيِّف: خلية الاتجاه العام (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="62"/>
+        <location filename="../algorithms/slope_filter.py" line="53"/>
         <source>Adaptive mode: trend window, &gt; largest building (m)</source>
         <translation>النمط المتكيِّف: نافذة الاتجاه العام، &gt; أكبر مبنى (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="71"/>
+        <location filename="../algorithms/slope_filter.py" line="62"/>
         <source>TREND_CELL and TREND_WINDOW must be &gt; 0 metres in adaptive mode (e.g. 10 and 60).</source>
         <translation>يجب أن تكون قيمتا TREND_CELL وTREND_WINDOW &gt; 0 م في النمط المتكيِّف (مثلاً 10 و60).</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="77"/>
+        <location filename="../algorithms/slope_filter.py" line="68"/>
         <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
         <translation>يجب أن تكون قيمتا NOISE_RADIUS وNOISE_THRESHOLD &gt; 0 م (مثلاً 5 و1)، أو أوقف الفلترة المسبقة NOISE.</translation>
     </message>

@@ -109,7 +109,7 @@
         <translation>کلاس پس از فیلتر</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="381"/>
+        <location filename="../algorithms/lsq_filter.py" line="371"/>
         <source>points</source>
         <translation>تعداد نقاط</translation>
     </message>
@@ -124,272 +124,272 @@
         <translation>دقت فیلتر نقاط زمینی</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="324"/>
+        <location filename="../algorithms/lsq_filter.py" line="314"/>
         <source>input</source>
         <translation>پروندهٔ ورودی</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="324"/>
+        <location filename="../algorithms/lsq_filter.py" line="314"/>
         <source>CRS</source>
         <translation>سیستم مختصات (CRS)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="324"/>
+        <location filename="../algorithms/lsq_filter.py" line="314"/>
         <source>none</source>
         <translation>ندارد</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="325"/>
+        <location filename="../algorithms/lsq_filter.py" line="315"/>
         <source>mode</source>
         <translation>حالت</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="325"/>
+        <location filename="../algorithms/lsq_filter.py" line="315"/>
         <source>order</source>
         <translation>درجه</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="326"/>
+        <location filename="../algorithms/lsq_filter.py" line="316"/>
         <source>polynomial</source>
         <translation>چندجمله‌ای</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="391"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>tile size (m)</source>
         <translation>اندازهٔ کاشی (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="330"/>
+        <location filename="../algorithms/lsq_filter.py" line="320"/>
         <source>threshold T (m)</source>
         <translation>آستانهٔ T (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="331"/>
+        <location filename="../algorithms/lsq_filter.py" line="321"/>
         <source>max iterations</source>
         <translation>حداکثر تکرار</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="332"/>
+        <location filename="../algorithms/lsq_filter.py" line="322"/>
         <source>stop tolerance (m)</source>
         <translation>تلورانس توقف (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="333"/>
+        <location filename="../algorithms/lsq_filter.py" line="323"/>
         <source>fitting subset per tile</source>
         <translation>زیرمجموعهٔ برازش در هر کاشی</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="333"/>
+        <location filename="../algorithms/lsq_filter.py" line="323"/>
         <source>all points</source>
         <translation>همهٔ نقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="334"/>
+        <location filename="../algorithms/lsq_filter.py" line="324"/>
         <source>seed</source>
         <translation>بذر تصادفی</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="335"/>
+        <location filename="../algorithms/lsq_filter.py" line="325"/>
         <source>min points per tile</source>
         <translation>حداقل نقاط هر کاشی</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="336"/>
+        <location filename="../algorithms/lsq_filter.py" line="326"/>
         <source>under-populated tiles</source>
         <translation>کاشی‌های کم‌نقطه</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="337"/>
+        <location filename="../algorithms/lsq_filter.py" line="327"/>
         <source>rejection</source>
         <translation>شیوهٔ رد نقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="338"/>
+        <location filename="../algorithms/lsq_filter.py" line="328"/>
         <source>low-outlier pre-filter</source>
         <translation>پیش‌فیلتر نقاط پرت پایین</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="339"/>
+        <location filename="../algorithms/lsq_filter.py" line="329"/>
         <source>pre-filter cell / depth (m)</source>
         <translation>سلول / عمق پیش‌فیلتر (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="341"/>
+        <location filename="../algorithms/lsq_filter.py" line="331"/>
         <source>grid origin (min x, min y)</source>
         <translation>مبدأ شبکه (کمینهٔ x، کمینهٔ y)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="344"/>
+        <location filename="../algorithms/lsq_filter.py" line="334"/>
         <source>levels (× tile size)</source>
         <translation>سطوح (× اندازهٔ کاشی)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="345"/>
+        <location filename="../algorithms/lsq_filter.py" line="335"/>
         <source>window overlap</source>
         <translation>همپوشانی پنجره‌ها</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="346"/>
+        <location filename="../algorithms/lsq_filter.py" line="336"/>
         <source>slope factor (m) / cap (m)</source>
         <translation>ضریب شیب (متر) / سقف (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="348"/>
+        <location filename="../algorithms/lsq_filter.py" line="338"/>
         <source>ground</source>
         <translation>زمینی</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="348"/>
+        <location filename="../algorithms/lsq_filter.py" line="338"/>
         <source>other (object)</source>
         <translation>سایر (عارضه)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="348"/>
+        <location filename="../algorithms/lsq_filter.py" line="338"/>
         <source>low noise</source>
         <translation>نویز پایین</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="349"/>
+        <location filename="../algorithms/lsq_filter.py" line="339"/>
         <source>never classified</source>
         <translation>هرگز طبقه‌بندی‌نشده</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="371"/>
+        <location filename="../algorithms/lsq_filter.py" line="361"/>
         <source>reading</source>
         <translation>خواندن</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="374"/>
+        <location filename="../algorithms/lsq_filter.py" line="364"/>
         <source>filter total</source>
         <translation>کل فیلتر کردن</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="375"/>
+        <location filename="../algorithms/lsq_filter.py" line="365"/>
         <source>run total (read, filter, write)</source>
         <translation>کل اجرا (خواندن، فیلتر، نوشتن)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="376"/>
+        <location filename="../algorithms/lsq_filter.py" line="366"/>
         <source>points per second (run)</source>
         <translation>نقطه در ثانیه (اجرا)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="377"/>
+        <location filename="../algorithms/lsq_filter.py" line="367"/>
         <source>points per second (filter)</source>
         <translation>نقطه در ثانیه (فیلتر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="378"/>
+        <location filename="../algorithms/lsq_filter.py" line="368"/>
         <source>step</source>
         <translation>گام</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="379"/>
+        <location filename="../algorithms/lsq_filter.py" line="369"/>
         <source>Parameters</source>
         <translation>پارامترها</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="381"/>
+        <location filename="../algorithms/lsq_filter.py" line="371"/>
         <source>class</source>
         <translation>کلاس</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="381"/>
+        <location filename="../algorithms/lsq_filter.py" line="371"/>
         <source>meaning</source>
         <translation>معنا</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="384"/>
+        <location filename="../algorithms/lsq_filter.py" line="374"/>
         <source>Kept heights after each iteration, aggregated over the tiles (a tile that has stopped keeps its last values); the layout of the paper's Tables 1–2.</source>
         <translation>ارتفاع‌های نگه‌داشته‌شده پس از هر تکرار، تجمیع‌شده روی کاشی‌ها (کاشی‌ای که متوقف شده آخرین مقادیرش را نگه می‌دارد)؛ با چیدمان جدول‌های 1–2 مقاله.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="388"/>
+        <location filename="../algorithms/lsq_filter.py" line="378"/>
         <source>tiles still iterating</source>
         <translation>کاشی‌های در حال تکرار</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="391"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>level</source>
         <translation>سطح</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="403"/>
+        <location filename="../algorithms/lsq_filter.py" line="393"/>
         <source>tiles</source>
         <translation>تعداد کاشی‌ها</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="391"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>fitted</source>
         <translation>برازش‌شده</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="391"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>ground seeds</source>
         <translation>نقاط زمینی اولیه</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="391"/>
+        <location filename="../algorithms/lsq_filter.py" line="381"/>
         <source>seconds</source>
         <translation>ثانیه</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
+        <location filename="../algorithms/lsq_filter.py" line="386"/>
         <source>The iteration and tile tables below describe the finest level.</source>
         <translation>جدول‌های تکرار و کاشی در زیر، ریزترین سطح را توصیف می‌کنند.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="394"/>
         <source>status</source>
         <translation>وضعیت</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="394"/>
         <source>column</source>
         <translation>ستون</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="394"/>
         <source>row</source>
         <translation>سطر</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="394"/>
         <source>fitting points</source>
         <translation>نقاط برازش</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="394"/>
         <source>iterations</source>
         <translation>تکرارها</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="394"/>
         <source>kept</source>
         <translation>نگه‌داشته</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="408"/>
+        <location filename="../algorithms/lsq_filter.py" line="398"/>
         <source>Showing the {k} fullest of {n} tiles.</source>
         <translation>{k} کاشیِ پرنقطه‌تر از میان {n} کاشی نمایش داده شده است.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="412"/>
+        <location filename="../algorithms/lsq_filter.py" line="402"/>
         <source>stage</source>
         <translation>مرحله</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="412"/>
+        <location filename="../algorithms/lsq_filter.py" line="402"/>
         <source>seconds or points/s</source>
         <translation>ثانیه یا نقطه/ثانیه</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="414"/>
+        <location filename="../algorithms/lsq_filter.py" line="404"/>
         <source>Method: tiled least-squares polynomial filter, Damascus Univ. J. Eng. Sci. 29(2), 2013. Improved mode and the low-outlier pre-filter are ours. Accuracy terms (Type I, Type II, total) after Sithole &amp; Vosselman (2004).</source>
         <translation>روش: فیلتر چندجمله‌ای کمترین مربعات روی کاشی‌ها، مجلهٔ علوم مهندسی دانشگاه دمشق 29(2)، 2013. حالت بهبودیافته و پیش‌فیلتر نقاط پرت پایین افزودهٔ ما هستند. اصطلاحات دقت (نوع اول، نوع دوم، کل) برگرفته از Sithole &amp; Vosselman (2004).</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="419"/>
+        <location filename="../algorithms/lsq_filter.py" line="409"/>
         <source>Ground filter (least-squares polynomial)</source>
         <translation>فیلتر نقاط زمینی (چندجمله‌ای کمترین مربعات)</translation>
     </message>
@@ -676,37 +676,37 @@
 <context>
     <name>GeomaticsAlgorithm</name>
     <message>
-        <location filename="../algorithms/base.py" line="35"/>
+        <location filename="../algorithms/base.py" line="36"/>
         <source>LiDAR ground filtering</source>
         <translation>فیلتر کردن نقاط زمینی لایدار</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="37"/>
+        <location filename="../algorithms/base.py" line="38"/>
         <source>Terrain models</source>
         <translation>مدل‌های رقومی زمین</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="38"/>
+        <location filename="../algorithms/base.py" line="39"/>
         <source>Image rectification</source>
         <translation>تصحیح هندسی تصویر</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="40"/>
+        <location filename="../algorithms/base.py" line="41"/>
         <source>Photogrammetry</source>
         <translation>فتوگرامتری</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="41"/>
+        <location filename="../algorithms/base.py" line="42"/>
         <source>Accuracy assessment</source>
         <translation>ارزیابی دقت</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="145"/>
+        <location filename="../algorithms/base.py" line="161"/>
         <source>Cancelled by the user; no output was written.</source>
         <translation>کاربر عملیات را لغو کرد؛ هیچ خروجی‌ای نوشته نشد.</translation>
     </message>
     <message>
-        <location filename="../algorithms/base.py" line="150"/>
+        <location filename="../algorithms/base.py" line="166"/>
         <source>Out of memory. Use a coarser cell size, a smaller extent or fewer points; no output was written.</source>
         <translation>حافظه کافی نیست. اندازهٔ سلول بزرگ‌تر، محدودهٔ کوچک‌تر یا نقاط کمتری به کار ببرید؛ هیچ خروجی‌ای نوشته نشد.</translation>
     </message>
@@ -721,7 +721,7 @@
         <translation>&lt;p&gt;&lt;b&gt;معیارها&lt;/b&gt; (مجلهٔ علوم مهندسی دانشگاه تشرین 38(2)، 2016): RMS_i هر نقطه و سهم آن C_i = RMS_i/RMS_T؛ RMS_x، RMS_y و RMS_T با مقسوم‌علیه n (و، با برچسب جداگانه، n − N مانند Georeferencer در QGIS)؛ مقیاس نقشه S = 20000·GR و بازهٔ تلورانس 4·GR … 6·GR برای RMS_T؛ حد مجاز هر نقطه 0.25 mm·S = 5·GR؛ ≥ 68 % (در حالت سخت‌گیرانه 90 %) نقاط در محدودهٔ RMS_T؛ نبودِ سوگیری جهت‌دار (توازن علامت‌ها در ربع‌ها، باقی‌مانده‌های شعاعی نقاط درونی در برابر نقاط لبه، نمودار بردارهای باقی‌مانده). همچنین: نقاط چک مستقل (نقش 'check'، هرگز در برازش وارد نمی‌شوند)، باقی‌مانده‌های حذف‌یکی، درجه‌های 1–3 در کنار هم با یک درجهٔ پیشنهادی (هرگز درجه‌ای که افزونگی n − N آن کمتر از max(2, ⌈N/2⌉) باشد) و نقاط پیشنهادی برای حذف. باقی‌مانده‌ها برابر مقدار پیش‌بینی‌شده − مقدار داده‌شده‌اند، به واحد نقشه و پیکسل.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="85"/>
+        <location filename="../algorithms/slope_filter.py" line="76"/>
         <source>&lt;li&gt;&lt;b&gt;Returns filtered&lt;/b&gt; (RETURNS, default 0 = all): 0 all returns are classified and serve as neighbours (the forest study); 1 last returns only: only last (or single) returns are classified and only they may reject others; first and intermediate returns of multi-return pulses get class 1. Files without return numbers (e.g. the ISPRS samples) count every point as a last return.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours (multipath) get class 7 and take no part in the filter — one stray low point would reject every ground point within r. Advanced: NOISE_RADIUS (m, default 5) and NOISE_THRESHOLD (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default 0): 0 exact Vosselman rule; 1 terrain-adaptive (&lt;i&gt;this toolbox's extension&lt;/i&gt;): the rule is applied to heights above a smooth low terrain trend (minimum grid of TREND_CELL m, opening and mean filter of TREND_WINDOW m, defaults 10 and 60), so natural slopes steeper than θ are not rejected (ISPRS samp11, steep: total error 21.0 % → 16.4 % at the defaults). Because the terrain slope is removed first, lower θ (about 30–35°) usually works best in this mode.&lt;/li&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;بازگشت‌های فیلترشونده&lt;/b&gt; (RETURNS، پیش‌فرض 0 = همه): 0 همهٔ بازگشت‌ها طبقه‌بندی می‌شوند و به‌عنوان همسایه به کار می‌روند (مطالعهٔ جنگل)؛ 1 فقط بازگشت‌های آخر: فقط بازگشت‌های آخر (یا تکی) طبقه‌بندی می‌شوند و فقط آن‌ها می‌توانند نقاط دیگر را رد کنند؛ بازگشت‌های اول و میانیِ پالس‌های چندبازگشتی کلاس 1 می‌گیرند. در پرونده‌های بدون شمارهٔ بازگشت (مثلاً نمونه‌های ISPRS) هر نقطه بازگشت آخر به شمار می‌آید.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حذف نقاط پرت پایین در آغاز&lt;/b&gt; (NOISE، پیش‌فرض: بله): نقاطی که بسیار پایین‌تر از همسایه‌های خود هستند (چندمسیری) کلاس 7 می‌گیرند و در فیلتر شرکت نمی‌کنند — یک نقطهٔ پایینِ سرگردان به‌تنهایی همهٔ نقاط زمینی درون r را رد می‌کرد. پیشرفته: NOISE_RADIUS (متر، پیش‌فرض 5) و NOISE_THRESHOLD (متر، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حالت&lt;/b&gt; (MODE، پیش‌فرض 0): 0 قاعدهٔ دقیق Vosselman؛ 1 سازگار با ناهمواری زمین (&lt;i&gt;افزودهٔ این جعبه‌ابزار&lt;/i&gt;): قاعده روی ارتفاع‌ها نسبت به یک روند هموار و پایینِ زمین اعمال می‌شود (شبکهٔ کمینه با سلول TREND_CELL متر، بازشایی (opening) و فیلتر میانگین با پنجرهٔ TREND_WINDOW متر، پیش‌فرض‌ها 10 و 60)، پس شیب‌های طبیعیِ تندتر از θ رد نمی‌شوند (ISPRS samp11، پرشیب: خطای کل 21.0 % → 16.4 % با پیش‌فرض‌ها). چون شیب زمین از پیش حذف می‌شود، در این حالت θ کمتر (حدود 30–35°) معمولاً بهترین نتیجه را می‌دهد.&lt;/li&gt;</translation>
     </message>
@@ -729,6 +729,21 @@
         <location filename="../algorithms/terrain.py" line="36"/>
         <source>&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): a .las or .laz file (LAS 1.0–1.4), e.g. the output of a ground filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes used&lt;/b&gt; (CLASSES, default &lt;code&gt;2&lt;/code&gt; = ground): comma-separated LAS classes interpolated; empty = every point. No point of these classes → error that lists the classes present.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 1.0, &amp;gt; 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extent&lt;/b&gt; (EXTENT, optional): default = the selected points' extent. The grid is snapped outward to multiples of the cell size so that tiles line up.&lt;/li&gt;&lt;li&gt;&lt;b&gt;CRS&lt;/b&gt; (CRS, optional): overrides the CRS of the LAS file. If the file has no CRS and none is given the algorithm stops with an error (a DTM without a CRS is a common source of misplaced data).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum distance to data&lt;/b&gt; (MAX_DISTANCE, m, default 0 = automatic: five mean point spacings, at least two cells): cells whose nearest point is farther are nodata, so no terrain is invented under water, removed buildings or missing strips.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill data gaps&lt;/b&gt; (FILL_GAPS, default no): interpolate every cell however far from the data (ignores MAX_DISTANCE).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output&lt;/b&gt; (OUTPUT): GeoTIFF (float32, DEFLATE, nodata −9999) in the input CRS; values belong to cell centres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML report.&lt;/li&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las یا .laz (LAS 1.0–1.4)، مثلاً خروجی یک فیلتر زمینی.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های به‌کاررفته&lt;/b&gt; (CLASSES، پیش‌فرض &lt;code&gt;2&lt;/code&gt; = زمینی): کلاس‌های LAS که درون‌یابی می‌شوند، جداشده با ویرگول؛ خالی = همهٔ نقاط. نبودِ هیچ نقطه‌ای از این کلاس‌ها → خطایی که کلاس‌های موجود را فهرست می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض 1.0، &amp;gt; 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;محدوده&lt;/b&gt; (EXTENT، اختیاری): پیش‌فرض = محدودهٔ نقاط انتخاب‌شده. شبکه رو به بیرون روی مضرب‌های اندازهٔ سلول تنظیم می‌شود تا کاشی‌ها با هم جفت شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات&lt;/b&gt; (CRS، اختیاری): سیستم مختصات پروندهٔ LAS را جایگزین می‌کند. اگر پرونده سیستم مختصات نداشته باشد و هیچ‌کدام داده نشود، الگوریتم با خطا متوقف می‌شود (مدل رقومی زمین بدون سیستم مختصات منبع رایج داده‌های نابه‌جا است).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بیشینهٔ فاصله تا داده&lt;/b&gt; (MAX_DISTANCE، متر، پیش‌فرض 0 = خودکار: پنج برابر میانگین فاصلهٔ نقاط، دست‌کم دو سلول): سلول‌هایی که نزدیک‌ترین نقطه‌شان دورتر باشد nodata می‌شوند، تا زیر آب، ساختمان‌های حذف‌شده یا نوارهای گمشده زمینی ساختگی پدید نیاید.&lt;/li&gt;&lt;li&gt;&lt;b&gt;پر کردن شکاف‌های داده&lt;/b&gt; (FILL_GAPS، پیش‌فرض: خیر): درون‌یابی هر سلول، هر قدر هم از داده دور باشد (MAX_DISTANCE را نادیده می‌گیرد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی&lt;/b&gt; (OUTPUT): GeoTIFF (float32، DEFLATE، nodata −9999) در سیستم مختصات ورودی؛ مقادیر به مراکز سلول‌ها تعلق دارند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): گزارش HTML.&lt;/li&gt;</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="117"/>
+        <source>Remove low outliers first (class 7)</source>
+        <translation>حذف نقاط پرت پایین در آغاز (کلاس 7)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="119"/>
+        <source>Low-outlier search cell (m)</source>
+        <translation>سلول جست‌وجوی نقاط پرت پایین (متر)</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/base.py" line="121"/>
+        <source>Low-outlier depth below neighbours (m)</source>
+        <translation>عمق نقطهٔ پرت پایین نسبت به همسایه‌ها (متر)</translation>
     </message>
 </context>
 <context>
@@ -1317,217 +1332,202 @@
 <context>
     <name>LsqGroundFilterAlgorithm</name>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="65"/>
+        <location filename="../algorithms/lsq_filter.py" line="61"/>
         <source>Ground filter (least-squares polynomial)</source>
         <translation>فیلتر نقاط زمینی (چندجمله‌ای کمترین مربعات)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="68"/>
+        <location filename="../algorithms/lsq_filter.py" line="64"/>
         <source>lidar,ground,filter,bare earth,dtm,classification,least squares,polynomial,tiles,las,laz,isprs</source>
         <translation>لایدار,زمین,فیلتر,زمین لخت,dtm,طبقه‌بندی,کمترین مربعات,چندجمله‌ای,کاشی‌ها,las,laz,isprs</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="130"/>
+        <location filename="../algorithms/lsq_filter.py" line="126"/>
         <source>Point cloud (LAS/LAZ)</source>
         <translation>ابر نقاط (LAS/LAZ)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="133"/>
+        <location filename="../algorithms/lsq_filter.py" line="129"/>
         <source>Polynomial order (1 or 2)</source>
         <translation>درجهٔ چندجمله‌ای (1 یا 2)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="135"/>
+        <location filename="../algorithms/lsq_filter.py" line="131"/>
         <source>Tile size (m)</source>
         <translation>اندازهٔ کاشی (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="136"/>
+        <location filename="../algorithms/lsq_filter.py" line="132"/>
         <source>Threshold T (m)</source>
         <translation>آستانهٔ T (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="137"/>
+        <location filename="../algorithms/lsq_filter.py" line="133"/>
         <source>Mode</source>
         <translation>حالت</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="137"/>
+        <location filename="../algorithms/lsq_filter.py" line="133"/>
         <source>Faithful (the paper)</source>
         <translation>مطابق (روش مقاله)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="137"/>
+        <location filename="../algorithms/lsq_filter.py" line="133"/>
         <source>Improved (ours, beyond the paper)</source>
         <translation>بهبودیافته (افزودهٔ ما، فراتر از مقاله)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="141"/>
-        <source>Remove low outliers first (class 7)</source>
-        <translation>حذف نقاط پرت پایین در آغاز (کلاس 7)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="143"/>
-        <source>Low-outlier search cell (m)</source>
-        <translation>سلول جست‌وجوی نقاط پرت پایین (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="145"/>
-        <source>Low-outlier depth below neighbours (m)</source>
-        <translation>عمق نقطهٔ پرت پایین نسبت به همسایه‌ها (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="148"/>
+        <location filename="../algorithms/lsq_filter.py" line="138"/>
         <source>Maximum iterations per tile</source>
         <translation>حداکثر تکرار در هر کاشی</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="151"/>
+        <location filename="../algorithms/lsq_filter.py" line="141"/>
         <source>Stop tolerance on min/max/mean/std (m)</source>
         <translation>تلورانس توقف برای کمینه/بیشینه/میانگین/انحراف معیار (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="153"/>
+        <location filename="../algorithms/lsq_filter.py" line="143"/>
         <source>Random fitting subset per tile (points, 0 = all)</source>
         <translation>زیرمجموعهٔ تصادفی برازش در هر کاشی (نقطه، 0 = همه)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="156"/>
+        <location filename="../algorithms/lsq_filter.py" line="146"/>
         <source>Random seed of the subset</source>
         <translation>بذر تصادفی زیرمجموعه</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="158"/>
+        <location filename="../algorithms/lsq_filter.py" line="148"/>
         <source>Minimum points per tile (0 = 3 × coefficients)</source>
         <translation>حداقل نقاط هر کاشی (0 = 3 × تعداد ضرایب)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="161"/>
+        <location filename="../algorithms/lsq_filter.py" line="151"/>
         <source>Under-populated tiles</source>
         <translation>کاشی‌های کم‌نقطه</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="161"/>
+        <location filename="../algorithms/lsq_filter.py" line="151"/>
         <source>Borrow the nearest fitted tile&apos;s surface</source>
         <translation>استفاده از سطح نزدیک‌ترین کاشی برازش‌شده</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="161"/>
+        <location filename="../algorithms/lsq_filter.py" line="151"/>
         <source>Leave their points unclassified (class 0)</source>
         <translation>طبقه‌بندی‌نشده ماندن نقاط آن‌ها (کلاس 0)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="166"/>
+        <location filename="../algorithms/lsq_filter.py" line="156"/>
         <source>Rejection</source>
         <translation>شیوهٔ رد نقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="166"/>
+        <location filename="../algorithms/lsq_filter.py" line="156"/>
         <source>Re-weighted each iteration (a point may return)</source>
         <translation>وزن‌دهی دوباره در هر تکرار (نقطه ممکن است بازگردد)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="166"/>
+        <location filename="../algorithms/lsq_filter.py" line="156"/>
         <source>Cumulative (a rejected point stays out)</source>
         <translation>تجمعی (نقطهٔ ردشده بیرون می‌ماند)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="171"/>
+        <location filename="../algorithms/lsq_filter.py" line="161"/>
         <source>Classified point cloud</source>
         <translation>ابر نقاط طبقه‌بندی‌شده</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
+        <location filename="../algorithms/lsq_filter.py" line="163"/>
         <source>Ground points only</source>
         <translation>فقط نقاط زمینی</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="176"/>
+        <location filename="../algorithms/lsq_filter.py" line="166"/>
         <source>Report</source>
         <translation>گزارش</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="176"/>
+        <location filename="../algorithms/lsq_filter.py" line="166"/>
         <source>HTML files (*.html)</source>
         <translation>پرونده‌های HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="172"/>
         <source>Ground points</source>
         <translation>نقاط زمینی</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="172"/>
         <source>Other (object) points</source>
         <translation>نقاط دیگر (عوارض)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="172"/>
         <source>Low-noise points</source>
         <translation>نقاط نویز پایین</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="172"/>
         <source>Unclassified points</source>
         <translation>نقاط طبقه‌بندی‌نشده</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="172"/>
         <source>Tiles</source>
         <translation>کاشی‌ها</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="182"/>
+        <location filename="../algorithms/lsq_filter.py" line="172"/>
         <source>Points per second</source>
         <translation>نقطه در ثانیه</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="222"/>
+        <location filename="../algorithms/lsq_filter.py" line="212"/>
         <source>Choose an output file for the classified cloud (OUTPUT, .laz or .las).</source>
         <translation>یک پروندهٔ خروجی برای ابر طبقه‌بندی‌شده انتخاب کنید (OUTPUT، با پسوند .laz یا .las).</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="226"/>
+        <location filename="../algorithms/lsq_filter.py" line="216"/>
         <source>Output point clouds must end in .las or .laz: {p}</source>
         <translation>پرونده‌های ابر نقاط خروجی باید پسوند .las یا .laz داشته باشند: {p}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="233"/>
+        <location filename="../algorithms/lsq_filter.py" line="223"/>
         <source>Reading {p}</source>
         <translation>در حال خواندن {p}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="238"/>
+        <location filename="../algorithms/lsq_filter.py" line="228"/>
         <source>{n} points; filtering ({mode} mode)</source>
         <translation>{n} نقطه؛ در حال فیلتر کردن (حالت {mode})</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="245"/>
+        <location filename="../algorithms/lsq_filter.py" line="235"/>
         <source>{step}: {n} points kept, ZMin {a:.2f}, ZMax {b:.2f}, ZMean {m:.2f}, σ {s:.2f}; tiles iterating: {t}</source>
         <translation>{step}: {n} نقطه نگه داشته شد، ZMin {a:.2f}، ZMax {b:.2f}، ZMean {m:.2f}، σ {s:.2f}؛ کاشی‌های در حال تکرار: {t}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="253"/>
+        <location filename="../algorithms/lsq_filter.py" line="243"/>
         <source>Ground {g}, other {o}, low noise {z}, unclassified {u}; {t} tiles; {s:.1f} s</source>
         <translation>زمینی {g}، سایر {o}، نویز پایین {z}، طبقه‌بندی‌نشده {u}؛ {t} کاشی؛ {s:.1f} ثانیه</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="259"/>
+        <location filename="../algorithms/lsq_filter.py" line="249"/>
         <source>No point was classified as ground, so the ground-only output would be empty; check TILE_SIZE and THRESHOLD.</source>
         <translation>هیچ نقطه‌ای زمینی طبقه‌بندی نشد، پس خروجی نقاط زمینی خالی می‌شد؛ TILE_SIZE و THRESHOLD را بررسی کنید.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="72"/>
+        <location filename="../algorithms/lsq_filter.py" line="68"/>
         <source>&lt;p&gt;Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). In every tile the surface is fitted, points more than THRESHOLD above it are dropped, and the fit is repeated until the minimum, maximum, mean and standard deviation of the kept heights stop changing (TOLERANCE) or MAX_ITERATIONS; then every point with z ≤ ẑ + THRESHOLD is ground. Any classification already in the file is ignored and replaced.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output classes&lt;/b&gt; (ASPRS): 2 ground, 1 other (buildings, vegetation), 7 low noise (pre-filter), 0 never classified (only with SPARSE_TILES = leave unclassified). Every other attribute of every point, the point format, scales, offsets, VLRs and CRS are copied unchanged.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file, projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Order&lt;/b&gt; (ORDER, default 2): 1 = plane z = b0 + b1·x + b2·y; 2 = quadratic z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (better on every sample of the paper).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Tile size&lt;/b&gt; (TILE_SIZE, m, default 50): larger than the largest building, so that every tile holds ground (paper: 100 m for large buildings, 50 m for small ones). Tiles are square, anchored at the minimum x, y.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Threshold&lt;/b&gt; (THRESHOLD, m, default 0.5): 0.5–1.0 m, larger on steeper terrain.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default Faithful): Faithful = the paper. Improved = ours, beyond the paper: coarse-to-fine tiles (2, 1, ½, ¼ × TILE_SIZE) fitted on overlapping windows, each level started from the previous level's ground, and a threshold that grows with the surface slope (by 2.5 m per unit gradient, at most 1 m). On the ISPRS samples it lowers the mean total error from 8.9 % (paper) to about 4.9 % with one parameter set; it costs about 15 times the time and twice the memory of the faithful mode (about 2 M points/s and 100 bytes per point in faithful mode).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours become class 7 and take no part in the fit (NOISE_RADIUS, m, default 5: neighbourhood cell; NOISE_THRESHOLD, m, default 1: depth below the neighbours).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum iterations&lt;/b&gt; (MAX_ITERATIONS, default 5, the paper's tables) and &lt;b&gt;stop tolerance&lt;/b&gt; (TOLERANCE, m, default 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Random fitting subset per tile&lt;/b&gt; (SUBSET_SIZE, points, default 0 = all; the paper used 5000) and its &lt;b&gt;seed&lt;/b&gt; (SEED). All points are classified.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points per tile&lt;/b&gt; (MIN_POINTS, default 0 = 3 × the number of coefficients) and &lt;b&gt;under-populated tiles&lt;/b&gt; (SPARSE_TILES): borrow the nearest fitted tile's surface (default) or leave their points unclassified (class 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rejection&lt;/b&gt; (REJECTION): re-weighted (default; a point dropped earlier may return when the surface moves) or cumulative (dropped for good).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud (OUTPUT, .laz or .las), optional ground-only cloud (GROUND_OUTPUT), optional HTML report (OUTPUT_HTML) with the parameters, class counts, the per-iteration statistics of the paper's Tables 1–2, per-tile statistics, time and points per second; optional CSV of every tile's iterations and coefficients (TILE_STATS); numbers N_GROUND, N_OTHER, N_NOISE, N_UNCLASSIFIED, N_TILES, POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Measure the result against reference labels with &lt;i&gt;Ground filter accuracy&lt;/i&gt;. Nothing is written when the run fails or is cancelled.&lt;/p&gt;</source>
         <translation>&lt;p&gt;نقاط زمین لخت را از ساختمان‌ها و پوشش گیاهی در ابر نقاط لایدار هوایی جدا می‌کند، با برازش سطوح چندجمله‌ای کمترین مربعات در هر کاشی مربعی (مجلهٔ علوم مهندسی دانشگاه دمشق 29(2)، 2013). در هر کاشی سطح برازش داده می‌شود، نقاطی که بیش از THRESHOLD بالاتر از آن‌اند کنار گذاشته می‌شوند، و برازش تکرار می‌شود تا کمینه، بیشینه، میانگین و انحراف معیار ارتفاع‌های نگه‌داشته‌شده دیگر تغییر نکنند (TOLERANCE) یا به MAX_ITERATIONS برسد؛ سپس هر نقطه با z ≤ ẑ + THRESHOLD زمینی است. هر طبقه‌بندی موجود در پرونده نادیده گرفته و جایگزین می‌شود.&lt;/p&gt;&lt;p&gt;&lt;b&gt;کلاس‌های خروجی&lt;/b&gt; (ASPRS): 2 زمینی، 1 سایر (ساختمان، پوشش گیاهی)، 7 نویز پایین (پیش‌فیلتر)، 0 هرگز طبقه‌بندی‌نشده (فقط با SPARSE_TILES = طبقه‌بندی‌نشده ماندن). همهٔ ویژگی‌های دیگر هر نقطه، قالب نقطه، ضرایب مقیاس، آفست‌ها، VLRها و سیستم مختصات بدون تغییر کپی می‌شوند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las یا .laz، با سیستم مختصات تصویرشده به متر.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجه&lt;/b&gt; (ORDER، پیش‌فرض 2): 1 = صفحه z = b0 + b1·x + b2·y؛ 2 = درجه‌دوم z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (در همهٔ نمونه‌های مقاله بهتر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ کاشی&lt;/b&gt; (TILE_SIZE، متر، پیش‌فرض 50): بزرگ‌تر از بزرگ‌ترین ساختمان، تا هر کاشی نقاط زمینی داشته باشد (مقاله: 100 متر برای ساختمان‌های بزرگ، 50 متر برای ساختمان‌های کوچک). کاشی‌ها مربعی‌اند و از کمینهٔ x و y آغاز می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;آستانه&lt;/b&gt; (THRESHOLD، متر، پیش‌فرض 0.5): 0.5–1.0 متر، و در زمین‌های پرشیب‌تر بیشتر.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حالت&lt;/b&gt; (MODE، پیش‌فرض: مطابق): مطابق = روش مقاله. بهبودیافته = افزودهٔ ما، فراتر از مقاله: کاشی‌های درشت به ریز (2، 1، ½، ¼ × TILE_SIZE) که روی پنجره‌های همپوشان برازش می‌شوند، هر سطح از نقاط زمینی سطح قبلی آغاز می‌شود، و آستانه‌ای که با شیب سطح افزایش می‌یابد (2.5 متر به ازای هر واحد گرادیان، حداکثر 1 متر). روی نمونه‌های ISPRS میانگین خطای کل را با یک مجموعه پارامتر از 8.9 % (مقاله) به حدود 4.9 % کاهش می‌دهد؛ حدود 15 برابر زمان و دو برابر حافظهٔ حالت مطابق را می‌گیرد (در حالت مطابق حدود 2 میلیون نقطه در ثانیه و 100 بایت برای هر نقطه).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حذف نقاط پرت پایین در آغاز&lt;/b&gt; (NOISE، پیش‌فرض: بله): نقاطی که بسیار پایین‌تر از همسایه‌های خود هستند کلاس 7 می‌گیرند و در برازش شرکت نمی‌کنند (NOISE_RADIUS، متر، پیش‌فرض 5: سلول همسایگی؛ NOISE_THRESHOLD، متر، پیش‌فرض 1: عمق زیر همسایه‌ها).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداکثر تکرار&lt;/b&gt; (MAX_ITERATIONS، پیش‌فرض 5، مطابق جدول‌های مقاله) و &lt;b&gt;تلورانس توقف&lt;/b&gt; (TOLERANCE، متر، پیش‌فرض 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;زیرمجموعهٔ تصادفی برازش در هر کاشی&lt;/b&gt; (SUBSET_SIZE، نقطه، پیش‌فرض 0 = همه؛ مقاله 5000 به کار برده است) و &lt;b&gt;بذر تصادفی&lt;/b&gt; آن (SEED). همهٔ نقاط طبقه‌بندی می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداقل نقاط هر کاشی&lt;/b&gt; (MIN_POINTS، پیش‌فرض 0 = 3 × تعداد ضرایب) و &lt;b&gt;کاشی‌های کم‌نقطه&lt;/b&gt; (SPARSE_TILES): استفاده از سطح نزدیک‌ترین کاشی برازش‌شده (پیش‌فرض) یا طبقه‌بندی‌نشده ماندن نقاط آن‌ها (کلاس 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شیوهٔ رد نقاط&lt;/b&gt; (REJECTION): وزن‌دهی دوباره (پیش‌فرض؛ نقطه‌ای که پیش‌تر رد شده ممکن است با جابه‌جایی سطح بازگردد) یا تجمعی (برای همیشه رد می‌شود).&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی‌ها&lt;/b&gt;: ابر طبقه‌بندی‌شده (OUTPUT، .laz یا .las)، ابر فقط نقاط زمینی به‌اختیار (GROUND_OUTPUT)، گزارش HTML اختیاری (OUTPUT_HTML) با پارامترها، تعداد نقاط هر کلاس، آماره‌های هر تکرار مطابق جدول‌های 1–2 مقاله، آماره‌های هر کاشی، زمان و تعداد نقطه در ثانیه؛ پروندهٔ CSV اختیاری از تکرارها و ضرایب هر کاشی (TILE_STATS)؛ اعداد N_GROUND، N_OTHER، N_NOISE، N_UNCLASSIFIED، N_TILES، POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;نتیجه را با &lt;i&gt;دقت فیلتر نقاط زمینی&lt;/i&gt; در برابر برچسب‌های مرجع بسنجید. اگر اجرا شکست بخورد یا لغو شود، چیزی نوشته نمی‌شود.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="179"/>
+        <location filename="../algorithms/lsq_filter.py" line="169"/>
         <source>Per-tile iteration statistics (CSV)</source>
         <translation>آماره‌های تکرار هر کاشی (CSV)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="179"/>
+        <location filename="../algorithms/lsq_filter.py" line="169"/>
         <source>CSV files (*.csv)</source>
         <translation>پرونده‌های CSV (*.csv)</translation>
     </message>
@@ -1598,97 +1598,97 @@
 <context>
     <name>SlopeGroundFilterAlgorithm</name>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="120"/>
+        <location filename="../algorithms/slope_filter.py" line="111"/>
         <source>Ground filter (slope-based)</source>
         <translation>فیلتر نقاط زمینی (مبتنی بر شیب)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="123"/>
+        <location filename="../algorithms/slope_filter.py" line="114"/>
         <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,vosselman,slope,point cloud</source>
         <translation>لایدار,las,laz,زمین,فیلتر,طبقه‌بندی,dtm,زمین لخت,vosselman,شیب,ابر نقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="127"/>
+        <location filename="../algorithms/slope_filter.py" line="118"/>
         <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when some neighbour at horizontal distance 0 &amp;lt; d ≤ r lies more than d·tan θ + h below it. Single pass, neighbours from the whole cloud, exact (labels identical to a brute-force check of every pair) and fast (about a million points per second on one core at r = 3 m). Low outliers get class 7; every other attribute is copied unchanged. The input classification is ignored.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study's setting RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 allows a rise of 2.90 m at 3 m. Tune r and θ to your data with &lt;i&gt;Slope filter threshold sweep&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radius r&lt;/b&gt; (RADIUS, m, default 10, &amp;gt; 0): neighbourhood radius. An object is removed only within r of its edge, so r must exceed half the width of the largest building to remove; larger r costs more time.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope threshold θ&lt;/b&gt; (SLOPE, degrees, default 40, strictly between 0 and 90): the steepest terrain kept. Allowed rise at 3 m: 2.52 m (40°), 2.90 m (44°), 3.33 m (48°), 3.84 m (52°), 4.45 m (56°), 5.20 m (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Height tolerance h&lt;/b&gt; (HEIGHT_TOLERANCE, m, default 0.2, ≥ 0): extra rise allowed for every pair, absorbs ranging noise between close points; 0 is the rule as published.&lt;/li&gt;</source>
         <translation>&lt;p&gt;یک ابر نقاط LAS/LAZ را با فیلتر مبتنی بر شیب Vosselman (2000) به زمینی (کلاس 2) و غیرزمینی (کلاس 1) طبقه‌بندی می‌کند: نقطه‌ای غیرزمینی است که همسایه‌ای در فاصلهٔ افقی 0 &lt; d ≤ r بیش از d·tan θ + h پایین‌تر از آن باشد. یک‌گذره، با همسایه‌ها از کل ابر، دقیق (برچسب‌ها با بررسی کامل همهٔ زوج‌ها یکسان‌اند) و سریع (حدود یک میلیون نقطه در ثانیه روی یک هستهٔ پردازنده با r = 3 متر). نقاط پرت پایین کلاس 7 می‌گیرند؛ همهٔ ویژگی‌های دیگر بدون تغییر کپی می‌شوند. طبقه‌بندی ورودی نادیده گرفته می‌شود.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: تنظیم مطالعهٔ جنگل RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 در فاصلهٔ 3 متر اختلاف ارتفاع 2.90 متر را مجاز می‌داند. r و θ را با &lt;i&gt;پیمایش آستانه‌های فیلتر شیب&lt;/i&gt; برای داده‌های خود تنظیم کنید.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las یا .laz در سیستم مختصات تصویرشده (متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شعاع r&lt;/b&gt; (RADIUS، متر، پیش‌فرض 10، &gt; 0): شعاع همسایگی. یک عارضه فقط تا فاصلهٔ r از لبه‌اش حذف می‌شود، پس r باید از نصف عرض بزرگ‌ترین ساختمانی که باید حذف شود بیشتر باشد؛ r بزرگ‌تر زمان بیشتری می‌برد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;آستانهٔ شیب θ&lt;/b&gt; (SLOPE، درجه، پیش‌فرض 40، اکیداً بین 0 و 90): تندترین شیب زمینی که نگه داشته می‌شود. اختلاف ارتفاع مجاز در 3 متر: 2.52 متر (40°)، 2.90 متر (44°)، 3.33 متر (48°)، 3.84 متر (52°)، 4.45 متر (56°)، 5.20 متر (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تلورانس ارتفاعی h&lt;/b&gt; (HEIGHT_TOLERANCE، متر، پیش‌فرض 0.2، ≥ 0): اختلاف ارتفاع اضافی مجاز برای هر زوج، که نویز فاصله‌یابی میان نقاط نزدیک را جذب می‌کند؛ 0 همان قاعدهٔ منتشرشده است.&lt;/li&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="166"/>
+        <location filename="../algorithms/slope_filter.py" line="157"/>
         <source>Radius r (m)</source>
         <translation>شعاع r (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="168"/>
+        <location filename="../algorithms/slope_filter.py" line="159"/>
         <source>Slope threshold θ (degrees)</source>
         <translation>آستانهٔ شیب θ (درجه)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="170"/>
+        <location filename="../algorithms/slope_filter.py" line="161"/>
         <source>Height tolerance h (m)</source>
         <translation>تلورانس ارتفاعی h (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="174"/>
+        <location filename="../algorithms/slope_filter.py" line="165"/>
         <source>Keep existing noise classes (7, 18)</source>
         <translation>حفظ کلاس‌های نویز موجود (7, 18)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="177"/>
+        <location filename="../algorithms/slope_filter.py" line="168"/>
         <source>Classified point cloud</source>
         <translation>ابر نقاط طبقه‌بندی‌شده</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="179"/>
+        <location filename="../algorithms/slope_filter.py" line="170"/>
         <source>Ground points</source>
         <translation>نقاط زمینی</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="182"/>
+        <location filename="../algorithms/slope_filter.py" line="173"/>
         <source>Report</source>
         <translation>گزارش</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="182"/>
+        <location filename="../algorithms/slope_filter.py" line="173"/>
         <source>HTML files (*.html)</source>
         <translation>پرونده‌های HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="185"/>
+        <location filename="../algorithms/slope_filter.py" line="176"/>
         <source>Points read</source>
         <translation>نقاط خوانده‌شده</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="185"/>
+        <location filename="../algorithms/slope_filter.py" line="176"/>
         <source>Ground points (class 2)</source>
         <translation>نقاط زمینی (کلاس 2)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="185"/>
+        <location filename="../algorithms/slope_filter.py" line="176"/>
         <source>Non-ground points (class 1)</source>
         <translation>نقاط غیرزمینی (کلاس 1)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="185"/>
+        <location filename="../algorithms/slope_filter.py" line="176"/>
         <source>Low outliers (class 7)</source>
         <translation>نقاط پرت پایین (کلاس 7)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="185"/>
+        <location filename="../algorithms/slope_filter.py" line="176"/>
         <source>Filter speed (points/s)</source>
         <translation>سرعت فیلتر (نقطه/ثانیه)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="201"/>
+        <location filename="../algorithms/slope_filter.py" line="192"/>
         <source>Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, mode {}</source>
         <translation>فیلتر شیب: r = {} متر، θ = {}°، h = {} متر، بازگشت‌ها: {}، حالت: {}</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="209"/>
+        <location filename="../algorithms/slope_filter.py" line="200"/>
         <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
         <translation>{} نقطه: {} زمینی، {} غیرزمینی، {} پرت پایین؛ فیلتر {:.1f} ثانیه</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="127"/>
+        <location filename="../algorithms/slope_filter.py" line="118"/>
         <source>&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, default yes, advanced): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point, classes 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): counts, settings, allowed-rise table, speed.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE, POINTS_PER_SECOND (filter step only).&lt;/p&gt;&lt;p&gt;Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;حفظ کلاس‌های نویز موجود&lt;/b&gt; (KEEP_NOISE، پیش‌فرض: بله، پیشرفته): نقاطی که از پیش کلاس 7 یا 18 دارند کلاس خود را نگه می‌دارند و در فیلتر شرکت نمی‌کنند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر نقاط طبقه‌بندی‌شده&lt;/b&gt; (OUTPUT، .laz/.las): همهٔ نقاط، با کلاس‌های 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط زمینی&lt;/b&gt; (GROUND_OUTPUT، اختیاری): فقط نقاط زمینی.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): تعدادها، تنظیمات، جدول اختلاف ارتفاع مجاز، سرعت.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: N_POINTS، N_GROUND، N_NONGROUND، N_NOISE، POINTS_PER_SECOND (فقط مرحلهٔ فیلتر).&lt;/p&gt;&lt;p&gt;مرجع: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</translation>
     </message>
@@ -1696,152 +1696,152 @@
 <context>
     <name>SlopeThresholdSweepAlgorithm</name>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="242"/>
+        <location filename="../algorithms/slope_filter.py" line="233"/>
         <source>Slope filter threshold sweep</source>
         <translation>پیمایش آستانه‌های فیلتر شیب</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="245"/>
+        <location filename="../algorithms/slope_filter.py" line="236"/>
         <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
         <translation>لایدار,زمین,فیلتر,vosselman,شیب,آستانه,تنظیم,دقت,نوع اول,نوع دوم,کاپا,isprs</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="249"/>
+        <location filename="../algorithms/slope_filter.py" line="240"/>
         <source>&lt;p&gt;Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h and reports, against reference labels, Type I error (ground rejected), Type II error (objects accepted as ground — the forest study's &quot;error&quot; column, which alone always favours low θ), total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004), then picks the best setting. One exact neighbourhood pass per radius and tolerance: every threshold then costs a single comparison per point.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. ISPRS reference samples: INPUT=samp31.laz (its own classification is the reference).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): LAS/LAZ. Its classification is never used to filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference cloud&lt;/b&gt; (REFERENCE, optional): a labelled copy of the same points in the same order; empty = the input's own classification (e.g. the ISPRS samples).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &quot;2&quot;): reference classes counted as ground; all others are objects.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope thresholds&lt;/b&gt; (SLOPES, degrees, default &quot;30,35,40,44,48,52,56,60&quot;): a list or start:stop:step.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radii&lt;/b&gt; (RADII, m, default &quot;10&quot;) and &lt;b&gt;height tolerances&lt;/b&gt; (HEIGHT_TOLERANCES, m, default &quot;0.2&quot;): lists; each value is one pass.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Best by&lt;/b&gt; (METRIC, default 0): 0 lowest total error, 1 highest kappa, 2 lowest Type I, 3 lowest Type II.&lt;/li&gt;</source>
         <translation>&lt;p&gt;فیلتر زمینی مبتنی بر شیب را برای هر ترکیب از آستانه‌های شیب θ، شعاع‌های r و تلورانس‌های ارتفاعی h اجرا می‌کند و در برابر برچسب‌های مرجع، خطای نوع اول (رد نقاط زمینی)، خطای نوع دوم (پذیرش عوارض به‌عنوان زمین — ستون «خطا» در مطالعهٔ جنگل، که به‌تنهایی همیشه θ پایین را ترجیح می‌دهد)، خطای کل و ضریب کاپای کوهن (Sithole &amp; Vosselman 2004) را گزارش می‌کند و سپس بهترین تنظیم را برمی‌گزیند. برای هر شعاع و تلورانس یک گذر دقیق همسایگی انجام می‌شود: پس از آن هر آستانه فقط یک مقایسه به ازای هر نقطه هزینه دارد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: مطالعهٔ جنگل: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. نمونه‌های مرجع ISPRS: INPUT=samp31.laz (طبقه‌بندی خودش مرجع است).&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): LAS/LAZ. طبقه‌بندی آن هرگز برای فیلتر کردن به کار نمی‌رود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر مرجع&lt;/b&gt; (REFERENCE، اختیاری): رونوشتی برچسب‌دار از همان نقاط با همان ترتیب؛ خالی = طبقه‌بندی خود ورودی (مثلاً نمونه‌های ISPRS).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های زمینی&lt;/b&gt; (GROUND_CLASSES، پیش‌فرض &quot;2&quot;): کلاس‌های مرجعی که زمینی به شمار می‌آیند؛ بقیه عارضه‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;آستانه‌های شیب&lt;/b&gt; (SLOPES، درجه، پیش‌فرض &quot;30,35,40,44,48,52,56,60&quot;): فهرست یا start:stop:step (شروع:پایان:گام).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شعاع‌ها&lt;/b&gt; (RADII، متر، پیش‌فرض &quot;10&quot;) و &lt;b&gt;تلورانس‌های ارتفاعی&lt;/b&gt; (HEIGHT_TOLERANCES، متر، پیش‌فرض &quot;0.2&quot;): فهرست؛ هر مقدار یک گذر است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;معیار انتخاب بهترین&lt;/b&gt; (METRIC، پیش‌فرض 0): 0 کمترین خطای کل، 1 بیشترین کاپا، 2 کمترین نوع اول، 3 کمترین نوع دوم.&lt;/li&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="286"/>
+        <location filename="../algorithms/slope_filter.py" line="277"/>
         <source>Reference cloud (empty = the input&apos;s classification)</source>
         <translation>ابر مرجع (خالی = طبقه‌بندی خود ورودی)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="290"/>
+        <location filename="../algorithms/slope_filter.py" line="281"/>
         <source>Reference ground classes</source>
         <translation>کلاس‌های زمینی مرجع</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="292"/>
+        <location filename="../algorithms/slope_filter.py" line="283"/>
         <source>Slope thresholds θ (degrees; list or start:stop:step)</source>
         <translation>آستانه‌های شیب θ (درجه؛ فهرست یا شروع:پایان:گام)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="295"/>
+        <location filename="../algorithms/slope_filter.py" line="286"/>
         <source>Radii r (m; list)</source>
         <translation>شعاع‌های r (متر؛ فهرست)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="297"/>
+        <location filename="../algorithms/slope_filter.py" line="288"/>
         <source>Height tolerances h (m; list)</source>
         <translation>تلورانس‌های ارتفاعی h (متر؛ فهرست)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
+        <location filename="../algorithms/slope_filter.py" line="291"/>
         <source>Best by</source>
         <translation>معیار انتخاب بهترین</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
+        <location filename="../algorithms/slope_filter.py" line="291"/>
         <source>Lowest total error</source>
         <translation>کمترین خطای کل</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
+        <location filename="../algorithms/slope_filter.py" line="291"/>
         <source>Highest kappa</source>
         <translation>بیشترین کاپا</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
+        <location filename="../algorithms/slope_filter.py" line="291"/>
         <source>Lowest Type I error</source>
         <translation>کمترین خطای نوع اول</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
+        <location filename="../algorithms/slope_filter.py" line="291"/>
         <source>Lowest Type II error</source>
         <translation>کمترین خطای نوع دوم</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="307"/>
+        <location filename="../algorithms/slope_filter.py" line="298"/>
         <source>Sweep table</source>
         <translation>جدول پیمایش</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="307"/>
+        <location filename="../algorithms/slope_filter.py" line="298"/>
         <source>CSV files (*.csv)</source>
         <translation>پرونده‌های CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="309"/>
+        <location filename="../algorithms/slope_filter.py" line="300"/>
         <source>Report</source>
         <translation>گزارش</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="309"/>
+        <location filename="../algorithms/slope_filter.py" line="300"/>
         <source>HTML files (*.html)</source>
         <translation>پرونده‌های HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="312"/>
+        <location filename="../algorithms/slope_filter.py" line="303"/>
         <source>Classified with the best setting</source>
         <translation>طبقه‌بندی‌شده با بهترین تنظیم</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Best radius (m)</source>
         <translation>بهترین شعاع (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Best slope threshold (degrees)</source>
         <translation>بهترین آستانهٔ شیب (درجه)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Best height tolerance (m)</source>
         <translation>بهترین تلورانس ارتفاعی (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Type I error at the best setting (%)</source>
         <translation>خطای نوع اول در بهترین تنظیم (%)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Type II error at the best setting (%)</source>
         <translation>خطای نوع دوم در بهترین تنظیم (%)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Total error at the best setting (%)</source>
         <translation>خطای کل در بهترین تنظیم (%)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Kappa at the best setting (%)</source>
         <translation>کاپا در بهترین تنظیم (%)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
+        <location filename="../algorithms/slope_filter.py" line="306"/>
         <source>Settings evaluated</source>
         <translation>تعداد تنظیمات ارزیابی‌شده</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="324"/>
+        <location filename="../algorithms/slope_filter.py" line="315"/>
         <source>Best setting</source>
         <translation>بهترین تنظیم</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="344"/>
+        <location filename="../algorithms/slope_filter.py" line="335"/>
         <source>Sweeping {} thresholds × {} radii × {} tolerances</source>
         <translation>پیمایش {} آستانه × {} شعاع × {} تلورانس</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="357"/>
+        <location filename="../algorithms/slope_filter.py" line="348"/>
         <source>Best ({}): {} — total {:.2f} %</source>
         <translation>بهترین ({}): {} — خطای کل {:.2f} %</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="249"/>
+        <location filename="../algorithms/slope_filter.py" line="240"/>
         <source>&lt;li&gt;&lt;b&gt;Sweep table&lt;/b&gt; (OUTPUT_CSV): one row per setting: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): the table, the best setting and a chart of the errors against θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified with the best setting&lt;/b&gt; (OUTPUT, optional LAS/LAZ).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: BEST_RADIUS, BEST_SLOPE, BEST_HEIGHT_TOLERANCE, BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.&lt;/p&gt;</source>
         <translation>&lt;li&gt;&lt;b&gt;جدول پیمایش&lt;/b&gt; (OUTPUT_CSV): یک سطر برای هر تنظیم: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML): جدول، بهترین تنظیم و نمودار خطاها بر حسب θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقه‌بندی‌شده با بهترین تنظیم&lt;/b&gt; (OUTPUT، LAS/LAZ اختیاری).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: BEST_RADIUS، BEST_SLOPE، BEST_HEIGHT_TOLERANCE، BEST_TYPE1، BEST_TYPE2، BEST_TOTAL، BEST_KAPPA (درصد)، N_SETTINGS.&lt;/p&gt;</translation>
     </message>
@@ -2045,72 +2045,57 @@
 <context>
     <name>_SlopeCommon</name>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="39"/>
+        <location filename="../algorithms/slope_filter.py" line="36"/>
         <source>Point cloud (LAS/LAZ)</source>
         <translation>ابر نقاط (LAS/LAZ)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="44"/>
+        <location filename="../algorithms/slope_filter.py" line="41"/>
         <source>Returns filtered</source>
         <translation>بازگشت‌های فیلترشونده</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="44"/>
+        <location filename="../algorithms/slope_filter.py" line="41"/>
         <source>All returns</source>
         <translation>همهٔ بازگشت‌ها</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="44"/>
+        <location filename="../algorithms/slope_filter.py" line="41"/>
         <source>Last returns only</source>
         <translation>فقط بازگشت‌های آخر</translation>
     </message>
     <message>
         <location filename="../algorithms/slope_filter.py" line="47"/>
-        <source>Remove low outliers first (class 7)</source>
-        <translation>حذف نقاط پرت پایین در آغاز (کلاس 7)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="49"/>
-        <source>Low-outlier search cell (m)</source>
-        <translation>سلول جست‌وجوی نقاط پرت پایین (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="51"/>
-        <source>Low-outlier depth below neighbours (m)</source>
-        <translation>عمق نقطهٔ پرت پایین نسبت به همسایه‌ها (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="56"/>
         <source>Mode</source>
         <translation>حالت</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="56"/>
+        <location filename="../algorithms/slope_filter.py" line="47"/>
         <source>Exact (Vosselman 2000)</source>
         <translation>دقیق (Vosselman 2000)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="56"/>
+        <location filename="../algorithms/slope_filter.py" line="47"/>
         <source>Terrain-adaptive (toolbox extension)</source>
         <translation>سازگار با ناهمواری زمین (افزودهٔ جعبه‌ابزار)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="60"/>
+        <location filename="../algorithms/slope_filter.py" line="51"/>
         <source>Adaptive mode: trend cell (m)</source>
         <translation>حالت سازگار: سلول روند (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="62"/>
+        <location filename="../algorithms/slope_filter.py" line="53"/>
         <source>Adaptive mode: trend window, &gt; largest building (m)</source>
         <translation>حالت سازگار: پنجرهٔ روند، &gt; بزرگ‌ترین ساختمان (متر)</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="71"/>
+        <location filename="../algorithms/slope_filter.py" line="62"/>
         <source>TREND_CELL and TREND_WINDOW must be &gt; 0 metres in adaptive mode (e.g. 10 and 60).</source>
         <translation>در حالت سازگار، TREND_CELL و TREND_WINDOW باید &gt; 0 متر باشند (مثلاً 10 و 60).</translation>
     </message>
     <message>
-        <location filename="../algorithms/slope_filter.py" line="77"/>
+        <location filename="../algorithms/slope_filter.py" line="68"/>
         <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
         <translation>NOISE_RADIUS و NOISE_THRESHOLD باید &gt; 0 متر باشند (مثلاً 5 و 1)، یا پیش‌فیلتر NOISE را خاموش کنید.</translation>
     </message>

@@ -8,12 +8,6 @@ import pytest
 
 
 @pytest.fixture(scope="module")
-def qp(qgis_process):
-    """The shared runner (conftest puts the venv's packages on its PYTHONPATH)."""
-    return qgis_process
-
-
-@pytest.fixture(scope="module")
 def laz(tmp_path_factory):
     from geomatics_toolbox.core.synthetic import generate_tile, write_tile
     tile = generate_tile(extent=(90, 90), density=3.0, seed=8)
@@ -33,9 +27,9 @@ def _same_except_class(src, dst):
     return b
 
 
-def test_cli_lsq_ground_filter_laz(qp, laz, tmp_path):
+def test_cli_lsq_ground_filter_laz(qgis_process, laz, tmp_path):
     out, html = tmp_path / "classified.laz", tmp_path / "report.html"
-    res = qp.run("geomatics:lsqgroundfilter", INPUT=laz, OUTPUT=out, OUTPUT_HTML=html,
+    res = qgis_process.run("geomatics:lsqgroundfilter", INPUT=laz, OUTPUT=out, OUTPUT_HTML=html,
                  TILE_SIZE=45, THRESHOLD=0.5, ORDER=2, MODE=1)
     r = res["results"]
     b = _same_except_class(laz, out)
@@ -44,25 +38,25 @@ def test_cli_lsq_ground_filter_laz(qp, laz, tmp_path):
     assert r["N_OTHER"] == np.count_nonzero(cls == 1)
     assert set(np.unique(cls)) <= {1, 2, 7}
     assert "ZMin" in html.read_text(encoding="utf-8")
-    acc = qp.run("geomatics:groundfilteraccuracy", INPUT=out, REFERENCE=laz)["results"]
+    acc = qgis_process.run("geomatics:groundfilteraccuracy", INPUT=out, REFERENCE=laz)["results"]
     assert acc["A"] + acc["B"] + acc["C"] + acc["D"] == len(cls)
     assert 0 <= acc["TOTAL"] < 15
 
 
-def test_cli_isprs_sample(qp, isprs_dir, tmp_path):
+def test_cli_isprs_sample(qgis_process, isprs_dir, tmp_path):
     """The ISPRS reference file (LAS 1.2, format 0, classes 2/1) filtered and assessed."""
     src = isprs_dir / "samp54.laz"
     out = tmp_path / "samp54_lsq.laz"
-    qp.run("geomatics:lsqgroundfilter", INPUT=src, OUTPUT=out, TILE_SIZE=50,
+    qgis_process.run("geomatics:lsqgroundfilter", INPUT=src, OUTPUT=out, TILE_SIZE=50,
            THRESHOLD=1.0)
     _same_except_class(src, out)
-    r = qp.run("geomatics:groundfilteraccuracy", INPUT=out, REFERENCE=src)["results"]
+    r = qgis_process.run("geomatics:groundfilteraccuracy", INPUT=out, REFERENCE=src)["results"]
     assert abs(r["TOTAL"] - 4.04) <= 1.5
 
 
-def test_cli_bad_threshold_writes_nothing(qp, laz, tmp_path):
+def test_cli_bad_threshold_writes_nothing(qgis_process, laz, tmp_path):
     out = tmp_path / "never.laz"
-    msg = qp.run_expect_failure("geomatics:lsqgroundfilter", INPUT=laz, OUTPUT=out,
+    msg = qgis_process.run_expect_failure("geomatics:lsqgroundfilter", INPUT=laz, OUTPUT=out,
                                 THRESHOLD=0)
     assert "THRESHOLD must be a positive number" in msg
     assert not out.exists()

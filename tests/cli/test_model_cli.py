@@ -15,12 +15,6 @@ MODEL = ROOT / "models" / "lidar_to_dtm.model3"
 
 
 @pytest.fixture(scope="module")
-def qp(qgis_process):
-    """The shared runner (conftest puts the venv's packages on its PYTHONPATH)."""
-    return qgis_process
-
-
-@pytest.fixture(scope="module")
 def demo(tmp_path_factory):
     d = tmp_path_factory.mktemp("model")
     tile = generate_tile(extent=(120.0, 120.0), density=2.0, seed=6)
@@ -31,7 +25,7 @@ def demo(tmp_path_factory):
     return d
 
 
-def run_model(qp, model, d, **extra):
+def run_model(qgis_process, model, d, **extra):
     out = d / str(model.stem).replace(":", "_")
     out.mkdir(exist_ok=True)
     params = {"INPUT": d / "demo.laz", "CHECKPOINTS_CSV": d / "checkpoints.csv",
@@ -41,7 +35,7 @@ def run_model(qp, model, d, **extra):
               "dtm:DTM": out / "dtm.tif", "dtm:DTM_REPORT": out / "dtm.html",
               "accuracy:RESIDUALS": out / "residuals.gpkg",
               "accuracy:ACCURACY_REPORT": out / "accuracy.html", **extra}
-    res = qp.run(str(model), **{k: str(v) for k, v in params.items()})
+    res = qgis_process.run(str(model), **{k: str(v) for k, v in params.items()})
     return res, out
 
 
@@ -55,24 +49,24 @@ def check_outputs(res, out):
     assert "RMSE" in log
 
 
-def test_chain_with_slope_filter(qp, demo):
+def test_chain_with_slope_filter(qgis_process, demo):
     """The same chain built with the Vosselman slope filter (always available)."""
     model = demo / "slope_chain.model3"
     subprocess.run([sys.executable, str(ROOT / "scripts" / "build_model.py"), "--filter",
                     "slope", "--out", str(model)], check=True, capture_output=True)
-    res, out = run_model(qp, model, demo, RADIUS=3, SLOPE=44)
+    res, out = run_model(qgis_process, model, demo, RADIUS=3, SLOPE=44)
     check_outputs(res, out)
 
 
-def test_shipped_model(qp, demo):
+def test_shipped_model(qgis_process, demo):
     if not MODEL.exists():
         pytest.skip(f"{MODEL} not built yet (needs geomatics:lsqgroundfilter)")
-    listing = qp.call("list").stdout
+    listing = qgis_process.call("list").stdout
     if "geomatics:lsqgroundfilter" not in listing:
         pytest.skip("geomatics:lsqgroundfilter is not registered")
-    res, out = run_model(qp, MODEL, demo)
+    res, out = run_model(qgis_process, MODEL, demo)
     check_outputs(res, out)
     # the provider also offers the shipped model as geomatics:lidar_to_dtm
     if "geomatics:lidar_to_dtm" in listing:
-        res, out = run_model(qp, Path("geomatics:lidar_to_dtm"), demo)
+        res, out = run_model(qgis_process, Path("geomatics:lidar_to_dtm"), demo)
         check_outputs(res, out)

@@ -9,12 +9,6 @@ from geomatics_toolbox.core.synthetic import generate_tile, write_tile
 
 
 @pytest.fixture(scope="module")
-def qp(qgis_process):
-    """The shared runner (conftest puts the venv's packages on its PYTHONPATH)."""
-    return qgis_process
-
-
-@pytest.fixture(scope="module")
 def data(tmp_path_factory):
     d = tmp_path_factory.mktemp("terrain_cli")
     tile = generate_tile(extent=(80.0, 80.0), density=2.0, seed=2, n_buildings=1, n_halls=0)
@@ -27,28 +21,28 @@ def data(tmp_path_factory):
     return d, str(laz), str(csv)
 
 
-def test_idw_kriging_dsm_accuracy_cli(qp, data):
+def test_idw_kriging_dsm_accuracy_cli(qgis_process, data):
     d, laz, csv = data
-    idw = qp.run("geomatics:idwdtm", INPUT=laz, CELL_SIZE=1, POWER=3,
+    idw = qgis_process.run("geomatics:idwdtm", INPUT=laz, CELL_SIZE=1, POWER=3,
                            OUTPUT=str(d / "idw.tif"), OUTPUT_HTML=str(d / "idw.html"))
     assert idw["results"]["N_POINTS"] > 1000
     assert read_raster(d / "idw.tif").crs
-    kr = qp.run("geomatics:krigingdtm", INPUT=laz, CELL_SIZE=2, NEIGHBOURS=12,
+    kr = qgis_process.run("geomatics:krigingdtm", INPUT=laz, CELL_SIZE=2, NEIGHBOURS=12,
                           OUTPUT=str(d / "kr.tif"), OUTPUT_VARIANCE=str(d / "krv.tif"))
     assert kr["results"]["SILL"] > 0 and (d / "krv.tif").exists()
-    ds = qp.run("geomatics:dsm", INPUT=laz, DTM=str(d / "idw.tif"),
+    ds = qgis_process.run("geomatics:dsm", INPUT=laz, DTM=str(d / "idw.tif"),
                           OUTPUT=str(d / "dsm.tif"), OUTPUT_NDSM=str(d / "ndsm.tif"))
     assert ds["results"]["VALID_CELLS"] > 1000 and (d / "ndsm.tif").exists()
-    acc = qp.run("geomatics:dtmaccuracy", DTM=str(d / "idw.tif"),
+    acc = qgis_process.run("geomatics:dtmaccuracy", DTM=str(d / "idw.tif"),
                            CHECKPOINTS_CSV=csv, OUTPUT=str(d / "res.gpkg"),
                            OUTPUT_HTML=str(d / "acc.html"))
     assert acc["results"]["N"] == 8 and acc["results"]["RMSE"] < 0.3
     assert (d / "acc.html").exists() and (d / "res.gpkg").exists()
 
 
-def test_cli_bad_class_filter(qp, data):
+def test_cli_bad_class_filter(qgis_process, data):
     d, laz, _ = data
-    msg = qp.run_expect_failure("geomatics:idwdtm", INPUT=laz, CLASSES="9",
+    msg = qgis_process.run_expect_failure("geomatics:idwdtm", INPUT=laz, CLASSES="9",
                                           OUTPUT=str(d / "none.tif"))
     assert "No ground points in the input class filter" in msg
     assert not (d / "none.tif").exists()
