@@ -290,6 +290,21 @@ def default_max_distance(grid: GridSpec, n_points: int, *, factor: float = 5.0) 
     return max(factor * s, 2.0 * grid.cell)
 
 
+def resolve_max_distance(grid: GridSpec, n_points: int, max_distance: Optional[float],
+                         *, fill: bool = False) -> Optional[float]:
+    """The gap distance a gridder uses: ``None`` (no mask) when ``fill``, the
+    :func:`default_max_distance` when ``max_distance`` is None, else ``max_distance``
+    after checking it is positive."""
+    if fill:
+        return None
+    if max_distance is None:
+        return default_max_distance(grid, n_points)
+    if not (max_distance > 0):
+        raise ValueError(f"max_distance must be > 0 (m), got {max_distance}; leave it empty "
+                         "for the automatic value or fill the gaps instead.")
+    return float(max_distance)
+
+
 def distance_mask(tree, grid: GridSpec, max_distance: float, *, row0: int = 0,
                   row1: Optional[int] = None, workers: int = -1) -> np.ndarray:
     """True for cells of rows ``row0:row1`` whose nearest point is within ``max_distance``.

@@ -46,7 +46,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from .coords import as_xyz
-from .grid import GridSpec, check_memory, default_max_distance, row_blocks
+from .grid import GridSpec, check_memory, resolve_max_distance, row_blocks
 from .progress import Monitor
 
 #: squared distance below which a node "is on" a point (GDAL's constant)
@@ -347,12 +347,7 @@ def idw_grid(x, y, z, grid: GridSpec, *, power: float = 2.0, max_points: int = 1
     interp = IDW(x, y, z, power=power, max_points=max_points, radius=radius,
                  min_points=min_points, smoothing=smoothing, workers=workers,
                  tie_order=tie_order)
-    if fill:
-        max_distance = None
-    elif max_distance is None:
-        max_distance = default_max_distance(grid, interp.n_points)
-    elif not (max_distance > 0):
-        raise ValueError(f"max_distance must be > 0, got {max_distance}.")
+    max_distance = resolve_max_distance(grid, interp.n_points, max_distance, fill=fill)
     out = np.full(grid.shape, np.nan)
     mon.step(0.0)
     for r0, r1 in row_blocks(grid.nrows, grid.ncols, block_cells):

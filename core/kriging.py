@@ -65,7 +65,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from .coords import as_xyz
-from .grid import GridSpec, check_memory, default_max_distance, row_blocks
+from .grid import GridSpec, check_memory, resolve_max_distance, row_blocks
 from .progress import Monitor
 
 MODELS = ("linear", "power", "gaussian", "spherical", "exponential")
@@ -676,12 +676,7 @@ def kriging_grid(x, y, z, grid: GridSpec, *, model: str = "spherical",
     mon.step(0.05)
     kr = Kriging(x, y, z, variogram=variogram, drift=drift, n_closest=n_closest,
                  workers=workers)
-    if fill:
-        max_distance = None
-    elif max_distance is None:
-        max_distance = default_max_distance(grid, kr.n_points)
-    elif not (max_distance > 0):
-        raise ValueError(f"max_distance must be > 0, got {max_distance}.")
+    max_distance = resolve_max_distance(grid, kr.n_points, max_distance, fill=fill)
     cv = None
     cv_points = int(cv_points)
     sub = mon.sub(0.1, 0.95 if cv_points else 1.0)
