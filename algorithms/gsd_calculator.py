@@ -282,10 +282,10 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
                   (self.tr("Focal length"), camera["focal_length"], "mm")]
         body = (f"<h2>{self.tr('Inputs')}</h2>"
                 + html_table((self.tr("quantity"), self.tr("value"), self.tr("unit")),
-                             inputs, digits=4)
+                             inputs, digits=None)
                 + f"<h2>{self.tr('Results')}</h2>"
                 + html_table((self.tr("quantity"), self.tr("value"), self.tr("unit")),
-                             rows, digits=4)
+                             rows, digits=None)
                 + "<p class='note'>" + self.tr(
                     "Formulas and defaults from Al Khalil (2019); the paper finds observed "
                     "phototriangulation accuracy about 3–5 times the theoretical value. "

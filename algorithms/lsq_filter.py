@@ -12,6 +12,7 @@ from ..core import lsq_filter as core_lsq
 from ..core.atomic import atomic_output, check_not_input
 from ..core.las_io import read_las, write_las_like
 from ..core.progress import Cancelled
+from ..core.raster_io import crs_label
 from ..core.report import esc, html_page, html_params, html_table
 from .base import GeomaticsAlgorithm
 
@@ -311,7 +312,8 @@ class LsqGroundFilterAlgorithm(GeomaticsAlgorithm):
     def report(self, src, pd, res, opts, t_read, total) -> str:
         tr = self.tr
         n = len(pd)
-        params = {tr("input"): src, tr("points"): n, tr("CRS"): pd.info.crs or tr("none"),
+        params = {tr("input"): src, tr("points"): n,
+                  tr("CRS"): crs_label(pd.info.crs) or tr("none"),
                   tr("mode"): opts["mode"], tr("order"): opts["order"],
                   tr("polynomial"): " + ".join(
                       f"b{i}·{t}" if t != "1" else "b0"

@@ -41,6 +41,28 @@ def srs_wkt(crs: Optional[str]) -> str:
     return srs.ExportToWkt()
 
 
+def crs_label(crs: Optional[str]) -> str:
+    """Short human label of a CRS for reports: 'EPSG:32632 (WGS 84 / UTM zone 32N)'.
+
+    Falls back to the CRS's name, then to the input text; '' for None.
+    """
+    if not crs:
+        return ""
+    from osgeo import osr
+    srs = osr.SpatialReference()
+    try:
+        if srs.SetFromUserInput(str(crs)) != 0:
+            return str(crs)
+    except RuntimeError:
+        return str(crs)
+    name = srs.GetName() or ""
+    srs.AutoIdentifyEPSG()
+    auth, code = srs.GetAuthorityName(None), srs.GetAuthorityCode(None)
+    if auth and code:
+        return f"{auth}:{code} ({name})" if name else f"{auth}:{code}"
+    return name or str(crs)
+
+
 @dataclass
 class Raster:
     """A single-band raster in memory."""

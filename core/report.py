@@ -23,7 +23,7 @@ h2{font-size:1.15em;margin-top:1.4em;color:#1f5f8b}
 table{border-collapse:collapse;margin:.5em 0;direction:ltr}
 th,td{border:1px solid #bbb;padding:.2em .6em;text-align:right;font-variant-numeric:tabular-nums}
 th{background:#eef3f7;text-align:center}
-td.text{text-align:left}
+td.text{text-align:left;max-width:48em;overflow-wrap:anywhere}
 .ok{color:#1a7f37;font-weight:bold}.fail{color:#b42318;font-weight:bold}
 .note{color:#555;font-size:.9em}
 svg{background:#fff;border:1px solid #ddd;margin:.3em 0}
@@ -35,8 +35,9 @@ def esc(value) -> str:
     return html.escape(str(value), quote=True)
 
 
-def fmt(value, digits: int = 3) -> str:
-    """Format a number for a report: fixed decimals, thousands kept plain, NaN as '–'."""
+def fmt(value, digits: Optional[int] = 3) -> str:
+    """Format a number for a report: ``digits`` fixed decimals (``None``: six significant
+    digits, e.g. 0.21455 or 3648), integers plain, NaN as '–'."""
     if value is None:
         return "–"
     if isinstance(value, (bool, np.bool_)):
@@ -49,6 +50,8 @@ def fmt(value, digits: int = 3) -> str:
         return esc(value)
     if not math.isfinite(v):
         return "–"
+    if digits is None:
+        return f"{v:.6g}"
     return f"{v:.{digits}f}"
 
 
@@ -60,7 +63,8 @@ def html_page(title: str, body_html: str, *, lang: str = "en") -> str:
             f"</head>\n<body>\n<h1>{esc(title)}</h1>\n{body_html}\n</body>\n</html>\n")
 
 
-def html_table(headers: Sequence[str], rows: Iterable[Sequence], *, digits: int = 3,
+def html_table(headers: Sequence[str], rows: Iterable[Sequence], *,
+               digits: Optional[int] = 3,
                caption: Optional[str] = None) -> str:
     """An HTML table; numbers are formatted with :func:`fmt`, strings escaped."""
     out = ["<table>"]

@@ -17,7 +17,7 @@ def test_golden_numbers_through_processing(qgis_processing, tmp_path):
     assert res["DISTANCE_FOR_TARGET"] == pytest.approx(5.755, abs=5e-4)
     assert res["RATIO_XYZ"] is None
     text = html.read_text(encoding="utf-8")
-    assert "0.2146" in text and "1.2873" in text
+    assert "0.21455" in text and "1.2873" in text and "7.82679" in text
 
 
 def test_rounded_and_ratios(qgis_processing):
