@@ -23,7 +23,7 @@ h2{font-size:1.15em;margin-top:1.4em;color:#1f5f8b}
 table{border-collapse:collapse;margin:.5em 0;direction:ltr}
 th,td{border:1px solid #bbb;padding:.2em .6em;text-align:right;font-variant-numeric:tabular-nums}
 th{background:#eef3f7;text-align:center}
-td.text{text-align:left;max-width:48em;overflow-wrap:anywhere}
+td.text{text-align:left}
 .ok{color:#1a7f37;font-weight:bold}.fail{color:#b42318;font-weight:bold}
 .note{color:#555;font-size:.9em}
 svg{background:#fff;border:1px solid #ddd;margin:.3em 0}
