@@ -60,7 +60,7 @@ out = pathlib.Path(sys.argv[1])
 for f in sorted(out.glob("*.json")):
     text = f.read_text()
     res = json.loads(text[text.find("{"):]).get("results", {})
-    nums = {k: round(v, 4) for k, v in res.items() if isinstance(v, float)}
+    nums = {k: float(f"{v:.6g}") for k, v in res.items() if isinstance(v, float)}
     files = {k: v for k, v in res.items() if isinstance(v, str)}
     print(f"{f.stem}: {nums or ''} {files or ''}")
     data = json.loads(text[text.find("{"):])
