@@ -280,10 +280,11 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
                   (self.tr("Sensor width"), camera["sensor_width"], "mm"),
                   (self.tr("Image width"), camera["image_width"], "px"),
                   (self.tr("Focal length"), camera["focal_length"], "mm")]
-        body = (f"<h2>{self.tr('Inputs')}</h2>"
+        h_inputs, h_results = self.tr("Inputs"), self.tr("Results")
+        body = (f"<h2>{h_inputs}</h2>"
                 + html_table((self.tr("quantity"), self.tr("value"), self.tr("unit")),
                              inputs, digits=None)
-                + f"<h2>{self.tr('Results')}</h2>"
+                + f"<h2>{h_results}</h2>"
                 + html_table((self.tr("quantity"), self.tr("value"), self.tr("unit")),
                              rows, digits=None)
                 + "<p class='note'>" + self.tr(

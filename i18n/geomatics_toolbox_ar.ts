@@ -109,7 +109,7 @@
         <translation>الصنف بعد الفلترة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="371"/>
+        <location filename="../algorithms/lsq_filter.py" line="373"/>
         <source>points</source>
         <translation>عدد النقاط</translation>
     </message>
@@ -124,272 +124,272 @@
         <translation>دقة فلتر نقاط الأرض</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="314"/>
+        <location filename="../algorithms/lsq_filter.py" line="315"/>
         <source>input</source>
         <translation>ملف الإدخال</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="314"/>
+        <location filename="../algorithms/lsq_filter.py" line="316"/>
         <source>CRS</source>
         <translation>نظام الإحداثيات (CRS)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="314"/>
+        <location filename="../algorithms/lsq_filter.py" line="316"/>
         <source>none</source>
         <translation>لا يوجد</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="315"/>
+        <location filename="../algorithms/lsq_filter.py" line="317"/>
         <source>mode</source>
         <translation>النمط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="315"/>
+        <location filename="../algorithms/lsq_filter.py" line="317"/>
         <source>order</source>
         <translation>الدرجة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="316"/>
+        <location filename="../algorithms/lsq_filter.py" line="318"/>
         <source>polynomial</source>
         <translation>متعدد الحدود</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="381"/>
+        <location filename="../algorithms/lsq_filter.py" line="383"/>
         <source>tile size (m)</source>
         <translation>حجم البلاطة (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="320"/>
+        <location filename="../algorithms/lsq_filter.py" line="322"/>
         <source>threshold T (m)</source>
         <translation>العتبة T (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="321"/>
+        <location filename="../algorithms/lsq_filter.py" line="323"/>
         <source>max iterations</source>
         <translation>الحد الأقصى للتكرارات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="322"/>
+        <location filename="../algorithms/lsq_filter.py" line="324"/>
         <source>stop tolerance (m)</source>
         <translation>سماحية التوقف (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="323"/>
+        <location filename="../algorithms/lsq_filter.py" line="325"/>
         <source>fitting subset per tile</source>
         <translation>المجموعة الجزئية للمواءمة في كل بلاطة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="323"/>
+        <location filename="../algorithms/lsq_filter.py" line="325"/>
         <source>all points</source>
         <translation>جميع النقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="324"/>
+        <location filename="../algorithms/lsq_filter.py" line="326"/>
         <source>seed</source>
         <translation>البذرة العشوائية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="325"/>
+        <location filename="../algorithms/lsq_filter.py" line="327"/>
         <source>min points per tile</source>
         <translation>الحد الأدنى للنقاط في البلاطة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="326"/>
+        <location filename="../algorithms/lsq_filter.py" line="328"/>
         <source>under-populated tiles</source>
         <translation>البلاطات قليلة النقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="327"/>
+        <location filename="../algorithms/lsq_filter.py" line="329"/>
         <source>rejection</source>
         <translation>الاستبعاد</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="328"/>
+        <location filename="../algorithms/lsq_filter.py" line="330"/>
         <source>low-outlier pre-filter</source>
         <translation>الفلترة المسبقة للقيم الشاذة المنخفضة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="329"/>
+        <location filename="../algorithms/lsq_filter.py" line="331"/>
         <source>pre-filter cell / depth (m)</source>
         <translation>خلية / عمق الفلترة المسبقة (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="331"/>
+        <location filename="../algorithms/lsq_filter.py" line="333"/>
         <source>grid origin (min x, min y)</source>
         <translation>مبدأ الشبكة (أصغر x، أصغر y)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="334"/>
+        <location filename="../algorithms/lsq_filter.py" line="336"/>
         <source>levels (× tile size)</source>
         <translation>المستويات (× حجم البلاطة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="335"/>
+        <location filename="../algorithms/lsq_filter.py" line="337"/>
         <source>window overlap</source>
         <translation>تداخل النوافذ</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="336"/>
+        <location filename="../algorithms/lsq_filter.py" line="338"/>
         <source>slope factor (m) / cap (m)</source>
         <translation>معامل الميل (م) / الحد الأعلى (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="338"/>
+        <location filename="../algorithms/lsq_filter.py" line="340"/>
         <source>ground</source>
         <translation>أرض</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="338"/>
+        <location filename="../algorithms/lsq_filter.py" line="340"/>
         <source>other (object)</source>
         <translation>أخرى (جسم)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="338"/>
+        <location filename="../algorithms/lsq_filter.py" line="340"/>
         <source>low noise</source>
         <translation>ضوضاء منخفضة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="339"/>
+        <location filename="../algorithms/lsq_filter.py" line="341"/>
         <source>never classified</source>
         <translation>لم تُصنَّف قط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="361"/>
+        <location filename="../algorithms/lsq_filter.py" line="363"/>
         <source>reading</source>
         <translation>القراءة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="364"/>
+        <location filename="../algorithms/lsq_filter.py" line="366"/>
         <source>filter total</source>
         <translation>إجمالي الفلترة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="365"/>
+        <location filename="../algorithms/lsq_filter.py" line="367"/>
         <source>run total (read, filter, write)</source>
         <translation>إجمالي التشغيل (قراءة، فلترة، كتابة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="366"/>
+        <location filename="../algorithms/lsq_filter.py" line="368"/>
         <source>points per second (run)</source>
         <translation>نقطة في الثانية (التشغيل)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="367"/>
+        <location filename="../algorithms/lsq_filter.py" line="369"/>
         <source>points per second (filter)</source>
         <translation>نقطة في الثانية (الفلترة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="368"/>
+        <location filename="../algorithms/lsq_filter.py" line="370"/>
         <source>step</source>
         <translation>الخطوة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="369"/>
+        <location filename="../algorithms/lsq_filter.py" line="371"/>
         <source>Parameters</source>
         <translation>المعاملات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="371"/>
+        <location filename="../algorithms/lsq_filter.py" line="373"/>
         <source>class</source>
         <translation>الصنف</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="371"/>
+        <location filename="../algorithms/lsq_filter.py" line="373"/>
         <source>meaning</source>
         <translation>المعنى</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="374"/>
+        <location filename="../algorithms/lsq_filter.py" line="376"/>
         <source>Kept heights after each iteration, aggregated over the tiles (a tile that has stopped keeps its last values); the layout of the paper's Tables 1–2.</source>
         <translation>الارتفاعات المُبقاة بعد كل تكرار، مجمَّعة على البلاطات (البلاطة التي توقفت تحتفظ بآخر قيمها)؛ على نسق الجدولين 1–2 في البحث.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="378"/>
+        <location filename="../algorithms/lsq_filter.py" line="380"/>
         <source>tiles still iterating</source>
         <translation>بلاطات قيد التكرار</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="381"/>
+        <location filename="../algorithms/lsq_filter.py" line="383"/>
         <source>level</source>
         <translation>المستوى</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="393"/>
+        <location filename="../algorithms/lsq_filter.py" line="395"/>
         <source>tiles</source>
         <translation>عدد البلاطات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="381"/>
+        <location filename="../algorithms/lsq_filter.py" line="383"/>
         <source>fitted</source>
         <translation>بلاطات مُوائَمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="381"/>
+        <location filename="../algorithms/lsq_filter.py" line="383"/>
         <source>ground seeds</source>
         <translation>نقاط الأرض الابتدائية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="381"/>
+        <location filename="../algorithms/lsq_filter.py" line="383"/>
         <source>seconds</source>
         <translation>ثانية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="386"/>
+        <location filename="../algorithms/lsq_filter.py" line="388"/>
         <source>The iteration and tile tables below describe the finest level.</source>
         <translation>يصف جدولا التكرارات والبلاطات أدناه المستوى الأدق.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="394"/>
+        <location filename="../algorithms/lsq_filter.py" line="396"/>
         <source>status</source>
         <translation>الحالة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="394"/>
+        <location filename="../algorithms/lsq_filter.py" line="396"/>
         <source>column</source>
         <translation>العمود</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="394"/>
+        <location filename="../algorithms/lsq_filter.py" line="396"/>
         <source>row</source>
         <translation>الصف</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="394"/>
+        <location filename="../algorithms/lsq_filter.py" line="396"/>
         <source>fitting points</source>
         <translation>نقاط المواءمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="394"/>
+        <location filename="../algorithms/lsq_filter.py" line="396"/>
         <source>iterations</source>
         <translation>التكرارات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="394"/>
+        <location filename="../algorithms/lsq_filter.py" line="396"/>
         <source>kept</source>
         <translation>المُبقاة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="398"/>
+        <location filename="../algorithms/lsq_filter.py" line="400"/>
         <source>Showing the {k} fullest of {n} tiles.</source>
         <translation>تُعرض البلاطات الـ{k} الأكثر نقاطاً من أصل {n} بلاطة.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="402"/>
+        <location filename="../algorithms/lsq_filter.py" line="404"/>
         <source>stage</source>
         <translation>المرحلة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="402"/>
+        <location filename="../algorithms/lsq_filter.py" line="404"/>
         <source>seconds or points/s</source>
         <translation>ثانية أو نقطة/ث</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
+        <location filename="../algorithms/lsq_filter.py" line="406"/>
         <source>Method: tiled least-squares polynomial filter, Damascus Univ. J. Eng. Sci. 29(2), 2013. Improved mode and the low-outlier pre-filter are ours. Accuracy terms (Type I, Type II, total) after Sithole &amp; Vosselman (2004).</source>
         <translation>الطريقة: فلتر متعدد الحدود بالمربعات الصغرى على بلاطات، مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013. النمط المحسَّن والفلترة المسبقة للقيم الشاذة المنخفضة من إضافتنا. مصطلحات الدقة (النوع الأول، النوع الثاني، الكلي) وفق Sithole &amp; Vosselman (2004).</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="409"/>
+        <location filename="../algorithms/lsq_filter.py" line="411"/>
         <source>Ground filter (least-squares polynomial)</source>
         <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
     </message>
@@ -825,62 +825,62 @@
 <context>
     <name>GsdBatchAlgorithm</name>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="323"/>
+        <location filename="../algorithms/gsd_calculator.py" line="324"/>
         <source>GSD and photogrammetric accuracy calculator (batch table)</source>
         <translation>حاسبة GSD والدقة التصويرية (جدول دفعي)</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="326"/>
+        <location filename="../algorithms/gsd_calculator.py" line="327"/>
         <source>&lt;p&gt;Runs the GSD / accuracy calculator for every row of a table (CSV, spreadsheet or any layer) and writes a table with the inputs and all results.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Input columns&lt;/b&gt; (case-insensitive): &lt;i&gt;camera&lt;/i&gt; (optional preset key: nikon_p100, dji_p4rtk, dji_p1_35, phaseone_ixm100_80), &lt;i&gt;distance&lt;/i&gt; (m, required), &lt;i&gt;sensor_width&lt;/i&gt; (mm), &lt;i&gt;image_width&lt;/i&gt; (px), &lt;i&gt;focal_length&lt;/i&gt; (mm) — required unless a camera preset is given — and optionally sensor_height, image_height, target_gsd, k_m, k_s, pyramid_level, subsampling_step, observed_sx, observed_sy, observed_sz, observed_sxyz, observed_dense_std, forward_overlap, side_overlap, stereo_base (units as in the single calculator).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output&lt;/b&gt;: the input columns plus gsd_cm, footprint_width_m, sigma_xyz_mm, dense_resolution_cm and every other result. A row with an invalid value stops the run with an error naming the row and column.&lt;/p&gt;</source>
         <translation>&lt;p&gt;تشغّل حاسبة GSD والدقة لكل سطر من جدول (CSV أو جدول بيانات أو أي طبقة) وتكتب جدولاً بالمدخلات وجميع النتائج.&lt;/p&gt;&lt;p&gt;&lt;b&gt;أعمدة الإدخال&lt;/b&gt; (دون تمييز حالة الأحرف): &lt;i&gt;camera&lt;/i&gt; (اختياري، مفتاح كاميرا معرّفة: nikon_p100، dji_p4rtk، dji_p1_35، phaseone_ixm100_80)، &lt;i&gt;distance&lt;/i&gt; (م، إلزامي)، &lt;i&gt;sensor_width&lt;/i&gt; (مم)، &lt;i&gt;image_width&lt;/i&gt; (بكسل)، &lt;i&gt;focal_length&lt;/i&gt; (مم) — إلزامية ما لم تُحدَّد كاميرا — واختيارياً sensor_height وimage_height وtarget_gsd وk_m وk_s وpyramid_level وsubsampling_step وobserved_sx وobserved_sy وobserved_sz وobserved_sxyz وobserved_dense_std وforward_overlap وside_overlap وstereo_base (بالوحدات نفسها كما في الحاسبة المفردة).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المخرج&lt;/b&gt;: أعمدة الإدخال مضافاً إليها gsd_cm وfootprint_width_m وsigma_xyz_mm وdense_resolution_cm وسائر النتائج. السطر الذي يحوي قيمة غير صالحة يوقف التشغيل برسالة تذكر السطر والعمود.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="344"/>
+        <location filename="../algorithms/gsd_calculator.py" line="345"/>
         <source>Table of cameras and distances</source>
         <translation>جدول الكاميرات والمسافات</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="347"/>
+        <location filename="../algorithms/gsd_calculator.py" line="348"/>
         <source>Round GSD to 0.01 cm/px like the paper</source>
         <translation>تقريب GSD إلى 0.01 سم/بكسل كما في البحث</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="349"/>
+        <location filename="../algorithms/gsd_calculator.py" line="350"/>
         <source>GSD results</source>
         <translation>نتائج GSD</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="358"/>
+        <location filename="../algorithms/gsd_calculator.py" line="359"/>
         <source>The table has no &apos;distance&apos; column (m); columns found: {0}.</source>
         <translation>لا يحتوي الجدول على العمود 'distance' (م)؛ الأعمدة الموجودة: {0}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="374"/>
+        <location filename="../algorithms/gsd_calculator.py" line="375"/>
         <source>Cancelled by the user.</source>
         <translation>ألغى المستخدم العملية.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="380"/>
+        <location filename="../algorithms/gsd_calculator.py" line="381"/>
         <source>Row {row}: unknown camera &apos;{cam}&apos;; known: {known}.</source>
         <translation>السطر {row}: كاميرا غير معروفة '{cam}'؛ المعروفة: {known}.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="397"/>
+        <location filename="../algorithms/gsd_calculator.py" line="398"/>
         <source>Row {row}, column &apos;{col}&apos;: &apos;{val}&apos; is not a number.</source>
         <translation>السطر {row}، العمود '{col}': القيمة '{val}' ليست رقماً.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="403"/>
+        <location filename="../algorithms/gsd_calculator.py" line="404"/>
         <source>Row {row}: missing {cols}; give the columns or a camera preset.</source>
         <translation>السطر {row}: القيم {cols} ناقصة؛ أضف الأعمدة أو حدّد كاميرا معرّفة مسبقاً.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="409"/>
+        <location filename="../algorithms/gsd_calculator.py" line="410"/>
         <source>Row {row}: {err}</source>
         <translation>السطر {row}: {err}</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="326"/>
+        <location filename="../algorithms/gsd_calculator.py" line="327"/>
         <source>&lt;p&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;تقريب GSD كما في البحث&lt;/b&gt; (ROUND_GSD، الافتراضي: لا): يقرّب GSD إلى 0.01 سم/بكسل قبل حساب الكميات المشتقة.&lt;/p&gt;</translation>
     </message>
@@ -1148,29 +1148,39 @@
         <translation>البعد البؤري</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="283"/>
+        <location filename="../algorithms/gsd_calculator.py" line="284"/>
         <source>quantity</source>
         <translation>الكمية</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="283"/>
+        <location filename="../algorithms/gsd_calculator.py" line="284"/>
         <source>value</source>
         <translation>القيمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="283"/>
+        <location filename="../algorithms/gsd_calculator.py" line="284"/>
         <source>unit</source>
         <translation>الوحدة</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="283"/>
+        <location filename="../algorithms/gsd_calculator.py" line="284"/>
         <source>Formulas and defaults from Al Khalil (2019); the paper finds observed phototriangulation accuracy about 3–5 times the theoretical value. Items marked (extension) are not in the paper.</source>
         <translation>المعادلات والقيم الافتراضية من الخليل (2019)؛ وجد البحث أن دقة التثليث التصويري المرصودة تعادل نحو 3–5 أضعاف القيمة النظرية. البنود المعلَّمة بـ(إضافة) ليست من البحث.</translation>
     </message>
     <message>
-        <location filename="../algorithms/gsd_calculator.py" line="293"/>
+        <location filename="../algorithms/gsd_calculator.py" line="294"/>
         <source>GSD and photogrammetric accuracy</source>
         <translation>GSD والدقة التصويرية</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/gsd_calculator.py" line="283"/>
+        <source>Inputs</source>
+        <translation>المدخلات</translation>
+    </message>
+    <message>
+        <location filename="../algorithms/gsd_calculator.py" line="283"/>
+        <source>Results</source>
+        <translation>النتائج</translation>
     </message>
 </context>
 <context>
@@ -1332,202 +1342,202 @@
 <context>
     <name>LsqGroundFilterAlgorithm</name>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="61"/>
+        <location filename="../algorithms/lsq_filter.py" line="62"/>
         <source>Ground filter (least-squares polynomial)</source>
         <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="64"/>
+        <location filename="../algorithms/lsq_filter.py" line="65"/>
         <source>lidar,ground,filter,bare earth,dtm,classification,least squares,polynomial,tiles,las,laz,isprs</source>
         <translation>ليدار,أرض,فلتر,الأرض العارية,dtm,تصنيف,المربعات الصغرى,متعدد الحدود,بلاطات,las,laz,isprs</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="126"/>
+        <location filename="../algorithms/lsq_filter.py" line="127"/>
         <source>Point cloud (LAS/LAZ)</source>
         <translation>سحابة النقاط (LAS/LAZ)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="129"/>
+        <location filename="../algorithms/lsq_filter.py" line="130"/>
         <source>Polynomial order (1 or 2)</source>
         <translation>درجة متعدد الحدود (1 أو 2)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="131"/>
+        <location filename="../algorithms/lsq_filter.py" line="132"/>
         <source>Tile size (m)</source>
         <translation>حجم البلاطة (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="132"/>
+        <location filename="../algorithms/lsq_filter.py" line="133"/>
         <source>Threshold T (m)</source>
         <translation>العتبة T (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="133"/>
+        <location filename="../algorithms/lsq_filter.py" line="134"/>
         <source>Mode</source>
         <translation>النمط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="133"/>
+        <location filename="../algorithms/lsq_filter.py" line="134"/>
         <source>Faithful (the paper)</source>
         <translation>مطابق (طريقة البحث)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="133"/>
+        <location filename="../algorithms/lsq_filter.py" line="134"/>
         <source>Improved (ours, beyond the paper)</source>
         <translation>محسَّن (من إضافتنا، يتجاوز البحث)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="138"/>
+        <location filename="../algorithms/lsq_filter.py" line="139"/>
         <source>Maximum iterations per tile</source>
         <translation>الحد الأقصى للتكرارات في كل بلاطة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="141"/>
+        <location filename="../algorithms/lsq_filter.py" line="142"/>
         <source>Stop tolerance on min/max/mean/std (m)</source>
         <translation>سماحية التوقف على الأدنى/الأعلى/المتوسط/الانحراف المعياري (م)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="143"/>
+        <location filename="../algorithms/lsq_filter.py" line="144"/>
         <source>Random fitting subset per tile (points, 0 = all)</source>
         <translation>مجموعة جزئية عشوائية للمواءمة في كل بلاطة (نقاط، 0 = الكل)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="146"/>
+        <location filename="../algorithms/lsq_filter.py" line="147"/>
         <source>Random seed of the subset</source>
         <translation>البذرة العشوائية للمجموعة الجزئية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="148"/>
+        <location filename="../algorithms/lsq_filter.py" line="149"/>
         <source>Minimum points per tile (0 = 3 × coefficients)</source>
         <translation>الحد الأدنى للنقاط في البلاطة (0 = 3 × عدد معاملات متعدد الحدود)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="151"/>
+        <location filename="../algorithms/lsq_filter.py" line="152"/>
         <source>Under-populated tiles</source>
         <translation>البلاطات قليلة النقاط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="151"/>
+        <location filename="../algorithms/lsq_filter.py" line="152"/>
         <source>Borrow the nearest fitted tile&apos;s surface</source>
         <translation>استعارة سطح أقرب بلاطة مُوائَمة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="151"/>
+        <location filename="../algorithms/lsq_filter.py" line="152"/>
         <source>Leave their points unclassified (class 0)</source>
         <translation>ترك نقاطها دون تصنيف (الصنف 0)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="156"/>
+        <location filename="../algorithms/lsq_filter.py" line="157"/>
         <source>Rejection</source>
         <translation>الاستبعاد</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="156"/>
+        <location filename="../algorithms/lsq_filter.py" line="157"/>
         <source>Re-weighted each iteration (a point may return)</source>
         <translation>إعادة الترجيح في كل تكرار (قد تعود النقطة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="156"/>
+        <location filename="../algorithms/lsq_filter.py" line="157"/>
         <source>Cumulative (a rejected point stays out)</source>
         <translation>تراكمي (النقطة المستبعدة تبقى مستبعدة)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="161"/>
+        <location filename="../algorithms/lsq_filter.py" line="162"/>
         <source>Classified point cloud</source>
         <translation>سحابة النقاط المصنَّفة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="163"/>
+        <location filename="../algorithms/lsq_filter.py" line="164"/>
         <source>Ground points only</source>
         <translation>نقاط الأرض فقط</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="166"/>
+        <location filename="../algorithms/lsq_filter.py" line="167"/>
         <source>Report</source>
         <translation>التقرير</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="166"/>
+        <location filename="../algorithms/lsq_filter.py" line="167"/>
         <source>HTML files (*.html)</source>
         <translation>ملفات HTML (*.html)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="172"/>
+        <location filename="../algorithms/lsq_filter.py" line="173"/>
         <source>Ground points</source>
         <translation>نقاط الأرض</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="172"/>
+        <location filename="../algorithms/lsq_filter.py" line="173"/>
         <source>Other (object) points</source>
         <translation>النقاط الأخرى (الأجسام)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="172"/>
+        <location filename="../algorithms/lsq_filter.py" line="173"/>
         <source>Low-noise points</source>
         <translation>نقاط الضوضاء المنخفضة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="172"/>
+        <location filename="../algorithms/lsq_filter.py" line="173"/>
         <source>Unclassified points</source>
         <translation>النقاط غير المصنَّفة</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="172"/>
+        <location filename="../algorithms/lsq_filter.py" line="173"/>
         <source>Tiles</source>
         <translation>البلاطات</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="172"/>
+        <location filename="../algorithms/lsq_filter.py" line="173"/>
         <source>Points per second</source>
         <translation>نقطة في الثانية</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="212"/>
+        <location filename="../algorithms/lsq_filter.py" line="213"/>
         <source>Choose an output file for the classified cloud (OUTPUT, .laz or .las).</source>
         <translation>اختر ملف إخراج للسحابة المصنَّفة (OUTPUT، بالامتداد .laz أو .las).</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="216"/>
+        <location filename="../algorithms/lsq_filter.py" line="217"/>
         <source>Output point clouds must end in .las or .laz: {p}</source>
         <translation>يجب أن تنتهي أسماء ملفات سحب النقاط الناتجة بالامتداد .las أو .laz: {p}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="223"/>
+        <location filename="../algorithms/lsq_filter.py" line="224"/>
         <source>Reading {p}</source>
         <translation>جارٍ قراءة {p}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="228"/>
+        <location filename="../algorithms/lsq_filter.py" line="229"/>
         <source>{n} points; filtering ({mode} mode)</source>
         <translation>{n} نقطة؛ جارٍ الفلترة (النمط {mode})</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="235"/>
+        <location filename="../algorithms/lsq_filter.py" line="236"/>
         <source>{step}: {n} points kept, ZMin {a:.2f}, ZMax {b:.2f}, ZMean {m:.2f}, σ {s:.2f}; tiles iterating: {t}</source>
         <translation>{step}: أُبقيت {n} نقطة، ZMin {a:.2f}، ZMax {b:.2f}، ZMean {m:.2f}، σ {s:.2f}؛ بلاطات قيد التكرار: {t}</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="243"/>
+        <location filename="../algorithms/lsq_filter.py" line="244"/>
         <source>Ground {g}, other {o}, low noise {z}, unclassified {u}; {t} tiles; {s:.1f} s</source>
         <translation>أرض {g}، أخرى {o}، ضوضاء منخفضة {z}، غير مصنَّفة {u}؛ {t} بلاطة؛ {s:.1f} ث</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="249"/>
+        <location filename="../algorithms/lsq_filter.py" line="250"/>
         <source>No point was classified as ground, so the ground-only output would be empty; check TILE_SIZE and THRESHOLD.</source>
         <translation>لم تُصنَّف أي نقطة كأرض، لذا سيكون مخرج نقاط الأرض فارغاً؛ راجع TILE_SIZE وTHRESHOLD.</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="68"/>
+        <location filename="../algorithms/lsq_filter.py" line="69"/>
         <source>&lt;p&gt;Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). In every tile the surface is fitted, points more than THRESHOLD above it are dropped, and the fit is repeated until the minimum, maximum, mean and standard deviation of the kept heights stop changing (TOLERANCE) or MAX_ITERATIONS; then every point with z ≤ ẑ + THRESHOLD is ground. Any classification already in the file is ignored and replaced.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output classes&lt;/b&gt; (ASPRS): 2 ground, 1 other (buildings, vegetation), 7 low noise (pre-filter), 0 never classified (only with SPARSE_TILES = leave unclassified). Every other attribute of every point, the point format, scales, offsets, VLRs and CRS are copied unchanged.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file, projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Order&lt;/b&gt; (ORDER, default 2): 1 = plane z = b0 + b1·x + b2·y; 2 = quadratic z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (better on every sample of the paper).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Tile size&lt;/b&gt; (TILE_SIZE, m, default 50): larger than the largest building, so that every tile holds ground (paper: 100 m for large buildings, 50 m for small ones). Tiles are square, anchored at the minimum x, y.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Threshold&lt;/b&gt; (THRESHOLD, m, default 0.5): 0.5–1.0 m, larger on steeper terrain.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default Faithful): Faithful = the paper. Improved = ours, beyond the paper: coarse-to-fine tiles (2, 1, ½, ¼ × TILE_SIZE) fitted on overlapping windows, each level started from the previous level's ground, and a threshold that grows with the surface slope (by 2.5 m per unit gradient, at most 1 m). On the ISPRS samples it lowers the mean total error from 8.9 % (paper) to about 4.9 % with one parameter set; it costs about 15 times the time and twice the memory of the faithful mode (about 2 M points/s and 100 bytes per point in faithful mode).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours become class 7 and take no part in the fit (NOISE_RADIUS, m, default 5: neighbourhood cell; NOISE_THRESHOLD, m, default 1: depth below the neighbours).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum iterations&lt;/b&gt; (MAX_ITERATIONS, default 5, the paper's tables) and &lt;b&gt;stop tolerance&lt;/b&gt; (TOLERANCE, m, default 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Random fitting subset per tile&lt;/b&gt; (SUBSET_SIZE, points, default 0 = all; the paper used 5000) and its &lt;b&gt;seed&lt;/b&gt; (SEED). All points are classified.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points per tile&lt;/b&gt; (MIN_POINTS, default 0 = 3 × the number of coefficients) and &lt;b&gt;under-populated tiles&lt;/b&gt; (SPARSE_TILES): borrow the nearest fitted tile's surface (default) or leave their points unclassified (class 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rejection&lt;/b&gt; (REJECTION): re-weighted (default; a point dropped earlier may return when the surface moves) or cumulative (dropped for good).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud (OUTPUT, .laz or .las), optional ground-only cloud (GROUND_OUTPUT), optional HTML report (OUTPUT_HTML) with the parameters, class counts, the per-iteration statistics of the paper's Tables 1–2, per-tile statistics, time and points per second; optional CSV of every tile's iterations and coefficients (TILE_STATS); numbers N_GROUND, N_OTHER, N_NOISE, N_UNCLASSIFIED, N_TILES, POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Measure the result against reference labels with &lt;i&gt;Ground filter accuracy&lt;/i&gt;. Nothing is written when the run fails or is cancelled.&lt;/p&gt;</source>
         <translation>&lt;p&gt;تفصل نقاط سطح الأرض العارية عن المباني والغطاء النباتي في سحابة ليدار جوية بمواءمة سطوح متعددة حدود بالمربعات الصغرى في كل بلاطة مربعة (مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013). في كل بلاطة يُوائَم السطح، وتُستبعد النقاط التي تعلوه بأكثر من THRESHOLD، وتُكرَّر المواءمة حتى تتوقف القيمة الدنيا والعليا والمتوسط والانحراف المعياري للارتفاعات المُبقاة عن التغيُّر (TOLERANCE) أو يُبلغ MAX_ITERATIONS؛ ثم تُعَدّ أرضاً كل نقطة تحقق z ≤ ẑ + THRESHOLD. يُتجاهَل أي تصنيف موجود في الملف ويُستبدل.&lt;/p&gt;&lt;p&gt;&lt;b&gt;أصناف المخرج&lt;/b&gt; (ASPRS): 2 أرض، 1 أخرى (مبانٍ، غطاء نباتي)، 7 ضوضاء منخفضة (الفلترة المسبقة)، 0 لم تُصنَّف قط (فقط مع SPARSE_TILES = ترك النقاط دون تصنيف). تُنسخ دون تغيير جميع الخصائص الأخرى لكل نقطة، وصيغة النقاط، ومعاملات المقياس والإزاحة، وسجلات VLR، ونظام الإحداثيات.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz بنظام إحداثيات مُسقَط بالأمتار.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الدرجة&lt;/b&gt; (ORDER، الافتراضي 2): 1 = مستوٍ z = b0 + b1·x + b2·y؛ 2 = سطح تربيعي z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (أفضل في جميع عيّنات البحث).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم البلاطة&lt;/b&gt; (TILE_SIZE، م، الافتراضي 50): أكبر من أكبر مبنى، كي تحوي كل بلاطة نقاطاً من الأرض (البحث: 100 م للمباني الكبيرة، 50 م للصغيرة). البلاطات مربعة، ومبدؤها عند أصغر x وy.&lt;/li&gt;&lt;li&gt;&lt;b&gt;العتبة&lt;/b&gt; (THRESHOLD، م، الافتراضي 0.5): 0.5–1.0 م، وأكبر في التضاريس الأشد انحداراً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;النمط&lt;/b&gt; (MODE، الافتراضي: مطابق): مطابق = طريقة البحث. محسَّن = من إضافتنا، يتجاوز البحث: بلاطات من الخشن إلى الدقيق (2، 1، ½، ¼ × TILE_SIZE) تُوائَم على نوافذ متداخلة، ويبدأ كل مستوى من نقاط الأرض في المستوى السابق، مع عتبة تزداد بازدياد ميل السطح (بمقدار 2.5 م لكل وحدة تدرّج، وبحد أقصى 1 م). على عيّنات ISPRS يخفض متوسط الخطأ الكلي من 8.9 % (البحث) إلى نحو 4.9 % بمجموعة معاملات واحدة؛ ويستغرق نحو 15 ضعف زمن النمط المطابق وضعف ذاكرته (نحو 2 مليون نقطة/ث و100 بايت لكل نقطة في النمط المطابق).&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة القيم الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي: نعم): النقاط الواقعة أسفل جيرانها بكثير تصبح من الصنف 7 ولا تشارك في المواءمة (NOISE_RADIUS، م، الافتراضي 5: خلية الجوار؛ NOISE_THRESHOLD، م، الافتراضي 1: العمق تحت الجيران).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأقصى للتكرارات&lt;/b&gt; (MAX_ITERATIONS، الافتراضي 5، كما في جداول البحث) و&lt;b&gt;سماحية التوقف&lt;/b&gt; (TOLERANCE، م، الافتراضي 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مجموعة جزئية عشوائية للمواءمة في كل بلاطة&lt;/b&gt; (SUBSET_SIZE، نقاط، الافتراضي 0 = الكل؛ استخدم البحث 5000) و&lt;b&gt;بذرتها العشوائية&lt;/b&gt; (SEED). تُصنَّف جميع النقاط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأدنى للنقاط في البلاطة&lt;/b&gt; (MIN_POINTS، الافتراضي 0 = 3 × عدد معاملات متعدد الحدود) و&lt;b&gt;البلاطات قليلة النقاط&lt;/b&gt; (SPARSE_TILES): استعارة سطح أقرب بلاطة مُوائَمة (الافتراضي) أو ترك نقاطها دون تصنيف (الصنف 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الاستبعاد&lt;/b&gt; (REJECTION): إعادة الترجيح (الافتراضي؛ قد تعود نقطة استُبعدت سابقاً عندما يتحرك السطح) أو تراكمي (تُستبعد النقطة نهائياً).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المخرجات&lt;/b&gt;: السحابة المصنَّفة (OUTPUT، بالامتداد .laz أو .las)، وسحابة نقاط الأرض فقط اختيارياً (GROUND_OUTPUT)، وتقرير HTML اختياري (OUTPUT_HTML) فيه المعاملات وأعداد النقاط في كل صنف وإحصاءات كل تكرار كما في الجدولين 1–2 من البحث وإحصاءات كل بلاطة والزمن وعدد النقاط في الثانية؛ وملف CSV اختياري بتكرارات كل بلاطة ومعاملاتها (TILE_STATS)؛ والأرقام N_GROUND وN_OTHER وN_NOISE وN_UNCLASSIFIED وN_TILES وPOINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;قِس النتيجة مقارنةً بالتصنيفات المرجعية باستخدام &lt;i&gt;دقة فلتر نقاط الأرض&lt;/i&gt;. لا يُكتب أي شيء إذا فشل التشغيل أو أُلغي.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="169"/>
+        <location filename="../algorithms/lsq_filter.py" line="170"/>
         <source>Per-tile iteration statistics (CSV)</source>
         <translation>إحصاءات التكرارات لكل بلاطة (CSV)</translation>
     </message>
     <message>
-        <location filename="../algorithms/lsq_filter.py" line="169"/>
+        <location filename="../algorithms/lsq_filter.py" line="170"/>
         <source>CSV files (*.csv)</source>
         <translation>ملفات CSV (*.csv)</translation>
     </message>
