@@ -176,27 +176,14 @@ def isprs_section(quick):
 
 # ----------------------------------------------------------------------------- speed
 _CHILD = r"""
-import json, os, resource, sys, time
+import json, os, sys
 import numpy as np
 from geomatics_toolbox.core.lsq_filter import lsq_ground_filter
 x = np.load({xyz!r} + ".x.npy"); y = np.load({xyz!r} + ".y.npy"); z = np.load({xyz!r} + ".z.npy")
-def status(key):
-    with open("/proc/self/status") as fh:
-        for line in fh:
-            if line.startswith(key + ":"):
-                return float(line.split()[1]) / 1024.0
-    return float("nan")
-base = status("VmRSS")
-try:
-    with open("/proc/self/clear_refs", "w") as fh:
-        fh.write("5")
-    hwm = "VmHWM"
-except OSError:
-    hwm = None
-r0 = resource.getrusage(resource.RUSAGE_SELF)
-t = time.perf_counter()
+sys.path.insert(0, {bench!r})
+from _probe import Probe
+probe = Probe()
 if {what!r} == "csf":
-    sys.path.insert(0, {bench!r})
     from bench_lsq import csf_ground
     ground = csf_ground(x, y, z)
     timings = {{}}
@@ -205,20 +192,16 @@ else:
                             threshold=0.5, noise=True if "+noise" in {what!r} else None)
     ground = res.ground
     timings = {{k: v for k, v in res.timings.items()}}
-wall = time.perf_counter() - t
-r1 = resource.getrusage(resource.RUSAGE_SELF)
+measured = probe.result()
 if {labels_out!r}:
     np.save({labels_out!r}, ground)
-print(json.dumps(dict(n=int(x.size), wall=wall,
-                      cpu=(r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime),
-                      base_mb=base, peak_mb=status(hwm) if hwm else r1.ru_maxrss / 1024.0,
-                      timings=timings)))
+print(json.dumps(dict(n=int(x.size), **measured, timings=timings)))
 """
 
 
 def run_child(xyz, what, labels_out=""):
-    code = _CHILD.format(root=str(ROOT), init=str(ROOT / "__init__.py"), xyz=xyz,
-                         what=what, labels_out=labels_out, bench=str(ROOT / "benchmarks"))
+    code = _CHILD.format(xyz=xyz, what=what, labels_out=labels_out,
+                         bench=str(ROOT / "benchmarks"))
     env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1",
                MKL_NUM_THREADS="1")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,

@@ -104,9 +104,8 @@ def isprs_rows(quick: bool):
 
 # ----------------------------------------------------------------------------- speed
 _CHILD = r"""
-import json, os, resource, sys, time
+import json, os, sys
 import numpy as np
-sys.path.insert(0, {root!r})
 from geomatics_toolbox.core import slope_filter as sf
 x = np.load({xyz!r} + ".x.npy"); y = np.load({xyz!r} + ".y.npy"); z = np.load({xyz!r} + ".z.npy")
 sel = None
@@ -114,21 +113,9 @@ if {window!r}:
     x0, y0, side = {window!r}
     m = (x < x0 + side) & (y < y0 + side)
     x, y, z = x[m].copy(), y[m].copy(), z[m].copy()
-def status(key):
-    with open("/proc/self/status") as fh:
-        for line in fh:
-            if line.startswith(key + ":"):
-                return float(line.split()[1]) / 1024.0
-    return float("nan")
-base = status("VmRSS")
-try:   # reset the peak-RSS mark (Linux >= 4.0) so VmHWM covers the filter only
-    with open("/proc/self/clear_refs", "w") as fh:
-        fh.write("5")
-    hwm = "VmHWM"
-except OSError:
-    hwm = None
-r0 = resource.getrusage(resource.RUSAGE_SELF)
-t = time.perf_counter()
+sys.path.insert(0, {bench!r})
+from _probe import Probe
+probe = Probe()
 if {what!r} == "sweep":
     ref = np.load({xyz!r} + ".g.npy")
     sw = sf.threshold_sweep(x, y, z, ref, slopes=list(range(20, 71, 2)), radii=[{radius}],
@@ -143,23 +130,17 @@ else:
     s = sf.max_slope_reference(x, y, z, radius={radius}, height_tolerance={h})
     labels = ~(s > np.tan(np.radians({slope})))
     stats = {{}}
-wall = time.perf_counter() - t
-r1 = resource.getrusage(resource.RUSAGE_SELF)
+measured = probe.result()
 if {labels_out!r}:
     np.save({labels_out!r}, labels)
-print(json.dumps(dict(n=int(x.size), wall=wall,
-                      cpu=(r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime),
-                      base_mb=base,
-                      peak_mb=status(hwm) if hwm else r1.ru_maxrss / 1024.0,
-                      n_ground=int(labels.sum()), stats=stats)))
+print(json.dumps(dict(n=int(x.size), **measured, n_ground=int(labels.sum()), stats=stats)))
 """
 
 
 def run_child(xyz: str, *, what: str, radius: float, slope: float = 40.0, h: float = 0.2,
               window=None, labels_out: str = "") -> dict:
-    code = _CHILD.format(root=str(ROOT), init=str(ROOT / "__init__.py"), xyz=xyz,
-                         window=window, what=what, radius=radius, slope=slope, h=h,
-                         labels_out=labels_out)
+    code = _CHILD.format(xyz=xyz, window=window, what=what, radius=radius, slope=slope,
+                         h=h, labels_out=labels_out, bench=str(ROOT / "benchmarks"))
     env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1",
                MKL_NUM_THREADS="1")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
