@@ -18,6 +18,7 @@ from ..core import dtm_accuracy as core_acc
 from ..core.raster_io import read_raster
 from ..core.report import html_page, html_table, svg_histogram, svg_scatter
 from ..core.terrain_io import read_checkpoints_csv
+from ..core.progress import Cancelled
 from .base import GeomaticsAlgorithm
 
 NUMBERS = (
@@ -202,8 +203,12 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
         method = core_acc.METHODS[self.parameterAsEnum(parameters, self.METHOD, context)]
         r = read_raster(layer.source(), band)
         dtm_crs = layer.crs()
+        feedback.setProgress(20)
         ids, x, y, z = self.read_points(parameters, context, dtm_crs, feedback)
+        if feedback.isCanceled():
+            raise Cancelled("cancelled by the user")
         res = core_acc.dtm_accuracy(r.masked(), r.geotransform, x, y, z, method=method)
+        feedback.setProgress(50)
         summary = res.summary()
         html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
         results = {}
@@ -224,6 +229,8 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
         if sink is not None:
             err = res.error
             for i in range(res.n_total):
+                if feedback.isCanceled():
+                    raise Cancelled("cancelled by the user")
                 f = QgsFeature(fields)
                 zc = float(res.z_check[i]) if np.isfinite(res.z_check[i]) else 0.0
                 f.setGeometry(QgsGeometry(QgsPoint(float(x[i]), float(y[i]), zc)))
@@ -235,10 +242,12 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
                     float(abs(err[i])) if ok else None,
                     core_acc.STATUS_NAMES[int(res.status[i])]])
                 sink.addFeature(f, QgsFeatureSink.FastInsert)
+                feedback.setProgress(50 + 45 * (i + 1) / max(res.n_total, 1))
             results[self.OUTPUT] = dest
         if html:
             results[self.OUTPUT_HTML] = self.write_text(
                 html, self.report(res, ids, layer.source(), method, dtm_crs))
+        feedback.setProgress(100)
         return results
 
     def report(self, res, ids, dtm_path, method, crs) -> str:
