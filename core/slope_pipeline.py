@@ -217,13 +217,7 @@ def classify_file(src, dst=None, *, ground_output=None, html_output=None,
         raise ValueError(f"returns must be 'all' or 'last', got {returns!r}.")
     if mode not in sf.MODES:
         raise ValueError(f"mode must be one of {', '.join(sf.MODES)}, got {mode!r}.")
-    info = las_info(src)
-    if info.count == 0:
-        raise ValueError(f"{src} holds no points (empty point cloud); nothing to filter.")
-    dims = ["classification"]
-    if returns == "last":
-        dims += ["return_number", "number_of_returns"]
-    pd = read_las(src, dims, **_cb(mon.sub(0.0, 0.1)))
+    pd = _read_input(src, returns, mon.sub(0.0, 0.1))
     t_read = time.perf_counter()
     sel = select_points(pd, returns=returns, noise=noise, noise_radius=noise_radius,
                         noise_threshold=noise_threshold,
@@ -271,6 +265,15 @@ def classify_file(src, dst=None, *, ground_output=None, html_output=None,
 
 def _cb(mon: Monitor) -> dict:
     return {"progress": mon.update, "cancel": mon.cancelled}
+
+
+def _read_input(src, returns: str, mon: Monitor):
+    """Coordinates, classification and (for ``returns='last'``) the return numbers;
+    :func:`read_las` refuses missing, non-LAS and empty files with a clear error."""
+    dims = ["classification"]
+    if returns == "last":
+        dims += ["return_number", "number_of_returns"]
+    return read_las(src, dims, **_cb(mon))
 
 
 def _method_html(radius, slope, h, mode) -> str:
@@ -416,13 +419,7 @@ def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_C
                          f"{metric!r}.")
     if mode not in sf.MODES:
         raise ValueError(f"mode must be one of {', '.join(sf.MODES)}, got {mode!r}.")
-    info = las_info(src)
-    if info.count == 0:
-        raise ValueError(f"{src} holds no points (empty point cloud); nothing to sweep.")
-    dims = ["classification"]
-    if returns == "last":
-        dims += ["return_number", "number_of_returns"]
-    pd = read_las(src, dims, **_cb(mon.sub(0.0, 0.05)))
+    pd = _read_input(src, returns, mon.sub(0.0, 0.05))
     ref = _load_reference(src, reference, ground_classes, pd, mon.sub(0.05, 0.1))
     if not ref.any():
         raise ValueError(f"The reference marks no point as ground (classes "
