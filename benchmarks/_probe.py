@@ -5,7 +5,11 @@ Peak memory is the peak resident set (``VmHWM``) after resetting the mark throug
 baseline already resident; ``ru_maxrss`` is the fallback (it also counts the forked
 parent's pre-exec peak, so it overstates).
 """
+import json
+import os
 import resource
+import subprocess
+import sys
 import time
 
 
@@ -37,3 +41,14 @@ class Probe:
         cpu = (r1.ru_utime - self._r0.ru_utime) + (r1.ru_stime - self._r0.ru_stime)
         peak = _status_mb("VmHWM") if self._hwm else r1.ru_maxrss / 1024.0
         return dict(wall=wall, cpu=cpu, base_mb=self.base_mb, peak_mb=peak)
+
+
+def run_python(code: str) -> dict:
+    """Run ``code`` in a fresh single-threaded interpreter; return its last JSON line."""
+    env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1",
+               MKL_NUM_THREADS="1")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=env, check=False)
+    if out.returncode != 0:
+        raise RuntimeError(out.stderr)
+    return json.loads(out.stdout.strip().splitlines()[-1])

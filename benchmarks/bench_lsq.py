@@ -27,15 +27,14 @@ from __future__ import annotations
 import argparse
 import datetime
 import itertools
-import json
 import os
-import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
+from _probe import run_python
 
 ROOT = Path(__file__).resolve().parents[1]
 ISPRS = Path(os.environ.get("GEOMATICS_ISPRS_DIR", ROOT.parent / "shared" / "data" / "isprs"))
@@ -202,13 +201,7 @@ print(json.dumps(dict(n=int(x.size), **measured, timings=timings)))
 def run_child(xyz, what, labels_out=""):
     code = _CHILD.format(xyz=xyz, what=what, labels_out=labels_out,
                          bench=str(ROOT / "benchmarks"))
-    env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1",
-               MKL_NUM_THREADS="1")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         env=env, check=False)
-    if out.returncode != 0:
-        raise RuntimeError(out.stderr)
-    return json.loads(out.stdout.strip().splitlines()[-1])
+    return run_python(code)
 
 
 def make_tile(tmp, side, seed, name):

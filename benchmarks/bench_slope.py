@@ -25,15 +25,14 @@ Rows written to ``benchmarks/results/slope.md``:
 from __future__ import annotations
 
 import argparse
-import json
 import os
-import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
+from _probe import run_python
 
 ROOT = Path(__file__).resolve().parents[1]
 ISPRS = Path(os.environ.get("GEOMATICS_ISPRS_DIR", ROOT.parent / "shared" / "data" / "isprs"))
@@ -141,13 +140,7 @@ def run_child(xyz: str, *, what: str, radius: float, slope: float = 40.0, h: flo
               window=None, labels_out: str = "") -> dict:
     code = _CHILD.format(xyz=xyz, window=window, what=what, radius=radius, slope=slope,
                          h=h, labels_out=labels_out, bench=str(ROOT / "benchmarks"))
-    env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1",
-               MKL_NUM_THREADS="1")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         env=env, check=False)
-    if out.returncode != 0:
-        raise RuntimeError(out.stderr)
-    return json.loads(out.stdout.strip().splitlines()[-1])
+    return run_python(code)
 
 
 def speed_rows(quick: bool, tmp: str):
