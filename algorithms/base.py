@@ -23,7 +23,7 @@ from qgis.core import (QgsProcessingAlgorithm, QgsProcessingException,
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
-from ..core.atomic import atomic_output
+from ..core.io.contract import atomic_output
 from ..core.progress import Cancelled
 
 ICON = os.path.join(os.path.dirname(os.path.dirname(__file__)),

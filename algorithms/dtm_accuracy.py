@@ -14,10 +14,10 @@ from qgis.core import (QgsCoordinateTransform, QgsFeature,
                        QgsProcessingParameterRasterLayer, QgsWkbTypes)
 from qgis.PyQt.QtCore import QVariant
 
-from ..core import dtm_accuracy as core_acc
-from ..core.raster_io import read_raster
-from ..core.report import html_page, html_table, svg_histogram, svg_scatter
-from ..core.terrain_io import read_checkpoints_csv
+from ..core.terrain import accuracy as core_acc
+from ..core.io.raster import read_raster
+from ..core.reporting.html import html_page, html_table, svg_histogram, svg_scatter
+from ..core.io.points import read_checkpoints_csv
 from ..core.progress import Cancelled
 from .base import GeomaticsAlgorithm
 

@@ -7,10 +7,10 @@ import numpy as np
 from qgis.core import (QgsProcessingOutputNumber, QgsProcessingParameterFile,
                        QgsProcessingParameterFileDestination, QgsProcessingParameterString)
 
-from ..core import filter_accuracy as core_fa
-from ..core.atomic import atomic_output, check_not_input
-from ..core.las_io import write_las_like
-from ..core.report import esc, html_page, html_table
+from ..core.lidar import accuracy as core_fa
+from ..core.io.contract import atomic_output, check_not_input
+from ..core.io.las import write_las_like
+from ..core.reporting.html import esc, html_page, html_table
 from .base import GeomaticsAlgorithm
 
 LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"

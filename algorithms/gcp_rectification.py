@@ -1,7 +1,7 @@
 """GCP polynomial rectification (orders 1–3) and its accuracy report.
 
-Thin wrappers over :mod:`..core.gcp_io`, :mod:`..core.polynomial`,
-:mod:`..core.gcp_report` and :mod:`..core.warp`.
+Thin wrappers over :mod:`..core.io.gcp`, :mod:`..core.rectification.polynomial`,
+:mod:`..core.rectification.accuracy` and :mod:`..core.rectification.warp`.
 """
 from __future__ import annotations
 
@@ -16,8 +16,10 @@ from qgis.core import (QgsProcessing, QgsProcessingException, QgsProcessingOutpu
                        QgsProcessingParameterRasterDestination,
                        QgsProcessingParameterRasterLayer, QgsWkbTypes)
 
-from ..core import gcp_io, gcp_report, warp
-from ..core.atomic import check_not_input
+from ..core.io import gcp as gcp_io
+from ..core.rectification import accuracy as gcp_report
+from ..core.rectification import warp
+from ..core.io.contract import check_not_input
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from .base import GeomaticsAlgorithm

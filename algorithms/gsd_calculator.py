@@ -10,9 +10,9 @@ from qgis.core import (QgsFeature, QgsFeatureSink, QgsField, QgsFields,
                        QgsProcessingParameterFileDestination, QgsWkbTypes)
 from qgis.PyQt.QtCore import QVariant
 
-from ..core import gsd as core_gsd
-from ..core.cameras import CAMERAS
-from ..core.report import html_page, html_table
+from ..core.photogrammetry import gsd as core_gsd
+from ..core.photogrammetry.cameras import CAMERAS
+from ..core.reporting.html import html_page, html_table
 from .base import GeomaticsAlgorithm
 
 CAMERA_KEYS = ["custom"] + list(CAMERAS)

@@ -8,12 +8,12 @@ import numpy as np
 from qgis.core import (QgsProcessingOutputNumber, QgsProcessingParameterEnum,
                        QgsProcessingParameterFile, QgsProcessingParameterFileDestination)
 
-from ..core import lsq_filter as core_lsq
-from ..core.atomic import atomic_output, check_not_input
-from ..core.las_io import read_las, write_las_like
+from ..core.lidar import lsq as core_lsq
+from ..core.io.contract import atomic_output, check_not_input
+from ..core.io.las import read_las, write_las_like
 from ..core.progress import Cancelled
-from ..core.raster_io import crs_label
-from ..core.report import esc, html_page, html_params, html_table
+from ..core.io.raster import crs_label
+from ..core.reporting.html import esc, html_page, html_params, html_table
 from .base import GeomaticsAlgorithm
 
 LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"

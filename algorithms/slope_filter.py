@@ -6,8 +6,8 @@ from qgis.core import (QgsProcessingOutputNumber, QgsProcessingOutputString,
                        QgsProcessingParameterFile, QgsProcessingParameterFileDestination,
                        QgsProcessingParameterString)
 
-from ..core import slope_filter as core_sf
-from ..core import slope_pipeline as core_sp
+from ..core.lidar import slope as core_sf
+from ..core.lidar import pipeline as core_sp
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from .base import GeomaticsAlgorithm

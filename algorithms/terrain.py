@@ -1,7 +1,7 @@
 """Terrain models from LiDAR points: IDW DTM, kriging DTM, DSM / nDSM.
 
-Thin wrappers over :mod:`..core.idw`, :mod:`..core.kriging`, :mod:`..core.dsm` with
-the shared :mod:`..core.grid` definition.
+Thin wrappers over :mod:`..core.terrain.idw`, :mod:`..core.terrain.kriging`,
+:mod:`..core.terrain.dsm` with the shared :mod:`..core.terrain.grid` definition.
 """
 from __future__ import annotations
 
@@ -17,15 +17,15 @@ from qgis.core import (QgsCoordinateReferenceSystem, QgsProcessingException,
                        QgsProcessingParameterRasterDestination,
                        QgsProcessingParameterRasterLayer, QgsProcessingParameterString)
 
-from ..core import dsm as core_dsm
-from ..core import idw as core_idw
-from ..core import kriging as core_kriging
-from ..core.atomic import check_not_input
-from ..core.grid import GridSpec, grid_from_extent, grid_from_points, grid_like
-from ..core.las_io import iter_las_chunks, las_info
-from ..core.raster_io import read_raster
-from ..core.report import html_page, html_params, html_table, svg_histogram, svg_scatter
-from ..core.terrain_io import parse_classes, read_class_points, write_grid
+from ..core.terrain import dsm as core_dsm
+from ..core.terrain import idw as core_idw
+from ..core.terrain import kriging as core_kriging
+from ..core.io.contract import check_not_input
+from ..core.terrain.grid import GridSpec, grid_from_extent, grid_from_points, grid_like
+from ..core.io.las import iter_las_chunks, las_info
+from ..core.io.raster import read_raster
+from ..core.reporting.html import html_page, html_params, html_table, svg_histogram, svg_scatter
+from ..core.io.points import parse_classes, read_class_points, write_grid
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from .base import GeomaticsAlgorithm

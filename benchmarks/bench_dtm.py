@@ -45,17 +45,17 @@ MEM_LIMIT = 8 << 30   # for the PyKrige peers (ours is measured against 4 GiB)
 
 
 
-from geomatics_toolbox.core.dtm_accuracy import dtm_accuracy  # noqa: E402
-from geomatics_toolbox.core.grid import grid_from_extent  # noqa: E402
-from geomatics_toolbox.core.idw import idw_grid  # noqa: E402
-from geomatics_toolbox.core.kriging import Variogram, fit_variogram, kriging_grid  # noqa: E402
+from geomatics_toolbox.core.terrain.accuracy import dtm_accuracy  # noqa: E402
+from geomatics_toolbox.core.terrain.grid import grid_from_extent  # noqa: E402
+from geomatics_toolbox.core.terrain.idw import idw_grid  # noqa: E402
+from geomatics_toolbox.core.terrain.kriging import Variogram, fit_variogram, kriging_grid  # noqa: E402
 
 
 # --------------------------------------------------------------------------- data
 def synthetic_ground(n: int, side: float, seed: int = 0, decimals: int = 2):
     """``n`` ground points over a ``side``×``side`` m square of realistic terrain,
     coordinates rounded to ``decimals`` (2 = the usual 1 cm LAS scale)."""
-    from geomatics_toolbox.core.synthetic import generate_tile
+    from geomatics_toolbox.synthetic.lidar import generate_tile
     tile = generate_tile(extent=(side, side), density=min(0.05, 2e4 / side ** 2),
                          seed=seed, relief=20.0, hill_height=25.0)
     x0, y0 = 500_000.0, 4_000_000.0
@@ -221,7 +221,7 @@ def bench_kriging_e2e(n, side, tmp, timeout):
     exe = shutil.which("qgis_process.bin")
     if exe is None:
         return {"status": "skipped: qgis_process.bin not found"}
-    from geomatics_toolbox.core.las_io import write_las
+    from geomatics_toolbox.core.io.las import write_las
     x, y, z, _ = synthetic_ground(n, side, seed=5)
     laz = os.path.join(tmp, "ground.laz")
     write_las(laz, x, y, z, dimensions={"classification": np.full(n, 2, np.uint8)},
@@ -278,7 +278,7 @@ def e2e_child(exe, laz, out, timeout):
 
 # --------------------------------------------------------------------------- 3. ISPRS
 def bench_isprs(cell=1.0, seed=0):
-    from geomatics_toolbox.core.las_io import read_las
+    from geomatics_toolbox.core.io.las import read_las
     rows = []
     for name in ("samp11", "samp12", "samp31", "samp54"):
         path = ISPRS / f"{name}.laz"

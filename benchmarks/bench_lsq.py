@@ -47,7 +47,7 @@ CSF_PUBLISHED = {"samp11": 12.01, "samp12": 2.97, "samp31": 1.61, "samp54": 3.18
 
 
 def _acc(pred, ref):
-    from geomatics_toolbox.core.filter_accuracy import assess
+    from geomatics_toolbox.core.lidar.accuracy import assess
     return assess(pred, ref)
 
 
@@ -93,8 +93,8 @@ def csf_grid(quick):
 
 # ----------------------------------------------------------------------------- ISPRS
 def isprs_section(quick):
-    from geomatics_toolbox.core.las_io import read_las
-    from geomatics_toolbox.core.lsq_filter import lsq_ground_filter
+    from geomatics_toolbox.core.io.las import read_las
+    from geomatics_toolbox.core.lidar.lsq import lsq_ground_filter
 
     if not (ISPRS / "samp11.laz").exists():
         return None, f"ISPRS samples not found in {ISPRS}; ISPRS rows skipped."
@@ -177,7 +177,7 @@ def isprs_section(quick):
 _CHILD = r"""
 import json, os, sys
 import numpy as np
-from geomatics_toolbox.core.lsq_filter import lsq_ground_filter
+from geomatics_toolbox.core.lidar.lsq import lsq_ground_filter
 x = np.load({xyz!r} + ".x.npy"); y = np.load({xyz!r} + ".y.npy"); z = np.load({xyz!r} + ".z.npy")
 sys.path.insert(0, {bench!r})
 from _probe import Probe
@@ -205,7 +205,7 @@ def run_child(xyz, what, labels_out=""):
 
 
 def make_tile(tmp, side, seed, name):
-    from geomatics_toolbox.core.synthetic import generate_tile
+    from geomatics_toolbox.synthetic.lidar import generate_tile
     t = time.perf_counter()
     tile = generate_tile(extent=(side, side), density=10.0, seed=seed)
     gen = time.perf_counter() - t

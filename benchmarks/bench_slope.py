@@ -49,10 +49,10 @@ LIMITS = {"samp11": 21.0, "samp12": 11.0, "samp31": 8.0, "samp54": 5.5}
 
 # ----------------------------------------------------------------------------- ISPRS
 def isprs_rows(quick: bool):
-    from geomatics_toolbox.core import slope_filter as sf
-    from geomatics_toolbox.core import slope_pipeline as sp
-    from geomatics_toolbox.core.filter_accuracy import assess
-    from geomatics_toolbox.core.las_io import read_las
+    from geomatics_toolbox.core.lidar import slope as sf
+    from geomatics_toolbox.core.lidar import pipeline as sp
+    from geomatics_toolbox.core.lidar.accuracy import assess
+    from geomatics_toolbox.core.io.las import read_las
 
     if not (ISPRS / "samp11.laz").exists():
         return None, f"ISPRS samples not found in {ISPRS}; ISPRS rows skipped."
@@ -105,7 +105,7 @@ def isprs_rows(quick: bool):
 _CHILD = r"""
 import json, os, sys
 import numpy as np
-from geomatics_toolbox.core import slope_filter as sf
+from geomatics_toolbox.core.lidar import slope as sf
 x = np.load({xyz!r} + ".x.npy"); y = np.load({xyz!r} + ".y.npy"); z = np.load({xyz!r} + ".z.npy")
 sel = None
 if {window!r}:
@@ -144,7 +144,7 @@ def run_child(xyz: str, *, what: str, radius: float, slope: float = 40.0, h: flo
 
 
 def speed_rows(quick: bool, tmp: str):
-    from geomatics_toolbox.core.synthetic import generate_tile
+    from geomatics_toolbox.synthetic.lidar import generate_tile
 
     side = 316.23 if quick else 1000.0
     t = time.perf_counter()

@@ -30,7 +30,7 @@ N_CHECKPOINTS = 62
 
 def write_checkpoints_csv(cp, path) -> None:
     """``id,x,y,z`` with centimetre x, y and millimetre z."""
-    from geomatics_toolbox.core.atomic import atomic_output
+    from geomatics_toolbox.core.io.contract import atomic_output
     with atomic_output(path) as tmp:
         with open(tmp, "w", encoding="utf-8", newline="\n") as fh:
             fh.write("id,x,y,z\n")
@@ -42,7 +42,7 @@ def write_checkpoints_gpkg(cp, path, crs: str = CRS) -> None:
     """A GeoPackage PointZ layer ``checkpoints`` (fields ``id``, ``z``)."""
     from osgeo import gdal, ogr, osr
 
-    from geomatics_toolbox.core.atomic import atomic_output
+    from geomatics_toolbox.core.io.contract import atomic_output
     # a fixed gpkg_contents.last_change keeps the file identical between runs
     gdal.SetConfigOption("OGR_CURRENT_DATE", "2026-01-01T00:00:00.000Z")
     ogr.UseExceptions()
@@ -71,7 +71,7 @@ def write_checkpoints_gpkg(cp, path, crs: str = CRS) -> None:
 
 def make_demo(out_dir, *, seed: int = 2) -> dict:
     """Generate the demo tile and check points into ``out_dir``; returns the paths."""
-    from geomatics_toolbox.core.synthetic import generate_tile, write_tile
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)

@@ -11,7 +11,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 PLUGIN = "geomatics_toolbox"
-EXCLUDE_DIRS = ("tests/", "benchmarks/", ".ci/", "scripts/", ".github/")
+EXCLUDE_DIRS = ("tests/", "benchmarks/", ".ci/", "scripts/", ".github/", "synthetic/")
 EXCLUDE_FILES = {".gitignore", "Makefile", "pytest.ini", "ruff.toml", "requirements-dev.txt",
                  "DEVELOPERS.md"}
 

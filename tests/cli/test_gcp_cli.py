@@ -3,7 +3,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from geomatics_toolbox.core import gcp_io, gcp_synthetic
+from geomatics_toolbox.core.io import gcp as gcp_io
+from geomatics_toolbox.synthetic import gcp as gcp_synthetic
 
 
 def _case(tmp_path, crs="EPSG:22780"):

@@ -9,7 +9,7 @@ import pytest
 
 @pytest.fixture(scope="module")
 def laz(tmp_path_factory):
-    from geomatics_toolbox.core.synthetic import generate_tile, write_tile
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
     tile = generate_tile(extent=(90, 90), density=3.0, seed=8)
     path = tmp_path_factory.mktemp("lsqcli") / "tile.laz"
     write_tile(tile, path)

@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from geomatics_toolbox.core.raster_io import read_raster
-from geomatics_toolbox.core.synthetic import generate_tile, write_tile
+from geomatics_toolbox.core.io.raster import read_raster
+from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 
 ROOT = Path(__file__).resolve().parents[2]
 MODEL = ROOT / "models" / "lidar_to_dtm.model3"

@@ -9,7 +9,7 @@ import pytest
 
 @pytest.fixture(scope="module")
 def tile_path(tmp_path_factory):
-    from geomatics_toolbox.core.synthetic import generate_tile, write_tile
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
     tile = generate_tile(extent=(80, 80), density=3.0, seed=4)
     path = tmp_path_factory.mktemp("slopecli") / "tile.laz"
     write_tile(tile, path)
@@ -17,7 +17,7 @@ def tile_path(tmp_path_factory):
 
 
 def test_cli_slope_ground_filter(qgis_process, tile_path, tmp_path):
-    from geomatics_toolbox.core.las_io import read_las
+    from geomatics_toolbox.core.io.las import read_las
     out = tmp_path / "c.laz"
     res = qgis_process.run("geomatics:slopegroundfilter", INPUT=tile_path, RADIUS=3,
                            SLOPE=44, HEIGHT_TOLERANCE=0, OUTPUT=out)

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from geomatics_toolbox.core.raster_io import read_raster
-from geomatics_toolbox.core.synthetic import generate_tile, write_tile
+from geomatics_toolbox.core.io.raster import read_raster
+from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 
 
 @pytest.fixture(scope="module")

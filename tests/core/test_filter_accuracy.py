@@ -4,9 +4,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.filter_accuracy import (assess, assess_clouds, error_codes,
+from geomatics_toolbox.core.lidar.accuracy import (assess, assess_clouds, error_codes,
                                                     from_counts, ground_mask, parse_classes)
-from geomatics_toolbox.core.las_io import write_las
+from geomatics_toolbox.core.io.las import write_las
 
 
 def test_golden_paper_samp54_counts():

@@ -13,7 +13,11 @@ import subprocess
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core import gcp_io, gcp_report, gcp_synthetic, polynomial, warp
+from geomatics_toolbox.core.io import gcp as gcp_io
+from geomatics_toolbox.core.rectification import accuracy as gcp_report
+from geomatics_toolbox.synthetic import gcp as gcp_synthetic
+from geomatics_toolbox.core.rectification import polynomial
+from geomatics_toolbox.core.rectification import warp
 
 gdal = pytest.importorskip("osgeo.gdal")
 gdal.UseExceptions()

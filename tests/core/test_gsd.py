@@ -4,8 +4,8 @@ import math
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core import gsd
-from geomatics_toolbox.core.cameras import CAMERAS, camera
+from geomatics_toolbox.core.photogrammetry import gsd
+from geomatics_toolbox.core.photogrammetry.cameras import CAMERAS, camera
 
 P100 = dict(sensor_width=6.123, image_width=3648, focal_length=4.6)
 

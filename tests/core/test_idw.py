@@ -4,9 +4,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.grid import (check_memory, grid_from_extent, grid_from_points,
+from geomatics_toolbox.core.terrain.grid import (check_memory, grid_from_extent, grid_from_points,
                                          grid_like)
-from geomatics_toolbox.core.idw import IDW, idw_grid
+from geomatics_toolbox.core.terrain.idw import IDW, idw_grid
 
 gdal = pytest.importorskip("osgeo.gdal")
 ogr = pytest.importorskip("osgeo.ogr")

@@ -4,8 +4,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.grid import grid_from_extent
-from geomatics_toolbox.core.kriging import (Kriging, fit_variogram, given_variogram,
+from geomatics_toolbox.core.terrain.grid import grid_from_extent
+from geomatics_toolbox.core.terrain.kriging import (Kriging, fit_variogram, given_variogram,
                                             kriging_grid, parse_variogram_parameters)
 
 pykrige_ok = pytest.importorskip("pykrige.ok")

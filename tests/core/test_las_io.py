@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 from osgeo import osr
 
-from geomatics_toolbox.core import las_io
+from geomatics_toolbox.core.io import las as las_io
 from geomatics_toolbox.core.progress import Cancelled
 
 N = 3000

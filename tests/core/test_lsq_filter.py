@@ -4,8 +4,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.filter_accuracy import assess
-from geomatics_toolbox.core.lsq_filter import (FAITHFUL_MAX_ITERATIONS, GROUND, NOISE, OTHER,
+from geomatics_toolbox.core.lidar.accuracy import assess
+from geomatics_toolbox.core.lidar.lsq import (FAITHFUL_MAX_ITERATIONS, GROUND, NOISE, OTHER,
                                                UNCLASSIFIED, design_matrix, fit_tiles,
                                                lsq_ground_filter)
 from geomatics_toolbox.core.progress import Cancelled
@@ -237,7 +237,7 @@ PAPER = {  # sample: (paper tile size m, paper total error %)
 
 @pytest.fixture(scope="module")
 def isprs(isprs_dir):
-    from geomatics_toolbox.core.las_io import read_las
+    from geomatics_toolbox.core.io.las import read_las
     out = {}
     for name in PAPER:
         pd = read_las(isprs_dir / f"{name}.laz", ("classification",))

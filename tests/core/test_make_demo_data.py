@@ -9,8 +9,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core import las_io
-from geomatics_toolbox.core.synthetic import generate_tile
+from geomatics_toolbox.core.io import las as las_io
+from geomatics_toolbox.synthetic.lidar import generate_tile
 
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "make_demo_data.py"

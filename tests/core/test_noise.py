@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.noise import NOISE_CLASS, flag_low_outliers
+from geomatics_toolbox.core.lidar.noise import NOISE_CLASS, flag_low_outliers
 from geomatics_toolbox.core.progress import Cancelled
 
 
@@ -145,7 +145,7 @@ def test_bad_coordinates():
 
 
 def test_isprs_samples_lose_almost_no_ground(isprs_dir):
-    from geomatics_toolbox.core.las_io import read_las
+    from geomatics_toolbox.core.io.las import read_las
     for name in ("samp11", "samp12", "samp31", "samp54"):
         pd = read_las(isprs_dir / f"{name}.laz", ("classification",))
         f = flag_low_outliers(pd.x, pd.y, pd.z)

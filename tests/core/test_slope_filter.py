@@ -9,9 +9,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from scipy.spatial import cKDTree
 
-from geomatics_toolbox.core import slope_filter as sf
-from geomatics_toolbox.core import slope_pipeline as sp
-from geomatics_toolbox.core.las_io import read_las, write_las, write_las_like
+from geomatics_toolbox.core.lidar import slope as sf
+from geomatics_toolbox.core.lidar import pipeline as sp
+from geomatics_toolbox.core.io.las import read_las, write_las, write_las_like
 from geomatics_toolbox.core.progress import Cancelled
 
 SAMPLES = ("samp11", "samp12", "samp31", "samp54")
@@ -215,7 +215,7 @@ def test_adaptive_mode_keeps_steep_natural_slopes():
     kw = dict(radius=5.0, slope=40.0, height_tolerance=0.2)
     exact = sf.slope_filter(x, y, z, **kw)
     adaptive = sf.slope_filter(x, y, z, mode="adaptive", trend_cell=5, trend_window=30, **kw)
-    from geomatics_toolbox.core.filter_accuracy import assess
+    from geomatics_toolbox.core.lidar.accuracy import assess
     e, a = assess(exact.ground, ground), assess(adaptive.ground, ground)
     assert e.type1 > 80          # Vosselman's rule rejects a slope steeper than theta
     assert a.type1 < 5
@@ -262,7 +262,7 @@ def test_cancel_and_progress():
 # --------------------------------------------------------------------------- files
 @pytest.fixture(scope="module")
 def small_tile(tmp_path_factory):
-    from geomatics_toolbox.core.synthetic import generate_tile, write_tile
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
     tile = generate_tile(extent=(120, 120), density=4.0, seed=11, n_low_outliers=6)
     path = tmp_path_factory.mktemp("slope") / "tile.laz"
     write_tile(tile, path)
@@ -391,7 +391,7 @@ def test_isprs_adaptive_mode_improves_steep_sample(isprs_dir):
     pd = read_las(isprs_dir / "samp11.laz", ["classification"])
     sel = sp.select_points(pd, keep_noise_classes=False)
     ref = pd["classification"] == 2
-    from geomatics_toolbox.core.filter_accuracy import assess
+    from geomatics_toolbox.core.lidar.accuracy import assess
     tot = {}
     for mode in ("exact", "adaptive"):
         r = sf.slope_filter(pd.x, pd.y, pd.z, mode=mode, classify=sel.candidates,

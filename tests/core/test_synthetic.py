@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 from scipy.spatial import cKDTree
 
-from geomatics_toolbox.core import synthetic as syn
-from geomatics_toolbox.core.synthetic import generate_tile, write_tile
+from geomatics_toolbox.synthetic import lidar as syn
+from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 
 KW = dict(extent=(200.0, 180.0), density=3.0, seed=11)
 
@@ -254,7 +254,7 @@ def test_knobs_switch_things_off():
 
 
 def test_write_tile_round_trip(tile, tmp_path):
-    from geomatics_toolbox.core.las_io import las_info, read_las
+    from geomatics_toolbox.core.io.las import las_info, read_las
     path = tmp_path / "tile.laz"
     assert write_tile(tile, path) == len(tile)
     info = las_info(path)

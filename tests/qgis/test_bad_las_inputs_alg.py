@@ -44,7 +44,7 @@ def test_bad_las_input(qgis_processing, bad_inputs, tmp_path, alg, kind):
 
 
 def test_core_las_reader_names_the_same_problems(bad_inputs):
-    from geomatics_toolbox.core.las_io import read_las
+    from geomatics_toolbox.core.io.las import read_las
     for path, message in bad_inputs.values():
         with pytest.raises(ValueError, match=message):
             read_las(path)

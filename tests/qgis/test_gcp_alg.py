@@ -7,7 +7,8 @@ import json
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core import gcp_io, gcp_synthetic
+from geomatics_toolbox.core.io import gcp as gcp_io
+from geomatics_toolbox.synthetic import gcp as gcp_synthetic
 
 EPSG = "EPSG:22780"
 

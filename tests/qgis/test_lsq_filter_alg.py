@@ -5,9 +5,9 @@ import laspy
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.filter_accuracy import assess
-from geomatics_toolbox.core.las_io import read_las, write_las
-from geomatics_toolbox.core.lsq_filter import lsq_ground_filter
+from geomatics_toolbox.core.lidar.accuracy import assess
+from geomatics_toolbox.core.io.las import read_las, write_las
+from geomatics_toolbox.core.lidar.lsq import lsq_ground_filter
 
 ALG = "geomatics:lsqgroundfilter"
 ACC = "geomatics:groundfilteraccuracy"
@@ -16,7 +16,7 @@ ACC = "geomatics:groundfilteraccuracy"
 @pytest.fixture(scope="module")
 def tile(tmp_path_factory):
     """A small labelled synthetic tile (LAS 1.4, format 6, CRS) and its truth."""
-    from geomatics_toolbox.core.synthetic import generate_tile, write_tile
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
     t = generate_tile(extent=(120, 120), density=4.0, seed=11)
     path = tmp_path_factory.mktemp("lsqalg") / "tile.laz"
     write_tile(t, path)

@@ -6,14 +6,14 @@ import csv
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core import slope_filter as sf
-from geomatics_toolbox.core import slope_pipeline as sp
-from geomatics_toolbox.core.las_io import read_las, write_las
+from geomatics_toolbox.core.lidar import slope as sf
+from geomatics_toolbox.core.lidar import pipeline as sp
+from geomatics_toolbox.core.io.las import read_las, write_las
 
 
 @pytest.fixture(scope="module")
 def tile_path(tmp_path_factory):
-    from geomatics_toolbox.core.synthetic import generate_tile, write_tile
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
     tile = generate_tile(extent=(100, 100), density=4.0, seed=21)
     path = tmp_path_factory.mktemp("slopealg") / "tile.laz"
     write_tile(tile, path)

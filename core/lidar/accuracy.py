@@ -220,8 +220,8 @@ def assess_clouds(classified, reference=None, *, field: str = "classification",
         Unreadable files, missing dimensions, clouds of different length or
         order, or the same dimension given as both labels.
     """
-    from .las_io import read_las
-    from .progress import Monitor
+    from ..io.las import read_las
+    from ..progress import Monitor
     mon = Monitor(progress, cancel)
     ground_classes = parse_classes(ground_classes)
     reference_ground_classes = parse_classes(reference_ground_classes,

@@ -14,7 +14,7 @@ from typing import Optional
 
 import numpy as np
 
-from .atomic import atomic_output
+from ..core.io.contract import atomic_output
 
 #: map X, Y (m) of the 22 GCPs of image 1; point 2's published Y (151966.41) is a likely
 #: typo for 154966.41 (it would lie 3 km south of every other point) and is corrected.
@@ -65,7 +65,7 @@ def true_coefficients(order: int, gr: float = IMAGE1_GR):
 
 def eval_raw(cx, cy, col, row):
     """Evaluate raw-pixel polynomial coefficients at ``(col, row)``."""
-    from .polynomial import TERMS
+    from ..core.rectification.polynomial import TERMS
     col = np.asarray(col, float)
     row = np.asarray(row, float)
     x = np.zeros_like(col)

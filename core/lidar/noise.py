@@ -45,8 +45,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import cKDTree
 
-from .coords import as_xyz
-from .progress import Monitor
+from ..coords import as_xyz
+from ..progress import Monitor
 
 __all__ = ["flag_low_outliers", "NOISE_CLASS"]
 

@@ -64,9 +64,9 @@ from typing import Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 from scipy.spatial import cKDTree
 
-from .coords import as_xyz
+from ..coords import as_xyz
 from .grid import GridSpec, check_memory, resolve_max_distance, row_blocks
-from .progress import Monitor
+from ..progress import Monitor
 
 MODELS = ("linear", "power", "gaussian", "spherical", "exponential")
 DRIFTS = ("none", "linear")

@@ -34,13 +34,13 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
-from . import slope_filter as sf
-from .atomic import atomic_output, check_not_input
-from .filter_accuracy import ground_mask
-from .las_io import check_las_file, las_info, read_las, write_las_like
+from . import slope as sf
+from ..io.contract import atomic_output, check_not_input
+from .accuracy import ground_mask
+from ..io.las import check_las_file, las_info, read_las, write_las_like
 from .noise import flag_low_outliers
-from .progress import Monitor
-from .report import esc, fmt, html_page, html_params, html_table
+from ..progress import Monitor
+from ..reporting.html import esc, fmt, html_page, html_params, html_table
 
 __all__ = ["RETURNS", "GROUND_CLASS", "NONGROUND_CLASS", "NOISE_CLASS",
            "last_return_mask", "select_points", "classify_file", "sweep_file",

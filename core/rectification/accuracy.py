@@ -34,11 +34,11 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
-from . import report as rep
-from .gcp_io import GCPSet
+from ..reporting import html as rep
+from ..io.gcp import GCPSet
 from .polynomial import (IllConditionedError, MAX_CONDITION, PolynomialModel,
                          fit_polynomial, leave_one_out, n_terms, residuals)
-from .progress import Monitor
+from ..progress import Monitor
 
 CITATION = ("Criteria after: Tishreen University Journal for Research and Scientific Studies "
             "— Engineering Sciences Series 38(2), 2016, 'criteria to judge the geometric "

@@ -1,5 +1,6 @@
 """Input helpers for terrain models: class-filtered points from LAS/LAZ, check points
-from CSV, and writing a DTM/variance GeoTIFF from a :class:`.grid.GridSpec`.
+from CSV, and writing a DTM/variance GeoTIFF from a grid (any object with
+``geotransform``, ``crs`` and ``nodata``, e.g. ``terrain.grid.GridSpec``).
 """
 from __future__ import annotations
 
@@ -11,10 +12,9 @@ from typing import List, Optional, Sequence, Tuple
 
 import numpy as np
 
-from .grid import GridSpec
-from .las_io import LasInfo, iter_las_chunks, las_info
-from .progress import Monitor
-from .raster_io import write_geotiff
+from .las import LasInfo, iter_las_chunks, las_info
+from ..progress import Monitor
+from .raster import write_geotiff
 
 
 def parse_classes(text) -> Tuple[int, ...]:
@@ -196,7 +196,7 @@ def read_checkpoints_csv(path, *, x_field: str = "", y_field: str = "",
     return ids, np.array(xs), np.array(ys), np.array(zs)
 
 
-def write_grid(path, data: np.ndarray, grid: GridSpec, *, metadata=None,
+def write_grid(path, data: np.ndarray, grid, *, metadata=None,
                band_name: Optional[str] = None) -> str:
     """Write a grid-shaped array (NaN = nodata) as a GeoTIFF with the grid's CRS."""
     return write_geotiff(path, data, geotransform=grid.geotransform, crs=grid.crs,

@@ -27,7 +27,7 @@ from typing import Optional, Sequence, Tuple
 
 import numpy as np
 
-from .raster_io import DEFAULT_NODATA
+from ..io.raster import DEFAULT_NODATA
 
 #: Default number of bytes of working memory per cell (float64 value + variance +
 #: neighbour bookkeeping for a row block is amortised separately).

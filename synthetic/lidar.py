@@ -4,7 +4,7 @@ Quick API
 =========
 
 ```python
-from geomatics_toolbox.core.synthetic import generate_tile, write_tile
+from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 
 tile = generate_tile(extent=(300, 300), density=5.0, seed=1)  # ~450 000 points
 tile.x, tile.y, tile.z             # float64 (m), already rounded to the 1 cm LAS grid
@@ -1038,7 +1038,7 @@ def write_tile(tile: SyntheticTile, path, *, crs: Optional[str] = "EPSG:32632",
     int
         Number of points written.
     """
-    from .las_io import write_las
+    from ..core.io.las import write_las
     if point_format not in (6, 7):
         raise ValueError(f"point_format must be 6 or 7, got {point_format}")
     return write_las(path, tile.x, tile.y, tile.z, dimensions=tile.dimensions(),

@@ -70,9 +70,9 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
-from .coords import as_xyz
-from .filter_accuracy import assess
-from .progress import Monitor
+from ..coords import as_xyz
+from .accuracy import assess
+from ..progress import Monitor
 
 __all__ = [
     "DEFAULT_RADIUS", "DEFAULT_SLOPE", "DEFAULT_HEIGHT_TOLERANCE", "PAPER_SETTING",

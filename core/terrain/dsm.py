@@ -23,7 +23,7 @@ from typing import Iterable, Optional, Sequence
 import numpy as np
 
 from .grid import GridSpec, check_memory
-from .progress import Monitor
+from ..progress import Monitor
 
 
 def accumulate_max(grid: GridSpec, out: np.ndarray, x, y, z) -> int:

@@ -45,9 +45,9 @@ from typing import Optional
 import numpy as np
 from scipy.spatial import cKDTree
 
-from .coords import as_xyz
+from ..coords import as_xyz
 from .grid import GridSpec, check_memory, resolve_max_distance, row_blocks
-from .progress import Monitor
+from ..progress import Monitor
 
 #: squared distance below which a node "is on" a point (GDAL's constant)
 COINCIDENT_R2 = 1e-13

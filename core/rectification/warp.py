@@ -25,10 +25,10 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-from .atomic import atomic_output, check_not_input
-from .gcp_io import GCPSet, check_in_image
+from ..io.contract import atomic_output, check_not_input
+from ..io.gcp import GCPSet, check_in_image
 from .polynomial import MAX_CONDITION, PolynomialModel, fit_polynomial
-from .progress import Cancelled, Monitor
+from ..progress import Cancelled, Monitor
 
 RESAMPLING = ("near", "bilinear", "cubic", "cubicspline", "lanczos", "average", "mode")
 CREATION_OPTIONS = ("TILED=YES", "COMPRESS=DEFLATE", "BIGTIFF=IF_SAFER")

@@ -1,0 +1,2 @@
+"""LiDAR point-cloud processing: ground filters, low-noise flags, filter accuracy.
+"""

@@ -1,0 +1,2 @@
+"""Photogrammetric planning: GSD and accuracy calculator, camera presets.
+"""

@@ -1,0 +1,2 @@
+"""GCP image rectification: transformations, accuracy criteria, warping.
+"""

@@ -1,0 +1,2 @@
+"""Report rendering (HTML, SVG figures). Imports no domain sub-package.
+"""

@@ -1,0 +1,2 @@
+"""Terrain models: grids, IDW, kriging, DSM/nDSM and DTM accuracy.
+"""
