@@ -58,8 +58,9 @@ $(VENV)/.plugin-link: $(VENV)/.stamp
 venv: $(VENV)/.stamp $(VENV)/.plugin-link
 
 # --------------------------------------------------------------------------- i18n
+# Translations live in i18n/strings/*.json; the .ts files are generated from them.
 ts: venv
-	pylupdate5 -noobsolete $(PY_SOURCES) -ts $(TS_FILES)
+	$(PY) scripts/i18n_sync.py
 
 i18n/%.qm: i18n/%.ts
 	lrelease -silent $< -qm $@
@@ -87,6 +88,7 @@ bench: venv
 
 lint: venv
 	$(VENV)/bin/ruff check .
+	$(PY) scripts/i18n_sync.py --check
 
 # --------------------------------------------------------------------------- ship
 package: venv qm

@@ -7,13 +7,13 @@ and one entry per algorithm.
 
 def all_algorithms():
     """Fresh instances of every algorithm the provider offers."""
-    from .gsd_calculator import GsdCalculatorAlgorithm, GsdBatchAlgorithm
-    from .gcp_rectification import GcpAccuracyReportAlgorithm, RectifyGcpAlgorithm
-    from .terrain import DsmAlgorithm, IdwDtmAlgorithm, KrigingDtmAlgorithm
     from .dtm_accuracy import DtmAccuracyAlgorithm
-    from .slope_filter import SlopeGroundFilterAlgorithm, SlopeThresholdSweepAlgorithm
-    from .lsq_filter import LsqGroundFilterAlgorithm
     from .filter_accuracy import GroundFilterAccuracyAlgorithm
+    from .gcp_rectification import GcpAccuracyReportAlgorithm, RectifyGcpAlgorithm
+    from .gsd_calculator import GsdBatchAlgorithm, GsdCalculatorAlgorithm
+    from .lsq_filter import LsqGroundFilterAlgorithm
+    from .slope_filter import SlopeGroundFilterAlgorithm, SlopeThresholdSweepAlgorithm
+    from .terrain import DsmAlgorithm, IdwDtmAlgorithm, KrigingDtmAlgorithm
 
     return [
         GsdCalculatorAlgorithm(),

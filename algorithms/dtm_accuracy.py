@@ -4,21 +4,35 @@ from __future__ import annotations
 import os
 
 import numpy as np
-from qgis.core import (QgsCoordinateTransform, QgsFeature,
-                       QgsFeatureSink, QgsField, QgsFields, QgsGeometry, QgsPoint,
-                       QgsProcessing, QgsProcessingException, QgsProcessingOutputNumber,
-                       QgsProcessingParameterBoolean, QgsProcessingParameterCrs,
-                       QgsProcessingParameterEnum, QgsProcessingParameterFeatureSink,
-                       QgsProcessingParameterFeatureSource, QgsProcessingParameterField,
-                       QgsProcessingParameterFile, QgsProcessingParameterFileDestination,
-                       QgsProcessingParameterRasterLayer, QgsWkbTypes)
+from qgis.core import (
+    QgsCoordinateTransform,
+    QgsFeature,
+    QgsFeatureSink,
+    QgsField,
+    QgsFields,
+    QgsGeometry,
+    QgsPoint,
+    QgsProcessing,
+    QgsProcessingException,
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterCrs,
+    QgsProcessingParameterEnum,
+    QgsProcessingParameterFeatureSink,
+    QgsProcessingParameterFeatureSource,
+    QgsProcessingParameterField,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterRasterLayer,
+    QgsWkbTypes,
+)
 from qgis.PyQt.QtCore import QVariant
 
-from ..core.terrain import accuracy as core_acc
-from ..core.io.raster import read_raster
-from ..core.reporting.html import html_page, html_table, svg_histogram, svg_scatter
 from ..core.io.points import read_checkpoints_csv
+from ..core.io.raster import read_raster
 from ..core.progress import Cancelled
+from ..core.reporting.html import html_page, html_table, svg_histogram, svg_scatter
+from ..core.terrain import accuracy as core_acc
 from .base import GeomaticsAlgorithm
 
 NUMBERS = (

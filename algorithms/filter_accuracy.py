@@ -4,12 +4,16 @@ from __future__ import annotations
 import contextlib
 
 import numpy as np
-from qgis.core import (QgsProcessingOutputNumber, QgsProcessingParameterFile,
-                       QgsProcessingParameterFileDestination, QgsProcessingParameterString)
+from qgis.core import (
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterString,
+)
 
-from ..core.lidar import accuracy as core_fa
 from ..core.io.contract import atomic_output, check_not_input
 from ..core.io.las import write_las_like
+from ..core.lidar import accuracy as core_fa
 from ..core.reporting.html import esc, html_page, html_table
 from .base import GeomaticsAlgorithm
 

@@ -9,19 +9,26 @@ import math
 import os
 
 import numpy as np
-from qgis.core import (QgsProcessing, QgsProcessingException, QgsProcessingOutputNumber,
-                       QgsProcessingParameterCrs, QgsProcessingParameterEnum,
-                       QgsProcessingParameterFeatureSource, QgsProcessingParameterField,
-                       QgsProcessingParameterFile, QgsProcessingParameterFileDestination,
-                       QgsProcessingParameterRasterDestination,
-                       QgsProcessingParameterRasterLayer, QgsWkbTypes)
-
-from ..core.io import gcp as gcp_io
-from ..core.rectification import accuracy as gcp_report
-from ..core.rectification import warp
-from ..core.io.contract import check_not_input
+from qgis.core import (
+    QgsProcessing,
+    QgsProcessingException,
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterCrs,
+    QgsProcessingParameterEnum,
+    QgsProcessingParameterFeatureSource,
+    QgsProcessingParameterField,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterRasterDestination,
+    QgsProcessingParameterRasterLayer,
+    QgsWkbTypes,
+)
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
+from ..core.io import gcp as gcp_io
+from ..core.io.contract import check_not_input
+from ..core.rectification import accuracy as gcp_report
+from ..core.rectification import warp
 from .base import GeomaticsAlgorithm
 
 PIXEL_ORIGINS = ("corner", "center")

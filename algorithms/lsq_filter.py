@@ -5,14 +5,18 @@ import contextlib
 import time
 
 import numpy as np
-from qgis.core import (QgsProcessingOutputNumber, QgsProcessingParameterEnum,
-                       QgsProcessingParameterFile, QgsProcessingParameterFileDestination)
+from qgis.core import (
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterEnum,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+)
 
-from ..core.lidar import lsq as core_lsq
 from ..core.io.contract import atomic_output, check_not_input
 from ..core.io.las import read_las, write_las_like
-from ..core.progress import Cancelled
 from ..core.io.raster import crs_label
+from ..core.lidar import lsq as core_lsq
+from ..core.progress import Cancelled
 from ..core.reporting.html import esc, html_page, html_params, html_table
 from .base import GeomaticsAlgorithm
 

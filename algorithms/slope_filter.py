@@ -1,15 +1,19 @@
 """Vosselman slope-based ground filter and its threshold sweep (Processing algorithms)."""
 from __future__ import annotations
 
-from qgis.core import (QgsProcessingOutputNumber, QgsProcessingOutputString,
-                       QgsProcessingParameterBoolean, QgsProcessingParameterEnum,
-                       QgsProcessingParameterFile, QgsProcessingParameterFileDestination,
-                       QgsProcessingParameterString)
-
-from ..core.lidar import slope as core_sf
-from ..core.lidar import pipeline as core_sp
+from qgis.core import (
+    QgsProcessingOutputNumber,
+    QgsProcessingOutputString,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterEnum,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterString,
+)
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
+from ..core.lidar import pipeline as core_sp
+from ..core.lidar import slope as core_sf
 from .base import GeomaticsAlgorithm
 
 LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"

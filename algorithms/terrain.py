@@ -9,25 +9,31 @@ import os
 import time
 
 import numpy as np
-from qgis.core import (QgsCoordinateReferenceSystem, QgsProcessingException,
-                       QgsProcessingOutputNumber, QgsProcessingParameterBoolean,
-                       QgsProcessingParameterCrs, QgsProcessingParameterEnum,
-                       QgsProcessingParameterExtent, QgsProcessingParameterFile,
-                       QgsProcessingParameterFileDestination,
-                       QgsProcessingParameterRasterDestination,
-                       QgsProcessingParameterRasterLayer, QgsProcessingParameterString)
+from qgis.core import (
+    QgsCoordinateReferenceSystem,
+    QgsProcessingException,
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterCrs,
+    QgsProcessingParameterEnum,
+    QgsProcessingParameterExtent,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterRasterDestination,
+    QgsProcessingParameterRasterLayer,
+    QgsProcessingParameterString,
+)
+from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
+from ..core.io.contract import check_not_input
+from ..core.io.las import iter_las_chunks, las_info
+from ..core.io.points import parse_classes, read_class_points, write_grid
+from ..core.io.raster import read_raster
+from ..core.reporting.html import html_page, html_params, html_table, svg_histogram, svg_scatter
 from ..core.terrain import dsm as core_dsm
 from ..core.terrain import idw as core_idw
 from ..core.terrain import kriging as core_kriging
-from ..core.io.contract import check_not_input
 from ..core.terrain.grid import GridSpec, grid_from_extent, grid_from_points, grid_like
-from ..core.io.las import iter_las_chunks, las_info
-from ..core.io.raster import read_raster
-from ..core.reporting.html import html_page, html_params, html_table, svg_histogram, svg_scatter
-from ..core.io.points import parse_classes, read_class_points, write_grid
-from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
-
 from .base import GeomaticsAlgorithm
 
 NAN = float("nan")

@@ -29,11 +29,9 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 sys.path.insert(0, str(ROOT / "tests"))
 import conftest  # noqa: E402,F401  (loads the checkout as geomatics_toolbox)
-
-from geomatics_toolbox.core import (gcp_io, gcp_report, gcp_synthetic,  # noqa: E402
-                                    polynomial, warp)
-
 from osgeo import gdal  # noqa: E402
+
+from geomatics_toolbox.core import gcp_io, gcp_report, gcp_synthetic, polynomial, warp  # noqa: E402
 
 gdal.UseExceptions()
 EPSG = "EPSG:22780"

@@ -49,10 +49,10 @@ LIMITS = {"samp11": 21.0, "samp12": 11.0, "samp31": 8.0, "samp54": 5.5}
 
 # ----------------------------------------------------------------------------- ISPRS
 def isprs_rows(quick: bool):
-    from geomatics_toolbox.core.lidar import slope as sf
-    from geomatics_toolbox.core.lidar import pipeline as sp
-    from geomatics_toolbox.core.lidar.accuracy import assess
     from geomatics_toolbox.core.io.las import read_las
+    from geomatics_toolbox.core.lidar import pipeline as sp
+    from geomatics_toolbox.core.lidar import slope as sf
+    from geomatics_toolbox.core.lidar.accuracy import assess
 
     if not (ISPRS / "samp11.laz").exists():
         return None, f"ISPRS samples not found in {ISPRS}; ISPRS rows skipped."

@@ -48,7 +48,8 @@ def _rss_mb() -> float:
 def worker(n_points: int, seed: int) -> dict:
     """Generate ``n_points`` (approx.) and write them as LAZ; returns the timings."""
     import numpy as np  # noqa: F401  (import cost outside the timings)
-    from geomatics_toolbox.core.io import las as las_io# noqa: F401
+
+    from geomatics_toolbox.core.io import las as las_io  # noqa: F401
     from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
     base = _rss_mb()
     side = (n_points / DENSITY) ** 0.5

@@ -7,7 +7,7 @@ ProgressFn = Optional[Callable[[float], None]]
 CancelFn = Optional[Callable[[], bool]]
 
 
-class Cancelled(Exception):
+class Cancelled(Exception):  # noqa: N818 - public name since 0.1
     """Raised by core functions when the ``cancel`` callable returns True."""
 
 

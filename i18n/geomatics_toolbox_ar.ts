@@ -1,2113 +1,1702 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1">
-<context>
-    <name>@default</name>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>reference ground</source>
-        <translation>أرض (في المرجع)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>reference object</source>
-        <translation>جسم (في المرجع)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>total</source>
-        <translation>المجموع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="165"/>
-        <source>Type I (ground rejected) = b/(a+b)</source>
-        <translation>خطأ النوع الأول (رفض نقاط الأرض) = b/(a+b)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="166"/>
-        <source>Type II (object accepted) = c/(c+d)</source>
-        <translation>خطأ النوع الثاني (قبول الأجسام كأرض) = c/(c+d)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="167"/>
-        <source>Total = (b+c)/n</source>
-        <translation>الخطأ الكلي = (b+c)/n</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="168"/>
-        <source>Cohen&apos;s kappa</source>
-        <translation>معامل كابا لكوهين</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="170"/>
-        <source>filtered cloud</source>
-        <translation>السحابة المفلترة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="170"/>
-        <source>its class dimension</source>
-        <translation>بُعد الصنف فيها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="171"/>
-        <source>its ground classes</source>
-        <translation>أصناف الأرض فيها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="172"/>
-        <source>reference</source>
-        <translation>المرجع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="172"/>
-        <source>(dimension of the filtered cloud)</source>
-        <translation>(بُعد في السحابة المفلترة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="173"/>
-        <source>reference class dimension</source>
-        <translation>بُعد الصنف في المرجع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="174"/>
-        <source>reference ground classes</source>
-        <translation>أصناف الأرض في المرجع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>item</source>
-        <translation>البند</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>value</source>
-        <translation>القيمة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>filtered ground</source>
-        <translation>أرض (بعد الفلترة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>filtered object</source>
-        <translation>جسم (بعد الفلترة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>measure</source>
-        <translation>المقياس</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>Of all misclassified points, {p1:.1f} % are Type I and {p2:.1f} % Type II.</source>
-        <translation>من بين جميع النقاط المصنَّفة خطأً، {p1:.1f} % من النوع الأول و{p2:.1f} % من النوع الثاني.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>filtered class</source>
-        <translation>الصنف بعد الفلترة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="373"/>
-        <source>points</source>
-        <translation>عدد النقاط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>Measures of the ISPRS filter test: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</source>
-        <translation>مقاييس اختبار فلاتر ISPRS: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="193"/>
-        <source>Ground filter accuracy</source>
-        <translation>دقة فلتر نقاط الأرض</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="315"/>
-        <source>input</source>
-        <translation>ملف الإدخال</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="316"/>
-        <source>CRS</source>
-        <translation>نظام الإحداثيات (CRS)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="316"/>
-        <source>none</source>
-        <translation>لا يوجد</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="317"/>
-        <source>mode</source>
-        <translation>النمط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="317"/>
-        <source>order</source>
-        <translation>الدرجة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="318"/>
-        <source>polynomial</source>
-        <translation>متعدد الحدود</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="383"/>
-        <source>tile size (m)</source>
-        <translation>حجم البلاطة (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="322"/>
-        <source>threshold T (m)</source>
-        <translation>العتبة T (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="323"/>
-        <source>max iterations</source>
-        <translation>الحد الأقصى للتكرارات</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="324"/>
-        <source>stop tolerance (m)</source>
-        <translation>سماحية التوقف (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="325"/>
-        <source>fitting subset per tile</source>
-        <translation>المجموعة الجزئية للمواءمة في كل بلاطة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="325"/>
-        <source>all points</source>
-        <translation>جميع النقاط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="326"/>
-        <source>seed</source>
-        <translation>البذرة العشوائية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="327"/>
-        <source>min points per tile</source>
-        <translation>الحد الأدنى للنقاط في البلاطة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="328"/>
-        <source>under-populated tiles</source>
-        <translation>البلاطات قليلة النقاط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="329"/>
-        <source>rejection</source>
-        <translation>الاستبعاد</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="330"/>
-        <source>low-outlier pre-filter</source>
-        <translation>الفلترة المسبقة للقيم الشاذة المنخفضة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="331"/>
-        <source>pre-filter cell / depth (m)</source>
-        <translation>خلية / عمق الفلترة المسبقة (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="333"/>
-        <source>grid origin (min x, min y)</source>
-        <translation>مبدأ الشبكة (أصغر x، أصغر y)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="336"/>
-        <source>levels (× tile size)</source>
-        <translation>المستويات (× حجم البلاطة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="337"/>
-        <source>window overlap</source>
-        <translation>تداخل النوافذ</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="338"/>
-        <source>slope factor (m) / cap (m)</source>
-        <translation>معامل الميل (م) / الحد الأعلى (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="340"/>
-        <source>ground</source>
-        <translation>أرض</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="340"/>
-        <source>other (object)</source>
-        <translation>أخرى (جسم)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="340"/>
-        <source>low noise</source>
-        <translation>ضوضاء منخفضة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="341"/>
-        <source>never classified</source>
-        <translation>لم تُصنَّف قط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="363"/>
-        <source>reading</source>
-        <translation>القراءة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="366"/>
-        <source>filter total</source>
-        <translation>إجمالي الفلترة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="367"/>
-        <source>run total (read, filter, write)</source>
-        <translation>إجمالي التشغيل (قراءة، فلترة، كتابة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="368"/>
-        <source>points per second (run)</source>
-        <translation>نقطة في الثانية (التشغيل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="369"/>
-        <source>points per second (filter)</source>
-        <translation>نقطة في الثانية (الفلترة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="370"/>
-        <source>step</source>
-        <translation>الخطوة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="371"/>
-        <source>Parameters</source>
-        <translation>المعاملات</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="373"/>
-        <source>class</source>
-        <translation>الصنف</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="373"/>
-        <source>meaning</source>
-        <translation>المعنى</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="376"/>
-        <source>Kept heights after each iteration, aggregated over the tiles (a tile that has stopped keeps its last values); the layout of the paper's Tables 1–2.</source>
-        <translation>الارتفاعات المُبقاة بعد كل تكرار، مجمَّعة على البلاطات (البلاطة التي توقفت تحتفظ بآخر قيمها)؛ على نسق الجدولين 1–2 في البحث.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="380"/>
-        <source>tiles still iterating</source>
-        <translation>بلاطات قيد التكرار</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="383"/>
-        <source>level</source>
-        <translation>المستوى</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="395"/>
-        <source>tiles</source>
-        <translation>عدد البلاطات</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="383"/>
-        <source>fitted</source>
-        <translation>بلاطات مُوائَمة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="383"/>
-        <source>ground seeds</source>
-        <translation>نقاط الأرض الابتدائية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="383"/>
-        <source>seconds</source>
-        <translation>ثانية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="388"/>
-        <source>The iteration and tile tables below describe the finest level.</source>
-        <translation>يصف جدولا التكرارات والبلاطات أدناه المستوى الأدق.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
-        <source>status</source>
-        <translation>الحالة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
-        <source>column</source>
-        <translation>العمود</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
-        <source>row</source>
-        <translation>الصف</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
-        <source>fitting points</source>
-        <translation>نقاط المواءمة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
-        <source>iterations</source>
-        <translation>التكرارات</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
-        <source>kept</source>
-        <translation>المُبقاة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="400"/>
-        <source>Showing the {k} fullest of {n} tiles.</source>
-        <translation>تُعرض البلاطات الـ{k} الأكثر نقاطاً من أصل {n} بلاطة.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
-        <source>stage</source>
-        <translation>المرحلة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
-        <source>seconds or points/s</source>
-        <translation>ثانية أو نقطة/ث</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="406"/>
-        <source>Method: tiled least-squares polynomial filter, Damascus Univ. J. Eng. Sci. 29(2), 2013. Improved mode and the low-outlier pre-filter are ours. Accuracy terms (Type I, Type II, total) after Sithole &amp; Vosselman (2004).</source>
-        <translation>الطريقة: فلتر متعدد الحدود بالمربعات الصغرى على بلاطات، مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013. النمط المحسَّن والفلترة المسبقة للقيم الشاذة المنخفضة من إضافتنا. مصطلحات الدقة (النوع الأول، النوع الثاني، الكلي) وفق Sithole &amp; Vosselman (2004).</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="411"/>
-        <source>Ground filter (least-squares polynomial)</source>
-        <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
-    </message>
-</context>
-<context>
-    <name>DsmAlgorithm</name>
-    <message>
-        <location filename="../algorithms/terrain.py" line="530"/>
-        <source>DSM and nDSM / canopy height model</source>
-        <translation>نموذج السطح الرقمي (DSM) والنموذج المُطبَّع (nDSM) / نموذج ارتفاع الغطاء النباتي</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="533"/>
-        <source>dsm,ndsm,chm,canopy height,surface model,first returns,lidar,raster</source>
-        <translation>dsm,ndsm,chm,ارتفاع الغطاء النباتي,نموذج السطح,الارتدادات الأولى,ليدار,راستر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="537"/>
-        <source>&lt;p&gt;Digital surface model from a LAS/LAZ file: every cell takes the highest return falling in it (first returns only as an option, the usual canopy surface). With a DTM, also the normalised DSM (nDSM; canopy height model in forests) = DSM − DTM on the DTM's grid. Points are read in chunks, so large files fit in memory.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=cloud.laz CELL_SIZE=1 FIRST_RETURNS=true DTM=dtm.tif OUTPUT=dsm.tif OUTPUT_NDSM=chm.tif.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes used&lt;/b&gt; (CLASSES, default empty = all classes).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Excluded classes&lt;/b&gt; (EXCLUDE_CLASSES, default &lt;code&gt;7,18&lt;/code&gt;: low and high noise).&lt;/li&gt;&lt;li&gt;&lt;b&gt;First returns only&lt;/b&gt; (FIRST_RETURNS, default no).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 1), &lt;b&gt;Extent&lt;/b&gt; (EXTENT), &lt;b&gt;CRS&lt;/b&gt; (CRS): as for the DTM tools; ignored when a DTM is given (its grid and CRS are used so that DSM and DTM align cell for cell).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill distance&lt;/b&gt; (FILL_DISTANCE, m, default 0): empty cells take the value of the nearest non-empty cell within this distance; 0 = leave them nodata.&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM&lt;/b&gt; (DTM, optional raster): needed for the nDSM.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Clamp negative heights to 0&lt;/b&gt; (CLAMP_NEGATIVE, default yes).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DSM&lt;/b&gt; (OUTPUT) and &lt;b&gt;nDSM&lt;/b&gt; (OUTPUT_NDSM, optional, needs DTM): GeoTIFF, nodata −9999.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;</source>
-        <translation>&lt;p&gt;نموذج السطح الرقمي من ملف LAS/LAZ: تأخذ كل خلية أعلى ارتداد يقع فيها (مع خيار الاقتصار على الارتدادات الأولى، وهو سطح الغطاء النباتي المعتاد). ومع نموذج ارتفاعات رقمي للأرض (DTM) يُحسب أيضاً نموذج السطح المُطبَّع (nDSM؛ نموذج ارتفاع الغطاء النباتي في الغابات) = DSM − DTM على شبكة DTM. تُقرأ النقاط على دفعات، لذا تتسع الذاكرة للملفات الكبيرة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=cloud.laz CELL_SIZE=1 FIRST_RETURNS=true DTM=dtm.tif OUTPUT=dsm.tif OUTPUT_NDSM=chm.tif.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las/.laz.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الأصناف المستخدمة&lt;/b&gt; (CLASSES، الافتراضي فارغ = جميع الأصناف).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الأصناف المستبعدة&lt;/b&gt; (EXCLUDE_CLASSES، الافتراضي &lt;code&gt;7,18&lt;/code&gt;: الضوضاء المنخفضة والمرتفعة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الارتدادات الأولى فقط&lt;/b&gt; (FIRST_RETURNS، الافتراضي: لا).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 1)، &lt;b&gt;النطاق&lt;/b&gt; (EXTENT)، &lt;b&gt;نظام الإحداثيات&lt;/b&gt; (CRS): كما في أدوات نموذج الارتفاعات الرقمي للأرض؛ تُهمَل عند تحديد DTM (تُستخدم شبكته ونظام إحداثياته كي يتطابق DSM وDTM خليةً بخلية).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مسافة الملء&lt;/b&gt; (FILL_DISTANCE، م، الافتراضي 0): تأخذ الخلايا الفارغة قيمة أقرب خلية غير فارغة ضمن هذه المسافة؛ 0 = تُترك nodata.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نموذج الارتفاعات الرقمي للأرض&lt;/b&gt; (DTM، راستر اختياري): لازم لحساب nDSM.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تحويل الارتفاعات السالبة إلى 0&lt;/b&gt; (CLAMP_NEGATIVE، الافتراضي: نعم).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DSM&lt;/b&gt; (OUTPUT) و&lt;b&gt;nDSM&lt;/b&gt; (OUTPUT_NDSM، اختياري، يتطلب DTM): GeoTIFF، وقيمة nodata هي −9999.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري).&lt;/li&gt;&lt;/ul&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="565"/>
-        <source>Excluded classes</source>
-        <translation>الأصناف المستبعدة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="568"/>
-        <source>First returns only</source>
-        <translation>الارتدادات الأولى فقط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="570"/>
-        <source>Fill empty cells up to (m)</source>
-        <translation>ملء الخلايا الفارغة حتى مسافة (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="572"/>
-        <source>DTM (for the nDSM; its grid is used)</source>
-        <translation>نموذج الارتفاعات الرقمي للأرض DTM (لحساب nDSM؛ تُستخدم شبكته)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="574"/>
-        <source>Clamp negative nDSM heights to 0</source>
-        <translation>تحويل ارتفاعات nDSM السالبة إلى 0</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="576"/>
-        <source>DSM</source>
-        <translation>نموذج السطح الرقمي (DSM)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="577"/>
-        <source>nDSM / canopy height model</source>
-        <translation>nDSM / نموذج ارتفاع الغطاء النباتي</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="605"/>
-        <source>The point cloud CRS ({}) differs from the DTM CRS ({}); give a DTM in the point cloud&apos;s CRS. No output was written.</source>
-        <translation>نظام إحداثيات سحابة النقاط ({}) يختلف عن نظام إحداثيات نموذج الارتفاعات الرقمي ({})؛ استخدم نموذج ارتفاعات رقمياً بنظام إحداثيات سحابة النقاط. لم تُكتب أي مخرجات.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="615"/>
-        <source>The nDSM needs a DTM: give the DTM parameter (e.g. the output of the IDW DTM algorithm). No output was written.</source>
-        <translation>يتطلب nDSM نموذج ارتفاعات رقمياً للأرض: حدِّد المعامل DTM (مثلاً مخرج خوارزمية نموذج الارتفاعات الرقمي بطريقة IDW). لم تُكتب أي مخرجات.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="671"/>
-        <source>DSM / nDSM report</source>
-        <translation>تقرير DSM / nDSM</translation>
-    </message>
-</context>
-<context>
-    <name>DtmAccuracyAlgorithm</name>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="285"/>
-        <source>DTM accuracy against check points</source>
-        <translation>دقة نموذج الارتفاعات الرقمي للأرض مقارنةً بنقاط التحقق</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="63"/>
-        <source>dtm,dem,accuracy,rmse,check points,gnss,nmad,asprs,vertical accuracy,validation</source>
-        <translation>dtm,dem,الدقة,rmse,نقاط التحقق,gnss,nmad,asprs,الدقة الرأسية,التحقق من الصحة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="67"/>
-        <source>&lt;p&gt;Compares a DTM with independent check points (e.g. GNSS heights). The DTM is sampled at each point (bilinear by default) and the errors e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt; are summarised: N, mean error (bias), MAE, RMSE, standard deviation, max |e|, Pearson r and R² (= r²) between DTM and check heights, NMAD = 1.4826·median|e − median e| (Höhle &amp;amp; Höhle 2009), and the vertical accuracy at 95 % confidence = 1.96·RMSE (ASPRS Positional Accuracy Standards 2014, which assumes unbiased normal errors; the 95th percentile of |e| is reported too). Check points outside the DTM or on nodata are counted and excluded — never read as 0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv → RMSE, r and a report with a scatter plot and an error histogram.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;DTM&lt;/b&gt; (DTM): raster layer; BAND (default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check points&lt;/b&gt; (CHECKPOINTS, optional): point layer; heights from &lt;b&gt;Z_FIELD&lt;/b&gt; or, if empty, from the geometry Z. &lt;b&gt;ID_FIELD&lt;/b&gt; optional.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check point file&lt;/b&gt; (CHECKPOINTS_CSV, optional): delimited text with a header x/easting, y/northing, z/height (and id/name), or columns id x y z without header. Give the layer or the file.&lt;/li&gt;&lt;li&gt;&lt;b&gt;CSV CRS&lt;/b&gt; (CSV_CRS, optional): CRS of the file's coordinates; default = the DTM's CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reproject check points&lt;/b&gt; (REPROJECT, default no): when the check points are in another CRS than the DTM, transform them (x, y only — heights are not converted between vertical datums). Without it such points are an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sampling&lt;/b&gt; (METHOD, 0 bilinear (default), 1 nearest cell).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Residuals&lt;/b&gt; (OUTPUT): point layer with id, z_check, z_dtm, error, abs_error and status (used / outside DTM / DTM nodata).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): HTML with the statistics, a DTM vs check scatter plot, an error histogram and the residual table.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every statistic is also an output number (N, N_OUTSIDE, N_NODATA, ME, MAE, RMSE, STD, MAX_ABS_ERROR, R, R2, NMAD, ACCURACY_95).&lt;/p&gt;</source>
-        <translation>&lt;p&gt;تقارن نموذج الارتفاعات الرقمي للأرض (DTM) بنقاط تحقق مستقلة (مثل ارتفاعات GNSS). يُعتان النموذج عند كل نقطة (بالاستيفاء ثنائي الخطية افتراضياً) وتُلخَّص الأخطاء e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt;: العدد N، ومتوسط الخطأ (الانحياز)، ومتوسط الخطأ المطلق MAE، والجذر التربيعي لمتوسط مربعات الأخطاء RMSE، والانحراف المعياري، وأكبر |e|، ومعامل ارتباط بيرسون r وR² (= r²) بين ارتفاعات النموذج وارتفاعات نقاط التحقق، وNMAD = 1.4826·median|e − median e| (Höhle &amp; Höhle 2009)، والدقة الرأسية عند مستوى ثقة 95 % = 1.96·RMSE (معايير ASPRS للدقة الموضعية 2014، التي تفترض أخطاء طبيعية غير منحازة؛ ويُذكر كذلك المئين 95 لـ|e|). نقاط التحقق الواقعة خارج النموذج أو على خلايا nodata تُعَدّ وتُستبعد — ولا تُقرأ أبداً على أنها 0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv ← RMSE وr وتقرير فيه مخطط انتشار ومدرج تكراري للأخطاء.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;نموذج الارتفاعات الرقمي للأرض&lt;/b&gt; (DTM): طبقة راستر؛ BAND (الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط التحقق&lt;/b&gt; (CHECKPOINTS، اختياري): طبقة نقطية؛ الارتفاعات من &lt;b&gt;Z_FIELD&lt;/b&gt; أو، إن كان فارغاً، من قيمة Z في الهندسة. &lt;b&gt;ID_FIELD&lt;/b&gt; اختياري.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ملف نقاط التحقق&lt;/b&gt; (CHECKPOINTS_CSV، اختياري): نص محدَّد الفواصل بسطر ترويسة x/easting وy/northing وz/height (وid/name)، أو بالأعمدة id x y z دون ترويسة. حدِّد الطبقة أو الملف.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام إحداثيات CSV&lt;/b&gt; (CSV_CRS، اختياري): نظام إحداثيات الملف؛ الافتراضي = نظام إحداثيات DTM.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إعادة إسقاط نقاط التحقق&lt;/b&gt; (REPROJECT، الافتراضي: لا): إذا كانت نقاط التحقق بنظام إحداثيات غير نظام DTM تُحوَّل إليه (x وy فقط — لا تُحوَّل الارتفاعات بين المراجع الرأسية). ودون هذا الخيار تُعَدّ هذه النقاط خطأً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طريقة الاعتيان&lt;/b&gt; (METHOD، 0 ثنائي الخطية (الافتراضي)، 1 أقرب خلية).&lt;/li&gt;&lt;li&gt;&lt;b&gt;البواقي&lt;/b&gt; (OUTPUT): طبقة نقطية بالحقول id وz_check وz_dtm وerror وabs_error وstatus (used / outside DTM / DTM nodata).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML): ملف HTML بالإحصاءات ومخطط انتشار DTM مقابل نقاط التحقق ومدرج تكراري للأخطاء وجدول البواقي.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;كل إحصائية هي أيضاً مخرج رقمي (N، N_OUTSIDE، N_NODATA، ME، MAE، RMSE، STD، MAX_ABS_ERROR، R، R2، NMAD، ACCURACY_95).&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="101"/>
-        <source>DTM</source>
-        <translation>نموذج الارتفاعات الرقمي للأرض (DTM)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="102"/>
-        <source>Band</source>
-        <translation>الحزمة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="104"/>
-        <source>Check points (point layer)</source>
-        <translation>نقاط التحقق (طبقة نقطية)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="107"/>
-        <source>Height field (empty = geometry Z)</source>
-        <translation>حقل الارتفاع (فارغ = قيمة Z من الهندسة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="111"/>
-        <source>Id field</source>
-        <translation>حقل المعرِّف</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="114"/>
-        <source>Check point file (CSV/TXT)</source>
-        <translation>ملف نقاط التحقق (CSV/TXT)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="118"/>
-        <source>CRS of the check point file (default: DTM CRS)</source>
-        <translation>نظام إحداثيات ملف نقاط التحقق (الافتراضي: نظام إحداثيات DTM)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="121"/>
-        <source>Reproject check points to the DTM CRS</source>
-        <translation>إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="123"/>
-        <source>Sampling</source>
-        <translation>طريقة الاعتيان</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="123"/>
-        <source>Bilinear</source>
-        <translation>ثنائي الخطية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="123"/>
-        <source>Nearest cell</source>
-        <translation>أقرب خلية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="126"/>
-        <source>Residuals</source>
-        <translation>البواقي</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="129"/>
-        <source>Report</source>
-        <translation>التقرير</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="129"/>
-        <source>HTML files (*.html)</source>
-        <translation>ملفات HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="141"/>
-        <source>Give the check points as a point layer (CHECKPOINTS) or a file (CHECKPOINTS_CSV).</source>
-        <translation>حدِّد نقاط التحقق كطبقة نقطية (CHECKPOINTS) أو كملف (CHECKPOINTS_CSV).</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="145"/>
-        <source>Give the check points either as a layer or as a file, not both.</source>
-        <translation>حدِّد نقاط التحقق إما كطبقة أو كملف، لا الاثنين معاً.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="152"/>
-        <source>The check point layer has no Z coordinate; choose the height field (Z_FIELD).</source>
-        <translation>طبقة نقاط التحقق لا تحوي الإحداثي Z؛ اختر حقل الارتفاع (Z_FIELD).</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="170"/>
-        <source>The check point layer has no points.</source>
-        <translation>طبقة نقاط التحقق لا تحوي أي نقطة.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="172"/>
-        <source>check point layer</source>
-        <translation>طبقة نقاط التحقق</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="176"/>
-        <source>check point file</source>
-        <translation>ملف نقاط التحقق</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="180"/>
-        <source>The {} is in {} but the DTM is in {}. Reproject the check points first or tick &apos;Reproject check points to the DTM CRS&apos; (REPROJECT=true; x, y only, heights are not converted). No output was written.</source>
-        <translation>{} بنظام الإحداثيات {} لكن نموذج الارتفاعات الرقمي بنظام {}. أعد إسقاط نقاط التحقق أولاً أو فعِّل الخيار 'إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM' (REPROJECT=true؛ x وy فقط، ولا تُحوَّل الارتفاعات). لم تُكتب أي مخرجات.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="190"/>
-        <source>Check points reprojected from {} to {}</source>
-        <translation>أُعيد إسقاط نقاط التحقق من {} إلى {}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="193"/>
-        <source>Check points assumed to be in the DTM&apos;s CRS.</source>
-        <translation>افتُرض أن نقاط التحقق بنظام إحداثيات نموذج الارتفاعات الرقمي.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="200"/>
-        <source>Choose a DTM raster.</source>
-        <translation>اختر طبقة راستر لنموذج الارتفاعات الرقمي للأرض.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="212"/>
-        <source>N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; {} outside, {} on nodata</source>
-        <translation>N = {}، RMSE = {:.4f} م، ME = {:.4f} م، r = {:.5f}؛ {} خارج النموذج، {} على خلايا nodata</translation>
-    </message>
-</context>
-<context>
-    <name>GcpAccuracyReportAlgorithm</name>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="421"/>
-        <source>GCP accuracy report</source>
-        <translation>تقرير دقة نقاط الضبط الأرضي</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="424"/>
-        <source>georeference,gcp,ground control points,rms,residuals,accuracy,check points,leave-one-out,polynomial,georeferencer</source>
-        <translation>إسناد جغرافي,gcp,نقاط الضبط الأرضي,rms,البواقي,الدقة,نقاط التحقق,الاستبعاد الفردي,متعدد الحدود,georeferencer</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="428"/>
-        <source>&lt;p&gt;Judges a set of ground control points without warping: fits polynomials of order 1, 2 and 3, reports the residuals and the paper&apos;s criteria for the chosen order, compares the three orders and recommends one.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
-        <translation>&lt;p&gt;تقيِّم مجموعة من نقاط الضبط الأرضي دون تحويل الصورة هندسياً: تُوائم متعددات حدود من الدرجات 1 و2 و3، وتعرض البواقي ومعايير البحث للدرجة المختارة، وتقارن الدرجات الثلاث وتوصي بإحداها.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT، اختياري): تعطي أبعاد الصورة (نقاط الضبط الواقعة خارجها خطأ؛ وتعتمد الأرباع والمخطط على حدودها). ودونها حدِّد IMAGE_WIDTH وIMAGE_HEIGHT (بالبكسل) وإلا استُخدم مركز ثقل نقاط الضبط.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="449"/>
-        <source>Image width (px) if no image is given</source>
-        <translation>عرض الصورة (بكسل) إن لم تُحدَّد صورة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="451"/>
-        <source>Image height (px) if no image is given</source>
-        <translation>ارتفاع الصورة (بكسل) إن لم تُحدَّد صورة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="454"/>
-        <source>Accuracy report</source>
-        <translation>تقرير الدقة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="454"/>
-        <source>HTML files (*.html)</source>
-        <translation>ملفات HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="457"/>
-        <source>Residuals table</source>
-        <translation>جدول البواقي</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="457"/>
-        <source>CSV files (*.csv)</source>
-        <translation>ملفات CSV (*.csv)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="460"/>
-        <source>Report as JSON</source>
-        <translation>التقرير بصيغة JSON</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="460"/>
-        <source>JSON files (*.json)</source>
-        <translation>ملفات JSON (*.json)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="428"/>
-        <source>&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML), &lt;b&gt;residual table&lt;/b&gt; (OUTPUT_CSV: one row per point with v_x, v_y, RMS_i, C_i, pixel residuals, leave-one-out residuals) and &lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: everything, all orders), each optional.&lt;/li&gt;&lt;/ul&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML)، و&lt;b&gt;جدول البواقي&lt;/b&gt; (OUTPUT_CSV: صف لكل نقطة فيه v_x وv_y وRMS_i وC_i والبواقي بالبكسل وبواقي الاستبعاد الفردي) و&lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: كل شيء، لجميع الدرجات)، وكلها اختيارية.&lt;/li&gt;&lt;/ul&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="428"/>
-        <source>&lt;p&gt;Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, …) for the graphical modeler.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;كل رقم في الملخص هو أيضاً مخرج رقمي (RMS_T وRMS_T_QGIS وGR وSCALE وLOO_RMS_T وCHECK_RMS_T وRECOMMENDED_ORDER وACCEPTED وRMS_T_ORDER1…3 و…) لاستخدامه في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>GeomaticsAlgorithm</name>
-    <message>
-        <location filename="../algorithms/base.py" line="36"/>
-        <source>LiDAR ground filtering</source>
-        <translation>فلترة نقاط الأرض في بيانات الليدار</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="38"/>
-        <source>Terrain models</source>
-        <translation>نماذج التضاريس</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="39"/>
-        <source>Image rectification</source>
-        <translation>التصحيح الهندسي للصور</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="41"/>
-        <source>Photogrammetry</source>
-        <translation>المساحة التصويرية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="42"/>
-        <source>Accuracy assessment</source>
-        <translation>تقييم الدقة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="161"/>
-        <source>Cancelled by the user; no output was written.</source>
-        <translation>ألغى المستخدم العملية؛ لم تُكتب أي مخرجات.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="166"/>
-        <source>Out of memory. Use a coarser cell size, a smaller extent or fewer points; no output was written.</source>
-        <translation>نفدت الذاكرة. استخدم حجم خلية أكبر أو نطاقاً أصغر أو نقاطاً أقل؛ لم تُكتب أي مخرجات.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="44"/>
-        <source>&lt;li&gt;&lt;b&gt;GCP file&lt;/b&gt; (GCP_FILE): a QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file (mapX,mapY,pixelX,pixelY,enable,…; pixelY is minus the row) or a CSV table with columns id, col,row (or pixel,line; or image_x,image_y in the QGIS sign convention), X,Y (or map_x,map_y / easting,northing) and optional enabled (1/0), role (gcp or check) and weight. Give the file &lt;i&gt;or&lt;/i&gt; a point layer; with neither, the Georeferencer's &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; next to the image is used.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP point layer&lt;/b&gt; (GCP_LAYER): points whose geometry holds the map coordinates (in the layer CRS) with fields for the image column and row (COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD, WEIGHT_FIELD (least-squares weights, e.g. 1/σ²; the report uses them, GDAL's warp fits unweighted).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pixel origin&lt;/b&gt; (PIXEL_ORIGIN, default 0 = corner): 0 — image coordinates in the GDAL/QGIS convention, (0,0) is the top-left corner of the image and the centre of the first pixel is (0.5, 0.5); 1 — integer values are pixel centres (0-based array indices), 0.5 is added. Rows always grow downwards (a negative row column is read as QGIS's −row). .points files are always corner-based.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): CRS of the map coordinates when the file has no '#CRS:' line (CSV files never have one). Missing CRS is an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, 1–3, default 1): 1 affine (≥ 3 GCPs), 2 (≥ 6), 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground resolution GR&lt;/b&gt; (GR, map units per pixel, optional): pixel size on the ground for the criteria; default sqrt|det J| of the affine fit of the GCPs.&lt;/li&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;ملف نقاط الضبط الأرضي&lt;/b&gt; (GCP_FILE): ملف &lt;i&gt;.points&lt;/i&gt; من أداة Georeferencer في QGIS (mapX,mapY,pixelX,pixelY,enable,…؛ وpixelY هو سالب رقم الصف) أو جدول CSV بالأعمدة id وcol,row (أو pixel,line؛ أو image_x,image_y باصطلاح الإشارة في QGIS) وX,Y (أو map_x,map_y / easting,northing) والأعمدة الاختيارية enabled (1/0) وrole (gcp أو check) وweight. حدِّد الملف &lt;i&gt;أو&lt;/i&gt; طبقة نقطية؛ وإن لم يُحدَّد أيٌّ منهما يُستخدم ملف &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; الخاص بأداة Georeferencer المجاور للصورة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقة نقطية لنقاط الضبط&lt;/b&gt; (GCP_LAYER): نقاط تحمل هندستُها الإحداثيات الخرائطية (بنظام إحداثيات الطبقة) مع حقلين لعمود الصورة وصفّها (COL_FIELD وROW_FIELD) والحقول الاختيارية ID_FIELD وENABLED_FIELD وROLE_FIELD وWEIGHT_FIELD (أوزان المربعات الصغرى، مثلاً 1/σ²؛ يستخدمها التقرير، أما التحويل الهندسي (warp) في GDAL فيُوائم دون أوزان).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مبدأ البكسل&lt;/b&gt; (PIXEL_ORIGIN، الافتراضي 0 = الركن): 0 — إحداثيات الصورة باصطلاح GDAL/QGIS، حيث (0,0) هو الركن العلوي الأيسر للصورة ومركز البكسل الأول هو (0.5, 0.5)؛ 1 — القيم الصحيحة هي مراكز البكسلات (فهارس مصفوفة تبدأ من 0)، وتُضاف إليها 0.5. تتزايد الصفوف دائماً نحو الأسفل (يُقرأ عمود الصفوف السالب على أنه −row بحسب اصطلاح QGIS). ملفات .points تعتمد دائماً على الأركان.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام إحداثيات نقاط الضبط&lt;/b&gt; (GCP_CRS): نظام الإحداثيات للإحداثيات الخرائطية حين لا يحوي الملف السطر '#CRS:' (ولا تحويه ملفات CSV أبداً). غياب نظام الإحداثيات خطأ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجة متعدد الحدود&lt;/b&gt; (ORDER، 1–3، الافتراضي 1): 1 تحويل تآلفي (≥ 3 نقاط ضبط)، 2 (≥ 6)، 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الدقة الأرضية GR&lt;/b&gt; (GR، وحدة خريطة لكل بكسل، اختياري): حجم البكسل على الأرض المستخدم في المعايير؛ الافتراضي sqrt|det J| من المواءمة التآلفية لنقاط الضبط.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="70"/>
-        <source>&lt;p&gt;&lt;b&gt;Criteria&lt;/b&gt; (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band 4·GR … 6·GR for RMS_T; per-point limit 0.25 mm·S = 5·GR; ≥ 68 % (strict 90 %) of points within RMS_T; no directional bias (quadrant sign balance, inner vs edge radial residuals, residual-vector plot). Also: independent check points (role 'check', never fitted), leave-one-out residuals, orders 1–3 side by side with a recommended order (never one whose redundancy n − N is below max(2, ⌈N/2⌉)) and suggested points to drop. Residuals are predicted − given, in map units and pixels.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;المعايير&lt;/b&gt; (مجلة جامعة تشرين للعلوم الهندسية 38(2)، 2016): RMS_i لكل نقطة ومساهمتها C_i = RMS_i/RMS_T؛ وRMS_x وRMS_y وRMS_T بالقسمة على n (وكذلك، مع الإشارة إلى ذلك، على n − N كما في أداة Georeferencer في QGIS)؛ ومقياس الخريطة S = 20000·GR ونطاق السماحية 4·GR … 6·GR لقيمة RMS_T؛ والحد لكل نقطة 0.25 mm·S = 5·GR؛ وأن تقع ≥ 68 % من النقاط (90 % في الصيغة الصارمة) ضمن RMS_T؛ وانعدام الانحياز الاتجاهي (توازن الإشارات بين الأرباع، والبواقي الشعاعية للنقاط الداخلية مقابل نقاط الحواف، ومخطط متجهات البواقي). وأيضاً: نقاط تحقق مستقلة (الدور 'check'، لا تدخل في المواءمة أبداً)، وبواقي الاستبعاد الفردي، والدرجات 1–3 جنباً إلى جنب مع درجة موصى بها (لا تكون أبداً درجةً فائضها n − N أقل من max(2, ⌈N/2⌉)) ونقاط مقترحة للحذف. البواقي = القيمة المتنبأ بها − القيمة المعطاة، بوحدات الخريطة وبالبكسل.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="76"/>
-        <source>&lt;li&gt;&lt;b&gt;Returns filtered&lt;/b&gt; (RETURNS, default 0 = all): 0 all returns are classified and serve as neighbours (the forest study); 1 last returns only: only last (or single) returns are classified and only they may reject others; first and intermediate returns of multi-return pulses get class 1. Files without return numbers (e.g. the ISPRS samples) count every point as a last return.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours (multipath) get class 7 and take no part in the filter — one stray low point would reject every ground point within r. Advanced: NOISE_RADIUS (m, default 5) and NOISE_THRESHOLD (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default 0): 0 exact Vosselman rule; 1 terrain-adaptive (&lt;i&gt;this toolbox's extension&lt;/i&gt;): the rule is applied to heights above a smooth low terrain trend (minimum grid of TREND_CELL m, opening and mean filter of TREND_WINDOW m, defaults 10 and 60), so natural slopes steeper than θ are not rejected (ISPRS samp11, steep: total error 21.0 % → 16.4 % at the defaults). Because the terrain slope is removed first, lower θ (about 30–35°) usually works best in this mode.&lt;/li&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;الارتدادات المفلترة&lt;/b&gt; (RETURNS، الافتراضي 0 = الكل): 0 تُصنَّف جميع الارتدادات وتُستخدم كلها نقاطاً مجاورة (دراسة الغابات)؛ 1 الارتدادات الأخيرة فقط: لا تُصنَّف إلا الارتدادات الأخيرة (أو المنفردة) ولا يستبعد النقاطَ الأخرى إلا هي؛ وتأخذ الارتدادات الأولى والوسيطة للنبضات متعددة الارتدادات الصنف 1. في الملفات الخالية من أرقام الارتدادات (مثل عيّنات ISPRS) تُعَدّ كل نقطة ارتداداً أخيراً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة القيم الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي: نعم): النقاط الواقعة أسفل جيرانها بكثير (بسبب تعدد المسارات) تأخذ الصنف 7 ولا تشارك في الفلترة — فنقطة منخفضة شاردة واحدة كانت ستستبعد كل نقاط الأرض ضمن r. خيارات متقدمة: NOISE_RADIUS (م، الافتراضي 5) وNOISE_THRESHOLD (م، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;النمط&lt;/b&gt; (MODE، الافتراضي 0): 0 قاعدة Vosselman كما هي؛ 1 متكيِّف مع التضاريس (&lt;i&gt;إضافة من صندوق الأدوات هذا&lt;/i&gt;): تُطبَّق القاعدة على الارتفاعات فوق اتجاه عام منخفض وأملس للتضاريس (شبكة القيم الدنيا بخلية TREND_CELL م، ثم فتح مورفولوجي (opening) وفلتر متوسط بنافذة TREND_WINDOW م، والقيمتان الافتراضيتان 10 و60)، فلا تُستبعد المنحدرات الطبيعية الأشد انحداراً من θ (عيّنة ISPRS samp11 شديدة الانحدار: الخطأ الكلي 21.0 % → 16.4 % بالقيم الافتراضية). ولأن ميل التضاريس يُزال أولاً، فإن قيم θ الأدنى (نحو 30–35°) تعطي عادةً أفضل النتائج في هذا النمط.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="36"/>
-        <source>&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): a .las or .laz file (LAS 1.0–1.4), e.g. the output of a ground filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes used&lt;/b&gt; (CLASSES, default &lt;code&gt;2&lt;/code&gt; = ground): comma-separated LAS classes interpolated; empty = every point. No point of these classes → error that lists the classes present.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 1.0, &amp;gt; 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extent&lt;/b&gt; (EXTENT, optional): default = the selected points' extent. The grid is snapped outward to multiples of the cell size so that tiles line up.&lt;/li&gt;&lt;li&gt;&lt;b&gt;CRS&lt;/b&gt; (CRS, optional): overrides the CRS of the LAS file. If the file has no CRS and none is given the algorithm stops with an error (a DTM without a CRS is a common source of misplaced data).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum distance to data&lt;/b&gt; (MAX_DISTANCE, m, default 0 = automatic: five mean point spacings, at least two cells): cells whose nearest point is farther are nodata, so no terrain is invented under water, removed buildings or missing strips.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill data gaps&lt;/b&gt; (FILL_GAPS, default no): interpolate every cell however far from the data (ignores MAX_DISTANCE).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output&lt;/b&gt; (OUTPUT): GeoTIFF (float32, DEFLATE, nodata −9999) in the input CRS; values belong to cell centres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML report.&lt;/li&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz (LAS 1.0–1.4)، مثل مخرج أحد فلاتر نقاط الأرض.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الأصناف المستخدمة&lt;/b&gt; (CLASSES، الافتراضي &lt;code&gt;2&lt;/code&gt; = الأرض): أصناف LAS التي تُستوفى، مفصولة بفواصل؛ فارغ = كل النقاط. عدم وجود أي نقطة من هذه الأصناف → خطأ يسرد الأصناف الموجودة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 1.0، &amp;gt; 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;النطاق&lt;/b&gt; (EXTENT، اختياري): الافتراضي = نطاق النقاط المختارة. تُوسَّع الشبكة نحو الخارج لتقع حدودها على مضاعفات حجم الخلية كي تتراصف البلاطات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام الإحداثيات&lt;/b&gt; (CRS، اختياري): يحل محل نظام إحداثيات ملف LAS. إذا لم يكن للملف نظام إحداثيات ولم يُحدَّد أي نظام، تتوقف الخوارزمية بخطأ (فنموذج الارتفاعات بلا نظام إحداثيات مصدر شائع لبيانات في غير موضعها).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أقصى مسافة إلى البيانات&lt;/b&gt; (MAX_DISTANCE، م، الافتراضي 0 = تلقائي: خمسة أضعاف متوسط التباعد بين النقاط، وخليتان على الأقل): الخلايا التي تبعد عنها أقرب نقطة أكثر من ذلك تُجعل nodata، فلا تُختلق تضاريس تحت المياه أو المباني المُزالة أو الشرائط المفقودة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ملء فجوات البيانات&lt;/b&gt; (FILL_GAPS، الافتراضي: لا): استيفاء كل خلية مهما بعدت عن البيانات (يتجاهل MAX_DISTANCE).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المخرج&lt;/b&gt; (OUTPUT): GeoTIFF (float32، DEFLATE، nodata −9999) بنظام إحداثيات الإدخال؛ وتعود القيم إلى مراكز الخلايا.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): تقرير HTML.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="117"/>
-        <source>Remove low outliers first (class 7)</source>
-        <translation>إزالة القيم الشاذة المنخفضة أولاً (الصنف 7)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="119"/>
-        <source>Low-outlier search cell (m)</source>
-        <translation>خلية البحث عن القيم الشاذة المنخفضة (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="121"/>
-        <source>Low-outlier depth below neighbours (m)</source>
-        <translation>عمق القيمة الشاذة المنخفضة تحت الجيران (م)</translation>
-    </message>
-</context>
-<context>
-    <name>GeomaticsProvider</name>
-    <message>
-        <location filename="../provider/provider.py" line="21"/>
-        <source>Geomatics Toolbox</source>
-        <translation>صندوق أدوات الجيوماتكس</translation>
-    </message>
-</context>
-<context>
-    <name>GroundFilterAccuracyAlgorithm</name>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="50"/>
-        <source>Ground filter accuracy</source>
-        <translation>دقة فلتر نقاط الأرض</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="53"/>
-        <source>lidar,ground,filter,accuracy,type i,type ii,total error,kappa,isprs,reference,confusion matrix</source>
-        <translation>ليدار,أرض,فلتر,الدقة,النوع الأول,النوع الثاني,الخطأ الكلي,كابا,isprs,مرجع,مصفوفة الالتباس</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="57"/>
-        <source>&lt;p&gt;Compares a filtered point cloud with reference labels, with the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix a (ground kept), b (ground rejected), c (object accepted), d (object rejected), Type I = b/(a+b), Type II = c/(c+d), total = (b+c)/n and Cohen&apos;s kappa.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (the ISPRS reference sample, class 2 = ground) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Filtered point cloud&lt;/b&gt; (INPUT, LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Class dimension of the filtered cloud&lt;/b&gt; (FIELD, default classification) and its &lt;b&gt;ground classes&lt;/b&gt; (GROUND_CLASSES, default 2; a list such as 2,8 is accepted). Every other class (1, 7 noise, 0...) counts as object.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference point cloud&lt;/b&gt; (REFERENCE, optional): the same points in the same order (checked: equal count and coordinates). When empty, the reference labels are read from another dimension of INPUT.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference class dimension&lt;/b&gt; (REFERENCE_FIELD, default classification; e.g. user_data or an extra dimension when there is no reference cloud) and its &lt;b&gt;ground classes&lt;/b&gt; (REFERENCE_GROUND_CLASSES, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): the matrix, the errors, and the reference labels of every filtered class.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Per-point error layer&lt;/b&gt; (ERROR_OUTPUT, optional LAS/LAZ): a copy of INPUT, every attribute unchanged except &lt;i&gt;user_data&lt;/i&gt; = 0 correct, 1 Type I (ground rejected), 2 Type II (object accepted); style the point cloud layer by user_data to map where the filter fails.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs A, B, C, D, N, TYPE1, TYPE2, TOTAL and KAPPA are numbers for the graphical modeler.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;تقارن سحابة نقاط مفلترة بتصنيفات مرجعية، بمقاييس اختبار فلاتر ISPRS (Sithole &amp; Vosselman 2004): مصفوفة التقاطع a (أرض مُبقاة)، b (أرض مرفوضة)، c (أجسام مقبولة)، d (أجسام مرفوضة)، والنوع الأول = b/(a+b)، والنوع الثاني = c/(c+d)، والخطأ الكلي = (b+c)/n، ومعامل كابا لكوهين.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (عيّنة ISPRS المرجعية، الصنف 2 = أرض) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المفلترة&lt;/b&gt; (INPUT، LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد الصنف في السحابة المفلترة&lt;/b&gt; (FIELD، الافتراضي classification) و&lt;b&gt;أصناف الأرض&lt;/b&gt; فيها (GROUND_CLASSES، الافتراضي 2؛ تُقبل قائمة مثل 2,8). أي صنف آخر (1، 7 ضوضاء، 0...) يُعَدّ جسماً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المرجعية&lt;/b&gt; (REFERENCE، اختياري): النقاط نفسها وبالترتيب نفسه (يُتحقَّق من تساوي العدد والإحداثيات). إذا تُركت فارغة تُقرأ التصنيفات المرجعية من بُعد آخر في INPUT.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد الصنف في المرجع&lt;/b&gt; (REFERENCE_FIELD، الافتراضي classification؛ مثلاً user_data أو بُعد إضافي عند عدم وجود سحابة مرجعية) و&lt;b&gt;أصناف الأرض&lt;/b&gt; فيه (REFERENCE_GROUND_CLASSES، الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): المصفوفة والأخطاء والتصنيفات المرجعية لكل صنف بعد الفلترة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقة الخطأ لكل نقطة&lt;/b&gt; (ERROR_OUTPUT، ملف LAS/LAZ اختياري): نسخة من INPUT بكل خصائصها دون تغيير عدا &lt;i&gt;user_data&lt;/i&gt; = 0 صحيح، 1 النوع الأول (أرض مرفوضة)، 2 النوع الثاني (جسم مقبول)؛ نسِّق طبقة سحابة النقاط حسب user_data لترى على الخريطة أين يخفق الفلتر.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;المخرجات A وB وC وD وN وTYPE1 وTYPE2 وTOTAL وKAPPA أرقام تُستخدم في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="87"/>
-        <source>Filtered point cloud (LAS/LAZ)</source>
-        <translation>سحابة النقاط المفلترة (LAS/LAZ)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="90"/>
-        <source>Class dimension of the filtered cloud</source>
-        <translation>بُعد الصنف في السحابة المفلترة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="93"/>
-        <source>Ground classes of the filtered cloud</source>
-        <translation>أصناف الأرض في السحابة المفلترة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="95"/>
-        <source>Reference point cloud (same points, same order)</source>
-        <translation>سحابة النقاط المرجعية (النقاط نفسها وبالترتيب نفسه)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="99"/>
-        <source>Reference class dimension</source>
-        <translation>بُعد الصنف في المرجع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="101"/>
-        <source>Reference ground classes</source>
-        <translation>أصناف الأرض في المرجع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="103"/>
-        <source>Report</source>
-        <translation>التقرير</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="103"/>
-        <source>HTML files (*.html)</source>
-        <translation>ملفات HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="106"/>
-        <source>Per-point error layer (user_data: 0 correct, 1 Type I, 2 Type II)</source>
-        <translation>طبقة الخطأ لكل نقطة (user_data: 0 صحيح، 1 النوع الأول، 2 النوع الثاني)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="126"/>
-        <source>The error layer must end in .las or .laz: {p}</source>
-        <translation>يجب أن ينتهي اسم ملف طبقة الخطأ بالامتداد .las أو .laz: {p}</translation>
-    </message>
-</context>
-<context>
-    <name>GsdBatchAlgorithm</name>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="324"/>
-        <source>GSD and photogrammetric accuracy calculator (batch table)</source>
-        <translation>حاسبة GSD والدقة التصويرية (جدول دفعي)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="327"/>
-        <source>&lt;p&gt;Runs the GSD / accuracy calculator for every row of a table (CSV, spreadsheet or any layer) and writes a table with the inputs and all results.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Input columns&lt;/b&gt; (case-insensitive): &lt;i&gt;camera&lt;/i&gt; (optional preset key: nikon_p100, dji_p4rtk, dji_p1_35, phaseone_ixm100_80), &lt;i&gt;distance&lt;/i&gt; (m, required), &lt;i&gt;sensor_width&lt;/i&gt; (mm), &lt;i&gt;image_width&lt;/i&gt; (px), &lt;i&gt;focal_length&lt;/i&gt; (mm) — required unless a camera preset is given — and optionally sensor_height, image_height, target_gsd, k_m, k_s, pyramid_level, subsampling_step, observed_sx, observed_sy, observed_sz, observed_sxyz, observed_dense_std, forward_overlap, side_overlap, stereo_base (units as in the single calculator).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output&lt;/b&gt;: the input columns plus gsd_cm, footprint_width_m, sigma_xyz_mm, dense_resolution_cm and every other result. A row with an invalid value stops the run with an error naming the row and column.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;تشغّل حاسبة GSD والدقة لكل سطر من جدول (CSV أو جدول بيانات أو أي طبقة) وتكتب جدولاً بالمدخلات وجميع النتائج.&lt;/p&gt;&lt;p&gt;&lt;b&gt;أعمدة الإدخال&lt;/b&gt; (دون تمييز حالة الأحرف): &lt;i&gt;camera&lt;/i&gt; (اختياري، مفتاح كاميرا معرّفة: nikon_p100، dji_p4rtk، dji_p1_35، phaseone_ixm100_80)، &lt;i&gt;distance&lt;/i&gt; (م، إلزامي)، &lt;i&gt;sensor_width&lt;/i&gt; (مم)، &lt;i&gt;image_width&lt;/i&gt; (بكسل)، &lt;i&gt;focal_length&lt;/i&gt; (مم) — إلزامية ما لم تُحدَّد كاميرا — واختيارياً sensor_height وimage_height وtarget_gsd وk_m وk_s وpyramid_level وsubsampling_step وobserved_sx وobserved_sy وobserved_sz وobserved_sxyz وobserved_dense_std وforward_overlap وside_overlap وstereo_base (بالوحدات نفسها كما في الحاسبة المفردة).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المخرج&lt;/b&gt;: أعمدة الإدخال مضافاً إليها gsd_cm وfootprint_width_m وsigma_xyz_mm وdense_resolution_cm وسائر النتائج. السطر الذي يحوي قيمة غير صالحة يوقف التشغيل برسالة تذكر السطر والعمود.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="345"/>
-        <source>Table of cameras and distances</source>
-        <translation>جدول الكاميرات والمسافات</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="348"/>
-        <source>Round GSD to 0.01 cm/px like the paper</source>
-        <translation>تقريب GSD إلى 0.01 سم/بكسل كما في البحث</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="350"/>
-        <source>GSD results</source>
-        <translation>نتائج GSD</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="359"/>
-        <source>The table has no &apos;distance&apos; column (m); columns found: {0}.</source>
-        <translation>لا يحتوي الجدول على العمود 'distance' (م)؛ الأعمدة الموجودة: {0}.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="375"/>
-        <source>Cancelled by the user.</source>
-        <translation>ألغى المستخدم العملية.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="381"/>
-        <source>Row {row}: unknown camera &apos;{cam}&apos;; known: {known}.</source>
-        <translation>السطر {row}: كاميرا غير معروفة '{cam}'؛ المعروفة: {known}.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="398"/>
-        <source>Row {row}, column &apos;{col}&apos;: &apos;{val}&apos; is not a number.</source>
-        <translation>السطر {row}، العمود '{col}': القيمة '{val}' ليست رقماً.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="404"/>
-        <source>Row {row}: missing {cols}; give the columns or a camera preset.</source>
-        <translation>السطر {row}: القيم {cols} ناقصة؛ أضف الأعمدة أو حدّد كاميرا معرّفة مسبقاً.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="410"/>
-        <source>Row {row}: {err}</source>
-        <translation>السطر {row}: {err}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="327"/>
-        <source>&lt;p&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;تقريب GSD كما في البحث&lt;/b&gt; (ROUND_GSD، الافتراضي: لا): يقرّب GSD إلى 0.01 سم/بكسل قبل حساب الكميات المشتقة.&lt;/p&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>GsdCalculatorAlgorithm</name>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="88"/>
-        <source>GSD and photogrammetric accuracy calculator</source>
-        <translation>حاسبة دقة المسافة الأرضية للبكسل (GSD) والدقة التصويرية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="91"/>
-        <source>gsd,ground sampling distance,flying height,footprint,accuracy,photogrammetry,drone,flight planning,dense matching</source>
-        <translation>gsd,المسافة الأرضية للبكسل,ارتفاع الطيران,البصمة الأرضية,الدقة,المساحة التصويرية,طائرة مسيرة,تخطيط الطيران,المطابقة الكثيفة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="95"/>
-        <source>&lt;p&gt;Computes the ground sampling distance (GSD) of a camera at a given distance, the image footprint, the theoretical accuracy of phototriangulation and of a dense-matching point cloud, and compares observed accuracies with the theory (Al Khalil 2019).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Formulas&lt;/b&gt;: GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;); footprint = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;; σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD; σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;; matching step P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;; dense resolution R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt; (the paper's Nikon Coolpix P100): DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 gives GSD 0.21455 cm/px, σ&lt;sub&gt;xyz&lt;/sub&gt; 1.287 mm (1.26 mm with ROUND_GSD), R&lt;sub&gt;theo&lt;/sub&gt; 0.858 cm, footprint 7.827 m.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Camera preset&lt;/b&gt; (CAMERA, default Custom): fills sensor width/height, image width/height and focal length; values you enter override the preset.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance&lt;/b&gt; (DISTANCE, m): camera–object distance or flying height above ground. Required, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor width&lt;/b&gt; (SENSOR_WIDTH, mm), &lt;b&gt;Image width&lt;/b&gt; (IMAGE_WIDTH, px), &lt;b&gt;Focal length&lt;/b&gt; (FOCAL_LENGTH, mm, the true focal length, not the 35 mm equivalent): required with the Custom camera, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor height&lt;/b&gt; (SENSOR_HEIGHT, mm) / &lt;b&gt;Image height&lt;/b&gt; (IMAGE_HEIGHT, px): optional, for the footprint height and flight spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Target GSD&lt;/b&gt; (TARGET_GSD, cm/px): optional; gives the distance or flying height that achieves it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (K_M, px, default 0.3; 0.13 for an expert operator) and &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (K_S, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pyramid level N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (PYRAMID_LEVEL, default 0.5, a fraction in (0, 1], or a percentage in (0, 100] with PYRAMID_PERCENT) and &lt;b&gt;subsampling step T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (SUBSAMPLING_STEP, px, ≥ 1, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Observed σx, σy, σz, σxyz&lt;/b&gt; (mm) and &lt;b&gt;observed dense-cloud std&lt;/b&gt; (cm): optional; give the observed/theoretical ratios.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extension&lt;/b&gt; (not in the paper): stereo base (STEREO_BASE, m) → normal-case σ&lt;sub&gt;Z&lt;/sub&gt; = (D/B)(D/c)σ&lt;sub&gt;image&lt;/sub&gt; with σ&lt;sub&gt;image&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt; pixels; forward/side overlap (%) → exposure and line spacing (image height along track, width across track).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): optional HTML report.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every result is also an output number, so the graphical modeler can chain it.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;تحسب المسافة الأرضية للبكسل (GSD) لكاميرا على مسافة معينة، والبصمة الأرضية للصورة، والدقة النظرية للتثليث التصويري ولسحابة النقاط الناتجة عن المطابقة الكثيفة، وتقارن الدقة المرصودة بالنظرية (الخليل 2019).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعادلات&lt;/b&gt;: GSD [سم/بكسل] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;)؛ البصمة = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;؛ σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD؛ σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;؛ خطوة المطابقة P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;؛ الدقة النظرية للسحابة R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt; (كاميرا Nikon Coolpix P100 في البحث): DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 يعطي GSD = 0.21455 سم/بكسل، σ&lt;sub&gt;xyz&lt;/sub&gt; = 1.287 مم (1.26 مم مع ROUND_GSD)، R&lt;sub&gt;theo&lt;/sub&gt; = 0.858 سم، البصمة 7.827 م.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;كاميرا معرّفة مسبقاً&lt;/b&gt; (CAMERA، الافتراضي: مخصص): تملأ عرض الحساس وارتفاعه وأبعاد الصورة والبعد البؤري؛ القيم التي تدخلها تتقدّم على قيم الكاميرا.&lt;/li&gt;&lt;li&gt;&lt;b&gt;المسافة&lt;/b&gt; (DISTANCE، م): المسافة بين الكاميرا والجسم أو ارتفاع الطيران فوق الأرض. إلزامية، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عرض الحساس&lt;/b&gt; (SENSOR_WIDTH، مم)، &lt;b&gt;عرض الصورة&lt;/b&gt; (IMAGE_WIDTH، بكسل)، &lt;b&gt;البعد البؤري&lt;/b&gt; (FOCAL_LENGTH، مم، البعد الحقيقي لا المكافئ لـ35 مم): إلزامية مع الكاميرا المخصصة، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ارتفاع الحساس&lt;/b&gt; (SENSOR_HEIGHT، مم) / &lt;b&gt;ارتفاع الصورة&lt;/b&gt; (IMAGE_HEIGHT، بكسل): اختيارية، لارتفاع البصمة والمسافات بين اللقطات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD المطلوب&lt;/b&gt; (TARGET_GSD، سم/بكسل): اختياري؛ يعطي المسافة أو ارتفاع الطيران المحقق له.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تقريب GSD كما في البحث&lt;/b&gt; (ROUND_GSD، الافتراضي: لا): يقرّب GSD إلى 0.01 سم/بكسل قبل حساب الكميات المشتقة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (K_M، بكسل، الافتراضي 0.3؛ 0.13 لمشغّل خبير) و&lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (K_S، الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مستوى الهرم N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (PYRAMID_LEVEL، الافتراضي 0.5، كسر في (0، 1]، أو نسبة مئوية في (0، 100] مع PYRAMID_PERCENT) و&lt;b&gt;خطوة الاعتيان T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (SUBSAMPLING_STEP، بكسل، ≥ 1، الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;σx وσy وσz وσxyz المرصودة&lt;/b&gt; (مم) و&lt;b&gt;الانحراف المعياري المرصود للسحابة الكثيفة&lt;/b&gt; (سم): اختيارية؛ تعطي نسب المرصود إلى النظري.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إضافة&lt;/b&gt; (ليست في البحث): قاعدة الزوج المجسم (STEREO_BASE، م) ← σ&lt;sub&gt;Z&lt;/sub&gt; = (D/B)(D/c)σ&lt;sub&gt;image&lt;/sub&gt; للحالة النظامية مع σ&lt;sub&gt;image&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt; بكسل؛ التداخل الطولي/الجانبي (%) ← المسافة بين اللقطات وبين خطوط الطيران (ارتفاع الصورة باتجاه الطيران وعرضها عمودياً عليه).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML): تقرير HTML اختياري.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;كل نتيجة هي أيضاً مخرج رقمي، لذا يمكن ربطها في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="138"/>
-        <source>Custom (enter the values below)</source>
-        <translation>مخصص (أدخل القيم أدناه)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="139"/>
-        <source>Camera preset</source>
-        <translation>كاميرا معرّفة مسبقاً</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="141"/>
-        <source>Camera–object distance / flying height (m)</source>
-        <translation>المسافة بين الكاميرا والجسم / ارتفاع الطيران (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="143"/>
-        <source>Sensor width (mm)</source>
-        <translation>عرض الحساس (مم)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="145"/>
-        <source>Image width (px)</source>
-        <translation>عرض الصورة (بكسل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="147"/>
-        <source>Focal length, true (mm)</source>
-        <translation>البعد البؤري الحقيقي (مم)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="149"/>
-        <source>Sensor height (mm)</source>
-        <translation>ارتفاع الحساس (مم)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="151"/>
-        <source>Image height (px)</source>
-        <translation>ارتفاع الصورة (بكسل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="153"/>
-        <source>Target GSD (cm/px)</source>
-        <translation>GSD المطلوب (سم/بكسل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="155"/>
-        <source>Round GSD to 0.01 cm/px like the paper</source>
-        <translation>تقريب GSD إلى 0.01 سم/بكسل كما في البحث</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="157"/>
-        <source>Measurement factor k_m (px)</source>
-        <translation>معامل القياس k_m (بكسل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="159"/>
-        <source>Safety factor k_s</source>
-        <translation>معامل الأمان k_s</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="161"/>
-        <source>Dense matching pyramid level N_p (fraction, or % if checked below)</source>
-        <translation>مستوى هرم الصور للمطابقة الكثيفة N_p (كسر، أو نسبة مئوية إذا فُعّل الخيار أدناه)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="164"/>
-        <source>Pyramid level is a percentage</source>
-        <translation>مستوى الهرم نسبة مئوية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="167"/>
-        <source>Dense matching subsampling step T_s (px)</source>
-        <translation>خطوة الاعتيان في المطابقة الكثيفة T_s (بكسل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="170"/>
-        <source>Observed σx (mm)</source>
-        <translation>σx المرصود (مم)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="170"/>
-        <source>Observed σy (mm)</source>
-        <translation>σy المرصود (مم)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="170"/>
-        <source>Observed σz (mm)</source>
-        <translation>σz المرصود (مم)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="170"/>
-        <source>Observed σxyz (mm)</source>
-        <translation>σxyz المرصود (مم)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="170"/>
-        <source>Observed dense-cloud std (cm)</source>
-        <translation>الانحراف المعياري المرصود للسحابة الكثيفة (سم)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="177"/>
-        <source>Stereo base B (m) [extension]</source>
-        <translation>قاعدة الزوج المجسم B (م) [إضافة]</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="179"/>
-        <source>Forward overlap (%) [extension]</source>
-        <translation>التداخل الطولي (%) [إضافة]</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="181"/>
-        <source>Side overlap (%) [extension]</source>
-        <translation>التداخل الجانبي (%) [إضافة]</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="183"/>
-        <source>Report</source>
-        <translation>التقرير</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="183"/>
-        <source>HTML files (*.html)</source>
-        <translation>ملفات HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="214"/>
-        <source>{name} ({unit}) is required with the Custom camera: enter it or choose a camera preset.</source>
-        <translation>القيمة {name} ({unit}) مطلوبة مع الكاميرا المخصصة: أدخلها أو اختر كاميرا معرّفة مسبقاً.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="223"/>
-        <source>DISTANCE (m) is required.</source>
-        <translation>المسافة DISTANCE (م) مطلوبة.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="258"/>
-        <source>GSD used</source>
-        <translation>GSD المستخدم</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="259"/>
-        <source>GSD, unrounded</source>
-        <translation>GSD دون تقريب</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="260"/>
-        <source>Pixel pitch</source>
-        <translation>أبعاد البكسل على الحساس</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="261"/>
-        <source>Footprint width</source>
-        <translation>عرض البصمة الأرضية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="262"/>
-        <source>Footprint height</source>
-        <translation>ارتفاع البصمة الأرضية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="263"/>
-        <source>Image measurement precision σ_meas</source>
-        <translation>دقة القياس على الصورة σ_meas</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="264"/>
-        <source>Theoretical phototriangulation accuracy σ_xyz</source>
-        <translation>الدقة النظرية للتثليث التصويري σ_xyz</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="265"/>
-        <source>Dense matching step P</source>
-        <translation>خطوة المطابقة الكثيفة P</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="266"/>
-        <source>Theoretical dense-cloud resolution R_theo</source>
-        <translation>الدقة النظرية للسحابة الكثيفة R_theo</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="267"/>
-        <source>Distance for the target GSD</source>
-        <translation>المسافة اللازمة لتحقيق GSD المطلوب</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="268"/>
-        <source>Observed σxyz</source>
-        <translation>σxyz المرصود</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="269"/>
-        <source>Observed / theoretical σxyz</source>
-        <translation>نسبة σxyz المرصود إلى النظري</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="270"/>
-        <source>Observed dense std / R_theo</source>
-        <translation>نسبة الانحراف المرصود للسحابة الكثيفة إلى R_theo</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="271"/>
-        <source>Stereo base (extension)</source>
-        <translation>قاعدة الزوج المجسم (إضافة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="272"/>
-        <source>Stereo planimetric precision (extension)</source>
-        <translation>الدقة المستوية للزوج المجسم (إضافة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="273"/>
-        <source>Stereo depth precision σ_Z (extension)</source>
-        <translation>دقة العمق للزوج المجسم σ_Z (إضافة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="274"/>
-        <source>Exposure spacing (extension)</source>
-        <translation>المسافة بين اللقطات (إضافة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="275"/>
-        <source>Flight-line spacing (extension)</source>
-        <translation>المسافة بين خطوط الطيران (إضافة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="279"/>
-        <source>Distance</source>
-        <translation>المسافة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="280"/>
-        <source>Sensor width</source>
-        <translation>عرض الحساس</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="281"/>
-        <source>Image width</source>
-        <translation>عرض الصورة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="282"/>
-        <source>Focal length</source>
-        <translation>البعد البؤري</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="284"/>
-        <source>quantity</source>
-        <translation>الكمية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="284"/>
-        <source>value</source>
-        <translation>القيمة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="284"/>
-        <source>unit</source>
-        <translation>الوحدة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="284"/>
-        <source>Formulas and defaults from Al Khalil (2019); the paper finds observed phototriangulation accuracy about 3–5 times the theoretical value. Items marked (extension) are not in the paper.</source>
-        <translation>المعادلات والقيم الافتراضية من الخليل (2019)؛ وجد البحث أن دقة التثليث التصويري المرصودة تعادل نحو 3–5 أضعاف القيمة النظرية. البنود المعلَّمة بـ(إضافة) ليست من البحث.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="294"/>
-        <source>GSD and photogrammetric accuracy</source>
-        <translation>GSD والدقة التصويرية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="283"/>
-        <source>Inputs</source>
-        <translation>المدخلات</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="283"/>
-        <source>Results</source>
-        <translation>النتائج</translation>
-    </message>
-</context>
-<context>
-    <name>IdwDtmAlgorithm</name>
-    <message>
-        <location filename="../algorithms/terrain.py" line="208"/>
-        <source>DTM by inverse distance weighting (IDW)</source>
-        <translation>نموذج الارتفاعات الرقمي للأرض بطريقة مقلوب المسافة الموزون (IDW)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="211"/>
-        <source>dtm,dem,idw,inverse distance,interpolation,lidar,ground,gdal_grid,invdistnn,raster</source>
-        <translation>dtm,dem,idw,مقلوب المسافة,الاستيفاء,ليدار,أرض,gdal_grid,invdistnn,راستر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="215"/>
-        <source>&lt;p&gt;Interpolates a terrain raster from the ground points of a LAS/LAZ file by inverse distance weighting (Shepard 1968): ẑ = Σ w&lt;sub&gt;i&lt;/sub&gt; z&lt;sub&gt;i&lt;/sub&gt; / Σ w&lt;sub&gt;i&lt;/sub&gt;, w&lt;sub&gt;i&lt;/sub&gt; = 1/d&lt;sub&gt;i&lt;/sub&gt;&lt;sup&gt;p&lt;/sup&gt;, over the nearest neighbours of each cell centre. Same semantics as &lt;code&gt;gdal_grid -a invdistnn&lt;/code&gt; (power, max_points, radius, min_points; a cell centre on a point takes its height exactly), but KD-tree based and processed in blocks: 1 M points onto 1 M cells take seconds.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=1 POWER=3 NEIGHBOURS=12 (the seed paper's best setting, RMSE 0.204 m at 62 GNSS points).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
-        <translation>&lt;p&gt;تستوفي راستر تضاريس من نقاط الأرض في ملف LAS/LAZ بطريقة مقلوب المسافة الموزون (Shepard 1968): ẑ = Σ w&lt;sub&gt;i&lt;/sub&gt; z&lt;sub&gt;i&lt;/sub&gt; / Σ w&lt;sub&gt;i&lt;/sub&gt;، w&lt;sub&gt;i&lt;/sub&gt; = 1/d&lt;sub&gt;i&lt;/sub&gt;&lt;sup&gt;p&lt;/sup&gt;، على أقرب الجيران لمركز كل خلية. الدلالة نفسها كما في &lt;code&gt;gdal_grid -a invdistnn&lt;/code&gt; (power وmax_points وradius وmin_points؛ ومركز الخلية الواقع على نقطة يأخذ ارتفاعها بالضبط)، لكن بالاعتماد على شجرة KD وبالمعالجة على كتل: 1 مليون نقطة على 1 مليون خلية تستغرق ثوانيَ.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=1 POWER=3 NEIGHBOURS=12 (أفضل إعداد في البحث المرجعي، RMSE = 0.204 م على 62 نقطة GNSS).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="238"/>
-        <source>Power p</source>
-        <translation>الأس p</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="239"/>
-        <source>Neighbours (0 = all within radius)</source>
-        <translation>عدد الجيران (0 = كل النقاط ضمن نصف القطر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="241"/>
-        <source>Search radius (m, 0 = unlimited)</source>
-        <translation>نصف قطر البحث (م، 0 = غير محدود)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="243"/>
-        <source>Minimum points</source>
-        <translation>الحد الأدنى لعدد النقاط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="246"/>
-        <source>IDW DTM</source>
-        <translation>نموذج الارتفاعات الرقمي للأرض بطريقة IDW</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="289"/>
-        <source>IDW DTM report</source>
-        <translation>تقرير نموذج الارتفاعات الرقمي بطريقة IDW</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="215"/>
-        <source>&lt;li&gt;&lt;b&gt;Power&lt;/b&gt; (POWER, default 2; the paper found 3 best).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 12): nearest points used (gdal max_points); 0 = all points within the radius (needs RADIUS). More neighbours than points → error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Search radius&lt;/b&gt; (RADIUS, m, default 0 = unlimited): only points within it are used (gdal radius).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points&lt;/b&gt; (MIN_POINTS, default 0): cells with fewer neighbours within the radius are nodata (gdal min_points).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs also the numbers N_POINTS, VALID_CELLS, NODATA_CELLS.&lt;/p&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;الأس&lt;/b&gt; (POWER، الافتراضي 2؛ وجد البحث أن 3 هو الأفضل).&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد الجيران&lt;/b&gt; (NEIGHBOURS، الافتراضي 12): عدد أقرب النقاط المستخدمة (max_points في gdal)؛ 0 = كل النقاط ضمن نصف القطر (يتطلب RADIUS). عدد جيران أكبر من عدد النقاط → خطأ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نصف قطر البحث&lt;/b&gt; (RADIUS، م، الافتراضي 0 = غير محدود): لا تُستخدم إلا النقاط الواقعة ضمنه (radius في gdal).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأدنى لعدد النقاط&lt;/b&gt; (MIN_POINTS، الافتراضي 0): الخلايا التي لها جيران أقل من ذلك ضمن نصف القطر تُجعل nodata (min_points في gdal).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;تُخرج أيضاً الأرقام N_POINTS وVALID_CELLS وNODATA_CELLS.&lt;/p&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>KrigingDtmAlgorithm</name>
-    <message>
-        <location filename="../algorithms/terrain.py" line="315"/>
-        <source>DTM by kriging (ordinary / universal)</source>
-        <translation>نموذج الارتفاعات الرقمي للأرض بطريقة الكريغينغ (العادي / الشامل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="318"/>
-        <source>dtm,dem,kriging,variogram,geostatistics,pykrige,interpolation,lidar,variance,cross-validation</source>
-        <translation>dtm,dem,كريغينغ,فاريوغرام,الإحصاء الجغرافي,pykrige,الاستيفاء,ليدار,التباين,التحقق المتقاطع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="322"/>
-        <source>&lt;p&gt;Kriging (Matheron 1963; Cressie 1993) of the ground points of a LAS/LAZ file onto a raster, with a kriging variance (or standard deviation) raster. Ordinary kriging (unknown constant mean) or universal kriging with a linear drift. The variogram is fitted with PyKrige's estimator on a random subsample (or given by you); each cell is then kriged from its nearest points in batched local systems, so 1 M points onto a 1 km² grid at 1 m take about a minute instead of the n×n matrix that makes plain PyKrige run out of memory past ~100 k points.&lt;/p&gt;&lt;p&gt;&lt;b&gt;What is approximated&lt;/b&gt;: the variogram is fitted on a sample of point pairs (FIT_POINTS, reproducible with SEED), by default at the local scale. Local-neighbourhood kriging is not global kriging: only the NEIGHBOURS nearest points are weighted and the mean is re-estimated in every neighbourhood (quasi-stationarity). On terrain this follows the relief better than one global mean (it gave the lowest hold-out RMSE on all four ISPRS samples in the benchmark), but the two differ — typically by centimetres, by decimetres to metres at borders, gaps and steep slopes. With NEIGHBOURS equal to the number of points (≤ 6000) the result is global kriging, identical to PyKrige. With a linear drift the variogram is fitted on the residuals of a least-squares plane; points with identical x, y are merged (mean height). The kriging variance is model-based: check it with CV_POINTS (RMS standardised error near 1 means realistic variances).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=spherical NEIGHBOURS=16 CV_POINTS=1000.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
-        <translation>&lt;p&gt;كريغينغ (Matheron 1963؛ Cressie 1993) لنقاط الأرض في ملف LAS/LAZ على راستر، مع راستر لتباين الكريغينغ (أو انحرافه المعياري). كريغينغ عادي (متوسط ثابت مجهول) أو كريغينغ شامل بانجراف خطي. يُوائَم الفاريوغرام بمقدِّر PyKrige على عيّنة جزئية عشوائية (أو تحدده أنت)؛ ثم تُقدَّر كل خلية بالكريغينغ من أقرب النقاط إليها في أنظمة محلية تُحل على دفعات، فتستغرق 1 مليون نقطة على شبكة مساحتها 1 كم² بخلايا 1 م نحو دقيقة، بدلاً من المصفوفة n×n التي تجعل PyKrige المعتاد يستنفد الذاكرة بعد نحو 100 ألف نقطة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;ما الذي يُقرَّب&lt;/b&gt;: يُوائَم الفاريوغرام على عيّنة من أزواج النقاط (FIT_POINTS، قابلة للتكرار بـSEED)، على المقياس المحلي افتراضياً. الكريغينغ ضمن جوار محلي ليس كريغينغاً كلّياً: تُرجَّح فقط أقرب NEIGHBOURS نقطة ويُعاد تقدير المتوسط في كل جوار (شبه استقرارية). على التضاريس يتبع هذا الأسلوب شكل السطح أفضل من متوسط كلّي واحد (أعطى أدنى RMSE على النقاط المحجوزة للاختبار في عيّنات ISPRS الأربع جميعها في اختبار الأداء)، لكن الطريقتين تختلفان — عادةً ببضعة سنتيمترات، وبعشرات السنتيمترات حتى أمتار عند الحواف والفجوات والمنحدرات الشديدة. وعندما تساوي NEIGHBOURS عدد النقاط (≤ 6000) تكون النتيجة كريغينغاً كلّياً مطابقاً لـPyKrige. ومع الانجراف الخطي يُوائَم الفاريوغرام على بواقي مستوٍ بالمربعات الصغرى؛ وتُدمج النقاط ذات x وy المتطابقة (بمتوسط الارتفاع). تباين الكريغينغ مبني على النموذج: تحقق منه باستخدام CV_POINTS (قيمة RMS للأخطاء المعيَّرة القريبة من 1 تعني تباينات واقعية).&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=spherical NEIGHBOURS=16 CV_POINTS=1000.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="376"/>
-        <source>Kriging type</source>
-        <translation>نوع الكريغينغ</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="376"/>
-        <source>Ordinary</source>
-        <translation>عادي</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="376"/>
-        <source>Universal (linear drift)</source>
-        <translation>شامل (انجراف خطي)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="379"/>
-        <source>Variogram model</source>
-        <translation>نموذج الفاريوغرام</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="382"/>
-        <source>Variogram parameters (e.g. nugget=0.01, sill=4, range=60; empty = fit)</source>
-        <translation>معاملات الفاريوغرام (مثلاً nugget=0.01, sill=4, range=60؛ فارغ = مواءمة تلقائية)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="386"/>
-        <source>Neighbours per cell</source>
-        <translation>عدد الجيران لكل خلية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="388"/>
-        <source>Points for the variogram fit</source>
-        <translation>عدد النقاط لمواءمة الفاريوغرام</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="390"/>
-        <source>Lag classes</source>
-        <translation>عدد فئات مسافة الإزاحة (lag)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="392"/>
-        <source>Maximum lag (m, 0 = auto: local scale)</source>
-        <translation>أقصى مسافة إزاحة (م، 0 = تلقائي: المقياس المحلي)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="394"/>
-        <source>Cross-validation points (0 = off)</source>
-        <translation>نقاط التحقق المتقاطع (0 = معطَّل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="396"/>
-        <source>Random seed</source>
-        <translation>البذرة العشوائية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="399"/>
-        <source>Kriging DTM</source>
-        <translation>نموذج الارتفاعات الرقمي للأرض بطريقة الكريغينغ</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="400"/>
-        <source>Write standard deviation instead of variance</source>
-        <translation>كتابة الانحراف المعياري بدلاً من التباين</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="403"/>
-        <source>Kriging variance</source>
-        <translation>تباين الكريغينغ</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="442"/>
-        <source>Variogram: {}</source>
-        <translation>الفاريوغرام: {}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="513"/>
-        <source>Kriging DTM report</source>
-        <translation>تقرير نموذج الارتفاعات الرقمي بطريقة الكريغينغ</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="322"/>
-        <source>&lt;li&gt;&lt;b&gt;Kriging type&lt;/b&gt; (KRIGING_TYPE, 0 ordinary (default), 1 universal with linear drift).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram model&lt;/b&gt; (VARIOGRAM, 0 linear, 1 power, 2 gaussian, 3 spherical (default), 4 exponential).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram parameters&lt;/b&gt; (VARIOGRAM_PARAMS, optional text, e.g. &lt;code&gt;nugget=0.01, sill=4, range=60&lt;/code&gt;; linear: slope, nugget; power: scale, exponent, nugget). Empty = fitted automatically. The sill includes the nugget; the range is the practical range.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 16, ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Points for the variogram fit&lt;/b&gt; (FIT_POINTS, default 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Lag classes&lt;/b&gt; (NLAGS, default 12) and &lt;b&gt;maximum lag&lt;/b&gt; (MAX_LAG, m, default 0 = automatic: three times the typical distance to the NEIGHBOURS-th neighbour, the scale local kriging uses, so the nugget and the short-range shape that set the weights and the variance are well sampled; the fitted sill and range then describe that local scale). For a classical field-scale fit give e.g. half the extent (Journel &amp;amp; Huijbregts 1978). A fitted nugget is raised to at least 1 % of the semivariance at the maximum lag, for numerical stability (Gaussian and power models).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cross-validation points&lt;/b&gt; (CV_POINTS, default 0 = off): leave-one-out on this many random points; reports ME, RMSE, mean standardised error (ideal 0) and RMS standardised error (ideal 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Seed&lt;/b&gt; (SEED, default 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variance output&lt;/b&gt; (OUTPUT_VARIANCE, optional GeoTIFF): kriging variance (m²), or standard deviation (m) with VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: NUGGET, SILL, RANGE (NaN for linear/power), N_POINTS, VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).&lt;/p&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;نوع الكريغينغ&lt;/b&gt; (KRIGING_TYPE، 0 عادي (الافتراضي)، 1 شامل بانجراف خطي).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نموذج الفاريوغرام&lt;/b&gt; (VARIOGRAM، 0 خطي، 1 قوة (power)، 2 غاوسي، 3 كروي (الافتراضي)، 4 أُسّي).&lt;/li&gt;&lt;li&gt;&lt;b&gt;معاملات الفاريوغرام&lt;/b&gt; (VARIOGRAM_PARAMS، نص اختياري، مثلاً &lt;code&gt;nugget=0.01, sill=4, range=60&lt;/code&gt;؛ للنموذج الخطي: slope وnugget؛ ولنموذج القوة: scale وexponent وnugget). فارغ = مواءمة تلقائية. تتضمن العتبة (sill) أثرَ الكتلة (nugget)؛ والمدى (range) هو المدى العملي.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد الجيران&lt;/b&gt; (NEIGHBOURS، الافتراضي 16، ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد النقاط لمواءمة الفاريوغرام&lt;/b&gt; (FIT_POINTS، الافتراضي 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد فئات مسافة الإزاحة&lt;/b&gt; (NLAGS، الافتراضي 12) و&lt;b&gt;أقصى مسافة إزاحة&lt;/b&gt; (MAX_LAG، م، الافتراضي 0 = تلقائي: ثلاثة أضعاف المسافة النموذجية إلى الجار رقم NEIGHBOURS، وهو المقياس الذي يستخدمه الكريغينغ المحلي، كي يُعايَن جيداً أثر الكتلة وشكل الفاريوغرام عند المسافات القصيرة، وهما ما يحدد الأوزان والتباين؛ وتصف العتبة والمدى المُوائَمان حينئذٍ ذلك المقياس المحلي). لمواءمة تقليدية على مقياس الحقل كله حدِّد مثلاً نصف النطاق (Journel &amp;amp; Huijbregts 1978). يُرفع أثر الكتلة المُوائَم إلى 1 % على الأقل من نصف التباين (semivariance) عند أقصى مسافة إزاحة، من أجل الاستقرار العددي (نموذجا غاوس والقوة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط التحقق المتقاطع&lt;/b&gt; (CV_POINTS، الافتراضي 0 = معطَّل): استبعاد فردي على هذا العدد من النقاط العشوائية؛ يعطي ME وRMSE ومتوسط الخطأ المعيَّر (المثالي 0) وقيمة RMS للخطأ المعيَّر (المثالي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;البذرة العشوائية&lt;/b&gt; (SEED، الافتراضي 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مخرج التباين&lt;/b&gt; (OUTPUT_VARIANCE، GeoTIFF اختياري): تباين الكريغينغ (م²)، أو الانحراف المعياري (م) مع VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: NUGGET وSILL وRANGE (NaN للنموذجين الخطي والقوة)، وN_POINTS وVALID_CELLS وCV_ME وCV_RMSE وCV_MSE (NaN دون تحقق متقاطع).&lt;/p&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>LsqGroundFilterAlgorithm</name>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="62"/>
-        <source>Ground filter (least-squares polynomial)</source>
-        <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="65"/>
-        <source>lidar,ground,filter,bare earth,dtm,classification,least squares,polynomial,tiles,las,laz,isprs</source>
-        <translation>ليدار,أرض,فلتر,الأرض العارية,dtm,تصنيف,المربعات الصغرى,متعدد الحدود,بلاطات,las,laz,isprs</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="127"/>
-        <source>Point cloud (LAS/LAZ)</source>
-        <translation>سحابة النقاط (LAS/LAZ)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="130"/>
-        <source>Polynomial order (1 or 2)</source>
-        <translation>درجة متعدد الحدود (1 أو 2)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="132"/>
-        <source>Tile size (m)</source>
-        <translation>حجم البلاطة (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="133"/>
-        <source>Threshold T (m)</source>
-        <translation>العتبة T (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="134"/>
-        <source>Mode</source>
-        <translation>النمط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="134"/>
-        <source>Faithful (the paper)</source>
-        <translation>مطابق (طريقة البحث)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="134"/>
-        <source>Improved (ours, beyond the paper)</source>
-        <translation>محسَّن (من إضافتنا، يتجاوز البحث)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="139"/>
-        <source>Maximum iterations per tile</source>
-        <translation>الحد الأقصى للتكرارات في كل بلاطة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="142"/>
-        <source>Stop tolerance on min/max/mean/std (m)</source>
-        <translation>سماحية التوقف على الأدنى/الأعلى/المتوسط/الانحراف المعياري (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="144"/>
-        <source>Random fitting subset per tile (points, 0 = all)</source>
-        <translation>مجموعة جزئية عشوائية للمواءمة في كل بلاطة (نقاط، 0 = الكل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="147"/>
-        <source>Random seed of the subset</source>
-        <translation>البذرة العشوائية للمجموعة الجزئية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="149"/>
-        <source>Minimum points per tile (0 = 3 × coefficients)</source>
-        <translation>الحد الأدنى للنقاط في البلاطة (0 = 3 × عدد معاملات متعدد الحدود)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="152"/>
-        <source>Under-populated tiles</source>
-        <translation>البلاطات قليلة النقاط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="152"/>
-        <source>Borrow the nearest fitted tile&apos;s surface</source>
-        <translation>استعارة سطح أقرب بلاطة مُوائَمة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="152"/>
-        <source>Leave their points unclassified (class 0)</source>
-        <translation>ترك نقاطها دون تصنيف (الصنف 0)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="157"/>
-        <source>Rejection</source>
-        <translation>الاستبعاد</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="157"/>
-        <source>Re-weighted each iteration (a point may return)</source>
-        <translation>إعادة الترجيح في كل تكرار (قد تعود النقطة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="157"/>
-        <source>Cumulative (a rejected point stays out)</source>
-        <translation>تراكمي (النقطة المستبعدة تبقى مستبعدة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="162"/>
-        <source>Classified point cloud</source>
-        <translation>سحابة النقاط المصنَّفة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="164"/>
-        <source>Ground points only</source>
-        <translation>نقاط الأرض فقط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="167"/>
-        <source>Report</source>
-        <translation>التقرير</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="167"/>
-        <source>HTML files (*.html)</source>
-        <translation>ملفات HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
-        <source>Ground points</source>
-        <translation>نقاط الأرض</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
-        <source>Other (object) points</source>
-        <translation>النقاط الأخرى (الأجسام)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
-        <source>Low-noise points</source>
-        <translation>نقاط الضوضاء المنخفضة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
-        <source>Unclassified points</source>
-        <translation>النقاط غير المصنَّفة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
-        <source>Tiles</source>
-        <translation>البلاطات</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
-        <source>Points per second</source>
-        <translation>نقطة في الثانية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="213"/>
-        <source>Choose an output file for the classified cloud (OUTPUT, .laz or .las).</source>
-        <translation>اختر ملف إخراج للسحابة المصنَّفة (OUTPUT، بالامتداد .laz أو .las).</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="217"/>
-        <source>Output point clouds must end in .las or .laz: {p}</source>
-        <translation>يجب أن تنتهي أسماء ملفات سحب النقاط الناتجة بالامتداد .las أو .laz: {p}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="224"/>
-        <source>Reading {p}</source>
-        <translation>جارٍ قراءة {p}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="229"/>
-        <source>{n} points; filtering ({mode} mode)</source>
-        <translation>{n} نقطة؛ جارٍ الفلترة (النمط {mode})</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="236"/>
-        <source>{step}: {n} points kept, ZMin {a:.2f}, ZMax {b:.2f}, ZMean {m:.2f}, σ {s:.2f}; tiles iterating: {t}</source>
-        <translation>{step}: أُبقيت {n} نقطة، ZMin {a:.2f}، ZMax {b:.2f}، ZMean {m:.2f}، σ {s:.2f}؛ بلاطات قيد التكرار: {t}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="244"/>
-        <source>Ground {g}, other {o}, low noise {z}, unclassified {u}; {t} tiles; {s:.1f} s</source>
-        <translation>أرض {g}، أخرى {o}، ضوضاء منخفضة {z}، غير مصنَّفة {u}؛ {t} بلاطة؛ {s:.1f} ث</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="250"/>
-        <source>No point was classified as ground, so the ground-only output would be empty; check TILE_SIZE and THRESHOLD.</source>
-        <translation>لم تُصنَّف أي نقطة كأرض، لذا سيكون مخرج نقاط الأرض فارغاً؛ راجع TILE_SIZE وTHRESHOLD.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="69"/>
-        <source>&lt;p&gt;Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). In every tile the surface is fitted, points more than THRESHOLD above it are dropped, and the fit is repeated until the minimum, maximum, mean and standard deviation of the kept heights stop changing (TOLERANCE) or MAX_ITERATIONS; then every point with z ≤ ẑ + THRESHOLD is ground. Any classification already in the file is ignored and replaced.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output classes&lt;/b&gt; (ASPRS): 2 ground, 1 other (buildings, vegetation), 7 low noise (pre-filter), 0 never classified (only with SPARSE_TILES = leave unclassified). Every other attribute of every point, the point format, scales, offsets, VLRs and CRS are copied unchanged.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file, projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Order&lt;/b&gt; (ORDER, default 2): 1 = plane z = b0 + b1·x + b2·y; 2 = quadratic z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (better on every sample of the paper).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Tile size&lt;/b&gt; (TILE_SIZE, m, default 50): larger than the largest building, so that every tile holds ground (paper: 100 m for large buildings, 50 m for small ones). Tiles are square, anchored at the minimum x, y.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Threshold&lt;/b&gt; (THRESHOLD, m, default 0.5): 0.5–1.0 m, larger on steeper terrain.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default Faithful): Faithful = the paper. Improved = ours, beyond the paper: coarse-to-fine tiles (2, 1, ½, ¼ × TILE_SIZE) fitted on overlapping windows, each level started from the previous level's ground, and a threshold that grows with the surface slope (by 2.5 m per unit gradient, at most 1 m). On the ISPRS samples it lowers the mean total error from 8.9 % (paper) to about 4.9 % with one parameter set; it costs about 15 times the time and twice the memory of the faithful mode (about 2 M points/s and 100 bytes per point in faithful mode).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours become class 7 and take no part in the fit (NOISE_RADIUS, m, default 5: neighbourhood cell; NOISE_THRESHOLD, m, default 1: depth below the neighbours).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum iterations&lt;/b&gt; (MAX_ITERATIONS, default 5, the paper's tables) and &lt;b&gt;stop tolerance&lt;/b&gt; (TOLERANCE, m, default 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Random fitting subset per tile&lt;/b&gt; (SUBSET_SIZE, points, default 0 = all; the paper used 5000) and its &lt;b&gt;seed&lt;/b&gt; (SEED). All points are classified.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points per tile&lt;/b&gt; (MIN_POINTS, default 0 = 3 × the number of coefficients) and &lt;b&gt;under-populated tiles&lt;/b&gt; (SPARSE_TILES): borrow the nearest fitted tile's surface (default) or leave their points unclassified (class 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rejection&lt;/b&gt; (REJECTION): re-weighted (default; a point dropped earlier may return when the surface moves) or cumulative (dropped for good).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud (OUTPUT, .laz or .las), optional ground-only cloud (GROUND_OUTPUT), optional HTML report (OUTPUT_HTML) with the parameters, class counts, the per-iteration statistics of the paper's Tables 1–2, per-tile statistics, time and points per second; optional CSV of every tile's iterations and coefficients (TILE_STATS); numbers N_GROUND, N_OTHER, N_NOISE, N_UNCLASSIFIED, N_TILES, POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Measure the result against reference labels with &lt;i&gt;Ground filter accuracy&lt;/i&gt;. Nothing is written when the run fails or is cancelled.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;تفصل نقاط سطح الأرض العارية عن المباني والغطاء النباتي في سحابة ليدار جوية بمواءمة سطوح متعددة حدود بالمربعات الصغرى في كل بلاطة مربعة (مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013). في كل بلاطة يُوائَم السطح، وتُستبعد النقاط التي تعلوه بأكثر من THRESHOLD، وتُكرَّر المواءمة حتى تتوقف القيمة الدنيا والعليا والمتوسط والانحراف المعياري للارتفاعات المُبقاة عن التغيُّر (TOLERANCE) أو يُبلغ MAX_ITERATIONS؛ ثم تُعَدّ أرضاً كل نقطة تحقق z ≤ ẑ + THRESHOLD. يُتجاهَل أي تصنيف موجود في الملف ويُستبدل.&lt;/p&gt;&lt;p&gt;&lt;b&gt;أصناف المخرج&lt;/b&gt; (ASPRS): 2 أرض، 1 أخرى (مبانٍ، غطاء نباتي)، 7 ضوضاء منخفضة (الفلترة المسبقة)، 0 لم تُصنَّف قط (فقط مع SPARSE_TILES = ترك النقاط دون تصنيف). تُنسخ دون تغيير جميع الخصائص الأخرى لكل نقطة، وصيغة النقاط، ومعاملات المقياس والإزاحة، وسجلات VLR، ونظام الإحداثيات.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz بنظام إحداثيات مُسقَط بالأمتار.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الدرجة&lt;/b&gt; (ORDER، الافتراضي 2): 1 = مستوٍ z = b0 + b1·x + b2·y؛ 2 = سطح تربيعي z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (أفضل في جميع عيّنات البحث).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم البلاطة&lt;/b&gt; (TILE_SIZE، م، الافتراضي 50): أكبر من أكبر مبنى، كي تحوي كل بلاطة نقاطاً من الأرض (البحث: 100 م للمباني الكبيرة، 50 م للصغيرة). البلاطات مربعة، ومبدؤها عند أصغر x وy.&lt;/li&gt;&lt;li&gt;&lt;b&gt;العتبة&lt;/b&gt; (THRESHOLD، م، الافتراضي 0.5): 0.5–1.0 م، وأكبر في التضاريس الأشد انحداراً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;النمط&lt;/b&gt; (MODE، الافتراضي: مطابق): مطابق = طريقة البحث. محسَّن = من إضافتنا، يتجاوز البحث: بلاطات من الخشن إلى الدقيق (2، 1، ½، ¼ × TILE_SIZE) تُوائَم على نوافذ متداخلة، ويبدأ كل مستوى من نقاط الأرض في المستوى السابق، مع عتبة تزداد بازدياد ميل السطح (بمقدار 2.5 م لكل وحدة تدرّج، وبحد أقصى 1 م). على عيّنات ISPRS يخفض متوسط الخطأ الكلي من 8.9 % (البحث) إلى نحو 4.9 % بمجموعة معاملات واحدة؛ ويستغرق نحو 15 ضعف زمن النمط المطابق وضعف ذاكرته (نحو 2 مليون نقطة/ث و100 بايت لكل نقطة في النمط المطابق).&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة القيم الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي: نعم): النقاط الواقعة أسفل جيرانها بكثير تصبح من الصنف 7 ولا تشارك في المواءمة (NOISE_RADIUS، م، الافتراضي 5: خلية الجوار؛ NOISE_THRESHOLD، م، الافتراضي 1: العمق تحت الجيران).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأقصى للتكرارات&lt;/b&gt; (MAX_ITERATIONS، الافتراضي 5، كما في جداول البحث) و&lt;b&gt;سماحية التوقف&lt;/b&gt; (TOLERANCE، م، الافتراضي 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مجموعة جزئية عشوائية للمواءمة في كل بلاطة&lt;/b&gt; (SUBSET_SIZE، نقاط، الافتراضي 0 = الكل؛ استخدم البحث 5000) و&lt;b&gt;بذرتها العشوائية&lt;/b&gt; (SEED). تُصنَّف جميع النقاط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأدنى للنقاط في البلاطة&lt;/b&gt; (MIN_POINTS، الافتراضي 0 = 3 × عدد معاملات متعدد الحدود) و&lt;b&gt;البلاطات قليلة النقاط&lt;/b&gt; (SPARSE_TILES): استعارة سطح أقرب بلاطة مُوائَمة (الافتراضي) أو ترك نقاطها دون تصنيف (الصنف 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الاستبعاد&lt;/b&gt; (REJECTION): إعادة الترجيح (الافتراضي؛ قد تعود نقطة استُبعدت سابقاً عندما يتحرك السطح) أو تراكمي (تُستبعد النقطة نهائياً).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المخرجات&lt;/b&gt;: السحابة المصنَّفة (OUTPUT، بالامتداد .laz أو .las)، وسحابة نقاط الأرض فقط اختيارياً (GROUND_OUTPUT)، وتقرير HTML اختياري (OUTPUT_HTML) فيه المعاملات وأعداد النقاط في كل صنف وإحصاءات كل تكرار كما في الجدولين 1–2 من البحث وإحصاءات كل بلاطة والزمن وعدد النقاط في الثانية؛ وملف CSV اختياري بتكرارات كل بلاطة ومعاملاتها (TILE_STATS)؛ والأرقام N_GROUND وN_OTHER وN_NOISE وN_UNCLASSIFIED وN_TILES وPOINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;قِس النتيجة مقارنةً بالتصنيفات المرجعية باستخدام &lt;i&gt;دقة فلتر نقاط الأرض&lt;/i&gt;. لا يُكتب أي شيء إذا فشل التشغيل أو أُلغي.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="170"/>
-        <source>Per-tile iteration statistics (CSV)</source>
-        <translation>إحصاءات التكرارات لكل بلاطة (CSV)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="170"/>
-        <source>CSV files (*.csv)</source>
-        <translation>ملفات CSV (*.csv)</translation>
-    </message>
-</context>
-<context>
-    <name>RectifyGcpAlgorithm</name>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="310"/>
-        <source>Rectify image with GCPs (polynomial)</source>
-        <translation>التصحيح الهندسي للصورة بنقاط الضبط الأرضي (متعدد حدود)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="313"/>
-        <source>georeference,georeferencer,gcp,ground control points,polynomial,rectification,warp,gdalwarp,rms,accuracy</source>
-        <translation>إسناد جغرافي,georeferencer,gcp,نقاط الضبط الأرضي,متعدد الحدود,تصحيح هندسي,warp,gdalwarp,rms,الدقة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="317"/>
-        <source>&lt;p&gt;Rectifies (warps) an image with ground control points and a 2-D polynomial of order 1, 2 or 3 through GDAL (same result as &lt;i&gt;gdalwarp -order N&lt;/i&gt;), and writes the accuracy report of the fit. The input image is never modified: the GCPs are attached to an in-memory copy.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
-        <translation>&lt;p&gt;تصحِّح صورة هندسياً (warp) باستخدام نقاط الضبط الأرضي ومتعدد حدود ثنائي الأبعاد من الدرجة 1 أو 2 أو 3 عبر GDAL (النتيجة نفسها التي يعطيها &lt;i&gt;gdalwarp -order N&lt;/i&gt;)، وتكتب تقرير دقة المواءمة. لا تُعدَّل صورة الإدخال أبداً: تُرفق نقاط الضبط بنسخة منها في الذاكرة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT): الراستر المراد تصحيحه.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="341"/>
-        <source>Target CRS [default: the GCP CRS]</source>
-        <translation>نظام الإحداثيات الهدف [الافتراضي: نظام إحداثيات نقاط الضبط]</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="343"/>
-        <source>Resampling</source>
-        <translation>إعادة الاعتيان</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="345"/>
-        <source>Output resolution (target CRS units) [default: GR]</source>
-        <translation>دقة تمييز المخرج (بوحدات نظام الإحداثيات الهدف) [الافتراضي: GR]</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="347"/>
-        <source>Output nodata value</source>
-        <translation>قيمة nodata في المخرج</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="349"/>
-        <source>Rectified image</source>
-        <translation>الصورة المصحَّحة هندسياً</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="351"/>
-        <source>Accuracy report</source>
-        <translation>تقرير الدقة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="351"/>
-        <source>HTML files (*.html)</source>
-        <translation>ملفات HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="363"/>
-        <source>OUTPUT must be a GeoTIFF file (.tif); got {0}.</source>
-        <translation>يجب أن يكون OUTPUT ملف GeoTIFF (.tif)؛ القيمة المعطاة: {0}.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="317"/>
-        <source>&lt;li&gt;&lt;b&gt;Target CRS&lt;/b&gt; (TARGET_CRS, default the GCP CRS): output CRS; GDAL reprojects after the polynomial.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest neighbour as in the paper): 0 near, 1 bilinear, 2 cubic, 3 cubic spline, 4 Lanczos, 5 average, 6 mode.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output resolution&lt;/b&gt; (RESOLUTION, target-CRS units, default GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Nodata&lt;/b&gt; (NODATA, optional): value outside the image footprint (default: the input&apos;s nodata, else 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rectified image&lt;/b&gt; (OUTPUT): GeoTIFF (written under a temporary name, renamed on success; nothing is left behind on failure).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML accuracy report.&lt;/li&gt;&lt;/ul&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;نظام الإحداثيات الهدف&lt;/b&gt; (TARGET_CRS، الافتراضي نظام إحداثيات نقاط الضبط): نظام إحداثيات المخرج؛ يعيد GDAL الإسقاط بعد تطبيق متعدد الحدود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إعادة الاعتيان&lt;/b&gt; (RESAMPLING، الافتراضي 0 = أقرب جار كما في البحث): 0 أقرب جار، 1 ثنائي الخطية، 2 تكعيبي، 3 شريحة تكعيبية (cubic spline)، 4 Lanczos، 5 المتوسط، 6 المنوال.&lt;/li&gt;&lt;li&gt;&lt;b&gt;دقة تمييز المخرج&lt;/b&gt; (RESOLUTION، بوحدات نظام الإحداثيات الهدف، الافتراضي GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;قيمة nodata&lt;/b&gt; (NODATA، اختياري): القيمة خارج حدود الصورة (الافتراضي: قيمة nodata في الإدخال، وإلا 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الصورة المصحَّحة هندسياً&lt;/b&gt; (OUTPUT): GeoTIFF (يُكتب باسم مؤقت ثم يُعاد تسميته عند النجاح؛ ولا يبقى أي أثر عند الفشل).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): تقرير دقة بصيغة HTML.&lt;/li&gt;&lt;/ul&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>SlopeGroundFilterAlgorithm</name>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="111"/>
-        <source>Ground filter (slope-based)</source>
-        <translation>فلتر نقاط الأرض (على أساس الميل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="114"/>
-        <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,vosselman,slope,point cloud</source>
-        <translation>ليدار,las,laz,أرض,فلتر,تصنيف,dtm,الأرض العارية,vosselman,الميل,سحابة النقاط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="118"/>
-        <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when some neighbour at horizontal distance 0 &amp;lt; d ≤ r lies more than d·tan θ + h below it. Single pass, neighbours from the whole cloud, exact (labels identical to a brute-force check of every pair) and fast (about a million points per second on one core at r = 3 m). Low outliers get class 7; every other attribute is copied unchanged. The input classification is ignored.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study's setting RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 allows a rise of 2.90 m at 3 m. Tune r and θ to your data with &lt;i&gt;Slope filter threshold sweep&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radius r&lt;/b&gt; (RADIUS, m, default 10, &amp;gt; 0): neighbourhood radius. An object is removed only within r of its edge, so r must exceed half the width of the largest building to remove; larger r costs more time.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope threshold θ&lt;/b&gt; (SLOPE, degrees, default 40, strictly between 0 and 90): the steepest terrain kept. Allowed rise at 3 m: 2.52 m (40°), 2.90 m (44°), 3.33 m (48°), 3.84 m (52°), 4.45 m (56°), 5.20 m (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Height tolerance h&lt;/b&gt; (HEIGHT_TOLERANCE, m, default 0.2, ≥ 0): extra rise allowed for every pair, absorbs ranging noise between close points; 0 is the rule as published.&lt;/li&gt;</source>
-        <translation>&lt;p&gt;تصنِّف سحابة نقاط LAS/LAZ إلى أرض (الصنف 2) وغير أرض (الصنف 1) بفلتر الميل الذي اقترحه Vosselman (2000): تُعَدّ النقطة غير أرضية إذا وُجدت نقطة مجاورة على مسافة أفقية 0 &lt; d ≤ r تقع أسفلها بأكثر من d·tan θ + h. مرور واحد، والجيران من السحابة كلها، ودقيق (التصنيفات مطابقة لفحص شامل لكل الأزواج) وسريع (نحو مليون نقطة في الثانية على نواة معالج واحدة عند r = 3 م). تأخذ القيم الشاذة المنخفضة الصنف 7؛ وتُنسخ سائر الخصائص دون تغيير. يُتجاهَل تصنيف الإدخال.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: إعداد دراسة الغابات RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 يسمح بفرق ارتفاع 2.90 م على مسافة 3 م. اضبط r وθ لبياناتك باستخدام &lt;i&gt;مسح عتبات فلتر الميل&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz بنظام إحداثيات مُسقَط (بالأمتار).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نصف القطر r&lt;/b&gt; (RADIUS، م، الافتراضي 10، &gt; 0): نصف قطر الجوار. لا يُزال الجسم إلا ضمن مسافة r من حافته، لذا يجب أن يتجاوز r نصف عرض أكبر مبنى يُراد إزالته؛ وكلما كبر r زاد الزمن.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عتبة الميل θ&lt;/b&gt; (SLOPE، درجات، الافتراضي 40، بين 0 و90 حصراً): أشد انحدار للتضاريس يُحتفظ به. فرق الارتفاع المسموح على مسافة 3 م: 2.52 م (40°)، 2.90 م (44°)، 3.33 م (48°)، 3.84 م (52°)، 4.45 م (56°)، 5.20 م (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;سماحية الارتفاع h&lt;/b&gt; (HEIGHT_TOLERANCE، م، الافتراضي 0.2، ≥ 0): فرق ارتفاع إضافي مسموح لكل زوج، يمتص ضوضاء قياس المسافة بين النقاط المتقاربة؛ والقيمة 0 هي القاعدة كما نُشرت.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="157"/>
-        <source>Radius r (m)</source>
-        <translation>نصف القطر r (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="159"/>
-        <source>Slope threshold θ (degrees)</source>
-        <translation>عتبة الميل θ (درجة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="161"/>
-        <source>Height tolerance h (m)</source>
-        <translation>سماحية الارتفاع h (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="165"/>
-        <source>Keep existing noise classes (7, 18)</source>
-        <translation>الإبقاء على أصناف الضوضاء الموجودة (7, 18)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="168"/>
-        <source>Classified point cloud</source>
-        <translation>سحابة النقاط المصنَّفة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="170"/>
-        <source>Ground points</source>
-        <translation>نقاط الأرض</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="173"/>
-        <source>Report</source>
-        <translation>التقرير</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="173"/>
-        <source>HTML files (*.html)</source>
-        <translation>ملفات HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="176"/>
-        <source>Points read</source>
-        <translation>النقاط المقروءة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="176"/>
-        <source>Ground points (class 2)</source>
-        <translation>نقاط الأرض (الصنف 2)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="176"/>
-        <source>Non-ground points (class 1)</source>
-        <translation>النقاط غير الأرضية (الصنف 1)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="176"/>
-        <source>Low outliers (class 7)</source>
-        <translation>القيم الشاذة المنخفضة (الصنف 7)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="176"/>
-        <source>Filter speed (points/s)</source>
-        <translation>سرعة الفلترة (نقطة/ث)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="192"/>
-        <source>Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, mode {}</source>
-        <translation>فلتر الميل: r = {} م، θ = {}°، h = {} م، الارتدادات: {}، النمط: {}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="200"/>
-        <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
-        <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الفلترة {:.1f} ث</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="118"/>
-        <source>&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, default yes, advanced): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point, classes 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): counts, settings, allowed-rise table, speed.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE, POINTS_PER_SECOND (filter step only).&lt;/p&gt;&lt;p&gt;Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;الإبقاء على أصناف الضوضاء الموجودة&lt;/b&gt; (KEEP_NOISE، الافتراضي: نعم، خيار متقدم): النقاط المصنَّفة مسبقاً 7 أو 18 تحتفظ بصنفها ولا تشارك في الفلترة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المصنَّفة&lt;/b&gt; (OUTPUT، .laz/.las): كل النقاط، بالأصناف 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط الأرض&lt;/b&gt; (GROUND_OUTPUT، اختياري): نقاط الأرض فقط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): الأعداد والإعدادات وجدول فرق الارتفاع المسموح والسرعة.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: N_POINTS وN_GROUND وN_NONGROUND وN_NOISE وPOINTS_PER_SECOND (لخطوة الفلترة وحدها).&lt;/p&gt;&lt;p&gt;المرجع: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>SlopeThresholdSweepAlgorithm</name>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="233"/>
-        <source>Slope filter threshold sweep</source>
-        <translation>مسح عتبات فلتر الميل</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="236"/>
-        <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
-        <translation>ليدار,أرض,فلتر,vosselman,الميل,العتبة,المعايرة,الدقة,النوع الأول,النوع الثاني,كابا,isprs</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="240"/>
-        <source>&lt;p&gt;Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h and reports, against reference labels, Type I error (ground rejected), Type II error (objects accepted as ground — the forest study's &quot;error&quot; column, which alone always favours low θ), total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004), then picks the best setting. One exact neighbourhood pass per radius and tolerance: every threshold then costs a single comparison per point.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. ISPRS reference samples: INPUT=samp31.laz (its own classification is the reference).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): LAS/LAZ. Its classification is never used to filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference cloud&lt;/b&gt; (REFERENCE, optional): a labelled copy of the same points in the same order; empty = the input's own classification (e.g. the ISPRS samples).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &quot;2&quot;): reference classes counted as ground; all others are objects.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope thresholds&lt;/b&gt; (SLOPES, degrees, default &quot;30,35,40,44,48,52,56,60&quot;): a list or start:stop:step.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radii&lt;/b&gt; (RADII, m, default &quot;10&quot;) and &lt;b&gt;height tolerances&lt;/b&gt; (HEIGHT_TOLERANCES, m, default &quot;0.2&quot;): lists; each value is one pass.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Best by&lt;/b&gt; (METRIC, default 0): 0 lowest total error, 1 highest kappa, 2 lowest Type I, 3 lowest Type II.&lt;/li&gt;</source>
-        <translation>&lt;p&gt;تشغِّل فلتر الأرض القائم على الميل لكل توليفة من عتبات الميل θ وأنصاف الأقطار r وسماحيات الارتفاع h، وتحسب مقارنةً بالتصنيفات المرجعية خطأ النوع الأول (رفض نقاط الأرض)، وخطأ النوع الثاني (قبول الأجسام كأرض — وهو عمود &quot;الخطأ&quot; في دراسة الغابات، الذي يرجِّح وحده دائماً قيم θ المنخفضة)، والخطأ الكلي، ومعامل كابا لكوهين (Sithole &amp; Vosselman 2004)، ثم تختار أفضل إعداد. مرور دقيق واحد على الجوار لكل نصف قطر وسماحية: بعدها لا تكلِّف كل عتبة سوى مقارنة واحدة لكل نقطة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: دراسة الغابات: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. عيّنات ISPRS المرجعية: INPUT=samp31.laz (تصنيفها نفسه هو المرجع).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): LAS/LAZ. لا يُستخدم تصنيفها في الفلترة أبداً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المرجعية&lt;/b&gt; (REFERENCE، اختياري): نسخة مصنَّفة من النقاط نفسها وبالترتيب نفسه؛ فارغ = تصنيف سحابة الإدخال نفسها (مثل عيّنات ISPRS).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أصناف الأرض&lt;/b&gt; (GROUND_CLASSES، الافتراضي &quot;2&quot;): الأصناف المرجعية التي تُعَدّ أرضاً؛ وكل ما عداها أجسام.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عتبات الميل&lt;/b&gt; (SLOPES، درجات، الافتراضي &quot;30,35,40,44,48,52,56,60&quot;): قائمة أو start:stop:step (بداية:نهاية:خطوة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أنصاف الأقطار&lt;/b&gt; (RADII، م، الافتراضي &quot;10&quot;) و&lt;b&gt;سماحيات الارتفاع&lt;/b&gt; (HEIGHT_TOLERANCES، م، الافتراضي &quot;0.2&quot;): قوائم؛ كل قيمة تعني مروراً واحداً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;معيار الأفضلية&lt;/b&gt; (METRIC، الافتراضي 0): 0 أدنى خطأ كلي، 1 أعلى كابا، 2 أدنى خطأ من النوع الأول، 3 أدنى خطأ من النوع الثاني.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="277"/>
-        <source>Reference cloud (empty = the input&apos;s classification)</source>
-        <translation>السحابة المرجعية (فارغ = تصنيف سحابة الإدخال نفسها)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="281"/>
-        <source>Reference ground classes</source>
-        <translation>أصناف الأرض في المرجع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="283"/>
-        <source>Slope thresholds θ (degrees; list or start:stop:step)</source>
-        <translation>عتبات الميل θ (درجات؛ قائمة أو بداية:نهاية:خطوة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="286"/>
-        <source>Radii r (m; list)</source>
-        <translation>أنصاف الأقطار r (م؛ قائمة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="288"/>
-        <source>Height tolerances h (m; list)</source>
-        <translation>سماحيات الارتفاع h (م؛ قائمة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="291"/>
-        <source>Best by</source>
-        <translation>معيار الأفضلية</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="291"/>
-        <source>Lowest total error</source>
-        <translation>أدنى خطأ كلي</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="291"/>
-        <source>Highest kappa</source>
-        <translation>أعلى كابا</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="291"/>
-        <source>Lowest Type I error</source>
-        <translation>أدنى خطأ من النوع الأول</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="291"/>
-        <source>Lowest Type II error</source>
-        <translation>أدنى خطأ من النوع الثاني</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="298"/>
-        <source>Sweep table</source>
-        <translation>جدول المسح</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="298"/>
-        <source>CSV files (*.csv)</source>
-        <translation>ملفات CSV (*.csv)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
-        <source>Report</source>
-        <translation>التقرير</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
-        <source>HTML files (*.html)</source>
-        <translation>ملفات HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="303"/>
-        <source>Classified with the best setting</source>
-        <translation>السحابة المصنَّفة بأفضل إعداد</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Best radius (m)</source>
-        <translation>أفضل نصف قطر (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Best slope threshold (degrees)</source>
-        <translation>أفضل عتبة ميل (درجة)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Best height tolerance (m)</source>
-        <translation>أفضل سماحية ارتفاع (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Type I error at the best setting (%)</source>
-        <translation>خطأ النوع الأول عند أفضل إعداد (%)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Type II error at the best setting (%)</source>
-        <translation>خطأ النوع الثاني عند أفضل إعداد (%)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Total error at the best setting (%)</source>
-        <translation>الخطأ الكلي عند أفضل إعداد (%)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Kappa at the best setting (%)</source>
-        <translation>كابا عند أفضل إعداد (%)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Settings evaluated</source>
-        <translation>عدد الإعدادات المقيَّمة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
-        <source>Best setting</source>
-        <translation>أفضل إعداد</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="335"/>
-        <source>Sweeping {} thresholds × {} radii × {} tolerances</source>
-        <translation>مسح {} عتبات × {} أنصاف أقطار × {} سماحيات</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="348"/>
-        <source>Best ({}): {} — total {:.2f} %</source>
-        <translation>الأفضل ({}): {} — الخطأ الكلي {:.2f} %</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="240"/>
-        <source>&lt;li&gt;&lt;b&gt;Sweep table&lt;/b&gt; (OUTPUT_CSV): one row per setting: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): the table, the best setting and a chart of the errors against θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified with the best setting&lt;/b&gt; (OUTPUT, optional LAS/LAZ).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: BEST_RADIUS, BEST_SLOPE, BEST_HEIGHT_TOLERANCE, BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.&lt;/p&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;جدول المسح&lt;/b&gt; (OUTPUT_CSV): صف لكل إعداد: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML): الجدول وأفضل إعداد ومخطط للأخطاء مقابل θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المصنَّفة بأفضل إعداد&lt;/b&gt; (OUTPUT، LAS/LAZ اختياري).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: BEST_RADIUS وBEST_SLOPE وBEST_HEIGHT_TOLERANCE وBEST_TYPE1 وBEST_TYPE2 وBEST_TOTAL وBEST_KAPPA (بالنسبة المئوية) وN_SETTINGS.&lt;/p&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>_GcpBase</name>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="105"/>
-        <source>Image (raster) to rectify</source>
-        <translation>الصورة (راستر) المراد تصحيحها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="105"/>
-        <source>Image (raster) the GCPs were measured on</source>
-        <translation>الصورة (راستر) التي قيست عليها نقاط الضبط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="108"/>
-        <source>GCP file (.points or CSV)</source>
-        <translation>ملف نقاط الضبط الأرضي (.points أو CSV)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="108"/>
-        <source>GCP files (*.points *.csv *.txt);;All files (*.*)</source>
-        <translation>ملفات نقاط الضبط (*.points *.csv *.txt);;جميع الملفات (*.*)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="112"/>
-        <source>…or GCP point layer</source>
-        <translation>…أو طبقة نقطية لنقاط الضبط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="115"/>
-        <source>Layer field: image column</source>
-        <translation>حقل الطبقة: عمود الصورة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="115"/>
-        <source>Layer field: image row</source>
-        <translation>حقل الطبقة: صف الصورة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="115"/>
-        <source>Layer field: point id</source>
-        <translation>حقل الطبقة: معرِّف النقطة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="115"/>
-        <source>Layer field: enabled (1/0)</source>
-        <translation>حقل الطبقة: مفعَّلة (1/0)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="115"/>
-        <source>Layer field: role (gcp/check)</source>
-        <translation>حقل الطبقة: الدور (gcp/check)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="115"/>
-        <source>Layer field: weight (&gt; 0)</source>
-        <translation>حقل الطبقة: الوزن (&gt; 0)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="125"/>
-        <source>Image coordinates refer to</source>
-        <translation>إحداثيات الصورة تشير إلى</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="125"/>
-        <source>pixel corners: (0,0) = top-left corner of the image (GDAL/QGIS)</source>
-        <translation>أركان البكسلات: (0,0) = الركن العلوي الأيسر للصورة (GDAL/QGIS)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="125"/>
-        <source>pixel centres: integer = centre of a pixel (0-based indices)</source>
-        <translation>مراكز البكسلات: العدد الصحيح = مركز بكسل (فهارس تبدأ من 0)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="130"/>
-        <source>CRS of the GCP map coordinates (if the file does not say)</source>
-        <translation>نظام الإحداثيات للإحداثيات الخرائطية لنقاط الضبط (إن لم يحدده الملف)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="132"/>
-        <source>Polynomial order (1–3)</source>
-        <translation>درجة متعدد الحدود (1–3)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="134"/>
-        <source>Ground resolution GR (map units/pixel) [default: from the GCPs]</source>
-        <translation>الدقة الأرضية GR (وحدة خريطة/بكسل) [الافتراضي: من نقاط الضبط]</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="153"/>
-        <source>INPUT: no image given or it cannot be opened; give a raster file.</source>
-        <translation>INPUT: لم تُحدَّد صورة أو تعذّر فتحها؛ حدِّد ملف راستر.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="158"/>
-        <source>INPUT: {0} is not a local raster file; save the image to a file first.</source>
-        <translation>INPUT: {0} ليس ملف راستر محلياً؛ احفظ الصورة في ملف أولاً.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="173"/>
-        <source>Give either GCP_FILE or GCP_LAYER, not both.</source>
-        <translation>حدِّد GCP_FILE أو GCP_LAYER، لا الاثنين معاً.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="191"/>
-        <source>No GCPs: give a GCP file (GCP_FILE, .points or CSV) or a point layer (GCP_LAYER with COL_FIELD and ROW_FIELD); no &lt;image&gt;.points file was found next to the image either.</source>
-        <translation>لا توجد نقاط ضبط: حدِّد ملف نقاط ضبط (GCP_FILE، بالامتداد .points أو CSV) أو طبقة نقطية (GCP_LAYER مع COL_FIELD وROW_FIELD)؛ ولم يُعثر كذلك على ملف &lt;image&gt;.points بجوار الصورة.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="206"/>
-        <source>GCP_LAYER needs COL_FIELD and ROW_FIELD: the fields holding the image column and row of each point.</source>
-        <translation>تتطلب GCP_LAYER الحقلين COL_FIELD وROW_FIELD: الحقلين اللذين يحويان عمود الصورة وصفّها لكل نقطة.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="213"/>
-        <source>GCP layer feature {0} has no geometry.</source>
-        <translation>العنصر {0} في طبقة نقاط الضبط ليست له هندسة.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="272"/>
-        <source>The GCP map coordinates have no CRS: the file has no &apos;#CRS:&apos; line and GCP_CRS is not set. Set GCP_CRS (e.g. EPSG:22780) and run again.</source>
-        <translation>الإحداثيات الخرائطية لنقاط الضبط بلا نظام إحداثيات: لا يحوي الملف السطر '#CRS:' ولم يُضبط GCP_CRS. اضبط GCP_CRS (مثلاً EPSG:22780) وأعد التشغيل.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="284"/>
-        <source>The GCP CRS is geographic (degrees): the accuracy criteria need map units of length. Set TARGET_CRS (or GCP_CRS) to a projected CRS, e.g. the UTM zone of the image.</source>
-        <translation>نظام إحداثيات نقاط الضبط جغرافي (بالدرجات): تتطلب معايير الدقة وحدات خريطة طولية. اضبط TARGET_CRS (أو GCP_CRS) على نظام إحداثيات مُسقَط، مثل نطاق UTM الذي تقع فيه الصورة.</translation>
-    </message>
-</context>
-<context>
-    <name>_GridAlgorithm</name>
-    <message>
-        <location filename="../algorithms/terrain.py" line="100"/>
-        <source>Point cloud (LAS/LAZ)</source>
-        <translation>سحابة النقاط (LAS/LAZ)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="103"/>
-        <source>Classes used (comma-separated; empty = all)</source>
-        <translation>الأصناف المستخدمة (مفصولة بفواصل؛ فارغ = الكل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="106"/>
-        <source>Cell size (m)</source>
-        <translation>حجم الخلية (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="107"/>
-        <source>Extent</source>
-        <translation>النطاق</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="108"/>
-        <source>CRS (overrides the LAS file&apos;s CRS)</source>
-        <translation>نظام الإحداثيات (يتقدّم على نظام إحداثيات ملف LAS)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="112"/>
-        <source>Maximum distance to data (m, 0 = auto)</source>
-        <translation>أقصى مسافة إلى البيانات (م، 0 = تلقائي)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="114"/>
-        <source>Fill data gaps (interpolate far from data)</source>
-        <translation>ملء فجوات البيانات (الاستيفاء بعيداً عن البيانات)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="119"/>
-        <source>Report</source>
-        <translation>التقرير</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="119"/>
-        <source>HTML files (*.html)</source>
-        <translation>ملفات HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="130"/>
-        <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
-        <translation>سحابة النقاط لا تحوي سجل نظام إحداثيات ولم يُحدَّد نظام إحداثيات؛ اضبط المعامل CRS (مثلاً EPSG:32632). لم تُكتب أي مخرجات.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="145"/>
-        <source>Cell size must be &gt; 0 (metres); give e.g. 1.0. No output was written.</source>
-        <translation>يجب أن يكون حجم الخلية &gt; 0 (بالأمتار)؛ أدخل مثلاً 1.0. لم تُكتب أي مخرجات.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="162"/>
-        <source>Reading points of class(es) {} from {}</source>
-        <translation>جارٍ قراءة نقاط الصنف (الأصناف) {} من {}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="165"/>
-        <source>{} of {} points selected</source>
-        <translation>اختيرت {} نقطة من أصل {}</translation>
-    </message>
-</context>
-<context>
-    <name>_SlopeCommon</name>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="36"/>
-        <source>Point cloud (LAS/LAZ)</source>
-        <translation>سحابة النقاط (LAS/LAZ)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="41"/>
-        <source>Returns filtered</source>
-        <translation>الارتدادات المفلترة</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="41"/>
-        <source>All returns</source>
-        <translation>جميع الارتدادات</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="41"/>
-        <source>Last returns only</source>
-        <translation>الارتدادات الأخيرة فقط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="47"/>
-        <source>Mode</source>
-        <translation>النمط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="47"/>
-        <source>Exact (Vosselman 2000)</source>
-        <translation>دقيق (Vosselman 2000)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="47"/>
-        <source>Terrain-adaptive (toolbox extension)</source>
-        <translation>متكيِّف مع التضاريس (إضافة من صندوق الأدوات)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="51"/>
-        <source>Adaptive mode: trend cell (m)</source>
-        <translation>النمط المتكيِّف: خلية الاتجاه العام (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="53"/>
-        <source>Adaptive mode: trend window, &gt; largest building (m)</source>
-        <translation>النمط المتكيِّف: نافذة الاتجاه العام، &gt; أكبر مبنى (م)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="62"/>
-        <source>TREND_CELL and TREND_WINDOW must be &gt; 0 metres in adaptive mode (e.g. 10 and 60).</source>
-        <translation>يجب أن تكون قيمتا TREND_CELL وTREND_WINDOW &gt; 0 م في النمط المتكيِّف (مثلاً 10 و60).</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="68"/>
-        <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
-        <translation>يجب أن تكون قيمتا NOISE_RADIUS وNOISE_THRESHOLD &gt; 0 م (مثلاً 5 و1)، أو أوقف الفلترة المسبقة NOISE.</translation>
-    </message>
-</context>
+    <context>
+        <name>@default</name>
+        <message>
+            <source>reference ground</source>
+            <translation>أرض (في المرجع)</translation>
+        </message>
+        <message>
+            <source>reference object</source>
+            <translation>جسم (في المرجع)</translation>
+        </message>
+        <message>
+            <source>total</source>
+            <translation>المجموع</translation>
+        </message>
+        <message>
+            <source>Type I (ground rejected) = b/(a+b)</source>
+            <translation>خطأ النوع الأول (رفض نقاط الأرض) = b/(a+b)</translation>
+        </message>
+        <message>
+            <source>Type II (object accepted) = c/(c+d)</source>
+            <translation>خطأ النوع الثاني (قبول الأجسام كأرض) = c/(c+d)</translation>
+        </message>
+        <message>
+            <source>Total = (b+c)/n</source>
+            <translation>الخطأ الكلي = (b+c)/n</translation>
+        </message>
+        <message>
+            <source>Cohen's kappa</source>
+            <translation>معامل كابا لكوهين</translation>
+        </message>
+        <message>
+            <source>filtered cloud</source>
+            <translation>السحابة المفلترة</translation>
+        </message>
+        <message>
+            <source>its class dimension</source>
+            <translation>بُعد الصنف فيها</translation>
+        </message>
+        <message>
+            <source>its ground classes</source>
+            <translation>أصناف الأرض فيها</translation>
+        </message>
+        <message>
+            <source>reference</source>
+            <translation>المرجع</translation>
+        </message>
+        <message>
+            <source>(dimension of the filtered cloud)</source>
+            <translation>(بُعد في السحابة المفلترة)</translation>
+        </message>
+        <message>
+            <source>reference class dimension</source>
+            <translation>بُعد الصنف في المرجع</translation>
+        </message>
+        <message>
+            <source>reference ground classes</source>
+            <translation>أصناف الأرض في المرجع</translation>
+        </message>
+        <message>
+            <source>item</source>
+            <translation>البند</translation>
+        </message>
+        <message>
+            <source>value</source>
+            <translation>القيمة</translation>
+        </message>
+        <message>
+            <source>filtered ground</source>
+            <translation>أرض (بعد الفلترة)</translation>
+        </message>
+        <message>
+            <source>filtered object</source>
+            <translation>جسم (بعد الفلترة)</translation>
+        </message>
+        <message>
+            <source>measure</source>
+            <translation>المقياس</translation>
+        </message>
+        <message>
+            <source>Of all misclassified points, {p1:.1f} % are Type I and {p2:.1f} % Type II.</source>
+            <translation>من بين جميع النقاط المصنَّفة خطأً، {p1:.1f} % من النوع الأول و{p2:.1f} % من النوع الثاني.</translation>
+        </message>
+        <message>
+            <source>filtered class</source>
+            <translation>الصنف بعد الفلترة</translation>
+        </message>
+        <message>
+            <source>points</source>
+            <translation>عدد النقاط</translation>
+        </message>
+        <message>
+            <source>Measures of the ISPRS filter test: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</source>
+            <translation>مقاييس اختبار فلاتر ISPRS: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</translation>
+        </message>
+        <message>
+            <source>Ground filter accuracy</source>
+            <translation>دقة فلتر نقاط الأرض</translation>
+        </message>
+        <message>
+            <source>input</source>
+            <translation>ملف الإدخال</translation>
+        </message>
+        <message>
+            <source>CRS</source>
+            <translation>نظام الإحداثيات (CRS)</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>لا يوجد</translation>
+        </message>
+        <message>
+            <source>mode</source>
+            <translation>النمط</translation>
+        </message>
+        <message>
+            <source>order</source>
+            <translation>الدرجة</translation>
+        </message>
+        <message>
+            <source>polynomial</source>
+            <translation>متعدد الحدود</translation>
+        </message>
+        <message>
+            <source>tile size (m)</source>
+            <translation>حجم البلاطة (م)</translation>
+        </message>
+        <message>
+            <source>threshold T (m)</source>
+            <translation>العتبة T (م)</translation>
+        </message>
+        <message>
+            <source>max iterations</source>
+            <translation>الحد الأقصى للتكرارات</translation>
+        </message>
+        <message>
+            <source>stop tolerance (m)</source>
+            <translation>سماحية التوقف (م)</translation>
+        </message>
+        <message>
+            <source>fitting subset per tile</source>
+            <translation>المجموعة الجزئية للمواءمة في كل بلاطة</translation>
+        </message>
+        <message>
+            <source>all points</source>
+            <translation>جميع النقاط</translation>
+        </message>
+        <message>
+            <source>seed</source>
+            <translation>البذرة العشوائية</translation>
+        </message>
+        <message>
+            <source>min points per tile</source>
+            <translation>الحد الأدنى للنقاط في البلاطة</translation>
+        </message>
+        <message>
+            <source>under-populated tiles</source>
+            <translation>البلاطات قليلة النقاط</translation>
+        </message>
+        <message>
+            <source>rejection</source>
+            <translation>الاستبعاد</translation>
+        </message>
+        <message>
+            <source>low-outlier pre-filter</source>
+            <translation>الفلترة المسبقة للقيم الشاذة المنخفضة</translation>
+        </message>
+        <message>
+            <source>pre-filter cell / depth (m)</source>
+            <translation>خلية / عمق الفلترة المسبقة (م)</translation>
+        </message>
+        <message>
+            <source>grid origin (min x, min y)</source>
+            <translation>مبدأ الشبكة (أصغر x، أصغر y)</translation>
+        </message>
+        <message>
+            <source>levels (× tile size)</source>
+            <translation>المستويات (× حجم البلاطة)</translation>
+        </message>
+        <message>
+            <source>window overlap</source>
+            <translation>تداخل النوافذ</translation>
+        </message>
+        <message>
+            <source>slope factor (m) / cap (m)</source>
+            <translation>معامل الميل (م) / الحد الأعلى (م)</translation>
+        </message>
+        <message>
+            <source>ground</source>
+            <translation>أرض</translation>
+        </message>
+        <message>
+            <source>other (object)</source>
+            <translation>أخرى (جسم)</translation>
+        </message>
+        <message>
+            <source>low noise</source>
+            <translation>ضوضاء منخفضة</translation>
+        </message>
+        <message>
+            <source>never classified</source>
+            <translation>لم تُصنَّف قط</translation>
+        </message>
+        <message>
+            <source>reading</source>
+            <translation>القراءة</translation>
+        </message>
+        <message>
+            <source>filter total</source>
+            <translation>إجمالي الفلترة</translation>
+        </message>
+        <message>
+            <source>run total (read, filter, write)</source>
+            <translation>إجمالي التشغيل (قراءة، فلترة، كتابة)</translation>
+        </message>
+        <message>
+            <source>points per second (run)</source>
+            <translation>نقطة في الثانية (التشغيل)</translation>
+        </message>
+        <message>
+            <source>points per second (filter)</source>
+            <translation>نقطة في الثانية (الفلترة)</translation>
+        </message>
+        <message>
+            <source>step</source>
+            <translation>الخطوة</translation>
+        </message>
+        <message>
+            <source>Parameters</source>
+            <translation>المعاملات</translation>
+        </message>
+        <message>
+            <source>class</source>
+            <translation>الصنف</translation>
+        </message>
+        <message>
+            <source>meaning</source>
+            <translation>المعنى</translation>
+        </message>
+        <message>
+            <source>Kept heights after each iteration, aggregated over the tiles (a tile that has stopped keeps its last values); the layout of the paper's Tables 1–2.</source>
+            <translation>الارتفاعات المُبقاة بعد كل تكرار، مجمَّعة على البلاطات (البلاطة التي توقفت تحتفظ بآخر قيمها)؛ على نسق الجدولين 1–2 في البحث.</translation>
+        </message>
+        <message>
+            <source>tiles still iterating</source>
+            <translation>بلاطات قيد التكرار</translation>
+        </message>
+        <message>
+            <source>level</source>
+            <translation>المستوى</translation>
+        </message>
+        <message>
+            <source>tiles</source>
+            <translation>عدد البلاطات</translation>
+        </message>
+        <message>
+            <source>fitted</source>
+            <translation>بلاطات مُوائَمة</translation>
+        </message>
+        <message>
+            <source>ground seeds</source>
+            <translation>نقاط الأرض الابتدائية</translation>
+        </message>
+        <message>
+            <source>seconds</source>
+            <translation>ثانية</translation>
+        </message>
+        <message>
+            <source>The iteration and tile tables below describe the finest level.</source>
+            <translation>يصف جدولا التكرارات والبلاطات أدناه المستوى الأدق.</translation>
+        </message>
+        <message>
+            <source>status</source>
+            <translation>الحالة</translation>
+        </message>
+        <message>
+            <source>column</source>
+            <translation>العمود</translation>
+        </message>
+        <message>
+            <source>row</source>
+            <translation>الصف</translation>
+        </message>
+        <message>
+            <source>fitting points</source>
+            <translation>نقاط المواءمة</translation>
+        </message>
+        <message>
+            <source>iterations</source>
+            <translation>التكرارات</translation>
+        </message>
+        <message>
+            <source>kept</source>
+            <translation>المُبقاة</translation>
+        </message>
+        <message>
+            <source>Showing the {k} fullest of {n} tiles.</source>
+            <translation>تُعرض البلاطات الـ{k} الأكثر نقاطاً من أصل {n} بلاطة.</translation>
+        </message>
+        <message>
+            <source>stage</source>
+            <translation>المرحلة</translation>
+        </message>
+        <message>
+            <source>seconds or points/s</source>
+            <translation>ثانية أو نقطة/ث</translation>
+        </message>
+        <message>
+            <source>Method: tiled least-squares polynomial filter, Damascus Univ. J. Eng. Sci. 29(2), 2013. Improved mode and the low-outlier pre-filter are ours. Accuracy terms (Type I, Type II, total) after Sithole &amp; Vosselman (2004).</source>
+            <translation>الطريقة: فلتر متعدد الحدود بالمربعات الصغرى على بلاطات، مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013. النمط المحسَّن والفلترة المسبقة للقيم الشاذة المنخفضة من إضافتنا. مصطلحات الدقة (النوع الأول، النوع الثاني، الكلي) وفق Sithole &amp; Vosselman (2004).</translation>
+        </message>
+        <message>
+            <source>Ground filter (least-squares polynomial)</source>
+            <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
+        </message>
+    </context>
+    <context>
+        <name>DsmAlgorithm</name>
+        <message>
+            <source>DSM and nDSM / canopy height model</source>
+            <translation>نموذج السطح الرقمي (DSM) والنموذج المُطبَّع (nDSM) / نموذج ارتفاع الغطاء النباتي</translation>
+        </message>
+        <message>
+            <source>dsm,ndsm,chm,canopy height,surface model,first returns,lidar,raster</source>
+            <translation>dsm,ndsm,chm,ارتفاع الغطاء النباتي,نموذج السطح,الارتدادات الأولى,ليدار,راستر</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Digital surface model from a LAS/LAZ file: every cell takes the highest return falling in it (first returns only as an option, the usual canopy surface). With a DTM, also the normalised DSM (nDSM; canopy height model in forests) = DSM − DTM on the DTM's grid. Points are read in chunks, so large files fit in memory.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=cloud.laz CELL_SIZE=1 FIRST_RETURNS=true DTM=dtm.tif OUTPUT=dsm.tif OUTPUT_NDSM=chm.tif.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes used&lt;/b&gt; (CLASSES, default empty = all classes).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Excluded classes&lt;/b&gt; (EXCLUDE_CLASSES, default &lt;code&gt;7,18&lt;/code&gt;: low and high noise).&lt;/li&gt;&lt;li&gt;&lt;b&gt;First returns only&lt;/b&gt; (FIRST_RETURNS, default no).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 1), &lt;b&gt;Extent&lt;/b&gt; (EXTENT), &lt;b&gt;CRS&lt;/b&gt; (CRS): as for the DTM tools; ignored when a DTM is given (its grid and CRS are used so that DSM and DTM align cell for cell).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill distance&lt;/b&gt; (FILL_DISTANCE, m, default 0): empty cells take the value of the nearest non-empty cell within this distance; 0 = leave them nodata.&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM&lt;/b&gt; (DTM, optional raster): needed for the nDSM.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Clamp negative heights to 0&lt;/b&gt; (CLAMP_NEGATIVE, default yes).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DSM&lt;/b&gt; (OUTPUT) and &lt;b&gt;nDSM&lt;/b&gt; (OUTPUT_NDSM, optional, needs DTM): GeoTIFF, nodata −9999.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;نموذج السطح الرقمي من ملف LAS/LAZ: تأخذ كل خلية أعلى ارتداد يقع فيها (مع خيار الاقتصار على الارتدادات الأولى، وهو سطح الغطاء النباتي المعتاد). ومع نموذج ارتفاعات رقمي للأرض (DTM) يُحسب أيضاً نموذج السطح المُطبَّع (nDSM؛ نموذج ارتفاع الغطاء النباتي في الغابات) = DSM − DTM على شبكة DTM. تُقرأ النقاط على دفعات، لذا تتسع الذاكرة للملفات الكبيرة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=cloud.laz CELL_SIZE=1 FIRST_RETURNS=true DTM=dtm.tif OUTPUT=dsm.tif OUTPUT_NDSM=chm.tif.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las/.laz.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الأصناف المستخدمة&lt;/b&gt; (CLASSES، الافتراضي فارغ = جميع الأصناف).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الأصناف المستبعدة&lt;/b&gt; (EXCLUDE_CLASSES، الافتراضي &lt;code&gt;7,18&lt;/code&gt;: الضوضاء المنخفضة والمرتفعة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الارتدادات الأولى فقط&lt;/b&gt; (FIRST_RETURNS، الافتراضي: لا).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 1)، &lt;b&gt;النطاق&lt;/b&gt; (EXTENT)، &lt;b&gt;نظام الإحداثيات&lt;/b&gt; (CRS): كما في أدوات نموذج الارتفاعات الرقمي للأرض؛ تُهمَل عند تحديد DTM (تُستخدم شبكته ونظام إحداثياته كي يتطابق DSM وDTM خليةً بخلية).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مسافة الملء&lt;/b&gt; (FILL_DISTANCE، م، الافتراضي 0): تأخذ الخلايا الفارغة قيمة أقرب خلية غير فارغة ضمن هذه المسافة؛ 0 = تُترك nodata.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نموذج الارتفاعات الرقمي للأرض&lt;/b&gt; (DTM، راستر اختياري): لازم لحساب nDSM.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تحويل الارتفاعات السالبة إلى 0&lt;/b&gt; (CLAMP_NEGATIVE، الافتراضي: نعم).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DSM&lt;/b&gt; (OUTPUT) و&lt;b&gt;nDSM&lt;/b&gt; (OUTPUT_NDSM، اختياري، يتطلب DTM): GeoTIFF، وقيمة nodata هي −9999.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري).&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Excluded classes</source>
+            <translation>الأصناف المستبعدة</translation>
+        </message>
+        <message>
+            <source>First returns only</source>
+            <translation>الارتدادات الأولى فقط</translation>
+        </message>
+        <message>
+            <source>Fill empty cells up to (m)</source>
+            <translation>ملء الخلايا الفارغة حتى مسافة (م)</translation>
+        </message>
+        <message>
+            <source>DTM (for the nDSM; its grid is used)</source>
+            <translation>نموذج الارتفاعات الرقمي للأرض DTM (لحساب nDSM؛ تُستخدم شبكته)</translation>
+        </message>
+        <message>
+            <source>Clamp negative nDSM heights to 0</source>
+            <translation>تحويل ارتفاعات nDSM السالبة إلى 0</translation>
+        </message>
+        <message>
+            <source>DSM</source>
+            <translation>نموذج السطح الرقمي (DSM)</translation>
+        </message>
+        <message>
+            <source>nDSM / canopy height model</source>
+            <translation>nDSM / نموذج ارتفاع الغطاء النباتي</translation>
+        </message>
+        <message>
+            <source>The point cloud CRS ({}) differs from the DTM CRS ({}); give a DTM in the point cloud's CRS. No output was written.</source>
+            <translation>نظام إحداثيات سحابة النقاط ({}) يختلف عن نظام إحداثيات نموذج الارتفاعات الرقمي ({})؛ استخدم نموذج ارتفاعات رقمياً بنظام إحداثيات سحابة النقاط. لم تُكتب أي مخرجات.</translation>
+        </message>
+        <message>
+            <source>The nDSM needs a DTM: give the DTM parameter (e.g. the output of the IDW DTM algorithm). No output was written.</source>
+            <translation>يتطلب nDSM نموذج ارتفاعات رقمياً للأرض: حدِّد المعامل DTM (مثلاً مخرج خوارزمية نموذج الارتفاعات الرقمي بطريقة IDW). لم تُكتب أي مخرجات.</translation>
+        </message>
+        <message>
+            <source>DSM / nDSM report</source>
+            <translation>تقرير DSM / nDSM</translation>
+        </message>
+    </context>
+    <context>
+        <name>DtmAccuracyAlgorithm</name>
+        <message>
+            <source>DTM accuracy against check points</source>
+            <translation>دقة نموذج الارتفاعات الرقمي للأرض مقارنةً بنقاط التحقق</translation>
+        </message>
+        <message>
+            <source>dtm,dem,accuracy,rmse,check points,gnss,nmad,asprs,vertical accuracy,validation</source>
+            <translation>dtm,dem,الدقة,rmse,نقاط التحقق,gnss,nmad,asprs,الدقة الرأسية,التحقق من الصحة</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Compares a DTM with independent check points (e.g. GNSS heights). The DTM is sampled at each point (bilinear by default) and the errors e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt; are summarised: N, mean error (bias), MAE, RMSE, standard deviation, max |e|, Pearson r and R² (= r²) between DTM and check heights, NMAD = 1.4826·median|e − median e| (Höhle &amp;amp; Höhle 2009), and the vertical accuracy at 95 % confidence = 1.96·RMSE (ASPRS Positional Accuracy Standards 2014, which assumes unbiased normal errors; the 95th percentile of |e| is reported too). Check points outside the DTM or on nodata are counted and excluded — never read as 0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv → RMSE, r and a report with a scatter plot and an error histogram.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;DTM&lt;/b&gt; (DTM): raster layer; BAND (default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check points&lt;/b&gt; (CHECKPOINTS, optional): point layer; heights from &lt;b&gt;Z_FIELD&lt;/b&gt; or, if empty, from the geometry Z. &lt;b&gt;ID_FIELD&lt;/b&gt; optional.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check point file&lt;/b&gt; (CHECKPOINTS_CSV, optional): delimited text with a header x/easting, y/northing, z/height (and id/name), or columns id x y z without header. Give the layer or the file.&lt;/li&gt;&lt;li&gt;&lt;b&gt;CSV CRS&lt;/b&gt; (CSV_CRS, optional): CRS of the file's coordinates; default = the DTM's CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reproject check points&lt;/b&gt; (REPROJECT, default no): when the check points are in another CRS than the DTM, transform them (x, y only — heights are not converted between vertical datums). Without it such points are an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sampling&lt;/b&gt; (METHOD, 0 bilinear (default), 1 nearest cell).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Residuals&lt;/b&gt; (OUTPUT): point layer with id, z_check, z_dtm, error, abs_error and status (used / outside DTM / DTM nodata).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): HTML with the statistics, a DTM vs check scatter plot, an error histogram and the residual table.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every statistic is also an output number (N, N_OUTSIDE, N_NODATA, ME, MAE, RMSE, STD, MAX_ABS_ERROR, R, R2, NMAD, ACCURACY_95).&lt;/p&gt;</source>
+            <translation>&lt;p&gt;تقارن نموذج الارتفاعات الرقمي للأرض (DTM) بنقاط تحقق مستقلة (مثل ارتفاعات GNSS). يُعتان النموذج عند كل نقطة (بالاستيفاء ثنائي الخطية افتراضياً) وتُلخَّص الأخطاء e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt;: العدد N، ومتوسط الخطأ (الانحياز)، ومتوسط الخطأ المطلق MAE، والجذر التربيعي لمتوسط مربعات الأخطاء RMSE، والانحراف المعياري، وأكبر |e|، ومعامل ارتباط بيرسون r وR² (= r²) بين ارتفاعات النموذج وارتفاعات نقاط التحقق، وNMAD = 1.4826·median|e − median e| (Höhle &amp; Höhle 2009)، والدقة الرأسية عند مستوى ثقة 95 % = 1.96·RMSE (معايير ASPRS للدقة الموضعية 2014، التي تفترض أخطاء طبيعية غير منحازة؛ ويُذكر كذلك المئين 95 لـ|e|). نقاط التحقق الواقعة خارج النموذج أو على خلايا nodata تُعَدّ وتُستبعد — ولا تُقرأ أبداً على أنها 0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv ← RMSE وr وتقرير فيه مخطط انتشار ومدرج تكراري للأخطاء.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;نموذج الارتفاعات الرقمي للأرض&lt;/b&gt; (DTM): طبقة راستر؛ BAND (الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط التحقق&lt;/b&gt; (CHECKPOINTS، اختياري): طبقة نقطية؛ الارتفاعات من &lt;b&gt;Z_FIELD&lt;/b&gt; أو، إن كان فارغاً، من قيمة Z في الهندسة. &lt;b&gt;ID_FIELD&lt;/b&gt; اختياري.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ملف نقاط التحقق&lt;/b&gt; (CHECKPOINTS_CSV، اختياري): نص محدَّد الفواصل بسطر ترويسة x/easting وy/northing وz/height (وid/name)، أو بالأعمدة id x y z دون ترويسة. حدِّد الطبقة أو الملف.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام إحداثيات CSV&lt;/b&gt; (CSV_CRS، اختياري): نظام إحداثيات الملف؛ الافتراضي = نظام إحداثيات DTM.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إعادة إسقاط نقاط التحقق&lt;/b&gt; (REPROJECT، الافتراضي: لا): إذا كانت نقاط التحقق بنظام إحداثيات غير نظام DTM تُحوَّل إليه (x وy فقط — لا تُحوَّل الارتفاعات بين المراجع الرأسية). ودون هذا الخيار تُعَدّ هذه النقاط خطأً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طريقة الاعتيان&lt;/b&gt; (METHOD، 0 ثنائي الخطية (الافتراضي)، 1 أقرب خلية).&lt;/li&gt;&lt;li&gt;&lt;b&gt;البواقي&lt;/b&gt; (OUTPUT): طبقة نقطية بالحقول id وz_check وz_dtm وerror وabs_error وstatus (used / outside DTM / DTM nodata).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML): ملف HTML بالإحصاءات ومخطط انتشار DTM مقابل نقاط التحقق ومدرج تكراري للأخطاء وجدول البواقي.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;كل إحصائية هي أيضاً مخرج رقمي (N، N_OUTSIDE، N_NODATA، ME، MAE، RMSE، STD، MAX_ABS_ERROR، R، R2، NMAD، ACCURACY_95).&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>DTM</source>
+            <translation>نموذج الارتفاعات الرقمي للأرض (DTM)</translation>
+        </message>
+        <message>
+            <source>Band</source>
+            <translation>الحزمة</translation>
+        </message>
+        <message>
+            <source>Check points (point layer)</source>
+            <translation>نقاط التحقق (طبقة نقطية)</translation>
+        </message>
+        <message>
+            <source>Height field (empty = geometry Z)</source>
+            <translation>حقل الارتفاع (فارغ = قيمة Z من الهندسة)</translation>
+        </message>
+        <message>
+            <source>Id field</source>
+            <translation>حقل المعرِّف</translation>
+        </message>
+        <message>
+            <source>Check point file (CSV/TXT)</source>
+            <translation>ملف نقاط التحقق (CSV/TXT)</translation>
+        </message>
+        <message>
+            <source>CRS of the check point file (default: DTM CRS)</source>
+            <translation>نظام إحداثيات ملف نقاط التحقق (الافتراضي: نظام إحداثيات DTM)</translation>
+        </message>
+        <message>
+            <source>Reproject check points to the DTM CRS</source>
+            <translation>إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM</translation>
+        </message>
+        <message>
+            <source>Sampling</source>
+            <translation>طريقة الاعتيان</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>ثنائي الخطية</translation>
+        </message>
+        <message>
+            <source>Nearest cell</source>
+            <translation>أقرب خلية</translation>
+        </message>
+        <message>
+            <source>Residuals</source>
+            <translation>البواقي</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Give the check points as a point layer (CHECKPOINTS) or a file (CHECKPOINTS_CSV).</source>
+            <translation>حدِّد نقاط التحقق كطبقة نقطية (CHECKPOINTS) أو كملف (CHECKPOINTS_CSV).</translation>
+        </message>
+        <message>
+            <source>Give the check points either as a layer or as a file, not both.</source>
+            <translation>حدِّد نقاط التحقق إما كطبقة أو كملف، لا الاثنين معاً.</translation>
+        </message>
+        <message>
+            <source>The check point layer has no Z coordinate; choose the height field (Z_FIELD).</source>
+            <translation>طبقة نقاط التحقق لا تحوي الإحداثي Z؛ اختر حقل الارتفاع (Z_FIELD).</translation>
+        </message>
+        <message>
+            <source>The check point layer has no points.</source>
+            <translation>طبقة نقاط التحقق لا تحوي أي نقطة.</translation>
+        </message>
+        <message>
+            <source>check point layer</source>
+            <translation>طبقة نقاط التحقق</translation>
+        </message>
+        <message>
+            <source>check point file</source>
+            <translation>ملف نقاط التحقق</translation>
+        </message>
+        <message>
+            <source>The {} is in {} but the DTM is in {}. Reproject the check points first or tick 'Reproject check points to the DTM CRS' (REPROJECT=true; x, y only, heights are not converted). No output was written.</source>
+            <translation>{} بنظام الإحداثيات {} لكن نموذج الارتفاعات الرقمي بنظام {}. أعد إسقاط نقاط التحقق أولاً أو فعِّل الخيار 'إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM' (REPROJECT=true؛ x وy فقط، ولا تُحوَّل الارتفاعات). لم تُكتب أي مخرجات.</translation>
+        </message>
+        <message>
+            <source>Check points reprojected from {} to {}</source>
+            <translation>أُعيد إسقاط نقاط التحقق من {} إلى {}</translation>
+        </message>
+        <message>
+            <source>Check points assumed to be in the DTM's CRS.</source>
+            <translation>افتُرض أن نقاط التحقق بنظام إحداثيات نموذج الارتفاعات الرقمي.</translation>
+        </message>
+        <message>
+            <source>Choose a DTM raster.</source>
+            <translation>اختر طبقة راستر لنموذج الارتفاعات الرقمي للأرض.</translation>
+        </message>
+        <message>
+            <source>N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; {} outside, {} on nodata</source>
+            <translation>N = {}، RMSE = {:.4f} م، ME = {:.4f} م، r = {:.5f}؛ {} خارج النموذج، {} على خلايا nodata</translation>
+        </message>
+    </context>
+    <context>
+        <name>GcpAccuracyReportAlgorithm</name>
+        <message>
+            <source>GCP accuracy report</source>
+            <translation>تقرير دقة نقاط الضبط الأرضي</translation>
+        </message>
+        <message>
+            <source>georeference,gcp,ground control points,rms,residuals,accuracy,check points,leave-one-out,polynomial,georeferencer</source>
+            <translation>إسناد جغرافي,gcp,نقاط الضبط الأرضي,rms,البواقي,الدقة,نقاط التحقق,الاستبعاد الفردي,متعدد الحدود,georeferencer</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Judges a set of ground control points without warping: fits polynomials of order 1, 2 and 3, reports the residuals and the paper's criteria for the chosen order, compares the three orders and recommends one.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;تقيِّم مجموعة من نقاط الضبط الأرضي دون تحويل الصورة هندسياً: تُوائم متعددات حدود من الدرجات 1 و2 و3، وتعرض البواقي ومعايير البحث للدرجة المختارة، وتقارن الدرجات الثلاث وتوصي بإحداها.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT، اختياري): تعطي أبعاد الصورة (نقاط الضبط الواقعة خارجها خطأ؛ وتعتمد الأرباع والمخطط على حدودها). ودونها حدِّد IMAGE_WIDTH وIMAGE_HEIGHT (بالبكسل) وإلا استُخدم مركز ثقل نقاط الضبط.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>Image width (px) if no image is given</source>
+            <translation>عرض الصورة (بكسل) إن لم تُحدَّد صورة</translation>
+        </message>
+        <message>
+            <source>Image height (px) if no image is given</source>
+            <translation>ارتفاع الصورة (بكسل) إن لم تُحدَّد صورة</translation>
+        </message>
+        <message>
+            <source>Accuracy report</source>
+            <translation>تقرير الدقة</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Residuals table</source>
+            <translation>جدول البواقي</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>ملفات CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>Report as JSON</source>
+            <translation>التقرير بصيغة JSON</translation>
+        </message>
+        <message>
+            <source>JSON files (*.json)</source>
+            <translation>ملفات JSON (*.json)</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML), &lt;b&gt;residual table&lt;/b&gt; (OUTPUT_CSV: one row per point with v_x, v_y, RMS_i, C_i, pixel residuals, leave-one-out residuals) and &lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: everything, all orders), each optional.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML)، و&lt;b&gt;جدول البواقي&lt;/b&gt; (OUTPUT_CSV: صف لكل نقطة فيه v_x وv_y وRMS_i وC_i والبواقي بالبكسل وبواقي الاستبعاد الفردي) و&lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: كل شيء، لجميع الدرجات)، وكلها اختيارية.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, …) for the graphical modeler.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;كل رقم في الملخص هو أيضاً مخرج رقمي (RMS_T وRMS_T_QGIS وGR وSCALE وLOO_RMS_T وCHECK_RMS_T وRECOMMENDED_ORDER وACCEPTED وRMS_T_ORDER1…3 و…) لاستخدامه في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>GeomaticsAlgorithm</name>
+        <message>
+            <source>LiDAR ground filtering</source>
+            <translation>فلترة نقاط الأرض في بيانات الليدار</translation>
+        </message>
+        <message>
+            <source>Terrain models</source>
+            <translation>نماذج التضاريس</translation>
+        </message>
+        <message>
+            <source>Image rectification</source>
+            <translation>التصحيح الهندسي للصور</translation>
+        </message>
+        <message>
+            <source>Photogrammetry</source>
+            <translation>المساحة التصويرية</translation>
+        </message>
+        <message>
+            <source>Accuracy assessment</source>
+            <translation>تقييم الدقة</translation>
+        </message>
+        <message>
+            <source>Cancelled by the user; no output was written.</source>
+            <translation>ألغى المستخدم العملية؛ لم تُكتب أي مخرجات.</translation>
+        </message>
+        <message>
+            <source>Out of memory. Use a coarser cell size, a smaller extent or fewer points; no output was written.</source>
+            <translation>نفدت الذاكرة. استخدم حجم خلية أكبر أو نطاقاً أصغر أو نقاطاً أقل؛ لم تُكتب أي مخرجات.</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;GCP file&lt;/b&gt; (GCP_FILE): a QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file (mapX,mapY,pixelX,pixelY,enable,…; pixelY is minus the row) or a CSV table with columns id, col,row (or pixel,line; or image_x,image_y in the QGIS sign convention), X,Y (or map_x,map_y / easting,northing) and optional enabled (1/0), role (gcp or check) and weight. Give the file &lt;i&gt;or&lt;/i&gt; a point layer; with neither, the Georeferencer's &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; next to the image is used.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP point layer&lt;/b&gt; (GCP_LAYER): points whose geometry holds the map coordinates (in the layer CRS) with fields for the image column and row (COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD, WEIGHT_FIELD (least-squares weights, e.g. 1/σ²; the report uses them, GDAL's warp fits unweighted).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pixel origin&lt;/b&gt; (PIXEL_ORIGIN, default 0 = corner): 0 — image coordinates in the GDAL/QGIS convention, (0,0) is the top-left corner of the image and the centre of the first pixel is (0.5, 0.5); 1 — integer values are pixel centres (0-based array indices), 0.5 is added. Rows always grow downwards (a negative row column is read as QGIS's −row). .points files are always corner-based.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): CRS of the map coordinates when the file has no '#CRS:' line (CSV files never have one). Missing CRS is an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, 1–3, default 1): 1 affine (≥ 3 GCPs), 2 (≥ 6), 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground resolution GR&lt;/b&gt; (GR, map units per pixel, optional): pixel size on the ground for the criteria; default sqrt|det J| of the affine fit of the GCPs.&lt;/li&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;ملف نقاط الضبط الأرضي&lt;/b&gt; (GCP_FILE): ملف &lt;i&gt;.points&lt;/i&gt; من أداة Georeferencer في QGIS (mapX,mapY,pixelX,pixelY,enable,…؛ وpixelY هو سالب رقم الصف) أو جدول CSV بالأعمدة id وcol,row (أو pixel,line؛ أو image_x,image_y باصطلاح الإشارة في QGIS) وX,Y (أو map_x,map_y / easting,northing) والأعمدة الاختيارية enabled (1/0) وrole (gcp أو check) وweight. حدِّد الملف &lt;i&gt;أو&lt;/i&gt; طبقة نقطية؛ وإن لم يُحدَّد أيٌّ منهما يُستخدم ملف &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; الخاص بأداة Georeferencer المجاور للصورة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقة نقطية لنقاط الضبط&lt;/b&gt; (GCP_LAYER): نقاط تحمل هندستُها الإحداثيات الخرائطية (بنظام إحداثيات الطبقة) مع حقلين لعمود الصورة وصفّها (COL_FIELD وROW_FIELD) والحقول الاختيارية ID_FIELD وENABLED_FIELD وROLE_FIELD وWEIGHT_FIELD (أوزان المربعات الصغرى، مثلاً 1/σ²؛ يستخدمها التقرير، أما التحويل الهندسي (warp) في GDAL فيُوائم دون أوزان).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مبدأ البكسل&lt;/b&gt; (PIXEL_ORIGIN، الافتراضي 0 = الركن): 0 — إحداثيات الصورة باصطلاح GDAL/QGIS، حيث (0,0) هو الركن العلوي الأيسر للصورة ومركز البكسل الأول هو (0.5, 0.5)؛ 1 — القيم الصحيحة هي مراكز البكسلات (فهارس مصفوفة تبدأ من 0)، وتُضاف إليها 0.5. تتزايد الصفوف دائماً نحو الأسفل (يُقرأ عمود الصفوف السالب على أنه −row بحسب اصطلاح QGIS). ملفات .points تعتمد دائماً على الأركان.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام إحداثيات نقاط الضبط&lt;/b&gt; (GCP_CRS): نظام الإحداثيات للإحداثيات الخرائطية حين لا يحوي الملف السطر '#CRS:' (ولا تحويه ملفات CSV أبداً). غياب نظام الإحداثيات خطأ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجة متعدد الحدود&lt;/b&gt; (ORDER، 1–3، الافتراضي 1): 1 تحويل تآلفي (≥ 3 نقاط ضبط)، 2 (≥ 6)، 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الدقة الأرضية GR&lt;/b&gt; (GR، وحدة خريطة لكل بكسل، اختياري): حجم البكسل على الأرض المستخدم في المعايير؛ الافتراضي sqrt|det J| من المواءمة التآلفية لنقاط الضبط.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;&lt;b&gt;Criteria&lt;/b&gt; (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band 4·GR … 6·GR for RMS_T; per-point limit 0.25 mm·S = 5·GR; ≥ 68 % (strict 90 %) of points within RMS_T; no directional bias (quadrant sign balance, inner vs edge radial residuals, residual-vector plot). Also: independent check points (role 'check', never fitted), leave-one-out residuals, orders 1–3 side by side with a recommended order (never one whose redundancy n − N is below max(2, ⌈N/2⌉)) and suggested points to drop. Residuals are predicted − given, in map units and pixels.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;&lt;b&gt;المعايير&lt;/b&gt; (مجلة جامعة تشرين للعلوم الهندسية 38(2)، 2016): RMS_i لكل نقطة ومساهمتها C_i = RMS_i/RMS_T؛ وRMS_x وRMS_y وRMS_T بالقسمة على n (وكذلك، مع الإشارة إلى ذلك، على n − N كما في أداة Georeferencer في QGIS)؛ ومقياس الخريطة S = 20000·GR ونطاق السماحية 4·GR … 6·GR لقيمة RMS_T؛ والحد لكل نقطة 0.25 mm·S = 5·GR؛ وأن تقع ≥ 68 % من النقاط (90 % في الصيغة الصارمة) ضمن RMS_T؛ وانعدام الانحياز الاتجاهي (توازن الإشارات بين الأرباع، والبواقي الشعاعية للنقاط الداخلية مقابل نقاط الحواف، ومخطط متجهات البواقي). وأيضاً: نقاط تحقق مستقلة (الدور 'check'، لا تدخل في المواءمة أبداً)، وبواقي الاستبعاد الفردي، والدرجات 1–3 جنباً إلى جنب مع درجة موصى بها (لا تكون أبداً درجةً فائضها n − N أقل من max(2, ⌈N/2⌉)) ونقاط مقترحة للحذف. البواقي = القيمة المتنبأ بها − القيمة المعطاة، بوحدات الخريطة وبالبكسل.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Returns filtered&lt;/b&gt; (RETURNS, default 0 = all): 0 all returns are classified and serve as neighbours (the forest study); 1 last returns only: only last (or single) returns are classified and only they may reject others; first and intermediate returns of multi-return pulses get class 1. Files without return numbers (e.g. the ISPRS samples) count every point as a last return.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours (multipath) get class 7 and take no part in the filter — one stray low point would reject every ground point within r. Advanced: NOISE_RADIUS (m, default 5) and NOISE_THRESHOLD (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default 0): 0 exact Vosselman rule; 1 terrain-adaptive (&lt;i&gt;this toolbox's extension&lt;/i&gt;): the rule is applied to heights above a smooth low terrain trend (minimum grid of TREND_CELL m, opening and mean filter of TREND_WINDOW m, defaults 10 and 60), so natural slopes steeper than θ are not rejected (ISPRS samp11, steep: total error 21.0 % → 16.4 % at the defaults). Because the terrain slope is removed first, lower θ (about 30–35°) usually works best in this mode.&lt;/li&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;الارتدادات المفلترة&lt;/b&gt; (RETURNS، الافتراضي 0 = الكل): 0 تُصنَّف جميع الارتدادات وتُستخدم كلها نقاطاً مجاورة (دراسة الغابات)؛ 1 الارتدادات الأخيرة فقط: لا تُصنَّف إلا الارتدادات الأخيرة (أو المنفردة) ولا يستبعد النقاطَ الأخرى إلا هي؛ وتأخذ الارتدادات الأولى والوسيطة للنبضات متعددة الارتدادات الصنف 1. في الملفات الخالية من أرقام الارتدادات (مثل عيّنات ISPRS) تُعَدّ كل نقطة ارتداداً أخيراً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة القيم الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي: نعم): النقاط الواقعة أسفل جيرانها بكثير (بسبب تعدد المسارات) تأخذ الصنف 7 ولا تشارك في الفلترة — فنقطة منخفضة شاردة واحدة كانت ستستبعد كل نقاط الأرض ضمن r. خيارات متقدمة: NOISE_RADIUS (م، الافتراضي 5) وNOISE_THRESHOLD (م، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;النمط&lt;/b&gt; (MODE، الافتراضي 0): 0 قاعدة Vosselman كما هي؛ 1 متكيِّف مع التضاريس (&lt;i&gt;إضافة من صندوق الأدوات هذا&lt;/i&gt;): تُطبَّق القاعدة على الارتفاعات فوق اتجاه عام منخفض وأملس للتضاريس (شبكة القيم الدنيا بخلية TREND_CELL م، ثم فتح مورفولوجي (opening) وفلتر متوسط بنافذة TREND_WINDOW م، والقيمتان الافتراضيتان 10 و60)، فلا تُستبعد المنحدرات الطبيعية الأشد انحداراً من θ (عيّنة ISPRS samp11 شديدة الانحدار: الخطأ الكلي 21.0 % → 16.4 % بالقيم الافتراضية). ولأن ميل التضاريس يُزال أولاً، فإن قيم θ الأدنى (نحو 30–35°) تعطي عادةً أفضل النتائج في هذا النمط.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): a .las or .laz file (LAS 1.0–1.4), e.g. the output of a ground filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes used&lt;/b&gt; (CLASSES, default &lt;code&gt;2&lt;/code&gt; = ground): comma-separated LAS classes interpolated; empty = every point. No point of these classes → error that lists the classes present.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 1.0, &amp;gt; 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extent&lt;/b&gt; (EXTENT, optional): default = the selected points' extent. The grid is snapped outward to multiples of the cell size so that tiles line up.&lt;/li&gt;&lt;li&gt;&lt;b&gt;CRS&lt;/b&gt; (CRS, optional): overrides the CRS of the LAS file. If the file has no CRS and none is given the algorithm stops with an error (a DTM without a CRS is a common source of misplaced data).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum distance to data&lt;/b&gt; (MAX_DISTANCE, m, default 0 = automatic: five mean point spacings, at least two cells): cells whose nearest point is farther are nodata, so no terrain is invented under water, removed buildings or missing strips.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill data gaps&lt;/b&gt; (FILL_GAPS, default no): interpolate every cell however far from the data (ignores MAX_DISTANCE).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output&lt;/b&gt; (OUTPUT): GeoTIFF (float32, DEFLATE, nodata −9999) in the input CRS; values belong to cell centres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML report.&lt;/li&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz (LAS 1.0–1.4)، مثل مخرج أحد فلاتر نقاط الأرض.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الأصناف المستخدمة&lt;/b&gt; (CLASSES، الافتراضي &lt;code&gt;2&lt;/code&gt; = الأرض): أصناف LAS التي تُستوفى، مفصولة بفواصل؛ فارغ = كل النقاط. عدم وجود أي نقطة من هذه الأصناف → خطأ يسرد الأصناف الموجودة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 1.0، &amp;gt; 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;النطاق&lt;/b&gt; (EXTENT، اختياري): الافتراضي = نطاق النقاط المختارة. تُوسَّع الشبكة نحو الخارج لتقع حدودها على مضاعفات حجم الخلية كي تتراصف البلاطات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام الإحداثيات&lt;/b&gt; (CRS، اختياري): يحل محل نظام إحداثيات ملف LAS. إذا لم يكن للملف نظام إحداثيات ولم يُحدَّد أي نظام، تتوقف الخوارزمية بخطأ (فنموذج الارتفاعات بلا نظام إحداثيات مصدر شائع لبيانات في غير موضعها).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أقصى مسافة إلى البيانات&lt;/b&gt; (MAX_DISTANCE، م، الافتراضي 0 = تلقائي: خمسة أضعاف متوسط التباعد بين النقاط، وخليتان على الأقل): الخلايا التي تبعد عنها أقرب نقطة أكثر من ذلك تُجعل nodata، فلا تُختلق تضاريس تحت المياه أو المباني المُزالة أو الشرائط المفقودة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ملء فجوات البيانات&lt;/b&gt; (FILL_GAPS، الافتراضي: لا): استيفاء كل خلية مهما بعدت عن البيانات (يتجاهل MAX_DISTANCE).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المخرج&lt;/b&gt; (OUTPUT): GeoTIFF (float32، DEFLATE، nodata −9999) بنظام إحداثيات الإدخال؛ وتعود القيم إلى مراكز الخلايا.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): تقرير HTML.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>Remove low outliers first (class 7)</source>
+            <translation>إزالة القيم الشاذة المنخفضة أولاً (الصنف 7)</translation>
+        </message>
+        <message>
+            <source>Low-outlier search cell (m)</source>
+            <translation>خلية البحث عن القيم الشاذة المنخفضة (م)</translation>
+        </message>
+        <message>
+            <source>Low-outlier depth below neighbours (m)</source>
+            <translation>عمق القيمة الشاذة المنخفضة تحت الجيران (م)</translation>
+        </message>
+    </context>
+    <context>
+        <name>GeomaticsProvider</name>
+        <message>
+            <source>Geomatics Toolbox</source>
+            <translation>صندوق أدوات الجيوماتكس</translation>
+        </message>
+    </context>
+    <context>
+        <name>GroundFilterAccuracyAlgorithm</name>
+        <message>
+            <source>Ground filter accuracy</source>
+            <translation>دقة فلتر نقاط الأرض</translation>
+        </message>
+        <message>
+            <source>lidar,ground,filter,accuracy,type i,type ii,total error,kappa,isprs,reference,confusion matrix</source>
+            <translation>ليدار,أرض,فلتر,الدقة,النوع الأول,النوع الثاني,الخطأ الكلي,كابا,isprs,مرجع,مصفوفة الالتباس</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Compares a filtered point cloud with reference labels, with the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix a (ground kept), b (ground rejected), c (object accepted), d (object rejected), Type I = b/(a+b), Type II = c/(c+d), total = (b+c)/n and Cohen's kappa.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (the ISPRS reference sample, class 2 = ground) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Filtered point cloud&lt;/b&gt; (INPUT, LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Class dimension of the filtered cloud&lt;/b&gt; (FIELD, default classification) and its &lt;b&gt;ground classes&lt;/b&gt; (GROUND_CLASSES, default 2; a list such as 2,8 is accepted). Every other class (1, 7 noise, 0...) counts as object.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference point cloud&lt;/b&gt; (REFERENCE, optional): the same points in the same order (checked: equal count and coordinates). When empty, the reference labels are read from another dimension of INPUT.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference class dimension&lt;/b&gt; (REFERENCE_FIELD, default classification; e.g. user_data or an extra dimension when there is no reference cloud) and its &lt;b&gt;ground classes&lt;/b&gt; (REFERENCE_GROUND_CLASSES, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): the matrix, the errors, and the reference labels of every filtered class.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Per-point error layer&lt;/b&gt; (ERROR_OUTPUT, optional LAS/LAZ): a copy of INPUT, every attribute unchanged except &lt;i&gt;user_data&lt;/i&gt; = 0 correct, 1 Type I (ground rejected), 2 Type II (object accepted); style the point cloud layer by user_data to map where the filter fails.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs A, B, C, D, N, TYPE1, TYPE2, TOTAL and KAPPA are numbers for the graphical modeler.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;تقارن سحابة نقاط مفلترة بتصنيفات مرجعية، بمقاييس اختبار فلاتر ISPRS (Sithole &amp; Vosselman 2004): مصفوفة التقاطع a (أرض مُبقاة)، b (أرض مرفوضة)، c (أجسام مقبولة)، d (أجسام مرفوضة)، والنوع الأول = b/(a+b)، والنوع الثاني = c/(c+d)، والخطأ الكلي = (b+c)/n، ومعامل كابا لكوهين.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (عيّنة ISPRS المرجعية، الصنف 2 = أرض) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المفلترة&lt;/b&gt; (INPUT، LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد الصنف في السحابة المفلترة&lt;/b&gt; (FIELD، الافتراضي classification) و&lt;b&gt;أصناف الأرض&lt;/b&gt; فيها (GROUND_CLASSES، الافتراضي 2؛ تُقبل قائمة مثل 2,8). أي صنف آخر (1، 7 ضوضاء، 0...) يُعَدّ جسماً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المرجعية&lt;/b&gt; (REFERENCE، اختياري): النقاط نفسها وبالترتيب نفسه (يُتحقَّق من تساوي العدد والإحداثيات). إذا تُركت فارغة تُقرأ التصنيفات المرجعية من بُعد آخر في INPUT.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد الصنف في المرجع&lt;/b&gt; (REFERENCE_FIELD، الافتراضي classification؛ مثلاً user_data أو بُعد إضافي عند عدم وجود سحابة مرجعية) و&lt;b&gt;أصناف الأرض&lt;/b&gt; فيه (REFERENCE_GROUND_CLASSES، الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): المصفوفة والأخطاء والتصنيفات المرجعية لكل صنف بعد الفلترة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقة الخطأ لكل نقطة&lt;/b&gt; (ERROR_OUTPUT، ملف LAS/LAZ اختياري): نسخة من INPUT بكل خصائصها دون تغيير عدا &lt;i&gt;user_data&lt;/i&gt; = 0 صحيح، 1 النوع الأول (أرض مرفوضة)، 2 النوع الثاني (جسم مقبول)؛ نسِّق طبقة سحابة النقاط حسب user_data لترى على الخريطة أين يخفق الفلتر.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;المخرجات A وB وC وD وN وTYPE1 وTYPE2 وTOTAL وKAPPA أرقام تُستخدم في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Filtered point cloud (LAS/LAZ)</source>
+            <translation>سحابة النقاط المفلترة (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Class dimension of the filtered cloud</source>
+            <translation>بُعد الصنف في السحابة المفلترة</translation>
+        </message>
+        <message>
+            <source>Ground classes of the filtered cloud</source>
+            <translation>أصناف الأرض في السحابة المفلترة</translation>
+        </message>
+        <message>
+            <source>Reference point cloud (same points, same order)</source>
+            <translation>سحابة النقاط المرجعية (النقاط نفسها وبالترتيب نفسه)</translation>
+        </message>
+        <message>
+            <source>Reference class dimension</source>
+            <translation>بُعد الصنف في المرجع</translation>
+        </message>
+        <message>
+            <source>Reference ground classes</source>
+            <translation>أصناف الأرض في المرجع</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Per-point error layer (user_data: 0 correct, 1 Type I, 2 Type II)</source>
+            <translation>طبقة الخطأ لكل نقطة (user_data: 0 صحيح، 1 النوع الأول، 2 النوع الثاني)</translation>
+        </message>
+        <message>
+            <source>The error layer must end in .las or .laz: {p}</source>
+            <translation>يجب أن ينتهي اسم ملف طبقة الخطأ بالامتداد .las أو .laz: {p}</translation>
+        </message>
+    </context>
+    <context>
+        <name>GsdBatchAlgorithm</name>
+        <message>
+            <source>GSD and photogrammetric accuracy calculator (batch table)</source>
+            <translation>حاسبة GSD والدقة التصويرية (جدول دفعي)</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Runs the GSD / accuracy calculator for every row of a table (CSV, spreadsheet or any layer) and writes a table with the inputs and all results.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Input columns&lt;/b&gt; (case-insensitive): &lt;i&gt;camera&lt;/i&gt; (optional preset key: nikon_p100, dji_p4rtk, dji_p1_35, phaseone_ixm100_80), &lt;i&gt;distance&lt;/i&gt; (m, required), &lt;i&gt;sensor_width&lt;/i&gt; (mm), &lt;i&gt;image_width&lt;/i&gt; (px), &lt;i&gt;focal_length&lt;/i&gt; (mm) — required unless a camera preset is given — and optionally sensor_height, image_height, target_gsd, k_m, k_s, pyramid_level, subsampling_step, observed_sx, observed_sy, observed_sz, observed_sxyz, observed_dense_std, forward_overlap, side_overlap, stereo_base (units as in the single calculator).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output&lt;/b&gt;: the input columns plus gsd_cm, footprint_width_m, sigma_xyz_mm, dense_resolution_cm and every other result. A row with an invalid value stops the run with an error naming the row and column.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;تشغّل حاسبة GSD والدقة لكل سطر من جدول (CSV أو جدول بيانات أو أي طبقة) وتكتب جدولاً بالمدخلات وجميع النتائج.&lt;/p&gt;&lt;p&gt;&lt;b&gt;أعمدة الإدخال&lt;/b&gt; (دون تمييز حالة الأحرف): &lt;i&gt;camera&lt;/i&gt; (اختياري، مفتاح كاميرا معرّفة: nikon_p100، dji_p4rtk، dji_p1_35، phaseone_ixm100_80)، &lt;i&gt;distance&lt;/i&gt; (م، إلزامي)، &lt;i&gt;sensor_width&lt;/i&gt; (مم)، &lt;i&gt;image_width&lt;/i&gt; (بكسل)، &lt;i&gt;focal_length&lt;/i&gt; (مم) — إلزامية ما لم تُحدَّد كاميرا — واختيارياً sensor_height وimage_height وtarget_gsd وk_m وk_s وpyramid_level وsubsampling_step وobserved_sx وobserved_sy وobserved_sz وobserved_sxyz وobserved_dense_std وforward_overlap وside_overlap وstereo_base (بالوحدات نفسها كما في الحاسبة المفردة).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المخرج&lt;/b&gt;: أعمدة الإدخال مضافاً إليها gsd_cm وfootprint_width_m وsigma_xyz_mm وdense_resolution_cm وسائر النتائج. السطر الذي يحوي قيمة غير صالحة يوقف التشغيل برسالة تذكر السطر والعمود.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Table of cameras and distances</source>
+            <translation>جدول الكاميرات والمسافات</translation>
+        </message>
+        <message>
+            <source>Round GSD to 0.01 cm/px like the paper</source>
+            <translation>تقريب GSD إلى 0.01 سم/بكسل كما في البحث</translation>
+        </message>
+        <message>
+            <source>GSD results</source>
+            <translation>نتائج GSD</translation>
+        </message>
+        <message>
+            <source>The table has no 'distance' column (m); columns found: {0}.</source>
+            <translation>لا يحتوي الجدول على العمود 'distance' (م)؛ الأعمدة الموجودة: {0}.</translation>
+        </message>
+        <message>
+            <source>Cancelled by the user.</source>
+            <translation>ألغى المستخدم العملية.</translation>
+        </message>
+        <message>
+            <source>Row {row}: unknown camera '{cam}'; known: {known}.</source>
+            <translation>السطر {row}: كاميرا غير معروفة '{cam}'؛ المعروفة: {known}.</translation>
+        </message>
+        <message>
+            <source>Row {row}, column '{col}': '{val}' is not a number.</source>
+            <translation>السطر {row}، العمود '{col}': القيمة '{val}' ليست رقماً.</translation>
+        </message>
+        <message>
+            <source>Row {row}: missing {cols}; give the columns or a camera preset.</source>
+            <translation>السطر {row}: القيم {cols} ناقصة؛ أضف الأعمدة أو حدّد كاميرا معرّفة مسبقاً.</translation>
+        </message>
+        <message>
+            <source>Row {row}: {err}</source>
+            <translation>السطر {row}: {err}</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;&lt;b&gt;تقريب GSD كما في البحث&lt;/b&gt; (ROUND_GSD، الافتراضي: لا): يقرّب GSD إلى 0.01 سم/بكسل قبل حساب الكميات المشتقة.&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>GsdCalculatorAlgorithm</name>
+        <message>
+            <source>GSD and photogrammetric accuracy calculator</source>
+            <translation>حاسبة دقة المسافة الأرضية للبكسل (GSD) والدقة التصويرية</translation>
+        </message>
+        <message>
+            <source>gsd,ground sampling distance,flying height,footprint,accuracy,photogrammetry,drone,flight planning,dense matching</source>
+            <translation>gsd,المسافة الأرضية للبكسل,ارتفاع الطيران,البصمة الأرضية,الدقة,المساحة التصويرية,طائرة مسيرة,تخطيط الطيران,المطابقة الكثيفة</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Computes the ground sampling distance (GSD) of a camera at a given distance, the image footprint, the theoretical accuracy of phototriangulation and of a dense-matching point cloud, and compares observed accuracies with the theory (Al Khalil 2019).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Formulas&lt;/b&gt;: GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;); footprint = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;; σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD; σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;; matching step P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;; dense resolution R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt; (the paper's Nikon Coolpix P100): DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 gives GSD 0.21455 cm/px, σ&lt;sub&gt;xyz&lt;/sub&gt; 1.287 mm (1.26 mm with ROUND_GSD), R&lt;sub&gt;theo&lt;/sub&gt; 0.858 cm, footprint 7.827 m.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Camera preset&lt;/b&gt; (CAMERA, default Custom): fills sensor width/height, image width/height and focal length; values you enter override the preset.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance&lt;/b&gt; (DISTANCE, m): camera–object distance or flying height above ground. Required, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor width&lt;/b&gt; (SENSOR_WIDTH, mm), &lt;b&gt;Image width&lt;/b&gt; (IMAGE_WIDTH, px), &lt;b&gt;Focal length&lt;/b&gt; (FOCAL_LENGTH, mm, the true focal length, not the 35 mm equivalent): required with the Custom camera, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor height&lt;/b&gt; (SENSOR_HEIGHT, mm) / &lt;b&gt;Image height&lt;/b&gt; (IMAGE_HEIGHT, px): optional, for the footprint height and flight spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Target GSD&lt;/b&gt; (TARGET_GSD, cm/px): optional; gives the distance or flying height that achieves it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (K_M, px, default 0.3; 0.13 for an expert operator) and &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (K_S, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pyramid level N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (PYRAMID_LEVEL, default 0.5, a fraction in (0, 1], or a percentage in (0, 100] with PYRAMID_PERCENT) and &lt;b&gt;subsampling step T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (SUBSAMPLING_STEP, px, ≥ 1, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Observed σx, σy, σz, σxyz&lt;/b&gt; (mm) and &lt;b&gt;observed dense-cloud std&lt;/b&gt; (cm): optional; give the observed/theoretical ratios.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extension&lt;/b&gt; (not in the paper): stereo base (STEREO_BASE, m) → normal-case σ&lt;sub&gt;Z&lt;/sub&gt; = (D/B)(D/c)σ&lt;sub&gt;image&lt;/sub&gt; with σ&lt;sub&gt;image&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt; pixels; forward/side overlap (%) → exposure and line spacing (image height along track, width across track).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): optional HTML report.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every result is also an output number, so the graphical modeler can chain it.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;تحسب المسافة الأرضية للبكسل (GSD) لكاميرا على مسافة معينة، والبصمة الأرضية للصورة، والدقة النظرية للتثليث التصويري ولسحابة النقاط الناتجة عن المطابقة الكثيفة، وتقارن الدقة المرصودة بالنظرية (الخليل 2019).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعادلات&lt;/b&gt;: GSD [سم/بكسل] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;)؛ البصمة = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;؛ σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD؛ σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;؛ خطوة المطابقة P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;؛ الدقة النظرية للسحابة R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt; (كاميرا Nikon Coolpix P100 في البحث): DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 يعطي GSD = 0.21455 سم/بكسل، σ&lt;sub&gt;xyz&lt;/sub&gt; = 1.287 مم (1.26 مم مع ROUND_GSD)، R&lt;sub&gt;theo&lt;/sub&gt; = 0.858 سم، البصمة 7.827 م.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;كاميرا معرّفة مسبقاً&lt;/b&gt; (CAMERA، الافتراضي: مخصص): تملأ عرض الحساس وارتفاعه وأبعاد الصورة والبعد البؤري؛ القيم التي تدخلها تتقدّم على قيم الكاميرا.&lt;/li&gt;&lt;li&gt;&lt;b&gt;المسافة&lt;/b&gt; (DISTANCE، م): المسافة بين الكاميرا والجسم أو ارتفاع الطيران فوق الأرض. إلزامية، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عرض الحساس&lt;/b&gt; (SENSOR_WIDTH، مم)، &lt;b&gt;عرض الصورة&lt;/b&gt; (IMAGE_WIDTH، بكسل)، &lt;b&gt;البعد البؤري&lt;/b&gt; (FOCAL_LENGTH، مم، البعد الحقيقي لا المكافئ لـ35 مم): إلزامية مع الكاميرا المخصصة، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ارتفاع الحساس&lt;/b&gt; (SENSOR_HEIGHT، مم) / &lt;b&gt;ارتفاع الصورة&lt;/b&gt; (IMAGE_HEIGHT، بكسل): اختيارية، لارتفاع البصمة والمسافات بين اللقطات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD المطلوب&lt;/b&gt; (TARGET_GSD، سم/بكسل): اختياري؛ يعطي المسافة أو ارتفاع الطيران المحقق له.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تقريب GSD كما في البحث&lt;/b&gt; (ROUND_GSD، الافتراضي: لا): يقرّب GSD إلى 0.01 سم/بكسل قبل حساب الكميات المشتقة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (K_M، بكسل، الافتراضي 0.3؛ 0.13 لمشغّل خبير) و&lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (K_S، الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مستوى الهرم N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (PYRAMID_LEVEL، الافتراضي 0.5، كسر في (0، 1]، أو نسبة مئوية في (0، 100] مع PYRAMID_PERCENT) و&lt;b&gt;خطوة الاعتيان T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (SUBSAMPLING_STEP، بكسل، ≥ 1، الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;σx وσy وσz وσxyz المرصودة&lt;/b&gt; (مم) و&lt;b&gt;الانحراف المعياري المرصود للسحابة الكثيفة&lt;/b&gt; (سم): اختيارية؛ تعطي نسب المرصود إلى النظري.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إضافة&lt;/b&gt; (ليست في البحث): قاعدة الزوج المجسم (STEREO_BASE، م) ← σ&lt;sub&gt;Z&lt;/sub&gt; = (D/B)(D/c)σ&lt;sub&gt;image&lt;/sub&gt; للحالة النظامية مع σ&lt;sub&gt;image&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt; بكسل؛ التداخل الطولي/الجانبي (%) ← المسافة بين اللقطات وبين خطوط الطيران (ارتفاع الصورة باتجاه الطيران وعرضها عمودياً عليه).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML): تقرير HTML اختياري.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;كل نتيجة هي أيضاً مخرج رقمي، لذا يمكن ربطها في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Custom (enter the values below)</source>
+            <translation>مخصص (أدخل القيم أدناه)</translation>
+        </message>
+        <message>
+            <source>Camera preset</source>
+            <translation>كاميرا معرّفة مسبقاً</translation>
+        </message>
+        <message>
+            <source>Camera–object distance / flying height (m)</source>
+            <translation>المسافة بين الكاميرا والجسم / ارتفاع الطيران (م)</translation>
+        </message>
+        <message>
+            <source>Sensor width (mm)</source>
+            <translation>عرض الحساس (مم)</translation>
+        </message>
+        <message>
+            <source>Image width (px)</source>
+            <translation>عرض الصورة (بكسل)</translation>
+        </message>
+        <message>
+            <source>Focal length, true (mm)</source>
+            <translation>البعد البؤري الحقيقي (مم)</translation>
+        </message>
+        <message>
+            <source>Sensor height (mm)</source>
+            <translation>ارتفاع الحساس (مم)</translation>
+        </message>
+        <message>
+            <source>Image height (px)</source>
+            <translation>ارتفاع الصورة (بكسل)</translation>
+        </message>
+        <message>
+            <source>Target GSD (cm/px)</source>
+            <translation>GSD المطلوب (سم/بكسل)</translation>
+        </message>
+        <message>
+            <source>Round GSD to 0.01 cm/px like the paper</source>
+            <translation>تقريب GSD إلى 0.01 سم/بكسل كما في البحث</translation>
+        </message>
+        <message>
+            <source>Measurement factor k_m (px)</source>
+            <translation>معامل القياس k_m (بكسل)</translation>
+        </message>
+        <message>
+            <source>Safety factor k_s</source>
+            <translation>معامل الأمان k_s</translation>
+        </message>
+        <message>
+            <source>Dense matching pyramid level N_p (fraction, or % if checked below)</source>
+            <translation>مستوى هرم الصور للمطابقة الكثيفة N_p (كسر، أو نسبة مئوية إذا فُعّل الخيار أدناه)</translation>
+        </message>
+        <message>
+            <source>Pyramid level is a percentage</source>
+            <translation>مستوى الهرم نسبة مئوية</translation>
+        </message>
+        <message>
+            <source>Dense matching subsampling step T_s (px)</source>
+            <translation>خطوة الاعتيان في المطابقة الكثيفة T_s (بكسل)</translation>
+        </message>
+        <message>
+            <source>Observed σx (mm)</source>
+            <translation>σx المرصود (مم)</translation>
+        </message>
+        <message>
+            <source>Observed σy (mm)</source>
+            <translation>σy المرصود (مم)</translation>
+        </message>
+        <message>
+            <source>Observed σz (mm)</source>
+            <translation>σz المرصود (مم)</translation>
+        </message>
+        <message>
+            <source>Observed σxyz (mm)</source>
+            <translation>σxyz المرصود (مم)</translation>
+        </message>
+        <message>
+            <source>Observed dense-cloud std (cm)</source>
+            <translation>الانحراف المعياري المرصود للسحابة الكثيفة (سم)</translation>
+        </message>
+        <message>
+            <source>Stereo base B (m) [extension]</source>
+            <translation>قاعدة الزوج المجسم B (م) [إضافة]</translation>
+        </message>
+        <message>
+            <source>Forward overlap (%) [extension]</source>
+            <translation>التداخل الطولي (%) [إضافة]</translation>
+        </message>
+        <message>
+            <source>Side overlap (%) [extension]</source>
+            <translation>التداخل الجانبي (%) [إضافة]</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>{name} ({unit}) is required with the Custom camera: enter it or choose a camera preset.</source>
+            <translation>القيمة {name} ({unit}) مطلوبة مع الكاميرا المخصصة: أدخلها أو اختر كاميرا معرّفة مسبقاً.</translation>
+        </message>
+        <message>
+            <source>DISTANCE (m) is required.</source>
+            <translation>المسافة DISTANCE (م) مطلوبة.</translation>
+        </message>
+        <message>
+            <source>GSD used</source>
+            <translation>GSD المستخدم</translation>
+        </message>
+        <message>
+            <source>GSD, unrounded</source>
+            <translation>GSD دون تقريب</translation>
+        </message>
+        <message>
+            <source>Pixel pitch</source>
+            <translation>أبعاد البكسل على الحساس</translation>
+        </message>
+        <message>
+            <source>Footprint width</source>
+            <translation>عرض البصمة الأرضية</translation>
+        </message>
+        <message>
+            <source>Footprint height</source>
+            <translation>ارتفاع البصمة الأرضية</translation>
+        </message>
+        <message>
+            <source>Image measurement precision σ_meas</source>
+            <translation>دقة القياس على الصورة σ_meas</translation>
+        </message>
+        <message>
+            <source>Theoretical phototriangulation accuracy σ_xyz</source>
+            <translation>الدقة النظرية للتثليث التصويري σ_xyz</translation>
+        </message>
+        <message>
+            <source>Dense matching step P</source>
+            <translation>خطوة المطابقة الكثيفة P</translation>
+        </message>
+        <message>
+            <source>Theoretical dense-cloud resolution R_theo</source>
+            <translation>الدقة النظرية للسحابة الكثيفة R_theo</translation>
+        </message>
+        <message>
+            <source>Distance for the target GSD</source>
+            <translation>المسافة اللازمة لتحقيق GSD المطلوب</translation>
+        </message>
+        <message>
+            <source>Observed σxyz</source>
+            <translation>σxyz المرصود</translation>
+        </message>
+        <message>
+            <source>Observed / theoretical σxyz</source>
+            <translation>نسبة σxyz المرصود إلى النظري</translation>
+        </message>
+        <message>
+            <source>Observed dense std / R_theo</source>
+            <translation>نسبة الانحراف المرصود للسحابة الكثيفة إلى R_theo</translation>
+        </message>
+        <message>
+            <source>Stereo base (extension)</source>
+            <translation>قاعدة الزوج المجسم (إضافة)</translation>
+        </message>
+        <message>
+            <source>Stereo planimetric precision (extension)</source>
+            <translation>الدقة المستوية للزوج المجسم (إضافة)</translation>
+        </message>
+        <message>
+            <source>Stereo depth precision σ_Z (extension)</source>
+            <translation>دقة العمق للزوج المجسم σ_Z (إضافة)</translation>
+        </message>
+        <message>
+            <source>Exposure spacing (extension)</source>
+            <translation>المسافة بين اللقطات (إضافة)</translation>
+        </message>
+        <message>
+            <source>Flight-line spacing (extension)</source>
+            <translation>المسافة بين خطوط الطيران (إضافة)</translation>
+        </message>
+        <message>
+            <source>Distance</source>
+            <translation>المسافة</translation>
+        </message>
+        <message>
+            <source>Sensor width</source>
+            <translation>عرض الحساس</translation>
+        </message>
+        <message>
+            <source>Image width</source>
+            <translation>عرض الصورة</translation>
+        </message>
+        <message>
+            <source>Focal length</source>
+            <translation>البعد البؤري</translation>
+        </message>
+        <message>
+            <source>quantity</source>
+            <translation>الكمية</translation>
+        </message>
+        <message>
+            <source>value</source>
+            <translation>القيمة</translation>
+        </message>
+        <message>
+            <source>unit</source>
+            <translation>الوحدة</translation>
+        </message>
+        <message>
+            <source>Formulas and defaults from Al Khalil (2019); the paper finds observed phototriangulation accuracy about 3–5 times the theoretical value. Items marked (extension) are not in the paper.</source>
+            <translation>المعادلات والقيم الافتراضية من الخليل (2019)؛ وجد البحث أن دقة التثليث التصويري المرصودة تعادل نحو 3–5 أضعاف القيمة النظرية. البنود المعلَّمة بـ(إضافة) ليست من البحث.</translation>
+        </message>
+        <message>
+            <source>GSD and photogrammetric accuracy</source>
+            <translation>GSD والدقة التصويرية</translation>
+        </message>
+        <message>
+            <source>Inputs</source>
+            <translation>المدخلات</translation>
+        </message>
+        <message>
+            <source>Results</source>
+            <translation>النتائج</translation>
+        </message>
+    </context>
+    <context>
+        <name>IdwDtmAlgorithm</name>
+        <message>
+            <source>DTM by inverse distance weighting (IDW)</source>
+            <translation>نموذج الارتفاعات الرقمي للأرض بطريقة مقلوب المسافة الموزون (IDW)</translation>
+        </message>
+        <message>
+            <source>dtm,dem,idw,inverse distance,interpolation,lidar,ground,gdal_grid,invdistnn,raster</source>
+            <translation>dtm,dem,idw,مقلوب المسافة,الاستيفاء,ليدار,أرض,gdal_grid,invdistnn,راستر</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Interpolates a terrain raster from the ground points of a LAS/LAZ file by inverse distance weighting (Shepard 1968): ẑ = Σ w&lt;sub&gt;i&lt;/sub&gt; z&lt;sub&gt;i&lt;/sub&gt; / Σ w&lt;sub&gt;i&lt;/sub&gt;, w&lt;sub&gt;i&lt;/sub&gt; = 1/d&lt;sub&gt;i&lt;/sub&gt;&lt;sup&gt;p&lt;/sup&gt;, over the nearest neighbours of each cell centre. Same semantics as &lt;code&gt;gdal_grid -a invdistnn&lt;/code&gt; (power, max_points, radius, min_points; a cell centre on a point takes its height exactly), but KD-tree based and processed in blocks: 1 M points onto 1 M cells take seconds.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=1 POWER=3 NEIGHBOURS=12 (the seed paper's best setting, RMSE 0.204 m at 62 GNSS points).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
+            <translation>&lt;p&gt;تستوفي راستر تضاريس من نقاط الأرض في ملف LAS/LAZ بطريقة مقلوب المسافة الموزون (Shepard 1968): ẑ = Σ w&lt;sub&gt;i&lt;/sub&gt; z&lt;sub&gt;i&lt;/sub&gt; / Σ w&lt;sub&gt;i&lt;/sub&gt;، w&lt;sub&gt;i&lt;/sub&gt; = 1/d&lt;sub&gt;i&lt;/sub&gt;&lt;sup&gt;p&lt;/sup&gt;، على أقرب الجيران لمركز كل خلية. الدلالة نفسها كما في &lt;code&gt;gdal_grid -a invdistnn&lt;/code&gt; (power وmax_points وradius وmin_points؛ ومركز الخلية الواقع على نقطة يأخذ ارتفاعها بالضبط)، لكن بالاعتماد على شجرة KD وبالمعالجة على كتل: 1 مليون نقطة على 1 مليون خلية تستغرق ثوانيَ.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=1 POWER=3 NEIGHBOURS=12 (أفضل إعداد في البحث المرجعي، RMSE = 0.204 م على 62 نقطة GNSS).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</translation>
+        </message>
+        <message>
+            <source>Power p</source>
+            <translation>الأس p</translation>
+        </message>
+        <message>
+            <source>Neighbours (0 = all within radius)</source>
+            <translation>عدد الجيران (0 = كل النقاط ضمن نصف القطر)</translation>
+        </message>
+        <message>
+            <source>Search radius (m, 0 = unlimited)</source>
+            <translation>نصف قطر البحث (م، 0 = غير محدود)</translation>
+        </message>
+        <message>
+            <source>Minimum points</source>
+            <translation>الحد الأدنى لعدد النقاط</translation>
+        </message>
+        <message>
+            <source>IDW DTM</source>
+            <translation>نموذج الارتفاعات الرقمي للأرض بطريقة IDW</translation>
+        </message>
+        <message>
+            <source>IDW DTM report</source>
+            <translation>تقرير نموذج الارتفاعات الرقمي بطريقة IDW</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Power&lt;/b&gt; (POWER, default 2; the paper found 3 best).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 12): nearest points used (gdal max_points); 0 = all points within the radius (needs RADIUS). More neighbours than points → error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Search radius&lt;/b&gt; (RADIUS, m, default 0 = unlimited): only points within it are used (gdal radius).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points&lt;/b&gt; (MIN_POINTS, default 0): cells with fewer neighbours within the radius are nodata (gdal min_points).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs also the numbers N_POINTS, VALID_CELLS, NODATA_CELLS.&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;الأس&lt;/b&gt; (POWER، الافتراضي 2؛ وجد البحث أن 3 هو الأفضل).&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد الجيران&lt;/b&gt; (NEIGHBOURS، الافتراضي 12): عدد أقرب النقاط المستخدمة (max_points في gdal)؛ 0 = كل النقاط ضمن نصف القطر (يتطلب RADIUS). عدد جيران أكبر من عدد النقاط → خطأ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نصف قطر البحث&lt;/b&gt; (RADIUS، م، الافتراضي 0 = غير محدود): لا تُستخدم إلا النقاط الواقعة ضمنه (radius في gdal).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأدنى لعدد النقاط&lt;/b&gt; (MIN_POINTS، الافتراضي 0): الخلايا التي لها جيران أقل من ذلك ضمن نصف القطر تُجعل nodata (min_points في gdal).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;تُخرج أيضاً الأرقام N_POINTS وVALID_CELLS وNODATA_CELLS.&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>KrigingDtmAlgorithm</name>
+        <message>
+            <source>DTM by kriging (ordinary / universal)</source>
+            <translation>نموذج الارتفاعات الرقمي للأرض بطريقة الكريغينغ (العادي / الشامل)</translation>
+        </message>
+        <message>
+            <source>dtm,dem,kriging,variogram,geostatistics,pykrige,interpolation,lidar,variance,cross-validation</source>
+            <translation>dtm,dem,كريغينغ,فاريوغرام,الإحصاء الجغرافي,pykrige,الاستيفاء,ليدار,التباين,التحقق المتقاطع</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Kriging (Matheron 1963; Cressie 1993) of the ground points of a LAS/LAZ file onto a raster, with a kriging variance (or standard deviation) raster. Ordinary kriging (unknown constant mean) or universal kriging with a linear drift. The variogram is fitted with PyKrige's estimator on a random subsample (or given by you); each cell is then kriged from its nearest points in batched local systems, so 1 M points onto a 1 km² grid at 1 m take about a minute instead of the n×n matrix that makes plain PyKrige run out of memory past ~100 k points.&lt;/p&gt;&lt;p&gt;&lt;b&gt;What is approximated&lt;/b&gt;: the variogram is fitted on a sample of point pairs (FIT_POINTS, reproducible with SEED), by default at the local scale. Local-neighbourhood kriging is not global kriging: only the NEIGHBOURS nearest points are weighted and the mean is re-estimated in every neighbourhood (quasi-stationarity). On terrain this follows the relief better than one global mean (it gave the lowest hold-out RMSE on all four ISPRS samples in the benchmark), but the two differ — typically by centimetres, by decimetres to metres at borders, gaps and steep slopes. With NEIGHBOURS equal to the number of points (≤ 6000) the result is global kriging, identical to PyKrige. With a linear drift the variogram is fitted on the residuals of a least-squares plane; points with identical x, y are merged (mean height). The kriging variance is model-based: check it with CV_POINTS (RMS standardised error near 1 means realistic variances).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=spherical NEIGHBOURS=16 CV_POINTS=1000.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
+            <translation>&lt;p&gt;كريغينغ (Matheron 1963؛ Cressie 1993) لنقاط الأرض في ملف LAS/LAZ على راستر، مع راستر لتباين الكريغينغ (أو انحرافه المعياري). كريغينغ عادي (متوسط ثابت مجهول) أو كريغينغ شامل بانجراف خطي. يُوائَم الفاريوغرام بمقدِّر PyKrige على عيّنة جزئية عشوائية (أو تحدده أنت)؛ ثم تُقدَّر كل خلية بالكريغينغ من أقرب النقاط إليها في أنظمة محلية تُحل على دفعات، فتستغرق 1 مليون نقطة على شبكة مساحتها 1 كم² بخلايا 1 م نحو دقيقة، بدلاً من المصفوفة n×n التي تجعل PyKrige المعتاد يستنفد الذاكرة بعد نحو 100 ألف نقطة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;ما الذي يُقرَّب&lt;/b&gt;: يُوائَم الفاريوغرام على عيّنة من أزواج النقاط (FIT_POINTS، قابلة للتكرار بـSEED)، على المقياس المحلي افتراضياً. الكريغينغ ضمن جوار محلي ليس كريغينغاً كلّياً: تُرجَّح فقط أقرب NEIGHBOURS نقطة ويُعاد تقدير المتوسط في كل جوار (شبه استقرارية). على التضاريس يتبع هذا الأسلوب شكل السطح أفضل من متوسط كلّي واحد (أعطى أدنى RMSE على النقاط المحجوزة للاختبار في عيّنات ISPRS الأربع جميعها في اختبار الأداء)، لكن الطريقتين تختلفان — عادةً ببضعة سنتيمترات، وبعشرات السنتيمترات حتى أمتار عند الحواف والفجوات والمنحدرات الشديدة. وعندما تساوي NEIGHBOURS عدد النقاط (≤ 6000) تكون النتيجة كريغينغاً كلّياً مطابقاً لـPyKrige. ومع الانجراف الخطي يُوائَم الفاريوغرام على بواقي مستوٍ بالمربعات الصغرى؛ وتُدمج النقاط ذات x وy المتطابقة (بمتوسط الارتفاع). تباين الكريغينغ مبني على النموذج: تحقق منه باستخدام CV_POINTS (قيمة RMS للأخطاء المعيَّرة القريبة من 1 تعني تباينات واقعية).&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=spherical NEIGHBOURS=16 CV_POINTS=1000.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</translation>
+        </message>
+        <message>
+            <source>Kriging type</source>
+            <translation>نوع الكريغينغ</translation>
+        </message>
+        <message>
+            <source>Ordinary</source>
+            <translation>عادي</translation>
+        </message>
+        <message>
+            <source>Universal (linear drift)</source>
+            <translation>شامل (انجراف خطي)</translation>
+        </message>
+        <message>
+            <source>Variogram model</source>
+            <translation>نموذج الفاريوغرام</translation>
+        </message>
+        <message>
+            <source>Variogram parameters (e.g. nugget=0.01, sill=4, range=60; empty = fit)</source>
+            <translation>معاملات الفاريوغرام (مثلاً nugget=0.01, sill=4, range=60؛ فارغ = مواءمة تلقائية)</translation>
+        </message>
+        <message>
+            <source>Neighbours per cell</source>
+            <translation>عدد الجيران لكل خلية</translation>
+        </message>
+        <message>
+            <source>Points for the variogram fit</source>
+            <translation>عدد النقاط لمواءمة الفاريوغرام</translation>
+        </message>
+        <message>
+            <source>Lag classes</source>
+            <translation>عدد فئات مسافة الإزاحة (lag)</translation>
+        </message>
+        <message>
+            <source>Maximum lag (m, 0 = auto: local scale)</source>
+            <translation>أقصى مسافة إزاحة (م، 0 = تلقائي: المقياس المحلي)</translation>
+        </message>
+        <message>
+            <source>Cross-validation points (0 = off)</source>
+            <translation>نقاط التحقق المتقاطع (0 = معطَّل)</translation>
+        </message>
+        <message>
+            <source>Random seed</source>
+            <translation>البذرة العشوائية</translation>
+        </message>
+        <message>
+            <source>Kriging DTM</source>
+            <translation>نموذج الارتفاعات الرقمي للأرض بطريقة الكريغينغ</translation>
+        </message>
+        <message>
+            <source>Write standard deviation instead of variance</source>
+            <translation>كتابة الانحراف المعياري بدلاً من التباين</translation>
+        </message>
+        <message>
+            <source>Kriging variance</source>
+            <translation>تباين الكريغينغ</translation>
+        </message>
+        <message>
+            <source>Variogram: {}</source>
+            <translation>الفاريوغرام: {}</translation>
+        </message>
+        <message>
+            <source>Kriging DTM report</source>
+            <translation>تقرير نموذج الارتفاعات الرقمي بطريقة الكريغينغ</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Kriging type&lt;/b&gt; (KRIGING_TYPE, 0 ordinary (default), 1 universal with linear drift).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram model&lt;/b&gt; (VARIOGRAM, 0 linear, 1 power, 2 gaussian, 3 spherical (default), 4 exponential).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram parameters&lt;/b&gt; (VARIOGRAM_PARAMS, optional text, e.g. &lt;code&gt;nugget=0.01, sill=4, range=60&lt;/code&gt;; linear: slope, nugget; power: scale, exponent, nugget). Empty = fitted automatically. The sill includes the nugget; the range is the practical range.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 16, ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Points for the variogram fit&lt;/b&gt; (FIT_POINTS, default 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Lag classes&lt;/b&gt; (NLAGS, default 12) and &lt;b&gt;maximum lag&lt;/b&gt; (MAX_LAG, m, default 0 = automatic: three times the typical distance to the NEIGHBOURS-th neighbour, the scale local kriging uses, so the nugget and the short-range shape that set the weights and the variance are well sampled; the fitted sill and range then describe that local scale). For a classical field-scale fit give e.g. half the extent (Journel &amp;amp; Huijbregts 1978). A fitted nugget is raised to at least 1 % of the semivariance at the maximum lag, for numerical stability (Gaussian and power models).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cross-validation points&lt;/b&gt; (CV_POINTS, default 0 = off): leave-one-out on this many random points; reports ME, RMSE, mean standardised error (ideal 0) and RMS standardised error (ideal 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Seed&lt;/b&gt; (SEED, default 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variance output&lt;/b&gt; (OUTPUT_VARIANCE, optional GeoTIFF): kriging variance (m²), or standard deviation (m) with VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: NUGGET, SILL, RANGE (NaN for linear/power), N_POINTS, VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;نوع الكريغينغ&lt;/b&gt; (KRIGING_TYPE، 0 عادي (الافتراضي)، 1 شامل بانجراف خطي).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نموذج الفاريوغرام&lt;/b&gt; (VARIOGRAM، 0 خطي، 1 قوة (power)، 2 غاوسي، 3 كروي (الافتراضي)، 4 أُسّي).&lt;/li&gt;&lt;li&gt;&lt;b&gt;معاملات الفاريوغرام&lt;/b&gt; (VARIOGRAM_PARAMS، نص اختياري، مثلاً &lt;code&gt;nugget=0.01, sill=4, range=60&lt;/code&gt;؛ للنموذج الخطي: slope وnugget؛ ولنموذج القوة: scale وexponent وnugget). فارغ = مواءمة تلقائية. تتضمن العتبة (sill) أثرَ الكتلة (nugget)؛ والمدى (range) هو المدى العملي.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد الجيران&lt;/b&gt; (NEIGHBOURS، الافتراضي 16، ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد النقاط لمواءمة الفاريوغرام&lt;/b&gt; (FIT_POINTS، الافتراضي 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد فئات مسافة الإزاحة&lt;/b&gt; (NLAGS، الافتراضي 12) و&lt;b&gt;أقصى مسافة إزاحة&lt;/b&gt; (MAX_LAG، م، الافتراضي 0 = تلقائي: ثلاثة أضعاف المسافة النموذجية إلى الجار رقم NEIGHBOURS، وهو المقياس الذي يستخدمه الكريغينغ المحلي، كي يُعايَن جيداً أثر الكتلة وشكل الفاريوغرام عند المسافات القصيرة، وهما ما يحدد الأوزان والتباين؛ وتصف العتبة والمدى المُوائَمان حينئذٍ ذلك المقياس المحلي). لمواءمة تقليدية على مقياس الحقل كله حدِّد مثلاً نصف النطاق (Journel &amp;amp; Huijbregts 1978). يُرفع أثر الكتلة المُوائَم إلى 1 % على الأقل من نصف التباين (semivariance) عند أقصى مسافة إزاحة، من أجل الاستقرار العددي (نموذجا غاوس والقوة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط التحقق المتقاطع&lt;/b&gt; (CV_POINTS، الافتراضي 0 = معطَّل): استبعاد فردي على هذا العدد من النقاط العشوائية؛ يعطي ME وRMSE ومتوسط الخطأ المعيَّر (المثالي 0) وقيمة RMS للخطأ المعيَّر (المثالي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;البذرة العشوائية&lt;/b&gt; (SEED، الافتراضي 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مخرج التباين&lt;/b&gt; (OUTPUT_VARIANCE، GeoTIFF اختياري): تباين الكريغينغ (م²)، أو الانحراف المعياري (م) مع VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: NUGGET وSILL وRANGE (NaN للنموذجين الخطي والقوة)، وN_POINTS وVALID_CELLS وCV_ME وCV_RMSE وCV_MSE (NaN دون تحقق متقاطع).&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>LsqGroundFilterAlgorithm</name>
+        <message>
+            <source>Ground filter (least-squares polynomial)</source>
+            <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
+        </message>
+        <message>
+            <source>lidar,ground,filter,bare earth,dtm,classification,least squares,polynomial,tiles,las,laz,isprs</source>
+            <translation>ليدار,أرض,فلتر,الأرض العارية,dtm,تصنيف,المربعات الصغرى,متعدد الحدود,بلاطات,las,laz,isprs</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>سحابة النقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Polynomial order (1 or 2)</source>
+            <translation>درجة متعدد الحدود (1 أو 2)</translation>
+        </message>
+        <message>
+            <source>Tile size (m)</source>
+            <translation>حجم البلاطة (م)</translation>
+        </message>
+        <message>
+            <source>Threshold T (m)</source>
+            <translation>العتبة T (م)</translation>
+        </message>
+        <message>
+            <source>Mode</source>
+            <translation>النمط</translation>
+        </message>
+        <message>
+            <source>Faithful (the paper)</source>
+            <translation>مطابق (طريقة البحث)</translation>
+        </message>
+        <message>
+            <source>Improved (ours, beyond the paper)</source>
+            <translation>محسَّن (من إضافتنا، يتجاوز البحث)</translation>
+        </message>
+        <message>
+            <source>Maximum iterations per tile</source>
+            <translation>الحد الأقصى للتكرارات في كل بلاطة</translation>
+        </message>
+        <message>
+            <source>Stop tolerance on min/max/mean/std (m)</source>
+            <translation>سماحية التوقف على الأدنى/الأعلى/المتوسط/الانحراف المعياري (م)</translation>
+        </message>
+        <message>
+            <source>Random fitting subset per tile (points, 0 = all)</source>
+            <translation>مجموعة جزئية عشوائية للمواءمة في كل بلاطة (نقاط، 0 = الكل)</translation>
+        </message>
+        <message>
+            <source>Random seed of the subset</source>
+            <translation>البذرة العشوائية للمجموعة الجزئية</translation>
+        </message>
+        <message>
+            <source>Minimum points per tile (0 = 3 × coefficients)</source>
+            <translation>الحد الأدنى للنقاط في البلاطة (0 = 3 × عدد معاملات متعدد الحدود)</translation>
+        </message>
+        <message>
+            <source>Under-populated tiles</source>
+            <translation>البلاطات قليلة النقاط</translation>
+        </message>
+        <message>
+            <source>Borrow the nearest fitted tile's surface</source>
+            <translation>استعارة سطح أقرب بلاطة مُوائَمة</translation>
+        </message>
+        <message>
+            <source>Leave their points unclassified (class 0)</source>
+            <translation>ترك نقاطها دون تصنيف (الصنف 0)</translation>
+        </message>
+        <message>
+            <source>Rejection</source>
+            <translation>الاستبعاد</translation>
+        </message>
+        <message>
+            <source>Re-weighted each iteration (a point may return)</source>
+            <translation>إعادة الترجيح في كل تكرار (قد تعود النقطة)</translation>
+        </message>
+        <message>
+            <source>Cumulative (a rejected point stays out)</source>
+            <translation>تراكمي (النقطة المستبعدة تبقى مستبعدة)</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>سحابة النقاط المصنَّفة</translation>
+        </message>
+        <message>
+            <source>Ground points only</source>
+            <translation>نقاط الأرض فقط</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Ground points</source>
+            <translation>نقاط الأرض</translation>
+        </message>
+        <message>
+            <source>Other (object) points</source>
+            <translation>النقاط الأخرى (الأجسام)</translation>
+        </message>
+        <message>
+            <source>Low-noise points</source>
+            <translation>نقاط الضوضاء المنخفضة</translation>
+        </message>
+        <message>
+            <source>Unclassified points</source>
+            <translation>النقاط غير المصنَّفة</translation>
+        </message>
+        <message>
+            <source>Tiles</source>
+            <translation>البلاطات</translation>
+        </message>
+        <message>
+            <source>Points per second</source>
+            <translation>نقطة في الثانية</translation>
+        </message>
+        <message>
+            <source>Choose an output file for the classified cloud (OUTPUT, .laz or .las).</source>
+            <translation>اختر ملف إخراج للسحابة المصنَّفة (OUTPUT، بالامتداد .laz أو .las).</translation>
+        </message>
+        <message>
+            <source>Output point clouds must end in .las or .laz: {p}</source>
+            <translation>يجب أن تنتهي أسماء ملفات سحب النقاط الناتجة بالامتداد .las أو .laz: {p}</translation>
+        </message>
+        <message>
+            <source>Reading {p}</source>
+            <translation>جارٍ قراءة {p}</translation>
+        </message>
+        <message>
+            <source>{n} points; filtering ({mode} mode)</source>
+            <translation>{n} نقطة؛ جارٍ الفلترة (النمط {mode})</translation>
+        </message>
+        <message>
+            <source>{step}: {n} points kept, ZMin {a:.2f}, ZMax {b:.2f}, ZMean {m:.2f}, σ {s:.2f}; tiles iterating: {t}</source>
+            <translation>{step}: أُبقيت {n} نقطة، ZMin {a:.2f}، ZMax {b:.2f}، ZMean {m:.2f}، σ {s:.2f}؛ بلاطات قيد التكرار: {t}</translation>
+        </message>
+        <message>
+            <source>Ground {g}, other {o}, low noise {z}, unclassified {u}; {t} tiles; {s:.1f} s</source>
+            <translation>أرض {g}، أخرى {o}، ضوضاء منخفضة {z}، غير مصنَّفة {u}؛ {t} بلاطة؛ {s:.1f} ث</translation>
+        </message>
+        <message>
+            <source>No point was classified as ground, so the ground-only output would be empty; check TILE_SIZE and THRESHOLD.</source>
+            <translation>لم تُصنَّف أي نقطة كأرض، لذا سيكون مخرج نقاط الأرض فارغاً؛ راجع TILE_SIZE وTHRESHOLD.</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). In every tile the surface is fitted, points more than THRESHOLD above it are dropped, and the fit is repeated until the minimum, maximum, mean and standard deviation of the kept heights stop changing (TOLERANCE) or MAX_ITERATIONS; then every point with z ≤ ẑ + THRESHOLD is ground. Any classification already in the file is ignored and replaced.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output classes&lt;/b&gt; (ASPRS): 2 ground, 1 other (buildings, vegetation), 7 low noise (pre-filter), 0 never classified (only with SPARSE_TILES = leave unclassified). Every other attribute of every point, the point format, scales, offsets, VLRs and CRS are copied unchanged.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file, projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Order&lt;/b&gt; (ORDER, default 2): 1 = plane z = b0 + b1·x + b2·y; 2 = quadratic z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (better on every sample of the paper).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Tile size&lt;/b&gt; (TILE_SIZE, m, default 50): larger than the largest building, so that every tile holds ground (paper: 100 m for large buildings, 50 m for small ones). Tiles are square, anchored at the minimum x, y.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Threshold&lt;/b&gt; (THRESHOLD, m, default 0.5): 0.5–1.0 m, larger on steeper terrain.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default Faithful): Faithful = the paper. Improved = ours, beyond the paper: coarse-to-fine tiles (2, 1, ½, ¼ × TILE_SIZE) fitted on overlapping windows, each level started from the previous level's ground, and a threshold that grows with the surface slope (by 2.5 m per unit gradient, at most 1 m). On the ISPRS samples it lowers the mean total error from 8.9 % (paper) to about 4.9 % with one parameter set; it costs about 15 times the time and twice the memory of the faithful mode (about 2 M points/s and 100 bytes per point in faithful mode).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours become class 7 and take no part in the fit (NOISE_RADIUS, m, default 5: neighbourhood cell; NOISE_THRESHOLD, m, default 1: depth below the neighbours).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum iterations&lt;/b&gt; (MAX_ITERATIONS, default 5, the paper's tables) and &lt;b&gt;stop tolerance&lt;/b&gt; (TOLERANCE, m, default 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Random fitting subset per tile&lt;/b&gt; (SUBSET_SIZE, points, default 0 = all; the paper used 5000) and its &lt;b&gt;seed&lt;/b&gt; (SEED). All points are classified.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points per tile&lt;/b&gt; (MIN_POINTS, default 0 = 3 × the number of coefficients) and &lt;b&gt;under-populated tiles&lt;/b&gt; (SPARSE_TILES): borrow the nearest fitted tile's surface (default) or leave their points unclassified (class 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rejection&lt;/b&gt; (REJECTION): re-weighted (default; a point dropped earlier may return when the surface moves) or cumulative (dropped for good).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud (OUTPUT, .laz or .las), optional ground-only cloud (GROUND_OUTPUT), optional HTML report (OUTPUT_HTML) with the parameters, class counts, the per-iteration statistics of the paper's Tables 1–2, per-tile statistics, time and points per second; optional CSV of every tile's iterations and coefficients (TILE_STATS); numbers N_GROUND, N_OTHER, N_NOISE, N_UNCLASSIFIED, N_TILES, POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Measure the result against reference labels with &lt;i&gt;Ground filter accuracy&lt;/i&gt;. Nothing is written when the run fails or is cancelled.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;تفصل نقاط سطح الأرض العارية عن المباني والغطاء النباتي في سحابة ليدار جوية بمواءمة سطوح متعددة حدود بالمربعات الصغرى في كل بلاطة مربعة (مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013). في كل بلاطة يُوائَم السطح، وتُستبعد النقاط التي تعلوه بأكثر من THRESHOLD، وتُكرَّر المواءمة حتى تتوقف القيمة الدنيا والعليا والمتوسط والانحراف المعياري للارتفاعات المُبقاة عن التغيُّر (TOLERANCE) أو يُبلغ MAX_ITERATIONS؛ ثم تُعَدّ أرضاً كل نقطة تحقق z ≤ ẑ + THRESHOLD. يُتجاهَل أي تصنيف موجود في الملف ويُستبدل.&lt;/p&gt;&lt;p&gt;&lt;b&gt;أصناف المخرج&lt;/b&gt; (ASPRS): 2 أرض، 1 أخرى (مبانٍ، غطاء نباتي)، 7 ضوضاء منخفضة (الفلترة المسبقة)، 0 لم تُصنَّف قط (فقط مع SPARSE_TILES = ترك النقاط دون تصنيف). تُنسخ دون تغيير جميع الخصائص الأخرى لكل نقطة، وصيغة النقاط، ومعاملات المقياس والإزاحة، وسجلات VLR، ونظام الإحداثيات.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz بنظام إحداثيات مُسقَط بالأمتار.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الدرجة&lt;/b&gt; (ORDER، الافتراضي 2): 1 = مستوٍ z = b0 + b1·x + b2·y؛ 2 = سطح تربيعي z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (أفضل في جميع عيّنات البحث).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم البلاطة&lt;/b&gt; (TILE_SIZE، م، الافتراضي 50): أكبر من أكبر مبنى، كي تحوي كل بلاطة نقاطاً من الأرض (البحث: 100 م للمباني الكبيرة، 50 م للصغيرة). البلاطات مربعة، ومبدؤها عند أصغر x وy.&lt;/li&gt;&lt;li&gt;&lt;b&gt;العتبة&lt;/b&gt; (THRESHOLD، م، الافتراضي 0.5): 0.5–1.0 م، وأكبر في التضاريس الأشد انحداراً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;النمط&lt;/b&gt; (MODE، الافتراضي: مطابق): مطابق = طريقة البحث. محسَّن = من إضافتنا، يتجاوز البحث: بلاطات من الخشن إلى الدقيق (2، 1، ½، ¼ × TILE_SIZE) تُوائَم على نوافذ متداخلة، ويبدأ كل مستوى من نقاط الأرض في المستوى السابق، مع عتبة تزداد بازدياد ميل السطح (بمقدار 2.5 م لكل وحدة تدرّج، وبحد أقصى 1 م). على عيّنات ISPRS يخفض متوسط الخطأ الكلي من 8.9 % (البحث) إلى نحو 4.9 % بمجموعة معاملات واحدة؛ ويستغرق نحو 15 ضعف زمن النمط المطابق وضعف ذاكرته (نحو 2 مليون نقطة/ث و100 بايت لكل نقطة في النمط المطابق).&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة القيم الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي: نعم): النقاط الواقعة أسفل جيرانها بكثير تصبح من الصنف 7 ولا تشارك في المواءمة (NOISE_RADIUS، م، الافتراضي 5: خلية الجوار؛ NOISE_THRESHOLD، م، الافتراضي 1: العمق تحت الجيران).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأقصى للتكرارات&lt;/b&gt; (MAX_ITERATIONS، الافتراضي 5، كما في جداول البحث) و&lt;b&gt;سماحية التوقف&lt;/b&gt; (TOLERANCE، م، الافتراضي 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مجموعة جزئية عشوائية للمواءمة في كل بلاطة&lt;/b&gt; (SUBSET_SIZE، نقاط، الافتراضي 0 = الكل؛ استخدم البحث 5000) و&lt;b&gt;بذرتها العشوائية&lt;/b&gt; (SEED). تُصنَّف جميع النقاط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأدنى للنقاط في البلاطة&lt;/b&gt; (MIN_POINTS، الافتراضي 0 = 3 × عدد معاملات متعدد الحدود) و&lt;b&gt;البلاطات قليلة النقاط&lt;/b&gt; (SPARSE_TILES): استعارة سطح أقرب بلاطة مُوائَمة (الافتراضي) أو ترك نقاطها دون تصنيف (الصنف 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الاستبعاد&lt;/b&gt; (REJECTION): إعادة الترجيح (الافتراضي؛ قد تعود نقطة استُبعدت سابقاً عندما يتحرك السطح) أو تراكمي (تُستبعد النقطة نهائياً).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المخرجات&lt;/b&gt;: السحابة المصنَّفة (OUTPUT، بالامتداد .laz أو .las)، وسحابة نقاط الأرض فقط اختيارياً (GROUND_OUTPUT)، وتقرير HTML اختياري (OUTPUT_HTML) فيه المعاملات وأعداد النقاط في كل صنف وإحصاءات كل تكرار كما في الجدولين 1–2 من البحث وإحصاءات كل بلاطة والزمن وعدد النقاط في الثانية؛ وملف CSV اختياري بتكرارات كل بلاطة ومعاملاتها (TILE_STATS)؛ والأرقام N_GROUND وN_OTHER وN_NOISE وN_UNCLASSIFIED وN_TILES وPOINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;قِس النتيجة مقارنةً بالتصنيفات المرجعية باستخدام &lt;i&gt;دقة فلتر نقاط الأرض&lt;/i&gt;. لا يُكتب أي شيء إذا فشل التشغيل أو أُلغي.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Per-tile iteration statistics (CSV)</source>
+            <translation>إحصاءات التكرارات لكل بلاطة (CSV)</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>ملفات CSV (*.csv)</translation>
+        </message>
+    </context>
+    <context>
+        <name>RectifyGcpAlgorithm</name>
+        <message>
+            <source>Rectify image with GCPs (polynomial)</source>
+            <translation>التصحيح الهندسي للصورة بنقاط الضبط الأرضي (متعدد حدود)</translation>
+        </message>
+        <message>
+            <source>georeference,georeferencer,gcp,ground control points,polynomial,rectification,warp,gdalwarp,rms,accuracy</source>
+            <translation>إسناد جغرافي,georeferencer,gcp,نقاط الضبط الأرضي,متعدد الحدود,تصحيح هندسي,warp,gdalwarp,rms,الدقة</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Rectifies (warps) an image with ground control points and a 2-D polynomial of order 1, 2 or 3 through GDAL (same result as &lt;i&gt;gdalwarp -order N&lt;/i&gt;), and writes the accuracy report of the fit. The input image is never modified: the GCPs are attached to an in-memory copy.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;تصحِّح صورة هندسياً (warp) باستخدام نقاط الضبط الأرضي ومتعدد حدود ثنائي الأبعاد من الدرجة 1 أو 2 أو 3 عبر GDAL (النتيجة نفسها التي يعطيها &lt;i&gt;gdalwarp -order N&lt;/i&gt;)، وتكتب تقرير دقة المواءمة. لا تُعدَّل صورة الإدخال أبداً: تُرفق نقاط الضبط بنسخة منها في الذاكرة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT): الراستر المراد تصحيحه.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>Target CRS [default: the GCP CRS]</source>
+            <translation>نظام الإحداثيات الهدف [الافتراضي: نظام إحداثيات نقاط الضبط]</translation>
+        </message>
+        <message>
+            <source>Resampling</source>
+            <translation>إعادة الاعتيان</translation>
+        </message>
+        <message>
+            <source>Output resolution (target CRS units) [default: GR]</source>
+            <translation>دقة تمييز المخرج (بوحدات نظام الإحداثيات الهدف) [الافتراضي: GR]</translation>
+        </message>
+        <message>
+            <source>Output nodata value</source>
+            <translation>قيمة nodata في المخرج</translation>
+        </message>
+        <message>
+            <source>Rectified image</source>
+            <translation>الصورة المصحَّحة هندسياً</translation>
+        </message>
+        <message>
+            <source>Accuracy report</source>
+            <translation>تقرير الدقة</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>OUTPUT must be a GeoTIFF file (.tif); got {0}.</source>
+            <translation>يجب أن يكون OUTPUT ملف GeoTIFF (.tif)؛ القيمة المعطاة: {0}.</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Target CRS&lt;/b&gt; (TARGET_CRS, default the GCP CRS): output CRS; GDAL reprojects after the polynomial.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest neighbour as in the paper): 0 near, 1 bilinear, 2 cubic, 3 cubic spline, 4 Lanczos, 5 average, 6 mode.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output resolution&lt;/b&gt; (RESOLUTION, target-CRS units, default GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Nodata&lt;/b&gt; (NODATA, optional): value outside the image footprint (default: the input's nodata, else 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rectified image&lt;/b&gt; (OUTPUT): GeoTIFF (written under a temporary name, renamed on success; nothing is left behind on failure).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML accuracy report.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;نظام الإحداثيات الهدف&lt;/b&gt; (TARGET_CRS، الافتراضي نظام إحداثيات نقاط الضبط): نظام إحداثيات المخرج؛ يعيد GDAL الإسقاط بعد تطبيق متعدد الحدود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إعادة الاعتيان&lt;/b&gt; (RESAMPLING، الافتراضي 0 = أقرب جار كما في البحث): 0 أقرب جار، 1 ثنائي الخطية، 2 تكعيبي، 3 شريحة تكعيبية (cubic spline)، 4 Lanczos، 5 المتوسط، 6 المنوال.&lt;/li&gt;&lt;li&gt;&lt;b&gt;دقة تمييز المخرج&lt;/b&gt; (RESOLUTION، بوحدات نظام الإحداثيات الهدف، الافتراضي GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;قيمة nodata&lt;/b&gt; (NODATA، اختياري): القيمة خارج حدود الصورة (الافتراضي: قيمة nodata في الإدخال، وإلا 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الصورة المصحَّحة هندسياً&lt;/b&gt; (OUTPUT): GeoTIFF (يُكتب باسم مؤقت ثم يُعاد تسميته عند النجاح؛ ولا يبقى أي أثر عند الفشل).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): تقرير دقة بصيغة HTML.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>SlopeGroundFilterAlgorithm</name>
+        <message>
+            <source>Ground filter (slope-based)</source>
+            <translation>فلتر نقاط الأرض (على أساس الميل)</translation>
+        </message>
+        <message>
+            <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,vosselman,slope,point cloud</source>
+            <translation>ليدار,las,laz,أرض,فلتر,تصنيف,dtm,الأرض العارية,vosselman,الميل,سحابة النقاط</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when some neighbour at horizontal distance 0 &amp;lt; d ≤ r lies more than d·tan θ + h below it. Single pass, neighbours from the whole cloud, exact (labels identical to a brute-force check of every pair) and fast (about a million points per second on one core at r = 3 m). Low outliers get class 7; every other attribute is copied unchanged. The input classification is ignored.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study's setting RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 allows a rise of 2.90 m at 3 m. Tune r and θ to your data with &lt;i&gt;Slope filter threshold sweep&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radius r&lt;/b&gt; (RADIUS, m, default 10, &amp;gt; 0): neighbourhood radius. An object is removed only within r of its edge, so r must exceed half the width of the largest building to remove; larger r costs more time.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope threshold θ&lt;/b&gt; (SLOPE, degrees, default 40, strictly between 0 and 90): the steepest terrain kept. Allowed rise at 3 m: 2.52 m (40°), 2.90 m (44°), 3.33 m (48°), 3.84 m (52°), 4.45 m (56°), 5.20 m (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Height tolerance h&lt;/b&gt; (HEIGHT_TOLERANCE, m, default 0.2, ≥ 0): extra rise allowed for every pair, absorbs ranging noise between close points; 0 is the rule as published.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;تصنِّف سحابة نقاط LAS/LAZ إلى أرض (الصنف 2) وغير أرض (الصنف 1) بفلتر الميل الذي اقترحه Vosselman (2000): تُعَدّ النقطة غير أرضية إذا وُجدت نقطة مجاورة على مسافة أفقية 0 &lt; d ≤ r تقع أسفلها بأكثر من d·tan θ + h. مرور واحد، والجيران من السحابة كلها، ودقيق (التصنيفات مطابقة لفحص شامل لكل الأزواج) وسريع (نحو مليون نقطة في الثانية على نواة معالج واحدة عند r = 3 م). تأخذ القيم الشاذة المنخفضة الصنف 7؛ وتُنسخ سائر الخصائص دون تغيير. يُتجاهَل تصنيف الإدخال.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: إعداد دراسة الغابات RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 يسمح بفرق ارتفاع 2.90 م على مسافة 3 م. اضبط r وθ لبياناتك باستخدام &lt;i&gt;مسح عتبات فلتر الميل&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz بنظام إحداثيات مُسقَط (بالأمتار).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نصف القطر r&lt;/b&gt; (RADIUS، م، الافتراضي 10، &gt; 0): نصف قطر الجوار. لا يُزال الجسم إلا ضمن مسافة r من حافته، لذا يجب أن يتجاوز r نصف عرض أكبر مبنى يُراد إزالته؛ وكلما كبر r زاد الزمن.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عتبة الميل θ&lt;/b&gt; (SLOPE، درجات، الافتراضي 40، بين 0 و90 حصراً): أشد انحدار للتضاريس يُحتفظ به. فرق الارتفاع المسموح على مسافة 3 م: 2.52 م (40°)، 2.90 م (44°)، 3.33 م (48°)، 3.84 م (52°)، 4.45 م (56°)، 5.20 م (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;سماحية الارتفاع h&lt;/b&gt; (HEIGHT_TOLERANCE، م، الافتراضي 0.2، ≥ 0): فرق ارتفاع إضافي مسموح لكل زوج، يمتص ضوضاء قياس المسافة بين النقاط المتقاربة؛ والقيمة 0 هي القاعدة كما نُشرت.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>Radius r (m)</source>
+            <translation>نصف القطر r (م)</translation>
+        </message>
+        <message>
+            <source>Slope threshold θ (degrees)</source>
+            <translation>عتبة الميل θ (درجة)</translation>
+        </message>
+        <message>
+            <source>Height tolerance h (m)</source>
+            <translation>سماحية الارتفاع h (م)</translation>
+        </message>
+        <message>
+            <source>Keep existing noise classes (7, 18)</source>
+            <translation>الإبقاء على أصناف الضوضاء الموجودة (7, 18)</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>سحابة النقاط المصنَّفة</translation>
+        </message>
+        <message>
+            <source>Ground points</source>
+            <translation>نقاط الأرض</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Points read</source>
+            <translation>النقاط المقروءة</translation>
+        </message>
+        <message>
+            <source>Ground points (class 2)</source>
+            <translation>نقاط الأرض (الصنف 2)</translation>
+        </message>
+        <message>
+            <source>Non-ground points (class 1)</source>
+            <translation>النقاط غير الأرضية (الصنف 1)</translation>
+        </message>
+        <message>
+            <source>Low outliers (class 7)</source>
+            <translation>القيم الشاذة المنخفضة (الصنف 7)</translation>
+        </message>
+        <message>
+            <source>Filter speed (points/s)</source>
+            <translation>سرعة الفلترة (نقطة/ث)</translation>
+        </message>
+        <message>
+            <source>Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, mode {}</source>
+            <translation>فلتر الميل: r = {} م، θ = {}°، h = {} م، الارتدادات: {}، النمط: {}</translation>
+        </message>
+        <message>
+            <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
+            <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الفلترة {:.1f} ث</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, default yes, advanced): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point, classes 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): counts, settings, allowed-rise table, speed.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE, POINTS_PER_SECOND (filter step only).&lt;/p&gt;&lt;p&gt;Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;الإبقاء على أصناف الضوضاء الموجودة&lt;/b&gt; (KEEP_NOISE، الافتراضي: نعم، خيار متقدم): النقاط المصنَّفة مسبقاً 7 أو 18 تحتفظ بصنفها ولا تشارك في الفلترة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المصنَّفة&lt;/b&gt; (OUTPUT، .laz/.las): كل النقاط، بالأصناف 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط الأرض&lt;/b&gt; (GROUND_OUTPUT، اختياري): نقاط الأرض فقط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): الأعداد والإعدادات وجدول فرق الارتفاع المسموح والسرعة.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: N_POINTS وN_GROUND وN_NONGROUND وN_NOISE وPOINTS_PER_SECOND (لخطوة الفلترة وحدها).&lt;/p&gt;&lt;p&gt;المرجع: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>SlopeThresholdSweepAlgorithm</name>
+        <message>
+            <source>Slope filter threshold sweep</source>
+            <translation>مسح عتبات فلتر الميل</translation>
+        </message>
+        <message>
+            <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
+            <translation>ليدار,أرض,فلتر,vosselman,الميل,العتبة,المعايرة,الدقة,النوع الأول,النوع الثاني,كابا,isprs</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h and reports, against reference labels, Type I error (ground rejected), Type II error (objects accepted as ground — the forest study's "error" column, which alone always favours low θ), total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004), then picks the best setting. One exact neighbourhood pass per radius and tolerance: every threshold then costs a single comparison per point.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. ISPRS reference samples: INPUT=samp31.laz (its own classification is the reference).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): LAS/LAZ. Its classification is never used to filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference cloud&lt;/b&gt; (REFERENCE, optional): a labelled copy of the same points in the same order; empty = the input's own classification (e.g. the ISPRS samples).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default "2"): reference classes counted as ground; all others are objects.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope thresholds&lt;/b&gt; (SLOPES, degrees, default "30,35,40,44,48,52,56,60"): a list or start:stop:step.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radii&lt;/b&gt; (RADII, m, default "10") and &lt;b&gt;height tolerances&lt;/b&gt; (HEIGHT_TOLERANCES, m, default "0.2"): lists; each value is one pass.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Best by&lt;/b&gt; (METRIC, default 0): 0 lowest total error, 1 highest kappa, 2 lowest Type I, 3 lowest Type II.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;تشغِّل فلتر الأرض القائم على الميل لكل توليفة من عتبات الميل θ وأنصاف الأقطار r وسماحيات الارتفاع h، وتحسب مقارنةً بالتصنيفات المرجعية خطأ النوع الأول (رفض نقاط الأرض)، وخطأ النوع الثاني (قبول الأجسام كأرض — وهو عمود "الخطأ" في دراسة الغابات، الذي يرجِّح وحده دائماً قيم θ المنخفضة)، والخطأ الكلي، ومعامل كابا لكوهين (Sithole &amp; Vosselman 2004)، ثم تختار أفضل إعداد. مرور دقيق واحد على الجوار لكل نصف قطر وسماحية: بعدها لا تكلِّف كل عتبة سوى مقارنة واحدة لكل نقطة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: دراسة الغابات: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. عيّنات ISPRS المرجعية: INPUT=samp31.laz (تصنيفها نفسه هو المرجع).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): LAS/LAZ. لا يُستخدم تصنيفها في الفلترة أبداً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المرجعية&lt;/b&gt; (REFERENCE، اختياري): نسخة مصنَّفة من النقاط نفسها وبالترتيب نفسه؛ فارغ = تصنيف سحابة الإدخال نفسها (مثل عيّنات ISPRS).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أصناف الأرض&lt;/b&gt; (GROUND_CLASSES، الافتراضي "2"): الأصناف المرجعية التي تُعَدّ أرضاً؛ وكل ما عداها أجسام.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عتبات الميل&lt;/b&gt; (SLOPES، درجات، الافتراضي "30,35,40,44,48,52,56,60"): قائمة أو start:stop:step (بداية:نهاية:خطوة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أنصاف الأقطار&lt;/b&gt; (RADII، م، الافتراضي "10") و&lt;b&gt;سماحيات الارتفاع&lt;/b&gt; (HEIGHT_TOLERANCES، م، الافتراضي "0.2"): قوائم؛ كل قيمة تعني مروراً واحداً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;معيار الأفضلية&lt;/b&gt; (METRIC، الافتراضي 0): 0 أدنى خطأ كلي، 1 أعلى كابا، 2 أدنى خطأ من النوع الأول، 3 أدنى خطأ من النوع الثاني.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>Reference cloud (empty = the input's classification)</source>
+            <translation>السحابة المرجعية (فارغ = تصنيف سحابة الإدخال نفسها)</translation>
+        </message>
+        <message>
+            <source>Reference ground classes</source>
+            <translation>أصناف الأرض في المرجع</translation>
+        </message>
+        <message>
+            <source>Slope thresholds θ (degrees; list or start:stop:step)</source>
+            <translation>عتبات الميل θ (درجات؛ قائمة أو بداية:نهاية:خطوة)</translation>
+        </message>
+        <message>
+            <source>Radii r (m; list)</source>
+            <translation>أنصاف الأقطار r (م؛ قائمة)</translation>
+        </message>
+        <message>
+            <source>Height tolerances h (m; list)</source>
+            <translation>سماحيات الارتفاع h (م؛ قائمة)</translation>
+        </message>
+        <message>
+            <source>Best by</source>
+            <translation>معيار الأفضلية</translation>
+        </message>
+        <message>
+            <source>Lowest total error</source>
+            <translation>أدنى خطأ كلي</translation>
+        </message>
+        <message>
+            <source>Highest kappa</source>
+            <translation>أعلى كابا</translation>
+        </message>
+        <message>
+            <source>Lowest Type I error</source>
+            <translation>أدنى خطأ من النوع الأول</translation>
+        </message>
+        <message>
+            <source>Lowest Type II error</source>
+            <translation>أدنى خطأ من النوع الثاني</translation>
+        </message>
+        <message>
+            <source>Sweep table</source>
+            <translation>جدول المسح</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>ملفات CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Classified with the best setting</source>
+            <translation>السحابة المصنَّفة بأفضل إعداد</translation>
+        </message>
+        <message>
+            <source>Best radius (m)</source>
+            <translation>أفضل نصف قطر (م)</translation>
+        </message>
+        <message>
+            <source>Best slope threshold (degrees)</source>
+            <translation>أفضل عتبة ميل (درجة)</translation>
+        </message>
+        <message>
+            <source>Best height tolerance (m)</source>
+            <translation>أفضل سماحية ارتفاع (م)</translation>
+        </message>
+        <message>
+            <source>Type I error at the best setting (%)</source>
+            <translation>خطأ النوع الأول عند أفضل إعداد (%)</translation>
+        </message>
+        <message>
+            <source>Type II error at the best setting (%)</source>
+            <translation>خطأ النوع الثاني عند أفضل إعداد (%)</translation>
+        </message>
+        <message>
+            <source>Total error at the best setting (%)</source>
+            <translation>الخطأ الكلي عند أفضل إعداد (%)</translation>
+        </message>
+        <message>
+            <source>Kappa at the best setting (%)</source>
+            <translation>كابا عند أفضل إعداد (%)</translation>
+        </message>
+        <message>
+            <source>Settings evaluated</source>
+            <translation>عدد الإعدادات المقيَّمة</translation>
+        </message>
+        <message>
+            <source>Best setting</source>
+            <translation>أفضل إعداد</translation>
+        </message>
+        <message>
+            <source>Sweeping {} thresholds × {} radii × {} tolerances</source>
+            <translation>مسح {} عتبات × {} أنصاف أقطار × {} سماحيات</translation>
+        </message>
+        <message>
+            <source>Best ({}): {} — total {:.2f} %</source>
+            <translation>الأفضل ({}): {} — الخطأ الكلي {:.2f} %</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Sweep table&lt;/b&gt; (OUTPUT_CSV): one row per setting: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): the table, the best setting and a chart of the errors against θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified with the best setting&lt;/b&gt; (OUTPUT, optional LAS/LAZ).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: BEST_RADIUS, BEST_SLOPE, BEST_HEIGHT_TOLERANCE, BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;جدول المسح&lt;/b&gt; (OUTPUT_CSV): صف لكل إعداد: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML): الجدول وأفضل إعداد ومخطط للأخطاء مقابل θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المصنَّفة بأفضل إعداد&lt;/b&gt; (OUTPUT، LAS/LAZ اختياري).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: BEST_RADIUS وBEST_SLOPE وBEST_HEIGHT_TOLERANCE وBEST_TYPE1 وBEST_TYPE2 وBEST_TOTAL وBEST_KAPPA (بالنسبة المئوية) وN_SETTINGS.&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>_GcpBase</name>
+        <message>
+            <source>Image (raster) to rectify</source>
+            <translation>الصورة (راستر) المراد تصحيحها</translation>
+        </message>
+        <message>
+            <source>Image (raster) the GCPs were measured on</source>
+            <translation>الصورة (راستر) التي قيست عليها نقاط الضبط</translation>
+        </message>
+        <message>
+            <source>GCP file (.points or CSV)</source>
+            <translation>ملف نقاط الضبط الأرضي (.points أو CSV)</translation>
+        </message>
+        <message>
+            <source>GCP files (*.points *.csv *.txt);;All files (*.*)</source>
+            <translation>ملفات نقاط الضبط (*.points *.csv *.txt);;جميع الملفات (*.*)</translation>
+        </message>
+        <message>
+            <source>…or GCP point layer</source>
+            <translation>…أو طبقة نقطية لنقاط الضبط</translation>
+        </message>
+        <message>
+            <source>Layer field: image column</source>
+            <translation>حقل الطبقة: عمود الصورة</translation>
+        </message>
+        <message>
+            <source>Layer field: image row</source>
+            <translation>حقل الطبقة: صف الصورة</translation>
+        </message>
+        <message>
+            <source>Layer field: point id</source>
+            <translation>حقل الطبقة: معرِّف النقطة</translation>
+        </message>
+        <message>
+            <source>Layer field: enabled (1/0)</source>
+            <translation>حقل الطبقة: مفعَّلة (1/0)</translation>
+        </message>
+        <message>
+            <source>Layer field: role (gcp/check)</source>
+            <translation>حقل الطبقة: الدور (gcp/check)</translation>
+        </message>
+        <message>
+            <source>Layer field: weight (&gt; 0)</source>
+            <translation>حقل الطبقة: الوزن (&gt; 0)</translation>
+        </message>
+        <message>
+            <source>Image coordinates refer to</source>
+            <translation>إحداثيات الصورة تشير إلى</translation>
+        </message>
+        <message>
+            <source>pixel corners: (0,0) = top-left corner of the image (GDAL/QGIS)</source>
+            <translation>أركان البكسلات: (0,0) = الركن العلوي الأيسر للصورة (GDAL/QGIS)</translation>
+        </message>
+        <message>
+            <source>pixel centres: integer = centre of a pixel (0-based indices)</source>
+            <translation>مراكز البكسلات: العدد الصحيح = مركز بكسل (فهارس تبدأ من 0)</translation>
+        </message>
+        <message>
+            <source>CRS of the GCP map coordinates (if the file does not say)</source>
+            <translation>نظام الإحداثيات للإحداثيات الخرائطية لنقاط الضبط (إن لم يحدده الملف)</translation>
+        </message>
+        <message>
+            <source>Polynomial order (1–3)</source>
+            <translation>درجة متعدد الحدود (1–3)</translation>
+        </message>
+        <message>
+            <source>Ground resolution GR (map units/pixel) [default: from the GCPs]</source>
+            <translation>الدقة الأرضية GR (وحدة خريطة/بكسل) [الافتراضي: من نقاط الضبط]</translation>
+        </message>
+        <message>
+            <source>INPUT: no image given or it cannot be opened; give a raster file.</source>
+            <translation>INPUT: لم تُحدَّد صورة أو تعذّر فتحها؛ حدِّد ملف راستر.</translation>
+        </message>
+        <message>
+            <source>INPUT: {0} is not a local raster file; save the image to a file first.</source>
+            <translation>INPUT: {0} ليس ملف راستر محلياً؛ احفظ الصورة في ملف أولاً.</translation>
+        </message>
+        <message>
+            <source>Give either GCP_FILE or GCP_LAYER, not both.</source>
+            <translation>حدِّد GCP_FILE أو GCP_LAYER، لا الاثنين معاً.</translation>
+        </message>
+        <message>
+            <source>No GCPs: give a GCP file (GCP_FILE, .points or CSV) or a point layer (GCP_LAYER with COL_FIELD and ROW_FIELD); no &lt;image&gt;.points file was found next to the image either.</source>
+            <translation>لا توجد نقاط ضبط: حدِّد ملف نقاط ضبط (GCP_FILE، بالامتداد .points أو CSV) أو طبقة نقطية (GCP_LAYER مع COL_FIELD وROW_FIELD)؛ ولم يُعثر كذلك على ملف &lt;image&gt;.points بجوار الصورة.</translation>
+        </message>
+        <message>
+            <source>GCP_LAYER needs COL_FIELD and ROW_FIELD: the fields holding the image column and row of each point.</source>
+            <translation>تتطلب GCP_LAYER الحقلين COL_FIELD وROW_FIELD: الحقلين اللذين يحويان عمود الصورة وصفّها لكل نقطة.</translation>
+        </message>
+        <message>
+            <source>GCP layer feature {0} has no geometry.</source>
+            <translation>العنصر {0} في طبقة نقاط الضبط ليست له هندسة.</translation>
+        </message>
+        <message>
+            <source>The GCP map coordinates have no CRS: the file has no '#CRS:' line and GCP_CRS is not set. Set GCP_CRS (e.g. EPSG:22780) and run again.</source>
+            <translation>الإحداثيات الخرائطية لنقاط الضبط بلا نظام إحداثيات: لا يحوي الملف السطر '#CRS:' ولم يُضبط GCP_CRS. اضبط GCP_CRS (مثلاً EPSG:22780) وأعد التشغيل.</translation>
+        </message>
+        <message>
+            <source>The GCP CRS is geographic (degrees): the accuracy criteria need map units of length. Set TARGET_CRS (or GCP_CRS) to a projected CRS, e.g. the UTM zone of the image.</source>
+            <translation>نظام إحداثيات نقاط الضبط جغرافي (بالدرجات): تتطلب معايير الدقة وحدات خريطة طولية. اضبط TARGET_CRS (أو GCP_CRS) على نظام إحداثيات مُسقَط، مثل نطاق UTM الذي تقع فيه الصورة.</translation>
+        </message>
+    </context>
+    <context>
+        <name>_GridAlgorithm</name>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>سحابة النقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Classes used (comma-separated; empty = all)</source>
+            <translation>الأصناف المستخدمة (مفصولة بفواصل؛ فارغ = الكل)</translation>
+        </message>
+        <message>
+            <source>Cell size (m)</source>
+            <translation>حجم الخلية (م)</translation>
+        </message>
+        <message>
+            <source>Extent</source>
+            <translation>النطاق</translation>
+        </message>
+        <message>
+            <source>CRS (overrides the LAS file's CRS)</source>
+            <translation>نظام الإحداثيات (يتقدّم على نظام إحداثيات ملف LAS)</translation>
+        </message>
+        <message>
+            <source>Maximum distance to data (m, 0 = auto)</source>
+            <translation>أقصى مسافة إلى البيانات (م، 0 = تلقائي)</translation>
+        </message>
+        <message>
+            <source>Fill data gaps (interpolate far from data)</source>
+            <translation>ملء فجوات البيانات (الاستيفاء بعيداً عن البيانات)</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
+            <translation>سحابة النقاط لا تحوي سجل نظام إحداثيات ولم يُحدَّد نظام إحداثيات؛ اضبط المعامل CRS (مثلاً EPSG:32632). لم تُكتب أي مخرجات.</translation>
+        </message>
+        <message>
+            <source>Cell size must be &gt; 0 (metres); give e.g. 1.0. No output was written.</source>
+            <translation>يجب أن يكون حجم الخلية &gt; 0 (بالأمتار)؛ أدخل مثلاً 1.0. لم تُكتب أي مخرجات.</translation>
+        </message>
+        <message>
+            <source>Reading points of class(es) {} from {}</source>
+            <translation>جارٍ قراءة نقاط الصنف (الأصناف) {} من {}</translation>
+        </message>
+        <message>
+            <source>{} of {} points selected</source>
+            <translation>اختيرت {} نقطة من أصل {}</translation>
+        </message>
+    </context>
+    <context>
+        <name>_SlopeCommon</name>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>سحابة النقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Returns filtered</source>
+            <translation>الارتدادات المفلترة</translation>
+        </message>
+        <message>
+            <source>All returns</source>
+            <translation>جميع الارتدادات</translation>
+        </message>
+        <message>
+            <source>Last returns only</source>
+            <translation>الارتدادات الأخيرة فقط</translation>
+        </message>
+        <message>
+            <source>Mode</source>
+            <translation>النمط</translation>
+        </message>
+        <message>
+            <source>Exact (Vosselman 2000)</source>
+            <translation>دقيق (Vosselman 2000)</translation>
+        </message>
+        <message>
+            <source>Terrain-adaptive (toolbox extension)</source>
+            <translation>متكيِّف مع التضاريس (إضافة من صندوق الأدوات)</translation>
+        </message>
+        <message>
+            <source>Adaptive mode: trend cell (m)</source>
+            <translation>النمط المتكيِّف: خلية الاتجاه العام (م)</translation>
+        </message>
+        <message>
+            <source>Adaptive mode: trend window, &gt; largest building (m)</source>
+            <translation>النمط المتكيِّف: نافذة الاتجاه العام، &gt; أكبر مبنى (م)</translation>
+        </message>
+        <message>
+            <source>TREND_CELL and TREND_WINDOW must be &gt; 0 metres in adaptive mode (e.g. 10 and 60).</source>
+            <translation>يجب أن تكون قيمتا TREND_CELL وTREND_WINDOW &gt; 0 م في النمط المتكيِّف (مثلاً 10 و60).</translation>
+        </message>
+        <message>
+            <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
+            <translation>يجب أن تكون قيمتا NOISE_RADIUS وNOISE_THRESHOLD &gt; 0 م (مثلاً 5 و1)، أو أوقف الفلترة المسبقة NOISE.</translation>
+        </message>
+    </context>
 </TS>

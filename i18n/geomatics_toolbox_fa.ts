@@ -1,2113 +1,1702 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1">
-<context>
-    <name>@default</name>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>reference ground</source>
-        <translation>زمینی (در مرجع)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>reference object</source>
-        <translation>عارضه (در مرجع)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>total</source>
-        <translation>مجموع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="165"/>
-        <source>Type I (ground rejected) = b/(a+b)</source>
-        <translation>خطای نوع اول (رد نقاط زمینی) = b/(a+b)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="166"/>
-        <source>Type II (object accepted) = c/(c+d)</source>
-        <translation>خطای نوع دوم (پذیرش عوارض به‌عنوان زمین) = c/(c+d)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="167"/>
-        <source>Total = (b+c)/n</source>
-        <translation>خطای کل = (b+c)/n</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="168"/>
-        <source>Cohen&apos;s kappa</source>
-        <translation>ضریب کاپای کوهن</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="170"/>
-        <source>filtered cloud</source>
-        <translation>ابر فیلترشده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="170"/>
-        <source>its class dimension</source>
-        <translation>بُعد کلاس آن</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="171"/>
-        <source>its ground classes</source>
-        <translation>کلاس‌های زمینی آن</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="172"/>
-        <source>reference</source>
-        <translation>مرجع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="172"/>
-        <source>(dimension of the filtered cloud)</source>
-        <translation>(بُعدی از ابر فیلترشده)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="173"/>
-        <source>reference class dimension</source>
-        <translation>بُعد کلاس مرجع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="174"/>
-        <source>reference ground classes</source>
-        <translation>کلاس‌های زمینی مرجع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>item</source>
-        <translation>مورد</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>value</source>
-        <translation>مقدار</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>filtered ground</source>
-        <translation>زمینی (پس از فیلتر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>filtered object</source>
-        <translation>عارضه (پس از فیلتر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>measure</source>
-        <translation>سنجه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>Of all misclassified points, {p1:.1f} % are Type I and {p2:.1f} % Type II.</source>
-        <translation>از همهٔ نقاطی که نادرست طبقه‌بندی شده‌اند، {p1:.1f} % از نوع اول و {p2:.1f} % از نوع دوم هستند.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>filtered class</source>
-        <translation>کلاس پس از فیلتر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="373"/>
-        <source>points</source>
-        <translation>تعداد نقاط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="176"/>
-        <source>Measures of the ISPRS filter test: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</source>
-        <translation>سنجه‌های آزمون فیلترهای ISPRS: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="193"/>
-        <source>Ground filter accuracy</source>
-        <translation>دقت فیلتر نقاط زمینی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="315"/>
-        <source>input</source>
-        <translation>پروندهٔ ورودی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="316"/>
-        <source>CRS</source>
-        <translation>سیستم مختصات (CRS)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="316"/>
-        <source>none</source>
-        <translation>ندارد</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="317"/>
-        <source>mode</source>
-        <translation>حالت</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="317"/>
-        <source>order</source>
-        <translation>درجه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="318"/>
-        <source>polynomial</source>
-        <translation>چندجمله‌ای</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="383"/>
-        <source>tile size (m)</source>
-        <translation>اندازهٔ کاشی (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="322"/>
-        <source>threshold T (m)</source>
-        <translation>آستانهٔ T (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="323"/>
-        <source>max iterations</source>
-        <translation>حداکثر تکرار</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="324"/>
-        <source>stop tolerance (m)</source>
-        <translation>تلورانس توقف (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="325"/>
-        <source>fitting subset per tile</source>
-        <translation>زیرمجموعهٔ برازش در هر کاشی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="325"/>
-        <source>all points</source>
-        <translation>همهٔ نقاط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="326"/>
-        <source>seed</source>
-        <translation>بذر تصادفی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="327"/>
-        <source>min points per tile</source>
-        <translation>حداقل نقاط هر کاشی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="328"/>
-        <source>under-populated tiles</source>
-        <translation>کاشی‌های کم‌نقطه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="329"/>
-        <source>rejection</source>
-        <translation>شیوهٔ رد نقاط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="330"/>
-        <source>low-outlier pre-filter</source>
-        <translation>پیش‌فیلتر نقاط پرت پایین</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="331"/>
-        <source>pre-filter cell / depth (m)</source>
-        <translation>سلول / عمق پیش‌فیلتر (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="333"/>
-        <source>grid origin (min x, min y)</source>
-        <translation>مبدأ شبکه (کمینهٔ x، کمینهٔ y)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="336"/>
-        <source>levels (× tile size)</source>
-        <translation>سطوح (× اندازهٔ کاشی)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="337"/>
-        <source>window overlap</source>
-        <translation>همپوشانی پنجره‌ها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="338"/>
-        <source>slope factor (m) / cap (m)</source>
-        <translation>ضریب شیب (متر) / سقف (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="340"/>
-        <source>ground</source>
-        <translation>زمینی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="340"/>
-        <source>other (object)</source>
-        <translation>سایر (عارضه)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="340"/>
-        <source>low noise</source>
-        <translation>نویز پایین</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="341"/>
-        <source>never classified</source>
-        <translation>هرگز طبقه‌بندی‌نشده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="363"/>
-        <source>reading</source>
-        <translation>خواندن</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="366"/>
-        <source>filter total</source>
-        <translation>کل فیلتر کردن</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="367"/>
-        <source>run total (read, filter, write)</source>
-        <translation>کل اجرا (خواندن، فیلتر، نوشتن)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="368"/>
-        <source>points per second (run)</source>
-        <translation>نقطه در ثانیه (اجرا)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="369"/>
-        <source>points per second (filter)</source>
-        <translation>نقطه در ثانیه (فیلتر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="370"/>
-        <source>step</source>
-        <translation>گام</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="371"/>
-        <source>Parameters</source>
-        <translation>پارامترها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="373"/>
-        <source>class</source>
-        <translation>کلاس</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="373"/>
-        <source>meaning</source>
-        <translation>معنا</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="376"/>
-        <source>Kept heights after each iteration, aggregated over the tiles (a tile that has stopped keeps its last values); the layout of the paper's Tables 1–2.</source>
-        <translation>ارتفاع‌های نگه‌داشته‌شده پس از هر تکرار، تجمیع‌شده روی کاشی‌ها (کاشی‌ای که متوقف شده آخرین مقادیرش را نگه می‌دارد)؛ با چیدمان جدول‌های 1–2 مقاله.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="380"/>
-        <source>tiles still iterating</source>
-        <translation>کاشی‌های در حال تکرار</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="383"/>
-        <source>level</source>
-        <translation>سطح</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="395"/>
-        <source>tiles</source>
-        <translation>تعداد کاشی‌ها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="383"/>
-        <source>fitted</source>
-        <translation>برازش‌شده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="383"/>
-        <source>ground seeds</source>
-        <translation>نقاط زمینی اولیه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="383"/>
-        <source>seconds</source>
-        <translation>ثانیه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="388"/>
-        <source>The iteration and tile tables below describe the finest level.</source>
-        <translation>جدول‌های تکرار و کاشی در زیر، ریزترین سطح را توصیف می‌کنند.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
-        <source>status</source>
-        <translation>وضعیت</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
-        <source>column</source>
-        <translation>ستون</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
-        <source>row</source>
-        <translation>سطر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
-        <source>fitting points</source>
-        <translation>نقاط برازش</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
-        <source>iterations</source>
-        <translation>تکرارها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="396"/>
-        <source>kept</source>
-        <translation>نگه‌داشته</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="400"/>
-        <source>Showing the {k} fullest of {n} tiles.</source>
-        <translation>{k} کاشیِ پرنقطه‌تر از میان {n} کاشی نمایش داده شده است.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
-        <source>stage</source>
-        <translation>مرحله</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="404"/>
-        <source>seconds or points/s</source>
-        <translation>ثانیه یا نقطه/ثانیه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="406"/>
-        <source>Method: tiled least-squares polynomial filter, Damascus Univ. J. Eng. Sci. 29(2), 2013. Improved mode and the low-outlier pre-filter are ours. Accuracy terms (Type I, Type II, total) after Sithole &amp; Vosselman (2004).</source>
-        <translation>روش: فیلتر چندجمله‌ای کمترین مربعات روی کاشی‌ها، مجلهٔ علوم مهندسی دانشگاه دمشق 29(2)، 2013. حالت بهبودیافته و پیش‌فیلتر نقاط پرت پایین افزودهٔ ما هستند. اصطلاحات دقت (نوع اول، نوع دوم، کل) برگرفته از Sithole &amp; Vosselman (2004).</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="411"/>
-        <source>Ground filter (least-squares polynomial)</source>
-        <translation>فیلتر نقاط زمینی (چندجمله‌ای کمترین مربعات)</translation>
-    </message>
-</context>
-<context>
-    <name>DsmAlgorithm</name>
-    <message>
-        <location filename="../algorithms/terrain.py" line="530"/>
-        <source>DSM and nDSM / canopy height model</source>
-        <translation>مدل رقومی سطح (DSM) و nDSM / مدل ارتفاع تاج پوشش گیاهی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="533"/>
-        <source>dsm,ndsm,chm,canopy height,surface model,first returns,lidar,raster</source>
-        <translation>dsm,ndsm,chm,ارتفاع تاج پوشش,مدل سطح,بازگشت‌های اول,لایدار,رستر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="537"/>
-        <source>&lt;p&gt;Digital surface model from a LAS/LAZ file: every cell takes the highest return falling in it (first returns only as an option, the usual canopy surface). With a DTM, also the normalised DSM (nDSM; canopy height model in forests) = DSM − DTM on the DTM's grid. Points are read in chunks, so large files fit in memory.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=cloud.laz CELL_SIZE=1 FIRST_RETURNS=true DTM=dtm.tif OUTPUT=dsm.tif OUTPUT_NDSM=chm.tif.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes used&lt;/b&gt; (CLASSES, default empty = all classes).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Excluded classes&lt;/b&gt; (EXCLUDE_CLASSES, default &lt;code&gt;7,18&lt;/code&gt;: low and high noise).&lt;/li&gt;&lt;li&gt;&lt;b&gt;First returns only&lt;/b&gt; (FIRST_RETURNS, default no).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 1), &lt;b&gt;Extent&lt;/b&gt; (EXTENT), &lt;b&gt;CRS&lt;/b&gt; (CRS): as for the DTM tools; ignored when a DTM is given (its grid and CRS are used so that DSM and DTM align cell for cell).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill distance&lt;/b&gt; (FILL_DISTANCE, m, default 0): empty cells take the value of the nearest non-empty cell within this distance; 0 = leave them nodata.&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM&lt;/b&gt; (DTM, optional raster): needed for the nDSM.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Clamp negative heights to 0&lt;/b&gt; (CLAMP_NEGATIVE, default yes).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DSM&lt;/b&gt; (OUTPUT) and &lt;b&gt;nDSM&lt;/b&gt; (OUTPUT_NDSM, optional, needs DTM): GeoTIFF, nodata −9999.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;</source>
-        <translation>&lt;p&gt;مدل رقومی سطح از یک پروندهٔ LAS/LAZ: هر سلول بالاترین بازگشتی را که در آن می‌افتد می‌گیرد (به‌اختیار فقط بازگشت‌های اول، که سطح معمول تاج پوشش گیاهی است). با داشتن مدل رقومی زمین (DTM)، مدل رقومی سطح نرمال‌شده (nDSM؛ در جنگل همان مدل ارتفاع تاج پوشش) = DSM − DTM نیز روی شبکهٔ DTM ساخته می‌شود. نقاط تکه‌تکه خوانده می‌شوند، پس پرونده‌های بزرگ هم در حافظه جا می‌گیرند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=cloud.laz CELL_SIZE=1 FIRST_RETURNS=true DTM=dtm.tif OUTPUT=dsm.tif OUTPUT_NDSM=chm.tif.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las/.laz.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های به‌کاررفته&lt;/b&gt; (CLASSES، پیش‌فرض خالی = همهٔ کلاس‌ها).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های کنارگذاشته&lt;/b&gt; (EXCLUDE_CLASSES، پیش‌فرض &lt;code&gt;7,18&lt;/code&gt;: نویز پایین و بالا).&lt;/li&gt;&lt;li&gt;&lt;b&gt;فقط بازگشت‌های اول&lt;/b&gt; (FIRST_RETURNS، پیش‌فرض: خیر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض 1)، &lt;b&gt;محدوده&lt;/b&gt; (EXTENT)، &lt;b&gt;سیستم مختصات&lt;/b&gt; (CRS): مانند ابزارهای مدل رقومی زمین؛ وقتی DTM داده شود نادیده گرفته می‌شوند (شبکه و سیستم مختصات آن به کار می‌رود تا DSM و DTM سلول‌به‌سلول بر هم منطبق باشند).&lt;/li&gt;&lt;li&gt;&lt;b&gt;فاصلهٔ پر کردن&lt;/b&gt; (FILL_DISTANCE، متر، پیش‌فرض 0): سلول‌های خالی مقدار نزدیک‌ترین سلول غیرخالی در این فاصله را می‌گیرند؛ 0 = nodata می‌مانند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;مدل رقومی زمین&lt;/b&gt; (DTM، رستر اختیاری): برای nDSM لازم است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;برابر 0 قرار دادن ارتفاع‌های منفی&lt;/b&gt; (CLAMP_NEGATIVE، پیش‌فرض: بله).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DSM&lt;/b&gt; (OUTPUT) و &lt;b&gt;nDSM&lt;/b&gt; (OUTPUT_NDSM، اختیاری، نیازمند DTM): GeoTIFF، با nodata برابر −9999.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری).&lt;/li&gt;&lt;/ul&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="565"/>
-        <source>Excluded classes</source>
-        <translation>کلاس‌های کنارگذاشته</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="568"/>
-        <source>First returns only</source>
-        <translation>فقط بازگشت‌های اول</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="570"/>
-        <source>Fill empty cells up to (m)</source>
-        <translation>پر کردن سلول‌های خالی تا فاصلهٔ (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="572"/>
-        <source>DTM (for the nDSM; its grid is used)</source>
-        <translation>مدل رقومی زمین DTM (برای nDSM؛ شبکهٔ آن به کار می‌رود)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="574"/>
-        <source>Clamp negative nDSM heights to 0</source>
-        <translation>برابر 0 قرار دادن ارتفاع‌های منفی nDSM</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="576"/>
-        <source>DSM</source>
-        <translation>مدل رقومی سطح (DSM)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="577"/>
-        <source>nDSM / canopy height model</source>
-        <translation>nDSM / مدل ارتفاع تاج پوشش گیاهی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="605"/>
-        <source>The point cloud CRS ({}) differs from the DTM CRS ({}); give a DTM in the point cloud&apos;s CRS. No output was written.</source>
-        <translation>سیستم مختصات ابر نقاط ({}) با سیستم مختصات مدل رقومی زمین ({}) متفاوت است؛ مدل رقومی زمینی در سیستم مختصات ابر نقاط بدهید. هیچ خروجی‌ای نوشته نشد.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="615"/>
-        <source>The nDSM needs a DTM: give the DTM parameter (e.g. the output of the IDW DTM algorithm). No output was written.</source>
-        <translation>nDSM به مدل رقومی زمین نیاز دارد: پارامتر DTM را بدهید (مثلاً خروجی الگوریتم مدل رقومی زمین به روش IDW). هیچ خروجی‌ای نوشته نشد.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="671"/>
-        <source>DSM / nDSM report</source>
-        <translation>گزارش DSM / nDSM</translation>
-    </message>
-</context>
-<context>
-    <name>DtmAccuracyAlgorithm</name>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="285"/>
-        <source>DTM accuracy against check points</source>
-        <translation>دقت مدل رقومی زمین نسبت به نقاط چک</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="63"/>
-        <source>dtm,dem,accuracy,rmse,check points,gnss,nmad,asprs,vertical accuracy,validation</source>
-        <translation>dtm,dem,دقت,rmse,نقاط چک,gnss,nmad,asprs,دقت ارتفاعی,اعتبارسنجی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="67"/>
-        <source>&lt;p&gt;Compares a DTM with independent check points (e.g. GNSS heights). The DTM is sampled at each point (bilinear by default) and the errors e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt; are summarised: N, mean error (bias), MAE, RMSE, standard deviation, max |e|, Pearson r and R² (= r²) between DTM and check heights, NMAD = 1.4826·median|e − median e| (Höhle &amp;amp; Höhle 2009), and the vertical accuracy at 95 % confidence = 1.96·RMSE (ASPRS Positional Accuracy Standards 2014, which assumes unbiased normal errors; the 95th percentile of |e| is reported too). Check points outside the DTM or on nodata are counted and excluded — never read as 0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv → RMSE, r and a report with a scatter plot and an error histogram.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;DTM&lt;/b&gt; (DTM): raster layer; BAND (default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check points&lt;/b&gt; (CHECKPOINTS, optional): point layer; heights from &lt;b&gt;Z_FIELD&lt;/b&gt; or, if empty, from the geometry Z. &lt;b&gt;ID_FIELD&lt;/b&gt; optional.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check point file&lt;/b&gt; (CHECKPOINTS_CSV, optional): delimited text with a header x/easting, y/northing, z/height (and id/name), or columns id x y z without header. Give the layer or the file.&lt;/li&gt;&lt;li&gt;&lt;b&gt;CSV CRS&lt;/b&gt; (CSV_CRS, optional): CRS of the file's coordinates; default = the DTM's CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reproject check points&lt;/b&gt; (REPROJECT, default no): when the check points are in another CRS than the DTM, transform them (x, y only — heights are not converted between vertical datums). Without it such points are an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sampling&lt;/b&gt; (METHOD, 0 bilinear (default), 1 nearest cell).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Residuals&lt;/b&gt; (OUTPUT): point layer with id, z_check, z_dtm, error, abs_error and status (used / outside DTM / DTM nodata).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): HTML with the statistics, a DTM vs check scatter plot, an error histogram and the residual table.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every statistic is also an output number (N, N_OUTSIDE, N_NODATA, ME, MAE, RMSE, STD, MAX_ABS_ERROR, R, R2, NMAD, ACCURACY_95).&lt;/p&gt;</source>
-        <translation>&lt;p&gt;مدل رقومی زمین (DTM) را با نقاط چک مستقل (مثلاً ارتفاع‌های GNSS) مقایسه می‌کند. مدل در محل هر نقطه نمونه‌برداری می‌شود (به‌طور پیش‌فرض دوخطی) و خطاهای e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt; خلاصه می‌شوند: تعداد N، میانگین خطا (اریبی)، میانگین قدرمطلق خطا MAE، جذر میانگین مربعات خطا RMSE، انحراف معیار، بیشینهٔ |e|، ضریب همبستگی پیرسون r و R² (= r²) میان ارتفاع‌های مدل و نقاط چک، NMAD = 1.4826·median|e − median e| (Höhle &amp; Höhle 2009)، و دقت ارتفاعی در سطح اطمینان 95 % = 1.96·RMSE (استاندارد دقت موقعیتی ASPRS 2014، که خطاهای نرمال بدون اریبی را فرض می‌کند؛ صدک 95 درصدی |e| نیز گزارش می‌شود). نقاط چکی که بیرون از مدل یا روی nodata باشند شمرده و کنار گذاشته می‌شوند — هرگز 0 خوانده نمی‌شوند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv ← RMSE، r و گزارشی با نمودار پراکنش و هیستوگرام خطا.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;مدل رقومی زمین&lt;/b&gt; (DTM): لایهٔ رستری؛ BAND (پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط چک&lt;/b&gt; (CHECKPOINTS، اختیاری): لایهٔ نقطه‌ای؛ ارتفاع‌ها از &lt;b&gt;Z_FIELD&lt;/b&gt; یا، اگر خالی باشد، از Z هندسه. &lt;b&gt;ID_FIELD&lt;/b&gt; اختیاری است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;پروندهٔ نقاط چک&lt;/b&gt; (CHECKPOINTS_CSV، اختیاری): متن جداشده با سرستون‌های x/easting، y/northing، z/height (و id/name)، یا ستون‌های id x y z بدون سرستون. لایه یا پرونده را بدهید.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات CSV&lt;/b&gt; (CSV_CRS، اختیاری): سیستم مختصاتِ مختصات پرونده؛ پیش‌فرض = سیستم مختصات DTM.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بازتصویر نقاط چک&lt;/b&gt; (REPROJECT، پیش‌فرض: خیر): وقتی نقاط چک در سیستم مختصاتی غیر از DTM باشند، به آن تبدیل می‌شوند (فقط x و y — ارتفاع‌ها میان دیتوم‌های ارتفاعی تبدیل نمی‌شوند). بدون این گزینه، چنین نقاطی خطا به شمار می‌آیند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;روش نمونه‌برداری&lt;/b&gt; (METHOD، 0 دوخطی (پیش‌فرض)، 1 نزدیک‌ترین سلول).&lt;/li&gt;&lt;li&gt;&lt;b&gt;باقی‌مانده‌ها&lt;/b&gt; (OUTPUT): لایهٔ نقطه‌ای با id، z_check، z_dtm، error، abs_error و status (used / outside DTM / DTM nodata).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML): HTML با آماره‌ها، نمودار پراکنش DTM در برابر نقاط چک، هیستوگرام خطا و جدول باقی‌مانده‌ها.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;هر آماره یک خروجی عددی نیز هست (N، N_OUTSIDE، N_NODATA، ME، MAE، RMSE، STD، MAX_ABS_ERROR، R، R2، NMAD، ACCURACY_95).&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="101"/>
-        <source>DTM</source>
-        <translation>مدل رقومی زمین (DTM)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="102"/>
-        <source>Band</source>
-        <translation>باند</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="104"/>
-        <source>Check points (point layer)</source>
-        <translation>نقاط چک (لایهٔ نقطه‌ای)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="107"/>
-        <source>Height field (empty = geometry Z)</source>
-        <translation>فیلد ارتفاع (خالی = Z هندسه)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="111"/>
-        <source>Id field</source>
-        <translation>فیلد شناسه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="114"/>
-        <source>Check point file (CSV/TXT)</source>
-        <translation>پروندهٔ نقاط چک (CSV/TXT)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="118"/>
-        <source>CRS of the check point file (default: DTM CRS)</source>
-        <translation>سیستم مختصات پروندهٔ نقاط چک (پیش‌فرض: سیستم مختصات DTM)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="121"/>
-        <source>Reproject check points to the DTM CRS</source>
-        <translation>بازتصویر نقاط چک به سیستم مختصات DTM</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="123"/>
-        <source>Sampling</source>
-        <translation>روش نمونه‌برداری</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="123"/>
-        <source>Bilinear</source>
-        <translation>دوخطی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="123"/>
-        <source>Nearest cell</source>
-        <translation>نزدیک‌ترین سلول</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="126"/>
-        <source>Residuals</source>
-        <translation>باقی‌مانده‌ها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="129"/>
-        <source>Report</source>
-        <translation>گزارش</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="129"/>
-        <source>HTML files (*.html)</source>
-        <translation>پرونده‌های HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="141"/>
-        <source>Give the check points as a point layer (CHECKPOINTS) or a file (CHECKPOINTS_CSV).</source>
-        <translation>نقاط چک را به‌صورت لایهٔ نقطه‌ای (CHECKPOINTS) یا پرونده (CHECKPOINTS_CSV) بدهید.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="145"/>
-        <source>Give the check points either as a layer or as a file, not both.</source>
-        <translation>نقاط چک را یا به‌صورت لایه یا به‌صورت پرونده بدهید، نه هر دو.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="152"/>
-        <source>The check point layer has no Z coordinate; choose the height field (Z_FIELD).</source>
-        <translation>لایهٔ نقاط چک مختصات Z ندارد؛ فیلد ارتفاع (Z_FIELD) را انتخاب کنید.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="170"/>
-        <source>The check point layer has no points.</source>
-        <translation>لایهٔ نقاط چک هیچ نقطه‌ای ندارد.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="172"/>
-        <source>check point layer</source>
-        <translation>لایهٔ نقاط چک</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="176"/>
-        <source>check point file</source>
-        <translation>پروندهٔ نقاط چک</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="180"/>
-        <source>The {} is in {} but the DTM is in {}. Reproject the check points first or tick &apos;Reproject check points to the DTM CRS&apos; (REPROJECT=true; x, y only, heights are not converted). No output was written.</source>
-        <translation>{} در سیستم مختصات {} است ولی مدل رقومی زمین در {} است. ابتدا نقاط چک را بازتصویر کنید یا گزینهٔ 'بازتصویر نقاط چک به سیستم مختصات DTM' را فعال کنید (REPROJECT=true؛ فقط x و y، ارتفاع‌ها تبدیل نمی‌شوند). هیچ خروجی‌ای نوشته نشد.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="190"/>
-        <source>Check points reprojected from {} to {}</source>
-        <translation>نقاط چک از {} به {} بازتصویر شدند</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="193"/>
-        <source>Check points assumed to be in the DTM&apos;s CRS.</source>
-        <translation>فرض شد نقاط چک در سیستم مختصات مدل رقومی زمین هستند.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="200"/>
-        <source>Choose a DTM raster.</source>
-        <translation>یک رستر مدل رقومی زمین انتخاب کنید.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/dtm_accuracy.py" line="212"/>
-        <source>N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; {} outside, {} on nodata</source>
-        <translation>N = {}، RMSE = {:.4f} متر، ME = {:.4f} متر، r = {:.5f}؛ {} بیرون از مدل، {} روی nodata</translation>
-    </message>
-</context>
-<context>
-    <name>GcpAccuracyReportAlgorithm</name>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="421"/>
-        <source>GCP accuracy report</source>
-        <translation>گزارش دقت نقاط کنترل زمینی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="424"/>
-        <source>georeference,gcp,ground control points,rms,residuals,accuracy,check points,leave-one-out,polynomial,georeferencer</source>
-        <translation>زمین‌مرجع‌سازی,gcp,نقاط کنترل زمینی,rms,باقی‌مانده‌ها,دقت,نقاط چک,حذف‌یکی,چندجمله‌ای,georeferencer</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="428"/>
-        <source>&lt;p&gt;Judges a set of ground control points without warping: fits polynomials of order 1, 2 and 3, reports the residuals and the paper&apos;s criteria for the chosen order, compares the three orders and recommends one.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
-        <translation>&lt;p&gt;مجموعه‌ای از نقاط کنترل زمینی را بدون تبدیل هندسی تصویر ارزیابی می‌کند: چندجمله‌ای‌های درجهٔ 1، 2 و 3 را برازش می‌دهد، باقی‌مانده‌ها و معیارهای مقاله را برای درجهٔ انتخاب‌شده گزارش می‌کند، سه درجه را با هم مقایسه می‌کند و یکی را پیشنهاد می‌دهد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;تصویر&lt;/b&gt; (INPUT، اختیاری): ابعاد تصویر را می‌دهد (نقاط کنترل بیرون از آن خطا به شمار می‌آیند؛ ربع‌ها و نمودار از محدودهٔ آن استفاده می‌کنند). بدون آن، IMAGE_WIDTH و IMAGE_HEIGHT (پیکسل) را بدهید، وگرنه مرکز ثقل نقاط کنترل به کار می‌رود.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="449"/>
-        <source>Image width (px) if no image is given</source>
-        <translation>عرض تصویر (پیکسل) اگر تصویری داده نشود</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="451"/>
-        <source>Image height (px) if no image is given</source>
-        <translation>ارتفاع تصویر (پیکسل) اگر تصویری داده نشود</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="454"/>
-        <source>Accuracy report</source>
-        <translation>گزارش دقت</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="454"/>
-        <source>HTML files (*.html)</source>
-        <translation>پرونده‌های HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="457"/>
-        <source>Residuals table</source>
-        <translation>جدول باقی‌مانده‌ها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="457"/>
-        <source>CSV files (*.csv)</source>
-        <translation>پرونده‌های CSV (*.csv)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="460"/>
-        <source>Report as JSON</source>
-        <translation>گزارش به قالب JSON</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="460"/>
-        <source>JSON files (*.json)</source>
-        <translation>پرونده‌های JSON (*.json)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="428"/>
-        <source>&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML), &lt;b&gt;residual table&lt;/b&gt; (OUTPUT_CSV: one row per point with v_x, v_y, RMS_i, C_i, pixel residuals, leave-one-out residuals) and &lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: everything, all orders), each optional.&lt;/li&gt;&lt;/ul&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML)، &lt;b&gt;جدول باقی‌مانده‌ها&lt;/b&gt; (OUTPUT_CSV: یک سطر برای هر نقطه با v_x، v_y، RMS_i، C_i، باقی‌مانده‌ها به پیکسل و باقی‌مانده‌های حذف‌یکی) و &lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: همه‌چیز، برای همهٔ درجه‌ها)، همه اختیاری.&lt;/li&gt;&lt;/ul&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="428"/>
-        <source>&lt;p&gt;Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, …) for the graphical modeler.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;هر رقم خلاصهٔ نتایج یک خروجی عددی نیز هست (RMS_T، RMS_T_QGIS، GR، SCALE، LOO_RMS_T، CHECK_RMS_T، RECOMMENDED_ORDER، ACCEPTED، RMS_T_ORDER1…3، …) برای طراح گرافیکی مدل.&lt;/p&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>GeomaticsAlgorithm</name>
-    <message>
-        <location filename="../algorithms/base.py" line="36"/>
-        <source>LiDAR ground filtering</source>
-        <translation>فیلتر کردن نقاط زمینی لایدار</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="38"/>
-        <source>Terrain models</source>
-        <translation>مدل‌های رقومی زمین</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="39"/>
-        <source>Image rectification</source>
-        <translation>تصحیح هندسی تصویر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="41"/>
-        <source>Photogrammetry</source>
-        <translation>فتوگرامتری</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="42"/>
-        <source>Accuracy assessment</source>
-        <translation>ارزیابی دقت</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="161"/>
-        <source>Cancelled by the user; no output was written.</source>
-        <translation>کاربر عملیات را لغو کرد؛ هیچ خروجی‌ای نوشته نشد.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="166"/>
-        <source>Out of memory. Use a coarser cell size, a smaller extent or fewer points; no output was written.</source>
-        <translation>حافظه کافی نیست. اندازهٔ سلول بزرگ‌تر، محدودهٔ کوچک‌تر یا نقاط کمتری به کار ببرید؛ هیچ خروجی‌ای نوشته نشد.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="44"/>
-        <source>&lt;li&gt;&lt;b&gt;GCP file&lt;/b&gt; (GCP_FILE): a QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file (mapX,mapY,pixelX,pixelY,enable,…; pixelY is minus the row) or a CSV table with columns id, col,row (or pixel,line; or image_x,image_y in the QGIS sign convention), X,Y (or map_x,map_y / easting,northing) and optional enabled (1/0), role (gcp or check) and weight. Give the file &lt;i&gt;or&lt;/i&gt; a point layer; with neither, the Georeferencer's &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; next to the image is used.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP point layer&lt;/b&gt; (GCP_LAYER): points whose geometry holds the map coordinates (in the layer CRS) with fields for the image column and row (COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD, WEIGHT_FIELD (least-squares weights, e.g. 1/σ²; the report uses them, GDAL's warp fits unweighted).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pixel origin&lt;/b&gt; (PIXEL_ORIGIN, default 0 = corner): 0 — image coordinates in the GDAL/QGIS convention, (0,0) is the top-left corner of the image and the centre of the first pixel is (0.5, 0.5); 1 — integer values are pixel centres (0-based array indices), 0.5 is added. Rows always grow downwards (a negative row column is read as QGIS's −row). .points files are always corner-based.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): CRS of the map coordinates when the file has no '#CRS:' line (CSV files never have one). Missing CRS is an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, 1–3, default 1): 1 affine (≥ 3 GCPs), 2 (≥ 6), 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground resolution GR&lt;/b&gt; (GR, map units per pixel, optional): pixel size on the ground for the criteria; default sqrt|det J| of the affine fit of the GCPs.&lt;/li&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;پروندهٔ نقاط کنترل زمینی&lt;/b&gt; (GCP_FILE): پروندهٔ &lt;i&gt;.points&lt;/i&gt; ابزار Georeferencer در QGIS (mapX,mapY,pixelX,pixelY,enable,…؛ pixelY منفیِ شمارهٔ سطر است) یا جدول CSV با ستون‌های id، col,row (یا pixel,line؛ یا image_x,image_y با قرارداد علامت QGIS)، X,Y (یا map_x,map_y / easting,northing) و ستون‌های اختیاری enabled (1/0)، role (gcp یا check) و weight. پرونده &lt;i&gt;یا&lt;/i&gt; یک لایهٔ نقطه‌ای را بدهید؛ اگر هیچ‌کدام داده نشود، پروندهٔ &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; ابزار Georeferencer در کنار تصویر به کار می‌رود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;لایهٔ نقطه‌ای نقاط کنترل&lt;/b&gt; (GCP_LAYER): نقاطی که هندسه‌شان مختصات نقشه‌ای را (در سیستم مختصات لایه) در خود دارد، با فیلدهایی برای ستون و سطر تصویر (COL_FIELD، ROW_FIELD) و فیلدهای اختیاری ID_FIELD، ENABLED_FIELD، ROLE_FIELD، WEIGHT_FIELD (وزن‌های کمترین مربعات، مثلاً 1/σ²؛ گزارش از آن‌ها استفاده می‌کند، اما warp در GDAL بدون وزن برازش می‌دهد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مبدأ پیکسل&lt;/b&gt; (PIXEL_ORIGIN، پیش‌فرض 0 = گوشه): 0 — مختصات تصویر با قرارداد GDAL/QGIS، که در آن (0,0) گوشهٔ بالا-چپ تصویر و مرکز نخستین پیکسل (0.5, 0.5) است؛ 1 — مقادیر صحیح مراکز پیکسل‌اند (اندیس‌های آرایه از 0)، و 0.5 به آن‌ها افزوده می‌شود. سطرها همیشه رو به پایین افزایش می‌یابند (ستون سطرِ منفی به‌صورت −row در قرارداد QGIS خوانده می‌شود). پرونده‌های .points همیشه بر پایهٔ گوشه‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات نقاط کنترل&lt;/b&gt; (GCP_CRS): سیستم مختصاتِ مختصات نقشه‌ای وقتی پرونده خط '#CRS:' ندارد (پرونده‌های CSV هرگز آن را ندارند). نبودِ سیستم مختصات خطا است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجهٔ چندجمله‌ای&lt;/b&gt; (ORDER، 1–3، پیش‌فرض 1): 1 آفین (≥ 3 نقطهٔ کنترل)، 2 (≥ 6)، 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;قدرت تفکیک زمینی GR&lt;/b&gt; (GR، واحد نقشه بر پیکسل، اختیاری): اندازهٔ پیکسل روی زمین برای معیارها؛ پیش‌فرض sqrt|det J| برازش آفین نقاط کنترل.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="70"/>
-        <source>&lt;p&gt;&lt;b&gt;Criteria&lt;/b&gt; (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band 4·GR … 6·GR for RMS_T; per-point limit 0.25 mm·S = 5·GR; ≥ 68 % (strict 90 %) of points within RMS_T; no directional bias (quadrant sign balance, inner vs edge radial residuals, residual-vector plot). Also: independent check points (role 'check', never fitted), leave-one-out residuals, orders 1–3 side by side with a recommended order (never one whose redundancy n − N is below max(2, ⌈N/2⌉)) and suggested points to drop. Residuals are predicted − given, in map units and pixels.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;معیارها&lt;/b&gt; (مجلهٔ علوم مهندسی دانشگاه تشرین 38(2)، 2016): RMS_i هر نقطه و سهم آن C_i = RMS_i/RMS_T؛ RMS_x، RMS_y و RMS_T با مقسوم‌علیه n (و، با برچسب جداگانه، n − N مانند Georeferencer در QGIS)؛ مقیاس نقشه S = 20000·GR و بازهٔ تلورانس 4·GR … 6·GR برای RMS_T؛ حد مجاز هر نقطه 0.25 mm·S = 5·GR؛ ≥ 68 % (در حالت سخت‌گیرانه 90 %) نقاط در محدودهٔ RMS_T؛ نبودِ سوگیری جهت‌دار (توازن علامت‌ها در ربع‌ها، باقی‌مانده‌های شعاعی نقاط درونی در برابر نقاط لبه، نمودار بردارهای باقی‌مانده). همچنین: نقاط چک مستقل (نقش 'check'، هرگز در برازش وارد نمی‌شوند)، باقی‌مانده‌های حذف‌یکی، درجه‌های 1–3 در کنار هم با یک درجهٔ پیشنهادی (هرگز درجه‌ای که افزونگی n − N آن کمتر از max(2, ⌈N/2⌉) باشد) و نقاط پیشنهادی برای حذف. باقی‌مانده‌ها برابر مقدار پیش‌بینی‌شده − مقدار داده‌شده‌اند، به واحد نقشه و پیکسل.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="76"/>
-        <source>&lt;li&gt;&lt;b&gt;Returns filtered&lt;/b&gt; (RETURNS, default 0 = all): 0 all returns are classified and serve as neighbours (the forest study); 1 last returns only: only last (or single) returns are classified and only they may reject others; first and intermediate returns of multi-return pulses get class 1. Files without return numbers (e.g. the ISPRS samples) count every point as a last return.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours (multipath) get class 7 and take no part in the filter — one stray low point would reject every ground point within r. Advanced: NOISE_RADIUS (m, default 5) and NOISE_THRESHOLD (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default 0): 0 exact Vosselman rule; 1 terrain-adaptive (&lt;i&gt;this toolbox's extension&lt;/i&gt;): the rule is applied to heights above a smooth low terrain trend (minimum grid of TREND_CELL m, opening and mean filter of TREND_WINDOW m, defaults 10 and 60), so natural slopes steeper than θ are not rejected (ISPRS samp11, steep: total error 21.0 % → 16.4 % at the defaults). Because the terrain slope is removed first, lower θ (about 30–35°) usually works best in this mode.&lt;/li&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;بازگشت‌های فیلترشونده&lt;/b&gt; (RETURNS، پیش‌فرض 0 = همه): 0 همهٔ بازگشت‌ها طبقه‌بندی می‌شوند و به‌عنوان همسایه به کار می‌روند (مطالعهٔ جنگل)؛ 1 فقط بازگشت‌های آخر: فقط بازگشت‌های آخر (یا تکی) طبقه‌بندی می‌شوند و فقط آن‌ها می‌توانند نقاط دیگر را رد کنند؛ بازگشت‌های اول و میانیِ پالس‌های چندبازگشتی کلاس 1 می‌گیرند. در پرونده‌های بدون شمارهٔ بازگشت (مثلاً نمونه‌های ISPRS) هر نقطه بازگشت آخر به شمار می‌آید.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حذف نقاط پرت پایین در آغاز&lt;/b&gt; (NOISE، پیش‌فرض: بله): نقاطی که بسیار پایین‌تر از همسایه‌های خود هستند (چندمسیری) کلاس 7 می‌گیرند و در فیلتر شرکت نمی‌کنند — یک نقطهٔ پایینِ سرگردان به‌تنهایی همهٔ نقاط زمینی درون r را رد می‌کرد. پیشرفته: NOISE_RADIUS (متر، پیش‌فرض 5) و NOISE_THRESHOLD (متر، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حالت&lt;/b&gt; (MODE، پیش‌فرض 0): 0 قاعدهٔ دقیق Vosselman؛ 1 سازگار با ناهمواری زمین (&lt;i&gt;افزودهٔ این جعبه‌ابزار&lt;/i&gt;): قاعده روی ارتفاع‌ها نسبت به یک روند هموار و پایینِ زمین اعمال می‌شود (شبکهٔ کمینه با سلول TREND_CELL متر، بازشایی (opening) و فیلتر میانگین با پنجرهٔ TREND_WINDOW متر، پیش‌فرض‌ها 10 و 60)، پس شیب‌های طبیعیِ تندتر از θ رد نمی‌شوند (ISPRS samp11، پرشیب: خطای کل 21.0 % → 16.4 % با پیش‌فرض‌ها). چون شیب زمین از پیش حذف می‌شود، در این حالت θ کمتر (حدود 30–35°) معمولاً بهترین نتیجه را می‌دهد.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="36"/>
-        <source>&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): a .las or .laz file (LAS 1.0–1.4), e.g. the output of a ground filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes used&lt;/b&gt; (CLASSES, default &lt;code&gt;2&lt;/code&gt; = ground): comma-separated LAS classes interpolated; empty = every point. No point of these classes → error that lists the classes present.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 1.0, &amp;gt; 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extent&lt;/b&gt; (EXTENT, optional): default = the selected points' extent. The grid is snapped outward to multiples of the cell size so that tiles line up.&lt;/li&gt;&lt;li&gt;&lt;b&gt;CRS&lt;/b&gt; (CRS, optional): overrides the CRS of the LAS file. If the file has no CRS and none is given the algorithm stops with an error (a DTM without a CRS is a common source of misplaced data).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum distance to data&lt;/b&gt; (MAX_DISTANCE, m, default 0 = automatic: five mean point spacings, at least two cells): cells whose nearest point is farther are nodata, so no terrain is invented under water, removed buildings or missing strips.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill data gaps&lt;/b&gt; (FILL_GAPS, default no): interpolate every cell however far from the data (ignores MAX_DISTANCE).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output&lt;/b&gt; (OUTPUT): GeoTIFF (float32, DEFLATE, nodata −9999) in the input CRS; values belong to cell centres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML report.&lt;/li&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las یا .laz (LAS 1.0–1.4)، مثلاً خروجی یک فیلتر زمینی.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های به‌کاررفته&lt;/b&gt; (CLASSES، پیش‌فرض &lt;code&gt;2&lt;/code&gt; = زمینی): کلاس‌های LAS که درون‌یابی می‌شوند، جداشده با ویرگول؛ خالی = همهٔ نقاط. نبودِ هیچ نقطه‌ای از این کلاس‌ها → خطایی که کلاس‌های موجود را فهرست می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض 1.0، &amp;gt; 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;محدوده&lt;/b&gt; (EXTENT، اختیاری): پیش‌فرض = محدودهٔ نقاط انتخاب‌شده. شبکه رو به بیرون روی مضرب‌های اندازهٔ سلول تنظیم می‌شود تا کاشی‌ها با هم جفت شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات&lt;/b&gt; (CRS، اختیاری): سیستم مختصات پروندهٔ LAS را جایگزین می‌کند. اگر پرونده سیستم مختصات نداشته باشد و هیچ‌کدام داده نشود، الگوریتم با خطا متوقف می‌شود (مدل رقومی زمین بدون سیستم مختصات منبع رایج داده‌های نابه‌جا است).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بیشینهٔ فاصله تا داده&lt;/b&gt; (MAX_DISTANCE، متر، پیش‌فرض 0 = خودکار: پنج برابر میانگین فاصلهٔ نقاط، دست‌کم دو سلول): سلول‌هایی که نزدیک‌ترین نقطه‌شان دورتر باشد nodata می‌شوند، تا زیر آب، ساختمان‌های حذف‌شده یا نوارهای گمشده زمینی ساختگی پدید نیاید.&lt;/li&gt;&lt;li&gt;&lt;b&gt;پر کردن شکاف‌های داده&lt;/b&gt; (FILL_GAPS، پیش‌فرض: خیر): درون‌یابی هر سلول، هر قدر هم از داده دور باشد (MAX_DISTANCE را نادیده می‌گیرد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی&lt;/b&gt; (OUTPUT): GeoTIFF (float32، DEFLATE، nodata −9999) در سیستم مختصات ورودی؛ مقادیر به مراکز سلول‌ها تعلق دارند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): گزارش HTML.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="117"/>
-        <source>Remove low outliers first (class 7)</source>
-        <translation>حذف نقاط پرت پایین در آغاز (کلاس 7)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="119"/>
-        <source>Low-outlier search cell (m)</source>
-        <translation>سلول جست‌وجوی نقاط پرت پایین (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/base.py" line="121"/>
-        <source>Low-outlier depth below neighbours (m)</source>
-        <translation>عمق نقطهٔ پرت پایین نسبت به همسایه‌ها (متر)</translation>
-    </message>
-</context>
-<context>
-    <name>GeomaticsProvider</name>
-    <message>
-        <location filename="../provider/provider.py" line="21"/>
-        <source>Geomatics Toolbox</source>
-        <translation>جعبه‌ابزار ژئوماتیک</translation>
-    </message>
-</context>
-<context>
-    <name>GroundFilterAccuracyAlgorithm</name>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="50"/>
-        <source>Ground filter accuracy</source>
-        <translation>دقت فیلتر نقاط زمینی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="53"/>
-        <source>lidar,ground,filter,accuracy,type i,type ii,total error,kappa,isprs,reference,confusion matrix</source>
-        <translation>لایدار,زمین,فیلتر,دقت,نوع اول,نوع دوم,خطای کل,کاپا,isprs,مرجع,ماتریس درهم‌ریختگی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="57"/>
-        <source>&lt;p&gt;Compares a filtered point cloud with reference labels, with the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix a (ground kept), b (ground rejected), c (object accepted), d (object rejected), Type I = b/(a+b), Type II = c/(c+d), total = (b+c)/n and Cohen&apos;s kappa.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (the ISPRS reference sample, class 2 = ground) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Filtered point cloud&lt;/b&gt; (INPUT, LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Class dimension of the filtered cloud&lt;/b&gt; (FIELD, default classification) and its &lt;b&gt;ground classes&lt;/b&gt; (GROUND_CLASSES, default 2; a list such as 2,8 is accepted). Every other class (1, 7 noise, 0...) counts as object.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference point cloud&lt;/b&gt; (REFERENCE, optional): the same points in the same order (checked: equal count and coordinates). When empty, the reference labels are read from another dimension of INPUT.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference class dimension&lt;/b&gt; (REFERENCE_FIELD, default classification; e.g. user_data or an extra dimension when there is no reference cloud) and its &lt;b&gt;ground classes&lt;/b&gt; (REFERENCE_GROUND_CLASSES, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): the matrix, the errors, and the reference labels of every filtered class.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Per-point error layer&lt;/b&gt; (ERROR_OUTPUT, optional LAS/LAZ): a copy of INPUT, every attribute unchanged except &lt;i&gt;user_data&lt;/i&gt; = 0 correct, 1 Type I (ground rejected), 2 Type II (object accepted); style the point cloud layer by user_data to map where the filter fails.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs A, B, C, D, N, TYPE1, TYPE2, TOTAL and KAPPA are numbers for the graphical modeler.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;یک ابر نقاط فیلترشده را با برچسب‌های مرجع مقایسه می‌کند، با سنجه‌های آزمون فیلترهای ISPRS (Sithole &amp; Vosselman 2004): ماتریس متقاطع a (زمینیِ نگه‌داشته)، b (زمینیِ ردشده)، c (عارضهٔ پذیرفته‌شده)، d (عارضهٔ ردشده)، نوع اول = b/(a+b)، نوع دوم = c/(c+d)، کل = (b+c)/n و ضریب کاپای کوهن.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (نمونهٔ مرجع ISPRS، کلاس 2 = زمین) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط فیلترشده&lt;/b&gt; (INPUT، LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد کلاس ابر فیلترشده&lt;/b&gt; (FIELD، پیش‌فرض classification) و &lt;b&gt;کلاس‌های زمینی&lt;/b&gt; آن (GROUND_CLASSES، پیش‌فرض 2؛ فهرستی مانند 2,8 هم پذیرفته می‌شود). هر کلاس دیگر (1، 7 نویز، 0...) عارضه به شمار می‌آید.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر نقاط مرجع&lt;/b&gt; (REFERENCE، اختیاری): همان نقاط با همان ترتیب (بررسی می‌شود: تعداد و مختصات برابر). اگر خالی باشد، برچسب‌های مرجع از بُعد دیگری از INPUT خوانده می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد کلاس مرجع&lt;/b&gt; (REFERENCE_FIELD، پیش‌فرض classification؛ مثلاً user_data یا یک بُعد اضافی وقتی ابر مرجعی در کار نیست) و &lt;b&gt;کلاس‌های زمینی&lt;/b&gt; آن (REFERENCE_GROUND_CLASSES، پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): ماتریس، خطاها و برچسب‌های مرجعِ هر کلاس فیلترشده.&lt;/li&gt;&lt;li&gt;&lt;b&gt;لایهٔ خطای نقطه‌به‌نقطه&lt;/b&gt; (ERROR_OUTPUT، LAS/LAZ اختیاری): رونوشتی از INPUT که همهٔ ویژگی‌ها در آن بدون تغییر است جز &lt;i&gt;user_data&lt;/i&gt; = 0 درست، 1 نوع اول (زمینیِ ردشده)، 2 نوع دوم (عارضهٔ پذیرفته‌شده)؛ لایهٔ ابر نقاط را بر پایهٔ user_data نمادپردازی کنید تا ببینید فیلتر کجا خطا می‌کند.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;خروجی‌های A، B، C، D، N، TYPE1، TYPE2، TOTAL و KAPPA اعدادی برای طراح گرافیکی مدل هستند.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="87"/>
-        <source>Filtered point cloud (LAS/LAZ)</source>
-        <translation>ابر نقاط فیلترشده (LAS/LAZ)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="90"/>
-        <source>Class dimension of the filtered cloud</source>
-        <translation>بُعد کلاس ابر فیلترشده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="93"/>
-        <source>Ground classes of the filtered cloud</source>
-        <translation>کلاس‌های زمینی ابر فیلترشده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="95"/>
-        <source>Reference point cloud (same points, same order)</source>
-        <translation>ابر نقاط مرجع (همان نقاط، با همان ترتیب)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="99"/>
-        <source>Reference class dimension</source>
-        <translation>بُعد کلاس مرجع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="101"/>
-        <source>Reference ground classes</source>
-        <translation>کلاس‌های زمینی مرجع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="103"/>
-        <source>Report</source>
-        <translation>گزارش</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="103"/>
-        <source>HTML files (*.html)</source>
-        <translation>پرونده‌های HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="106"/>
-        <source>Per-point error layer (user_data: 0 correct, 1 Type I, 2 Type II)</source>
-        <translation>لایهٔ خطای نقطه‌به‌نقطه (user_data: 0 درست، 1 نوع اول، 2 نوع دوم)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/filter_accuracy.py" line="126"/>
-        <source>The error layer must end in .las or .laz: {p}</source>
-        <translation>پروندهٔ لایهٔ خطا باید پسوند .las یا .laz داشته باشد: {p}</translation>
-    </message>
-</context>
-<context>
-    <name>GsdBatchAlgorithm</name>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="324"/>
-        <source>GSD and photogrammetric accuracy calculator (batch table)</source>
-        <translation>محاسبه‌گر GSD و دقت فتوگرامتری (جدول دسته‌ای)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="327"/>
-        <source>&lt;p&gt;Runs the GSD / accuracy calculator for every row of a table (CSV, spreadsheet or any layer) and writes a table with the inputs and all results.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Input columns&lt;/b&gt; (case-insensitive): &lt;i&gt;camera&lt;/i&gt; (optional preset key: nikon_p100, dji_p4rtk, dji_p1_35, phaseone_ixm100_80), &lt;i&gt;distance&lt;/i&gt; (m, required), &lt;i&gt;sensor_width&lt;/i&gt; (mm), &lt;i&gt;image_width&lt;/i&gt; (px), &lt;i&gt;focal_length&lt;/i&gt; (mm) — required unless a camera preset is given — and optionally sensor_height, image_height, target_gsd, k_m, k_s, pyramid_level, subsampling_step, observed_sx, observed_sy, observed_sz, observed_sxyz, observed_dense_std, forward_overlap, side_overlap, stereo_base (units as in the single calculator).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output&lt;/b&gt;: the input columns plus gsd_cm, footprint_width_m, sigma_xyz_mm, dense_resolution_cm and every other result. A row with an invalid value stops the run with an error naming the row and column.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;محاسبه‌گر GSD و دقت را برای هر ردیف یک جدول (CSV، صفحه‌گسترده یا هر لایه) اجرا می‌کند و جدولی با ورودی‌ها و همهٔ نتایج می‌نویسد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;ستون‌های ورودی&lt;/b&gt; (بدون حساسیت به حروف بزرگ و کوچک): &lt;i&gt;camera&lt;/i&gt; (اختیاری، کلید دوربین: nikon_p100، dji_p4rtk، dji_p1_35، phaseone_ixm100_80)، &lt;i&gt;distance&lt;/i&gt; (متر، الزامی)، &lt;i&gt;sensor_width&lt;/i&gt; (میلی‌متر)، &lt;i&gt;image_width&lt;/i&gt; (پیکسل)، &lt;i&gt;focal_length&lt;/i&gt; (میلی‌متر) — الزامی مگر آنکه دوربین داده شود — و به‌اختیار sensor_height، image_height، target_gsd، k_m، k_s، pyramid_level، subsampling_step، observed_sx، observed_sy، observed_sz، observed_sxyz، observed_dense_std، forward_overlap، side_overlap، stereo_base (با همان واحدهای محاسبه‌گر تکی).&lt;/p&gt;&lt;p&gt;&lt;b&gt;خروجی&lt;/b&gt;: ستون‌های ورودی به‌علاوهٔ gsd_cm، footprint_width_m، sigma_xyz_mm، dense_resolution_cm و دیگر نتایج. ردیفی با مقدار نامعتبر اجرا را با پیامی که ردیف و ستون را نام می‌برد متوقف می‌کند.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="345"/>
-        <source>Table of cameras and distances</source>
-        <translation>جدول دوربین‌ها و فاصله‌ها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="348"/>
-        <source>Round GSD to 0.01 cm/px like the paper</source>
-        <translation>گرد کردن GSD به ۰٫۰۱ سانتی‌متر/پیکسل مانند مقاله</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="350"/>
-        <source>GSD results</source>
-        <translation>نتایج GSD</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="359"/>
-        <source>The table has no &apos;distance&apos; column (m); columns found: {0}.</source>
-        <translation>جدول ستون 'distance' (متر) ندارد؛ ستون‌های موجود: {0}.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="375"/>
-        <source>Cancelled by the user.</source>
-        <translation>کاربر عملیات را لغو کرد.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="381"/>
-        <source>Row {row}: unknown camera &apos;{cam}&apos;; known: {known}.</source>
-        <translation>ردیف {row}: دوربین ناشناختهٔ '{cam}'؛ دوربین‌های شناخته: {known}.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="398"/>
-        <source>Row {row}, column &apos;{col}&apos;: &apos;{val}&apos; is not a number.</source>
-        <translation>ردیف {row}، ستون '{col}': مقدار '{val}' عدد نیست.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="404"/>
-        <source>Row {row}: missing {cols}; give the columns or a camera preset.</source>
-        <translation>ردیف {row}: مقادیر {cols} وجود ندارد؛ ستون‌ها یا یک دوربین از پیش تعریف‌شده بدهید.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="410"/>
-        <source>Row {row}: {err}</source>
-        <translation>ردیف {row}: {err}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="327"/>
-        <source>&lt;p&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;گرد کردن GSD مانند مقاله&lt;/b&gt; (ROUND_GSD، پیش‌فرض: خیر): GSD را پیش از محاسبهٔ کمیت‌های وابسته به ۰٫۰۱ سانتی‌متر/پیکسل گرد می‌کند.&lt;/p&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>GsdCalculatorAlgorithm</name>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="88"/>
-        <source>GSD and photogrammetric accuracy calculator</source>
-        <translation>محاسبه‌گر GSD (فاصلهٔ نمونه‌برداری زمینی) و دقت فتوگرامتری</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="91"/>
-        <source>gsd,ground sampling distance,flying height,footprint,accuracy,photogrammetry,drone,flight planning,dense matching</source>
-        <translation>gsd,فاصله نمونه‌برداری زمینی,ارتفاع پرواز,پوشش زمینی,دقت,فتوگرامتری,پهپاد,طراحی پرواز,تناظریابی متراکم</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="95"/>
-        <source>&lt;p&gt;Computes the ground sampling distance (GSD) of a camera at a given distance, the image footprint, the theoretical accuracy of phototriangulation and of a dense-matching point cloud, and compares observed accuracies with the theory (Al Khalil 2019).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Formulas&lt;/b&gt;: GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;); footprint = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;; σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD; σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;; matching step P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;; dense resolution R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt; (the paper's Nikon Coolpix P100): DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 gives GSD 0.21455 cm/px, σ&lt;sub&gt;xyz&lt;/sub&gt; 1.287 mm (1.26 mm with ROUND_GSD), R&lt;sub&gt;theo&lt;/sub&gt; 0.858 cm, footprint 7.827 m.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Camera preset&lt;/b&gt; (CAMERA, default Custom): fills sensor width/height, image width/height and focal length; values you enter override the preset.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance&lt;/b&gt; (DISTANCE, m): camera–object distance or flying height above ground. Required, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor width&lt;/b&gt; (SENSOR_WIDTH, mm), &lt;b&gt;Image width&lt;/b&gt; (IMAGE_WIDTH, px), &lt;b&gt;Focal length&lt;/b&gt; (FOCAL_LENGTH, mm, the true focal length, not the 35 mm equivalent): required with the Custom camera, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor height&lt;/b&gt; (SENSOR_HEIGHT, mm) / &lt;b&gt;Image height&lt;/b&gt; (IMAGE_HEIGHT, px): optional, for the footprint height and flight spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Target GSD&lt;/b&gt; (TARGET_GSD, cm/px): optional; gives the distance or flying height that achieves it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (K_M, px, default 0.3; 0.13 for an expert operator) and &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (K_S, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pyramid level N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (PYRAMID_LEVEL, default 0.5, a fraction in (0, 1], or a percentage in (0, 100] with PYRAMID_PERCENT) and &lt;b&gt;subsampling step T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (SUBSAMPLING_STEP, px, ≥ 1, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Observed σx, σy, σz, σxyz&lt;/b&gt; (mm) and &lt;b&gt;observed dense-cloud std&lt;/b&gt; (cm): optional; give the observed/theoretical ratios.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extension&lt;/b&gt; (not in the paper): stereo base (STEREO_BASE, m) → normal-case σ&lt;sub&gt;Z&lt;/sub&gt; = (D/B)(D/c)σ&lt;sub&gt;image&lt;/sub&gt; with σ&lt;sub&gt;image&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt; pixels; forward/side overlap (%) → exposure and line spacing (image height along track, width across track).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): optional HTML report.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every result is also an output number, so the graphical modeler can chain it.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;فاصلهٔ نمونه‌برداری زمینی (GSD) یک دوربین در فاصلهٔ معین، پوشش زمینی تصویر، دقت نظری مثلث‌بندی هوایی و ابر نقاط حاصل از تناظریابی متراکم را محاسبه می‌کند و دقت مشاهده‌شده را با مقدار نظری می‌سنجد (الخلیل ۲۰۱۹).&lt;/p&gt;&lt;p&gt;&lt;b&gt;فرمول‌ها&lt;/b&gt;: GSD [سانتی‌متر/پیکسل] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;)؛ پوشش = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;؛ σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD؛ σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;؛ گام تناظریابی P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;؛ تفکیک نظری ابر R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt; (دوربین Nikon Coolpix P100 مقاله): DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 نتیجه می‌دهد GSD = 0.21455 سانتی‌متر/پیکسل، σ&lt;sub&gt;xyz&lt;/sub&gt; = 1.287 میلی‌متر (1.26 با ROUND_GSD)، R&lt;sub&gt;theo&lt;/sub&gt; = 0.858 سانتی‌متر، پوشش 7.827 متر.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;دوربین از پیش تعریف‌شده&lt;/b&gt; (CAMERA، پیش‌فرض: سفارشی): عرض و ارتفاع حسگر، ابعاد تصویر و فاصلهٔ کانونی را پر می‌کند؛ مقادیری که وارد کنید بر آن مقدم‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;فاصله&lt;/b&gt; (DISTANCE، متر): فاصلهٔ دوربین تا شیء یا ارتفاع پرواز از زمین. الزامی، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عرض حسگر&lt;/b&gt; (SENSOR_WIDTH، میلی‌متر)، &lt;b&gt;عرض تصویر&lt;/b&gt; (IMAGE_WIDTH، پیکسل)، &lt;b&gt;فاصلهٔ کانونی&lt;/b&gt; (FOCAL_LENGTH، میلی‌متر، مقدار واقعی نه معادل ۳۵ میلی‌متری): برای دوربین سفارشی الزامی، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ارتفاع حسگر&lt;/b&gt; (SENSOR_HEIGHT، میلی‌متر) / &lt;b&gt;ارتفاع تصویر&lt;/b&gt; (IMAGE_HEIGHT، پیکسل): اختیاری، برای طول پوشش و فواصل پرواز.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD هدف&lt;/b&gt; (TARGET_GSD، سانتی‌متر/پیکسل): اختیاری؛ فاصله یا ارتفاع پروازی را که به آن می‌رسد می‌دهد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گرد کردن GSD مانند مقاله&lt;/b&gt; (ROUND_GSD، پیش‌فرض: خیر): GSD را پیش از محاسبهٔ کمیت‌های وابسته به ۰٫۰۱ سانتی‌متر/پیکسل گرد می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (K_M، پیکسل، پیش‌فرض 0.3؛ 0.13 برای اپراتور خبره) و &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (K_S، پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;سطح هرم N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (PYRAMID_LEVEL، پیش‌فرض 0.5، کسری در (0، 1]، یا درصدی در (0، 100] با PYRAMID_PERCENT) و &lt;b&gt;گام نمونه‌برداری T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (SUBSAMPLING_STEP، پیکسل، ≥ 1، پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;σx، σy، σz و σxyz مشاهده‌شده&lt;/b&gt; (میلی‌متر) و &lt;b&gt;انحراف معیار ابر متراکم&lt;/b&gt; (سانتی‌متر): اختیاری؛ نسبت مشاهده‌شده به نظری را می‌دهند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;افزوده&lt;/b&gt; (نه در مقاله): طول باز استریو (STEREO_BASE، متر) ← σ&lt;sub&gt;Z&lt;/sub&gt; = (D/B)(D/c)σ&lt;sub&gt;image&lt;/sub&gt; در حالت نرمال با σ&lt;sub&gt;image&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt; پیکسل؛ پوشش طولی/عرضی (%) ← فاصلهٔ نوردهی‌ها و خطوط پرواز (ارتفاع تصویر در امتداد پرواز، عرض آن عمود بر پرواز).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML): گزارش HTML اختیاری.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;هر نتیجه یک خروجی عددی نیز هست تا در طراح گرافیکی مدل زنجیره شود.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="138"/>
-        <source>Custom (enter the values below)</source>
-        <translation>سفارشی (مقادیر زیر را وارد کنید)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="139"/>
-        <source>Camera preset</source>
-        <translation>دوربین از پیش تعریف‌شده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="141"/>
-        <source>Camera–object distance / flying height (m)</source>
-        <translation>فاصلهٔ دوربین تا شیء / ارتفاع پرواز (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="143"/>
-        <source>Sensor width (mm)</source>
-        <translation>عرض حسگر (میلی‌متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="145"/>
-        <source>Image width (px)</source>
-        <translation>عرض تصویر (پیکسل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="147"/>
-        <source>Focal length, true (mm)</source>
-        <translation>فاصلهٔ کانونی واقعی (میلی‌متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="149"/>
-        <source>Sensor height (mm)</source>
-        <translation>ارتفاع حسگر (میلی‌متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="151"/>
-        <source>Image height (px)</source>
-        <translation>ارتفاع تصویر (پیکسل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="153"/>
-        <source>Target GSD (cm/px)</source>
-        <translation>GSD هدف (سانتی‌متر/پیکسل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="155"/>
-        <source>Round GSD to 0.01 cm/px like the paper</source>
-        <translation>گرد کردن GSD به ۰٫۰۱ سانتی‌متر/پیکسل مانند مقاله</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="157"/>
-        <source>Measurement factor k_m (px)</source>
-        <translation>ضریب اندازه‌گیری k_m (پیکسل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="159"/>
-        <source>Safety factor k_s</source>
-        <translation>ضریب اطمینان k_s</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="161"/>
-        <source>Dense matching pyramid level N_p (fraction, or % if checked below)</source>
-        <translation>سطح هرم تصویر در تناظریابی متراکم N_p (کسر، یا درصد اگر گزینهٔ زیر فعال باشد)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="164"/>
-        <source>Pyramid level is a percentage</source>
-        <translation>سطح هرم به درصد است</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="167"/>
-        <source>Dense matching subsampling step T_s (px)</source>
-        <translation>گام نمونه‌برداری تناظریابی متراکم T_s (پیکسل)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="170"/>
-        <source>Observed σx (mm)</source>
-        <translation>σx مشاهده‌شده (میلی‌متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="170"/>
-        <source>Observed σy (mm)</source>
-        <translation>σy مشاهده‌شده (میلی‌متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="170"/>
-        <source>Observed σz (mm)</source>
-        <translation>σz مشاهده‌شده (میلی‌متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="170"/>
-        <source>Observed σxyz (mm)</source>
-        <translation>σxyz مشاهده‌شده (میلی‌متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="170"/>
-        <source>Observed dense-cloud std (cm)</source>
-        <translation>انحراف معیار مشاهده‌شدهٔ ابر نقاط متراکم (سانتی‌متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="177"/>
-        <source>Stereo base B (m) [extension]</source>
-        <translation>طول باز استریو B (متر) [افزوده]</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="179"/>
-        <source>Forward overlap (%) [extension]</source>
-        <translation>پوشش طولی (%) [افزوده]</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="181"/>
-        <source>Side overlap (%) [extension]</source>
-        <translation>پوشش عرضی (%) [افزوده]</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="183"/>
-        <source>Report</source>
-        <translation>گزارش</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="183"/>
-        <source>HTML files (*.html)</source>
-        <translation>پرونده‌های HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="214"/>
-        <source>{name} ({unit}) is required with the Custom camera: enter it or choose a camera preset.</source>
-        <translation>مقدار {name} ({unit}) برای دوربین سفارشی لازم است: آن را وارد کنید یا یک دوربین از پیش تعریف‌شده برگزینید.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="223"/>
-        <source>DISTANCE (m) is required.</source>
-        <translation>فاصلهٔ DISTANCE (متر) لازم است.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="258"/>
-        <source>GSD used</source>
-        <translation>GSD به‌کاررفته</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="259"/>
-        <source>GSD, unrounded</source>
-        <translation>GSD بدون گرد کردن</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="260"/>
-        <source>Pixel pitch</source>
-        <translation>اندازهٔ پیکسل روی حسگر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="261"/>
-        <source>Footprint width</source>
-        <translation>عرض پوشش زمینی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="262"/>
-        <source>Footprint height</source>
-        <translation>طول پوشش زمینی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="263"/>
-        <source>Image measurement precision σ_meas</source>
-        <translation>دقت اندازه‌گیری روی تصویر σ_meas</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="264"/>
-        <source>Theoretical phototriangulation accuracy σ_xyz</source>
-        <translation>دقت نظری مثلث‌بندی هوایی σ_xyz</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="265"/>
-        <source>Dense matching step P</source>
-        <translation>گام تناظریابی متراکم P</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="266"/>
-        <source>Theoretical dense-cloud resolution R_theo</source>
-        <translation>تفکیک نظری ابر نقاط متراکم R_theo</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="267"/>
-        <source>Distance for the target GSD</source>
-        <translation>فاصلهٔ لازم برای GSD هدف</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="268"/>
-        <source>Observed σxyz</source>
-        <translation>σxyz مشاهده‌شده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="269"/>
-        <source>Observed / theoretical σxyz</source>
-        <translation>نسبت σxyz مشاهده‌شده به نظری</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="270"/>
-        <source>Observed dense std / R_theo</source>
-        <translation>نسبت انحراف معیار ابر متراکم به R_theo</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="271"/>
-        <source>Stereo base (extension)</source>
-        <translation>طول باز استریو (افزوده)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="272"/>
-        <source>Stereo planimetric precision (extension)</source>
-        <translation>دقت مسطحاتی استریو (افزوده)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="273"/>
-        <source>Stereo depth precision σ_Z (extension)</source>
-        <translation>دقت عمق استریو σ_Z (افزوده)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="274"/>
-        <source>Exposure spacing (extension)</source>
-        <translation>فاصلهٔ نوردهی‌ها (افزوده)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="275"/>
-        <source>Flight-line spacing (extension)</source>
-        <translation>فاصلهٔ خطوط پرواز (افزوده)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="279"/>
-        <source>Distance</source>
-        <translation>فاصله</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="280"/>
-        <source>Sensor width</source>
-        <translation>عرض حسگر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="281"/>
-        <source>Image width</source>
-        <translation>عرض تصویر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="282"/>
-        <source>Focal length</source>
-        <translation>فاصلهٔ کانونی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="284"/>
-        <source>quantity</source>
-        <translation>کمیت</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="284"/>
-        <source>value</source>
-        <translation>مقدار</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="284"/>
-        <source>unit</source>
-        <translation>واحد</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="284"/>
-        <source>Formulas and defaults from Al Khalil (2019); the paper finds observed phototriangulation accuracy about 3–5 times the theoretical value. Items marked (extension) are not in the paper.</source>
-        <translation>فرمول‌ها و مقادیر پیش‌فرض از الخلیل (۲۰۱۹)؛ مقاله دقت مشاهده‌شدهٔ مثلث‌بندی را حدود ۳ تا ۵ برابر مقدار نظری یافته است. موارد علامت‌خورده با (افزوده) در مقاله نیستند.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="294"/>
-        <source>GSD and photogrammetric accuracy</source>
-        <translation>GSD و دقت فتوگرامتری</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="283"/>
-        <source>Inputs</source>
-        <translation>ورودی‌ها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gsd_calculator.py" line="283"/>
-        <source>Results</source>
-        <translation>نتایج</translation>
-    </message>
-</context>
-<context>
-    <name>IdwDtmAlgorithm</name>
-    <message>
-        <location filename="../algorithms/terrain.py" line="208"/>
-        <source>DTM by inverse distance weighting (IDW)</source>
-        <translation>مدل رقومی زمین به روش وزن‌دهی معکوس فاصله (IDW)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="211"/>
-        <source>dtm,dem,idw,inverse distance,interpolation,lidar,ground,gdal_grid,invdistnn,raster</source>
-        <translation>dtm,dem,idw,معکوس فاصله,درون‌یابی,لایدار,زمین,gdal_grid,invdistnn,رستر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="215"/>
-        <source>&lt;p&gt;Interpolates a terrain raster from the ground points of a LAS/LAZ file by inverse distance weighting (Shepard 1968): ẑ = Σ w&lt;sub&gt;i&lt;/sub&gt; z&lt;sub&gt;i&lt;/sub&gt; / Σ w&lt;sub&gt;i&lt;/sub&gt;, w&lt;sub&gt;i&lt;/sub&gt; = 1/d&lt;sub&gt;i&lt;/sub&gt;&lt;sup&gt;p&lt;/sup&gt;, over the nearest neighbours of each cell centre. Same semantics as &lt;code&gt;gdal_grid -a invdistnn&lt;/code&gt; (power, max_points, radius, min_points; a cell centre on a point takes its height exactly), but KD-tree based and processed in blocks: 1 M points onto 1 M cells take seconds.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=1 POWER=3 NEIGHBOURS=12 (the seed paper's best setting, RMSE 0.204 m at 62 GNSS points).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
-        <translation>&lt;p&gt;رستر ناهمواری زمین را از نقاط زمینی یک پروندهٔ LAS/LAZ به روش وزن‌دهی معکوس فاصله (Shepard 1968) درون‌یابی می‌کند: ẑ = Σ w&lt;sub&gt;i&lt;/sub&gt; z&lt;sub&gt;i&lt;/sub&gt; / Σ w&lt;sub&gt;i&lt;/sub&gt;، w&lt;sub&gt;i&lt;/sub&gt; = 1/d&lt;sub&gt;i&lt;/sub&gt;&lt;sup&gt;p&lt;/sup&gt;، روی نزدیک‌ترین همسایه‌های مرکز هر سلول. معنای پارامترها همانند &lt;code&gt;gdal_grid -a invdistnn&lt;/code&gt; است (power، max_points، radius، min_points؛ مرکز سلولی که روی یک نقطه بیفتد دقیقاً ارتفاع آن را می‌گیرد)، اما مبتنی بر درخت KD و با پردازش بلوکی: 1 میلیون نقطه روی 1 میلیون سلول چند ثانیه طول می‌کشد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=1 POWER=3 NEIGHBOURS=12 (بهترین تنظیم مقالهٔ مبنا، RMSE = 0.204 متر روی 62 نقطهٔ GNSS).&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="238"/>
-        <source>Power p</source>
-        <translation>توان p</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="239"/>
-        <source>Neighbours (0 = all within radius)</source>
-        <translation>تعداد همسایه‌ها (0 = همهٔ نقاط درون شعاع)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="241"/>
-        <source>Search radius (m, 0 = unlimited)</source>
-        <translation>شعاع جست‌وجو (متر، 0 = نامحدود)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="243"/>
-        <source>Minimum points</source>
-        <translation>حداقل تعداد نقاط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="246"/>
-        <source>IDW DTM</source>
-        <translation>مدل رقومی زمین به روش IDW</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="289"/>
-        <source>IDW DTM report</source>
-        <translation>گزارش مدل رقومی زمین به روش IDW</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="215"/>
-        <source>&lt;li&gt;&lt;b&gt;Power&lt;/b&gt; (POWER, default 2; the paper found 3 best).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 12): nearest points used (gdal max_points); 0 = all points within the radius (needs RADIUS). More neighbours than points → error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Search radius&lt;/b&gt; (RADIUS, m, default 0 = unlimited): only points within it are used (gdal radius).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points&lt;/b&gt; (MIN_POINTS, default 0): cells with fewer neighbours within the radius are nodata (gdal min_points).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs also the numbers N_POINTS, VALID_CELLS, NODATA_CELLS.&lt;/p&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;توان&lt;/b&gt; (POWER، پیش‌فرض 2؛ مقاله 3 را بهترین یافت).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد همسایه‌ها&lt;/b&gt; (NEIGHBOURS، پیش‌فرض 12): تعداد نزدیک‌ترین نقاطی که به کار می‌روند (max_points در gdal)؛ 0 = همهٔ نقاط درون شعاع (نیازمند RADIUS). همسایه‌های بیشتر از تعداد نقاط → خطا.&lt;/li&gt;&lt;li&gt;&lt;b&gt;شعاع جست‌وجو&lt;/b&gt; (RADIUS، متر، پیش‌فرض 0 = نامحدود): فقط نقاط درون آن به کار می‌روند (radius در gdal).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداقل تعداد نقاط&lt;/b&gt; (MIN_POINTS، پیش‌فرض 0): سلول‌هایی که همسایه‌های کمتری درون شعاع دارند nodata می‌شوند (min_points در gdal).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد N_POINTS، VALID_CELLS و NODATA_CELLS نیز خروجی داده می‌شوند.&lt;/p&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>KrigingDtmAlgorithm</name>
-    <message>
-        <location filename="../algorithms/terrain.py" line="315"/>
-        <source>DTM by kriging (ordinary / universal)</source>
-        <translation>مدل رقومی زمین به روش کریجینگ (معمولی / عام)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="318"/>
-        <source>dtm,dem,kriging,variogram,geostatistics,pykrige,interpolation,lidar,variance,cross-validation</source>
-        <translation>dtm,dem,کریجینگ,واریوگرام,زمین‌آمار,pykrige,درون‌یابی,لایدار,واریانس,اعتبارسنجی متقابل</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="322"/>
-        <source>&lt;p&gt;Kriging (Matheron 1963; Cressie 1993) of the ground points of a LAS/LAZ file onto a raster, with a kriging variance (or standard deviation) raster. Ordinary kriging (unknown constant mean) or universal kriging with a linear drift. The variogram is fitted with PyKrige's estimator on a random subsample (or given by you); each cell is then kriged from its nearest points in batched local systems, so 1 M points onto a 1 km² grid at 1 m take about a minute instead of the n×n matrix that makes plain PyKrige run out of memory past ~100 k points.&lt;/p&gt;&lt;p&gt;&lt;b&gt;What is approximated&lt;/b&gt;: the variogram is fitted on a sample of point pairs (FIT_POINTS, reproducible with SEED), by default at the local scale. Local-neighbourhood kriging is not global kriging: only the NEIGHBOURS nearest points are weighted and the mean is re-estimated in every neighbourhood (quasi-stationarity). On terrain this follows the relief better than one global mean (it gave the lowest hold-out RMSE on all four ISPRS samples in the benchmark), but the two differ — typically by centimetres, by decimetres to metres at borders, gaps and steep slopes. With NEIGHBOURS equal to the number of points (≤ 6000) the result is global kriging, identical to PyKrige. With a linear drift the variogram is fitted on the residuals of a least-squares plane; points with identical x, y are merged (mean height). The kriging variance is model-based: check it with CV_POINTS (RMS standardised error near 1 means realistic variances).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=spherical NEIGHBOURS=16 CV_POINTS=1000.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
-        <translation>&lt;p&gt;کریجینگ (Matheron 1963؛ Cressie 1993) نقاط زمینی یک پروندهٔ LAS/LAZ روی یک رستر، همراه با رستر واریانس کریجینگ (یا انحراف معیار). کریجینگ معمولی (میانگین ثابت نامعلوم) یا کریجینگ عام با روند خطی. واریوگرام با برآوردگر PyKrige روی یک زیرنمونهٔ تصادفی برازش داده می‌شود (یا شما آن را می‌دهید)؛ سپس هر سلول از نزدیک‌ترین نقاطش در دستگاه‌های محلیِ دسته‌ای کریجینگ می‌شود، بنابراین 1 میلیون نقطه روی شبکه‌ای به مساحت 1 کیلومتر مربع با سلول 1 متری حدود یک دقیقه طول می‌کشد، به‌جای ماتریس n×n که PyKrige معمولی را پس از حدود 100 هزار نقطه با کمبود حافظه روبه‌رو می‌کند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;چه چیزی تقریبی است&lt;/b&gt;: واریوگرام روی نمونه‌ای از زوج نقاط برازش داده می‌شود (FIT_POINTS، تکرارپذیر با SEED)، به‌طور پیش‌فرض در مقیاس محلی. کریجینگ در همسایگی محلی همان کریجینگ سراسری نیست: فقط NEIGHBOURS نقطهٔ نزدیک‌تر وزن می‌گیرند و میانگین در هر همسایگی دوباره برآورد می‌شود (شبه‌ایستایی). روی ناهمواری‌های زمین این روش پستی و بلندی را بهتر از یک میانگین سراسری دنبال می‌کند (در آزمون کارایی، کمترین RMSE روی نقاط کنارگذاشته را در هر چهار نمونهٔ ISPRS داد)، اما این دو با هم تفاوت دارند — معمولاً در حد سانتی‌متر، و در لبه‌ها، شکاف‌ها و شیب‌های تند در حد دسی‌متر تا متر. اگر NEIGHBOURS برابر تعداد نقاط باشد (≤ 6000)، نتیجه کریجینگ سراسری و یکسان با PyKrige است. با روند خطی، واریوگرام روی باقی‌مانده‌های یک صفحهٔ کمترین مربعات برازش داده می‌شود؛ نقاط با x و y یکسان ادغام می‌شوند (میانگین ارتفاع). واریانس کریجینگ مبتنی بر مدل است: آن را با CV_POINTS بسنجید (RMS خطای استانداردشدهٔ نزدیک به 1 یعنی واریانس‌ها واقع‌بینانه‌اند).&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=spherical NEIGHBOURS=16 CV_POINTS=1000.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="376"/>
-        <source>Kriging type</source>
-        <translation>نوع کریجینگ</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="376"/>
-        <source>Ordinary</source>
-        <translation>معمولی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="376"/>
-        <source>Universal (linear drift)</source>
-        <translation>عام (روند خطی)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="379"/>
-        <source>Variogram model</source>
-        <translation>مدل واریوگرام</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="382"/>
-        <source>Variogram parameters (e.g. nugget=0.01, sill=4, range=60; empty = fit)</source>
-        <translation>پارامترهای واریوگرام (مثلاً nugget=0.01, sill=4, range=60؛ خالی = برازش خودکار)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="386"/>
-        <source>Neighbours per cell</source>
-        <translation>تعداد همسایه‌ها برای هر سلول</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="388"/>
-        <source>Points for the variogram fit</source>
-        <translation>تعداد نقاط برای برازش واریوگرام</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="390"/>
-        <source>Lag classes</source>
-        <translation>تعداد کلاس‌های فاصلهٔ تأخیر (lag)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="392"/>
-        <source>Maximum lag (m, 0 = auto: local scale)</source>
-        <translation>بیشینهٔ فاصلهٔ تأخیر (متر، 0 = خودکار: مقیاس محلی)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="394"/>
-        <source>Cross-validation points (0 = off)</source>
-        <translation>نقاط اعتبارسنجی متقابل (0 = خاموش)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="396"/>
-        <source>Random seed</source>
-        <translation>بذر تصادفی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="399"/>
-        <source>Kriging DTM</source>
-        <translation>مدل رقومی زمین به روش کریجینگ</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="400"/>
-        <source>Write standard deviation instead of variance</source>
-        <translation>نوشتن انحراف معیار به‌جای واریانس</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="403"/>
-        <source>Kriging variance</source>
-        <translation>واریانس کریجینگ</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="442"/>
-        <source>Variogram: {}</source>
-        <translation>واریوگرام: {}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="513"/>
-        <source>Kriging DTM report</source>
-        <translation>گزارش مدل رقومی زمین به روش کریجینگ</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="322"/>
-        <source>&lt;li&gt;&lt;b&gt;Kriging type&lt;/b&gt; (KRIGING_TYPE, 0 ordinary (default), 1 universal with linear drift).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram model&lt;/b&gt; (VARIOGRAM, 0 linear, 1 power, 2 gaussian, 3 spherical (default), 4 exponential).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram parameters&lt;/b&gt; (VARIOGRAM_PARAMS, optional text, e.g. &lt;code&gt;nugget=0.01, sill=4, range=60&lt;/code&gt;; linear: slope, nugget; power: scale, exponent, nugget). Empty = fitted automatically. The sill includes the nugget; the range is the practical range.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 16, ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Points for the variogram fit&lt;/b&gt; (FIT_POINTS, default 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Lag classes&lt;/b&gt; (NLAGS, default 12) and &lt;b&gt;maximum lag&lt;/b&gt; (MAX_LAG, m, default 0 = automatic: three times the typical distance to the NEIGHBOURS-th neighbour, the scale local kriging uses, so the nugget and the short-range shape that set the weights and the variance are well sampled; the fitted sill and range then describe that local scale). For a classical field-scale fit give e.g. half the extent (Journel &amp;amp; Huijbregts 1978). A fitted nugget is raised to at least 1 % of the semivariance at the maximum lag, for numerical stability (Gaussian and power models).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cross-validation points&lt;/b&gt; (CV_POINTS, default 0 = off): leave-one-out on this many random points; reports ME, RMSE, mean standardised error (ideal 0) and RMS standardised error (ideal 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Seed&lt;/b&gt; (SEED, default 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variance output&lt;/b&gt; (OUTPUT_VARIANCE, optional GeoTIFF): kriging variance (m²), or standard deviation (m) with VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: NUGGET, SILL, RANGE (NaN for linear/power), N_POINTS, VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).&lt;/p&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;نوع کریجینگ&lt;/b&gt; (KRIGING_TYPE، 0 معمولی (پیش‌فرض)، 1 عام با روند خطی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مدل واریوگرام&lt;/b&gt; (VARIOGRAM، 0 خطی، 1 توانی، 2 گوسی، 3 کروی (پیش‌فرض)، 4 نمایی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;پارامترهای واریوگرام&lt;/b&gt; (VARIOGRAM_PARAMS، متن اختیاری، مثلاً &lt;code&gt;nugget=0.01, sill=4, range=60&lt;/code&gt;؛ خطی: slope، nugget؛ توانی: scale، exponent، nugget). خالی = برازش خودکار. سقف (sill) اثر قطعه‌ای (nugget) را در بر می‌گیرد؛ دامنه (range) همان دامنهٔ عملی است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد همسایه‌ها&lt;/b&gt; (NEIGHBOURS، پیش‌فرض 16، ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد نقاط برای برازش واریوگرام&lt;/b&gt; (FIT_POINTS، پیش‌فرض 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد کلاس‌های فاصلهٔ تأخیر&lt;/b&gt; (NLAGS، پیش‌فرض 12) و &lt;b&gt;بیشینهٔ فاصلهٔ تأخیر&lt;/b&gt; (MAX_LAG، متر، پیش‌فرض 0 = خودکار: سه برابر فاصلهٔ معمول تا همسایهٔ NEIGHBOURS-ام، یعنی مقیاسی که کریجینگ محلی به کار می‌برد، تا اثر قطعه‌ای و شکل واریوگرام در فواصل کوتاه، که وزن‌ها و واریانس را تعیین می‌کنند، به‌خوبی نمونه‌برداری شوند؛ در این حالت سقف و دامنهٔ برازش‌شده همان مقیاس محلی را توصیف می‌کنند). برای برازش کلاسیک در مقیاس کل منطقه، مثلاً نصف محدوده را بدهید (Journel &amp;amp; Huijbregts 1978). اثر قطعه‌ای برازش‌شده برای پایداری عددی دست‌کم تا 1 % نیم‌واریانس (semivariance) در بیشینهٔ فاصلهٔ تأخیر بالا برده می‌شود (مدل‌های گوسی و توانی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط اعتبارسنجی متقابل&lt;/b&gt; (CV_POINTS، پیش‌فرض 0 = خاموش): حذف‌یکی روی این تعداد نقطهٔ تصادفی؛ ME، RMSE، میانگین خطای استانداردشده (ایده‌آل 0) و RMS خطای استانداردشده (ایده‌آل 1) را گزارش می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بذر تصادفی&lt;/b&gt; (SEED، پیش‌فرض 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی واریانس&lt;/b&gt; (OUTPUT_VARIANCE، GeoTIFF اختیاری): واریانس کریجینگ (متر²)، یا انحراف معیار (متر) با VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: NUGGET، SILL، RANGE (برای خطی/توانی NaN)، N_POINTS، VALID_CELLS، CV_ME، CV_RMSE، CV_MSE (بدون اعتبارسنجی متقابل NaN).&lt;/p&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>LsqGroundFilterAlgorithm</name>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="62"/>
-        <source>Ground filter (least-squares polynomial)</source>
-        <translation>فیلتر نقاط زمینی (چندجمله‌ای کمترین مربعات)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="65"/>
-        <source>lidar,ground,filter,bare earth,dtm,classification,least squares,polynomial,tiles,las,laz,isprs</source>
-        <translation>لایدار,زمین,فیلتر,زمین لخت,dtm,طبقه‌بندی,کمترین مربعات,چندجمله‌ای,کاشی‌ها,las,laz,isprs</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="127"/>
-        <source>Point cloud (LAS/LAZ)</source>
-        <translation>ابر نقاط (LAS/LAZ)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="130"/>
-        <source>Polynomial order (1 or 2)</source>
-        <translation>درجهٔ چندجمله‌ای (1 یا 2)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="132"/>
-        <source>Tile size (m)</source>
-        <translation>اندازهٔ کاشی (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="133"/>
-        <source>Threshold T (m)</source>
-        <translation>آستانهٔ T (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="134"/>
-        <source>Mode</source>
-        <translation>حالت</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="134"/>
-        <source>Faithful (the paper)</source>
-        <translation>مطابق (روش مقاله)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="134"/>
-        <source>Improved (ours, beyond the paper)</source>
-        <translation>بهبودیافته (افزودهٔ ما، فراتر از مقاله)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="139"/>
-        <source>Maximum iterations per tile</source>
-        <translation>حداکثر تکرار در هر کاشی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="142"/>
-        <source>Stop tolerance on min/max/mean/std (m)</source>
-        <translation>تلورانس توقف برای کمینه/بیشینه/میانگین/انحراف معیار (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="144"/>
-        <source>Random fitting subset per tile (points, 0 = all)</source>
-        <translation>زیرمجموعهٔ تصادفی برازش در هر کاشی (نقطه، 0 = همه)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="147"/>
-        <source>Random seed of the subset</source>
-        <translation>بذر تصادفی زیرمجموعه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="149"/>
-        <source>Minimum points per tile (0 = 3 × coefficients)</source>
-        <translation>حداقل نقاط هر کاشی (0 = 3 × تعداد ضرایب)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="152"/>
-        <source>Under-populated tiles</source>
-        <translation>کاشی‌های کم‌نقطه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="152"/>
-        <source>Borrow the nearest fitted tile&apos;s surface</source>
-        <translation>استفاده از سطح نزدیک‌ترین کاشی برازش‌شده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="152"/>
-        <source>Leave their points unclassified (class 0)</source>
-        <translation>طبقه‌بندی‌نشده ماندن نقاط آن‌ها (کلاس 0)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="157"/>
-        <source>Rejection</source>
-        <translation>شیوهٔ رد نقاط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="157"/>
-        <source>Re-weighted each iteration (a point may return)</source>
-        <translation>وزن‌دهی دوباره در هر تکرار (نقطه ممکن است بازگردد)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="157"/>
-        <source>Cumulative (a rejected point stays out)</source>
-        <translation>تجمعی (نقطهٔ ردشده بیرون می‌ماند)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="162"/>
-        <source>Classified point cloud</source>
-        <translation>ابر نقاط طبقه‌بندی‌شده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="164"/>
-        <source>Ground points only</source>
-        <translation>فقط نقاط زمینی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="167"/>
-        <source>Report</source>
-        <translation>گزارش</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="167"/>
-        <source>HTML files (*.html)</source>
-        <translation>پرونده‌های HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
-        <source>Ground points</source>
-        <translation>نقاط زمینی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
-        <source>Other (object) points</source>
-        <translation>نقاط دیگر (عوارض)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
-        <source>Low-noise points</source>
-        <translation>نقاط نویز پایین</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
-        <source>Unclassified points</source>
-        <translation>نقاط طبقه‌بندی‌نشده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
-        <source>Tiles</source>
-        <translation>کاشی‌ها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="173"/>
-        <source>Points per second</source>
-        <translation>نقطه در ثانیه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="213"/>
-        <source>Choose an output file for the classified cloud (OUTPUT, .laz or .las).</source>
-        <translation>یک پروندهٔ خروجی برای ابر طبقه‌بندی‌شده انتخاب کنید (OUTPUT، با پسوند .laz یا .las).</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="217"/>
-        <source>Output point clouds must end in .las or .laz: {p}</source>
-        <translation>پرونده‌های ابر نقاط خروجی باید پسوند .las یا .laz داشته باشند: {p}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="224"/>
-        <source>Reading {p}</source>
-        <translation>در حال خواندن {p}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="229"/>
-        <source>{n} points; filtering ({mode} mode)</source>
-        <translation>{n} نقطه؛ در حال فیلتر کردن (حالت {mode})</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="236"/>
-        <source>{step}: {n} points kept, ZMin {a:.2f}, ZMax {b:.2f}, ZMean {m:.2f}, σ {s:.2f}; tiles iterating: {t}</source>
-        <translation>{step}: {n} نقطه نگه داشته شد، ZMin {a:.2f}، ZMax {b:.2f}، ZMean {m:.2f}، σ {s:.2f}؛ کاشی‌های در حال تکرار: {t}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="244"/>
-        <source>Ground {g}, other {o}, low noise {z}, unclassified {u}; {t} tiles; {s:.1f} s</source>
-        <translation>زمینی {g}، سایر {o}، نویز پایین {z}، طبقه‌بندی‌نشده {u}؛ {t} کاشی؛ {s:.1f} ثانیه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="250"/>
-        <source>No point was classified as ground, so the ground-only output would be empty; check TILE_SIZE and THRESHOLD.</source>
-        <translation>هیچ نقطه‌ای زمینی طبقه‌بندی نشد، پس خروجی نقاط زمینی خالی می‌شد؛ TILE_SIZE و THRESHOLD را بررسی کنید.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="69"/>
-        <source>&lt;p&gt;Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). In every tile the surface is fitted, points more than THRESHOLD above it are dropped, and the fit is repeated until the minimum, maximum, mean and standard deviation of the kept heights stop changing (TOLERANCE) or MAX_ITERATIONS; then every point with z ≤ ẑ + THRESHOLD is ground. Any classification already in the file is ignored and replaced.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output classes&lt;/b&gt; (ASPRS): 2 ground, 1 other (buildings, vegetation), 7 low noise (pre-filter), 0 never classified (only with SPARSE_TILES = leave unclassified). Every other attribute of every point, the point format, scales, offsets, VLRs and CRS are copied unchanged.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file, projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Order&lt;/b&gt; (ORDER, default 2): 1 = plane z = b0 + b1·x + b2·y; 2 = quadratic z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (better on every sample of the paper).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Tile size&lt;/b&gt; (TILE_SIZE, m, default 50): larger than the largest building, so that every tile holds ground (paper: 100 m for large buildings, 50 m for small ones). Tiles are square, anchored at the minimum x, y.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Threshold&lt;/b&gt; (THRESHOLD, m, default 0.5): 0.5–1.0 m, larger on steeper terrain.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default Faithful): Faithful = the paper. Improved = ours, beyond the paper: coarse-to-fine tiles (2, 1, ½, ¼ × TILE_SIZE) fitted on overlapping windows, each level started from the previous level's ground, and a threshold that grows with the surface slope (by 2.5 m per unit gradient, at most 1 m). On the ISPRS samples it lowers the mean total error from 8.9 % (paper) to about 4.9 % with one parameter set; it costs about 15 times the time and twice the memory of the faithful mode (about 2 M points/s and 100 bytes per point in faithful mode).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours become class 7 and take no part in the fit (NOISE_RADIUS, m, default 5: neighbourhood cell; NOISE_THRESHOLD, m, default 1: depth below the neighbours).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum iterations&lt;/b&gt; (MAX_ITERATIONS, default 5, the paper's tables) and &lt;b&gt;stop tolerance&lt;/b&gt; (TOLERANCE, m, default 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Random fitting subset per tile&lt;/b&gt; (SUBSET_SIZE, points, default 0 = all; the paper used 5000) and its &lt;b&gt;seed&lt;/b&gt; (SEED). All points are classified.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points per tile&lt;/b&gt; (MIN_POINTS, default 0 = 3 × the number of coefficients) and &lt;b&gt;under-populated tiles&lt;/b&gt; (SPARSE_TILES): borrow the nearest fitted tile's surface (default) or leave their points unclassified (class 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rejection&lt;/b&gt; (REJECTION): re-weighted (default; a point dropped earlier may return when the surface moves) or cumulative (dropped for good).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud (OUTPUT, .laz or .las), optional ground-only cloud (GROUND_OUTPUT), optional HTML report (OUTPUT_HTML) with the parameters, class counts, the per-iteration statistics of the paper's Tables 1–2, per-tile statistics, time and points per second; optional CSV of every tile's iterations and coefficients (TILE_STATS); numbers N_GROUND, N_OTHER, N_NOISE, N_UNCLASSIFIED, N_TILES, POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Measure the result against reference labels with &lt;i&gt;Ground filter accuracy&lt;/i&gt;. Nothing is written when the run fails or is cancelled.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;نقاط زمین لخت را از ساختمان‌ها و پوشش گیاهی در ابر نقاط لایدار هوایی جدا می‌کند، با برازش سطوح چندجمله‌ای کمترین مربعات در هر کاشی مربعی (مجلهٔ علوم مهندسی دانشگاه دمشق 29(2)، 2013). در هر کاشی سطح برازش داده می‌شود، نقاطی که بیش از THRESHOLD بالاتر از آن‌اند کنار گذاشته می‌شوند، و برازش تکرار می‌شود تا کمینه، بیشینه، میانگین و انحراف معیار ارتفاع‌های نگه‌داشته‌شده دیگر تغییر نکنند (TOLERANCE) یا به MAX_ITERATIONS برسد؛ سپس هر نقطه با z ≤ ẑ + THRESHOLD زمینی است. هر طبقه‌بندی موجود در پرونده نادیده گرفته و جایگزین می‌شود.&lt;/p&gt;&lt;p&gt;&lt;b&gt;کلاس‌های خروجی&lt;/b&gt; (ASPRS): 2 زمینی، 1 سایر (ساختمان، پوشش گیاهی)، 7 نویز پایین (پیش‌فیلتر)، 0 هرگز طبقه‌بندی‌نشده (فقط با SPARSE_TILES = طبقه‌بندی‌نشده ماندن). همهٔ ویژگی‌های دیگر هر نقطه، قالب نقطه، ضرایب مقیاس، آفست‌ها، VLRها و سیستم مختصات بدون تغییر کپی می‌شوند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las یا .laz، با سیستم مختصات تصویرشده به متر.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجه&lt;/b&gt; (ORDER، پیش‌فرض 2): 1 = صفحه z = b0 + b1·x + b2·y؛ 2 = درجه‌دوم z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (در همهٔ نمونه‌های مقاله بهتر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ کاشی&lt;/b&gt; (TILE_SIZE، متر، پیش‌فرض 50): بزرگ‌تر از بزرگ‌ترین ساختمان، تا هر کاشی نقاط زمینی داشته باشد (مقاله: 100 متر برای ساختمان‌های بزرگ، 50 متر برای ساختمان‌های کوچک). کاشی‌ها مربعی‌اند و از کمینهٔ x و y آغاز می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;آستانه&lt;/b&gt; (THRESHOLD، متر، پیش‌فرض 0.5): 0.5–1.0 متر، و در زمین‌های پرشیب‌تر بیشتر.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حالت&lt;/b&gt; (MODE، پیش‌فرض: مطابق): مطابق = روش مقاله. بهبودیافته = افزودهٔ ما، فراتر از مقاله: کاشی‌های درشت به ریز (2، 1، ½، ¼ × TILE_SIZE) که روی پنجره‌های همپوشان برازش می‌شوند، هر سطح از نقاط زمینی سطح قبلی آغاز می‌شود، و آستانه‌ای که با شیب سطح افزایش می‌یابد (2.5 متر به ازای هر واحد گرادیان، حداکثر 1 متر). روی نمونه‌های ISPRS میانگین خطای کل را با یک مجموعه پارامتر از 8.9 % (مقاله) به حدود 4.9 % کاهش می‌دهد؛ حدود 15 برابر زمان و دو برابر حافظهٔ حالت مطابق را می‌گیرد (در حالت مطابق حدود 2 میلیون نقطه در ثانیه و 100 بایت برای هر نقطه).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حذف نقاط پرت پایین در آغاز&lt;/b&gt; (NOISE، پیش‌فرض: بله): نقاطی که بسیار پایین‌تر از همسایه‌های خود هستند کلاس 7 می‌گیرند و در برازش شرکت نمی‌کنند (NOISE_RADIUS، متر، پیش‌فرض 5: سلول همسایگی؛ NOISE_THRESHOLD، متر، پیش‌فرض 1: عمق زیر همسایه‌ها).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداکثر تکرار&lt;/b&gt; (MAX_ITERATIONS، پیش‌فرض 5، مطابق جدول‌های مقاله) و &lt;b&gt;تلورانس توقف&lt;/b&gt; (TOLERANCE، متر، پیش‌فرض 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;زیرمجموعهٔ تصادفی برازش در هر کاشی&lt;/b&gt; (SUBSET_SIZE، نقطه، پیش‌فرض 0 = همه؛ مقاله 5000 به کار برده است) و &lt;b&gt;بذر تصادفی&lt;/b&gt; آن (SEED). همهٔ نقاط طبقه‌بندی می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداقل نقاط هر کاشی&lt;/b&gt; (MIN_POINTS، پیش‌فرض 0 = 3 × تعداد ضرایب) و &lt;b&gt;کاشی‌های کم‌نقطه&lt;/b&gt; (SPARSE_TILES): استفاده از سطح نزدیک‌ترین کاشی برازش‌شده (پیش‌فرض) یا طبقه‌بندی‌نشده ماندن نقاط آن‌ها (کلاس 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شیوهٔ رد نقاط&lt;/b&gt; (REJECTION): وزن‌دهی دوباره (پیش‌فرض؛ نقطه‌ای که پیش‌تر رد شده ممکن است با جابه‌جایی سطح بازگردد) یا تجمعی (برای همیشه رد می‌شود).&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی‌ها&lt;/b&gt;: ابر طبقه‌بندی‌شده (OUTPUT، .laz یا .las)، ابر فقط نقاط زمینی به‌اختیار (GROUND_OUTPUT)، گزارش HTML اختیاری (OUTPUT_HTML) با پارامترها، تعداد نقاط هر کلاس، آماره‌های هر تکرار مطابق جدول‌های 1–2 مقاله، آماره‌های هر کاشی، زمان و تعداد نقطه در ثانیه؛ پروندهٔ CSV اختیاری از تکرارها و ضرایب هر کاشی (TILE_STATS)؛ اعداد N_GROUND، N_OTHER، N_NOISE، N_UNCLASSIFIED، N_TILES، POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;نتیجه را با &lt;i&gt;دقت فیلتر نقاط زمینی&lt;/i&gt; در برابر برچسب‌های مرجع بسنجید. اگر اجرا شکست بخورد یا لغو شود، چیزی نوشته نمی‌شود.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="170"/>
-        <source>Per-tile iteration statistics (CSV)</source>
-        <translation>آماره‌های تکرار هر کاشی (CSV)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/lsq_filter.py" line="170"/>
-        <source>CSV files (*.csv)</source>
-        <translation>پرونده‌های CSV (*.csv)</translation>
-    </message>
-</context>
-<context>
-    <name>RectifyGcpAlgorithm</name>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="310"/>
-        <source>Rectify image with GCPs (polynomial)</source>
-        <translation>تصحیح هندسی تصویر با نقاط کنترل زمینی (چندجمله‌ای)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="313"/>
-        <source>georeference,georeferencer,gcp,ground control points,polynomial,rectification,warp,gdalwarp,rms,accuracy</source>
-        <translation>زمین‌مرجع‌سازی,georeferencer,gcp,نقاط کنترل زمینی,چندجمله‌ای,تصحیح هندسی,warp,gdalwarp,rms,دقت</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="317"/>
-        <source>&lt;p&gt;Rectifies (warps) an image with ground control points and a 2-D polynomial of order 1, 2 or 3 through GDAL (same result as &lt;i&gt;gdalwarp -order N&lt;/i&gt;), and writes the accuracy report of the fit. The input image is never modified: the GCPs are attached to an in-memory copy.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
-        <translation>&lt;p&gt;یک تصویر را با نقاط کنترل زمینی و یک چندجمله‌ای دوبعدی درجهٔ 1، 2 یا 3 از طریق GDAL تصحیح هندسی (warp) می‌کند (همان نتیجهٔ &lt;i&gt;gdalwarp -order N&lt;/i&gt;) و گزارش دقت برازش را می‌نویسد. تصویر ورودی هرگز تغییر نمی‌کند: نقاط کنترل به یک رونوشت در حافظه پیوست می‌شوند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;تصویر&lt;/b&gt; (INPUT): رستری که باید تصحیح شود.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="341"/>
-        <source>Target CRS [default: the GCP CRS]</source>
-        <translation>سیستم مختصات مقصد [پیش‌فرض: سیستم مختصات نقاط کنترل]</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="343"/>
-        <source>Resampling</source>
-        <translation>بازنمونه‌برداری</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="345"/>
-        <source>Output resolution (target CRS units) [default: GR]</source>
-        <translation>قدرت تفکیک خروجی (به واحد سیستم مختصات مقصد) [پیش‌فرض: GR]</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="347"/>
-        <source>Output nodata value</source>
-        <translation>مقدار nodata خروجی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="349"/>
-        <source>Rectified image</source>
-        <translation>تصویر تصحیح‌شده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="351"/>
-        <source>Accuracy report</source>
-        <translation>گزارش دقت</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="351"/>
-        <source>HTML files (*.html)</source>
-        <translation>پرونده‌های HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="363"/>
-        <source>OUTPUT must be a GeoTIFF file (.tif); got {0}.</source>
-        <translation>OUTPUT باید پروندهٔ GeoTIFF (.tif) باشد؛ مقدار داده‌شده: {0}.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="317"/>
-        <source>&lt;li&gt;&lt;b&gt;Target CRS&lt;/b&gt; (TARGET_CRS, default the GCP CRS): output CRS; GDAL reprojects after the polynomial.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest neighbour as in the paper): 0 near, 1 bilinear, 2 cubic, 3 cubic spline, 4 Lanczos, 5 average, 6 mode.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output resolution&lt;/b&gt; (RESOLUTION, target-CRS units, default GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Nodata&lt;/b&gt; (NODATA, optional): value outside the image footprint (default: the input&apos;s nodata, else 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rectified image&lt;/b&gt; (OUTPUT): GeoTIFF (written under a temporary name, renamed on success; nothing is left behind on failure).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML accuracy report.&lt;/li&gt;&lt;/ul&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;سیستم مختصات مقصد&lt;/b&gt; (TARGET_CRS، پیش‌فرض سیستم مختصات نقاط کنترل): سیستم مختصات خروجی؛ GDAL پس از اعمال چندجمله‌ای بازتصویر می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بازنمونه‌برداری&lt;/b&gt; (RESAMPLING، پیش‌فرض 0 = نزدیک‌ترین همسایه مانند مقاله): 0 نزدیک‌ترین همسایه، 1 دوخطی، 2 مکعبی، 3 اسپلاین مکعبی، 4 Lanczos، 5 میانگین، 6 مُد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;قدرت تفکیک خروجی&lt;/b&gt; (RESOLUTION، به واحد سیستم مختصات مقصد، پیش‌فرض GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مقدار nodata&lt;/b&gt; (NODATA، اختیاری): مقدار بیرون از محدودهٔ تصویر (پیش‌فرض: nodata ورودی، وگرنه 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تصویر تصحیح‌شده&lt;/b&gt; (OUTPUT): GeoTIFF (با نامی موقت نوشته می‌شود و پس از موفقیت تغییر نام می‌یابد؛ در صورت شکست چیزی باقی نمی‌ماند).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): گزارش دقت HTML.&lt;/li&gt;&lt;/ul&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>SlopeGroundFilterAlgorithm</name>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="111"/>
-        <source>Ground filter (slope-based)</source>
-        <translation>فیلتر نقاط زمینی (مبتنی بر شیب)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="114"/>
-        <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,vosselman,slope,point cloud</source>
-        <translation>لایدار,las,laz,زمین,فیلتر,طبقه‌بندی,dtm,زمین لخت,vosselman,شیب,ابر نقاط</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="118"/>
-        <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when some neighbour at horizontal distance 0 &amp;lt; d ≤ r lies more than d·tan θ + h below it. Single pass, neighbours from the whole cloud, exact (labels identical to a brute-force check of every pair) and fast (about a million points per second on one core at r = 3 m). Low outliers get class 7; every other attribute is copied unchanged. The input classification is ignored.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study's setting RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 allows a rise of 2.90 m at 3 m. Tune r and θ to your data with &lt;i&gt;Slope filter threshold sweep&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radius r&lt;/b&gt; (RADIUS, m, default 10, &amp;gt; 0): neighbourhood radius. An object is removed only within r of its edge, so r must exceed half the width of the largest building to remove; larger r costs more time.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope threshold θ&lt;/b&gt; (SLOPE, degrees, default 40, strictly between 0 and 90): the steepest terrain kept. Allowed rise at 3 m: 2.52 m (40°), 2.90 m (44°), 3.33 m (48°), 3.84 m (52°), 4.45 m (56°), 5.20 m (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Height tolerance h&lt;/b&gt; (HEIGHT_TOLERANCE, m, default 0.2, ≥ 0): extra rise allowed for every pair, absorbs ranging noise between close points; 0 is the rule as published.&lt;/li&gt;</source>
-        <translation>&lt;p&gt;یک ابر نقاط LAS/LAZ را با فیلتر مبتنی بر شیب Vosselman (2000) به زمینی (کلاس 2) و غیرزمینی (کلاس 1) طبقه‌بندی می‌کند: نقطه‌ای غیرزمینی است که همسایه‌ای در فاصلهٔ افقی 0 &lt; d ≤ r بیش از d·tan θ + h پایین‌تر از آن باشد. یک‌گذره، با همسایه‌ها از کل ابر، دقیق (برچسب‌ها با بررسی کامل همهٔ زوج‌ها یکسان‌اند) و سریع (حدود یک میلیون نقطه در ثانیه روی یک هستهٔ پردازنده با r = 3 متر). نقاط پرت پایین کلاس 7 می‌گیرند؛ همهٔ ویژگی‌های دیگر بدون تغییر کپی می‌شوند. طبقه‌بندی ورودی نادیده گرفته می‌شود.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: تنظیم مطالعهٔ جنگل RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 در فاصلهٔ 3 متر اختلاف ارتفاع 2.90 متر را مجاز می‌داند. r و θ را با &lt;i&gt;پیمایش آستانه‌های فیلتر شیب&lt;/i&gt; برای داده‌های خود تنظیم کنید.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las یا .laz در سیستم مختصات تصویرشده (متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شعاع r&lt;/b&gt; (RADIUS، متر، پیش‌فرض 10، &gt; 0): شعاع همسایگی. یک عارضه فقط تا فاصلهٔ r از لبه‌اش حذف می‌شود، پس r باید از نصف عرض بزرگ‌ترین ساختمانی که باید حذف شود بیشتر باشد؛ r بزرگ‌تر زمان بیشتری می‌برد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;آستانهٔ شیب θ&lt;/b&gt; (SLOPE، درجه، پیش‌فرض 40، اکیداً بین 0 و 90): تندترین شیب زمینی که نگه داشته می‌شود. اختلاف ارتفاع مجاز در 3 متر: 2.52 متر (40°)، 2.90 متر (44°)، 3.33 متر (48°)، 3.84 متر (52°)، 4.45 متر (56°)، 5.20 متر (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تلورانس ارتفاعی h&lt;/b&gt; (HEIGHT_TOLERANCE، متر، پیش‌فرض 0.2، ≥ 0): اختلاف ارتفاع اضافی مجاز برای هر زوج، که نویز فاصله‌یابی میان نقاط نزدیک را جذب می‌کند؛ 0 همان قاعدهٔ منتشرشده است.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="157"/>
-        <source>Radius r (m)</source>
-        <translation>شعاع r (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="159"/>
-        <source>Slope threshold θ (degrees)</source>
-        <translation>آستانهٔ شیب θ (درجه)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="161"/>
-        <source>Height tolerance h (m)</source>
-        <translation>تلورانس ارتفاعی h (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="165"/>
-        <source>Keep existing noise classes (7, 18)</source>
-        <translation>حفظ کلاس‌های نویز موجود (7, 18)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="168"/>
-        <source>Classified point cloud</source>
-        <translation>ابر نقاط طبقه‌بندی‌شده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="170"/>
-        <source>Ground points</source>
-        <translation>نقاط زمینی</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="173"/>
-        <source>Report</source>
-        <translation>گزارش</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="173"/>
-        <source>HTML files (*.html)</source>
-        <translation>پرونده‌های HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="176"/>
-        <source>Points read</source>
-        <translation>نقاط خوانده‌شده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="176"/>
-        <source>Ground points (class 2)</source>
-        <translation>نقاط زمینی (کلاس 2)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="176"/>
-        <source>Non-ground points (class 1)</source>
-        <translation>نقاط غیرزمینی (کلاس 1)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="176"/>
-        <source>Low outliers (class 7)</source>
-        <translation>نقاط پرت پایین (کلاس 7)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="176"/>
-        <source>Filter speed (points/s)</source>
-        <translation>سرعت فیلتر (نقطه/ثانیه)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="192"/>
-        <source>Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, mode {}</source>
-        <translation>فیلتر شیب: r = {} متر، θ = {}°، h = {} متر، بازگشت‌ها: {}، حالت: {}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="200"/>
-        <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
-        <translation>{} نقطه: {} زمینی، {} غیرزمینی، {} پرت پایین؛ فیلتر {:.1f} ثانیه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="118"/>
-        <source>&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, default yes, advanced): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point, classes 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): counts, settings, allowed-rise table, speed.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE, POINTS_PER_SECOND (filter step only).&lt;/p&gt;&lt;p&gt;Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;حفظ کلاس‌های نویز موجود&lt;/b&gt; (KEEP_NOISE، پیش‌فرض: بله، پیشرفته): نقاطی که از پیش کلاس 7 یا 18 دارند کلاس خود را نگه می‌دارند و در فیلتر شرکت نمی‌کنند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر نقاط طبقه‌بندی‌شده&lt;/b&gt; (OUTPUT، .laz/.las): همهٔ نقاط، با کلاس‌های 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط زمینی&lt;/b&gt; (GROUND_OUTPUT، اختیاری): فقط نقاط زمینی.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): تعدادها، تنظیمات، جدول اختلاف ارتفاع مجاز، سرعت.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: N_POINTS، N_GROUND، N_NONGROUND، N_NOISE، POINTS_PER_SECOND (فقط مرحلهٔ فیلتر).&lt;/p&gt;&lt;p&gt;مرجع: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>SlopeThresholdSweepAlgorithm</name>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="233"/>
-        <source>Slope filter threshold sweep</source>
-        <translation>پیمایش آستانه‌های فیلتر شیب</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="236"/>
-        <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
-        <translation>لایدار,زمین,فیلتر,vosselman,شیب,آستانه,تنظیم,دقت,نوع اول,نوع دوم,کاپا,isprs</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="240"/>
-        <source>&lt;p&gt;Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h and reports, against reference labels, Type I error (ground rejected), Type II error (objects accepted as ground — the forest study's &quot;error&quot; column, which alone always favours low θ), total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004), then picks the best setting. One exact neighbourhood pass per radius and tolerance: every threshold then costs a single comparison per point.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. ISPRS reference samples: INPUT=samp31.laz (its own classification is the reference).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): LAS/LAZ. Its classification is never used to filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference cloud&lt;/b&gt; (REFERENCE, optional): a labelled copy of the same points in the same order; empty = the input's own classification (e.g. the ISPRS samples).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &quot;2&quot;): reference classes counted as ground; all others are objects.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope thresholds&lt;/b&gt; (SLOPES, degrees, default &quot;30,35,40,44,48,52,56,60&quot;): a list or start:stop:step.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radii&lt;/b&gt; (RADII, m, default &quot;10&quot;) and &lt;b&gt;height tolerances&lt;/b&gt; (HEIGHT_TOLERANCES, m, default &quot;0.2&quot;): lists; each value is one pass.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Best by&lt;/b&gt; (METRIC, default 0): 0 lowest total error, 1 highest kappa, 2 lowest Type I, 3 lowest Type II.&lt;/li&gt;</source>
-        <translation>&lt;p&gt;فیلتر زمینی مبتنی بر شیب را برای هر ترکیب از آستانه‌های شیب θ، شعاع‌های r و تلورانس‌های ارتفاعی h اجرا می‌کند و در برابر برچسب‌های مرجع، خطای نوع اول (رد نقاط زمینی)، خطای نوع دوم (پذیرش عوارض به‌عنوان زمین — ستون «خطا» در مطالعهٔ جنگل، که به‌تنهایی همیشه θ پایین را ترجیح می‌دهد)، خطای کل و ضریب کاپای کوهن (Sithole &amp; Vosselman 2004) را گزارش می‌کند و سپس بهترین تنظیم را برمی‌گزیند. برای هر شعاع و تلورانس یک گذر دقیق همسایگی انجام می‌شود: پس از آن هر آستانه فقط یک مقایسه به ازای هر نقطه هزینه دارد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: مطالعهٔ جنگل: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. نمونه‌های مرجع ISPRS: INPUT=samp31.laz (طبقه‌بندی خودش مرجع است).&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): LAS/LAZ. طبقه‌بندی آن هرگز برای فیلتر کردن به کار نمی‌رود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر مرجع&lt;/b&gt; (REFERENCE، اختیاری): رونوشتی برچسب‌دار از همان نقاط با همان ترتیب؛ خالی = طبقه‌بندی خود ورودی (مثلاً نمونه‌های ISPRS).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های زمینی&lt;/b&gt; (GROUND_CLASSES، پیش‌فرض &quot;2&quot;): کلاس‌های مرجعی که زمینی به شمار می‌آیند؛ بقیه عارضه‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;آستانه‌های شیب&lt;/b&gt; (SLOPES، درجه، پیش‌فرض &quot;30,35,40,44,48,52,56,60&quot;): فهرست یا start:stop:step (شروع:پایان:گام).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شعاع‌ها&lt;/b&gt; (RADII، متر، پیش‌فرض &quot;10&quot;) و &lt;b&gt;تلورانس‌های ارتفاعی&lt;/b&gt; (HEIGHT_TOLERANCES، متر، پیش‌فرض &quot;0.2&quot;): فهرست؛ هر مقدار یک گذر است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;معیار انتخاب بهترین&lt;/b&gt; (METRIC، پیش‌فرض 0): 0 کمترین خطای کل، 1 بیشترین کاپا، 2 کمترین نوع اول، 3 کمترین نوع دوم.&lt;/li&gt;</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="277"/>
-        <source>Reference cloud (empty = the input&apos;s classification)</source>
-        <translation>ابر مرجع (خالی = طبقه‌بندی خود ورودی)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="281"/>
-        <source>Reference ground classes</source>
-        <translation>کلاس‌های زمینی مرجع</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="283"/>
-        <source>Slope thresholds θ (degrees; list or start:stop:step)</source>
-        <translation>آستانه‌های شیب θ (درجه؛ فهرست یا شروع:پایان:گام)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="286"/>
-        <source>Radii r (m; list)</source>
-        <translation>شعاع‌های r (متر؛ فهرست)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="288"/>
-        <source>Height tolerances h (m; list)</source>
-        <translation>تلورانس‌های ارتفاعی h (متر؛ فهرست)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="291"/>
-        <source>Best by</source>
-        <translation>معیار انتخاب بهترین</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="291"/>
-        <source>Lowest total error</source>
-        <translation>کمترین خطای کل</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="291"/>
-        <source>Highest kappa</source>
-        <translation>بیشترین کاپا</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="291"/>
-        <source>Lowest Type I error</source>
-        <translation>کمترین خطای نوع اول</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="291"/>
-        <source>Lowest Type II error</source>
-        <translation>کمترین خطای نوع دوم</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="298"/>
-        <source>Sweep table</source>
-        <translation>جدول پیمایش</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="298"/>
-        <source>CSV files (*.csv)</source>
-        <translation>پرونده‌های CSV (*.csv)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
-        <source>Report</source>
-        <translation>گزارش</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="300"/>
-        <source>HTML files (*.html)</source>
-        <translation>پرونده‌های HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="303"/>
-        <source>Classified with the best setting</source>
-        <translation>طبقه‌بندی‌شده با بهترین تنظیم</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Best radius (m)</source>
-        <translation>بهترین شعاع (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Best slope threshold (degrees)</source>
-        <translation>بهترین آستانهٔ شیب (درجه)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Best height tolerance (m)</source>
-        <translation>بهترین تلورانس ارتفاعی (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Type I error at the best setting (%)</source>
-        <translation>خطای نوع اول در بهترین تنظیم (%)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Type II error at the best setting (%)</source>
-        <translation>خطای نوع دوم در بهترین تنظیم (%)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Total error at the best setting (%)</source>
-        <translation>خطای کل در بهترین تنظیم (%)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Kappa at the best setting (%)</source>
-        <translation>کاپا در بهترین تنظیم (%)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="306"/>
-        <source>Settings evaluated</source>
-        <translation>تعداد تنظیمات ارزیابی‌شده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="315"/>
-        <source>Best setting</source>
-        <translation>بهترین تنظیم</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="335"/>
-        <source>Sweeping {} thresholds × {} radii × {} tolerances</source>
-        <translation>پیمایش {} آستانه × {} شعاع × {} تلورانس</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="348"/>
-        <source>Best ({}): {} — total {:.2f} %</source>
-        <translation>بهترین ({}): {} — خطای کل {:.2f} %</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="240"/>
-        <source>&lt;li&gt;&lt;b&gt;Sweep table&lt;/b&gt; (OUTPUT_CSV): one row per setting: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): the table, the best setting and a chart of the errors against θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified with the best setting&lt;/b&gt; (OUTPUT, optional LAS/LAZ).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: BEST_RADIUS, BEST_SLOPE, BEST_HEIGHT_TOLERANCE, BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.&lt;/p&gt;</source>
-        <translation>&lt;li&gt;&lt;b&gt;جدول پیمایش&lt;/b&gt; (OUTPUT_CSV): یک سطر برای هر تنظیم: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML): جدول، بهترین تنظیم و نمودار خطاها بر حسب θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقه‌بندی‌شده با بهترین تنظیم&lt;/b&gt; (OUTPUT، LAS/LAZ اختیاری).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: BEST_RADIUS، BEST_SLOPE، BEST_HEIGHT_TOLERANCE، BEST_TYPE1، BEST_TYPE2، BEST_TOTAL، BEST_KAPPA (درصد)، N_SETTINGS.&lt;/p&gt;</translation>
-    </message>
-</context>
-<context>
-    <name>_GcpBase</name>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="105"/>
-        <source>Image (raster) to rectify</source>
-        <translation>تصویر (رستر) برای تصحیح</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="105"/>
-        <source>Image (raster) the GCPs were measured on</source>
-        <translation>تصویر (رستر) که نقاط کنترل روی آن اندازه‌گیری شده‌اند</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="108"/>
-        <source>GCP file (.points or CSV)</source>
-        <translation>پروندهٔ نقاط کنترل زمینی (.points یا CSV)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="108"/>
-        <source>GCP files (*.points *.csv *.txt);;All files (*.*)</source>
-        <translation>پرونده‌های نقاط کنترل (*.points *.csv *.txt);;همهٔ پرونده‌ها (*.*)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="112"/>
-        <source>…or GCP point layer</source>
-        <translation>…یا لایهٔ نقطه‌ای نقاط کنترل</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="115"/>
-        <source>Layer field: image column</source>
-        <translation>فیلد لایه: ستون تصویر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="115"/>
-        <source>Layer field: image row</source>
-        <translation>فیلد لایه: سطر تصویر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="115"/>
-        <source>Layer field: point id</source>
-        <translation>فیلد لایه: شناسهٔ نقطه</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="115"/>
-        <source>Layer field: enabled (1/0)</source>
-        <translation>فیلد لایه: فعال (1/0)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="115"/>
-        <source>Layer field: role (gcp/check)</source>
-        <translation>فیلد لایه: نقش (gcp/check)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="115"/>
-        <source>Layer field: weight (&gt; 0)</source>
-        <translation>فیلد لایه: وزن (&gt; 0)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="125"/>
-        <source>Image coordinates refer to</source>
-        <translation>مختصات تصویر مربوط است به</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="125"/>
-        <source>pixel corners: (0,0) = top-left corner of the image (GDAL/QGIS)</source>
-        <translation>گوشه‌های پیکسل: (0,0) = گوشهٔ بالا-چپ تصویر (GDAL/QGIS)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="125"/>
-        <source>pixel centres: integer = centre of a pixel (0-based indices)</source>
-        <translation>مراکز پیکسل: عدد صحیح = مرکز یک پیکسل (اندیس‌ها از 0)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="130"/>
-        <source>CRS of the GCP map coordinates (if the file does not say)</source>
-        <translation>سیستم مختصاتِ مختصات نقشه‌ای نقاط کنترل (اگر پرونده آن را مشخص نکند)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="132"/>
-        <source>Polynomial order (1–3)</source>
-        <translation>درجهٔ چندجمله‌ای (1–3)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="134"/>
-        <source>Ground resolution GR (map units/pixel) [default: from the GCPs]</source>
-        <translation>قدرت تفکیک زمینی GR (واحد نقشه/پیکسل) [پیش‌فرض: از نقاط کنترل]</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="153"/>
-        <source>INPUT: no image given or it cannot be opened; give a raster file.</source>
-        <translation>INPUT: تصویری داده نشده یا باز نمی‌شود؛ یک پروندهٔ رستری بدهید.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="158"/>
-        <source>INPUT: {0} is not a local raster file; save the image to a file first.</source>
-        <translation>INPUT: {0} پروندهٔ رستری محلی نیست؛ ابتدا تصویر را در یک پرونده ذخیره کنید.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="173"/>
-        <source>Give either GCP_FILE or GCP_LAYER, not both.</source>
-        <translation>یا GCP_FILE یا GCP_LAYER را بدهید، نه هر دو.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="191"/>
-        <source>No GCPs: give a GCP file (GCP_FILE, .points or CSV) or a point layer (GCP_LAYER with COL_FIELD and ROW_FIELD); no &lt;image&gt;.points file was found next to the image either.</source>
-        <translation>نقطهٔ کنترلی وجود ندارد: یک پروندهٔ نقاط کنترل (GCP_FILE، .points یا CSV) یا یک لایهٔ نقطه‌ای (GCP_LAYER با COL_FIELD و ROW_FIELD) بدهید؛ پروندهٔ &lt;image&gt;.points هم کنار تصویر یافت نشد.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="206"/>
-        <source>GCP_LAYER needs COL_FIELD and ROW_FIELD: the fields holding the image column and row of each point.</source>
-        <translation>GCP_LAYER به COL_FIELD و ROW_FIELD نیاز دارد: فیلدهایی که ستون و سطر تصویر هر نقطه را در خود دارند.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="213"/>
-        <source>GCP layer feature {0} has no geometry.</source>
-        <translation>عارضهٔ {0} در لایهٔ نقاط کنترل هندسه ندارد.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="272"/>
-        <source>The GCP map coordinates have no CRS: the file has no &apos;#CRS:&apos; line and GCP_CRS is not set. Set GCP_CRS (e.g. EPSG:22780) and run again.</source>
-        <translation>مختصات نقشه‌ای نقاط کنترل سیستم مختصات ندارند: پرونده خط '#CRS:' ندارد و GCP_CRS تنظیم نشده است. GCP_CRS را تنظیم کنید (مثلاً EPSG:22780) و دوباره اجرا کنید.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/gcp_rectification.py" line="284"/>
-        <source>The GCP CRS is geographic (degrees): the accuracy criteria need map units of length. Set TARGET_CRS (or GCP_CRS) to a projected CRS, e.g. the UTM zone of the image.</source>
-        <translation>سیستم مختصات نقاط کنترل جغرافیایی (درجه) است: معیارهای دقت به واحدهای طولی نقشه نیاز دارند. TARGET_CRS (یا GCP_CRS) را روی یک سیستم مختصات تصویرشده تنظیم کنید، مثلاً زون UTM تصویر.</translation>
-    </message>
-</context>
-<context>
-    <name>_GridAlgorithm</name>
-    <message>
-        <location filename="../algorithms/terrain.py" line="100"/>
-        <source>Point cloud (LAS/LAZ)</source>
-        <translation>ابر نقاط (LAS/LAZ)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="103"/>
-        <source>Classes used (comma-separated; empty = all)</source>
-        <translation>کلاس‌های به‌کاررفته (جداشده با ویرگول؛ خالی = همه)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="106"/>
-        <source>Cell size (m)</source>
-        <translation>اندازهٔ سلول (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="107"/>
-        <source>Extent</source>
-        <translation>محدوده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="108"/>
-        <source>CRS (overrides the LAS file&apos;s CRS)</source>
-        <translation>سیستم مختصات (بر سیستم مختصات پروندهٔ LAS مقدم است)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="112"/>
-        <source>Maximum distance to data (m, 0 = auto)</source>
-        <translation>بیشینهٔ فاصله تا داده (متر، 0 = خودکار)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="114"/>
-        <source>Fill data gaps (interpolate far from data)</source>
-        <translation>پر کردن شکاف‌های داده (درون‌یابی دور از داده)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="119"/>
-        <source>Report</source>
-        <translation>گزارش</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="119"/>
-        <source>HTML files (*.html)</source>
-        <translation>پرونده‌های HTML (*.html)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="130"/>
-        <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
-        <translation>ابر نقاط رکورد سیستم مختصات ندارد و سیستم مختصاتی هم داده نشده است؛ پارامتر CRS را تنظیم کنید (مثلاً EPSG:32632). هیچ خروجی‌ای نوشته نشد.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="145"/>
-        <source>Cell size must be &gt; 0 (metres); give e.g. 1.0. No output was written.</source>
-        <translation>اندازهٔ سلول باید &gt; 0 (متر) باشد؛ مثلاً 1.0 بدهید. هیچ خروجی‌ای نوشته نشد.</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="162"/>
-        <source>Reading points of class(es) {} from {}</source>
-        <translation>در حال خواندن نقاط کلاس(های) {} از {}</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/terrain.py" line="165"/>
-        <source>{} of {} points selected</source>
-        <translation>{} نقطه از {} نقطه انتخاب شد</translation>
-    </message>
-</context>
-<context>
-    <name>_SlopeCommon</name>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="36"/>
-        <source>Point cloud (LAS/LAZ)</source>
-        <translation>ابر نقاط (LAS/LAZ)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="41"/>
-        <source>Returns filtered</source>
-        <translation>بازگشت‌های فیلترشونده</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="41"/>
-        <source>All returns</source>
-        <translation>همهٔ بازگشت‌ها</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="41"/>
-        <source>Last returns only</source>
-        <translation>فقط بازگشت‌های آخر</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="47"/>
-        <source>Mode</source>
-        <translation>حالت</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="47"/>
-        <source>Exact (Vosselman 2000)</source>
-        <translation>دقیق (Vosselman 2000)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="47"/>
-        <source>Terrain-adaptive (toolbox extension)</source>
-        <translation>سازگار با ناهمواری زمین (افزودهٔ جعبه‌ابزار)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="51"/>
-        <source>Adaptive mode: trend cell (m)</source>
-        <translation>حالت سازگار: سلول روند (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="53"/>
-        <source>Adaptive mode: trend window, &gt; largest building (m)</source>
-        <translation>حالت سازگار: پنجرهٔ روند، &gt; بزرگ‌ترین ساختمان (متر)</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="62"/>
-        <source>TREND_CELL and TREND_WINDOW must be &gt; 0 metres in adaptive mode (e.g. 10 and 60).</source>
-        <translation>در حالت سازگار، TREND_CELL و TREND_WINDOW باید &gt; 0 متر باشند (مثلاً 10 و 60).</translation>
-    </message>
-    <message>
-        <location filename="../algorithms/slope_filter.py" line="68"/>
-        <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
-        <translation>NOISE_RADIUS و NOISE_THRESHOLD باید &gt; 0 متر باشند (مثلاً 5 و 1)، یا پیش‌فیلتر NOISE را خاموش کنید.</translation>
-    </message>
-</context>
+    <context>
+        <name>@default</name>
+        <message>
+            <source>reference ground</source>
+            <translation>زمینی (در مرجع)</translation>
+        </message>
+        <message>
+            <source>reference object</source>
+            <translation>عارضه (در مرجع)</translation>
+        </message>
+        <message>
+            <source>total</source>
+            <translation>مجموع</translation>
+        </message>
+        <message>
+            <source>Type I (ground rejected) = b/(a+b)</source>
+            <translation>خطای نوع اول (رد نقاط زمینی) = b/(a+b)</translation>
+        </message>
+        <message>
+            <source>Type II (object accepted) = c/(c+d)</source>
+            <translation>خطای نوع دوم (پذیرش عوارض به‌عنوان زمین) = c/(c+d)</translation>
+        </message>
+        <message>
+            <source>Total = (b+c)/n</source>
+            <translation>خطای کل = (b+c)/n</translation>
+        </message>
+        <message>
+            <source>Cohen's kappa</source>
+            <translation>ضریب کاپای کوهن</translation>
+        </message>
+        <message>
+            <source>filtered cloud</source>
+            <translation>ابر فیلترشده</translation>
+        </message>
+        <message>
+            <source>its class dimension</source>
+            <translation>بُعد کلاس آن</translation>
+        </message>
+        <message>
+            <source>its ground classes</source>
+            <translation>کلاس‌های زمینی آن</translation>
+        </message>
+        <message>
+            <source>reference</source>
+            <translation>مرجع</translation>
+        </message>
+        <message>
+            <source>(dimension of the filtered cloud)</source>
+            <translation>(بُعدی از ابر فیلترشده)</translation>
+        </message>
+        <message>
+            <source>reference class dimension</source>
+            <translation>بُعد کلاس مرجع</translation>
+        </message>
+        <message>
+            <source>reference ground classes</source>
+            <translation>کلاس‌های زمینی مرجع</translation>
+        </message>
+        <message>
+            <source>item</source>
+            <translation>مورد</translation>
+        </message>
+        <message>
+            <source>value</source>
+            <translation>مقدار</translation>
+        </message>
+        <message>
+            <source>filtered ground</source>
+            <translation>زمینی (پس از فیلتر)</translation>
+        </message>
+        <message>
+            <source>filtered object</source>
+            <translation>عارضه (پس از فیلتر)</translation>
+        </message>
+        <message>
+            <source>measure</source>
+            <translation>سنجه</translation>
+        </message>
+        <message>
+            <source>Of all misclassified points, {p1:.1f} % are Type I and {p2:.1f} % Type II.</source>
+            <translation>از همهٔ نقاطی که نادرست طبقه‌بندی شده‌اند، {p1:.1f} % از نوع اول و {p2:.1f} % از نوع دوم هستند.</translation>
+        </message>
+        <message>
+            <source>filtered class</source>
+            <translation>کلاس پس از فیلتر</translation>
+        </message>
+        <message>
+            <source>points</source>
+            <translation>تعداد نقاط</translation>
+        </message>
+        <message>
+            <source>Measures of the ISPRS filter test: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</source>
+            <translation>سنجه‌های آزمون فیلترهای ISPRS: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</translation>
+        </message>
+        <message>
+            <source>Ground filter accuracy</source>
+            <translation>دقت فیلتر نقاط زمینی</translation>
+        </message>
+        <message>
+            <source>input</source>
+            <translation>پروندهٔ ورودی</translation>
+        </message>
+        <message>
+            <source>CRS</source>
+            <translation>سیستم مختصات (CRS)</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>ندارد</translation>
+        </message>
+        <message>
+            <source>mode</source>
+            <translation>حالت</translation>
+        </message>
+        <message>
+            <source>order</source>
+            <translation>درجه</translation>
+        </message>
+        <message>
+            <source>polynomial</source>
+            <translation>چندجمله‌ای</translation>
+        </message>
+        <message>
+            <source>tile size (m)</source>
+            <translation>اندازهٔ کاشی (متر)</translation>
+        </message>
+        <message>
+            <source>threshold T (m)</source>
+            <translation>آستانهٔ T (متر)</translation>
+        </message>
+        <message>
+            <source>max iterations</source>
+            <translation>حداکثر تکرار</translation>
+        </message>
+        <message>
+            <source>stop tolerance (m)</source>
+            <translation>تلورانس توقف (متر)</translation>
+        </message>
+        <message>
+            <source>fitting subset per tile</source>
+            <translation>زیرمجموعهٔ برازش در هر کاشی</translation>
+        </message>
+        <message>
+            <source>all points</source>
+            <translation>همهٔ نقاط</translation>
+        </message>
+        <message>
+            <source>seed</source>
+            <translation>بذر تصادفی</translation>
+        </message>
+        <message>
+            <source>min points per tile</source>
+            <translation>حداقل نقاط هر کاشی</translation>
+        </message>
+        <message>
+            <source>under-populated tiles</source>
+            <translation>کاشی‌های کم‌نقطه</translation>
+        </message>
+        <message>
+            <source>rejection</source>
+            <translation>شیوهٔ رد نقاط</translation>
+        </message>
+        <message>
+            <source>low-outlier pre-filter</source>
+            <translation>پیش‌فیلتر نقاط پرت پایین</translation>
+        </message>
+        <message>
+            <source>pre-filter cell / depth (m)</source>
+            <translation>سلول / عمق پیش‌فیلتر (متر)</translation>
+        </message>
+        <message>
+            <source>grid origin (min x, min y)</source>
+            <translation>مبدأ شبکه (کمینهٔ x، کمینهٔ y)</translation>
+        </message>
+        <message>
+            <source>levels (× tile size)</source>
+            <translation>سطوح (× اندازهٔ کاشی)</translation>
+        </message>
+        <message>
+            <source>window overlap</source>
+            <translation>همپوشانی پنجره‌ها</translation>
+        </message>
+        <message>
+            <source>slope factor (m) / cap (m)</source>
+            <translation>ضریب شیب (متر) / سقف (متر)</translation>
+        </message>
+        <message>
+            <source>ground</source>
+            <translation>زمینی</translation>
+        </message>
+        <message>
+            <source>other (object)</source>
+            <translation>سایر (عارضه)</translation>
+        </message>
+        <message>
+            <source>low noise</source>
+            <translation>نویز پایین</translation>
+        </message>
+        <message>
+            <source>never classified</source>
+            <translation>هرگز طبقه‌بندی‌نشده</translation>
+        </message>
+        <message>
+            <source>reading</source>
+            <translation>خواندن</translation>
+        </message>
+        <message>
+            <source>filter total</source>
+            <translation>کل فیلتر کردن</translation>
+        </message>
+        <message>
+            <source>run total (read, filter, write)</source>
+            <translation>کل اجرا (خواندن، فیلتر، نوشتن)</translation>
+        </message>
+        <message>
+            <source>points per second (run)</source>
+            <translation>نقطه در ثانیه (اجرا)</translation>
+        </message>
+        <message>
+            <source>points per second (filter)</source>
+            <translation>نقطه در ثانیه (فیلتر)</translation>
+        </message>
+        <message>
+            <source>step</source>
+            <translation>گام</translation>
+        </message>
+        <message>
+            <source>Parameters</source>
+            <translation>پارامترها</translation>
+        </message>
+        <message>
+            <source>class</source>
+            <translation>کلاس</translation>
+        </message>
+        <message>
+            <source>meaning</source>
+            <translation>معنا</translation>
+        </message>
+        <message>
+            <source>Kept heights after each iteration, aggregated over the tiles (a tile that has stopped keeps its last values); the layout of the paper's Tables 1–2.</source>
+            <translation>ارتفاع‌های نگه‌داشته‌شده پس از هر تکرار، تجمیع‌شده روی کاشی‌ها (کاشی‌ای که متوقف شده آخرین مقادیرش را نگه می‌دارد)؛ با چیدمان جدول‌های 1–2 مقاله.</translation>
+        </message>
+        <message>
+            <source>tiles still iterating</source>
+            <translation>کاشی‌های در حال تکرار</translation>
+        </message>
+        <message>
+            <source>level</source>
+            <translation>سطح</translation>
+        </message>
+        <message>
+            <source>tiles</source>
+            <translation>تعداد کاشی‌ها</translation>
+        </message>
+        <message>
+            <source>fitted</source>
+            <translation>برازش‌شده</translation>
+        </message>
+        <message>
+            <source>ground seeds</source>
+            <translation>نقاط زمینی اولیه</translation>
+        </message>
+        <message>
+            <source>seconds</source>
+            <translation>ثانیه</translation>
+        </message>
+        <message>
+            <source>The iteration and tile tables below describe the finest level.</source>
+            <translation>جدول‌های تکرار و کاشی در زیر، ریزترین سطح را توصیف می‌کنند.</translation>
+        </message>
+        <message>
+            <source>status</source>
+            <translation>وضعیت</translation>
+        </message>
+        <message>
+            <source>column</source>
+            <translation>ستون</translation>
+        </message>
+        <message>
+            <source>row</source>
+            <translation>سطر</translation>
+        </message>
+        <message>
+            <source>fitting points</source>
+            <translation>نقاط برازش</translation>
+        </message>
+        <message>
+            <source>iterations</source>
+            <translation>تکرارها</translation>
+        </message>
+        <message>
+            <source>kept</source>
+            <translation>نگه‌داشته</translation>
+        </message>
+        <message>
+            <source>Showing the {k} fullest of {n} tiles.</source>
+            <translation>{k} کاشیِ پرنقطه‌تر از میان {n} کاشی نمایش داده شده است.</translation>
+        </message>
+        <message>
+            <source>stage</source>
+            <translation>مرحله</translation>
+        </message>
+        <message>
+            <source>seconds or points/s</source>
+            <translation>ثانیه یا نقطه/ثانیه</translation>
+        </message>
+        <message>
+            <source>Method: tiled least-squares polynomial filter, Damascus Univ. J. Eng. Sci. 29(2), 2013. Improved mode and the low-outlier pre-filter are ours. Accuracy terms (Type I, Type II, total) after Sithole &amp; Vosselman (2004).</source>
+            <translation>روش: فیلتر چندجمله‌ای کمترین مربعات روی کاشی‌ها، مجلهٔ علوم مهندسی دانشگاه دمشق 29(2)، 2013. حالت بهبودیافته و پیش‌فیلتر نقاط پرت پایین افزودهٔ ما هستند. اصطلاحات دقت (نوع اول، نوع دوم، کل) برگرفته از Sithole &amp; Vosselman (2004).</translation>
+        </message>
+        <message>
+            <source>Ground filter (least-squares polynomial)</source>
+            <translation>فیلتر نقاط زمینی (چندجمله‌ای کمترین مربعات)</translation>
+        </message>
+    </context>
+    <context>
+        <name>DsmAlgorithm</name>
+        <message>
+            <source>DSM and nDSM / canopy height model</source>
+            <translation>مدل رقومی سطح (DSM) و nDSM / مدل ارتفاع تاج پوشش گیاهی</translation>
+        </message>
+        <message>
+            <source>dsm,ndsm,chm,canopy height,surface model,first returns,lidar,raster</source>
+            <translation>dsm,ndsm,chm,ارتفاع تاج پوشش,مدل سطح,بازگشت‌های اول,لایدار,رستر</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Digital surface model from a LAS/LAZ file: every cell takes the highest return falling in it (first returns only as an option, the usual canopy surface). With a DTM, also the normalised DSM (nDSM; canopy height model in forests) = DSM − DTM on the DTM's grid. Points are read in chunks, so large files fit in memory.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=cloud.laz CELL_SIZE=1 FIRST_RETURNS=true DTM=dtm.tif OUTPUT=dsm.tif OUTPUT_NDSM=chm.tif.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes used&lt;/b&gt; (CLASSES, default empty = all classes).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Excluded classes&lt;/b&gt; (EXCLUDE_CLASSES, default &lt;code&gt;7,18&lt;/code&gt;: low and high noise).&lt;/li&gt;&lt;li&gt;&lt;b&gt;First returns only&lt;/b&gt; (FIRST_RETURNS, default no).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 1), &lt;b&gt;Extent&lt;/b&gt; (EXTENT), &lt;b&gt;CRS&lt;/b&gt; (CRS): as for the DTM tools; ignored when a DTM is given (its grid and CRS are used so that DSM and DTM align cell for cell).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill distance&lt;/b&gt; (FILL_DISTANCE, m, default 0): empty cells take the value of the nearest non-empty cell within this distance; 0 = leave them nodata.&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM&lt;/b&gt; (DTM, optional raster): needed for the nDSM.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Clamp negative heights to 0&lt;/b&gt; (CLAMP_NEGATIVE, default yes).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DSM&lt;/b&gt; (OUTPUT) and &lt;b&gt;nDSM&lt;/b&gt; (OUTPUT_NDSM, optional, needs DTM): GeoTIFF, nodata −9999.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;مدل رقومی سطح از یک پروندهٔ LAS/LAZ: هر سلول بالاترین بازگشتی را که در آن می‌افتد می‌گیرد (به‌اختیار فقط بازگشت‌های اول، که سطح معمول تاج پوشش گیاهی است). با داشتن مدل رقومی زمین (DTM)، مدل رقومی سطح نرمال‌شده (nDSM؛ در جنگل همان مدل ارتفاع تاج پوشش) = DSM − DTM نیز روی شبکهٔ DTM ساخته می‌شود. نقاط تکه‌تکه خوانده می‌شوند، پس پرونده‌های بزرگ هم در حافظه جا می‌گیرند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=cloud.laz CELL_SIZE=1 FIRST_RETURNS=true DTM=dtm.tif OUTPUT=dsm.tif OUTPUT_NDSM=chm.tif.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las/.laz.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های به‌کاررفته&lt;/b&gt; (CLASSES، پیش‌فرض خالی = همهٔ کلاس‌ها).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های کنارگذاشته&lt;/b&gt; (EXCLUDE_CLASSES، پیش‌فرض &lt;code&gt;7,18&lt;/code&gt;: نویز پایین و بالا).&lt;/li&gt;&lt;li&gt;&lt;b&gt;فقط بازگشت‌های اول&lt;/b&gt; (FIRST_RETURNS، پیش‌فرض: خیر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض 1)، &lt;b&gt;محدوده&lt;/b&gt; (EXTENT)، &lt;b&gt;سیستم مختصات&lt;/b&gt; (CRS): مانند ابزارهای مدل رقومی زمین؛ وقتی DTM داده شود نادیده گرفته می‌شوند (شبکه و سیستم مختصات آن به کار می‌رود تا DSM و DTM سلول‌به‌سلول بر هم منطبق باشند).&lt;/li&gt;&lt;li&gt;&lt;b&gt;فاصلهٔ پر کردن&lt;/b&gt; (FILL_DISTANCE، متر، پیش‌فرض 0): سلول‌های خالی مقدار نزدیک‌ترین سلول غیرخالی در این فاصله را می‌گیرند؛ 0 = nodata می‌مانند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;مدل رقومی زمین&lt;/b&gt; (DTM، رستر اختیاری): برای nDSM لازم است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;برابر 0 قرار دادن ارتفاع‌های منفی&lt;/b&gt; (CLAMP_NEGATIVE، پیش‌فرض: بله).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DSM&lt;/b&gt; (OUTPUT) و &lt;b&gt;nDSM&lt;/b&gt; (OUTPUT_NDSM، اختیاری، نیازمند DTM): GeoTIFF، با nodata برابر −9999.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری).&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Excluded classes</source>
+            <translation>کلاس‌های کنارگذاشته</translation>
+        </message>
+        <message>
+            <source>First returns only</source>
+            <translation>فقط بازگشت‌های اول</translation>
+        </message>
+        <message>
+            <source>Fill empty cells up to (m)</source>
+            <translation>پر کردن سلول‌های خالی تا فاصلهٔ (متر)</translation>
+        </message>
+        <message>
+            <source>DTM (for the nDSM; its grid is used)</source>
+            <translation>مدل رقومی زمین DTM (برای nDSM؛ شبکهٔ آن به کار می‌رود)</translation>
+        </message>
+        <message>
+            <source>Clamp negative nDSM heights to 0</source>
+            <translation>برابر 0 قرار دادن ارتفاع‌های منفی nDSM</translation>
+        </message>
+        <message>
+            <source>DSM</source>
+            <translation>مدل رقومی سطح (DSM)</translation>
+        </message>
+        <message>
+            <source>nDSM / canopy height model</source>
+            <translation>nDSM / مدل ارتفاع تاج پوشش گیاهی</translation>
+        </message>
+        <message>
+            <source>The point cloud CRS ({}) differs from the DTM CRS ({}); give a DTM in the point cloud's CRS. No output was written.</source>
+            <translation>سیستم مختصات ابر نقاط ({}) با سیستم مختصات مدل رقومی زمین ({}) متفاوت است؛ مدل رقومی زمینی در سیستم مختصات ابر نقاط بدهید. هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>The nDSM needs a DTM: give the DTM parameter (e.g. the output of the IDW DTM algorithm). No output was written.</source>
+            <translation>nDSM به مدل رقومی زمین نیاز دارد: پارامتر DTM را بدهید (مثلاً خروجی الگوریتم مدل رقومی زمین به روش IDW). هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>DSM / nDSM report</source>
+            <translation>گزارش DSM / nDSM</translation>
+        </message>
+    </context>
+    <context>
+        <name>DtmAccuracyAlgorithm</name>
+        <message>
+            <source>DTM accuracy against check points</source>
+            <translation>دقت مدل رقومی زمین نسبت به نقاط چک</translation>
+        </message>
+        <message>
+            <source>dtm,dem,accuracy,rmse,check points,gnss,nmad,asprs,vertical accuracy,validation</source>
+            <translation>dtm,dem,دقت,rmse,نقاط چک,gnss,nmad,asprs,دقت ارتفاعی,اعتبارسنجی</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Compares a DTM with independent check points (e.g. GNSS heights). The DTM is sampled at each point (bilinear by default) and the errors e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt; are summarised: N, mean error (bias), MAE, RMSE, standard deviation, max |e|, Pearson r and R² (= r²) between DTM and check heights, NMAD = 1.4826·median|e − median e| (Höhle &amp;amp; Höhle 2009), and the vertical accuracy at 95 % confidence = 1.96·RMSE (ASPRS Positional Accuracy Standards 2014, which assumes unbiased normal errors; the 95th percentile of |e| is reported too). Check points outside the DTM or on nodata are counted and excluded — never read as 0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv → RMSE, r and a report with a scatter plot and an error histogram.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;DTM&lt;/b&gt; (DTM): raster layer; BAND (default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check points&lt;/b&gt; (CHECKPOINTS, optional): point layer; heights from &lt;b&gt;Z_FIELD&lt;/b&gt; or, if empty, from the geometry Z. &lt;b&gt;ID_FIELD&lt;/b&gt; optional.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check point file&lt;/b&gt; (CHECKPOINTS_CSV, optional): delimited text with a header x/easting, y/northing, z/height (and id/name), or columns id x y z without header. Give the layer or the file.&lt;/li&gt;&lt;li&gt;&lt;b&gt;CSV CRS&lt;/b&gt; (CSV_CRS, optional): CRS of the file's coordinates; default = the DTM's CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reproject check points&lt;/b&gt; (REPROJECT, default no): when the check points are in another CRS than the DTM, transform them (x, y only — heights are not converted between vertical datums). Without it such points are an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sampling&lt;/b&gt; (METHOD, 0 bilinear (default), 1 nearest cell).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Residuals&lt;/b&gt; (OUTPUT): point layer with id, z_check, z_dtm, error, abs_error and status (used / outside DTM / DTM nodata).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): HTML with the statistics, a DTM vs check scatter plot, an error histogram and the residual table.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every statistic is also an output number (N, N_OUTSIDE, N_NODATA, ME, MAE, RMSE, STD, MAX_ABS_ERROR, R, R2, NMAD, ACCURACY_95).&lt;/p&gt;</source>
+            <translation>&lt;p&gt;مدل رقومی زمین (DTM) را با نقاط چک مستقل (مثلاً ارتفاع‌های GNSS) مقایسه می‌کند. مدل در محل هر نقطه نمونه‌برداری می‌شود (به‌طور پیش‌فرض دوخطی) و خطاهای e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt; خلاصه می‌شوند: تعداد N، میانگین خطا (اریبی)، میانگین قدرمطلق خطا MAE، جذر میانگین مربعات خطا RMSE، انحراف معیار، بیشینهٔ |e|، ضریب همبستگی پیرسون r و R² (= r²) میان ارتفاع‌های مدل و نقاط چک، NMAD = 1.4826·median|e − median e| (Höhle &amp; Höhle 2009)، و دقت ارتفاعی در سطح اطمینان 95 % = 1.96·RMSE (استاندارد دقت موقعیتی ASPRS 2014، که خطاهای نرمال بدون اریبی را فرض می‌کند؛ صدک 95 درصدی |e| نیز گزارش می‌شود). نقاط چکی که بیرون از مدل یا روی nodata باشند شمرده و کنار گذاشته می‌شوند — هرگز 0 خوانده نمی‌شوند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv ← RMSE، r و گزارشی با نمودار پراکنش و هیستوگرام خطا.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;مدل رقومی زمین&lt;/b&gt; (DTM): لایهٔ رستری؛ BAND (پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط چک&lt;/b&gt; (CHECKPOINTS، اختیاری): لایهٔ نقطه‌ای؛ ارتفاع‌ها از &lt;b&gt;Z_FIELD&lt;/b&gt; یا، اگر خالی باشد، از Z هندسه. &lt;b&gt;ID_FIELD&lt;/b&gt; اختیاری است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;پروندهٔ نقاط چک&lt;/b&gt; (CHECKPOINTS_CSV، اختیاری): متن جداشده با سرستون‌های x/easting، y/northing، z/height (و id/name)، یا ستون‌های id x y z بدون سرستون. لایه یا پرونده را بدهید.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات CSV&lt;/b&gt; (CSV_CRS، اختیاری): سیستم مختصاتِ مختصات پرونده؛ پیش‌فرض = سیستم مختصات DTM.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بازتصویر نقاط چک&lt;/b&gt; (REPROJECT، پیش‌فرض: خیر): وقتی نقاط چک در سیستم مختصاتی غیر از DTM باشند، به آن تبدیل می‌شوند (فقط x و y — ارتفاع‌ها میان دیتوم‌های ارتفاعی تبدیل نمی‌شوند). بدون این گزینه، چنین نقاطی خطا به شمار می‌آیند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;روش نمونه‌برداری&lt;/b&gt; (METHOD، 0 دوخطی (پیش‌فرض)، 1 نزدیک‌ترین سلول).&lt;/li&gt;&lt;li&gt;&lt;b&gt;باقی‌مانده‌ها&lt;/b&gt; (OUTPUT): لایهٔ نقطه‌ای با id، z_check، z_dtm، error، abs_error و status (used / outside DTM / DTM nodata).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML): HTML با آماره‌ها، نمودار پراکنش DTM در برابر نقاط چک، هیستوگرام خطا و جدول باقی‌مانده‌ها.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;هر آماره یک خروجی عددی نیز هست (N، N_OUTSIDE، N_NODATA، ME، MAE، RMSE، STD، MAX_ABS_ERROR، R، R2، NMAD، ACCURACY_95).&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>DTM</source>
+            <translation>مدل رقومی زمین (DTM)</translation>
+        </message>
+        <message>
+            <source>Band</source>
+            <translation>باند</translation>
+        </message>
+        <message>
+            <source>Check points (point layer)</source>
+            <translation>نقاط چک (لایهٔ نقطه‌ای)</translation>
+        </message>
+        <message>
+            <source>Height field (empty = geometry Z)</source>
+            <translation>فیلد ارتفاع (خالی = Z هندسه)</translation>
+        </message>
+        <message>
+            <source>Id field</source>
+            <translation>فیلد شناسه</translation>
+        </message>
+        <message>
+            <source>Check point file (CSV/TXT)</source>
+            <translation>پروندهٔ نقاط چک (CSV/TXT)</translation>
+        </message>
+        <message>
+            <source>CRS of the check point file (default: DTM CRS)</source>
+            <translation>سیستم مختصات پروندهٔ نقاط چک (پیش‌فرض: سیستم مختصات DTM)</translation>
+        </message>
+        <message>
+            <source>Reproject check points to the DTM CRS</source>
+            <translation>بازتصویر نقاط چک به سیستم مختصات DTM</translation>
+        </message>
+        <message>
+            <source>Sampling</source>
+            <translation>روش نمونه‌برداری</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>دوخطی</translation>
+        </message>
+        <message>
+            <source>Nearest cell</source>
+            <translation>نزدیک‌ترین سلول</translation>
+        </message>
+        <message>
+            <source>Residuals</source>
+            <translation>باقی‌مانده‌ها</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Give the check points as a point layer (CHECKPOINTS) or a file (CHECKPOINTS_CSV).</source>
+            <translation>نقاط چک را به‌صورت لایهٔ نقطه‌ای (CHECKPOINTS) یا پرونده (CHECKPOINTS_CSV) بدهید.</translation>
+        </message>
+        <message>
+            <source>Give the check points either as a layer or as a file, not both.</source>
+            <translation>نقاط چک را یا به‌صورت لایه یا به‌صورت پرونده بدهید، نه هر دو.</translation>
+        </message>
+        <message>
+            <source>The check point layer has no Z coordinate; choose the height field (Z_FIELD).</source>
+            <translation>لایهٔ نقاط چک مختصات Z ندارد؛ فیلد ارتفاع (Z_FIELD) را انتخاب کنید.</translation>
+        </message>
+        <message>
+            <source>The check point layer has no points.</source>
+            <translation>لایهٔ نقاط چک هیچ نقطه‌ای ندارد.</translation>
+        </message>
+        <message>
+            <source>check point layer</source>
+            <translation>لایهٔ نقاط چک</translation>
+        </message>
+        <message>
+            <source>check point file</source>
+            <translation>پروندهٔ نقاط چک</translation>
+        </message>
+        <message>
+            <source>The {} is in {} but the DTM is in {}. Reproject the check points first or tick 'Reproject check points to the DTM CRS' (REPROJECT=true; x, y only, heights are not converted). No output was written.</source>
+            <translation>{} در سیستم مختصات {} است ولی مدل رقومی زمین در {} است. ابتدا نقاط چک را بازتصویر کنید یا گزینهٔ 'بازتصویر نقاط چک به سیستم مختصات DTM' را فعال کنید (REPROJECT=true؛ فقط x و y، ارتفاع‌ها تبدیل نمی‌شوند). هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>Check points reprojected from {} to {}</source>
+            <translation>نقاط چک از {} به {} بازتصویر شدند</translation>
+        </message>
+        <message>
+            <source>Check points assumed to be in the DTM's CRS.</source>
+            <translation>فرض شد نقاط چک در سیستم مختصات مدل رقومی زمین هستند.</translation>
+        </message>
+        <message>
+            <source>Choose a DTM raster.</source>
+            <translation>یک رستر مدل رقومی زمین انتخاب کنید.</translation>
+        </message>
+        <message>
+            <source>N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; {} outside, {} on nodata</source>
+            <translation>N = {}، RMSE = {:.4f} متر، ME = {:.4f} متر، r = {:.5f}؛ {} بیرون از مدل، {} روی nodata</translation>
+        </message>
+    </context>
+    <context>
+        <name>GcpAccuracyReportAlgorithm</name>
+        <message>
+            <source>GCP accuracy report</source>
+            <translation>گزارش دقت نقاط کنترل زمینی</translation>
+        </message>
+        <message>
+            <source>georeference,gcp,ground control points,rms,residuals,accuracy,check points,leave-one-out,polynomial,georeferencer</source>
+            <translation>زمین‌مرجع‌سازی,gcp,نقاط کنترل زمینی,rms,باقی‌مانده‌ها,دقت,نقاط چک,حذف‌یکی,چندجمله‌ای,georeferencer</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Judges a set of ground control points without warping: fits polynomials of order 1, 2 and 3, reports the residuals and the paper's criteria for the chosen order, compares the three orders and recommends one.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;مجموعه‌ای از نقاط کنترل زمینی را بدون تبدیل هندسی تصویر ارزیابی می‌کند: چندجمله‌ای‌های درجهٔ 1، 2 و 3 را برازش می‌دهد، باقی‌مانده‌ها و معیارهای مقاله را برای درجهٔ انتخاب‌شده گزارش می‌کند، سه درجه را با هم مقایسه می‌کند و یکی را پیشنهاد می‌دهد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;تصویر&lt;/b&gt; (INPUT، اختیاری): ابعاد تصویر را می‌دهد (نقاط کنترل بیرون از آن خطا به شمار می‌آیند؛ ربع‌ها و نمودار از محدودهٔ آن استفاده می‌کنند). بدون آن، IMAGE_WIDTH و IMAGE_HEIGHT (پیکسل) را بدهید، وگرنه مرکز ثقل نقاط کنترل به کار می‌رود.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>Image width (px) if no image is given</source>
+            <translation>عرض تصویر (پیکسل) اگر تصویری داده نشود</translation>
+        </message>
+        <message>
+            <source>Image height (px) if no image is given</source>
+            <translation>ارتفاع تصویر (پیکسل) اگر تصویری داده نشود</translation>
+        </message>
+        <message>
+            <source>Accuracy report</source>
+            <translation>گزارش دقت</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Residuals table</source>
+            <translation>جدول باقی‌مانده‌ها</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>پرونده‌های CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>Report as JSON</source>
+            <translation>گزارش به قالب JSON</translation>
+        </message>
+        <message>
+            <source>JSON files (*.json)</source>
+            <translation>پرونده‌های JSON (*.json)</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML), &lt;b&gt;residual table&lt;/b&gt; (OUTPUT_CSV: one row per point with v_x, v_y, RMS_i, C_i, pixel residuals, leave-one-out residuals) and &lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: everything, all orders), each optional.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML)، &lt;b&gt;جدول باقی‌مانده‌ها&lt;/b&gt; (OUTPUT_CSV: یک سطر برای هر نقطه با v_x، v_y، RMS_i، C_i، باقی‌مانده‌ها به پیکسل و باقی‌مانده‌های حذف‌یکی) و &lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: همه‌چیز، برای همهٔ درجه‌ها)، همه اختیاری.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, …) for the graphical modeler.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;هر رقم خلاصهٔ نتایج یک خروجی عددی نیز هست (RMS_T، RMS_T_QGIS، GR، SCALE، LOO_RMS_T، CHECK_RMS_T، RECOMMENDED_ORDER، ACCEPTED، RMS_T_ORDER1…3، …) برای طراح گرافیکی مدل.&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>GeomaticsAlgorithm</name>
+        <message>
+            <source>LiDAR ground filtering</source>
+            <translation>فیلتر کردن نقاط زمینی لایدار</translation>
+        </message>
+        <message>
+            <source>Terrain models</source>
+            <translation>مدل‌های رقومی زمین</translation>
+        </message>
+        <message>
+            <source>Image rectification</source>
+            <translation>تصحیح هندسی تصویر</translation>
+        </message>
+        <message>
+            <source>Photogrammetry</source>
+            <translation>فتوگرامتری</translation>
+        </message>
+        <message>
+            <source>Accuracy assessment</source>
+            <translation>ارزیابی دقت</translation>
+        </message>
+        <message>
+            <source>Cancelled by the user; no output was written.</source>
+            <translation>کاربر عملیات را لغو کرد؛ هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>Out of memory. Use a coarser cell size, a smaller extent or fewer points; no output was written.</source>
+            <translation>حافظه کافی نیست. اندازهٔ سلول بزرگ‌تر، محدودهٔ کوچک‌تر یا نقاط کمتری به کار ببرید؛ هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;GCP file&lt;/b&gt; (GCP_FILE): a QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file (mapX,mapY,pixelX,pixelY,enable,…; pixelY is minus the row) or a CSV table with columns id, col,row (or pixel,line; or image_x,image_y in the QGIS sign convention), X,Y (or map_x,map_y / easting,northing) and optional enabled (1/0), role (gcp or check) and weight. Give the file &lt;i&gt;or&lt;/i&gt; a point layer; with neither, the Georeferencer's &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; next to the image is used.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP point layer&lt;/b&gt; (GCP_LAYER): points whose geometry holds the map coordinates (in the layer CRS) with fields for the image column and row (COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD, WEIGHT_FIELD (least-squares weights, e.g. 1/σ²; the report uses them, GDAL's warp fits unweighted).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pixel origin&lt;/b&gt; (PIXEL_ORIGIN, default 0 = corner): 0 — image coordinates in the GDAL/QGIS convention, (0,0) is the top-left corner of the image and the centre of the first pixel is (0.5, 0.5); 1 — integer values are pixel centres (0-based array indices), 0.5 is added. Rows always grow downwards (a negative row column is read as QGIS's −row). .points files are always corner-based.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): CRS of the map coordinates when the file has no '#CRS:' line (CSV files never have one). Missing CRS is an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, 1–3, default 1): 1 affine (≥ 3 GCPs), 2 (≥ 6), 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground resolution GR&lt;/b&gt; (GR, map units per pixel, optional): pixel size on the ground for the criteria; default sqrt|det J| of the affine fit of the GCPs.&lt;/li&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;پروندهٔ نقاط کنترل زمینی&lt;/b&gt; (GCP_FILE): پروندهٔ &lt;i&gt;.points&lt;/i&gt; ابزار Georeferencer در QGIS (mapX,mapY,pixelX,pixelY,enable,…؛ pixelY منفیِ شمارهٔ سطر است) یا جدول CSV با ستون‌های id، col,row (یا pixel,line؛ یا image_x,image_y با قرارداد علامت QGIS)، X,Y (یا map_x,map_y / easting,northing) و ستون‌های اختیاری enabled (1/0)، role (gcp یا check) و weight. پرونده &lt;i&gt;یا&lt;/i&gt; یک لایهٔ نقطه‌ای را بدهید؛ اگر هیچ‌کدام داده نشود، پروندهٔ &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; ابزار Georeferencer در کنار تصویر به کار می‌رود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;لایهٔ نقطه‌ای نقاط کنترل&lt;/b&gt; (GCP_LAYER): نقاطی که هندسه‌شان مختصات نقشه‌ای را (در سیستم مختصات لایه) در خود دارد، با فیلدهایی برای ستون و سطر تصویر (COL_FIELD، ROW_FIELD) و فیلدهای اختیاری ID_FIELD، ENABLED_FIELD، ROLE_FIELD، WEIGHT_FIELD (وزن‌های کمترین مربعات، مثلاً 1/σ²؛ گزارش از آن‌ها استفاده می‌کند، اما warp در GDAL بدون وزن برازش می‌دهد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مبدأ پیکسل&lt;/b&gt; (PIXEL_ORIGIN، پیش‌فرض 0 = گوشه): 0 — مختصات تصویر با قرارداد GDAL/QGIS، که در آن (0,0) گوشهٔ بالا-چپ تصویر و مرکز نخستین پیکسل (0.5, 0.5) است؛ 1 — مقادیر صحیح مراکز پیکسل‌اند (اندیس‌های آرایه از 0)، و 0.5 به آن‌ها افزوده می‌شود. سطرها همیشه رو به پایین افزایش می‌یابند (ستون سطرِ منفی به‌صورت −row در قرارداد QGIS خوانده می‌شود). پرونده‌های .points همیشه بر پایهٔ گوشه‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات نقاط کنترل&lt;/b&gt; (GCP_CRS): سیستم مختصاتِ مختصات نقشه‌ای وقتی پرونده خط '#CRS:' ندارد (پرونده‌های CSV هرگز آن را ندارند). نبودِ سیستم مختصات خطا است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجهٔ چندجمله‌ای&lt;/b&gt; (ORDER، 1–3، پیش‌فرض 1): 1 آفین (≥ 3 نقطهٔ کنترل)، 2 (≥ 6)، 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;قدرت تفکیک زمینی GR&lt;/b&gt; (GR، واحد نقشه بر پیکسل، اختیاری): اندازهٔ پیکسل روی زمین برای معیارها؛ پیش‌فرض sqrt|det J| برازش آفین نقاط کنترل.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;&lt;b&gt;Criteria&lt;/b&gt; (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band 4·GR … 6·GR for RMS_T; per-point limit 0.25 mm·S = 5·GR; ≥ 68 % (strict 90 %) of points within RMS_T; no directional bias (quadrant sign balance, inner vs edge radial residuals, residual-vector plot). Also: independent check points (role 'check', never fitted), leave-one-out residuals, orders 1–3 side by side with a recommended order (never one whose redundancy n − N is below max(2, ⌈N/2⌉)) and suggested points to drop. Residuals are predicted − given, in map units and pixels.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;&lt;b&gt;معیارها&lt;/b&gt; (مجلهٔ علوم مهندسی دانشگاه تشرین 38(2)، 2016): RMS_i هر نقطه و سهم آن C_i = RMS_i/RMS_T؛ RMS_x، RMS_y و RMS_T با مقسوم‌علیه n (و، با برچسب جداگانه، n − N مانند Georeferencer در QGIS)؛ مقیاس نقشه S = 20000·GR و بازهٔ تلورانس 4·GR … 6·GR برای RMS_T؛ حد مجاز هر نقطه 0.25 mm·S = 5·GR؛ ≥ 68 % (در حالت سخت‌گیرانه 90 %) نقاط در محدودهٔ RMS_T؛ نبودِ سوگیری جهت‌دار (توازن علامت‌ها در ربع‌ها، باقی‌مانده‌های شعاعی نقاط درونی در برابر نقاط لبه، نمودار بردارهای باقی‌مانده). همچنین: نقاط چک مستقل (نقش 'check'، هرگز در برازش وارد نمی‌شوند)، باقی‌مانده‌های حذف‌یکی، درجه‌های 1–3 در کنار هم با یک درجهٔ پیشنهادی (هرگز درجه‌ای که افزونگی n − N آن کمتر از max(2, ⌈N/2⌉) باشد) و نقاط پیشنهادی برای حذف. باقی‌مانده‌ها برابر مقدار پیش‌بینی‌شده − مقدار داده‌شده‌اند، به واحد نقشه و پیکسل.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Returns filtered&lt;/b&gt; (RETURNS, default 0 = all): 0 all returns are classified and serve as neighbours (the forest study); 1 last returns only: only last (or single) returns are classified and only they may reject others; first and intermediate returns of multi-return pulses get class 1. Files without return numbers (e.g. the ISPRS samples) count every point as a last return.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours (multipath) get class 7 and take no part in the filter — one stray low point would reject every ground point within r. Advanced: NOISE_RADIUS (m, default 5) and NOISE_THRESHOLD (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default 0): 0 exact Vosselman rule; 1 terrain-adaptive (&lt;i&gt;this toolbox's extension&lt;/i&gt;): the rule is applied to heights above a smooth low terrain trend (minimum grid of TREND_CELL m, opening and mean filter of TREND_WINDOW m, defaults 10 and 60), so natural slopes steeper than θ are not rejected (ISPRS samp11, steep: total error 21.0 % → 16.4 % at the defaults). Because the terrain slope is removed first, lower θ (about 30–35°) usually works best in this mode.&lt;/li&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;بازگشت‌های فیلترشونده&lt;/b&gt; (RETURNS، پیش‌فرض 0 = همه): 0 همهٔ بازگشت‌ها طبقه‌بندی می‌شوند و به‌عنوان همسایه به کار می‌روند (مطالعهٔ جنگل)؛ 1 فقط بازگشت‌های آخر: فقط بازگشت‌های آخر (یا تکی) طبقه‌بندی می‌شوند و فقط آن‌ها می‌توانند نقاط دیگر را رد کنند؛ بازگشت‌های اول و میانیِ پالس‌های چندبازگشتی کلاس 1 می‌گیرند. در پرونده‌های بدون شمارهٔ بازگشت (مثلاً نمونه‌های ISPRS) هر نقطه بازگشت آخر به شمار می‌آید.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حذف نقاط پرت پایین در آغاز&lt;/b&gt; (NOISE، پیش‌فرض: بله): نقاطی که بسیار پایین‌تر از همسایه‌های خود هستند (چندمسیری) کلاس 7 می‌گیرند و در فیلتر شرکت نمی‌کنند — یک نقطهٔ پایینِ سرگردان به‌تنهایی همهٔ نقاط زمینی درون r را رد می‌کرد. پیشرفته: NOISE_RADIUS (متر، پیش‌فرض 5) و NOISE_THRESHOLD (متر، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حالت&lt;/b&gt; (MODE، پیش‌فرض 0): 0 قاعدهٔ دقیق Vosselman؛ 1 سازگار با ناهمواری زمین (&lt;i&gt;افزودهٔ این جعبه‌ابزار&lt;/i&gt;): قاعده روی ارتفاع‌ها نسبت به یک روند هموار و پایینِ زمین اعمال می‌شود (شبکهٔ کمینه با سلول TREND_CELL متر، بازشایی (opening) و فیلتر میانگین با پنجرهٔ TREND_WINDOW متر، پیش‌فرض‌ها 10 و 60)، پس شیب‌های طبیعیِ تندتر از θ رد نمی‌شوند (ISPRS samp11، پرشیب: خطای کل 21.0 % → 16.4 % با پیش‌فرض‌ها). چون شیب زمین از پیش حذف می‌شود، در این حالت θ کمتر (حدود 30–35°) معمولاً بهترین نتیجه را می‌دهد.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): a .las or .laz file (LAS 1.0–1.4), e.g. the output of a ground filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes used&lt;/b&gt; (CLASSES, default &lt;code&gt;2&lt;/code&gt; = ground): comma-separated LAS classes interpolated; empty = every point. No point of these classes → error that lists the classes present.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 1.0, &amp;gt; 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extent&lt;/b&gt; (EXTENT, optional): default = the selected points' extent. The grid is snapped outward to multiples of the cell size so that tiles line up.&lt;/li&gt;&lt;li&gt;&lt;b&gt;CRS&lt;/b&gt; (CRS, optional): overrides the CRS of the LAS file. If the file has no CRS and none is given the algorithm stops with an error (a DTM without a CRS is a common source of misplaced data).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum distance to data&lt;/b&gt; (MAX_DISTANCE, m, default 0 = automatic: five mean point spacings, at least two cells): cells whose nearest point is farther are nodata, so no terrain is invented under water, removed buildings or missing strips.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill data gaps&lt;/b&gt; (FILL_GAPS, default no): interpolate every cell however far from the data (ignores MAX_DISTANCE).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output&lt;/b&gt; (OUTPUT): GeoTIFF (float32, DEFLATE, nodata −9999) in the input CRS; values belong to cell centres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML report.&lt;/li&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las یا .laz (LAS 1.0–1.4)، مثلاً خروجی یک فیلتر زمینی.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های به‌کاررفته&lt;/b&gt; (CLASSES، پیش‌فرض &lt;code&gt;2&lt;/code&gt; = زمینی): کلاس‌های LAS که درون‌یابی می‌شوند، جداشده با ویرگول؛ خالی = همهٔ نقاط. نبودِ هیچ نقطه‌ای از این کلاس‌ها → خطایی که کلاس‌های موجود را فهرست می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض 1.0، &amp;gt; 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;محدوده&lt;/b&gt; (EXTENT، اختیاری): پیش‌فرض = محدودهٔ نقاط انتخاب‌شده. شبکه رو به بیرون روی مضرب‌های اندازهٔ سلول تنظیم می‌شود تا کاشی‌ها با هم جفت شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات&lt;/b&gt; (CRS، اختیاری): سیستم مختصات پروندهٔ LAS را جایگزین می‌کند. اگر پرونده سیستم مختصات نداشته باشد و هیچ‌کدام داده نشود، الگوریتم با خطا متوقف می‌شود (مدل رقومی زمین بدون سیستم مختصات منبع رایج داده‌های نابه‌جا است).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بیشینهٔ فاصله تا داده&lt;/b&gt; (MAX_DISTANCE، متر، پیش‌فرض 0 = خودکار: پنج برابر میانگین فاصلهٔ نقاط، دست‌کم دو سلول): سلول‌هایی که نزدیک‌ترین نقطه‌شان دورتر باشد nodata می‌شوند، تا زیر آب، ساختمان‌های حذف‌شده یا نوارهای گمشده زمینی ساختگی پدید نیاید.&lt;/li&gt;&lt;li&gt;&lt;b&gt;پر کردن شکاف‌های داده&lt;/b&gt; (FILL_GAPS، پیش‌فرض: خیر): درون‌یابی هر سلول، هر قدر هم از داده دور باشد (MAX_DISTANCE را نادیده می‌گیرد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی&lt;/b&gt; (OUTPUT): GeoTIFF (float32، DEFLATE، nodata −9999) در سیستم مختصات ورودی؛ مقادیر به مراکز سلول‌ها تعلق دارند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): گزارش HTML.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>Remove low outliers first (class 7)</source>
+            <translation>حذف نقاط پرت پایین در آغاز (کلاس 7)</translation>
+        </message>
+        <message>
+            <source>Low-outlier search cell (m)</source>
+            <translation>سلول جست‌وجوی نقاط پرت پایین (متر)</translation>
+        </message>
+        <message>
+            <source>Low-outlier depth below neighbours (m)</source>
+            <translation>عمق نقطهٔ پرت پایین نسبت به همسایه‌ها (متر)</translation>
+        </message>
+    </context>
+    <context>
+        <name>GeomaticsProvider</name>
+        <message>
+            <source>Geomatics Toolbox</source>
+            <translation>جعبه‌ابزار ژئوماتیک</translation>
+        </message>
+    </context>
+    <context>
+        <name>GroundFilterAccuracyAlgorithm</name>
+        <message>
+            <source>Ground filter accuracy</source>
+            <translation>دقت فیلتر نقاط زمینی</translation>
+        </message>
+        <message>
+            <source>lidar,ground,filter,accuracy,type i,type ii,total error,kappa,isprs,reference,confusion matrix</source>
+            <translation>لایدار,زمین,فیلتر,دقت,نوع اول,نوع دوم,خطای کل,کاپا,isprs,مرجع,ماتریس درهم‌ریختگی</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Compares a filtered point cloud with reference labels, with the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix a (ground kept), b (ground rejected), c (object accepted), d (object rejected), Type I = b/(a+b), Type II = c/(c+d), total = (b+c)/n and Cohen's kappa.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (the ISPRS reference sample, class 2 = ground) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Filtered point cloud&lt;/b&gt; (INPUT, LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Class dimension of the filtered cloud&lt;/b&gt; (FIELD, default classification) and its &lt;b&gt;ground classes&lt;/b&gt; (GROUND_CLASSES, default 2; a list such as 2,8 is accepted). Every other class (1, 7 noise, 0...) counts as object.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference point cloud&lt;/b&gt; (REFERENCE, optional): the same points in the same order (checked: equal count and coordinates). When empty, the reference labels are read from another dimension of INPUT.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference class dimension&lt;/b&gt; (REFERENCE_FIELD, default classification; e.g. user_data or an extra dimension when there is no reference cloud) and its &lt;b&gt;ground classes&lt;/b&gt; (REFERENCE_GROUND_CLASSES, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): the matrix, the errors, and the reference labels of every filtered class.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Per-point error layer&lt;/b&gt; (ERROR_OUTPUT, optional LAS/LAZ): a copy of INPUT, every attribute unchanged except &lt;i&gt;user_data&lt;/i&gt; = 0 correct, 1 Type I (ground rejected), 2 Type II (object accepted); style the point cloud layer by user_data to map where the filter fails.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs A, B, C, D, N, TYPE1, TYPE2, TOTAL and KAPPA are numbers for the graphical modeler.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;یک ابر نقاط فیلترشده را با برچسب‌های مرجع مقایسه می‌کند، با سنجه‌های آزمون فیلترهای ISPRS (Sithole &amp; Vosselman 2004): ماتریس متقاطع a (زمینیِ نگه‌داشته)، b (زمینیِ ردشده)، c (عارضهٔ پذیرفته‌شده)، d (عارضهٔ ردشده)، نوع اول = b/(a+b)، نوع دوم = c/(c+d)، کل = (b+c)/n و ضریب کاپای کوهن.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (نمونهٔ مرجع ISPRS، کلاس 2 = زمین) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط فیلترشده&lt;/b&gt; (INPUT، LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد کلاس ابر فیلترشده&lt;/b&gt; (FIELD، پیش‌فرض classification) و &lt;b&gt;کلاس‌های زمینی&lt;/b&gt; آن (GROUND_CLASSES، پیش‌فرض 2؛ فهرستی مانند 2,8 هم پذیرفته می‌شود). هر کلاس دیگر (1، 7 نویز، 0...) عارضه به شمار می‌آید.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر نقاط مرجع&lt;/b&gt; (REFERENCE، اختیاری): همان نقاط با همان ترتیب (بررسی می‌شود: تعداد و مختصات برابر). اگر خالی باشد، برچسب‌های مرجع از بُعد دیگری از INPUT خوانده می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد کلاس مرجع&lt;/b&gt; (REFERENCE_FIELD، پیش‌فرض classification؛ مثلاً user_data یا یک بُعد اضافی وقتی ابر مرجعی در کار نیست) و &lt;b&gt;کلاس‌های زمینی&lt;/b&gt; آن (REFERENCE_GROUND_CLASSES، پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): ماتریس، خطاها و برچسب‌های مرجعِ هر کلاس فیلترشده.&lt;/li&gt;&lt;li&gt;&lt;b&gt;لایهٔ خطای نقطه‌به‌نقطه&lt;/b&gt; (ERROR_OUTPUT، LAS/LAZ اختیاری): رونوشتی از INPUT که همهٔ ویژگی‌ها در آن بدون تغییر است جز &lt;i&gt;user_data&lt;/i&gt; = 0 درست، 1 نوع اول (زمینیِ ردشده)، 2 نوع دوم (عارضهٔ پذیرفته‌شده)؛ لایهٔ ابر نقاط را بر پایهٔ user_data نمادپردازی کنید تا ببینید فیلتر کجا خطا می‌کند.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;خروجی‌های A، B، C، D، N، TYPE1، TYPE2، TOTAL و KAPPA اعدادی برای طراح گرافیکی مدل هستند.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Filtered point cloud (LAS/LAZ)</source>
+            <translation>ابر نقاط فیلترشده (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Class dimension of the filtered cloud</source>
+            <translation>بُعد کلاس ابر فیلترشده</translation>
+        </message>
+        <message>
+            <source>Ground classes of the filtered cloud</source>
+            <translation>کلاس‌های زمینی ابر فیلترشده</translation>
+        </message>
+        <message>
+            <source>Reference point cloud (same points, same order)</source>
+            <translation>ابر نقاط مرجع (همان نقاط، با همان ترتیب)</translation>
+        </message>
+        <message>
+            <source>Reference class dimension</source>
+            <translation>بُعد کلاس مرجع</translation>
+        </message>
+        <message>
+            <source>Reference ground classes</source>
+            <translation>کلاس‌های زمینی مرجع</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Per-point error layer (user_data: 0 correct, 1 Type I, 2 Type II)</source>
+            <translation>لایهٔ خطای نقطه‌به‌نقطه (user_data: 0 درست، 1 نوع اول، 2 نوع دوم)</translation>
+        </message>
+        <message>
+            <source>The error layer must end in .las or .laz: {p}</source>
+            <translation>پروندهٔ لایهٔ خطا باید پسوند .las یا .laz داشته باشد: {p}</translation>
+        </message>
+    </context>
+    <context>
+        <name>GsdBatchAlgorithm</name>
+        <message>
+            <source>GSD and photogrammetric accuracy calculator (batch table)</source>
+            <translation>محاسبه‌گر GSD و دقت فتوگرامتری (جدول دسته‌ای)</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Runs the GSD / accuracy calculator for every row of a table (CSV, spreadsheet or any layer) and writes a table with the inputs and all results.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Input columns&lt;/b&gt; (case-insensitive): &lt;i&gt;camera&lt;/i&gt; (optional preset key: nikon_p100, dji_p4rtk, dji_p1_35, phaseone_ixm100_80), &lt;i&gt;distance&lt;/i&gt; (m, required), &lt;i&gt;sensor_width&lt;/i&gt; (mm), &lt;i&gt;image_width&lt;/i&gt; (px), &lt;i&gt;focal_length&lt;/i&gt; (mm) — required unless a camera preset is given — and optionally sensor_height, image_height, target_gsd, k_m, k_s, pyramid_level, subsampling_step, observed_sx, observed_sy, observed_sz, observed_sxyz, observed_dense_std, forward_overlap, side_overlap, stereo_base (units as in the single calculator).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output&lt;/b&gt;: the input columns plus gsd_cm, footprint_width_m, sigma_xyz_mm, dense_resolution_cm and every other result. A row with an invalid value stops the run with an error naming the row and column.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;محاسبه‌گر GSD و دقت را برای هر ردیف یک جدول (CSV، صفحه‌گسترده یا هر لایه) اجرا می‌کند و جدولی با ورودی‌ها و همهٔ نتایج می‌نویسد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;ستون‌های ورودی&lt;/b&gt; (بدون حساسیت به حروف بزرگ و کوچک): &lt;i&gt;camera&lt;/i&gt; (اختیاری، کلید دوربین: nikon_p100، dji_p4rtk، dji_p1_35، phaseone_ixm100_80)، &lt;i&gt;distance&lt;/i&gt; (متر، الزامی)، &lt;i&gt;sensor_width&lt;/i&gt; (میلی‌متر)، &lt;i&gt;image_width&lt;/i&gt; (پیکسل)، &lt;i&gt;focal_length&lt;/i&gt; (میلی‌متر) — الزامی مگر آنکه دوربین داده شود — و به‌اختیار sensor_height، image_height، target_gsd، k_m، k_s، pyramid_level، subsampling_step، observed_sx، observed_sy، observed_sz، observed_sxyz، observed_dense_std، forward_overlap، side_overlap، stereo_base (با همان واحدهای محاسبه‌گر تکی).&lt;/p&gt;&lt;p&gt;&lt;b&gt;خروجی&lt;/b&gt;: ستون‌های ورودی به‌علاوهٔ gsd_cm، footprint_width_m، sigma_xyz_mm، dense_resolution_cm و دیگر نتایج. ردیفی با مقدار نامعتبر اجرا را با پیامی که ردیف و ستون را نام می‌برد متوقف می‌کند.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Table of cameras and distances</source>
+            <translation>جدول دوربین‌ها و فاصله‌ها</translation>
+        </message>
+        <message>
+            <source>Round GSD to 0.01 cm/px like the paper</source>
+            <translation>گرد کردن GSD به ۰٫۰۱ سانتی‌متر/پیکسل مانند مقاله</translation>
+        </message>
+        <message>
+            <source>GSD results</source>
+            <translation>نتایج GSD</translation>
+        </message>
+        <message>
+            <source>The table has no 'distance' column (m); columns found: {0}.</source>
+            <translation>جدول ستون 'distance' (متر) ندارد؛ ستون‌های موجود: {0}.</translation>
+        </message>
+        <message>
+            <source>Cancelled by the user.</source>
+            <translation>کاربر عملیات را لغو کرد.</translation>
+        </message>
+        <message>
+            <source>Row {row}: unknown camera '{cam}'; known: {known}.</source>
+            <translation>ردیف {row}: دوربین ناشناختهٔ '{cam}'؛ دوربین‌های شناخته: {known}.</translation>
+        </message>
+        <message>
+            <source>Row {row}, column '{col}': '{val}' is not a number.</source>
+            <translation>ردیف {row}، ستون '{col}': مقدار '{val}' عدد نیست.</translation>
+        </message>
+        <message>
+            <source>Row {row}: missing {cols}; give the columns or a camera preset.</source>
+            <translation>ردیف {row}: مقادیر {cols} وجود ندارد؛ ستون‌ها یا یک دوربین از پیش تعریف‌شده بدهید.</translation>
+        </message>
+        <message>
+            <source>Row {row}: {err}</source>
+            <translation>ردیف {row}: {err}</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;&lt;b&gt;گرد کردن GSD مانند مقاله&lt;/b&gt; (ROUND_GSD، پیش‌فرض: خیر): GSD را پیش از محاسبهٔ کمیت‌های وابسته به ۰٫۰۱ سانتی‌متر/پیکسل گرد می‌کند.&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>GsdCalculatorAlgorithm</name>
+        <message>
+            <source>GSD and photogrammetric accuracy calculator</source>
+            <translation>محاسبه‌گر GSD (فاصلهٔ نمونه‌برداری زمینی) و دقت فتوگرامتری</translation>
+        </message>
+        <message>
+            <source>gsd,ground sampling distance,flying height,footprint,accuracy,photogrammetry,drone,flight planning,dense matching</source>
+            <translation>gsd,فاصله نمونه‌برداری زمینی,ارتفاع پرواز,پوشش زمینی,دقت,فتوگرامتری,پهپاد,طراحی پرواز,تناظریابی متراکم</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Computes the ground sampling distance (GSD) of a camera at a given distance, the image footprint, the theoretical accuracy of phototriangulation and of a dense-matching point cloud, and compares observed accuracies with the theory (Al Khalil 2019).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Formulas&lt;/b&gt;: GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;); footprint = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;; σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD; σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;; matching step P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;; dense resolution R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt; (the paper's Nikon Coolpix P100): DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 gives GSD 0.21455 cm/px, σ&lt;sub&gt;xyz&lt;/sub&gt; 1.287 mm (1.26 mm with ROUND_GSD), R&lt;sub&gt;theo&lt;/sub&gt; 0.858 cm, footprint 7.827 m.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Camera preset&lt;/b&gt; (CAMERA, default Custom): fills sensor width/height, image width/height and focal length; values you enter override the preset.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance&lt;/b&gt; (DISTANCE, m): camera–object distance or flying height above ground. Required, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor width&lt;/b&gt; (SENSOR_WIDTH, mm), &lt;b&gt;Image width&lt;/b&gt; (IMAGE_WIDTH, px), &lt;b&gt;Focal length&lt;/b&gt; (FOCAL_LENGTH, mm, the true focal length, not the 35 mm equivalent): required with the Custom camera, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor height&lt;/b&gt; (SENSOR_HEIGHT, mm) / &lt;b&gt;Image height&lt;/b&gt; (IMAGE_HEIGHT, px): optional, for the footprint height and flight spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Target GSD&lt;/b&gt; (TARGET_GSD, cm/px): optional; gives the distance or flying height that achieves it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (K_M, px, default 0.3; 0.13 for an expert operator) and &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (K_S, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pyramid level N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (PYRAMID_LEVEL, default 0.5, a fraction in (0, 1], or a percentage in (0, 100] with PYRAMID_PERCENT) and &lt;b&gt;subsampling step T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (SUBSAMPLING_STEP, px, ≥ 1, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Observed σx, σy, σz, σxyz&lt;/b&gt; (mm) and &lt;b&gt;observed dense-cloud std&lt;/b&gt; (cm): optional; give the observed/theoretical ratios.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extension&lt;/b&gt; (not in the paper): stereo base (STEREO_BASE, m) → normal-case σ&lt;sub&gt;Z&lt;/sub&gt; = (D/B)(D/c)σ&lt;sub&gt;image&lt;/sub&gt; with σ&lt;sub&gt;image&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt; pixels; forward/side overlap (%) → exposure and line spacing (image height along track, width across track).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): optional HTML report.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every result is also an output number, so the graphical modeler can chain it.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;فاصلهٔ نمونه‌برداری زمینی (GSD) یک دوربین در فاصلهٔ معین، پوشش زمینی تصویر، دقت نظری مثلث‌بندی هوایی و ابر نقاط حاصل از تناظریابی متراکم را محاسبه می‌کند و دقت مشاهده‌شده را با مقدار نظری می‌سنجد (الخلیل ۲۰۱۹).&lt;/p&gt;&lt;p&gt;&lt;b&gt;فرمول‌ها&lt;/b&gt;: GSD [سانتی‌متر/پیکسل] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;)؛ پوشش = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;؛ σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD؛ σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;؛ گام تناظریابی P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;؛ تفکیک نظری ابر R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt; (دوربین Nikon Coolpix P100 مقاله): DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 نتیجه می‌دهد GSD = 0.21455 سانتی‌متر/پیکسل، σ&lt;sub&gt;xyz&lt;/sub&gt; = 1.287 میلی‌متر (1.26 با ROUND_GSD)، R&lt;sub&gt;theo&lt;/sub&gt; = 0.858 سانتی‌متر، پوشش 7.827 متر.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;دوربین از پیش تعریف‌شده&lt;/b&gt; (CAMERA، پیش‌فرض: سفارشی): عرض و ارتفاع حسگر، ابعاد تصویر و فاصلهٔ کانونی را پر می‌کند؛ مقادیری که وارد کنید بر آن مقدم‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;فاصله&lt;/b&gt; (DISTANCE، متر): فاصلهٔ دوربین تا شیء یا ارتفاع پرواز از زمین. الزامی، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عرض حسگر&lt;/b&gt; (SENSOR_WIDTH، میلی‌متر)، &lt;b&gt;عرض تصویر&lt;/b&gt; (IMAGE_WIDTH، پیکسل)، &lt;b&gt;فاصلهٔ کانونی&lt;/b&gt; (FOCAL_LENGTH، میلی‌متر، مقدار واقعی نه معادل ۳۵ میلی‌متری): برای دوربین سفارشی الزامی، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ارتفاع حسگر&lt;/b&gt; (SENSOR_HEIGHT، میلی‌متر) / &lt;b&gt;ارتفاع تصویر&lt;/b&gt; (IMAGE_HEIGHT، پیکسل): اختیاری، برای طول پوشش و فواصل پرواز.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD هدف&lt;/b&gt; (TARGET_GSD، سانتی‌متر/پیکسل): اختیاری؛ فاصله یا ارتفاع پروازی را که به آن می‌رسد می‌دهد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گرد کردن GSD مانند مقاله&lt;/b&gt; (ROUND_GSD، پیش‌فرض: خیر): GSD را پیش از محاسبهٔ کمیت‌های وابسته به ۰٫۰۱ سانتی‌متر/پیکسل گرد می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (K_M، پیکسل، پیش‌فرض 0.3؛ 0.13 برای اپراتور خبره) و &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (K_S، پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;سطح هرم N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (PYRAMID_LEVEL، پیش‌فرض 0.5، کسری در (0، 1]، یا درصدی در (0، 100] با PYRAMID_PERCENT) و &lt;b&gt;گام نمونه‌برداری T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (SUBSAMPLING_STEP، پیکسل، ≥ 1، پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;σx، σy، σz و σxyz مشاهده‌شده&lt;/b&gt; (میلی‌متر) و &lt;b&gt;انحراف معیار ابر متراکم&lt;/b&gt; (سانتی‌متر): اختیاری؛ نسبت مشاهده‌شده به نظری را می‌دهند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;افزوده&lt;/b&gt; (نه در مقاله): طول باز استریو (STEREO_BASE، متر) ← σ&lt;sub&gt;Z&lt;/sub&gt; = (D/B)(D/c)σ&lt;sub&gt;image&lt;/sub&gt; در حالت نرمال با σ&lt;sub&gt;image&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt; پیکسل؛ پوشش طولی/عرضی (%) ← فاصلهٔ نوردهی‌ها و خطوط پرواز (ارتفاع تصویر در امتداد پرواز، عرض آن عمود بر پرواز).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML): گزارش HTML اختیاری.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;هر نتیجه یک خروجی عددی نیز هست تا در طراح گرافیکی مدل زنجیره شود.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Custom (enter the values below)</source>
+            <translation>سفارشی (مقادیر زیر را وارد کنید)</translation>
+        </message>
+        <message>
+            <source>Camera preset</source>
+            <translation>دوربین از پیش تعریف‌شده</translation>
+        </message>
+        <message>
+            <source>Camera–object distance / flying height (m)</source>
+            <translation>فاصلهٔ دوربین تا شیء / ارتفاع پرواز (متر)</translation>
+        </message>
+        <message>
+            <source>Sensor width (mm)</source>
+            <translation>عرض حسگر (میلی‌متر)</translation>
+        </message>
+        <message>
+            <source>Image width (px)</source>
+            <translation>عرض تصویر (پیکسل)</translation>
+        </message>
+        <message>
+            <source>Focal length, true (mm)</source>
+            <translation>فاصلهٔ کانونی واقعی (میلی‌متر)</translation>
+        </message>
+        <message>
+            <source>Sensor height (mm)</source>
+            <translation>ارتفاع حسگر (میلی‌متر)</translation>
+        </message>
+        <message>
+            <source>Image height (px)</source>
+            <translation>ارتفاع تصویر (پیکسل)</translation>
+        </message>
+        <message>
+            <source>Target GSD (cm/px)</source>
+            <translation>GSD هدف (سانتی‌متر/پیکسل)</translation>
+        </message>
+        <message>
+            <source>Round GSD to 0.01 cm/px like the paper</source>
+            <translation>گرد کردن GSD به ۰٫۰۱ سانتی‌متر/پیکسل مانند مقاله</translation>
+        </message>
+        <message>
+            <source>Measurement factor k_m (px)</source>
+            <translation>ضریب اندازه‌گیری k_m (پیکسل)</translation>
+        </message>
+        <message>
+            <source>Safety factor k_s</source>
+            <translation>ضریب اطمینان k_s</translation>
+        </message>
+        <message>
+            <source>Dense matching pyramid level N_p (fraction, or % if checked below)</source>
+            <translation>سطح هرم تصویر در تناظریابی متراکم N_p (کسر، یا درصد اگر گزینهٔ زیر فعال باشد)</translation>
+        </message>
+        <message>
+            <source>Pyramid level is a percentage</source>
+            <translation>سطح هرم به درصد است</translation>
+        </message>
+        <message>
+            <source>Dense matching subsampling step T_s (px)</source>
+            <translation>گام نمونه‌برداری تناظریابی متراکم T_s (پیکسل)</translation>
+        </message>
+        <message>
+            <source>Observed σx (mm)</source>
+            <translation>σx مشاهده‌شده (میلی‌متر)</translation>
+        </message>
+        <message>
+            <source>Observed σy (mm)</source>
+            <translation>σy مشاهده‌شده (میلی‌متر)</translation>
+        </message>
+        <message>
+            <source>Observed σz (mm)</source>
+            <translation>σz مشاهده‌شده (میلی‌متر)</translation>
+        </message>
+        <message>
+            <source>Observed σxyz (mm)</source>
+            <translation>σxyz مشاهده‌شده (میلی‌متر)</translation>
+        </message>
+        <message>
+            <source>Observed dense-cloud std (cm)</source>
+            <translation>انحراف معیار مشاهده‌شدهٔ ابر نقاط متراکم (سانتی‌متر)</translation>
+        </message>
+        <message>
+            <source>Stereo base B (m) [extension]</source>
+            <translation>طول باز استریو B (متر) [افزوده]</translation>
+        </message>
+        <message>
+            <source>Forward overlap (%) [extension]</source>
+            <translation>پوشش طولی (%) [افزوده]</translation>
+        </message>
+        <message>
+            <source>Side overlap (%) [extension]</source>
+            <translation>پوشش عرضی (%) [افزوده]</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>{name} ({unit}) is required with the Custom camera: enter it or choose a camera preset.</source>
+            <translation>مقدار {name} ({unit}) برای دوربین سفارشی لازم است: آن را وارد کنید یا یک دوربین از پیش تعریف‌شده برگزینید.</translation>
+        </message>
+        <message>
+            <source>DISTANCE (m) is required.</source>
+            <translation>فاصلهٔ DISTANCE (متر) لازم است.</translation>
+        </message>
+        <message>
+            <source>GSD used</source>
+            <translation>GSD به‌کاررفته</translation>
+        </message>
+        <message>
+            <source>GSD, unrounded</source>
+            <translation>GSD بدون گرد کردن</translation>
+        </message>
+        <message>
+            <source>Pixel pitch</source>
+            <translation>اندازهٔ پیکسل روی حسگر</translation>
+        </message>
+        <message>
+            <source>Footprint width</source>
+            <translation>عرض پوشش زمینی</translation>
+        </message>
+        <message>
+            <source>Footprint height</source>
+            <translation>طول پوشش زمینی</translation>
+        </message>
+        <message>
+            <source>Image measurement precision σ_meas</source>
+            <translation>دقت اندازه‌گیری روی تصویر σ_meas</translation>
+        </message>
+        <message>
+            <source>Theoretical phototriangulation accuracy σ_xyz</source>
+            <translation>دقت نظری مثلث‌بندی هوایی σ_xyz</translation>
+        </message>
+        <message>
+            <source>Dense matching step P</source>
+            <translation>گام تناظریابی متراکم P</translation>
+        </message>
+        <message>
+            <source>Theoretical dense-cloud resolution R_theo</source>
+            <translation>تفکیک نظری ابر نقاط متراکم R_theo</translation>
+        </message>
+        <message>
+            <source>Distance for the target GSD</source>
+            <translation>فاصلهٔ لازم برای GSD هدف</translation>
+        </message>
+        <message>
+            <source>Observed σxyz</source>
+            <translation>σxyz مشاهده‌شده</translation>
+        </message>
+        <message>
+            <source>Observed / theoretical σxyz</source>
+            <translation>نسبت σxyz مشاهده‌شده به نظری</translation>
+        </message>
+        <message>
+            <source>Observed dense std / R_theo</source>
+            <translation>نسبت انحراف معیار ابر متراکم به R_theo</translation>
+        </message>
+        <message>
+            <source>Stereo base (extension)</source>
+            <translation>طول باز استریو (افزوده)</translation>
+        </message>
+        <message>
+            <source>Stereo planimetric precision (extension)</source>
+            <translation>دقت مسطحاتی استریو (افزوده)</translation>
+        </message>
+        <message>
+            <source>Stereo depth precision σ_Z (extension)</source>
+            <translation>دقت عمق استریو σ_Z (افزوده)</translation>
+        </message>
+        <message>
+            <source>Exposure spacing (extension)</source>
+            <translation>فاصلهٔ نوردهی‌ها (افزوده)</translation>
+        </message>
+        <message>
+            <source>Flight-line spacing (extension)</source>
+            <translation>فاصلهٔ خطوط پرواز (افزوده)</translation>
+        </message>
+        <message>
+            <source>Distance</source>
+            <translation>فاصله</translation>
+        </message>
+        <message>
+            <source>Sensor width</source>
+            <translation>عرض حسگر</translation>
+        </message>
+        <message>
+            <source>Image width</source>
+            <translation>عرض تصویر</translation>
+        </message>
+        <message>
+            <source>Focal length</source>
+            <translation>فاصلهٔ کانونی</translation>
+        </message>
+        <message>
+            <source>quantity</source>
+            <translation>کمیت</translation>
+        </message>
+        <message>
+            <source>value</source>
+            <translation>مقدار</translation>
+        </message>
+        <message>
+            <source>unit</source>
+            <translation>واحد</translation>
+        </message>
+        <message>
+            <source>Formulas and defaults from Al Khalil (2019); the paper finds observed phototriangulation accuracy about 3–5 times the theoretical value. Items marked (extension) are not in the paper.</source>
+            <translation>فرمول‌ها و مقادیر پیش‌فرض از الخلیل (۲۰۱۹)؛ مقاله دقت مشاهده‌شدهٔ مثلث‌بندی را حدود ۳ تا ۵ برابر مقدار نظری یافته است. موارد علامت‌خورده با (افزوده) در مقاله نیستند.</translation>
+        </message>
+        <message>
+            <source>GSD and photogrammetric accuracy</source>
+            <translation>GSD و دقت فتوگرامتری</translation>
+        </message>
+        <message>
+            <source>Inputs</source>
+            <translation>ورودی‌ها</translation>
+        </message>
+        <message>
+            <source>Results</source>
+            <translation>نتایج</translation>
+        </message>
+    </context>
+    <context>
+        <name>IdwDtmAlgorithm</name>
+        <message>
+            <source>DTM by inverse distance weighting (IDW)</source>
+            <translation>مدل رقومی زمین به روش وزن‌دهی معکوس فاصله (IDW)</translation>
+        </message>
+        <message>
+            <source>dtm,dem,idw,inverse distance,interpolation,lidar,ground,gdal_grid,invdistnn,raster</source>
+            <translation>dtm,dem,idw,معکوس فاصله,درون‌یابی,لایدار,زمین,gdal_grid,invdistnn,رستر</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Interpolates a terrain raster from the ground points of a LAS/LAZ file by inverse distance weighting (Shepard 1968): ẑ = Σ w&lt;sub&gt;i&lt;/sub&gt; z&lt;sub&gt;i&lt;/sub&gt; / Σ w&lt;sub&gt;i&lt;/sub&gt;, w&lt;sub&gt;i&lt;/sub&gt; = 1/d&lt;sub&gt;i&lt;/sub&gt;&lt;sup&gt;p&lt;/sup&gt;, over the nearest neighbours of each cell centre. Same semantics as &lt;code&gt;gdal_grid -a invdistnn&lt;/code&gt; (power, max_points, radius, min_points; a cell centre on a point takes its height exactly), but KD-tree based and processed in blocks: 1 M points onto 1 M cells take seconds.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=1 POWER=3 NEIGHBOURS=12 (the seed paper's best setting, RMSE 0.204 m at 62 GNSS points).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
+            <translation>&lt;p&gt;رستر ناهمواری زمین را از نقاط زمینی یک پروندهٔ LAS/LAZ به روش وزن‌دهی معکوس فاصله (Shepard 1968) درون‌یابی می‌کند: ẑ = Σ w&lt;sub&gt;i&lt;/sub&gt; z&lt;sub&gt;i&lt;/sub&gt; / Σ w&lt;sub&gt;i&lt;/sub&gt;، w&lt;sub&gt;i&lt;/sub&gt; = 1/d&lt;sub&gt;i&lt;/sub&gt;&lt;sup&gt;p&lt;/sup&gt;، روی نزدیک‌ترین همسایه‌های مرکز هر سلول. معنای پارامترها همانند &lt;code&gt;gdal_grid -a invdistnn&lt;/code&gt; است (power، max_points، radius، min_points؛ مرکز سلولی که روی یک نقطه بیفتد دقیقاً ارتفاع آن را می‌گیرد)، اما مبتنی بر درخت KD و با پردازش بلوکی: 1 میلیون نقطه روی 1 میلیون سلول چند ثانیه طول می‌کشد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=1 POWER=3 NEIGHBOURS=12 (بهترین تنظیم مقالهٔ مبنا، RMSE = 0.204 متر روی 62 نقطهٔ GNSS).&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</translation>
+        </message>
+        <message>
+            <source>Power p</source>
+            <translation>توان p</translation>
+        </message>
+        <message>
+            <source>Neighbours (0 = all within radius)</source>
+            <translation>تعداد همسایه‌ها (0 = همهٔ نقاط درون شعاع)</translation>
+        </message>
+        <message>
+            <source>Search radius (m, 0 = unlimited)</source>
+            <translation>شعاع جست‌وجو (متر، 0 = نامحدود)</translation>
+        </message>
+        <message>
+            <source>Minimum points</source>
+            <translation>حداقل تعداد نقاط</translation>
+        </message>
+        <message>
+            <source>IDW DTM</source>
+            <translation>مدل رقومی زمین به روش IDW</translation>
+        </message>
+        <message>
+            <source>IDW DTM report</source>
+            <translation>گزارش مدل رقومی زمین به روش IDW</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Power&lt;/b&gt; (POWER, default 2; the paper found 3 best).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 12): nearest points used (gdal max_points); 0 = all points within the radius (needs RADIUS). More neighbours than points → error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Search radius&lt;/b&gt; (RADIUS, m, default 0 = unlimited): only points within it are used (gdal radius).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points&lt;/b&gt; (MIN_POINTS, default 0): cells with fewer neighbours within the radius are nodata (gdal min_points).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs also the numbers N_POINTS, VALID_CELLS, NODATA_CELLS.&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;توان&lt;/b&gt; (POWER، پیش‌فرض 2؛ مقاله 3 را بهترین یافت).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد همسایه‌ها&lt;/b&gt; (NEIGHBOURS، پیش‌فرض 12): تعداد نزدیک‌ترین نقاطی که به کار می‌روند (max_points در gdal)؛ 0 = همهٔ نقاط درون شعاع (نیازمند RADIUS). همسایه‌های بیشتر از تعداد نقاط → خطا.&lt;/li&gt;&lt;li&gt;&lt;b&gt;شعاع جست‌وجو&lt;/b&gt; (RADIUS، متر، پیش‌فرض 0 = نامحدود): فقط نقاط درون آن به کار می‌روند (radius در gdal).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداقل تعداد نقاط&lt;/b&gt; (MIN_POINTS، پیش‌فرض 0): سلول‌هایی که همسایه‌های کمتری درون شعاع دارند nodata می‌شوند (min_points در gdal).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد N_POINTS، VALID_CELLS و NODATA_CELLS نیز خروجی داده می‌شوند.&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>KrigingDtmAlgorithm</name>
+        <message>
+            <source>DTM by kriging (ordinary / universal)</source>
+            <translation>مدل رقومی زمین به روش کریجینگ (معمولی / عام)</translation>
+        </message>
+        <message>
+            <source>dtm,dem,kriging,variogram,geostatistics,pykrige,interpolation,lidar,variance,cross-validation</source>
+            <translation>dtm,dem,کریجینگ,واریوگرام,زمین‌آمار,pykrige,درون‌یابی,لایدار,واریانس,اعتبارسنجی متقابل</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Kriging (Matheron 1963; Cressie 1993) of the ground points of a LAS/LAZ file onto a raster, with a kriging variance (or standard deviation) raster. Ordinary kriging (unknown constant mean) or universal kriging with a linear drift. The variogram is fitted with PyKrige's estimator on a random subsample (or given by you); each cell is then kriged from its nearest points in batched local systems, so 1 M points onto a 1 km² grid at 1 m take about a minute instead of the n×n matrix that makes plain PyKrige run out of memory past ~100 k points.&lt;/p&gt;&lt;p&gt;&lt;b&gt;What is approximated&lt;/b&gt;: the variogram is fitted on a sample of point pairs (FIT_POINTS, reproducible with SEED), by default at the local scale. Local-neighbourhood kriging is not global kriging: only the NEIGHBOURS nearest points are weighted and the mean is re-estimated in every neighbourhood (quasi-stationarity). On terrain this follows the relief better than one global mean (it gave the lowest hold-out RMSE on all four ISPRS samples in the benchmark), but the two differ — typically by centimetres, by decimetres to metres at borders, gaps and steep slopes. With NEIGHBOURS equal to the number of points (≤ 6000) the result is global kriging, identical to PyKrige. With a linear drift the variogram is fitted on the residuals of a least-squares plane; points with identical x, y are merged (mean height). The kriging variance is model-based: check it with CV_POINTS (RMS standardised error near 1 means realistic variances).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=spherical NEIGHBOURS=16 CV_POINTS=1000.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
+            <translation>&lt;p&gt;کریجینگ (Matheron 1963؛ Cressie 1993) نقاط زمینی یک پروندهٔ LAS/LAZ روی یک رستر، همراه با رستر واریانس کریجینگ (یا انحراف معیار). کریجینگ معمولی (میانگین ثابت نامعلوم) یا کریجینگ عام با روند خطی. واریوگرام با برآوردگر PyKrige روی یک زیرنمونهٔ تصادفی برازش داده می‌شود (یا شما آن را می‌دهید)؛ سپس هر سلول از نزدیک‌ترین نقاطش در دستگاه‌های محلیِ دسته‌ای کریجینگ می‌شود، بنابراین 1 میلیون نقطه روی شبکه‌ای به مساحت 1 کیلومتر مربع با سلول 1 متری حدود یک دقیقه طول می‌کشد، به‌جای ماتریس n×n که PyKrige معمولی را پس از حدود 100 هزار نقطه با کمبود حافظه روبه‌رو می‌کند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;چه چیزی تقریبی است&lt;/b&gt;: واریوگرام روی نمونه‌ای از زوج نقاط برازش داده می‌شود (FIT_POINTS، تکرارپذیر با SEED)، به‌طور پیش‌فرض در مقیاس محلی. کریجینگ در همسایگی محلی همان کریجینگ سراسری نیست: فقط NEIGHBOURS نقطهٔ نزدیک‌تر وزن می‌گیرند و میانگین در هر همسایگی دوباره برآورد می‌شود (شبه‌ایستایی). روی ناهمواری‌های زمین این روش پستی و بلندی را بهتر از یک میانگین سراسری دنبال می‌کند (در آزمون کارایی، کمترین RMSE روی نقاط کنارگذاشته را در هر چهار نمونهٔ ISPRS داد)، اما این دو با هم تفاوت دارند — معمولاً در حد سانتی‌متر، و در لبه‌ها، شکاف‌ها و شیب‌های تند در حد دسی‌متر تا متر. اگر NEIGHBOURS برابر تعداد نقاط باشد (≤ 6000)، نتیجه کریجینگ سراسری و یکسان با PyKrige است. با روند خطی، واریوگرام روی باقی‌مانده‌های یک صفحهٔ کمترین مربعات برازش داده می‌شود؛ نقاط با x و y یکسان ادغام می‌شوند (میانگین ارتفاع). واریانس کریجینگ مبتنی بر مدل است: آن را با CV_POINTS بسنجید (RMS خطای استانداردشدهٔ نزدیک به 1 یعنی واریانس‌ها واقع‌بینانه‌اند).&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=spherical NEIGHBOURS=16 CV_POINTS=1000.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</translation>
+        </message>
+        <message>
+            <source>Kriging type</source>
+            <translation>نوع کریجینگ</translation>
+        </message>
+        <message>
+            <source>Ordinary</source>
+            <translation>معمولی</translation>
+        </message>
+        <message>
+            <source>Universal (linear drift)</source>
+            <translation>عام (روند خطی)</translation>
+        </message>
+        <message>
+            <source>Variogram model</source>
+            <translation>مدل واریوگرام</translation>
+        </message>
+        <message>
+            <source>Variogram parameters (e.g. nugget=0.01, sill=4, range=60; empty = fit)</source>
+            <translation>پارامترهای واریوگرام (مثلاً nugget=0.01, sill=4, range=60؛ خالی = برازش خودکار)</translation>
+        </message>
+        <message>
+            <source>Neighbours per cell</source>
+            <translation>تعداد همسایه‌ها برای هر سلول</translation>
+        </message>
+        <message>
+            <source>Points for the variogram fit</source>
+            <translation>تعداد نقاط برای برازش واریوگرام</translation>
+        </message>
+        <message>
+            <source>Lag classes</source>
+            <translation>تعداد کلاس‌های فاصلهٔ تأخیر (lag)</translation>
+        </message>
+        <message>
+            <source>Maximum lag (m, 0 = auto: local scale)</source>
+            <translation>بیشینهٔ فاصلهٔ تأخیر (متر، 0 = خودکار: مقیاس محلی)</translation>
+        </message>
+        <message>
+            <source>Cross-validation points (0 = off)</source>
+            <translation>نقاط اعتبارسنجی متقابل (0 = خاموش)</translation>
+        </message>
+        <message>
+            <source>Random seed</source>
+            <translation>بذر تصادفی</translation>
+        </message>
+        <message>
+            <source>Kriging DTM</source>
+            <translation>مدل رقومی زمین به روش کریجینگ</translation>
+        </message>
+        <message>
+            <source>Write standard deviation instead of variance</source>
+            <translation>نوشتن انحراف معیار به‌جای واریانس</translation>
+        </message>
+        <message>
+            <source>Kriging variance</source>
+            <translation>واریانس کریجینگ</translation>
+        </message>
+        <message>
+            <source>Variogram: {}</source>
+            <translation>واریوگرام: {}</translation>
+        </message>
+        <message>
+            <source>Kriging DTM report</source>
+            <translation>گزارش مدل رقومی زمین به روش کریجینگ</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Kriging type&lt;/b&gt; (KRIGING_TYPE, 0 ordinary (default), 1 universal with linear drift).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram model&lt;/b&gt; (VARIOGRAM, 0 linear, 1 power, 2 gaussian, 3 spherical (default), 4 exponential).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram parameters&lt;/b&gt; (VARIOGRAM_PARAMS, optional text, e.g. &lt;code&gt;nugget=0.01, sill=4, range=60&lt;/code&gt;; linear: slope, nugget; power: scale, exponent, nugget). Empty = fitted automatically. The sill includes the nugget; the range is the practical range.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 16, ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Points for the variogram fit&lt;/b&gt; (FIT_POINTS, default 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Lag classes&lt;/b&gt; (NLAGS, default 12) and &lt;b&gt;maximum lag&lt;/b&gt; (MAX_LAG, m, default 0 = automatic: three times the typical distance to the NEIGHBOURS-th neighbour, the scale local kriging uses, so the nugget and the short-range shape that set the weights and the variance are well sampled; the fitted sill and range then describe that local scale). For a classical field-scale fit give e.g. half the extent (Journel &amp;amp; Huijbregts 1978). A fitted nugget is raised to at least 1 % of the semivariance at the maximum lag, for numerical stability (Gaussian and power models).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cross-validation points&lt;/b&gt; (CV_POINTS, default 0 = off): leave-one-out on this many random points; reports ME, RMSE, mean standardised error (ideal 0) and RMS standardised error (ideal 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Seed&lt;/b&gt; (SEED, default 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variance output&lt;/b&gt; (OUTPUT_VARIANCE, optional GeoTIFF): kriging variance (m²), or standard deviation (m) with VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: NUGGET, SILL, RANGE (NaN for linear/power), N_POINTS, VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;نوع کریجینگ&lt;/b&gt; (KRIGING_TYPE، 0 معمولی (پیش‌فرض)، 1 عام با روند خطی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مدل واریوگرام&lt;/b&gt; (VARIOGRAM، 0 خطی، 1 توانی، 2 گوسی، 3 کروی (پیش‌فرض)، 4 نمایی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;پارامترهای واریوگرام&lt;/b&gt; (VARIOGRAM_PARAMS، متن اختیاری، مثلاً &lt;code&gt;nugget=0.01, sill=4, range=60&lt;/code&gt;؛ خطی: slope، nugget؛ توانی: scale، exponent، nugget). خالی = برازش خودکار. سقف (sill) اثر قطعه‌ای (nugget) را در بر می‌گیرد؛ دامنه (range) همان دامنهٔ عملی است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد همسایه‌ها&lt;/b&gt; (NEIGHBOURS، پیش‌فرض 16، ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد نقاط برای برازش واریوگرام&lt;/b&gt; (FIT_POINTS، پیش‌فرض 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد کلاس‌های فاصلهٔ تأخیر&lt;/b&gt; (NLAGS، پیش‌فرض 12) و &lt;b&gt;بیشینهٔ فاصلهٔ تأخیر&lt;/b&gt; (MAX_LAG، متر، پیش‌فرض 0 = خودکار: سه برابر فاصلهٔ معمول تا همسایهٔ NEIGHBOURS-ام، یعنی مقیاسی که کریجینگ محلی به کار می‌برد، تا اثر قطعه‌ای و شکل واریوگرام در فواصل کوتاه، که وزن‌ها و واریانس را تعیین می‌کنند، به‌خوبی نمونه‌برداری شوند؛ در این حالت سقف و دامنهٔ برازش‌شده همان مقیاس محلی را توصیف می‌کنند). برای برازش کلاسیک در مقیاس کل منطقه، مثلاً نصف محدوده را بدهید (Journel &amp;amp; Huijbregts 1978). اثر قطعه‌ای برازش‌شده برای پایداری عددی دست‌کم تا 1 % نیم‌واریانس (semivariance) در بیشینهٔ فاصلهٔ تأخیر بالا برده می‌شود (مدل‌های گوسی و توانی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط اعتبارسنجی متقابل&lt;/b&gt; (CV_POINTS، پیش‌فرض 0 = خاموش): حذف‌یکی روی این تعداد نقطهٔ تصادفی؛ ME، RMSE، میانگین خطای استانداردشده (ایده‌آل 0) و RMS خطای استانداردشده (ایده‌آل 1) را گزارش می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بذر تصادفی&lt;/b&gt; (SEED، پیش‌فرض 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی واریانس&lt;/b&gt; (OUTPUT_VARIANCE، GeoTIFF اختیاری): واریانس کریجینگ (متر²)، یا انحراف معیار (متر) با VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: NUGGET، SILL، RANGE (برای خطی/توانی NaN)، N_POINTS، VALID_CELLS، CV_ME، CV_RMSE، CV_MSE (بدون اعتبارسنجی متقابل NaN).&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>LsqGroundFilterAlgorithm</name>
+        <message>
+            <source>Ground filter (least-squares polynomial)</source>
+            <translation>فیلتر نقاط زمینی (چندجمله‌ای کمترین مربعات)</translation>
+        </message>
+        <message>
+            <source>lidar,ground,filter,bare earth,dtm,classification,least squares,polynomial,tiles,las,laz,isprs</source>
+            <translation>لایدار,زمین,فیلتر,زمین لخت,dtm,طبقه‌بندی,کمترین مربعات,چندجمله‌ای,کاشی‌ها,las,laz,isprs</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>ابر نقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Polynomial order (1 or 2)</source>
+            <translation>درجهٔ چندجمله‌ای (1 یا 2)</translation>
+        </message>
+        <message>
+            <source>Tile size (m)</source>
+            <translation>اندازهٔ کاشی (متر)</translation>
+        </message>
+        <message>
+            <source>Threshold T (m)</source>
+            <translation>آستانهٔ T (متر)</translation>
+        </message>
+        <message>
+            <source>Mode</source>
+            <translation>حالت</translation>
+        </message>
+        <message>
+            <source>Faithful (the paper)</source>
+            <translation>مطابق (روش مقاله)</translation>
+        </message>
+        <message>
+            <source>Improved (ours, beyond the paper)</source>
+            <translation>بهبودیافته (افزودهٔ ما، فراتر از مقاله)</translation>
+        </message>
+        <message>
+            <source>Maximum iterations per tile</source>
+            <translation>حداکثر تکرار در هر کاشی</translation>
+        </message>
+        <message>
+            <source>Stop tolerance on min/max/mean/std (m)</source>
+            <translation>تلورانس توقف برای کمینه/بیشینه/میانگین/انحراف معیار (متر)</translation>
+        </message>
+        <message>
+            <source>Random fitting subset per tile (points, 0 = all)</source>
+            <translation>زیرمجموعهٔ تصادفی برازش در هر کاشی (نقطه، 0 = همه)</translation>
+        </message>
+        <message>
+            <source>Random seed of the subset</source>
+            <translation>بذر تصادفی زیرمجموعه</translation>
+        </message>
+        <message>
+            <source>Minimum points per tile (0 = 3 × coefficients)</source>
+            <translation>حداقل نقاط هر کاشی (0 = 3 × تعداد ضرایب)</translation>
+        </message>
+        <message>
+            <source>Under-populated tiles</source>
+            <translation>کاشی‌های کم‌نقطه</translation>
+        </message>
+        <message>
+            <source>Borrow the nearest fitted tile's surface</source>
+            <translation>استفاده از سطح نزدیک‌ترین کاشی برازش‌شده</translation>
+        </message>
+        <message>
+            <source>Leave their points unclassified (class 0)</source>
+            <translation>طبقه‌بندی‌نشده ماندن نقاط آن‌ها (کلاس 0)</translation>
+        </message>
+        <message>
+            <source>Rejection</source>
+            <translation>شیوهٔ رد نقاط</translation>
+        </message>
+        <message>
+            <source>Re-weighted each iteration (a point may return)</source>
+            <translation>وزن‌دهی دوباره در هر تکرار (نقطه ممکن است بازگردد)</translation>
+        </message>
+        <message>
+            <source>Cumulative (a rejected point stays out)</source>
+            <translation>تجمعی (نقطهٔ ردشده بیرون می‌ماند)</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>ابر نقاط طبقه‌بندی‌شده</translation>
+        </message>
+        <message>
+            <source>Ground points only</source>
+            <translation>فقط نقاط زمینی</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Ground points</source>
+            <translation>نقاط زمینی</translation>
+        </message>
+        <message>
+            <source>Other (object) points</source>
+            <translation>نقاط دیگر (عوارض)</translation>
+        </message>
+        <message>
+            <source>Low-noise points</source>
+            <translation>نقاط نویز پایین</translation>
+        </message>
+        <message>
+            <source>Unclassified points</source>
+            <translation>نقاط طبقه‌بندی‌نشده</translation>
+        </message>
+        <message>
+            <source>Tiles</source>
+            <translation>کاشی‌ها</translation>
+        </message>
+        <message>
+            <source>Points per second</source>
+            <translation>نقطه در ثانیه</translation>
+        </message>
+        <message>
+            <source>Choose an output file for the classified cloud (OUTPUT, .laz or .las).</source>
+            <translation>یک پروندهٔ خروجی برای ابر طبقه‌بندی‌شده انتخاب کنید (OUTPUT، با پسوند .laz یا .las).</translation>
+        </message>
+        <message>
+            <source>Output point clouds must end in .las or .laz: {p}</source>
+            <translation>پرونده‌های ابر نقاط خروجی باید پسوند .las یا .laz داشته باشند: {p}</translation>
+        </message>
+        <message>
+            <source>Reading {p}</source>
+            <translation>در حال خواندن {p}</translation>
+        </message>
+        <message>
+            <source>{n} points; filtering ({mode} mode)</source>
+            <translation>{n} نقطه؛ در حال فیلتر کردن (حالت {mode})</translation>
+        </message>
+        <message>
+            <source>{step}: {n} points kept, ZMin {a:.2f}, ZMax {b:.2f}, ZMean {m:.2f}, σ {s:.2f}; tiles iterating: {t}</source>
+            <translation>{step}: {n} نقطه نگه داشته شد، ZMin {a:.2f}، ZMax {b:.2f}، ZMean {m:.2f}، σ {s:.2f}؛ کاشی‌های در حال تکرار: {t}</translation>
+        </message>
+        <message>
+            <source>Ground {g}, other {o}, low noise {z}, unclassified {u}; {t} tiles; {s:.1f} s</source>
+            <translation>زمینی {g}، سایر {o}، نویز پایین {z}، طبقه‌بندی‌نشده {u}؛ {t} کاشی؛ {s:.1f} ثانیه</translation>
+        </message>
+        <message>
+            <source>No point was classified as ground, so the ground-only output would be empty; check TILE_SIZE and THRESHOLD.</source>
+            <translation>هیچ نقطه‌ای زمینی طبقه‌بندی نشد، پس خروجی نقاط زمینی خالی می‌شد؛ TILE_SIZE و THRESHOLD را بررسی کنید.</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). In every tile the surface is fitted, points more than THRESHOLD above it are dropped, and the fit is repeated until the minimum, maximum, mean and standard deviation of the kept heights stop changing (TOLERANCE) or MAX_ITERATIONS; then every point with z ≤ ẑ + THRESHOLD is ground. Any classification already in the file is ignored and replaced.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output classes&lt;/b&gt; (ASPRS): 2 ground, 1 other (buildings, vegetation), 7 low noise (pre-filter), 0 never classified (only with SPARSE_TILES = leave unclassified). Every other attribute of every point, the point format, scales, offsets, VLRs and CRS are copied unchanged.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file, projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Order&lt;/b&gt; (ORDER, default 2): 1 = plane z = b0 + b1·x + b2·y; 2 = quadratic z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (better on every sample of the paper).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Tile size&lt;/b&gt; (TILE_SIZE, m, default 50): larger than the largest building, so that every tile holds ground (paper: 100 m for large buildings, 50 m for small ones). Tiles are square, anchored at the minimum x, y.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Threshold&lt;/b&gt; (THRESHOLD, m, default 0.5): 0.5–1.0 m, larger on steeper terrain.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default Faithful): Faithful = the paper. Improved = ours, beyond the paper: coarse-to-fine tiles (2, 1, ½, ¼ × TILE_SIZE) fitted on overlapping windows, each level started from the previous level's ground, and a threshold that grows with the surface slope (by 2.5 m per unit gradient, at most 1 m). On the ISPRS samples it lowers the mean total error from 8.9 % (paper) to about 4.9 % with one parameter set; it costs about 15 times the time and twice the memory of the faithful mode (about 2 M points/s and 100 bytes per point in faithful mode).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours become class 7 and take no part in the fit (NOISE_RADIUS, m, default 5: neighbourhood cell; NOISE_THRESHOLD, m, default 1: depth below the neighbours).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum iterations&lt;/b&gt; (MAX_ITERATIONS, default 5, the paper's tables) and &lt;b&gt;stop tolerance&lt;/b&gt; (TOLERANCE, m, default 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Random fitting subset per tile&lt;/b&gt; (SUBSET_SIZE, points, default 0 = all; the paper used 5000) and its &lt;b&gt;seed&lt;/b&gt; (SEED). All points are classified.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points per tile&lt;/b&gt; (MIN_POINTS, default 0 = 3 × the number of coefficients) and &lt;b&gt;under-populated tiles&lt;/b&gt; (SPARSE_TILES): borrow the nearest fitted tile's surface (default) or leave their points unclassified (class 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rejection&lt;/b&gt; (REJECTION): re-weighted (default; a point dropped earlier may return when the surface moves) or cumulative (dropped for good).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud (OUTPUT, .laz or .las), optional ground-only cloud (GROUND_OUTPUT), optional HTML report (OUTPUT_HTML) with the parameters, class counts, the per-iteration statistics of the paper's Tables 1–2, per-tile statistics, time and points per second; optional CSV of every tile's iterations and coefficients (TILE_STATS); numbers N_GROUND, N_OTHER, N_NOISE, N_UNCLASSIFIED, N_TILES, POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Measure the result against reference labels with &lt;i&gt;Ground filter accuracy&lt;/i&gt;. Nothing is written when the run fails or is cancelled.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;نقاط زمین لخت را از ساختمان‌ها و پوشش گیاهی در ابر نقاط لایدار هوایی جدا می‌کند، با برازش سطوح چندجمله‌ای کمترین مربعات در هر کاشی مربعی (مجلهٔ علوم مهندسی دانشگاه دمشق 29(2)، 2013). در هر کاشی سطح برازش داده می‌شود، نقاطی که بیش از THRESHOLD بالاتر از آن‌اند کنار گذاشته می‌شوند، و برازش تکرار می‌شود تا کمینه، بیشینه، میانگین و انحراف معیار ارتفاع‌های نگه‌داشته‌شده دیگر تغییر نکنند (TOLERANCE) یا به MAX_ITERATIONS برسد؛ سپس هر نقطه با z ≤ ẑ + THRESHOLD زمینی است. هر طبقه‌بندی موجود در پرونده نادیده گرفته و جایگزین می‌شود.&lt;/p&gt;&lt;p&gt;&lt;b&gt;کلاس‌های خروجی&lt;/b&gt; (ASPRS): 2 زمینی، 1 سایر (ساختمان، پوشش گیاهی)، 7 نویز پایین (پیش‌فیلتر)، 0 هرگز طبقه‌بندی‌نشده (فقط با SPARSE_TILES = طبقه‌بندی‌نشده ماندن). همهٔ ویژگی‌های دیگر هر نقطه، قالب نقطه، ضرایب مقیاس، آفست‌ها، VLRها و سیستم مختصات بدون تغییر کپی می‌شوند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las یا .laz، با سیستم مختصات تصویرشده به متر.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجه&lt;/b&gt; (ORDER، پیش‌فرض 2): 1 = صفحه z = b0 + b1·x + b2·y؛ 2 = درجه‌دوم z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (در همهٔ نمونه‌های مقاله بهتر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ کاشی&lt;/b&gt; (TILE_SIZE، متر، پیش‌فرض 50): بزرگ‌تر از بزرگ‌ترین ساختمان، تا هر کاشی نقاط زمینی داشته باشد (مقاله: 100 متر برای ساختمان‌های بزرگ، 50 متر برای ساختمان‌های کوچک). کاشی‌ها مربعی‌اند و از کمینهٔ x و y آغاز می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;آستانه&lt;/b&gt; (THRESHOLD، متر، پیش‌فرض 0.5): 0.5–1.0 متر، و در زمین‌های پرشیب‌تر بیشتر.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حالت&lt;/b&gt; (MODE، پیش‌فرض: مطابق): مطابق = روش مقاله. بهبودیافته = افزودهٔ ما، فراتر از مقاله: کاشی‌های درشت به ریز (2، 1، ½، ¼ × TILE_SIZE) که روی پنجره‌های همپوشان برازش می‌شوند، هر سطح از نقاط زمینی سطح قبلی آغاز می‌شود، و آستانه‌ای که با شیب سطح افزایش می‌یابد (2.5 متر به ازای هر واحد گرادیان، حداکثر 1 متر). روی نمونه‌های ISPRS میانگین خطای کل را با یک مجموعه پارامتر از 8.9 % (مقاله) به حدود 4.9 % کاهش می‌دهد؛ حدود 15 برابر زمان و دو برابر حافظهٔ حالت مطابق را می‌گیرد (در حالت مطابق حدود 2 میلیون نقطه در ثانیه و 100 بایت برای هر نقطه).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حذف نقاط پرت پایین در آغاز&lt;/b&gt; (NOISE، پیش‌فرض: بله): نقاطی که بسیار پایین‌تر از همسایه‌های خود هستند کلاس 7 می‌گیرند و در برازش شرکت نمی‌کنند (NOISE_RADIUS، متر، پیش‌فرض 5: سلول همسایگی؛ NOISE_THRESHOLD، متر، پیش‌فرض 1: عمق زیر همسایه‌ها).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداکثر تکرار&lt;/b&gt; (MAX_ITERATIONS، پیش‌فرض 5، مطابق جدول‌های مقاله) و &lt;b&gt;تلورانس توقف&lt;/b&gt; (TOLERANCE، متر، پیش‌فرض 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;زیرمجموعهٔ تصادفی برازش در هر کاشی&lt;/b&gt; (SUBSET_SIZE، نقطه، پیش‌فرض 0 = همه؛ مقاله 5000 به کار برده است) و &lt;b&gt;بذر تصادفی&lt;/b&gt; آن (SEED). همهٔ نقاط طبقه‌بندی می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداقل نقاط هر کاشی&lt;/b&gt; (MIN_POINTS، پیش‌فرض 0 = 3 × تعداد ضرایب) و &lt;b&gt;کاشی‌های کم‌نقطه&lt;/b&gt; (SPARSE_TILES): استفاده از سطح نزدیک‌ترین کاشی برازش‌شده (پیش‌فرض) یا طبقه‌بندی‌نشده ماندن نقاط آن‌ها (کلاس 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شیوهٔ رد نقاط&lt;/b&gt; (REJECTION): وزن‌دهی دوباره (پیش‌فرض؛ نقطه‌ای که پیش‌تر رد شده ممکن است با جابه‌جایی سطح بازگردد) یا تجمعی (برای همیشه رد می‌شود).&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی‌ها&lt;/b&gt;: ابر طبقه‌بندی‌شده (OUTPUT، .laz یا .las)، ابر فقط نقاط زمینی به‌اختیار (GROUND_OUTPUT)، گزارش HTML اختیاری (OUTPUT_HTML) با پارامترها، تعداد نقاط هر کلاس، آماره‌های هر تکرار مطابق جدول‌های 1–2 مقاله، آماره‌های هر کاشی، زمان و تعداد نقطه در ثانیه؛ پروندهٔ CSV اختیاری از تکرارها و ضرایب هر کاشی (TILE_STATS)؛ اعداد N_GROUND، N_OTHER، N_NOISE، N_UNCLASSIFIED، N_TILES، POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;نتیجه را با &lt;i&gt;دقت فیلتر نقاط زمینی&lt;/i&gt; در برابر برچسب‌های مرجع بسنجید. اگر اجرا شکست بخورد یا لغو شود، چیزی نوشته نمی‌شود.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Per-tile iteration statistics (CSV)</source>
+            <translation>آماره‌های تکرار هر کاشی (CSV)</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>پرونده‌های CSV (*.csv)</translation>
+        </message>
+    </context>
+    <context>
+        <name>RectifyGcpAlgorithm</name>
+        <message>
+            <source>Rectify image with GCPs (polynomial)</source>
+            <translation>تصحیح هندسی تصویر با نقاط کنترل زمینی (چندجمله‌ای)</translation>
+        </message>
+        <message>
+            <source>georeference,georeferencer,gcp,ground control points,polynomial,rectification,warp,gdalwarp,rms,accuracy</source>
+            <translation>زمین‌مرجع‌سازی,georeferencer,gcp,نقاط کنترل زمینی,چندجمله‌ای,تصحیح هندسی,warp,gdalwarp,rms,دقت</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Rectifies (warps) an image with ground control points and a 2-D polynomial of order 1, 2 or 3 through GDAL (same result as &lt;i&gt;gdalwarp -order N&lt;/i&gt;), and writes the accuracy report of the fit. The input image is never modified: the GCPs are attached to an in-memory copy.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;یک تصویر را با نقاط کنترل زمینی و یک چندجمله‌ای دوبعدی درجهٔ 1، 2 یا 3 از طریق GDAL تصحیح هندسی (warp) می‌کند (همان نتیجهٔ &lt;i&gt;gdalwarp -order N&lt;/i&gt;) و گزارش دقت برازش را می‌نویسد. تصویر ورودی هرگز تغییر نمی‌کند: نقاط کنترل به یک رونوشت در حافظه پیوست می‌شوند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;تصویر&lt;/b&gt; (INPUT): رستری که باید تصحیح شود.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>Target CRS [default: the GCP CRS]</source>
+            <translation>سیستم مختصات مقصد [پیش‌فرض: سیستم مختصات نقاط کنترل]</translation>
+        </message>
+        <message>
+            <source>Resampling</source>
+            <translation>بازنمونه‌برداری</translation>
+        </message>
+        <message>
+            <source>Output resolution (target CRS units) [default: GR]</source>
+            <translation>قدرت تفکیک خروجی (به واحد سیستم مختصات مقصد) [پیش‌فرض: GR]</translation>
+        </message>
+        <message>
+            <source>Output nodata value</source>
+            <translation>مقدار nodata خروجی</translation>
+        </message>
+        <message>
+            <source>Rectified image</source>
+            <translation>تصویر تصحیح‌شده</translation>
+        </message>
+        <message>
+            <source>Accuracy report</source>
+            <translation>گزارش دقت</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>OUTPUT must be a GeoTIFF file (.tif); got {0}.</source>
+            <translation>OUTPUT باید پروندهٔ GeoTIFF (.tif) باشد؛ مقدار داده‌شده: {0}.</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Target CRS&lt;/b&gt; (TARGET_CRS, default the GCP CRS): output CRS; GDAL reprojects after the polynomial.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest neighbour as in the paper): 0 near, 1 bilinear, 2 cubic, 3 cubic spline, 4 Lanczos, 5 average, 6 mode.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output resolution&lt;/b&gt; (RESOLUTION, target-CRS units, default GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Nodata&lt;/b&gt; (NODATA, optional): value outside the image footprint (default: the input's nodata, else 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rectified image&lt;/b&gt; (OUTPUT): GeoTIFF (written under a temporary name, renamed on success; nothing is left behind on failure).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML accuracy report.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;سیستم مختصات مقصد&lt;/b&gt; (TARGET_CRS، پیش‌فرض سیستم مختصات نقاط کنترل): سیستم مختصات خروجی؛ GDAL پس از اعمال چندجمله‌ای بازتصویر می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بازنمونه‌برداری&lt;/b&gt; (RESAMPLING، پیش‌فرض 0 = نزدیک‌ترین همسایه مانند مقاله): 0 نزدیک‌ترین همسایه، 1 دوخطی، 2 مکعبی، 3 اسپلاین مکعبی، 4 Lanczos، 5 میانگین، 6 مُد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;قدرت تفکیک خروجی&lt;/b&gt; (RESOLUTION، به واحد سیستم مختصات مقصد، پیش‌فرض GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مقدار nodata&lt;/b&gt; (NODATA، اختیاری): مقدار بیرون از محدودهٔ تصویر (پیش‌فرض: nodata ورودی، وگرنه 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تصویر تصحیح‌شده&lt;/b&gt; (OUTPUT): GeoTIFF (با نامی موقت نوشته می‌شود و پس از موفقیت تغییر نام می‌یابد؛ در صورت شکست چیزی باقی نمی‌ماند).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): گزارش دقت HTML.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>SlopeGroundFilterAlgorithm</name>
+        <message>
+            <source>Ground filter (slope-based)</source>
+            <translation>فیلتر نقاط زمینی (مبتنی بر شیب)</translation>
+        </message>
+        <message>
+            <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,vosselman,slope,point cloud</source>
+            <translation>لایدار,las,laz,زمین,فیلتر,طبقه‌بندی,dtm,زمین لخت,vosselman,شیب,ابر نقاط</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when some neighbour at horizontal distance 0 &amp;lt; d ≤ r lies more than d·tan θ + h below it. Single pass, neighbours from the whole cloud, exact (labels identical to a brute-force check of every pair) and fast (about a million points per second on one core at r = 3 m). Low outliers get class 7; every other attribute is copied unchanged. The input classification is ignored.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study's setting RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 allows a rise of 2.90 m at 3 m. Tune r and θ to your data with &lt;i&gt;Slope filter threshold sweep&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radius r&lt;/b&gt; (RADIUS, m, default 10, &amp;gt; 0): neighbourhood radius. An object is removed only within r of its edge, so r must exceed half the width of the largest building to remove; larger r costs more time.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope threshold θ&lt;/b&gt; (SLOPE, degrees, default 40, strictly between 0 and 90): the steepest terrain kept. Allowed rise at 3 m: 2.52 m (40°), 2.90 m (44°), 3.33 m (48°), 3.84 m (52°), 4.45 m (56°), 5.20 m (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Height tolerance h&lt;/b&gt; (HEIGHT_TOLERANCE, m, default 0.2, ≥ 0): extra rise allowed for every pair, absorbs ranging noise between close points; 0 is the rule as published.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;یک ابر نقاط LAS/LAZ را با فیلتر مبتنی بر شیب Vosselman (2000) به زمینی (کلاس 2) و غیرزمینی (کلاس 1) طبقه‌بندی می‌کند: نقطه‌ای غیرزمینی است که همسایه‌ای در فاصلهٔ افقی 0 &lt; d ≤ r بیش از d·tan θ + h پایین‌تر از آن باشد. یک‌گذره، با همسایه‌ها از کل ابر، دقیق (برچسب‌ها با بررسی کامل همهٔ زوج‌ها یکسان‌اند) و سریع (حدود یک میلیون نقطه در ثانیه روی یک هستهٔ پردازنده با r = 3 متر). نقاط پرت پایین کلاس 7 می‌گیرند؛ همهٔ ویژگی‌های دیگر بدون تغییر کپی می‌شوند. طبقه‌بندی ورودی نادیده گرفته می‌شود.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: تنظیم مطالعهٔ جنگل RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 در فاصلهٔ 3 متر اختلاف ارتفاع 2.90 متر را مجاز می‌داند. r و θ را با &lt;i&gt;پیمایش آستانه‌های فیلتر شیب&lt;/i&gt; برای داده‌های خود تنظیم کنید.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las یا .laz در سیستم مختصات تصویرشده (متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شعاع r&lt;/b&gt; (RADIUS، متر، پیش‌فرض 10، &gt; 0): شعاع همسایگی. یک عارضه فقط تا فاصلهٔ r از لبه‌اش حذف می‌شود، پس r باید از نصف عرض بزرگ‌ترین ساختمانی که باید حذف شود بیشتر باشد؛ r بزرگ‌تر زمان بیشتری می‌برد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;آستانهٔ شیب θ&lt;/b&gt; (SLOPE، درجه، پیش‌فرض 40، اکیداً بین 0 و 90): تندترین شیب زمینی که نگه داشته می‌شود. اختلاف ارتفاع مجاز در 3 متر: 2.52 متر (40°)، 2.90 متر (44°)، 3.33 متر (48°)، 3.84 متر (52°)، 4.45 متر (56°)، 5.20 متر (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تلورانس ارتفاعی h&lt;/b&gt; (HEIGHT_TOLERANCE، متر، پیش‌فرض 0.2، ≥ 0): اختلاف ارتفاع اضافی مجاز برای هر زوج، که نویز فاصله‌یابی میان نقاط نزدیک را جذب می‌کند؛ 0 همان قاعدهٔ منتشرشده است.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>Radius r (m)</source>
+            <translation>شعاع r (متر)</translation>
+        </message>
+        <message>
+            <source>Slope threshold θ (degrees)</source>
+            <translation>آستانهٔ شیب θ (درجه)</translation>
+        </message>
+        <message>
+            <source>Height tolerance h (m)</source>
+            <translation>تلورانس ارتفاعی h (متر)</translation>
+        </message>
+        <message>
+            <source>Keep existing noise classes (7, 18)</source>
+            <translation>حفظ کلاس‌های نویز موجود (7, 18)</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>ابر نقاط طبقه‌بندی‌شده</translation>
+        </message>
+        <message>
+            <source>Ground points</source>
+            <translation>نقاط زمینی</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Points read</source>
+            <translation>نقاط خوانده‌شده</translation>
+        </message>
+        <message>
+            <source>Ground points (class 2)</source>
+            <translation>نقاط زمینی (کلاس 2)</translation>
+        </message>
+        <message>
+            <source>Non-ground points (class 1)</source>
+            <translation>نقاط غیرزمینی (کلاس 1)</translation>
+        </message>
+        <message>
+            <source>Low outliers (class 7)</source>
+            <translation>نقاط پرت پایین (کلاس 7)</translation>
+        </message>
+        <message>
+            <source>Filter speed (points/s)</source>
+            <translation>سرعت فیلتر (نقطه/ثانیه)</translation>
+        </message>
+        <message>
+            <source>Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, mode {}</source>
+            <translation>فیلتر شیب: r = {} متر، θ = {}°، h = {} متر، بازگشت‌ها: {}، حالت: {}</translation>
+        </message>
+        <message>
+            <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
+            <translation>{} نقطه: {} زمینی، {} غیرزمینی، {} پرت پایین؛ فیلتر {:.1f} ثانیه</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, default yes, advanced): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point, classes 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): counts, settings, allowed-rise table, speed.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE, POINTS_PER_SECOND (filter step only).&lt;/p&gt;&lt;p&gt;Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;حفظ کلاس‌های نویز موجود&lt;/b&gt; (KEEP_NOISE، پیش‌فرض: بله، پیشرفته): نقاطی که از پیش کلاس 7 یا 18 دارند کلاس خود را نگه می‌دارند و در فیلتر شرکت نمی‌کنند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر نقاط طبقه‌بندی‌شده&lt;/b&gt; (OUTPUT، .laz/.las): همهٔ نقاط، با کلاس‌های 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط زمینی&lt;/b&gt; (GROUND_OUTPUT، اختیاری): فقط نقاط زمینی.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): تعدادها، تنظیمات، جدول اختلاف ارتفاع مجاز، سرعت.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: N_POINTS، N_GROUND، N_NONGROUND، N_NOISE، POINTS_PER_SECOND (فقط مرحلهٔ فیلتر).&lt;/p&gt;&lt;p&gt;مرجع: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>SlopeThresholdSweepAlgorithm</name>
+        <message>
+            <source>Slope filter threshold sweep</source>
+            <translation>پیمایش آستانه‌های فیلتر شیب</translation>
+        </message>
+        <message>
+            <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
+            <translation>لایدار,زمین,فیلتر,vosselman,شیب,آستانه,تنظیم,دقت,نوع اول,نوع دوم,کاپا,isprs</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h and reports, against reference labels, Type I error (ground rejected), Type II error (objects accepted as ground — the forest study's "error" column, which alone always favours low θ), total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004), then picks the best setting. One exact neighbourhood pass per radius and tolerance: every threshold then costs a single comparison per point.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. ISPRS reference samples: INPUT=samp31.laz (its own classification is the reference).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): LAS/LAZ. Its classification is never used to filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference cloud&lt;/b&gt; (REFERENCE, optional): a labelled copy of the same points in the same order; empty = the input's own classification (e.g. the ISPRS samples).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default "2"): reference classes counted as ground; all others are objects.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope thresholds&lt;/b&gt; (SLOPES, degrees, default "30,35,40,44,48,52,56,60"): a list or start:stop:step.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radii&lt;/b&gt; (RADII, m, default "10") and &lt;b&gt;height tolerances&lt;/b&gt; (HEIGHT_TOLERANCES, m, default "0.2"): lists; each value is one pass.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Best by&lt;/b&gt; (METRIC, default 0): 0 lowest total error, 1 highest kappa, 2 lowest Type I, 3 lowest Type II.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;فیلتر زمینی مبتنی بر شیب را برای هر ترکیب از آستانه‌های شیب θ، شعاع‌های r و تلورانس‌های ارتفاعی h اجرا می‌کند و در برابر برچسب‌های مرجع، خطای نوع اول (رد نقاط زمینی)، خطای نوع دوم (پذیرش عوارض به‌عنوان زمین — ستون «خطا» در مطالعهٔ جنگل، که به‌تنهایی همیشه θ پایین را ترجیح می‌دهد)، خطای کل و ضریب کاپای کوهن (Sithole &amp; Vosselman 2004) را گزارش می‌کند و سپس بهترین تنظیم را برمی‌گزیند. برای هر شعاع و تلورانس یک گذر دقیق همسایگی انجام می‌شود: پس از آن هر آستانه فقط یک مقایسه به ازای هر نقطه هزینه دارد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: مطالعهٔ جنگل: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. نمونه‌های مرجع ISPRS: INPUT=samp31.laz (طبقه‌بندی خودش مرجع است).&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): LAS/LAZ. طبقه‌بندی آن هرگز برای فیلتر کردن به کار نمی‌رود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر مرجع&lt;/b&gt; (REFERENCE، اختیاری): رونوشتی برچسب‌دار از همان نقاط با همان ترتیب؛ خالی = طبقه‌بندی خود ورودی (مثلاً نمونه‌های ISPRS).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های زمینی&lt;/b&gt; (GROUND_CLASSES، پیش‌فرض "2"): کلاس‌های مرجعی که زمینی به شمار می‌آیند؛ بقیه عارضه‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;آستانه‌های شیب&lt;/b&gt; (SLOPES، درجه، پیش‌فرض "30,35,40,44,48,52,56,60"): فهرست یا start:stop:step (شروع:پایان:گام).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شعاع‌ها&lt;/b&gt; (RADII، متر، پیش‌فرض "10") و &lt;b&gt;تلورانس‌های ارتفاعی&lt;/b&gt; (HEIGHT_TOLERANCES، متر، پیش‌فرض "0.2"): فهرست؛ هر مقدار یک گذر است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;معیار انتخاب بهترین&lt;/b&gt; (METRIC، پیش‌فرض 0): 0 کمترین خطای کل، 1 بیشترین کاپا، 2 کمترین نوع اول، 3 کمترین نوع دوم.&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>Reference cloud (empty = the input's classification)</source>
+            <translation>ابر مرجع (خالی = طبقه‌بندی خود ورودی)</translation>
+        </message>
+        <message>
+            <source>Reference ground classes</source>
+            <translation>کلاس‌های زمینی مرجع</translation>
+        </message>
+        <message>
+            <source>Slope thresholds θ (degrees; list or start:stop:step)</source>
+            <translation>آستانه‌های شیب θ (درجه؛ فهرست یا شروع:پایان:گام)</translation>
+        </message>
+        <message>
+            <source>Radii r (m; list)</source>
+            <translation>شعاع‌های r (متر؛ فهرست)</translation>
+        </message>
+        <message>
+            <source>Height tolerances h (m; list)</source>
+            <translation>تلورانس‌های ارتفاعی h (متر؛ فهرست)</translation>
+        </message>
+        <message>
+            <source>Best by</source>
+            <translation>معیار انتخاب بهترین</translation>
+        </message>
+        <message>
+            <source>Lowest total error</source>
+            <translation>کمترین خطای کل</translation>
+        </message>
+        <message>
+            <source>Highest kappa</source>
+            <translation>بیشترین کاپا</translation>
+        </message>
+        <message>
+            <source>Lowest Type I error</source>
+            <translation>کمترین خطای نوع اول</translation>
+        </message>
+        <message>
+            <source>Lowest Type II error</source>
+            <translation>کمترین خطای نوع دوم</translation>
+        </message>
+        <message>
+            <source>Sweep table</source>
+            <translation>جدول پیمایش</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>پرونده‌های CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Classified with the best setting</source>
+            <translation>طبقه‌بندی‌شده با بهترین تنظیم</translation>
+        </message>
+        <message>
+            <source>Best radius (m)</source>
+            <translation>بهترین شعاع (متر)</translation>
+        </message>
+        <message>
+            <source>Best slope threshold (degrees)</source>
+            <translation>بهترین آستانهٔ شیب (درجه)</translation>
+        </message>
+        <message>
+            <source>Best height tolerance (m)</source>
+            <translation>بهترین تلورانس ارتفاعی (متر)</translation>
+        </message>
+        <message>
+            <source>Type I error at the best setting (%)</source>
+            <translation>خطای نوع اول در بهترین تنظیم (%)</translation>
+        </message>
+        <message>
+            <source>Type II error at the best setting (%)</source>
+            <translation>خطای نوع دوم در بهترین تنظیم (%)</translation>
+        </message>
+        <message>
+            <source>Total error at the best setting (%)</source>
+            <translation>خطای کل در بهترین تنظیم (%)</translation>
+        </message>
+        <message>
+            <source>Kappa at the best setting (%)</source>
+            <translation>کاپا در بهترین تنظیم (%)</translation>
+        </message>
+        <message>
+            <source>Settings evaluated</source>
+            <translation>تعداد تنظیمات ارزیابی‌شده</translation>
+        </message>
+        <message>
+            <source>Best setting</source>
+            <translation>بهترین تنظیم</translation>
+        </message>
+        <message>
+            <source>Sweeping {} thresholds × {} radii × {} tolerances</source>
+            <translation>پیمایش {} آستانه × {} شعاع × {} تلورانس</translation>
+        </message>
+        <message>
+            <source>Best ({}): {} — total {:.2f} %</source>
+            <translation>بهترین ({}): {} — خطای کل {:.2f} %</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Sweep table&lt;/b&gt; (OUTPUT_CSV): one row per setting: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): the table, the best setting and a chart of the errors against θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified with the best setting&lt;/b&gt; (OUTPUT, optional LAS/LAZ).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: BEST_RADIUS, BEST_SLOPE, BEST_HEIGHT_TOLERANCE, BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;جدول پیمایش&lt;/b&gt; (OUTPUT_CSV): یک سطر برای هر تنظیم: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML): جدول، بهترین تنظیم و نمودار خطاها بر حسب θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقه‌بندی‌شده با بهترین تنظیم&lt;/b&gt; (OUTPUT، LAS/LAZ اختیاری).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: BEST_RADIUS، BEST_SLOPE، BEST_HEIGHT_TOLERANCE، BEST_TYPE1، BEST_TYPE2، BEST_TOTAL، BEST_KAPPA (درصد)، N_SETTINGS.&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>_GcpBase</name>
+        <message>
+            <source>Image (raster) to rectify</source>
+            <translation>تصویر (رستر) برای تصحیح</translation>
+        </message>
+        <message>
+            <source>Image (raster) the GCPs were measured on</source>
+            <translation>تصویر (رستر) که نقاط کنترل روی آن اندازه‌گیری شده‌اند</translation>
+        </message>
+        <message>
+            <source>GCP file (.points or CSV)</source>
+            <translation>پروندهٔ نقاط کنترل زمینی (.points یا CSV)</translation>
+        </message>
+        <message>
+            <source>GCP files (*.points *.csv *.txt);;All files (*.*)</source>
+            <translation>پرونده‌های نقاط کنترل (*.points *.csv *.txt);;همهٔ پرونده‌ها (*.*)</translation>
+        </message>
+        <message>
+            <source>…or GCP point layer</source>
+            <translation>…یا لایهٔ نقطه‌ای نقاط کنترل</translation>
+        </message>
+        <message>
+            <source>Layer field: image column</source>
+            <translation>فیلد لایه: ستون تصویر</translation>
+        </message>
+        <message>
+            <source>Layer field: image row</source>
+            <translation>فیلد لایه: سطر تصویر</translation>
+        </message>
+        <message>
+            <source>Layer field: point id</source>
+            <translation>فیلد لایه: شناسهٔ نقطه</translation>
+        </message>
+        <message>
+            <source>Layer field: enabled (1/0)</source>
+            <translation>فیلد لایه: فعال (1/0)</translation>
+        </message>
+        <message>
+            <source>Layer field: role (gcp/check)</source>
+            <translation>فیلد لایه: نقش (gcp/check)</translation>
+        </message>
+        <message>
+            <source>Layer field: weight (&gt; 0)</source>
+            <translation>فیلد لایه: وزن (&gt; 0)</translation>
+        </message>
+        <message>
+            <source>Image coordinates refer to</source>
+            <translation>مختصات تصویر مربوط است به</translation>
+        </message>
+        <message>
+            <source>pixel corners: (0,0) = top-left corner of the image (GDAL/QGIS)</source>
+            <translation>گوشه‌های پیکسل: (0,0) = گوشهٔ بالا-چپ تصویر (GDAL/QGIS)</translation>
+        </message>
+        <message>
+            <source>pixel centres: integer = centre of a pixel (0-based indices)</source>
+            <translation>مراکز پیکسل: عدد صحیح = مرکز یک پیکسل (اندیس‌ها از 0)</translation>
+        </message>
+        <message>
+            <source>CRS of the GCP map coordinates (if the file does not say)</source>
+            <translation>سیستم مختصاتِ مختصات نقشه‌ای نقاط کنترل (اگر پرونده آن را مشخص نکند)</translation>
+        </message>
+        <message>
+            <source>Polynomial order (1–3)</source>
+            <translation>درجهٔ چندجمله‌ای (1–3)</translation>
+        </message>
+        <message>
+            <source>Ground resolution GR (map units/pixel) [default: from the GCPs]</source>
+            <translation>قدرت تفکیک زمینی GR (واحد نقشه/پیکسل) [پیش‌فرض: از نقاط کنترل]</translation>
+        </message>
+        <message>
+            <source>INPUT: no image given or it cannot be opened; give a raster file.</source>
+            <translation>INPUT: تصویری داده نشده یا باز نمی‌شود؛ یک پروندهٔ رستری بدهید.</translation>
+        </message>
+        <message>
+            <source>INPUT: {0} is not a local raster file; save the image to a file first.</source>
+            <translation>INPUT: {0} پروندهٔ رستری محلی نیست؛ ابتدا تصویر را در یک پرونده ذخیره کنید.</translation>
+        </message>
+        <message>
+            <source>Give either GCP_FILE or GCP_LAYER, not both.</source>
+            <translation>یا GCP_FILE یا GCP_LAYER را بدهید، نه هر دو.</translation>
+        </message>
+        <message>
+            <source>No GCPs: give a GCP file (GCP_FILE, .points or CSV) or a point layer (GCP_LAYER with COL_FIELD and ROW_FIELD); no &lt;image&gt;.points file was found next to the image either.</source>
+            <translation>نقطهٔ کنترلی وجود ندارد: یک پروندهٔ نقاط کنترل (GCP_FILE، .points یا CSV) یا یک لایهٔ نقطه‌ای (GCP_LAYER با COL_FIELD و ROW_FIELD) بدهید؛ پروندهٔ &lt;image&gt;.points هم کنار تصویر یافت نشد.</translation>
+        </message>
+        <message>
+            <source>GCP_LAYER needs COL_FIELD and ROW_FIELD: the fields holding the image column and row of each point.</source>
+            <translation>GCP_LAYER به COL_FIELD و ROW_FIELD نیاز دارد: فیلدهایی که ستون و سطر تصویر هر نقطه را در خود دارند.</translation>
+        </message>
+        <message>
+            <source>GCP layer feature {0} has no geometry.</source>
+            <translation>عارضهٔ {0} در لایهٔ نقاط کنترل هندسه ندارد.</translation>
+        </message>
+        <message>
+            <source>The GCP map coordinates have no CRS: the file has no '#CRS:' line and GCP_CRS is not set. Set GCP_CRS (e.g. EPSG:22780) and run again.</source>
+            <translation>مختصات نقشه‌ای نقاط کنترل سیستم مختصات ندارند: پرونده خط '#CRS:' ندارد و GCP_CRS تنظیم نشده است. GCP_CRS را تنظیم کنید (مثلاً EPSG:22780) و دوباره اجرا کنید.</translation>
+        </message>
+        <message>
+            <source>The GCP CRS is geographic (degrees): the accuracy criteria need map units of length. Set TARGET_CRS (or GCP_CRS) to a projected CRS, e.g. the UTM zone of the image.</source>
+            <translation>سیستم مختصات نقاط کنترل جغرافیایی (درجه) است: معیارهای دقت به واحدهای طولی نقشه نیاز دارند. TARGET_CRS (یا GCP_CRS) را روی یک سیستم مختصات تصویرشده تنظیم کنید، مثلاً زون UTM تصویر.</translation>
+        </message>
+    </context>
+    <context>
+        <name>_GridAlgorithm</name>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>ابر نقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Classes used (comma-separated; empty = all)</source>
+            <translation>کلاس‌های به‌کاررفته (جداشده با ویرگول؛ خالی = همه)</translation>
+        </message>
+        <message>
+            <source>Cell size (m)</source>
+            <translation>اندازهٔ سلول (متر)</translation>
+        </message>
+        <message>
+            <source>Extent</source>
+            <translation>محدوده</translation>
+        </message>
+        <message>
+            <source>CRS (overrides the LAS file's CRS)</source>
+            <translation>سیستم مختصات (بر سیستم مختصات پروندهٔ LAS مقدم است)</translation>
+        </message>
+        <message>
+            <source>Maximum distance to data (m, 0 = auto)</source>
+            <translation>بیشینهٔ فاصله تا داده (متر، 0 = خودکار)</translation>
+        </message>
+        <message>
+            <source>Fill data gaps (interpolate far from data)</source>
+            <translation>پر کردن شکاف‌های داده (درون‌یابی دور از داده)</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
+            <translation>ابر نقاط رکورد سیستم مختصات ندارد و سیستم مختصاتی هم داده نشده است؛ پارامتر CRS را تنظیم کنید (مثلاً EPSG:32632). هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>Cell size must be &gt; 0 (metres); give e.g. 1.0. No output was written.</source>
+            <translation>اندازهٔ سلول باید &gt; 0 (متر) باشد؛ مثلاً 1.0 بدهید. هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>Reading points of class(es) {} from {}</source>
+            <translation>در حال خواندن نقاط کلاس(های) {} از {}</translation>
+        </message>
+        <message>
+            <source>{} of {} points selected</source>
+            <translation>{} نقطه از {} نقطه انتخاب شد</translation>
+        </message>
+    </context>
+    <context>
+        <name>_SlopeCommon</name>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>ابر نقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Returns filtered</source>
+            <translation>بازگشت‌های فیلترشونده</translation>
+        </message>
+        <message>
+            <source>All returns</source>
+            <translation>همهٔ بازگشت‌ها</translation>
+        </message>
+        <message>
+            <source>Last returns only</source>
+            <translation>فقط بازگشت‌های آخر</translation>
+        </message>
+        <message>
+            <source>Mode</source>
+            <translation>حالت</translation>
+        </message>
+        <message>
+            <source>Exact (Vosselman 2000)</source>
+            <translation>دقیق (Vosselman 2000)</translation>
+        </message>
+        <message>
+            <source>Terrain-adaptive (toolbox extension)</source>
+            <translation>سازگار با ناهمواری زمین (افزودهٔ جعبه‌ابزار)</translation>
+        </message>
+        <message>
+            <source>Adaptive mode: trend cell (m)</source>
+            <translation>حالت سازگار: سلول روند (متر)</translation>
+        </message>
+        <message>
+            <source>Adaptive mode: trend window, &gt; largest building (m)</source>
+            <translation>حالت سازگار: پنجرهٔ روند، &gt; بزرگ‌ترین ساختمان (متر)</translation>
+        </message>
+        <message>
+            <source>TREND_CELL and TREND_WINDOW must be &gt; 0 metres in adaptive mode (e.g. 10 and 60).</source>
+            <translation>در حالت سازگار، TREND_CELL و TREND_WINDOW باید &gt; 0 متر باشند (مثلاً 10 و 60).</translation>
+        </message>
+        <message>
+            <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
+            <translation>NOISE_RADIUS و NOISE_THRESHOLD باید &gt; 0 متر باشند (مثلاً 5 و 1)، یا پیش‌فیلتر NOISE را خاموش کنید.</translation>
+        </message>
+    </context>
 </TS>

@@ -43,12 +43,17 @@ FILTERS = {
 
 
 def build(filter_key: str = "lsq"):
-    from qgis.core import (QgsProcessingModelAlgorithm, QgsProcessingModelChildAlgorithm,
-                           QgsProcessingModelChildParameterSource as Src,
-                           QgsProcessingModelOutput, QgsProcessingModelParameter,
-                           QgsProcessingParameterBoolean, QgsProcessingParameterCrs,
-                           QgsProcessingParameterFile,
-                           QgsProcessingParameterNumber)
+    from qgis.core import (
+        QgsProcessingModelAlgorithm,
+        QgsProcessingModelChildAlgorithm,
+        QgsProcessingModelOutput,
+        QgsProcessingModelParameter,
+        QgsProcessingParameterBoolean,
+        QgsProcessingParameterCrs,
+        QgsProcessingParameterFile,
+        QgsProcessingParameterNumber,
+    )
+    from qgis.core import QgsProcessingModelChildParameterSource as Src
     from qgis.PyQt.QtCore import QPointF
 
     alg_id, filter_label, filter_params = FILTERS[filter_key]
@@ -154,6 +159,7 @@ def build(filter_key: str = "lsq"):
 def _register_provider():
     """Register the plugin's provider so the filter's parameter definitions are copied."""
     import importlib.util
+
     from qgis.core import QgsApplication
     name = "geomatics_toolbox"
     if name not in sys.modules:

@@ -483,7 +483,8 @@ def points_text(gcps: GCPSet, *, crs_wkt: Optional[str] = None, residuals=None) 
 
 def gcps_csv_text(gcps: GCPSet) -> str:
     """Text of a CSV table (id,col,row,X,Y,enabled,role[,weight]) readable by
-    :func:`read_csv` (corner convention)."""
+    :func:`read_csv` (corner convention).
+    """
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     head = ["id", "col", "row", "X", "Y", "enabled", "role"]

@@ -22,8 +22,8 @@ from typing import Dict, Iterator, Mapping, Optional, Sequence, Tuple
 
 import numpy as np
 
-from .contract import atomic_output, check_not_input
 from ..progress import Monitor
+from .contract import atomic_output, check_not_input
 
 DEFAULT_CHUNK = 2_000_000
 _SUPPORTED_VERSIONS = {(1, 0), (1, 1), (1, 2), (1, 3), (1, 4)}

@@ -12,8 +12,8 @@ from typing import List, Optional, Sequence, Tuple
 
 import numpy as np
 
-from .las import LasInfo, iter_las_chunks, las_info
 from ..progress import Monitor
+from .las import LasInfo, iter_las_chunks, las_info
 from .raster import write_geotiff
 
 

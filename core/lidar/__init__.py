@@ -1,2 +1,1 @@
-"""LiDAR point-cloud processing: ground filters, low-noise flags, filter accuracy.
-"""
+"""LiDAR point-cloud processing: ground filters, low-noise flags, filter accuracy."""

@@ -76,8 +76,8 @@ from typing import Dict, List, Optional, Sequence
 import numpy as np
 
 from ..coords import as_xyz
-from .noise import NOISE_CLASS, flag_low_outliers
 from ..progress import Monitor
+from .noise import NOISE_CLASS, flag_low_outliers
 
 __all__ = ["lsq_ground_filter", "LsqResult", "TileGrid", "design_matrix", "n_coefficients",
            "fit_tiles", "GROUND", "OTHER", "NOISE", "UNCLASSIFIED", "IMPROVED_DEFAULTS",

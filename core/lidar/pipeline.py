@@ -34,13 +34,13 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
-from . import slope as sf
 from ..io.contract import atomic_output, check_not_input
-from .accuracy import ground_mask
 from ..io.las import check_las_file, las_info, read_las, write_las_like
-from .noise import flag_low_outliers
 from ..progress import Monitor
 from ..reporting.html import esc, fmt, html_page, html_params, html_table
+from . import slope as sf
+from .accuracy import ground_mask
+from .noise import flag_low_outliers
 
 __all__ = ["RETURNS", "GROUND_CLASS", "NONGROUND_CLASS", "NOISE_CLASS",
            "last_return_mask", "select_points", "classify_file", "sweep_file",
@@ -269,7 +269,8 @@ def _cb(mon: Monitor) -> dict:
 
 def _read_input(src, returns: str, mon: Monitor):
     """Coordinates, classification and (for ``returns='last'``) the return numbers;
-    :func:`read_las` refuses missing, non-LAS and empty files with a clear error."""
+    :func:`read_las` refuses missing, non-LAS and empty files with a clear error.
+    """
     dims = ["classification"]
     if returns == "last":
         dims += ["return_number", "number_of_returns"]

@@ -71,8 +71,8 @@ from typing import Dict, List, Optional, Sequence
 import numpy as np
 
 from ..coords import as_xyz
-from .accuracy import assess
 from ..progress import Monitor
+from .accuracy import assess
 
 __all__ = [
     "DEFAULT_RADIUS", "DEFAULT_SLOPE", "DEFAULT_HEIGHT_TOLERANCE", "PAPER_SETTING",
@@ -382,7 +382,8 @@ def _bounded_max_slope(px, py, pz, qx, qy, qz, *, radius: float, height: float,
 def _tiled_max_slope(px, py, pz, qx, qy, qz, *, radius, height, t_lo, t_hi, cell, pad,
                      mon, stats, origin) -> np.ndarray:
     """:func:`_bounded_max_slope` tile by tile; exact because each tile's neighbour
-    set holds every neighbour point within ``radius`` (plus a margin) of the tile."""
+    set holds every neighbour point within ``radius`` (plus a margin) of the tile.
+    """
     r, s = radius, cell
     x0, y0 = origin
     cmax = max(abs(x0), abs(y0), float(np.abs(px).max()), float(np.abs(py).max()),

@@ -1,2 +1,1 @@
-"""Photogrammetric planning: GSD and accuracy calculator, camera presets.
-"""
+"""Photogrammetric planning: GSD and accuracy calculator, camera presets."""

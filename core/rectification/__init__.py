@@ -1,2 +1,1 @@
-"""GCP image rectification: transformations, accuracy criteria, warping.
-"""
+"""GCP image rectification: transformations, accuracy criteria, warping."""

@@ -34,11 +34,18 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
-from ..reporting import html as rep
 from ..io.gcp import GCPSet
-from .polynomial import (IllConditionedError, MAX_CONDITION, PolynomialModel,
-                         fit_polynomial, leave_one_out, n_terms, residuals)
 from ..progress import Monitor
+from ..reporting import html as rep
+from .polynomial import (
+    MAX_CONDITION,
+    IllConditionedError,
+    PolynomialModel,
+    fit_polynomial,
+    leave_one_out,
+    n_terms,
+    residuals,
+)
 
 CITATION = ("Criteria after: Tishreen University Journal for Research and Scientific Studies "
             "— Engineering Sciences Series 38(2), 2016, 'criteria to judge the geometric "
@@ -55,7 +62,8 @@ SCALE_FACTOR = 20000.0
 
 def min_redundancy(order: int) -> int:
     """Redundancy ``n − N`` needed before an order is *recommended*: ``max(2, ⌈N/2⌉)``
-    (order 1: n ≥ 5, order 2: n ≥ 9, order 3: n ≥ 15)."""
+    (order 1: n ≥ 5, order 2: n ≥ 9, order 3: n ≥ 15).
+    """
     return max(2, math.ceil(n_terms(order) / 2))
 
 
@@ -145,7 +153,8 @@ class ResidualStats:
     @property
     def verdict(self) -> str:
         """'accepted' when C4 (≤ 6·GR), C5 and C6 hold; 'rejected' otherwise;
-        'undetermined' without GR. A C7 bias flag adds ' (bias warning)'."""
+        'undetermined' without GR. A C7 bias flag adds ' (bias warning)'.
+        """
         if self.gr is None:
             return "undetermined"
         ok = self.c4 in ("strict", "accepted") and self.c5 and self.c6
@@ -520,7 +529,8 @@ def _evaluate_order(g: GCPSet, order: int, gr, image_size, *, max_condition,
 
 def _suggest_drops(pix, mp, ids, w, order, gr, max_condition) -> List[dict]:
     """Drop the worst point over the C5 limit and refit, while the redundancy stays at
-    least :func:`min_redundancy` and at most a quarter of the points are dropped."""
+    least :func:`min_redundancy` and at most a quarter of the points are dropped.
+    """
     if gr is None:
         return []
     limit = POINT_LIMIT_MM * 1e-3 * SCALE_FACTOR * gr
@@ -849,7 +859,8 @@ def to_html(acc: GcpAccuracy, *, lang: str = "en", extra_params: Optional[dict] 
 
 def residual_plot(acc: GcpAccuracy, order: Optional[int] = None) -> str:
     """SVG residual-vector plot of ``order`` (default: the selected one) over the image
-    footprint in map coordinates; check points included, labelled with '*'."""
+    footprint in map coordinates; check points included, labelled with '*'.
+    """
     r = acc.results[order or acc.order]
     s = r.stats
     g = acc.gcps

@@ -231,7 +231,8 @@ class PolynomialModel:
 
     def pixel_size(self, col=None, row=None) -> float:
         """Ground size of a pixel ``sqrt(|det J|)`` (map units), at the GCP centroid
-        by default — the ground resolution GR implied by the fit."""
+        by default — the ground resolution GR implied by the fit.
+        """
         if col is None:
             col, row = self.pixel_norm.x0, self.pixel_norm.y0
         a, b, c, d = self.jacobian(col, row)

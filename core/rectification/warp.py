@@ -27,8 +27,8 @@ import numpy as np
 
 from ..io.contract import atomic_output, check_not_input
 from ..io.gcp import GCPSet, check_in_image
-from .polynomial import MAX_CONDITION, PolynomialModel, fit_polynomial
 from ..progress import Cancelled, Monitor
+from .polynomial import MAX_CONDITION, PolynomialModel, fit_polynomial
 
 RESAMPLING = ("near", "bilinear", "cubic", "cubicspline", "lanczos", "average", "mode")
 CREATION_OPTIONS = ("TILED=YES", "COMPRESS=DEFLATE", "BIGTIFF=IF_SAFER")
@@ -85,7 +85,8 @@ def to_crs(xy: np.ndarray, src: str, dst: str) -> np.ndarray:
 
 def ground_resolution(gcps: GCPSet, crs: Optional[str] = None) -> float:
     """Pixel size on the ground implied by the enabled GCPs (affine fit, ``sqrt|det J|``),
-    in the units of ``crs`` (default: the GCPs' CRS)."""
+    in the units of ``crs`` (default: the GCPs' CRS).
+    """
     m = gcps.fit_mask
     mp = gcps.map[m]
     if crs and gcps.crs and not same_crs(crs, gcps.crs):

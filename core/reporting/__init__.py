@@ -1,2 +1,1 @@
-"""Report rendering (HTML, SVG figures). Imports no domain sub-package.
-"""
+"""Report rendering (HTML, SVG figures). Imports no domain sub-package."""

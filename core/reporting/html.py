@@ -37,7 +37,8 @@ def esc(value) -> str:
 
 def fmt(value, digits: Optional[int] = 3) -> str:
     """Format a number for a report: ``digits`` fixed decimals (``None``: six significant
-    digits, e.g. 0.21455 or 3648), integers plain, NaN as '–'."""
+    digits, e.g. 0.21455 or 3648), integers plain, NaN as '–'.
+    """
     if value is None:
         return "–"
     if isinstance(value, (bool, np.bool_)):
@@ -175,7 +176,8 @@ def svg_scatter(x, y, *, xlabel: str = "x", ylabel: str = "y", title: str = "",
                 one_to_one: bool = False, width: int = 460, height: int = 400,
                 max_points: int = 5000, labels: Optional[Sequence[str]] = None) -> str:
     """Scatter plot as inline SVG; ``one_to_one`` draws the y = x line (observed vs
-    predicted). At most ``max_points`` points are drawn (evenly subsampled)."""
+    predicted). At most ``max_points`` points are drawn (evenly subsampled).
+    """
     x = np.asarray(x, float)
     y = np.asarray(y, float)
     ok = np.isfinite(x) & np.isfinite(y)

@@ -1,2 +1,1 @@
-"""Terrain models: grids, IDW, kriging, DSM/nDSM and DTM accuracy.
-"""
+"""Terrain models: grids, IDW, kriging, DSM/nDSM and DTM accuracy."""

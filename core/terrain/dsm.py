@@ -22,8 +22,8 @@ from typing import Iterable, Optional, Sequence
 
 import numpy as np
 
-from .grid import GridSpec, check_memory
 from ..progress import Monitor
+from .grid import GridSpec, check_memory
 
 
 def accumulate_max(grid: GridSpec, out: np.ndarray, x, y, z) -> int:

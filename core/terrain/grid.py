@@ -87,11 +87,11 @@ class GridSpec:
         return (self.xmin, self.cell, 0.0, self.ymax, 0.0, -self.cell)
 
     def x_centers(self) -> np.ndarray:
-        """x of the cell centres of each column (length ``ncols``)."""
+        """X of the cell centres of each column (length ``ncols``)."""
         return self.xmin + (np.arange(self.ncols) + 0.5) * self.cell
 
     def y_centers(self) -> np.ndarray:
-        """y of the cell centres of each row, north to south (length ``nrows``)."""
+        """Y of the cell centres of each row, north to south (length ``nrows``)."""
         return self.ymax - (np.arange(self.nrows) + 0.5) * self.cell
 
     def block_centers(self, row0: int, row1: int) -> Tuple[np.ndarray, np.ndarray]:
@@ -294,7 +294,8 @@ def resolve_max_distance(grid: GridSpec, n_points: int, max_distance: Optional[f
                          *, fill: bool = False) -> Optional[float]:
     """The gap distance a gridder uses: ``None`` (no mask) when ``fill``, the
     :func:`default_max_distance` when ``max_distance`` is None, else ``max_distance``
-    after checking it is positive."""
+    after checking it is positive.
+    """
     if fill:
         return None
     if max_distance is None:

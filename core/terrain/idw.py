@@ -46,8 +46,8 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from ..coords import as_xyz
-from .grid import GridSpec, check_memory, resolve_max_distance, row_blocks
 from ..progress import Monitor
+from .grid import GridSpec, check_memory, resolve_max_distance, row_blocks
 
 #: squared distance below which a node "is on" a point (GDAL's constant)
 COINCIDENT_R2 = 1e-13
@@ -241,7 +241,7 @@ class IDW:
         return self._rank
 
     def _break_ties(self, q: np.ndarray, k: int, ub: float):
-        """k nearest, equal distances ordered like GDAL's quadtree (or by input index).
+        """K nearest, equal distances ordered like GDAL's quadtree (or by input index).
 
         The KD-tree returns equidistant points in an arbitrary order.
         """

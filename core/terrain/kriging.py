@@ -65,8 +65,8 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from ..coords import as_xyz
-from .grid import GridSpec, check_memory, resolve_max_distance, row_blocks
 from ..progress import Monitor
+from .grid import GridSpec, check_memory, resolve_max_distance, row_blocks
 
 MODELS = ("linear", "power", "gaussian", "spherical", "exponential")
 DRIFTS = ("none", "linear")

@@ -1,7 +1,6 @@
 """qgis_process smoke tests for the LSQ ground filter and the filter accuracy."""
 from __future__ import annotations
 
-
 import laspy
 import numpy as np
 import pytest

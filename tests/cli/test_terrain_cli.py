@@ -1,7 +1,6 @@
 """qgis_process smoke tests: one run per terrain algorithm, plus one failure."""
 from __future__ import annotations
 
-
 import pytest
 
 from geomatics_toolbox.core.io.raster import read_raster

@@ -4,13 +4,18 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.terrain.dsm import accumulate_max, dsm_grid, fill_nearest, ndsm
-from geomatics_toolbox.core.terrain.accuracy import (NODATA, OK, OUTSIDE, accuracy_stats,
-                                                 dtm_accuracy, sample_raster)
-from geomatics_toolbox.core.terrain.grid import grid_from_extent
+from geomatics_toolbox.core.io.points import parse_classes, read_checkpoints_csv, write_grid
 from geomatics_toolbox.core.io.raster import read_raster
-from geomatics_toolbox.core.io.points import (parse_classes, read_checkpoints_csv,
-                                               write_grid)
+from geomatics_toolbox.core.terrain.accuracy import (
+    NODATA,
+    OK,
+    OUTSIDE,
+    accuracy_stats,
+    dtm_accuracy,
+    sample_raster,
+)
+from geomatics_toolbox.core.terrain.dsm import accumulate_max, dsm_grid, fill_nearest, ndsm
+from geomatics_toolbox.core.terrain.grid import grid_from_extent
 
 GRID = grid_from_extent((1000.0, 1100.0, 2000.0, 2080.0), 1.0, crs="EPSG:32632")
 

@@ -4,9 +4,15 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.lidar.accuracy import (assess, assess_clouds, error_codes,
-                                                    from_counts, ground_mask, parse_classes)
 from geomatics_toolbox.core.io.las import write_las
+from geomatics_toolbox.core.lidar.accuracy import (
+    assess,
+    assess_clouds,
+    error_codes,
+    from_counts,
+    ground_mask,
+    parse_classes,
+)
 
 
 def test_golden_paper_samp54_counts():

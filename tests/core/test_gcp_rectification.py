@@ -15,9 +15,8 @@ import pytest
 
 from geomatics_toolbox.core.io import gcp as gcp_io
 from geomatics_toolbox.core.rectification import accuracy as gcp_report
+from geomatics_toolbox.core.rectification import polynomial, warp
 from geomatics_toolbox.synthetic import gcp as gcp_synthetic
-from geomatics_toolbox.core.rectification import polynomial
-from geomatics_toolbox.core.rectification import warp
 
 gdal = pytest.importorskip("osgeo.gdal")
 gdal.UseExceptions()

@@ -4,8 +4,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.terrain.grid import (check_memory, grid_from_extent, grid_from_points,
-                                         grid_like)
+from geomatics_toolbox.core.terrain.grid import (
+    check_memory,
+    grid_from_extent,
+    grid_from_points,
+    grid_like,
+)
 from geomatics_toolbox.core.terrain.idw import IDW, idw_grid
 
 gdal = pytest.importorskip("osgeo.gdal")

@@ -5,8 +5,13 @@ import numpy as np
 import pytest
 
 from geomatics_toolbox.core.terrain.grid import grid_from_extent
-from geomatics_toolbox.core.terrain.kriging import (Kriging, fit_variogram, given_variogram,
-                                            kriging_grid, parse_variogram_parameters)
+from geomatics_toolbox.core.terrain.kriging import (
+    Kriging,
+    fit_variogram,
+    given_variogram,
+    kriging_grid,
+    parse_variogram_parameters,
+)
 
 pykrige_ok = pytest.importorskip("pykrige.ok")
 pykrige_uk = pytest.importorskip("pykrige.uk")

@@ -5,9 +5,16 @@ import numpy as np
 import pytest
 
 from geomatics_toolbox.core.lidar.accuracy import assess
-from geomatics_toolbox.core.lidar.lsq import (FAITHFUL_MAX_ITERATIONS, GROUND, NOISE, OTHER,
-                                               UNCLASSIFIED, design_matrix, fit_tiles,
-                                               lsq_ground_filter)
+from geomatics_toolbox.core.lidar.lsq import (
+    FAITHFUL_MAX_ITERATIONS,
+    GROUND,
+    NOISE,
+    OTHER,
+    UNCLASSIFIED,
+    design_matrix,
+    fit_tiles,
+    lsq_ground_filter,
+)
 from geomatics_toolbox.core.progress import Cancelled
 
 

@@ -9,9 +9,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from scipy.spatial import cKDTree
 
-from geomatics_toolbox.core.lidar import slope as sf
-from geomatics_toolbox.core.lidar import pipeline as sp
 from geomatics_toolbox.core.io.las import read_las, write_las, write_las_like
+from geomatics_toolbox.core.lidar import pipeline as sp
+from geomatics_toolbox.core.lidar import slope as sf
 from geomatics_toolbox.core.progress import Cancelled
 
 SAMPLES = ("samp11", "samp12", "samp31", "samp54")

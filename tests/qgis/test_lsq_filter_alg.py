@@ -5,8 +5,8 @@ import laspy
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.lidar.accuracy import assess
 from geomatics_toolbox.core.io.las import read_las, write_las
+from geomatics_toolbox.core.lidar.accuracy import assess
 from geomatics_toolbox.core.lidar.lsq import lsq_ground_filter
 
 ALG = "geomatics:lsqgroundfilter"

@@ -19,6 +19,7 @@ EXPECTED = {
 
 def test_plugin_life_cycle(qgis_app):
     from qgis.core import QgsApplication
+
     import geomatics_toolbox
     registry = QgsApplication.processingRegistry()
     plugin = geomatics_toolbox.classFactory(None)
@@ -56,6 +57,7 @@ def _qm(lang: str, tmp_path: Path) -> Path:
 @pytest.mark.parametrize("lang", ["ar", "fa"])
 def test_translations_load_and_translate(qgis_app, lang, tmp_path):
     from qgis.PyQt.QtCore import QCoreApplication, QTranslator
+
     from geomatics_toolbox.algorithms.gsd_calculator import GsdCalculatorAlgorithm
     from geomatics_toolbox.provider.provider import GeomaticsProvider
     translator = QTranslator()
@@ -80,6 +82,7 @@ def test_translations_load_and_translate(qgis_app, lang, tmp_path):
 def test_plugin_installs_translator_for_user_locale(qgis_app, lang):
     from qgis.core import QgsSettings
     from qgis.PyQt.QtCore import QCoreApplication
+
     from geomatics_toolbox import plugin as plugin_mod
     from geomatics_toolbox.provider.provider import GeomaticsProvider
     if not (ROOT / "i18n" / f"geomatics_toolbox_{lang}.qm").exists():
@@ -127,6 +130,7 @@ def test_every_label_and_help_is_translated_at_run_time(qgis_app, lang, tmp_path
     """What an Arabic/Persian user sees: names, parameter labels and help, all translated
     (catches strings pylupdate5 cannot see, e.g. through '+' or a wrong context)."""
     from qgis.PyQt.QtCore import QCoreApplication, QTranslator
+
     from geomatics_toolbox.algorithms import all_algorithms
     translator = QTranslator()
     assert translator.load(str(_qm(lang, tmp_path)))

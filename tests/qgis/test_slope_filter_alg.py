@@ -6,9 +6,9 @@ import csv
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.lidar import slope as sf
-from geomatics_toolbox.core.lidar import pipeline as sp
 from geomatics_toolbox.core.io.las import read_las, write_las
+from geomatics_toolbox.core.lidar import pipeline as sp
+from geomatics_toolbox.core.lidar import slope as sf
 
 
 @pytest.fixture(scope="module")

@@ -114,8 +114,15 @@ def test_bad_inputs_clear_errors_no_output(qgis_processing, scene):
 
 
 def test_checkpoints_in_other_crs(qgis_processing, scene, tmp_path):
-    from qgis.core import (QgsCoordinateReferenceSystem, QgsCoordinateTransform,
-                           QgsFeature, QgsGeometry, QgsPoint, QgsProject, QgsVectorLayer)
+    from qgis.core import (
+        QgsCoordinateReferenceSystem,
+        QgsCoordinateTransform,
+        QgsFeature,
+        QgsGeometry,
+        QgsPoint,
+        QgsProject,
+        QgsVectorLayer,
+    )
     d = scene["dir"]
     dtm = qgis_processing.run("geomatics:idwdtm", {
         "INPUT": scene["laz"], "OUTPUT": str(d / "dtm_crs.tif")})["OUTPUT"]
