@@ -3,20 +3,12 @@ from __future__ import annotations
 
 import os
 
-from qgis.core import QgsApplication, QgsSettings
-from qgis.PyQt.QtCore import QCoreApplication, QLocale, QTranslator
+from qgis.core import QgsApplication
+from qgis.PyQt.QtCore import QCoreApplication, QTranslator
+
+from .algorithms.locale import user_locale
 
 PLUGIN_DIR = os.path.dirname(__file__)
-
-
-def user_locale() -> str:
-    """Two-letter language code of the QGIS user interface (e.g. 'ar', 'fa')."""
-    settings = QgsSettings()
-    if settings.value("locale/overrideFlag", False, type=bool):
-        name = settings.value("locale/userLocale", "") or QLocale().name()
-    else:
-        name = QLocale().name()
-    return (name or "en")[:2]
 
 
 def install_translator(locale: str | None = None) -> QTranslator | None:

@@ -27,8 +27,11 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
-from ..core.io.contract import atomic_output
+from ..core.errors import InputError
+from ..core.io.contract import OutputContract, Terminated, atomic_output
 from ..core.progress import Cancelled
+from ..core.reporting import render_html
+from .locale import user_locale
 
 ICON = os.path.join(os.path.dirname(os.path.dirname(__file__)),
                     "provider", "icons", "geomatics.svg")
@@ -135,14 +138,52 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
         return {"progress": lambda f: feedback.setProgress(100.0 * f),
                 "cancel": feedback.isCanceled}
 
-    @staticmethod
-    def report_lang() -> str:
-        """Language code of the user interface, for the ``lang`` of HTML reports."""
+    # ---------------------------------------------------------------- reports
+    REPORT_LANGUAGE = "REPORT_LANGUAGE"
+    #: REPORT_LANGUAGE options: index -> language code ('' = the QGIS interface language)
+    REPORT_LANGUAGES = ("", "en", "ar", "fa")
+
+    def add_report_language(self) -> None:
+        """Add REPORT_LANGUAGE (advanced enum; default: the QGIS interface language)."""
+        from qgis.core import QgsProcessingParameterEnum
+        self.add(QgsProcessingParameterEnum(
+            self.REPORT_LANGUAGE, self.tr("Report language"),
+            [self.tr("Interface language"), "English", "العربية", "فارسی"],
+            defaultValue=0), advanced=True)
+
+    def report_lang(self, parameters=None, context=None) -> str:
+        """Language code for reports: REPORT_LANGUAGE if set, else the UI language."""
+        if parameters is not None and self.parameterDefinition(self.REPORT_LANGUAGE):
+            index = self.parameterAsEnum(parameters, self.REPORT_LANGUAGE, context)
+            if 0 < index < len(self.REPORT_LANGUAGES):
+                return self.REPORT_LANGUAGES[index]
         try:
-            from ..plugin import user_locale
             return user_locale()
         except Exception:  # noqa: BLE001 - the report language is cosmetic
             return "en"
+
+    def render_report(self, report, parameters=None, context=None) -> str:
+        """HTML of a core :class:`~..core.reporting.Report` in the report language."""
+        return render_html(report, lang=self.report_lang(parameters, context))
+
+    # ---------------------------------------------------------------- outputs
+    def output_contract(self, parameters, context, outputs, inputs=()) -> OutputContract:
+        """The :class:`OutputContract` of this run.
+
+        ``outputs``: names of file-destination parameters (unset optional ones are
+        skipped); ``inputs``: ``{parameter name: path or list of paths}`` of every file
+        read. Raises a clear error before anything is written when an output is an
+        input or two outputs share a path.
+        """
+        paths = {}
+        for name in outputs:
+            value = parameters.get(name) if parameters else None
+            if value is None or value == "":
+                continue
+            path = self.parameterAsFileOutput(parameters, name, context)
+            if path:
+                paths[name] = path
+        return OutputContract(paths, inputs=dict(inputs))
 
     @staticmethod
     def write_text(path: str, text: str) -> str:
@@ -164,7 +205,14 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
         except Cancelled:
             raise QgsProcessingException(QCoreApplication.translate(
                 "GeomaticsAlgorithm", "Cancelled by the user; no output was written.")) from None
+        except Terminated:
+            raise QgsProcessingException(QCoreApplication.translate(
+                "GeomaticsAlgorithm", "Terminated; no output was written.")) from None
+        except InputError as exc:
+            raise QgsProcessingException(str(exc)) from None
         except (ValueError, OSError) as exc:
+            if feedback is not None:
+                feedback.pushDebugInfo(traceback.format_exc())
             raise QgsProcessingException(str(exc)) from exc
         except MemoryError:
             raise QgsProcessingException(QCoreApplication.translate(

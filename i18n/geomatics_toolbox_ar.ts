@@ -599,6 +599,18 @@
             <source>Low-outlier depth below neighbours (m)</source>
             <translation>عمق القيمة الشاذة المنخفضة تحت الجيران (م)</translation>
         </message>
+        <message>
+            <source>Report language</source>
+            <translation>لغة التقرير</translation>
+        </message>
+        <message>
+            <source>Interface language</source>
+            <translation>لغة الواجهة</translation>
+        </message>
+        <message>
+            <source>Terminated; no output was written.</source>
+            <translation>أُنهي التشغيل؛ لم يُكتب أي ناتج.</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>

@@ -599,6 +599,18 @@
             <source>Low-outlier depth below neighbours (m)</source>
             <translation>عمق نقطهٔ پرت پایین نسبت به همسایه‌ها (متر)</translation>
         </message>
+        <message>
+            <source>Report language</source>
+            <translation>زبان گزارش</translation>
+        </message>
+        <message>
+            <source>Interface language</source>
+            <translation>زبان رابط کاربری</translation>
+        </message>
+        <message>
+            <source>Terminated; no output was written.</source>
+            <translation>اجرا متوقف شد؛ هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>
