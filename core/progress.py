@@ -48,7 +48,7 @@ class Monitor:
             self._progress(self._start + (self._stop - self._start) * f)
 
     def cancelled(self) -> bool:
-        """True when the caller asked to stop."""
+        """Return True when the caller asked to stop."""
         return bool(self._cancel is not None and self._cancel())
 
     def check(self) -> None:
@@ -62,7 +62,7 @@ class Monitor:
         self.update(fraction)
 
     def sub(self, start: float, stop: float) -> "Monitor":
-        """A monitor whose ``[0, 1]`` maps to ``[start, stop]`` of this one."""
+        """Return a monitor whose ``[0, 1]`` maps to ``[start, stop]`` of this one."""
         span = self._stop - self._start
         return Monitor(self._progress, self._cancel,
                        self._start + span * start, self._start + span * stop)

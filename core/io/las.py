@@ -72,9 +72,11 @@ class PointData:
     info: Optional[LasInfo] = None
 
     def __len__(self) -> int:
+        """Return the number of points."""
         return int(self.x.size)
 
     def __getitem__(self, name: str) -> np.ndarray:
+        """Return the extra dimension ``name`` (e.g. ``'classification'``)."""
         return self.dims[name]
 
 

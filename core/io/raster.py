@@ -15,6 +15,7 @@ from typing import Optional, Sequence, Tuple
 import numpy as np
 
 from .contract import atomic_output
+from .crs import crs_label, srs_wkt  # noqa: F401 - re-exported (historic location)
 
 DEFAULT_NODATA = -9999.0
 CREATION_OPTIONS = ("TILED=YES", "COMPRESS=DEFLATE", "PREDICTOR=3", "BIGTIFF=IF_SAFER")
@@ -24,43 +25,6 @@ def _gdal():
     from osgeo import gdal
     gdal.UseExceptions()
     return gdal
-
-
-def srs_wkt(crs: Optional[str]) -> str:
-    """WKT of ``crs`` (anything ``OSRSetFromUserInput`` accepts); '' for None."""
-    if not crs:
-        return ""
-    from osgeo import osr
-    srs = osr.SpatialReference()
-    try:
-        ok = srs.SetFromUserInput(str(crs)) == 0
-    except RuntimeError:
-        ok = False
-    if not ok:
-        raise ValueError(f"Unrecognised CRS {crs!r}; give e.g. 'EPSG:32632' or WKT.")
-    return srs.ExportToWkt()
-
-
-def crs_label(crs: Optional[str]) -> str:
-    """Short human label of a CRS for reports: 'EPSG:32632 (WGS 84 / UTM zone 32N)'.
-
-    Falls back to the CRS's name, then to the input text; '' for None.
-    """
-    if not crs:
-        return ""
-    from osgeo import osr
-    srs = osr.SpatialReference()
-    try:
-        if srs.SetFromUserInput(str(crs)) != 0:
-            return str(crs)
-    except RuntimeError:
-        return str(crs)
-    name = srs.GetName() or ""
-    srs.AutoIdentifyEPSG()
-    auth, code = srs.GetAuthorityName(None), srs.GetAuthorityCode(None)
-    if auth and code:
-        return f"{auth}:{code} ({name})" if name else f"{auth}:{code}"
-    return name or str(crs)
 
 
 @dataclass
@@ -74,10 +38,11 @@ class Raster:
 
     @property
     def shape(self) -> Tuple[int, int]:
+        """Return ``(rows, columns)``."""
         return self.data.shape
 
     def masked(self) -> np.ndarray:
-        """Data as float64 with nodata cells set to NaN."""
+        """Return the data as float64 with nodata cells set to NaN."""
         out = self.data.astype(np.float64, copy=True)
         if self.nodata is not None:
             out[self.data == self.nodata] = np.nan
