@@ -1,8 +1,6 @@
 """Ground filter accuracy against reference labels (Processing algorithm)."""
 from __future__ import annotations
 
-import contextlib
-
 import numpy as np
 from qgis.core import (
     QgsProcessingOutputNumber,
@@ -11,9 +9,9 @@ from qgis.core import (
     QgsProcessingParameterString,
 )
 
-from ..core.io.contract import atomic_output, check_not_input
 from ..core.io.las import write_las_like
 from ..core.lidar import accuracy as core_fa
+from ..core.progress import Cancelled
 from ..core.reporting.html import esc, html_page, html_table
 from .base import GeomaticsAlgorithm
 
@@ -104,6 +102,7 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
             self.REFERENCE_FIELD, self.tr("Reference class dimension"), "classification"))
         self.add(QgsProcessingParameterString(
             self.REFERENCE_GROUND_CLASSES, self.tr("Reference ground classes"), "2"))
+        self.add_report_language()
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
@@ -129,9 +128,9 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
         if err_out and not err_out.lower().endswith((".las", ".laz")):
             raise ValueError(self.tr("The error layer must end in .las or .laz: {p}").format(
                 p=err_out))
-        for path in (html_out, err_out):
-            if path:
-                check_not_input(path, src, *([ref] if ref else []))
+        contract = self.output_contract(parameters, context,
+                                         [self.OUTPUT_HTML, self.ERROR_OUTPUT],
+                                         inputs={self.INPUT: src, self.REFERENCE: ref})
         cb = self.core_callbacks(feedback)
         res = core_fa.assess_clouds(
             src, ref, field=field, ground_classes=gc, reference_field=ref_field,
@@ -141,16 +140,17 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
         acc = res.accuracy.as_dict()
         for key, out, label in self.OUTPUTS:
             feedback.pushInfo(f"{out} ({label}): {acc[key]:.6g}")
-        with contextlib.ExitStack() as stack:
+        with contract as out:
             if err_out:
-                tmp = stack.enter_context(atomic_output(err_out))
-                write_las_like(src, tmp, dimensions={"user_data": res.error_codes()},
+                write_las_like(src, out.path(self.ERROR_OUTPUT),
+                               dimensions={"user_data": res.error_codes()},
                                progress=(lambda f: cb["progress"](0.7 + 0.29 * f))
                                if cb["progress"] else None, cancel=cb["cancel"])
             if html_out:
-                tmp = stack.enter_context(atomic_output(html_out))
-                with open(tmp, "w", encoding="utf-8") as fh:
-                    fh.write(self.report(src, ref, field, ref_field, gc, rgc, res))
+                out.write_text(self.OUTPUT_HTML, self.report(src, ref, field, ref_field, gc,
+                                                             rgc, res, parameters, context))
+            if feedback.isCanceled():
+                raise Cancelled("cancelled by the user")
         feedback.setProgress(100)
         result = {out: acc[key] for key, out, _ in self.OUTPUTS}
         if html_out:
@@ -159,7 +159,8 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
             result[self.ERROR_OUTPUT] = err_out
         return result
 
-    def report(self, src, ref, field, ref_field, gc, rgc, res) -> str:
+    def report(self, src, ref, field, ref_field, gc, rgc, res, parameters=None,
+               context=None) -> str:
         tr = self.tr
         a = res.accuracy
         d = a.as_dict()
@@ -194,4 +195,5 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
             "<p class='note'>" + esc(tr(
                 "Measures of the ISPRS filter test: Sithole, G. & Vosselman, G. (2004), "
                 "ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.")) + "</p>"])
-        return html_page(tr("Ground filter accuracy"), body, lang=self.report_lang())
+        return html_page(tr("Ground filter accuracy"), body,
+                         lang=self.report_lang(parameters, context))

@@ -14,7 +14,10 @@ from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.lidar import pipeline as core_sp
 from ..core.lidar import slope as core_sf
-from .base import GeomaticsAlgorithm
+from ..core.lidar.pipeline import SelectionOptions, classify_file
+from ..core.lidar.sweep import sweep_file
+from ..core.progress import Monitor
+from .lidar_common import LidarFilterMixin
 
 LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
 LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
@@ -25,7 +28,7 @@ METRIC_KEYS = ["total", "kappa", "type1", "type2"]
 
 
 
-class _SlopeCommon(GeomaticsAlgorithm):
+class _SlopeCommon(LidarFilterMixin):
     """Parameters shared by the filter and the sweep."""
 
     GROUP = "lidarfiltering"
@@ -46,6 +49,7 @@ class _SlopeCommon(GeomaticsAlgorithm):
             self.RETURNS, self.tr("Returns filtered"),
             [self.tr("All returns"), self.tr("Last returns only")], defaultValue=0))
         self.add_noise_params()
+        self.add_report_language()
 
     def add_mode_params(self):
         self.add(QgsProcessingParameterEnum(
@@ -57,6 +61,13 @@ class _SlopeCommon(GeomaticsAlgorithm):
         self.add_number(self.TREND_WINDOW,
                         self.tr("Adaptive mode: trend window, > largest building (m)"),
                         60.0, minimum=0.0, advanced=True)
+
+    def selection(self, parameters, context, kw, *, keep_noise: bool) -> SelectionOptions:
+        """The pipeline's point selection from the parameters."""
+        return SelectionOptions(returns=kw["returns"], noise=kw["noise"],
+                                noise_radius=kw["noise_radius"],
+                                noise_threshold=kw["noise_threshold"],
+                                keep_noise_classes=keep_noise)
 
     def common_kwargs(self, parameters, context) -> dict:
         mode = MODE_KEYS[self.parameterAsEnum(parameters, self.MODE, context)]
@@ -186,35 +197,32 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
 
     def process(self, parameters, context, feedback):
         src = self.parameterAsFile(parameters, self.INPUT, context)
-        out = self.parameterAsFileOutput(parameters, self.OUTPUT, context)
-        gout = self.parameterAsFileOutput(parameters, self.GROUND_OUTPUT, context)
-        html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
         kw = self.common_kwargs(parameters, context)
-        radius = self.parameterAsDouble(parameters, self.RADIUS, context)
-        slope = self.parameterAsDouble(parameters, self.SLOPE, context)
-        h = self.parameterAsDouble(parameters, self.HEIGHT_TOLERANCE, context)
+        opts = core_sf.SlopeOptions(
+            radius=self.parameterAsDouble(parameters, self.RADIUS, context),
+            slope=self.parameterAsDouble(parameters, self.SLOPE, context),
+            height_tolerance=self.parameterAsDouble(parameters, self.HEIGHT_TOLERANCE,
+                                                    context),
+            mode=kw["mode"], trend_cell=kw["trend_cell"], trend_window=kw["trend_window"])
+        selection = self.selection(parameters, context, kw, keep_noise=self.parameterAsBool(
+            parameters, self.KEEP_NOISE, context))
+        outputs = self.filter_outputs(parameters, context, cloud=self.OUTPUT,
+                                      ground=self.GROUND_OUTPUT, report=self.OUTPUT_HTML)
         feedback.pushInfo(self.tr("Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, "
-                                  "mode {}").format(radius, slope, h, kw["returns"],
+                                  "mode {}").format(opts.radius, opts.slope,
+                                                    opts.height_tolerance, kw["returns"],
                                                     kw["mode"]))
-        s = core_sp.classify_file(
-            src, out or None, ground_output=gout or None, html_output=html or None,
-            radius=radius, slope=slope, height_tolerance=h,
-            keep_noise_classes=self.parameterAsBool(parameters, self.KEEP_NOISE, context),
-            lang=self.report_lang(), **kw, **self.core_callbacks(feedback))
+        algorithm = core_sf.SlopeFilter(opts)
+        s = classify_file(src, algorithm, outputs, Monitor(**self.core_callbacks(feedback)),
+                          selection=selection)
+        filt = s.seconds.get("filter") or 0.0
         feedback.pushInfo(self.tr("{} points: {} ground, {} non-ground, {} low outliers; "
                                   "filter {:.1f} s").format(
-            s.n_points, s.n_ground, s.n_nonground, s.n_noise, s.seconds.get("filter", 0.0)))
-        filt = s.seconds.get("filter") or 0.0
+            s.n_points, s.n_ground, s.n_nonground, s.n_noise, filt))
         result = {"N_POINTS": s.n_points, "N_GROUND": s.n_ground,
                   "N_NONGROUND": s.n_nonground, "N_NOISE": s.n_noise,
                   "POINTS_PER_SECOND": s.n_points / filt if filt > 0 else None}
-        if out:
-            result[self.OUTPUT] = out
-        if gout:
-            result[self.GROUND_OUTPUT] = gout
-        if html:
-            result[self.OUTPUT_HTML] = html
-        return result
+        return {**result, **self.filter_results(outputs)}
 
 
 class SlopeThresholdSweepAlgorithm(_SlopeCommon):
@@ -338,11 +346,14 @@ class SlopeThresholdSweepAlgorithm(_SlopeCommon):
         kw = self.common_kwargs(parameters, context)
         feedback.pushInfo(self.tr("Sweeping {} thresholds × {} radii × {} tolerances").format(
             len(slopes), len(radii), len(hs)))
-        s = core_sp.sweep_file(src, reference=ref, ground_classes=classes, slopes=slopes,
-                               radii=radii, height_tolerances=hs, metric=metric,
-                               csv_output=csv or None, html_output=html or None,
-                               output=out or None, lang=self.report_lang(), **kw,
-                               **self.core_callbacks(feedback))
+        s = sweep_file(src, reference=ref, ground_classes=classes, slopes=slopes,
+                       radii=radii, height_tolerances=hs, metric=metric,
+                       selection=self.selection(parameters, context, kw, keep_noise=False),
+                       mode=kw["mode"], trend_cell=kw["trend_cell"],
+                       trend_window=kw["trend_window"], csv_output=csv or None,
+                       html_output=html or None, output=out or None,
+                       lang=self.report_lang(parameters, context),
+                       **self.core_callbacks(feedback))
         b = s.result.best
         for row in s.result.rows:
             feedback.pushInfo(f"r={row.radius:g} θ={row.slope:g} h={row.height_tolerance:g}: "

@@ -1,13 +1,34 @@
-"""Validation of point coordinates shared by every filter and gridder."""
+"""Validation of point coordinates shared by every filter and gridder.
+
+* :func:`as_xyz` — three contiguous float64 arrays, finite, same length;
+* :func:`check_projected` — refuses clouds in geographic degrees (a geographic CRS, or
+  coordinates that look like longitude/latitude), which every metric filter and
+  gridder would otherwise process silently and wrongly (a 50 m tile would span the
+  whole planet, a 1 m DTM cell would be one pixel).
+"""
 from __future__ import annotations
 
 from typing import Optional, Tuple
 
 import numpy as np
 
+from .errors import InputError
 
-def as_xyz(x, y, z, *, nonfinite: str = "raise",
-           empty_error: Optional[str] = None) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+#: Largest horizontal extent (coordinate units) of a cloud taken for lon/lat degrees.
+DEGREE_EXTENT = 5.0
+#: ... when its height range exceeds this many times its horizontal extent.
+DEGREE_Z_RATIO = 10.0
+
+REPROJECT_HINT = (
+    "Reproject it to a projected CRS in metres first, e.g. "
+    "'pdal translate in.laz out.laz reprojection "
+    "--filters.reprojection.out_srs=EPSG:326xx' (the UTM zone of the area; 327xx south "
+    "of the equator), las2las -target_epsg 326xx, or QGIS 'Reproject' on a "
+    "point-cloud layer.")
+
+
+def as_xyz(x, y, z, *, nonfinite: str = "raise", empty_error: Optional[str] = None,
+           projected: bool = False) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Coordinates as three contiguous 1-D float64 arrays of equal length.
 
     Parameters
@@ -19,12 +40,20 @@ def as_xyz(x, y, z, *, nonfinite: str = "raise",
         a ``ValueError`` that counts them (default), or leave them out.
     empty_error : str, optional
         When given, an empty result raises ``ValueError(empty_error)``.
+    projected : bool, default False
+        Also refuse coordinates that look like geographic degrees
+        (:func:`check_projected`).
+
+    Returns
+    -------
+    tuple of ndarray
+        ``x, y, z``.
 
     Raises
     ------
     ValueError
         Arrays of different lengths, non-finite coordinates (``nonfinite='raise'``), or
-        no points (with ``empty_error``).
+        no points (with ``empty_error``); :class:`~.errors.InputError` for degrees.
     """
     if nonfinite not in ("raise", "drop"):
         raise ValueError(f"nonfinite must be 'raise' or 'drop', got {nonfinite!r}.")
@@ -41,4 +70,71 @@ def as_xyz(x, y, z, *, nonfinite: str = "raise",
         x, y, z = x[ok], y[ok], z[ok]
     if empty_error is not None and x.size == 0:
         raise ValueError(empty_error)
+    if projected:
+        check_projected(x, y, z)
     return x, y, z
+
+
+def crs_is_geographic(crs: Optional[str]) -> bool:
+    """Return True when ``crs`` (WKT, 'EPSG:n', PROJ) is a geographic (degree) CRS.
+
+    Unknown or unparsable CRSs and a missing GDAL return False (nothing to refuse).
+    """
+    if not crs:
+        return False
+    try:
+        from osgeo import osr
+    except ImportError:  # pragma: no cover - GDAL ships with QGIS
+        return False
+    srs = osr.SpatialReference()
+    try:
+        if srs.SetFromUserInput(str(crs)) != 0:
+            return False
+    except RuntimeError:
+        return False
+    return bool(srs.IsGeographic()) and not bool(srs.IsProjected())
+
+
+def looks_like_degrees(x, y, z) -> bool:
+    """Return True when coordinates look like longitude/latitude degrees with metric z.
+
+    The rule: every ``|x| ≤ 180`` and ``|y| ≤ 90``, a horizontal extent under
+    :data:`DEGREE_EXTENT` units, and a height range more than :data:`DEGREE_Z_RATIO`
+    times that extent (a 100 m wide survey spans 0.001°, its heights metres).
+    """
+    x, y, z = (np.asarray(v, dtype=np.float64) for v in (x, y, z))
+    if x.size < 2:
+        return False
+    xmin, xmax, ymin, ymax = x.min(), x.max(), y.min(), y.max()
+    if max(abs(xmin), abs(xmax)) > 180 or max(abs(ymin), abs(ymax)) > 90:
+        return False
+    extent = max(xmax - xmin, ymax - ymin)
+    return bool(extent < DEGREE_EXTENT and (z.max() - z.min()) > DEGREE_Z_RATIO * extent)
+
+
+def check_projected(x=None, y=None, z=None, *, crs: Optional[str] = None,
+                    what: str = "The point cloud") -> None:
+    """Refuse a cloud in geographic degrees with a message that says how to reproject.
+
+    Parameters
+    ----------
+    x, y, z : array_like, optional
+        Coordinates checked with :func:`looks_like_degrees` (skipped when None).
+    crs : str, optional
+        The cloud's CRS (from the LAS header), checked with :func:`crs_is_geographic`.
+    what : str
+        How the message names the data.
+
+    Raises
+    ------
+    InputError
+        When the CRS is geographic or the coordinates look like degrees.
+    """
+    if crs_is_geographic(crs):
+        raise InputError(f"{what} is in a geographic CRS (longitude/latitude in degrees); "
+                         f"distances, tiles and slopes need metres. {REPROJECT_HINT}")
+    if x is not None and looks_like_degrees(x, y, z):
+        raise InputError(f"{what} looks like longitude/latitude in degrees (x within ±180, "
+                         "y within ±90, a horizontal extent of a few units and heights in "
+                         f"metres); distances, tiles and slopes need metres. "
+                         f"{REPROJECT_HINT}")

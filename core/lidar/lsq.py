@@ -78,10 +78,11 @@ import numpy as np
 from ..coords import as_xyz
 from ..progress import Monitor
 from .noise import NOISE_CLASS, flag_low_outliers
+from .pipeline import FilterOutcome, GroundFilter
 
 __all__ = ["lsq_ground_filter", "LsqResult", "TileGrid", "design_matrix", "n_coefficients",
            "fit_tiles", "GROUND", "OTHER", "NOISE", "UNCLASSIFIED", "IMPROVED_DEFAULTS",
-           "TERMS"]
+           "TERMS", "LsqOptions", "LsqFilter"]
 
 GROUND = 2
 OTHER = 1
@@ -633,7 +634,7 @@ class LsqResult:
 def _validate(x, y, z, order, tile_size, threshold, max_iterations, tolerance, subset_size,
               mode, sparse_tiles, rejection="reweighted"):
     x, y, z = as_xyz(x, y, z, empty_error="The point cloud is empty: there is nothing to "
-                     "filter. Choose a file that holds points.")
+                     "filter. Choose a file that holds points.", projected=True)
     if int(order) not in (1, 2) or int(order) != order:
         raise ValueError(f"ORDER must be 1 or 2 (the paper's planar or quadratic "
                          f"surface), got {order}.")
@@ -1106,3 +1107,65 @@ def _improved(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
                  tile_iterations=out.iterations, tile_points=out.npoints,
                  tile_stats=out.stats, iteration_stats=out.agg, levels=level_info)
     return ground, surface, thr, extra
+
+
+# ============================================================================ pipeline object
+@dataclass
+class LsqOptions:
+    """Options of :class:`LsqFilter` (see :func:`lsq_ground_filter` for each).
+
+    The low-outlier pre-filter is the pipeline's
+    (:class:`~.pipeline.SelectionOptions`), not an option here.
+    """
+
+    order: int = 2
+    tile_size: float = 50.0
+    threshold: float = 0.5
+    mode: str = "faithful"
+    max_iterations: Optional[int] = None
+    tolerance: float = 0.01
+    subset_size: Optional[int] = None
+    seed: int = 0
+    min_points: Optional[int] = None
+    sparse_tiles: str = "borrow"
+    rejection: str = "reweighted"
+
+
+class LsqFilter(GroundFilter):
+    """Tiled least-squares polynomial ground filter as a pipeline algorithm object.
+
+    Damascus Univ. J. Eng. Sci. 29(2), 2013 (faithful mode) and this toolbox's
+    improved mode; see :func:`lsq_ground_filter`.
+    """
+
+    name = "lsq"
+    title = "Ground filter (least-squares polynomial)"
+    citation = ("Method: tiled least-squares polynomial filter, Damascus Univ. J. Eng. "
+                "Sci. 29(2), 2013. Improved mode and the low-outlier pre-filter are ours. "
+                "Accuracy terms (Type I, Type II, total) after Sithole & Vosselman (2004).")
+
+    def __init__(self, options: Optional[LsqOptions] = None):
+        super().__init__(options or LsqOptions())
+
+    def classify(self, x, y, z, *, return_number=None, number_of_returns=None,
+                 monitor: Optional[Monitor] = None) -> FilterOutcome:
+        """Run :func:`lsq_ground_filter` (classes 2, 1, 0) on the selected points."""
+        mon = monitor or Monitor()
+        res = lsq_ground_filter(x, y, z, **vars(self.options), noise=False,
+                                progress=mon.update, cancel=mon.cancelled)
+        return FilterOutcome(res.classification, details=res)
+
+    def settings(self) -> List[tuple]:
+        """Report rows of the options, with the values the filter resolved."""
+        from .lsq_report import lsq_settings
+        return lsq_settings(self.options)
+
+    def report_sections(self, run, report, tr) -> None:
+        """Iterations, levels, fullest tile, tile map and status table."""
+        from .lsq_report import lsq_sections
+        lsq_sections(run.outcome.details, report, tr)
+
+    def text_outputs(self, run) -> Dict[str, str]:
+        """``{"csv": per-tile iteration table}``."""
+        from .lsq_report import tile_csv
+        return {"csv": tile_csv(run.outcome.details)}

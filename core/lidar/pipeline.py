@@ -1,60 +1,102 @@
-"""File-level slope filtering and threshold sweep: LAS/LAZ in, classified LAS/LAZ, CSV, HTML out.
+"""One LiDAR ground-filter pipeline: ``classify_file(src, algorithm, outputs, monitor)``.
 
-The Processing algorithms ``slopegroundfilter`` and ``slopethresholdsweep`` are thin
-wrappers over :func:`classify_file` and :func:`sweep_file`; everything here is
-Qt-free and tested headless.
+In the style of lidR's ``classify_ground(las, algorithm = csf())``: one verb owns the
+plumbing and small algorithm objects own the method.
 
-Point selection (which points are classified and which may reject others):
+:func:`classify_file` owns
 
-* ``returns="all"`` (default, as in the forest study): every point is classified
-  and every point serves as a neighbour.
-* ``returns="last"``: only last returns (``return_number == number_of_returns``;
-  files without return information, where either field is 0, count every point as
-  a single, hence last, return) are classified *and* serve as neighbours. First
-  and intermediate returns of multi-return pulses are given class 1 (a later
-  return of the same pulse lies below them, so they are not bare earth) and never
-  reject a last return.
-* Low outliers (:func:`~.noise.flag_low_outliers`, on by default) get class 7 and
-  are removed from both sets before filtering: one stray low point would otherwise
-  reject every ground point within ``r`` of it.
-* Points the input already marks as noise (class 7 or 18) keep their class and
-  are excluded from both sets when ``keep_noise_classes`` is on (default). Every
-  other input class is ignored (the filter never reads it to decide anything).
+* reading the LAS/LAZ file (:mod:`~..io.las`) and refusing clouds in degrees
+  (:func:`~..coords.check_projected`) before anything is written;
+* point selection (:class:`SelectionOptions`): all returns, or last returns only
+  (``return_number == number_of_returns``; files without return information count
+  every point as a single, hence last, return; first and intermediate returns get
+  class 1 and never reject a last return);
+* the shared low-outlier pre-filter (:func:`~.noise.flag_low_outliers`, class 7);
+* points the input already marks as noise (7, 18) kept as they are
+  (``keep_noise_classes``);
+* class bookkeeping: ASPRS 2 ground, 1 other, 7 low noise, 0 never classified; every
+  other attribute, VLR, EVLR and the CRS are copied bit for bit
+  (:func:`~..io.las.write_las_like`);
+* the output contract (:class:`~..io.contract.OutputContract`): every output checked
+  against every input and each other before anything is read, written under a
+  temporary name and renamed only when all succeeded; an error, cancel or SIGTERM
+  leaves nothing;
+* progress and cancel (:class:`~..progress.Monitor`) and the report content
+  (:class:`~..reporting.Report`).
 
-Output classes: 2 ground, 1 non-ground (unclassified), 7 low noise; all other
-attributes are copied bit for bit (:func:`~.las_io.write_las_like`).
+The algorithm protocol
+----------------------
+An algorithm is an object with
+
+``name`` (str) and ``title`` (report title, an English message id), ``citation``;
+``classify(x, y, z, *, return_number=None, number_of_returns=None, monitor=None)``
+    classify the selected points (arrays of the candidates only, metres) and return a
+    :class:`FilterOutcome` (``classes``: uint8 per point, 2 ground, 1 other, 0 never
+    classified; ``details``: anything the report needs);
+``settings()``
+    ``[(label, value[, unit]), ...]`` for the report's parameter table;
+``report_sections(run, report, tr)``
+    append method-specific sections to the report (may do nothing);
+``text_outputs(run)``
+    ``{role: text}`` of extra text outputs (e.g. the LSQ tile CSV).
+
+:class:`GroundFilter` provides every member but ``classify``. A filter written as a
+plain function ``classify(x, y, z, *, return_number=None, number_of_returns=None,
+options=None, progress=None, cancel=None) -> uint8 classes`` plugs in with
+:class:`FunctionFilter`::
+
+    from .pipeline import FunctionFilter, FilterOutputs, classify_file
+    from .ptd import classify, PtdOptions
+
+    PTD = FunctionFilter(classify, PtdOptions(), name="ptd",
+                         title="Ground filter (progressive TIN densification)",
+                         citation="Axelsson, P. (2000). ...")
+    run = classify_file("in.laz", PTD, FilterOutputs(cloud="out.laz"))
+
+Examples
+--------
+>>> from .slope import SlopeFilter, SlopeOptions            # doctest: +SKIP
+>>> run = classify_file("tile.laz", SlopeFilter(SlopeOptions(radius=5)),
+...                     FilterOutputs(cloud="c.laz", report="r.html"))  # doctest: +SKIP
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 import time
 from dataclasses import dataclass, field
-from typing import Dict, List, Optional, Sequence
+from typing import Any, Callable, Dict, List, Optional
 
 import numpy as np
 
-from ..io.contract import atomic_output, check_not_input
-from ..io.las import check_las_file, las_info, read_las, write_las_like
+from ..coords import check_projected
+from ..errors import InputError
+from ..io.contract import OutputContract
+from ..io.las import PointData, las_info, read_las, write_las_like
 from ..progress import Monitor
-from ..reporting.html import esc, fmt, html_page, html_params, html_table
-from . import slope as sf
-from .accuracy import ground_mask
+from ..reporting import KeyValues, Paragraph, Report, T, Table, render_html, translator
 from .noise import flag_low_outliers
 
-__all__ = ["RETURNS", "GROUND_CLASS", "NONGROUND_CLASS", "NOISE_CLASS",
-           "last_return_mask", "select_points", "classify_file", "sweep_file",
-           "ClassifySummary", "SweepSummary", "parse_number_list"]
+__all__ = ["RETURNS", "GROUND_CLASS", "NONGROUND_CLASS", "NOISE_CLASS", "UNCLASSIFIED_CLASS",
+           "last_return_mask", "select_points", "classify_file", "parse_number_list",
+           "SelectionOptions", "Selection", "FilterOutcome", "GroundFilter",
+           "FunctionFilter", "FilterOutputs", "ClassifyRun", "LAS_SUFFIXES"]
 
 RETURNS = ("all", "last")
 GROUND_CLASS = 2
 NONGROUND_CLASS = 1
 NOISE_CLASS = 7
+UNCLASSIFIED_CLASS = 0
 INPUT_NOISE_CLASSES = (7, 18)
+LAS_SUFFIXES = (".las", ".laz")
+CLASS_NAMES = {GROUND_CLASS: "ground", NONGROUND_CLASS: "other (object)",
+               NOISE_CLASS: "low noise", UNCLASSIFIED_CLASS: "never classified",
+               18: "high noise"}
 
 
 def parse_number_list(text, name: str) -> List[float]:
-    """``"40, 44, 48"`` or ``"40:60:4"`` (start:stop:step, stop included) -> floats."""
+    """Parse ``"40, 44, 48"`` or ``"40:60:4"`` (start:stop:step, stop included) as floats."""
     if isinstance(text, (list, tuple, np.ndarray)):
         vals = [float(v) for v in text]
     else:
@@ -84,11 +126,43 @@ def parse_number_list(text, name: str) -> List[float]:
 
 
 def last_return_mask(return_number, number_of_returns) -> np.ndarray:
-    """True for last (or single) returns; points without return information count as last."""
+    """Return True for last (or single) returns; no return information counts as last."""
     rn = np.asarray(return_number).astype(np.int64)
     nr = np.asarray(number_of_returns).astype(np.int64)
     unknown = (rn == 0) | (nr == 0)
     return unknown | (rn >= nr)
+
+
+@dataclass
+class SelectionOptions:
+    """Which points a filter sees (shared by every ground filter).
+
+    Parameters
+    ----------
+    returns : {'all', 'last'}
+        Classify every point, or last (and single) returns only.
+    noise : bool
+        Run the low-outlier pre-filter (:func:`~.noise.flag_low_outliers`) first.
+    noise_radius, noise_threshold : float
+        Metres; its cell and depth below the neighbours.
+    keep_noise_classes : bool
+        Points the input marks 7 or 18 keep their class and take no part.
+    """
+
+    returns: str = "all"
+    noise: bool = True
+    noise_radius: float = 5.0
+    noise_threshold: float = 1.0
+    keep_noise_classes: bool = True
+
+    def validate(self) -> SelectionOptions:
+        """Raise :class:`InputError` on an invalid option; returns self."""
+        if self.returns not in RETURNS:
+            raise InputError(f"returns must be 'all' or 'last', got {self.returns!r}.")
+        if self.noise and not (self.noise_radius > 0 and self.noise_threshold > 0):
+            raise InputError("NOISE_RADIUS and NOISE_THRESHOLD must be > 0 metres (e.g. 5 "
+                             "and 1), or switch the NOISE pre-filter off.")
+        return self
 
 
 @dataclass
@@ -105,9 +179,25 @@ class Selection:
 def select_points(pd, *, returns: str = "all", noise: bool = True, noise_radius: float = 5.0,
                   noise_threshold: float = 1.0, keep_noise_classes: bool = True,
                   progress=None, cancel=None) -> Selection:
-    """Build the candidate set of :mod:`~.slope_filter` from a :class:`PointData`."""
-    if returns not in RETURNS:
-        raise ValueError(f"returns must be 'all' or 'last', got {returns!r}.")
+    """Build the candidate set of a ground filter from a :class:`PointData`.
+
+    Parameters
+    ----------
+    pd : PointData
+        Coordinates with ``classification`` (and the return numbers for
+        ``returns='last'``).
+    returns, noise, noise_radius, noise_threshold, keep_noise_classes
+        See :class:`SelectionOptions`.
+    progress, cancel : callable, optional
+        Progress and cancel callables of the noise pre-filter.
+
+    Returns
+    -------
+    Selection
+        The masks of the candidates and of the excluded points.
+    """
+    SelectionOptions(returns, noise, noise_radius, noise_threshold,
+                     keep_noise_classes).validate()
     n = len(pd)
     in_noise = np.zeros(n, dtype=bool)
     if keep_noise_classes and "classification" in pd.dims:
@@ -127,7 +217,7 @@ def select_points(pd, *, returns: str = "all", noise: bool = True, noise_radius:
                                      cancel=cancel)
     cand = base & ~low
     if not cand.any():
-        raise ValueError("No point is left to filter after the return/noise selection "
+        raise InputError("No point is left to filter after the return/noise selection "
                          f"({n} points read, {int(np.count_nonzero(not_last))} not last "
                          f"returns, {int(np.count_nonzero(in_noise))} already noise, "
                          f"{int(np.count_nonzero(low))} low outliers). Use returns='all' "
@@ -135,459 +225,443 @@ def select_points(pd, *, returns: str = "all", noise: bool = True, noise_radius:
     return Selection(cand, low, not_last, in_noise, unknown)
 
 
-def _classes(sel: Selection, ground: np.ndarray, original) -> np.ndarray:
-    cls = np.full(ground.size, NONGROUND_CLASS, dtype=np.uint8)
-    cls[ground] = GROUND_CLASS
+def assemble_classes(sel: Selection, candidate_classes: np.ndarray,
+                     original=None) -> np.ndarray:
+    """Full-length ASPRS classes from the filter's classes of the candidates.
+
+    Parameters
+    ----------
+    sel : Selection
+        The point selection.
+    candidate_classes : ndarray of uint8
+        One class per candidate (2, 1 or 0).
+    original : ndarray, optional
+        The input classification (kept for the input's noise points).
+
+    Returns
+    -------
+    ndarray of uint8
+        2 ground, 1 other (and non-last returns), 7 low outliers, input noise kept.
+    """
+    cls = np.full(sel.candidates.size, NONGROUND_CLASS, dtype=np.uint8)
+    cls[sel.candidates] = candidate_classes
     cls[sel.low_outliers] = NOISE_CLASS
-    if sel.input_noise.any():
+    if sel.input_noise.any() and original is not None:
         cls[sel.input_noise] = np.asarray(original)[sel.input_noise]
     return cls
 
 
-def _check_outputs(src, *outputs) -> None:
-    seen = set()
-    for out in outputs:
-        if not out:
-            continue
-        check_not_input(out, src)
-        key = os.path.abspath(os.fspath(out))
-        if key in seen:
-            raise ValueError(f"The same output path {out} is given twice; choose distinct "
-                             "outputs.")
-        seen.add(key)
-
-
-def _check_las_out(path, name: str) -> None:
-    if path and not str(path).lower().endswith((".las", ".laz")):
-        raise ValueError(f"{name} must end in .las or .laz (got {path}).")
-
-
-# ============================================================================ classify
+# ============================================================================ protocol
 @dataclass
-class ClassifySummary:
-    """Counts, settings, timing and work statistics of :func:`classify_file`."""
+class FilterOutcome:
+    """What a ground filter returns for the points it was given.
 
-    input: str
-    output: Optional[str]
-    ground_output: Optional[str]
-    html_output: Optional[str]
-    n_points: int
-    n_ground: int
-    n_nonground: int
-    n_noise: int
-    n_not_last: int
-    n_input_noise: int
-    n_unknown_returns: int
-    settings: Dict[str, object]
+    Attributes
+    ----------
+    classes : ndarray of uint8
+        One class per point: 2 ground, 1 other, 0 never classified.
+    details : object
+        Method-specific result (e.g. :class:`~.lsq.LsqResult`) for the report.
+    stats : dict
+        Work counters shown in the report.
+    """
+
+    classes: np.ndarray
+    details: Any = None
     stats: Dict[str, float] = field(default_factory=dict)
-    seconds: Dict[str, float] = field(default_factory=dict)
 
-    def as_dict(self) -> dict:
-        return dict(self.__dict__)
+    @property
+    def ground(self) -> np.ndarray:
+        """Boolean ground mask."""
+        return self.classes == GROUND_CLASS
 
 
-def classify_file(src, dst=None, *, ground_output=None, html_output=None,
-                  radius: float = sf.DEFAULT_RADIUS, slope: float = sf.DEFAULT_SLOPE,
-                  height_tolerance: float = sf.DEFAULT_HEIGHT_TOLERANCE,
-                  returns: str = "all", noise: bool = True, noise_radius: float = 5.0,
-                  noise_threshold: float = 1.0, keep_noise_classes: bool = True,
-                  mode: str = "exact", trend_cell: float = 10.0, trend_window: float = 60.0,
-                  lang: str = "en", progress=None, cancel=None) -> ClassifySummary:
-    """Slope-filter a LAS/LAZ file: classified copy, optional ground-only copy and report.
+class GroundFilter:
+    """Base of the ground-filter algorithm objects (see the module docstring).
 
-    Parameters are those of :func:`~.slope_filter.slope_filter` and
-    :func:`select_points`; ``dst`` (classes 2/1/7, everything else preserved),
-    ``ground_output`` (ground points only) and ``html_output`` are each optional
-    but at least one must be given. All parameters are validated before any
-    output is written; each output is written atomically.
+    Subclasses set :attr:`name`, :attr:`title`, :attr:`citation`, keep their options
+    dataclass in :attr:`options` and implement :meth:`classify`.
     """
-    t0 = time.perf_counter()
-    mon = Monitor(progress, cancel)
-    if not (dst or ground_output or html_output):
-        raise ValueError("Give at least one output: the classified cloud, the ground "
-                         "cloud or the HTML report.")
-    check_las_file(src)
-    _check_las_out(dst, "The classified output")
-    _check_las_out(ground_output, "The ground output")
-    _check_outputs(src, dst, ground_output, html_output)
-    sf._check_radius(radius)
-    sf._check_slope(slope)
-    sf._check_height(height_tolerance)
-    if returns not in RETURNS:
-        raise ValueError(f"returns must be 'all' or 'last', got {returns!r}.")
-    if mode not in sf.MODES:
-        raise ValueError(f"mode must be one of {', '.join(sf.MODES)}, got {mode!r}.")
-    pd = _read_input(src, returns, mon.sub(0.0, 0.1))
-    t_read = time.perf_counter()
-    sel = select_points(pd, returns=returns, noise=noise, noise_radius=noise_radius,
-                        noise_threshold=noise_threshold,
-                        keep_noise_classes=keep_noise_classes, **_cb(mon.sub(0.1, 0.2)))
-    t_sel = time.perf_counter()
-    res = sf.slope_filter(pd.x, pd.y, pd.z, radius=radius, slope=slope,
-                          height_tolerance=height_tolerance, classify=sel.candidates,
-                          neighbours=sel.candidates, mode=mode, trend_cell=trend_cell,
-                          trend_window=trend_window, **_cb(mon.sub(0.2, 0.85)))
-    t_filter = time.perf_counter()
-    cls = _classes(sel, res.ground, pd["classification"])
-    settings = dict(radius_m=float(radius), slope_deg=float(slope),
-                    height_tolerance_m=float(height_tolerance), returns=returns,
-                    noise_prefilter=bool(noise), noise_radius_m=float(noise_radius),
-                    noise_threshold_m=float(noise_threshold),
-                    keep_noise_classes=bool(keep_noise_classes), mode=mode)
-    if mode == "adaptive":
-        settings.update(trend_cell_m=float(trend_cell), trend_window_m=float(trend_window))
-    summary = ClassifySummary(
-        input=os.fspath(src), output=dst and os.fspath(dst),
-        ground_output=ground_output and os.fspath(ground_output),
-        html_output=html_output and os.fspath(html_output), n_points=len(pd),
-        n_ground=int(np.count_nonzero(cls == GROUND_CLASS)),
-        n_nonground=int(np.count_nonzero(cls == NONGROUND_CLASS)),
-        n_noise=int(np.count_nonzero(sel.low_outliers)),
-        n_not_last=int(np.count_nonzero(sel.not_last)),
-        n_input_noise=int(np.count_nonzero(sel.input_noise)),
-        n_unknown_returns=sel.unknown_returns, settings=settings, stats=dict(res.stats))
-    if dst:
-        write_las_like(src, dst, dimensions={"classification": cls}, **_cb(mon.sub(0.85, 0.95)))
-    if ground_output:
-        write_las_like(src, ground_output, dimensions={"classification": cls},
-                       mask=cls == GROUND_CLASS, **_cb(mon.sub(0.95, 0.99)))
-    t_write = time.perf_counter()
-    summary.seconds = dict(read=t_read - t0, noise=t_sel - t_read, filter=t_filter - t_sel,
-                           write=t_write - t_filter, total=t_write - t0)
-    if html_output:
-        text = classify_report(summary, res, lang=lang)
-        with atomic_output(html_output) as tmp:
-            with open(tmp, "w", encoding="utf-8") as fh:
-                fh.write(text)
-    mon.update(1.0)
-    return summary
+
+    name = "groundfilter"
+    title = "Ground filter"
+    citation: Optional[str] = None
+
+    def __init__(self, options=None):
+        self.options = options
+
+    def classify(self, x, y, z, *, return_number=None, number_of_returns=None,
+                 monitor: Optional[Monitor] = None) -> FilterOutcome:
+        """Classify the selected points; see the module docstring."""
+        raise NotImplementedError
+
+    def settings(self) -> List[tuple]:
+        """Report rows ``(label, value)`` of the options (dataclass fields by default)."""
+        if self.options is None or not dataclasses.is_dataclass(self.options):
+            return []
+        return [(f.name.replace("_", " "), _setting(getattr(self.options, f.name)))
+                for f in dataclasses.fields(self.options)]
+
+    def report_sections(self, run: ClassifyRun, report: Report, tr) -> None:
+        """Append method-specific sections to ``report`` (default: none)."""
+
+    def text_outputs(self, run: ClassifyRun) -> Dict[str, str]:
+        """Extra text outputs ``{role: text}`` (default: none)."""
+        return {}
 
 
-def _cb(mon: Monitor) -> dict:
-    return {"progress": mon.update, "cancel": mon.cancelled}
+def _setting(value):
+    if isinstance(value, (list, tuple)):
+        return ", ".join(f"{v:g}" if isinstance(v, float) else str(v) for v in value)
+    return "–" if value is None else value
 
 
-def _read_input(src, returns: str, mon: Monitor):
-    """Coordinates, classification and (for ``returns='last'``) the return numbers;
-    :func:`read_las` refuses missing, non-LAS and empty files with a clear error.
+class FunctionFilter(GroundFilter):
+    """Adapter for a filter written as a plain function returning uint8 classes.
+
+    Parameters
+    ----------
+    func : callable
+        ``func(x, y, z, *, return_number=None, number_of_returns=None, options=None,
+        progress=None, cancel=None) -> uint8 classes`` (2 ground, 1 other, 0 none).
+    options : object, optional
+        Passed through as ``options`` (a dataclass shows in the report).
+    name, title, citation : str
+        Identity of the method in reports.
     """
-    dims = ["classification"]
-    if returns == "last":
-        dims += ["return_number", "number_of_returns"]
-    return read_las(src, dims, **_cb(mon))
+
+    def __init__(self, func: Callable, options=None, *, name: str, title: str,
+                 citation: Optional[str] = None):
+        super().__init__(options)
+        self.func = func
+        self.name, self.title, self.citation = name, title, citation
+
+    def classify(self, x, y, z, *, return_number=None, number_of_returns=None,
+                 monitor: Optional[Monitor] = None) -> FilterOutcome:
+        """Call the function and check its answer (one class per point)."""
+        mon = monitor or Monitor()
+        cls = np.asarray(self.func(x, y, z, return_number=return_number,
+                                   number_of_returns=number_of_returns, options=self.options,
+                                   progress=mon.update, cancel=mon.cancelled))
+        if cls.shape != (np.size(x),):
+            raise ValueError(f"{self.name} returned {cls.shape} classes for {np.size(x)} "
+                             "points.")
+        return FilterOutcome(cls.astype(np.uint8))
 
 
-def _method_html(radius, slope, h, mode) -> str:
-    t = math.tan(math.radians(slope))
-    txt = (f"<p>Vosselman (2000) slope-based filter: a point is <b>non-ground</b> when a "
-           f"neighbour at horizontal distance 0 &lt; d ≤ r = {fmt(radius, 2)} m lies more than "
-           f"d·tan θ + h below it (θ = {fmt(slope, 2)}°, tan θ = {fmt(t, 4)}, "
-           f"h = {fmt(h, 2)} m); otherwise ground. Single pass, neighbours from the whole "
-           "selected cloud, exact (identical to a brute-force check of every pair).</p>")
-    if mode == "adaptive":
-        txt += ("<p><b>Adaptive mode (this toolbox's extension, not Vosselman's):</b> the "
-                "rule is applied to heights above a smooth low terrain trend (minimum grid, "
-                "morphological opening, mean filter), so long natural slopes steeper than θ "
-                "are not rejected while abrupt objects still are.</p>")
-    return txt
-
-
-def _rise_table(radius, slope, h) -> str:
-    ds = [radius / 4, radius / 2, 3 * radius / 4, radius]
-    rows = [(fmt(d, 2), float(sf.allowed_rise(d, slope)) + h) for d in ds]
-    return "<h2>Allowed rise above a neighbour</h2>" + html_table(
-        ("distance d (m)", "allowed rise d·tan θ + h (m)"), rows, digits=2)
-
-
-def classify_report(summary: ClassifySummary, res: "sf.SlopeFilterResult", *,
-                    lang: str = "en") -> str:
-    """HTML report of :func:`classify_file`."""
-    st = summary.settings
-    n = summary.n_points
-    rows = [("ground (2)", summary.n_ground, 100.0 * summary.n_ground / n),
-            ("non-ground (1)", summary.n_nonground, 100.0 * summary.n_nonground / n),
-            ("low outliers (7)", summary.n_noise, 100.0 * summary.n_noise / n)]
-    if summary.n_not_last:
-        rows.append(("  of which non-last returns (1)", summary.n_not_last,
-                     100.0 * summary.n_not_last / n))
-    if summary.n_input_noise:
-        rows.append(("input noise kept (7/18)", summary.n_input_noise,
-                     100.0 * summary.n_input_noise / n))
-    body = [f"<p>Input: <code>{esc(summary.input)}</code> — {n} points.</p>",
-            _method_html(st["radius_m"], st["slope_deg"], st["height_tolerance_m"],
-                         st["mode"]),
-            "<h2>Result</h2>",
-            html_table(("class", "points", "%"), rows, digits=2),
-            _rise_table(st["radius_m"], st["slope_deg"], st["height_tolerance_m"]),
-            html_params(st, title="Parameters")]
-    if summary.n_unknown_returns and st["returns"] == "last":
-        body.append(f'<p class="note">{summary.n_unknown_returns} points carry no return '
-                    "information (return number or number of returns 0) and were treated "
-                    "as single, i.e. last, returns.</p>")
-    sec = summary.seconds
-    stats = summary.stats
-    pts = stats.get("points", 0) or 0
-    perf = [("time total (s)", sec.get("total", float("nan"))),
-            ("time filter (s)", sec.get("filter", float("nan"))),
-            ("filter speed (points/s)", pts / sec["filter"] if sec.get("filter") else
-             float("nan")),
-            ("points settled by the raster bounds (%)",
-             100.0 * stats.get("settled_by_bound", 0) / pts if pts else float("nan")),
-            ("exact pair tests", stats.get("pairs_tested", 0)),
-            ("grid cell (m)", stats.get("cell_size", float("nan")))]
-    body.append("<h2>Computation</h2>" + html_table(("item", "value"), perf, digits=3))
-    outs = [(k, v) for k, v in (("classified cloud", summary.output),
-                                ("ground cloud", summary.ground_output)) if v]
-    if outs:
-        body.append("<h2>Outputs</h2>" + html_table(("output", "path"), outs))
-    body.append('<p class="note">Reference: Vosselman, G. (2000). Slope based filtering of '
-                "laser altimetry data. IAPRS XXXIII-B3, 935–942.</p>")
-    return html_page("Ground filter (slope-based)", "\n".join(body), lang=lang)
-
-
-# ============================================================================ sweep
+# ============================================================================ the verb
 @dataclass
-class SweepSummary:
-    """Result of :func:`sweep_file`."""
+class FilterOutputs:
+    """Requested outputs of :func:`classify_file` (None = not requested).
 
-    result: "sf.SweepResult"
+    Attributes
+    ----------
+    cloud : path, optional
+        The classified cloud (.las/.laz; every point, classes replaced).
+    ground : path, optional
+        Ground points only (.las/.laz).
+    report : path, optional
+        The HTML report.
+    text : dict of str to path
+        Extra text outputs by role (the algorithm's :meth:`GroundFilter.text_outputs`).
+    names : dict of str to str
+        Parameter name per role, used in error messages (default: the role).
+    inputs : dict of str to path
+        Other files the run reads (checked: never written).
+    lang : str
+        Report language.
+    render : callable, optional
+        ``render(report) -> html`` (default :func:`~..reporting.render_html` in ``lang``).
+    """
+
+    cloud: Optional[str] = None
+    ground: Optional[str] = None
+    report: Optional[str] = None
+    text: Dict[str, str] = field(default_factory=dict)
+    names: Dict[str, str] = field(default_factory=dict)
+    inputs: Dict[str, Any] = field(default_factory=dict)
+    lang: str = "en"
+    render: Optional[Callable[[Report], str]] = None
+
+    def by_role(self) -> Dict[str, Optional[str]]:
+        """Every requested output by role."""
+        roles = {"cloud": self.cloud, "ground": self.ground, "report": self.report,
+                 **self.text}
+        return {k: os.fspath(v) for k, v in roles.items() if v not in (None, "")}
+
+    def name(self, role: str) -> str:
+        """Parameter name of ``role``."""
+        return self.names.get(role, role)
+
+
+@dataclass
+class ClassifyRun:
+    """Everything :func:`classify_file` did: counts, classes, timing, report content."""
+
     input: str
-    reference: str
-    n_points: int
-    n_evaluated: int
-    csv_output: Optional[str]
-    html_output: Optional[str]
-    output: Optional[str]
-    settings: Dict[str, object]
-    seconds: float = 0.0
+    points: PointData
+    classes: np.ndarray
+    selection: Selection
+    outcome: FilterOutcome
+    selection_options: SelectionOptions
+    outputs: Dict[str, str]
+    seconds: Dict[str, float] = field(default_factory=dict)
+    report: Optional[Report] = None
+
+    @property
+    def n_points(self) -> int:
+        """Points read."""
+        return int(self.classes.size)
+
+    def count(self, cls: int) -> int:
+        """Points of ASPRS class ``cls`` in the output."""
+        return int(np.count_nonzero(self.classes == cls))
+
+    @property
+    def n_ground(self) -> int:
+        """Ground points (class 2)."""
+        return self.count(GROUND_CLASS)
+
+    @property
+    def n_nonground(self) -> int:
+        """Other points (class 1)."""
+        return self.count(NONGROUND_CLASS)
+
+    @property
+    def n_noise(self) -> int:
+        """Low outliers flagged by the pre-filter."""
+        return int(np.count_nonzero(self.selection.low_outliers))
+
+    @property
+    def n_not_last(self) -> int:
+        """First and intermediate returns (``returns='last'``)."""
+        return int(np.count_nonzero(self.selection.not_last))
+
+    @property
+    def n_input_noise(self) -> int:
+        """Points kept as the input's noise classes."""
+        return int(np.count_nonzero(self.selection.input_noise))
+
+    def counts(self) -> Dict[int, int]:
+        """Points per output class."""
+        vals, cnt = np.unique(self.classes, return_counts=True)
+        return {int(k): int(c) for k, c in zip(vals, cnt)}
 
 
-def _load_reference(src, reference, ground_classes, pd, mon) -> np.ndarray:
-    if reference in (None, "", "input"):
-        return ground_mask(pd["classification"], ground_classes)
-    check_las_file(reference)
-    info = las_info(reference)
-    if info.count != len(pd):
-        raise ValueError(f"The reference cloud {reference} has {info.count} points but the "
-                         f"input has {len(pd)}; the reference must hold the same points in "
-                         "the same order (or use the input's own classification).")
-    ref = read_las(reference, ["classification"], **_cb(mon))
-    tol = max(max(info.scales[:2]), max(pd.info.scales[:2]) if pd.info else 0.0, 1e-6)
-    if (np.abs(ref.x - pd.x).max() > tol) or (np.abs(ref.y - pd.y).max() > tol):
-        raise ValueError(f"The reference cloud {reference} has as many points as the input "
-                         "but not the same coordinates in the same order; give the labelled "
-                         "copy of the same cloud.")
-    return ground_mask(ref["classification"], ground_classes)
+def _check_request(outputs: FilterOutputs) -> Dict[str, str]:
+    roles = outputs.by_role()
+    if not roles:
+        raise InputError("Give at least one output: the classified cloud, the ground "
+                         "cloud or the report.")
+    for role in ("cloud", "ground"):
+        if role in roles and not roles[role].lower().endswith(LAS_SUFFIXES):
+            raise InputError(f"The output {outputs.name(role)} must end in .las or .laz "
+                             f"(got {roles[role]}).")
+    return roles
 
 
-def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_CLASS,),
-               slopes: Sequence[float] = (30, 35, 40, 44, 48, 52, 56, 60),
-               radii: Sequence[float] = (sf.DEFAULT_RADIUS,),
-               height_tolerances: Sequence[float] = (sf.DEFAULT_HEIGHT_TOLERANCE,),
-               metric: str = "total", returns: str = "all", noise: bool = True,
-               noise_radius: float = 5.0, noise_threshold: float = 1.0,
-               keep_noise_classes: bool = False, mode: str = "exact",
-               trend_cell: float = 10.0, trend_window: float = 60.0, csv_output=None,
-               html_output=None, output=None, lang: str = "en", progress=None,
-               cancel=None) -> SweepSummary:
-    """Threshold sweep of the slope filter on a labelled LAS/LAZ file.
+def read_cloud(src, *, returns: bool = True, monitor: Optional[Monitor] = None) -> PointData:
+    """Read coordinates, classification and return numbers; refuse degree clouds.
 
-    ``reference`` is ``None``/``"input"`` (the input's own classification, e.g. the
-    ISPRS reference samples: class 2 = ground) or the path of a labelled copy of
-    the same cloud (same points, same order). The input classification never
-    influences the filtering itself. Points excluded from filtering (low
-    outliers, non-last returns) count as predicted non-ground. ``output``
-    optionally receives the cloud classified with the best setting.
-    ``keep_noise_classes`` defaults to False here because the input's classes are
-    usually the labels under test.
+    Parameters
+    ----------
+    src : path
+        LAS/LAZ file (:func:`~..io.las.read_las` refuses missing, non-LAS and empty
+        files with a clear error).
+    returns : bool
+        Also read ``return_number`` and ``number_of_returns``.
+    monitor : Monitor, optional
+        Progress and cancel of the read.
+
+    Returns
+    -------
+    PointData
+        The points.
+    """
+    info = las_info(src)
+    check_projected(crs=info.crs, what=f"The point cloud {src}")
+    dims = ["classification"] + (["return_number", "number_of_returns"] if returns else [])
+    mon = monitor or Monitor()
+    pd = read_las(src, dims, progress=mon.update, cancel=mon.cancelled)
+    check_projected(pd.x, pd.y, pd.z, what=f"The point cloud {src}")
+    return pd
+
+
+def classify_file(src, algorithm: GroundFilter, outputs: FilterOutputs,
+                  monitor: Optional[Monitor] = None, *,
+                  selection: Optional[SelectionOptions] = None) -> ClassifyRun:
+    """Classify ground in a LAS/LAZ file with ``algorithm``; write all outputs or none.
+
+    Parameters
+    ----------
+    src : path
+        Input LAS/LAZ file (projected CRS, metres).
+    algorithm : GroundFilter
+        The method (see the module docstring for the protocol).
+    outputs : FilterOutputs
+        The requested outputs and their parameter names.
+    monitor : Monitor, optional
+        Progress and cancel.
+    selection : SelectionOptions, optional
+        Returns, noise pre-filter, input noise classes (defaults of the dataclass).
+
+    Returns
+    -------
+    ClassifyRun
+        Counts, classes, timing and the report content.
+
+    Raises
+    ------
+    InputError
+        Outputs that clash with the input or each other, bad extensions, a cloud in
+        degrees, nothing left to filter, an empty ground output.
+    Cancelled
+        When the monitor's cancel returns True (nothing is written).
     """
     t0 = time.perf_counter()
-    mon = Monitor(progress, cancel)
-    check_las_file(src)
-    _check_las_out(output, "The classified output")
-    _check_outputs(src, csv_output, html_output, output)
-    if reference not in (None, "", "input"):
-        _check_outputs(reference, csv_output, html_output, output)
-    slopes = [sf._check_slope(s) for s in slopes]
-    radii = [sf._check_radius(r) for r in radii]
-    hs = [sf._check_height(h) for h in height_tolerances]
-    if not slopes or not radii or not hs:
-        raise ValueError("Give at least one slope, one radius and one height tolerance.")
-    if len(slopes) * len(radii) * len(hs) > 5000:
-        raise ValueError("More than 5000 settings requested; narrow the lists.")
-    if metric not in sf.SLOPE_METRICS:
-        raise ValueError(f"metric must be one of {', '.join(sf.SLOPE_METRICS)}, got "
-                         f"{metric!r}.")
-    if mode not in sf.MODES:
-        raise ValueError(f"mode must be one of {', '.join(sf.MODES)}, got {mode!r}.")
-    pd = _read_input(src, returns, mon.sub(0.0, 0.05))
-    ref = _load_reference(src, reference, ground_classes, pd, mon.sub(0.05, 0.1))
-    if not ref.any():
-        raise ValueError(f"The reference marks no point as ground (classes "
-                         f"{', '.join(map(str, ground_classes))}); check the reference or "
-                         "the ground classes.")
-    sel = select_points(pd, returns=returns, noise=noise, noise_radius=noise_radius,
-                        noise_threshold=noise_threshold,
-                        keep_noise_classes=keep_noise_classes, **_cb(mon.sub(0.1, 0.15)))
-    res = sf.threshold_sweep(pd.x, pd.y, pd.z, ref, slopes=slopes, radii=radii,
-                             height_tolerance=hs, classify=sel.candidates,
-                             neighbours=sel.candidates, mode=mode, metric=metric,
-                             trend_cell=trend_cell, trend_window=trend_window,
-                             **_cb(mon.sub(0.15, 0.9)))
-    settings = dict(slopes_deg=", ".join(fmt(s, 2) for s in slopes),
-                    radii_m=", ".join(fmt(r, 2) for r in radii),
-                    height_tolerances_m=", ".join(fmt(h, 2) for h in hs),
-                    metric=metric, returns=returns, noise_prefilter=bool(noise),
-                    noise_radius_m=float(noise_radius),
-                    noise_threshold_m=float(noise_threshold), mode=mode,
-                    reference="input classification" if reference in (None, "", "input")
-                    else os.fspath(reference),
-                    ground_classes=", ".join(map(str, ground_classes)))
-    summary = SweepSummary(result=res, input=os.fspath(src), reference=settings["reference"],
-                           n_points=len(pd),
-                           n_evaluated=int(np.count_nonzero(sel.candidates)),
-                           csv_output=csv_output and os.fspath(csv_output),
-                           html_output=html_output and os.fspath(html_output),
-                           output=output and os.fspath(output), settings=settings)
-    if output:
-        cls = _classes(sel, res.best_ground, pd["classification"])
-        write_las_like(src, output, dimensions={"classification": cls},
-                       **_cb(mon.sub(0.9, 0.98)))
-    if csv_output:
-        with atomic_output(csv_output) as tmp:
-            with open(tmp, "w", encoding="utf-8", newline="") as fh:
-                fh.write(res.to_csv())
-    summary.seconds = time.perf_counter() - t0
-    if html_output:
-        with atomic_output(html_output) as tmp:
-            with open(tmp, "w", encoding="utf-8") as fh:
-                fh.write(sweep_report(summary, lang=lang))
+    mon = monitor or Monitor()
+    sel_opt = (selection or SelectionOptions()).validate()
+    roles = _check_request(outputs)
+    contract = OutputContract({outputs.name(r): p for r, p in roles.items()},
+                              inputs={"INPUT": src, **outputs.inputs})
+    with contract as out:
+        pd = read_cloud(src, monitor=mon.sub(0.0, 0.1))
+        t_read = time.perf_counter()
+        sel = select_points(pd, **dataclasses.asdict(sel_opt), progress=mon.sub(0.1, 0.2).update,
+                            cancel=mon.cancelled)
+        t_sel = time.perf_counter()
+        outcome = _run_filter(algorithm, pd, sel.candidates, mon.sub(0.2, 0.85))
+        t_filter = time.perf_counter()
+        cls = assemble_classes(sel, outcome.classes, pd["classification"])
+        run = ClassifyRun(os.fspath(src), pd, cls, sel, outcome, sel_opt, roles)
+        if "ground" in roles and run.n_ground == 0:
+            raise InputError("No point was classified as ground, so the ground-only output "
+                             "would be empty; check the filter's parameters.")
+        _write_clouds(src, run, out, outputs, mon.sub(0.85, 0.98))
+        t_write = time.perf_counter()
+        run.seconds = dict(read=t_read - t0, select=t_sel - t_read, filter=t_filter - t_sel,
+                           write=t_write - t_filter, total=time.perf_counter() - t0)
+        run.report = filter_report(run, algorithm, lang=outputs.lang)
+        _write_texts(run, algorithm, out, outputs)
+        mon.check()
     mon.update(1.0)
-    return summary
+    return run
 
 
-_COLOURS = ("#1f5f8b", "#b42318", "#1a7f37", "#9a6700", "#6e40c9", "#444444")
+def _run_filter(algorithm, pd: PointData, cand: np.ndarray, mon: Monitor) -> FilterOutcome:
+    """Call ``algorithm.classify`` on the candidates (no copy when all are)."""
+    take = (lambda a: a) if cand.all() else (lambda a: a[cand])
+    outcome = algorithm.classify(take(pd.x), take(pd.y), take(pd.z),
+                                 return_number=take(pd["return_number"]),
+                                 number_of_returns=take(pd["number_of_returns"]),
+                                 monitor=mon)
+    if np.shape(outcome.classes) != (int(np.count_nonzero(cand)),):
+        raise ValueError(f"{algorithm.name} returned {np.shape(outcome.classes)} classes for "
+                         f"{int(np.count_nonzero(cand))} points.")
+    return outcome
 
 
-_DASH = {"total": "", "Type I": ' stroke-dasharray="6 3"', "Type II": ' stroke-dasharray="2 3"'}
+def _write_clouds(src, run: ClassifyRun, out: OutputContract, outputs: FilterOutputs,
+                  mon: Monitor) -> None:
+    dims = {"classification": run.classes}
+    if "cloud" in run.outputs:
+        write_las_like(src, out.path(outputs.name("cloud")), dimensions=dims,
+                       progress=mon.sub(0.0, 0.8).update, cancel=mon.cancelled)
+    if "ground" in run.outputs:
+        write_las_like(src, out.path(outputs.name("ground")), dimensions=dims,
+                       mask=run.classes == GROUND_CLASS, progress=mon.sub(0.8, 1.0).update,
+                       cancel=mon.cancelled)
 
 
-def svg_lines(series, *, xlabel: str, ylabel: str, title: str = "", width: int = 600,
-              height: int = 330) -> str:
-    """Multi-line chart as inline SVG.
+def _write_texts(run: ClassifyRun, algorithm, out: OutputContract,
+                 outputs: FilterOutputs) -> None:
+    if "report" in run.outputs:
+        render = outputs.render or (lambda rep: render_html(rep, lang=outputs.lang))
+        out.write_text(outputs.name("report"), render(run.report))
+    texts = algorithm.text_outputs(run) if outputs.text else {}
+    for role in outputs.text:
+        if role not in texts:
+            raise ValueError(f"{algorithm.name} has no text output {role!r}.")
+        out.write_text(outputs.name(role), texts[role])
 
-    ``series`` = [(group label, style, xs, ys), ...]: one colour per group label,
-    one dash pattern per style ("total" solid, "Type I" dashed, "Type II" dotted).
+
+# ============================================================================ report
+def filter_report(run: ClassifyRun, algorithm, *, lang: str = "en") -> Report:
+    """Report content of one :func:`classify_file` run (common part + the method's).
+
+    Parameters
+    ----------
+    run : ClassifyRun
+        The run.
+    algorithm : GroundFilter
+        The method (adds its own sections).
+    lang : str
+        Language of the text drawn inside figures.
+
+    Returns
+    -------
+    Report
+        Title, summary, input, classes, class map, selection, parameters, method
+        sections, computation and outputs.
     """
-    if not series:
-        return ""
-    xs = np.concatenate([np.asarray(s[2], float) for s in series])
-    ys = np.concatenate([np.asarray(s[3], float) for s in series])
-    ok = np.isfinite(xs) & np.isfinite(ys)
-    if not ok.any():
-        return ""
-    x0, x1 = float(xs[ok].min()), float(xs[ok].max())
-    y0, y1 = 0.0, (float(ys[ok].max()) * 1.08) or 1.0
-    if x1 == x0:
-        x0, x1 = x0 - 1, x1 + 1
-    ml, mr, mt, mb = 50, 160, 24, 40
-    pw, ph = width - ml - mr, height - mt - mb
-
-    def px(v):
-        return ml + (v - x0) / (x1 - x0) * pw
-
-    def py(v):
-        return mt + ph - (v - y0) / (y1 - y0) * ph
-
-    parts = [f'<rect x="{ml}" y="{mt}" width="{pw}" height="{ph}" fill="none" '
-             'stroke="#888"/>']
-    for k in range(6):
-        yv = y0 + (y1 - y0) * k / 5
-        parts.append(f'<text x="{ml - 5}" y="{py(yv) + 3:.1f}" font-size="10" '
-                     f'text-anchor="end">{yv:.3g}</text>')
-    for xv in np.unique(xs[ok])[:: max(1, int(np.unique(xs[ok]).size // 12) + 1)]:
-        parts.append(f'<text x="{px(xv):.1f}" y="{mt + ph + 14}" font-size="10" '
-                     f'text-anchor="middle">{xv:.4g}</text>')
-    groups = list(dict.fromkeys(s[0] for s in series))
-    for group, style, sx, sy in series:
-        sx, sy = np.asarray(sx, float), np.asarray(sy, float)
-        good = np.isfinite(sx) & np.isfinite(sy)
-        col = _COLOURS[groups.index(group) % len(_COLOURS)]
-        pts = " ".join(f"{px(a):.1f},{py(b):.1f}" for a, b in zip(sx[good], sy[good]))
-        parts.append(f'<polyline points="{pts}" fill="none" stroke="{col}" '
-                     f'stroke-width="1.8"{_DASH.get(style, "")}/>')
-    yk = mt + 12
-    for group in groups:
-        col = _COLOURS[groups.index(group) % len(_COLOURS)]
-        parts.append(f'<text x="{ml + pw + 8}" y="{yk}" font-size="11" fill="{col}">'
-                     f"{esc(group)}</text>")
-        yk += 15
-    yk += 6
-    for style, dash in _DASH.items():
-        parts.append(f'<line x1="{ml + pw + 8}" y1="{yk - 4}" x2="{ml + pw + 36}" '
-                     f'y2="{yk - 4}" stroke="#333" stroke-width="1.8"{dash}/>'
-                     f'<text x="{ml + pw + 42}" y="{yk}" font-size="11">{esc(style)}</text>')
-        yk += 15
-    parts.append(f'<text x="{ml + pw / 2:.0f}" y="{height - 6}" font-size="11" '
-                 f'text-anchor="middle">{esc(xlabel)}</text>')
-    parts.append(f'<text x="12" y="{mt + ph / 2:.0f}" font-size="11" text-anchor="middle" '
-                 f'transform="rotate(-90 12 {mt + ph / 2:.0f})">{esc(ylabel)}</text>')
-    if title:
-        parts.append(f'<text x="{width / 2:.0f}" y="14" font-size="12" '
-                     f'text-anchor="middle">{esc(title)}</text>')
-    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
-            f'viewBox="0 0 {width} {height}" direction="ltr" role="img">'
-            f"<title>{esc(title)}</title>" + "".join(parts) + "</svg>")
+    tr = translator(lang)
+    n = run.n_points
+    rep = Report(algorithm.title, citation=algorithm.citation)
+    rep.summary.append(Paragraph(T("{n} points: {g} ground, {o} other, {z} low outliers.",
+                                   n=n, g=run.n_ground, o=run.n_nonground, z=run.n_noise)))
+    rep.section("Input").add(KeyValues([
+        ("Point cloud", run.input), ("Points", n),
+        ("CRS", _crs_label(run.points) or T("none"))]))
+    rows = [(k, T(CLASS_NAMES.get(k, "other class")), c, 100.0 * c / n)
+            for k, c in sorted(run.counts().items())]
+    rep.section("Output classes (ASPRS)").add(
+        Table(["Class", "Meaning", "Points", "%"], rows, digits=[0, None, 0, 2]))
+    _class_map_section(rep, run, tr)
+    rep.section("Point selection").add(KeyValues(_selection_rows(run)))
+    rep.section("Parameters").add(KeyValues(algorithm.settings()))
+    algorithm.report_sections(run, rep, tr)
+    sec = run.seconds
+    filt = sec.get("filter") or 0.0
+    rep.section("Computation").add(KeyValues([
+        ("Reading (s)", sec.get("read")), ("Point selection and low outliers (s)",
+                                           sec.get("select")),
+        ("Filter (s)", filt), ("Writing (s)", sec.get("write")),
+        ("Total (s)", sec.get("total")),
+        ("Filter speed (points/s)", n / filt if filt > 0 else None)], digits=2))
+    rows = [(T(_ROLE_LABELS.get(r, r)), p) for r, p in run.outputs.items()]
+    rep.section("Outputs").add(Table(["Output", "File"], rows))
+    return rep
 
 
-def sweep_report(summary: SweepSummary, *, lang: str = "en") -> str:
-    """HTML report of :func:`sweep_file`: the table, the best setting and a chart."""
-    res = summary.result
-    b = res.best
-    label = {"total": "lowest total error", "kappa": "highest kappa",
-             "type1": "lowest Type I error", "type2": "lowest Type II error"}[res.metric]
-    body = [f"<p>Input: <code>{esc(summary.input)}</code> — {summary.n_points} points "
-            f"({summary.n_evaluated} filtered; the others — low outliers, non-last returns — "
-            f"count as non-ground). Reference: {esc(summary.reference)} "
-            f"({res.n_reference_ground} ground points).</p>",
-            "<h2>Best setting</h2>",
-            f"<p>By {label}: <b>r = {fmt(b.radius, 2)} m, θ = {fmt(b.slope, 2)}°, "
-            f"h = {fmt(b.height_tolerance, 2)} m</b> — total {fmt(b.total, 2)} %, "
-            f"Type I {fmt(b.type1, 2)} %, Type II {fmt(b.type2, 2)} %, "
-            f"kappa {fmt(b.kappa, 1)} %.</p>",
-            '<p class="note">Type I = reference ground rejected (b/(a+b)); Type II = objects '
-            "accepted as ground (c/(c+d)) — the forest study's \"error\" column, which alone "
-            "always favours low thresholds; total = (b+c)/n; kappa = Cohen's kappa "
-            "(Sithole &amp; Vosselman 2004).</p>"]
-    headers = ("r (m)", "θ (°)", "h (m)", "allowed rise at r (m)", "ground pts", "a", "b",
-               "c", "d", "Type I %", "Type II %", "total %", "kappa %")
-    rows = []
-    for row in res.rows:
-        mark = row is b
-        cells = [fmt(row.radius, 2), fmt(row.slope, 2), fmt(row.height_tolerance, 2),
-                 fmt(row.allowed_rise, 2), row.n_ground, row.a, row.b, row.c, row.d,
-                 fmt(row.type1, 2), fmt(row.type2, 2), fmt(row.total, 2), fmt(row.kappa, 1)]
-        if mark:
-            cells = [f"★ {c}" if i == 0 else c for i, c in enumerate(cells)]
-        rows.append(cells)
-    body.append("<h2>All settings</h2>" + html_table(headers, rows))
-    series = []
-    passes = sorted({(r.radius, r.height_tolerance) for r in res.rows})
-    for r, h in passes[:len(_COLOURS)]:
-        sub = [row for row in res.rows if row.radius == r and row.height_tolerance == h]
-        tag = f"r = {r:g} m, h = {h:g} m"
-        xs = [row.slope for row in sub]
-        series.append((tag, "total", xs, [row.total for row in sub]))
-        series.append((tag, "Type I", xs, [row.type1 for row in sub]))
-        series.append((tag, "Type II", xs, [row.type2 for row in sub]))
-    if len({row.slope for row in res.rows}) > 1:
-        body.append(svg_lines(series, xlabel="slope threshold θ (°)", ylabel="error (%)",
-                              title="Errors against the threshold"))
-        if len(passes) > len(_COLOURS):
-            body.append(f'<p class="note">Chart limited to the first {len(_COLOURS)} '
-                        "radius/tolerance combinations; the table holds all.</p>")
-    body.append(html_params(summary.settings, title="Parameters"))
-    body.append(f'<p class="note">Computed in {summary.seconds:.1f} s: one exact '
-                "neighbourhood pass per radius and tolerance (per-point required slope), "
-                "then one comparison per threshold.</p>")
-    return html_page("Slope filter threshold sweep", "\n".join(body), lang=lang)
+_ROLE_LABELS = {"cloud": "classified cloud", "ground": "ground cloud", "report": "report",
+                "csv": "tile table (CSV)"}
+
+
+def _selection_rows(run: ClassifyRun) -> list:
+    opt = run.selection_options
+    rows = [("Returns filtered", T("all returns") if opt.returns == "all"
+             else T("last returns only")),
+            ("Low-outlier pre-filter", opt.noise)]
+    if opt.noise:
+        rows += [("Low-outlier search cell (m)", opt.noise_radius),
+                 ("Low-outlier depth below neighbours (m)", opt.noise_threshold)]
+    rows += [("Low outliers (class 7)", run.n_noise),
+             ("Keep existing noise classes (7, 18)", opt.keep_noise_classes),
+             ("Input noise points kept", run.n_input_noise)]
+    if opt.returns == "last":
+        rows += [("Non-last returns (class 1)", run.n_not_last),
+                 ("Points without return information (taken as last)",
+                  run.selection.unknown_returns)]
+    return rows
+
+
+def _crs_label(pd: PointData) -> str:
+    from ..io.raster import crs_label
+    try:
+        return crs_label(pd.info.crs) if pd.info else ""
+    except ValueError:
+        return str(pd.info.crs)
+
+
+def _class_map_section(rep: Report, run: ClassifyRun, tr) -> None:
+    """Plan-view class map (filled in by the reporting step)."""

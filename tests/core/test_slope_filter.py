@@ -12,7 +12,9 @@ from scipy.spatial import cKDTree
 from geomatics_toolbox.core.io.las import read_las, write_las, write_las_like
 from geomatics_toolbox.core.lidar import pipeline as sp
 from geomatics_toolbox.core.lidar import slope as sf
-from geomatics_toolbox.core.progress import Cancelled
+from geomatics_toolbox.core.lidar import sweep as sw
+from geomatics_toolbox.core.lidar.pipeline import FilterOutputs, SelectionOptions
+from geomatics_toolbox.core.progress import Cancelled, Monitor
 
 SAMPLES = ("samp11", "samp12", "samp31", "samp54")
 
@@ -273,7 +275,8 @@ def test_classify_file_preserves_attributes_and_classes(small_tile, tmp_path):
     import laspy
     tile, src = small_tile
     out, gout, html = tmp_path / "c.laz", tmp_path / "g.las", tmp_path / "r.html"
-    s = sp.classify_file(src, out, ground_output=gout, html_output=html, radius=5, slope=40)
+    s = sp.classify_file(src, sf.SlopeFilter(sf.SlopeOptions(radius=5, slope=40)),
+                         FilterOutputs(cloud=out, ground=gout, report=html))
     a, b = laspy.read(src), laspy.read(out)
     for dim in a.point_format.dimension_names:
         if dim != "classification":
@@ -286,7 +289,7 @@ def test_classify_file_preserves_attributes_and_classes(small_tile, tmp_path):
     g = laspy.read(gout)
     assert len(g.x) == s.n_ground and set(np.unique(g.classification)) == {2}
     text = html.read_text(encoding="utf-8")
-    assert "Vosselman" in text and "allowed rise" in text
+    assert "Vosselman" in text and "Allowed rise" in text
     # identical to the core filter on the same selection
     pd = read_las(src, ["classification"])
     sel = sp.select_points(pd)
@@ -299,7 +302,8 @@ def test_last_returns_only(small_tile, tmp_path):
     import laspy
     tile, src = small_tile
     out = tmp_path / "last.las"
-    s = sp.classify_file(src, out, returns="last", radius=5, slope=40)
+    s = sp.classify_file(src, sf.SlopeFilter(sf.SlopeOptions(radius=5, slope=40)),
+                         FilterOutputs(cloud=out), selection=SelectionOptions(returns="last"))
     cls = np.asarray(laspy.read(out).classification)
     not_last = tile.return_number < tile.number_of_returns
     assert s.n_not_last == np.count_nonzero(not_last) > 0
@@ -314,28 +318,34 @@ def test_filter_ignores_input_classification(small_tile, tmp_path):
     write_las_like(src, scrambled, dimensions={
         "classification": np.random.default_rng(0).choice([1, 2, 5, 6], n).astype(np.uint8)})
     a, b = tmp_path / "a.las", tmp_path / "b.las"
-    sp.classify_file(src, a, keep_noise_classes=False)
-    sp.classify_file(scrambled, b, keep_noise_classes=False)
+    keep = SelectionOptions(keep_noise_classes=False)
+    sp.classify_file(src, sf.SlopeFilter(), FilterOutputs(cloud=a), selection=keep)
+    sp.classify_file(scrambled, sf.SlopeFilter(), FilterOutputs(cloud=b), selection=keep)
     np.testing.assert_array_equal(laspy.read(a).classification, laspy.read(b).classification)
 
 
 def test_file_bad_input_writes_nothing(small_tile, tmp_path):
     _, src = small_tile
     out = tmp_path / "o.laz"
+    outs = FilterOutputs(cloud=out, report=tmp_path / "r.html")
     for kw, msg in ((dict(radius=0), "radius"), (dict(slope=90), "between 0 and 90"),
-                    (dict(slope=0), "between 0 and 90"), (dict(returns="first"), "returns")):
+                    (dict(slope=0), "between 0 and 90")):
         with pytest.raises(ValueError, match=msg):
-            sp.classify_file(src, out, html_output=tmp_path / "r.html", **kw)
+            sp.classify_file(src, sf.SlopeFilter(sf.SlopeOptions(**kw)), outs)
         assert not out.exists() and not (tmp_path / "r.html").exists()
+    with pytest.raises(ValueError, match="returns"):
+        sp.classify_file(src, sf.SlopeFilter(), outs,
+                         selection=SelectionOptions(returns="first"))
     with pytest.raises(ValueError, match="same file"):
-        sp.classify_file(src, src)
+        sp.classify_file(src, sf.SlopeFilter(), FilterOutputs(cloud=src))
     empty = tmp_path / "empty.las"
     write_las(empty, np.zeros(0), np.zeros(0), np.zeros(0))
     with pytest.raises(ValueError, match="empty"):
-        sp.classify_file(empty, out)
+        sp.classify_file(empty, sf.SlopeFilter(), FilterOutputs(cloud=out))
     assert not out.exists()
     with pytest.raises(Cancelled):
-        sp.classify_file(src, out, cancel=lambda: True)
+        sp.classify_file(src, sf.SlopeFilter(), FilterOutputs(cloud=out),
+                         Monitor(cancel=lambda: True))
     assert not out.exists()
     assert not [p for p in os.listdir(tmp_path) if ".part" in p]
 
@@ -346,13 +356,13 @@ def test_sweep_file_reference_checks(small_tile, tmp_path):
     other = tmp_path / "other.las"
     write_las(other, tile.x[:100], tile.y[:100], tile.z[:100])
     with pytest.raises(ValueError, match="same points"):
-        sp.sweep_file(src, reference=other, csv_output=csv, html_output=html)
+        sw.sweep_file(src, reference=other, csv_output=csv, html_output=html)
     assert not csv.exists() and not html.exists()
     # a labelled copy of the same cloud is accepted and equals the input's own labels
     ref = tmp_path / "ref.laz"
     write_las_like(src, ref)
-    a = sp.sweep_file(src, reference=ref, slopes=[35, 45], radii=[5])
-    b = sp.sweep_file(src, slopes=[35, 45], radii=[5], csv_output=csv, html_output=html)
+    a = sw.sweep_file(src, reference=ref, slopes=[35, 45], radii=[5])
+    b = sw.sweep_file(src, slopes=[35, 45], radii=[5], csv_output=csv, html_output=html)
     assert [r.total for r in a.result.rows] == [r.total for r in b.result.rows]
     assert csv.read_text().count("\n") == 3
     assert "Best setting" in html.read_text(encoding="utf-8")
@@ -374,7 +384,7 @@ ISPRS_LIMITS = {"samp11": 21.0, "samp12": 11.0, "samp31": 8.0, "samp54": 5.5}
 def test_isprs_best_of_sweep(isprs_dir, sample, tmp_path):
     csv = tmp_path / f"{sample}_sweep.csv"
     html = tmp_path / f"{sample}_sweep.html"
-    s = sp.sweep_file(isprs_dir / f"{sample}.laz", slopes=list(range(25, 66, 5)),
+    s = sw.sweep_file(isprs_dir / f"{sample}.laz", slopes=list(range(25, 66, 5)),
                       radii=[5, 10, 20], height_tolerances=[0.0, 0.2], csv_output=csv,
                       html_output=html)
     best = s.result.best

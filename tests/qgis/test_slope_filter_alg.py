@@ -31,7 +31,7 @@ def test_filter_through_processing(qgis_processing, tile_path, tmp_path):
     assert res["N_POINTS"] == len(pd)
     assert res["N_NONGROUND"] == np.count_nonzero(cls == 1)
     assert len(read_las(gout)) == res["N_GROUND"]
-    assert "allowed rise" in html.read_text(encoding="utf-8")
+    assert "Allowed rise" in html.read_text(encoding="utf-8")
     # identical to the core filter with the same selection
     src = read_las(tile_path, ["classification"])
     sel = sp.select_points(src)

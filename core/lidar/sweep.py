@@ -1,0 +1,237 @@
+"""Threshold sweep of the slope filter on a labelled LAS/LAZ file, with its report.
+
+Vosselman (2000) slope rule evaluated for every threshold against reference labels
+with the error measures of Sithole & Vosselman (2004): Type I, Type II, total error
+and Cohen's kappa. Outputs (CSV table, HTML report, cloud classified with the best
+setting) go through one :class:`~..io.contract.OutputContract`.
+"""
+from __future__ import annotations
+
+import os
+import time
+from dataclasses import dataclass, field
+from typing import Dict, Optional, Sequence
+
+import numpy as np
+
+from ..errors import InputError
+from ..io.contract import OutputContract
+from ..io.las import check_las_file, las_info, read_las, write_las_like
+from ..progress import Monitor
+from ..reporting import KeyValues, Paragraph, Report, T, Table, render_html, translator
+from . import slope as sf
+from .accuracy import ground_mask
+from .pipeline import (
+    GROUND_CLASS,
+    LAS_SUFFIXES,
+    SelectionOptions,
+    assemble_classes,
+    read_cloud,
+    select_points,
+)
+
+__all__ = ["sweep_file", "SweepSummary", "sweep_report"]
+
+
+@dataclass
+class SweepSummary:
+    """Result of :func:`sweep_file`."""
+
+    result: sf.SweepResult
+    input: str
+    reference: str
+    n_points: int
+    n_evaluated: int
+    outputs: Dict[str, str]
+    settings: Dict[str, object]
+    seconds: float = 0.0
+    report: Optional[Report] = field(default=None, repr=False)
+
+
+def _load_reference(reference, ground_classes, pd, mon: Monitor) -> np.ndarray:
+    if reference in (None, "", "input"):
+        return ground_mask(pd["classification"], ground_classes)
+    check_las_file(reference)
+    info = las_info(reference)
+    if info.count != len(pd):
+        raise InputError(f"The reference cloud {reference} has {info.count} points but the "
+                         f"input has {len(pd)}; the reference must hold the same points in "
+                         "the same order (or use the input's own classification).")
+    ref = read_las(reference, ["classification"], progress=mon.update, cancel=mon.cancelled)
+    tol = max(max(info.scales[:2]), max(pd.info.scales[:2]) if pd.info else 0.0, 1e-6)
+    if (np.abs(ref.x - pd.x).max() > tol) or (np.abs(ref.y - pd.y).max() > tol):
+        raise InputError(f"The reference cloud {reference} has as many points as the input "
+                         "but not the same coordinates in the same order; give the labelled "
+                         "copy of the same cloud.")
+    return ground_mask(ref["classification"], ground_classes)
+
+
+def _check_grid(slopes, radii, hs, metric, mode):
+    slopes = [sf._check_slope(s) for s in slopes]
+    radii = [sf._check_radius(r) for r in radii]
+    hs = [sf._check_height(h) for h in hs]
+    if not slopes or not radii or not hs:
+        raise InputError("Give at least one slope, one radius and one height tolerance.")
+    if len(slopes) * len(radii) * len(hs) > 5000:
+        raise InputError("More than 5000 settings requested; narrow the lists.")
+    if metric not in sf.SLOPE_METRICS:
+        raise InputError(f"metric must be one of {', '.join(sf.SLOPE_METRICS)}, got "
+                         f"{metric!r}.")
+    if mode not in sf.MODES:
+        raise InputError(f"mode must be one of {', '.join(sf.MODES)}, got {mode!r}.")
+    return slopes, radii, hs
+
+
+def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_CLASS,),
+               slopes: Sequence[float] = (30, 35, 40, 44, 48, 52, 56, 60),
+               radii: Sequence[float] = (sf.DEFAULT_RADIUS,),
+               height_tolerances: Sequence[float] = (sf.DEFAULT_HEIGHT_TOLERANCE,),
+               metric: str = "total", selection: Optional[SelectionOptions] = None,
+               mode: str = "exact", trend_cell: float = 10.0, trend_window: float = 60.0,
+               csv_output=None, html_output=None, output=None, names=None,
+               lang: str = "en", progress=None, cancel=None) -> SweepSummary:
+    """Threshold sweep of the slope filter on a labelled LAS/LAZ file.
+
+    Parameters
+    ----------
+    src : path
+        The cloud (its classification never influences the filtering).
+    reference : path, optional
+        ``None``/``"input"``: the input's own classification (e.g. the ISPRS samples);
+        else a labelled copy of the same points in the same order.
+    ground_classes : sequence of int
+        Reference classes counted as ground.
+    slopes, radii, height_tolerances : sequence of float
+        The grid of settings (degrees, metres, metres).
+    metric : {'total', 'kappa', 'type1', 'type2'}
+        How the best setting is chosen.
+    selection : SelectionOptions, optional
+        Returns and noise pre-filter; ``keep_noise_classes`` defaults to False here
+        because the input's classes are usually the labels under test.
+    mode, trend_cell, trend_window
+        As in :func:`~.slope.slope_filter`.
+    csv_output, html_output, output : path, optional
+        Sweep table, report, cloud classified with the best setting.
+    names : dict, optional
+        Parameter names of the outputs for error messages.
+    lang : str
+        Report language.
+    progress, cancel : callable, optional
+        Progress and cancel.
+
+    Returns
+    -------
+    SweepSummary
+        The sweep, counts and report content.
+    """
+    t0 = time.perf_counter()
+    mon = Monitor(progress, cancel)
+    names = {"csv": "OUTPUT_CSV", "report": "OUTPUT_HTML", "cloud": "OUTPUT", **(names or {})}
+    sel_opt = (selection or SelectionOptions(keep_noise_classes=False)).validate()
+    if output and not str(output).lower().endswith(LAS_SUFFIXES):
+        raise InputError(f"The output {names['cloud']} must end in .las or .laz "
+                         f"(got {output}).")
+    slopes, radii, hs = _check_grid(slopes, radii, height_tolerances, metric, mode)
+    roles = {k: os.fspath(v) for k, v in (("csv", csv_output), ("report", html_output),
+                                          ("cloud", output)) if v}
+    ref_in = None if reference in (None, "", "input") else reference
+    with OutputContract({names[k]: v for k, v in roles.items()},
+                        inputs={"INPUT": src, "REFERENCE": ref_in}) as out:
+        pd = read_cloud(src, monitor=mon.sub(0.0, 0.05))
+        ref = _load_reference(ref_in, ground_classes, pd, mon.sub(0.05, 0.1))
+        if not ref.any():
+            raise InputError(f"The reference marks no point as ground (classes "
+                             f"{', '.join(map(str, ground_classes))}); check the reference "
+                             "or the ground classes.")
+        sel = select_points(pd, **vars(sel_opt), progress=mon.sub(0.1, 0.15).update,
+                            cancel=mon.cancelled)
+        res = sf.threshold_sweep(pd.x, pd.y, pd.z, ref, slopes=slopes, radii=radii,
+                                 height_tolerance=hs, classify=sel.candidates,
+                                 neighbours=sel.candidates, mode=mode, metric=metric,
+                                 trend_cell=trend_cell, trend_window=trend_window,
+                                 progress=mon.sub(0.15, 0.9).update, cancel=mon.cancelled)
+        settings = dict(slopes_deg=", ".join(f"{s:g}" for s in slopes),
+                        radii_m=", ".join(f"{r:g}" for r in radii),
+                        height_tolerances_m=", ".join(f"{h:g}" for h in hs), metric=metric,
+                        returns=sel_opt.returns, noise_prefilter=sel_opt.noise, mode=mode,
+                        ground_classes=", ".join(map(str, ground_classes)))
+        summary = SweepSummary(
+            result=res, input=os.fspath(src),
+            reference=os.fspath(ref_in) if ref_in else "input classification",
+            n_points=len(pd), n_evaluated=int(np.count_nonzero(sel.candidates)),
+            outputs=roles, settings=settings)
+        if output:
+            best = res.best_ground[sel.candidates]
+            cls = assemble_classes(sel, np.where(best, 2, 1).astype(np.uint8),
+                                   pd["classification"])
+            write_las_like(src, out.path(names["cloud"]), dimensions={"classification": cls},
+                           progress=mon.sub(0.9, 0.98).update, cancel=mon.cancelled)
+        if csv_output:
+            out.write_text(names["csv"], res.to_csv())
+        summary.seconds = time.perf_counter() - t0
+        summary.report = sweep_report(summary, lang=lang)
+        if html_output:
+            out.write_text(names["report"], render_html(summary.report, lang=lang))
+        mon.check()
+    mon.update(1.0)
+    return summary
+
+
+_METRIC_LABELS = {"total": "lowest total error", "kappa": "highest kappa",
+                  "type1": "lowest Type I error", "type2": "lowest Type II error"}
+
+
+def sweep_report(summary: SweepSummary, *, lang: str = "en") -> Report:
+    """Report content of :func:`sweep_file`: best setting, all settings, error chart.
+
+    Parameters
+    ----------
+    summary : SweepSummary
+        The sweep.
+    lang : str
+        Language of the text drawn in the chart.
+
+    Returns
+    -------
+    Report
+        The content, rendered by :func:`~..reporting.render_html`.
+    """
+    res, b = summary.result, summary.result.best
+    rep = Report("Slope filter threshold sweep", citation=(
+        "Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS "
+        "XXXIII-B3, 935–942. Error measures: Sithole, G. & Vosselman, G. (2004), ISPRS J. "
+        "Photogramm. Remote Sens. 59(1-2), 85-101."))
+    rep.summary.append(Paragraph(T(
+        "{n} points, {e} filtered (the others — low outliers, non-last returns — count as "
+        "non-ground); {g} reference ground points.", n=summary.n_points,
+        e=summary.n_evaluated, g=res.n_reference_ground)))
+    rep.section("Inputs").add(KeyValues([("Point cloud", summary.input),
+                                         ("Reference", summary.reference)]))
+    rep.section("Best setting").add(KeyValues([
+        ("Chosen by", T(_METRIC_LABELS[res.metric])), ("Radius r (m)", b.radius),
+        ("Slope threshold θ (degrees)", b.slope), ("Height tolerance h (m)",
+                                                   b.height_tolerance),
+        ("Type I error (%)", b.type1), ("Type II error (%)", b.type2),
+        ("Total error (%)", b.total), ("Kappa (%)", b.kappa)], digits=2)).add(Paragraph(
+            "Type I = reference ground rejected (b/(a+b)); Type II = objects accepted as "
+            "ground (c/(c+d)), which alone always favours low thresholds; total = (b+c)/n; "
+            "kappa = Cohen's kappa.", "note"))
+    headers = ["r (m)", "θ (°)", "h (m)", "Allowed rise at r (m)", "Ground points", "a",
+               "b", "c", "d", "Type I %", "Type II %", "Total %", "Kappa %"]
+    rows = [(("★ " if row is b else "") + f"{row.radius:g}", row.slope, row.height_tolerance,
+             row.allowed_rise, row.n_ground, row.a, row.b, row.c, row.d, row.type1,
+             row.type2, row.total, row.kappa) for row in res.rows]
+    sec = rep.section("All settings")
+    _sweep_figure(sec, res, translator(lang))
+    sec.add(Table(headers, rows, digits=2))
+    rep.section("Parameters").add(KeyValues([(k.replace("_", " "), v)
+                                             for k, v in summary.settings.items()]))
+    rep.section("Computation").add(KeyValues([("Total (s)", summary.seconds)], digits=1))
+    return rep
+
+
+def _sweep_figure(sec, res, tr) -> None:
+    """Errors against θ (filled in by the reporting step)."""
+
+
+
