@@ -224,8 +224,15 @@ def sweep_report(summary: SweepSummary, *, lang: str = "en") -> Report:
     sec = rep.section("All settings")
     _sweep_figure(sec, res, translator(lang))
     sec.add(Table(headers, rows, digits=2))
-    rep.section("Parameters").add(KeyValues([(k.replace("_", " "), v)
-                                             for k, v in summary.settings.items()]))
+    st = summary.settings
+    rep.section("Parameters").add(KeyValues([
+        ("Slope thresholds θ (degrees)", st["slopes_deg"]), ("Radii r (m)", st["radii_m"]),
+        ("Height tolerances h (m)", st["height_tolerances_m"]),
+        ("Best by", T(_METRIC_LABELS[st["metric"]])),
+        ("Returns filtered", T("all returns") if st["returns"] == "all"
+         else T("last returns only")),
+        ("Low-outlier pre-filter", st["noise_prefilter"]), ("Mode", st["mode"]),
+        ("Reference ground classes", st["ground_classes"])]))
     rep.section("Computation").add(KeyValues([("Total (s)", summary.seconds)], digits=1))
     return rep
 

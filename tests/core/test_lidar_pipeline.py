@@ -125,3 +125,27 @@ def test_looks_like_degrees_rule():
     check_projected(crs="EPSG:32632")
     with pytest.raises(InputError, match="geographic CRS"):
         check_projected(crs="EPSG:4326")
+
+
+@pytest.mark.parametrize("lang", ["ar", "fa"])
+def test_lidar_reports_fully_translated(tmp_path, lang):
+    """Every message of the LSQ, slope and sweep reports has an ar/fa translation."""
+    from geomatics_toolbox.core.lidar.lsq import LsqFilter, LsqOptions
+    from geomatics_toolbox.core.lidar.slope import SlopeFilter, SlopeOptions
+    from geomatics_toolbox.core.lidar.sweep import sweep_file
+    from geomatics_toolbox.core.reporting import render_html
+    from geomatics_toolbox.core.reporting.i18n import has_translation
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+    src = tmp_path / "t.laz"
+    write_tile(generate_tile(extent=(80, 80), density=2.0, seed=3), src)
+    reports = [classify_file(src, alg, FilterOutputs(report=tmp_path / "r.html", lang=lang),
+                             selection=SelectionOptions(returns="last")).report
+               for alg in (LsqFilter(LsqOptions(mode="improved")), LsqFilter(),
+                           SlopeFilter(SlopeOptions(mode="adaptive")))]
+    reports.append(sweep_file(src, slopes=[30, 40], metric="kappa").report)
+    missing = {m for r in reports for m in r.messages() if not has_translation(m, lang)}
+    assert not missing, sorted(missing)
+    html = render_html(reports[0], lang=lang)
+    assert 'dir="rtl"' in html
+    for word in ("Cross matrix", "Classes", "Iterations", "faithful", "converged"):
+        assert f">{word}<" not in html
