@@ -76,23 +76,15 @@ def as_xyz(x, y, z, *, nonfinite: str = "raise", empty_error: Optional[str] = No
 
 
 def crs_is_geographic(crs: Optional[str]) -> bool:
-    """Return True when ``crs`` (WKT, 'EPSG:n', PROJ) is a geographic (degree) CRS.
+    """Return True when ``crs`` is a geographic (degree) CRS (:func:`~.io.crs.is_geographic`).
 
-    Unknown or unparsable CRSs and a missing GDAL return False (nothing to refuse).
+    Unknown or unparsable CRSs return False (nothing to refuse).
     """
-    if not crs:
-        return False
+    from .io.crs import is_geographic
     try:
-        from osgeo import osr
-    except ImportError:  # pragma: no cover - GDAL ships with QGIS
+        return bool(crs) and bool(is_geographic(crs))
+    except ValueError:
         return False
-    srs = osr.SpatialReference()
-    try:
-        if srs.SetFromUserInput(str(crs)) != 0:
-            return False
-    except RuntimeError:
-        return False
-    return bool(srs.IsGeographic()) and not bool(srs.IsProjected())
 
 
 def looks_like_degrees(x, y, z) -> bool:

@@ -656,7 +656,7 @@ def _selection_rows(run: ClassifyRun) -> list:
 
 
 def _crs_label(pd: PointData) -> str:
-    from ..io.raster import crs_label
+    from ..io.crs import crs_label
     try:
         return crs_label(pd.info.crs) if pd.info else ""
     except ValueError:
