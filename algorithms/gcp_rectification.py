@@ -26,7 +26,6 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.io import gcp as gcp_io
-from ..core.io.contract import check_not_input
 from ..core.rectification import accuracy as gcp_report
 from ..core.rectification import warp
 from .base import GeomaticsAlgorithm
@@ -189,18 +188,67 @@ class _GcpBase(GeomaticsAlgorithm):
             if crs and g.crs and not warp.same_crs(crs, g.crs):
                 g.notes.append("GCP_CRS differs from the '#CRS:' line of the file; the "
                                "file's CRS was used.")
-            return g
+            return g, gfile
         if layer_given:
-            return self.load_layer(parameters, context, origin)
+            return self.load_layer(parameters, context, origin), self.layer_path(parameters)
         if raster and os.path.exists(raster + ".points"):
             g = gcp_io.read_gcps(raster + ".points", crs=crs, source_geotransform=gt)
             g.notes.append("GCP file found next to the image (the Georeferencer's "
                            "<image>.points).")
-            return g
+            return g, raster + ".points"
         raise QgsProcessingException(self.tr(
             "No GCPs: give a GCP file (GCP_FILE, .points or CSV) or a point layer "
             "(GCP_LAYER with COL_FIELD and ROW_FIELD); no <image>.points file was found "
             "next to the image either."))
+
+    def layer_path(self, parameters):
+        """File behind GCP_LAYER when it is a file (for the output contract), else None."""
+        value = parameters.get(self.GCP_LAYER)
+        if isinstance(value, str):
+            path = value.split("|")[0]
+            return path if os.path.exists(path) else None
+        try:
+            path = value.source().split("|")[0]
+        except AttributeError:
+            return None
+        return path if os.path.exists(path) else None
+
+    def _feature_record(self, feat, k, fields):
+        """``(id, [col, row], [X, Y], enabled, role, weight or None)`` of one feature."""
+        geom = feat.geometry()
+        if geom is None or geom.isEmpty():
+            raise QgsProcessingException(self.tr(
+                "GCP layer feature {0} has no geometry.").format(feat.id()))
+        pt = (geom.asMultiPoint()[0] if QgsWkbTypes.isMultiType(geom.wkbType())
+              else geom.asPoint())
+        where = f"GCP layer feature {feat.id()}"
+        vals = [self._number_field(feat, fields[key], where)
+                for key in (self.COL_FIELD, self.ROW_FIELD)]
+        pid = str(feat[fields[self.ID_FIELD]]) if fields[self.ID_FIELD] else str(k)
+        enabled = True
+        if fields[self.ENABLED_FIELD]:
+            raw = feat[fields[self.ENABLED_FIELD]]
+            enabled = str(raw).strip().lower() not in ("0", "false", "no", "null", "none",
+                                                       "")
+        role = "gcp"
+        if fields[self.ROLE_FIELD]:
+            rv = str(feat[fields[self.ROLE_FIELD]] or "").strip().lower()
+            if rv not in gcp_io._ROLE_ALIASES:
+                raise QgsProcessingException(
+                    f"{where}: role must be 'gcp' or 'check', got {rv!r}.")
+            role = gcp_io._ROLE_ALIASES[rv]
+        weight = (self._number_field(feat, fields[self.WEIGHT_FIELD], where)
+                  if fields[self.WEIGHT_FIELD] else None)
+        return pid, vals, [pt.x(), pt.y()], enabled, role, weight
+
+    @staticmethod
+    def _number_field(feat, name, where):
+        raw = feat[name]
+        try:
+            return float(raw)
+        except (TypeError, ValueError):
+            raise QgsProcessingException(
+                f"{where}: field '{name}' must be a number, got {raw!r}.") from None
 
     def load_layer(self, parameters, context, origin):
         source = self.parameterAsSource(parameters, self.GCP_LAYER, context)
@@ -217,51 +265,10 @@ class _GcpBase(GeomaticsAlgorithm):
                 "column and row of each point."))
         ids, pix, mp, en, role, wt = [], [], [], [], [], []
         for k, feat in enumerate(source.getFeatures(), start=1):
-            geom = feat.geometry()
-            if geom is None or geom.isEmpty():
-                raise QgsProcessingException(self.tr(
-                    "GCP layer feature {0} has no geometry.").format(feat.id()))
-            if QgsWkbTypes.isMultiType(geom.wkbType()):
-                pts = geom.asMultiPoint()
-                pt = pts[0]
-            else:
-                pt = geom.asPoint()
-            where = f"GCP layer feature {feat.id()}"
-            vals = []
-            for key in (self.COL_FIELD, self.ROW_FIELD):
-                raw = feat[fields[key]]
-                try:
-                    vals.append(float(raw))
-                except (TypeError, ValueError):
-                    raise QgsProcessingException(
-                        f"{where}: field '{fields[key]}' must be a number, got {raw!r}."
-                    ) from None
-            pix.append(vals)
-            mp.append([pt.x(), pt.y()])
-            ids.append(str(feat[fields[self.ID_FIELD]]) if fields[self.ID_FIELD]
-                       else str(k))
-            if fields[self.ENABLED_FIELD]:
-                raw = feat[fields[self.ENABLED_FIELD]]
-                en.append(str(raw).strip().lower() not in ("0", "false", "no", "null",
-                                                           "none", ""))
-            else:
-                en.append(True)
-            if fields[self.ROLE_FIELD]:
-                rv = str(feat[fields[self.ROLE_FIELD]] or "").strip().lower()
-                if rv not in gcp_io._ROLE_ALIASES:
-                    raise QgsProcessingException(
-                        f"{where}: role must be 'gcp' or 'check', got {rv!r}.")
-                role.append(gcp_io._ROLE_ALIASES[rv])
-            else:
-                role.append("gcp")
-            if fields[self.WEIGHT_FIELD]:
-                raw = feat[fields[self.WEIGHT_FIELD]]
-                try:
-                    wt.append(float(raw))
-                except (TypeError, ValueError):
-                    raise QgsProcessingException(
-                        f"{where}: field '{fields[self.WEIGHT_FIELD]}' must be a number, "
-                        f"got {raw!r}.") from None
+            rec = self._feature_record(feat, k, fields)
+            for lst, v in zip((ids, pix, mp, en, role, wt), rec):
+                if v is not None:
+                    lst.append(v)
         pix = np.asarray(pix, float).reshape(-1, 2)
         notes = []
         if len(pix) and (pix[:, 1] <= 0).all() and (pix[:, 1] < 0).any():
@@ -360,57 +367,57 @@ class RectifyGcpAlgorithm(_GcpBase):
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_HTML, self.tr("Accuracy report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=True))
+        self.add_report_language()
         for name, label in NUMBERS:
             self.addOutput(QgsProcessingOutputNumber(name, label))
 
     def process(self, parameters, context, feedback):
         raster = self.raster_path(parameters, context, required=True)
-        out = self.parameterAsOutputLayer(parameters, self.OUTPUT, context)
-        html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
-        check_not_input(out, raster)
-        if os.path.splitext(out)[1].lower() not in (".tif", ".tiff"):
+        out_path = self.parameterAsOutputLayer(parameters, self.OUTPUT, context)
+        if os.path.splitext(out_path)[1].lower() not in (".tif", ".tiff"):
             raise QgsProcessingException(self.tr(
-                "OUTPUT must be a GeoTIFF file (.tif); got {0}.").format(out))
-        if html:
-            check_not_input(html, raster)
+                "OUTPUT must be a GeoTIFF file (.tif); got {0}.").format(out_path))
+        parameters = dict(parameters, **{self.OUTPUT: out_path})
         order = self.parameterAsInt(parameters, self.ORDER, context)
         target = self.crs_param(parameters, self.TARGET_CRS, context)
-        gcps = self.load_gcps(parameters, context, raster)
-        gcps, unit = self.prepare(gcps, target)
-        width, height, _, _ = warp.image_info(raster)
-        gcp_io.check_in_image(gcps, width, height)
-        cb = self.core_callbacks(feedback)
-        acc = gcp_report.evaluate_gcps(
-            gcps, order=order, gr=self._optional_number(parameters, self.GR),
-            image_size=(width, height), units=unit,
-            progress=(lambda f: cb["progress"](0.1 * f)) if cb["progress"] else None,
-            cancel=cb["cancel"])
-        feedback.pushInfo(f"Order {order}: RMS_T = {acc.selected.stats.rms_t:.4f} {unit} "
-                          f"(n = {acc.selected.n_gcps}), verdict {acc.verdict}; recommended "
-                          f"order {acc.recommended or '–'}.")
-        resampling = warp.RESAMPLING[self.parameterAsEnum(parameters, self.RESAMPLING,
-                                                          context)]
-        res = warp.rectify(
-            raster, gcps, out, order=order, target_crs=target or None,
-            resampling=resampling,
-            resolution=self._optional_number(parameters, self.RESOLUTION),
-            nodata=(None if parameters.get(self.NODATA) in (None, "") else
-                    self.parameterAsDouble(parameters, self.NODATA, context)),
-            progress=(lambda f: cb["progress"](0.1 + 0.9 * f)) if cb["progress"] else None,
-            cancel=cb["cancel"])
-        for note in res.model.warnings:
-            feedback.pushWarning(note)
-        feedback.pushInfo(f"Wrote {out}: {res.width} × {res.height} px at "
+        gcps, gcp_path = self.load_gcps(parameters, context, raster)
+        with self.output_contract(parameters, context, [self.OUTPUT, self.OUTPUT_HTML],
+                                  inputs={self.INPUT: raster, "GCP_FILE": gcp_path}) as out:
+            gcps, unit = self.prepare(gcps, target)
+            width, height, _, _ = warp.image_info(raster)
+            gcp_io.check_in_image(gcps, width, height)
+            cb = self.core_callbacks(feedback)
+            acc = gcp_report.evaluate_gcps(
+                gcps, order=order, gr=self._optional_number(parameters, self.GR),
+                image_size=(width, height), units=unit,
+                progress=(lambda f: cb["progress"](0.1 * f)) if cb["progress"] else None,
+                cancel=cb["cancel"])
+            feedback.pushInfo(f"Order {order}: RMS_T = {acc.selected.stats.rms_t:.4f} {unit} "
+                              f"(n = {acc.selected.n_gcps}), verdict {acc.verdict}; "
+                              f"recommended order {acc.recommended or '–'}.")
+            resampling = warp.RESAMPLING[self.parameterAsEnum(parameters, self.RESAMPLING,
+                                                              context)]
+            res = warp.rectify(
+                raster, gcps, out.path(self.OUTPUT), order=order,
+                target_crs=target or None, resampling=resampling,
+                resolution=self._optional_number(parameters, self.RESOLUTION),
+                nodata=(None if parameters.get(self.NODATA) in (None, "") else
+                        self.parameterAsDouble(parameters, self.NODATA, context)),
+                progress=(lambda f: cb["progress"](0.1 + 0.9 * f)) if cb["progress"] else None,
+                cancel=cb["cancel"])
+            for note in res.model.warnings:
+                feedback.pushWarning(note)
+            outputs = {self.OUTPUT: out.final(self.OUTPUT)}
+            outputs.update(self.numbers(acc))
+            if out.requested(self.OUTPUT_HTML):
+                extra = {"rectified image": out.final(self.OUTPUT), "resampling": resampling,
+                         "output resolution": f"{res.resolution:.6g}",
+                         "output size": f"{res.width} × {res.height} px"}
+                out.write_text(self.OUTPUT_HTML, gcp_report.to_html(
+                    acc, lang=self.report_lang(parameters, context), extra_params=extra))
+                outputs[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
+        feedback.pushInfo(f"Wrote {outputs[self.OUTPUT]}: {res.width} × {res.height} px at "
                           f"{res.resolution:.6g} units/px, resampling {resampling}.")
-        outputs = {self.OUTPUT: out}
-        outputs.update(self.numbers(acc))
-        if html:
-            extra = {"rectified image": out, "resampling": resampling,
-                     "output resolution": f"{res.resolution:.6g}",
-                     "output size": f"{res.width} × {res.height} px"}
-            self.write_text(html, gcp_report.to_html(acc, lang=self.report_lang(),
-                                                     extra_params=extra))
-            outputs[self.OUTPUT_HTML] = html
         feedback.setProgress(100)
         return outputs
 
@@ -469,6 +476,7 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_JSON, self.tr("Report as JSON"), self.tr("JSON files (*.json)"),
             optional=True, createByDefault=False))
+        self.add_report_language()
         for name, label in NUMBERS:
             self.addOutput(QgsProcessingOutputNumber(name, label))
         for t in (1, 2, 3):
@@ -479,49 +487,52 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
 
     def process(self, parameters, context, feedback):
         raster = self.raster_path(parameters, context, required=False)
-        paths = {k: self.parameterAsFileOutput(parameters, k, context)
-                 for k in (self.OUTPUT_HTML, self.OUTPUT_CSV, self.OUTPUT_JSON)}
-        for p in paths.values():
-            if p and raster:
-                check_not_input(p, raster)
         order = self.parameterAsInt(parameters, self.ORDER, context)
-        gcps = self.load_gcps(parameters, context, raster)
-        gcps, unit = self.prepare(gcps)
-        size = None
-        if raster:
-            width, height, _, _ = warp.image_info(raster)
-            size = (width, height)
-        else:
-            w = self._optional_number(parameters, self.IMAGE_WIDTH)
-            h = self._optional_number(parameters, self.IMAGE_HEIGHT)
-            if w and h:
-                size = (int(w), int(h))
-        if size is not None:
-            gcp_io.check_in_image(gcps, *size)
-        acc = gcp_report.evaluate_gcps(gcps, order=order,
-                                       gr=self._optional_number(parameters, self.GR),
-                                       image_size=size, units=unit,
-                                       **self.core_callbacks(feedback))
-        s = acc.selected.stats
-        feedback.pushInfo(f"Order {order}: RMS_T = {s.rms_t:.4f} {unit} (divisor n), "
-                          f"{'' if s.rms_t_qgis is None else f'{s.rms_t_qgis:.4f}'} "
-                          f"(divisor n − N); {s.n_within}/{s.n} within RMS_T; verdict "
-                          f"{acc.verdict}.")
-        feedback.pushInfo(f"Recommendation: {acc.recommendation}")
-        outputs = self.numbers(acc)
-        for t in (1, 2, 3):
-            r = acc.results.get(t)
-            outputs[f"RMS_T_ORDER{t}"] = r.stats.rms_t if r is not None and r.ok else None
-            outputs[f"LOO_RMS_T_ORDER{t}"] = (r.loo_rms if r is not None and r.ok else None)
-        if paths[self.OUTPUT_HTML]:
-            self.write_text(paths[self.OUTPUT_HTML],
-                            gcp_report.to_html(acc, lang=self.report_lang()))
-            outputs[self.OUTPUT_HTML] = paths[self.OUTPUT_HTML]
-        if paths[self.OUTPUT_CSV]:
-            self.write_text(paths[self.OUTPUT_CSV], gcp_report.to_csv(acc))
-            outputs[self.OUTPUT_CSV] = paths[self.OUTPUT_CSV]
-        if paths[self.OUTPUT_JSON]:
-            self.write_text(paths[self.OUTPUT_JSON], gcp_report.to_json(acc))
-            outputs[self.OUTPUT_JSON] = paths[self.OUTPUT_JSON]
+        gcps, gcp_path = self.load_gcps(parameters, context, raster)
+        names = [self.OUTPUT_HTML, self.OUTPUT_CSV, self.OUTPUT_JSON]
+        with self.output_contract(parameters, context, names,
+                                  inputs={self.INPUT: raster, "GCP_FILE": gcp_path}) as out:
+            gcps, unit = self.prepare(gcps)
+            size = self.image_size(parameters, raster)
+            if size is not None:
+                gcp_io.check_in_image(gcps, *size)
+            acc = gcp_report.evaluate_gcps(gcps, order=order,
+                                           gr=self._optional_number(parameters, self.GR),
+                                           image_size=size, units=unit,
+                                           **self.core_callbacks(feedback))
+            self.log_summary(acc, order, unit, feedback)
+            outputs = self.numbers(acc)
+            for t in (1, 2, 3):
+                r = acc.results.get(t)
+                ok = r is not None and r.ok
+                outputs[f"RMS_T_ORDER{t}"] = r.stats.rms_t if ok else None
+                outputs[f"LOO_RMS_T_ORDER{t}"] = r.loo_rms if ok else None
+            writers = {self.OUTPUT_HTML: lambda: gcp_report.to_html(
+                           acc, lang=self.report_lang(parameters, context)),
+                       self.OUTPUT_CSV: lambda: gcp_report.to_csv(acc),
+                       self.OUTPUT_JSON: lambda: gcp_report.to_json(acc)}
+            for name in names:
+                if out.requested(name):
+                    out.write_text(name, writers[name]())
+                    outputs[name] = out.final(name)
         feedback.setProgress(100)
         return outputs
+
+    def image_size(self, parameters, raster):
+        """``(width, height)`` from the image, IMAGE_WIDTH/IMAGE_HEIGHT, or None."""
+        if raster:
+            width, height, _, _ = warp.image_info(raster)
+            return (width, height)
+        w = self._optional_number(parameters, self.IMAGE_WIDTH)
+        h = self._optional_number(parameters, self.IMAGE_HEIGHT)
+        return (int(w), int(h)) if w and h else None
+
+    @staticmethod
+    def log_summary(acc, order, unit, feedback):
+        """Push the RMS, verdict and recommendation to the log."""
+        s = acc.selected.stats
+        qgis = "" if s.rms_t_qgis is None else f"{s.rms_t_qgis:.4f}"
+        feedback.pushInfo(f"Order {order}: RMS_T = {s.rms_t:.4f} {unit} (divisor n), "
+                          f"{qgis} (divisor n − N); {s.n_within}/{s.n} within RMS_T; "
+                          f"verdict {acc.verdict}.")
+        feedback.pushInfo(f"Recommendation: {acc.recommendation}")

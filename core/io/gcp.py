@@ -62,6 +62,8 @@ from typing import List, Optional, Sequence
 
 import numpy as np
 
+from ..errors import InputError
+
 ROLES = ("gcp", "check")
 _ROLE_ALIASES = {"gcp": "gcp", "control": "gcp", "gcps": "gcp", "cp": "gcp", "": "gcp",
                  "check": "check", "checkpoint": "check", "chk": "check", "icp": "check",
@@ -110,6 +112,7 @@ class GCPSet:
     qgis_residuals: Optional[np.ndarray] = None
 
     def __len__(self) -> int:
+        """Return the number of points."""
         return len(self.ids)
 
     @property
@@ -123,13 +126,13 @@ class GCPSet:
         return self.enabled & (self.role == "check")
 
     def with_crs(self, crs: str) -> "GCPSet":
-        """A copy with ``crs`` set."""
+        """Return a copy with ``crs`` set."""
         return GCPSet(list(self.ids), self.pixel.copy(), self.map.copy(), self.enabled.copy(),
                       self.role.copy(), None if self.weight is None else self.weight.copy(),
                       crs, self.source, list(self.notes), self.qgis_residuals)
 
     def subset(self, mask) -> "GCPSet":
-        """The points where ``mask`` is true."""
+        """Return the points where ``mask`` is true."""
         m = np.asarray(mask, bool)
         return GCPSet([i for i, k in zip(self.ids, m) if k], self.pixel[m], self.map[m],
                       self.enabled[m], self.role[m],
@@ -174,7 +177,39 @@ def make_gcps(ids, pixel, map_xy, *, enabled=None, role=None, weight=None, crs: 
         w = np.asarray(weight, float).ravel()
         if (~np.isfinite(w) | (w <= 0)).any():
             raise ValueError("GCP weights must be positive numbers; fix the weight column.")
+    check_distinct_map(ids, map_xy, enabled, source)
     return GCPSet(ids, pixel, map_xy, enabled, role, w, crs or "", source, list(notes or []))
+
+
+def check_distinct_map(ids, map_xy, enabled, source: str = "") -> None:
+    """Refuse enabled GCPs sharing identical map coordinates, naming the points.
+
+    Two points at one map position with different image positions contradict each
+    other (and a repeated point counts twice in every criterion); a whole set at one
+    position has no ground extent at all.
+
+    Raises
+    ------
+    InputError
+        Naming each group of points (ids) with identical map coordinates.
+    """
+    en = np.flatnonzero(np.asarray(enabled, bool))
+    if len(en) < 2:
+        return
+    _, inverse, counts = np.unique(map_xy[en], axis=0, return_inverse=True,
+                                   return_counts=True)
+    inverse = np.asarray(inverse).ravel()
+    groups = [en[inverse == k] for k in np.flatnonzero(counts > 1)]
+    if not groups:
+        return
+    ids = np.asarray(ids, dtype=object)
+    text = "; ".join(f"{', '.join(ids[g])} at X = {map_xy[g[0], 0]:.10g}, "
+                     f"Y = {map_xy[g[0], 1]:.10g}" for g in groups[:10])
+    more = f" (and {len(groups) - 10} more groups)" if len(groups) > 10 else ""
+    raise InputError(
+        f"GCPs with identical map coordinates in {source or 'the input'}: {text}{more}. "
+        "Each GCP must be a distinct ground point: fix the map coordinates of the "
+        "repeated points, or disable or remove the duplicates.")
 
 
 def check_in_image(gcps: GCPSet, width: int, height: int, *, tolerance: float = 0.0) -> None:
@@ -343,23 +378,8 @@ def _norm(name: str) -> str:
     return "".join(ch for ch in name.strip().lower() if ch.isalnum())
 
 
-def read_csv(path, *, pixel_origin: str = "corner", crs: str = "") -> GCPSet:
-    """Read GCPs from a CSV table (see module docstring for the accepted columns).
-
-    Parameters
-    ----------
-    path : path-like
-        The CSV file.
-    pixel_origin : {'corner', 'center'}
-        ``corner`` (default): image coordinates in the GDAL/QGIS corner convention;
-        ``center``: integer values are pixel centres (0.5 is added).
-    crs : str, optional
-        CRS of the map coordinates when the file has no ``# CRS:`` line.
-    """
-    if pixel_origin not in ("corner", "center", "centre"):
-        raise ValueError(f"pixel_origin must be 'corner' or 'center', got {pixel_origin!r}.")
-    text = _read_text(path)
-    src = os.fspath(path)
+def _csv_rows(text: str, src: str):
+    """Return ``(crs from a '# CRS:' comment, non-empty CSV rows incl. the header)``."""
     lines = text.splitlines()
     file_crs = ""
     body_start = 0
@@ -379,7 +399,11 @@ def read_csv(path, *, pixel_origin: str = "corner", crs: str = "") -> GCPSet:
     first = body.splitlines()[0]
     delim = max((";", "\t", ","), key=first.count) if any(d in first for d in ";\t,") else ","
     reader = csv.reader(io.StringIO(body), delimiter=delim)
-    rows = [r for r in reader if any(c.strip() for c in r)]
+    return file_crs, [r for r in reader if any(c.strip() for c in r)]
+
+
+def _csv_columns(rows, src: str):
+    """Return ``(found columns, col index, row index, row sign or None, notes)``."""
     header = [_norm(h) for h in rows[0]]
     found = {}
     for key, names in _ALIASES.items():
@@ -400,6 +424,18 @@ def read_csv(path, *, pixel_origin: str = "corner", crs: str = "") -> GCPSet:
     if "x" not in found or "y" not in found:
         raise ValueError(f"{src}: no map coordinate columns. Expected 'X,Y', 'map_x,map_y' "
                          f"or 'easting,northing'; found columns {rows[0]}.")
+    return found, ci, ri, sign, notes
+
+
+def _csv_role(value: str, where: str) -> str:
+    rv = value.strip().lower()
+    if rv not in _ROLE_ALIASES:
+        raise ValueError(f"{where}: role must be 'gcp' or 'check', got {rv!r}.")
+    return _ROLE_ALIASES[rv]
+
+
+def _csv_records(rows, found, ci, ri, src):
+    """Parse the data rows into ids, pixel, map, enabled, role and weight lists."""
     ids, pix, mp, en, role, wt = [], [], [], [], [], []
     for k, r in enumerate(rows[1:], start=2):
         where = f"{src} row {k}"
@@ -417,15 +453,31 @@ def read_csv(path, *, pixel_origin: str = "corner", crs: str = "") -> GCPSet:
                    _num(get("y"), where=where, column=rows[0][found["y"]])])
         en.append(_flag(get("enabled"), where=where, column="enabled")
                   if "enabled" in found and get("enabled").strip() else True)
-        if "role" in found:
-            rv = get("role").strip().lower()
-            if rv not in _ROLE_ALIASES:
-                raise ValueError(f"{where}: role must be 'gcp' or 'check', got {rv!r}.")
-            role.append(_ROLE_ALIASES[rv])
-        else:
-            role.append("gcp")
+        role.append(_csv_role(get("role"), where) if "role" in found else "gcp")
         if "weight" in found:
             wt.append(_num(get("weight"), where=where, column="weight"))
+    return ids, pix, mp, en, role, wt
+
+
+def read_csv(path, *, pixel_origin: str = "corner", crs: str = "") -> GCPSet:
+    """Read GCPs from a CSV table (see module docstring for the accepted columns).
+
+    Parameters
+    ----------
+    path : path-like
+        The CSV file.
+    pixel_origin : {'corner', 'center'}
+        ``corner`` (default): image coordinates in the GDAL/QGIS corner convention;
+        ``center``: integer values are pixel centres (0.5 is added).
+    crs : str, optional
+        CRS of the map coordinates when the file has no ``# CRS:`` line.
+    """
+    if pixel_origin not in ("corner", "center", "centre"):
+        raise ValueError(f"pixel_origin must be 'corner' or 'center', got {pixel_origin!r}.")
+    src = os.fspath(path)
+    file_crs, rows = _csv_rows(_read_text(path), src)
+    found, ci, ri, sign, notes = _csv_columns(rows, src)
+    ids, pix, mp, en, role, wt = _csv_records(rows, found, ci, ri, src)
     pix = np.asarray(pix, float).reshape(-1, 2)
     if sign is None:
         if len(pix) and (pix[:, 1] <= 0).all() and (pix[:, 1] < 0).any():
@@ -482,8 +534,9 @@ def points_text(gcps: GCPSet, *, crs_wkt: Optional[str] = None, residuals=None) 
 
 
 def gcps_csv_text(gcps: GCPSet) -> str:
-    """Text of a CSV table (id,col,row,X,Y,enabled,role[,weight]) readable by
-    :func:`read_csv` (corner convention).
+    """Text of a CSV table (id,col,row,X,Y,enabled,role[,weight]).
+
+    Readable by :func:`read_csv` (corner convention).
     """
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")

@@ -34,6 +34,7 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
+from ..errors import InputError
 from ..io.gcp import GCPSet
 from ..progress import Monitor
 from ..reporting import html as rep
@@ -659,6 +660,11 @@ def evaluate_gcps(gcps: GCPSet, *, order: int = 2, gr: Optional[float] = None,
         except ValueError as exc:
             raise ValueError(f"Cannot derive the ground resolution: {exc}") from None
         gr = aff.pixel_size()
+        if not (np.isfinite(gr) and gr > 0):
+            raise InputError(
+                "The GCP map coordinates do not span an area (they are identical or lie "
+                "on one line), so no ground resolution follows from them; check the map "
+                "X and Y columns of the GCP file.")
         gr_source = "from the GCPs (affine fit: sqrt|det J|)"
     mon.step(0.05)
     results = {}

@@ -514,3 +514,23 @@ def test_cancel_leaves_nothing(tmp_path):
         warp.rectify(img, g, tmp_path / "o.tif", order=1,
                      cancel=lambda: calls.append(1) or len(calls) > 2)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["in.tif"]
+
+
+def test_identical_map_coordinates_refused_naming_points():
+    from geomatics_toolbox.core.errors import InputError
+    pix = [[0, 0], [10, 0], [0, 10], [10, 10]]
+    mp = [[5, 5], [15, 5], [5, 5], [15, 15]]
+    with pytest.raises(InputError, match=r"a, c at X = 5, Y = 5"):
+        gcp_io.make_gcps(["a", "b", "c", "d"], pix, mp)
+    # a disabled duplicate is ignored
+    g = gcp_io.make_gcps(["a", "b", "c", "d"], pix, mp, enabled=[1, 1, 0, 1])
+    assert len(g) == 4
+
+
+def test_collinear_map_coordinates_clear_error_not_gr():
+    from geomatics_toolbox.core.errors import InputError
+    pix = [[0, 0], [10, 0], [0, 10], [10, 10], [5, 3]]
+    mp = [[0, 0], [1, 1], [2, 2], [3, 3], [4, 4]]
+    g = gcp_io.make_gcps(None, pix, mp, crs="EPSG:22780")
+    with pytest.raises(InputError, match="do not span an area"):
+        gcp_report.evaluate_gcps(g, order=1)

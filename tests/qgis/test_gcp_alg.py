@@ -190,3 +190,100 @@ def test_geographic_gcps_need_a_projected_target(qgis_processing, tmp_path):
     ds = gdal.Open(str(out))
     assert "32637" in ds.GetProjection() or "UTM zone 37N" in ds.GetProjection()
     assert ds.GetGeoTransform()[0] == pytest.approx(utm[:, 0].min(), abs=200)
+
+
+def _names(folder):
+    return sorted(p.name for p in folder.iterdir())
+
+
+@pytest.mark.parametrize("alg, output", [("gcpaccuracyreport", "OUTPUT_CSV"),
+                                         ("gcpaccuracyreport", "OUTPUT_HTML"),
+                                         ("gcpaccuracyreport", "OUTPUT_JSON"),
+                                         ("rectifygcp", "OUTPUT_HTML")])
+def test_output_on_the_gcp_file_is_refused(qgis_processing, tmp_path, alg, output):
+    from qgis.core import QgsProcessingException
+    img, pts, _, _ = make_case(tmp_path)
+    before, before_img, names = sha(pts), sha(img), _names(tmp_path)
+    params = {"INPUT": str(img), "GCP_FILE": str(pts), "ORDER": 1, output: str(pts)}
+    if alg == "rectifygcp":
+        params["OUTPUT"] = str(tmp_path / "rect.tif")
+    with pytest.raises(QgsProcessingException, match="same file as the input GCP_FILE"):
+        qgis_processing.run(f"geomatics:{alg}", params)
+    assert sha(pts) == before and sha(img) == before_img
+    assert _names(tmp_path) == names
+
+
+def test_output_on_the_points_file_found_next_to_the_image_is_refused(qgis_processing,
+                                                                      tmp_path):
+    from qgis.core import QgsProcessingException
+    img, pts, _, _ = make_case(tmp_path)
+    before, names = sha(pts), _names(tmp_path)
+    with pytest.raises(QgsProcessingException, match="GCP_FILE"):
+        qgis_processing.run("geomatics:gcpaccuracyreport", {"INPUT": str(img),
+                                                            "OUTPUT_CSV": str(pts)})
+    assert sha(pts) == before and _names(tmp_path) == names
+
+
+def test_two_outputs_on_one_path_refused(qgis_processing, tmp_path):
+    from qgis.core import QgsProcessingException
+    img, pts, _, _ = make_case(tmp_path)
+    names = _names(tmp_path)
+    same = str(tmp_path / "r.txt")
+    with pytest.raises(QgsProcessingException, match="both"):
+        qgis_processing.run("geomatics:gcpaccuracyreport", {
+            "INPUT": str(img), "GCP_FILE": str(pts), "OUTPUT_CSV": same,
+            "OUTPUT_JSON": same})
+    assert _names(tmp_path) == names
+
+
+def test_report_failure_leaves_no_rectified_image(qgis_processing, tmp_path, monkeypatch):
+    """All-or-nothing: the warp succeeded, the report failed -> nothing at all."""
+    from qgis.core import QgsProcessingException
+
+    from geomatics_toolbox.core.rectification import accuracy
+
+    def broken(*_a, **_k):
+        raise OSError("disk full while writing the report")
+
+    monkeypatch.setattr(accuracy, "to_html", broken)
+    img, pts, _, _ = make_case(tmp_path)
+    old = tmp_path / "rect.tif"
+    old.write_bytes(b"an older result")
+    names = _names(tmp_path)
+    with pytest.raises(QgsProcessingException, match="disk full"):
+        qgis_processing.run("geomatics:rectifygcp", {
+            "INPUT": str(img), "GCP_FILE": str(pts), "ORDER": 1, "OUTPUT": str(old),
+            "OUTPUT_HTML": str(tmp_path / "rect.html")})
+    assert _names(tmp_path) == names
+    assert old.read_bytes() == b"an older result"
+
+
+def test_report_in_unwritable_folder_clear_error_nothing_written(qgis_processing, tmp_path):
+    """The report's folder is a file (unwritable even for root): refused up front."""
+    from qgis.core import QgsProcessingException
+    img, pts, _, _ = make_case(tmp_path)
+    blocker = tmp_path / "blocker"
+    blocker.write_text("not a folder")
+    names = _names(tmp_path)
+    with pytest.raises(QgsProcessingException, match="cannot be written"):
+        qgis_processing.run("geomatics:rectifygcp", {
+            "INPUT": str(img), "GCP_FILE": str(pts), "ORDER": 1,
+            "OUTPUT": str(tmp_path / "rect.tif"),
+            "OUTPUT_HTML": str(blocker / "rect.html")})
+    assert _names(tmp_path) == names and blocker.read_text() == "not a folder"
+
+
+def test_identical_map_coordinates_named(qgis_processing, tmp_path):
+    from qgis.core import QgsProcessingException
+    img, pts, _, _ = make_case(tmp_path)
+    g = gcp_io.read_points(pts)
+    g.map[6] = g.map[2]
+    g.map[11] = g.map[2]
+    pts.write_text(gcp_io.points_text(g))
+    names = _names(tmp_path)
+    with pytest.raises(QgsProcessingException,
+                       match=r"identical map coordinates.*3, 7, 12 at X") as exc:
+        qgis_processing.run("geomatics:gcpaccuracyreport", {
+            "INPUT": str(img), "GCP_FILE": str(pts), "OUTPUT_HTML": str(tmp_path / "r.html")})
+    assert "GR" not in str(exc.value)
+    assert _names(tmp_path) == names
