@@ -113,3 +113,42 @@ def write_test_image(path, width: int, height: int, *, bands: int = 1,
         ds.FlushCache()
         ds = None
     return os.fspath(path)
+
+
+#: known transformations of the image-1 positions (map = T(col, row))
+TRUE_LINEAR = {"shift_x": -308100.0, "shift_y": 155950.0, "scale_x": 0.912,
+               "scale_y": -0.905}
+TRUE_HELMERT = {"shift_x": -308100.0, "shift_y": 155950.0, "scale": 0.91,
+                "rotation_deg": 0.4}
+TRUE_PROJECTIVE = np.array([[0.912, 0.0064, -308100.0],
+                            [0.0061, -0.905, 155950.0],
+                            [3.0e-6, -2.0e-6, 1.0]])
+
+
+def transformed_gcps(kind: str, *, noise: float = 0.0, seed: int = 0):
+    """``(pixel, map, truth, image_size)``: image-1 GCP positions pushed through a known
+    ``linear``, ``helmert``, ``projective`` or ``polynomial1…3`` transformation plus
+    N(0, ``noise``²) per axis (``truth``: its parameters)."""
+    pix, size = image1_pixels()
+    c, r = pix[:, 0], pix[:, 1]
+    if kind == "linear":
+        t = TRUE_LINEAR
+        x, y = t["shift_x"] + t["scale_x"] * c, t["shift_y"] + t["scale_y"] * r
+    elif kind == "helmert":
+        t = TRUE_HELMERT
+        a = t["scale"] * np.cos(np.radians(t["rotation_deg"]))
+        b = t["scale"] * np.sin(np.radians(t["rotation_deg"]))
+        x, y = t["shift_x"] + a * c + b * r, t["shift_y"] + b * c - a * r
+    elif kind == "projective":
+        t = TRUE_PROJECTIVE
+        w = t[2, 0] * c + t[2, 1] * r + 1.0
+        x = (t[0, 0] * c + t[0, 1] * r + t[0, 2]) / w
+        y = (t[1, 0] * c + t[1, 1] * r + t[1, 2]) / w
+    else:
+        t = true_coefficients(int(kind[-1]))
+        x, y = eval_raw(*t, c, r)
+    if noise:
+        rng = np.random.default_rng(seed)
+        x = x + rng.normal(0.0, noise, x.size)
+        y = y + rng.normal(0.0, noise, y.size)
+    return pix, np.column_stack([x, y]), t, size
