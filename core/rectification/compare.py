@@ -71,7 +71,7 @@ class TransformResult:
         return float("inf") if s is None else s.rms_t
 
     def verdict(self, basis: str) -> str:
-        """The criteria's verdict on the honest residuals (check points or LOO)."""
+        """Return the criteria's verdict on the honest residuals (check points or LOO)."""
         s = self.check if basis == "check" else self.loo
         return "not computed" if s is None else s.verdict
 
