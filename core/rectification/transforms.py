@@ -392,7 +392,7 @@ def fit_transform(kind: str, pixel_xy, map_xy, *, weights=None,
                                    max_condition=max_condition)
         except ValueError as exc:
             raise InputError(str(exc)) from None
-        return PolynomialTransform(kind, len(pix), list(model.warnings), model=model)
+        return PolynomialTransform(kind, len(pix), model.warnings, model=model)
     fit = {"linear": fit_linear, "helmert": fit_helmert, "projective": fit_projective,
            "tps": fit_tps}[kind]
     return fit(pix, mp)

@@ -26,9 +26,10 @@ from typing import Optional, Sequence
 import numpy as np
 
 from ..io.contract import atomic_output, check_not_input
-from ..io.gcp import GCPSet, check_in_image
+from ..io.gcp import GCPSet, check_in_image, make_gcps
 from ..progress import Cancelled, Monitor
-from .polynomial import MAX_CONDITION, PolynomialModel, fit_polynomial
+from .polynomial import MAX_CONDITION, fit_polynomial
+from .transforms import check_kind, fit_transform
 
 RESAMPLING = ("near", "bilinear", "cubic", "cubicspline", "lanczos", "average", "mode")
 CREATION_OPTIONS = ("TILED=YES", "COMPRESS=DEFLATE", "BIGTIFF=IF_SAFER")
@@ -129,21 +130,87 @@ class WarpResult:
     width: int
     height: int
     crs: str
-    model: PolynomialModel
+    model: object
+    kind: str = ""
 
     def as_dict(self) -> dict:
-        return {"output": self.output, "order": self.order, "resampling": self.resampling,
+        """Return a JSON-ready description."""
+        return {"output": self.output, "order": self.order, "kind": self.kind,
+                "resampling": self.resampling,
                 "resolution": self.resolution, "width": self.width, "height": self.height,
                 "crs": self.crs}
 
 
+def _check_options(resampling, resolution):
+    if resampling not in RESAMPLING:
+        raise ValueError(f"resampling must be one of {', '.join(RESAMPLING)}, got "
+                         f"{resampling!r}.")
+    if resolution is not None and not (np.isfinite(resolution) and resolution > 0):
+        raise ValueError(f"resolution must be a positive pixel size, got {resolution!r}; "
+                         "leave it empty to use the ground resolution GR.")
+
+
+#: nodes per side of the GCP grid that carries a projective fit into GDAL's TPS
+PROJECTIVE_GRID = 33
+
+
+def _source(src: str, gcps: GCPSet, kind: str, model):
+    """In-memory VRT georeferenced for ``kind`` and the gdal.Warp transformer options.
+
+    * polynomials: the GCPs, ``METHOD=GCP_POLYNOMIAL`` (``gdalwarp -order N``);
+    * ``tps``: the GCPs, ``METHOD=GCP_TPS`` (``gdalwarp -tps``);
+    * ``linear``/``helmert``: the fitted affine as the geotransform (exact);
+    * ``projective``: a grid of GCPs on the fitted homography, ``METHOD=GCP_TPS``
+      (GDAL 3.6 has no homography transformer; the spline through the grid departs
+      from the homography by far less than a pixel, measured in the tests).
+    """
+    gdal = _gdal()
+    if kind in ("linear", "helmert"):
+        vpath = f"/vsimem/gcp_{uuid.uuid4().hex}.vrt"
+        ds = gdal.Translate(vpath, src, format="VRT")
+        ds.SetGCPs([], "")
+        ds.SetGeoTransform(model.geotransform())
+        ds.SetProjection(_srs(gcps.crs, "GCP CRS").ExportToWkt())
+        return ds, vpath, {}
+    if kind == "projective":
+        width, height, _, _ = image_info(src)
+        c, r = np.meshgrid(np.linspace(0, width, PROJECTIVE_GRID),
+                           np.linspace(0, height, PROJECTIVE_GRID))
+        x, y = model.forward(c.ravel(), r.ravel())
+        grid = make_gcps(None, np.column_stack([c.ravel(), r.ravel()]),
+                         np.column_stack([x, y]), crs=gcps.crs)
+        ds, vpath = gcps_vrt(src, grid, gcps.crs)
+        return ds, vpath, {"tps": True}
+    ds, vpath = gcps_vrt(src, gcps, gcps.crs)
+    if kind == "tps":
+        return ds, vpath, {"tps": True}
+    return ds, vpath, {"polynomialOrder": int(kind[-1]),
+                       "transformerOptions": ["METHOD=GCP_POLYNOMIAL"]}
+
+
+def _run_warp(tmp, ds, opts, sub, src):
+    gdal = _gdal()
+    try:
+        res = gdal.Warp(tmp, ds, **opts)
+    except RuntimeError as exc:
+        if sub.cancelled():
+            raise Cancelled("cancelled by the user") from None
+        raise ValueError(f"GDAL could not warp {src}: {exc}") from None
+    if res is None:
+        if sub.cancelled():
+            raise Cancelled("cancelled by the user")
+        raise ValueError(f"GDAL could not warp {src}.")
+    return res
+
+
 def rectify(input_path, gcps: GCPSet, output_path, *, order: int = 2,
+            kind: Optional[str] = None,
             target_crs: Optional[str] = None, resampling: str = "near",
             resolution: Optional[float] = None, nodata: Optional[float] = None,
             error_threshold: float = 0.125,
             creation_options: Sequence[str] = CREATION_OPTIONS,
             max_condition: float = MAX_CONDITION, progress=None, cancel=None) -> WarpResult:
-    """Warp ``input_path`` with the GCP polynomial of ``order`` into a GeoTIFF.
+    """Warp ``input_path`` with the GCP transformation ``kind`` into a GeoTIFF.
 
     Parameters
     ----------
@@ -154,9 +221,12 @@ def rectify(input_path, gcps: GCPSet, output_path, *, order: int = 2,
     output_path : path-like
         GeoTIFF to write (temporary name, renamed on success; never the input).
     order : {1, 2, 3}
-        Polynomial order (``gdalwarp -order``).
+        Polynomial order (``gdalwarp -order``) when ``kind`` is not given.
+    kind : str, optional
+        One of :data:`~.transforms.KINDS` (default ``polynomial<order>``); see
+        :func:`_source` for how each reaches GDAL.
     target_crs : str, optional
-        Output CRS (default: the GCPs' CRS); GDAL reprojects after the polynomial.
+        Output CRS (default: the GCPs' CRS); GDAL reprojects after the transformation.
     resampling : str
         One of :data:`RESAMPLING` (default nearest neighbour, as in the paper).
     resolution : float, optional
@@ -167,41 +237,40 @@ def rectify(input_path, gcps: GCPSet, output_path, *, order: int = 2,
     error_threshold : float
         GDAL approximation error in pixels (0 = exact transformer for every pixel;
         0.125 is gdalwarp's default).
+    creation_options : sequence of str
+        GeoTIFF creation options.
+    max_condition : float
+        Condition-number limit of the polynomial fits.
+    progress, cancel : callable, optional
+        Progress and cancel callbacks (:class:`~..progress.Monitor`).
 
     Returns
     -------
     WarpResult
     """
-    gdal = _gdal()
     mon = Monitor(progress, cancel)
-    src = os.fspath(input_path)
-    out = os.fspath(output_path)
+    src, out = os.fspath(input_path), os.fspath(output_path)
     check_not_input(out, src)
-    if resampling not in RESAMPLING:
-        raise ValueError(f"resampling must be one of {', '.join(RESAMPLING)}, got "
-                         f"{resampling!r}.")
-    if resolution is not None and not (np.isfinite(resolution) and resolution > 0):
-        raise ValueError(f"resolution must be a positive pixel size, got {resolution!r}; "
-                         "leave it empty to use the ground resolution GR.")
+    _check_options(resampling, resolution)
+    kind = check_kind(kind or f"polynomial{int(order)}")
     if not gcps.crs:
         raise ValueError("The GCP map coordinates have no CRS (no '#CRS:' line in the file "
                          "and none given). Set the GCP CRS (e.g. EPSG:22780) and run again.")
     gcp_srs = _srs(gcps.crs, "GCP CRS")
-    tgt = target_crs or gcps.crs
-    tgt_srs = _srs(tgt, "target CRS")
-    width, height, nbands, _ = image_info(src)
+    tgt_srs = _srs(target_crs or gcps.crs, "target CRS")
+    width, height, _, _ = image_info(src)
     check_in_image(gcps, width, height)
     m = gcps.fit_mask
-    model = fit_polynomial(gcps.pixel[m], gcps.map[m], order=order,
-                           weights=None if gcps.weight is None else gcps.weight[m],
-                           max_condition=max_condition)
+    model = fit_transform(kind, gcps.pixel[m], gcps.map[m],
+                          weights=None if gcps.weight is None else gcps.weight[m],
+                          max_condition=max_condition)
     if gcps.weight is not None and not np.allclose(gcps.weight, gcps.weight[0]):
         model.warnings.append("GDAL's warper fits unweighted: the warp ignores the weights "
                               "(the report uses them).")
     if resolution is None:
-        resolution = ground_resolution(gcps, tgt)
+        resolution = ground_resolution(gcps, target_crs or gcps.crs)
     mon.step(0.05)
-    ds, vpath = gcps_vrt(src, gcps, gcps.crs)
+    ds, vpath, topts = _source(src, gcps, kind, model)
     sub = mon.sub(0.05, 0.98)
 
     def cb(complete, _msg, _data):
@@ -210,35 +279,24 @@ def rectify(input_path, gcps: GCPSet, output_path, *, order: int = 2,
         sub.update(complete)
         return 1
 
-    opts = dict(format="GTiff", polynomialOrder=int(order),
-                transformerOptions=["METHOD=GCP_POLYNOMIAL"],
-                resampleAlg=resampling, srcSRS=gcp_srs.ExportToWkt(),
+    opts = dict(format="GTiff", resampleAlg=resampling, srcSRS=gcp_srs.ExportToWkt(),
                 dstSRS=tgt_srs.ExportToWkt(), xRes=float(resolution), yRes=float(resolution),
                 errorThreshold=float(error_threshold), multithread=True,
                 warpOptions=["NUM_THREADS=ALL_CPUS"],
-                creationOptions=list(creation_options), callback=cb)
+                creationOptions=list(creation_options), callback=cb, **topts)
     if nodata is not None:
         opts["dstNodata"] = float(nodata)
     try:
         with atomic_output(out) as tmp:
-            try:
-                res = gdal.Warp(tmp, ds, **opts)
-            except RuntimeError as exc:
-                if sub.cancelled():
-                    raise Cancelled("cancelled by the user") from None
-                raise ValueError(f"GDAL could not warp {src}: {exc}") from None
-            if res is None:
-                if sub.cancelled():
-                    raise Cancelled("cancelled by the user")
-                raise ValueError(f"GDAL could not warp {src}.")
-            res.SetMetadataItem("RECTIFICATION", f"GCP polynomial order {order}, "
-                                f"{int(m.sum())} GCPs, resampling {resampling}")
+            res = _run_warp(tmp, ds, opts, sub, src)
+            res.SetMetadataItem("RECTIFICATION", f"GCP {kind}, {int(m.sum())} GCPs, "
+                                f"resampling {resampling}")
             w, h = res.RasterXSize, res.RasterYSize
             res.FlushCache()
             res = None
     finally:
         ds = None
-        gdal.Unlink(vpath)
+        _gdal().Unlink(vpath)
     mon.update(1.0)
     return WarpResult(out, int(order), resampling, float(resolution), w, h,
-                      tgt_srs.ExportToWkt(), model)
+                      tgt_srs.ExportToWkt(), getattr(model, "model", model), kind)
