@@ -6,29 +6,22 @@ import os
 import numpy as np
 from qgis.core import (
     QgsCoordinateTransform,
-    QgsFeature,
-    QgsFeatureSink,
-    QgsField,
-    QgsFields,
-    QgsGeometry,
-    QgsPoint,
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterCrs,
     QgsProcessingParameterEnum,
-    QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterField,
     QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterRasterLayer,
+    QgsProcessingParameterVectorDestination,
     QgsWkbTypes,
 )
-from qgis.PyQt.QtCore import QVariant
 
-from ..core.io.points import read_checkpoints_csv
+from ..core.io.points import read_checkpoints_csv, write_points_layer
 from ..core.io.raster import read_raster
 from ..core.progress import Cancelled
 from ..core.reporting.html import html_page, html_table, svg_histogram, svg_scatter
@@ -138,7 +131,7 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
         self.add(QgsProcessingParameterEnum(
             self.METHOD, self.tr("Sampling"), [self.tr("Bilinear"), self.tr("Nearest cell")],
             defaultValue=0))
-        self.add(QgsProcessingParameterFeatureSink(
+        self.add(QgsProcessingParameterVectorDestination(
             self.OUTPUT, self.tr("Residuals"), QgsProcessing.TypeVectorPoint, optional=True,
             createByDefault=True))
         self.add(QgsProcessingParameterFileDestination(
@@ -209,60 +202,68 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
         return ids, x, y, z
 
     # ------------------------------------------------------------------ run
+    def input_files(self, parameters, context, dtm_path):
+        """Every file read: the DTM, the check point file and the layer's file."""
+        files = {self.DTM: dtm_path,
+                 self.CHECKPOINTS_CSV: self.parameterAsFile(parameters, self.CHECKPOINTS_CSV,
+                                                            context) or None}
+        lyr = (self.parameterAsVectorLayer(parameters, self.CHECKPOINTS, context)
+               if parameters.get(self.CHECKPOINTS) not in (None, "") else None)
+        if lyr is not None and lyr.providerType() == "ogr":
+            src = lyr.source().split("|")[0]
+            files[self.CHECKPOINTS] = src if os.path.exists(src) else None
+        return files
+
     def process(self, parameters, context, feedback):
         layer = self.parameterAsRasterLayer(parameters, self.DTM, context)
         if layer is None:
             raise QgsProcessingException(self.tr("Choose a DTM raster."))
         band = self.parameterAsInt(parameters, self.BAND, context)
         method = core_acc.METHODS[self.parameterAsEnum(parameters, self.METHOD, context)]
-        r = read_raster(layer.source(), band)
-        dtm_crs = layer.crs()
-        feedback.setProgress(20)
-        ids, x, y, z = self.read_points(parameters, context, dtm_crs, feedback)
-        if feedback.isCanceled():
-            raise Cancelled("cancelled by the user")
-        res = core_acc.dtm_accuracy(r.masked(), r.geotransform, x, y, z, method=method)
-        feedback.setProgress(50)
-        summary = res.summary()
-        html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
-        results = {}
-        for name, key, _ in NUMBERS:
-            results[name] = summary[key]
-        feedback.pushInfo(self.tr("N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; "
-                                  "{} outside, {} on nodata").format(
-            res.n_used, summary["rmse"], summary["me"], summary["r"], res.n_outside,
-            res.n_nodata))
-        fields = QgsFields()
-        for nm, typ in (("id", QVariant.String), ("x", QVariant.Double),
-                        ("y", QVariant.Double), ("z_check", QVariant.Double),
-                        ("z_dtm", QVariant.Double), ("error", QVariant.Double),
-                        ("abs_error", QVariant.Double), ("status", QVariant.String)):
-            fields.append(QgsField(nm, typ))
-        sink, dest = self.parameterAsSink(parameters, self.OUTPUT, context, fields,
-                                          QgsWkbTypes.PointZ, dtm_crs)
-        if sink is not None:
-            err = res.error
-            for i in range(res.n_total):
-                if feedback.isCanceled():
-                    raise Cancelled("cancelled by the user")
-                f = QgsFeature(fields)
-                zc = float(res.z_check[i]) if np.isfinite(res.z_check[i]) else 0.0
-                f.setGeometry(QgsGeometry(QgsPoint(float(x[i]), float(y[i]), zc)))
-                ok = res.status[i] == core_acc.OK
-                f.setAttributes([
-                    ids[i], float(x[i]), float(y[i]),
-                    float(res.z_check[i]) if np.isfinite(res.z_check[i]) else None,
-                    float(res.z_dtm[i]) if ok else None, float(err[i]) if ok else None,
-                    float(abs(err[i])) if ok else None,
-                    core_acc.STATUS_NAMES[int(res.status[i])]])
-                sink.addFeature(f, QgsFeatureSink.FastInsert)
-                feedback.setProgress(50 + 45 * (i + 1) / max(res.n_total, 1))
-            results[self.OUTPUT] = dest
-        if html:
-            results[self.OUTPUT_HTML] = self.write_text(
-                html, self.report(res, ids, layer.source(), method, dtm_crs))
+        with self.output_contract(parameters, context, [self.OUTPUT, self.OUTPUT_HTML],
+                                  self.input_files(parameters, context,
+                                                   layer.source())) as out:
+            r = read_raster(layer.source(), band)
+            dtm_crs = layer.crs()
+            feedback.setProgress(20)
+            ids, x, y, z = self.read_points(parameters, context, dtm_crs, feedback)
+            core_acc.check_duplicates(ids, x, y)
+            if feedback.isCanceled():
+                raise Cancelled("cancelled by the user")
+            res = core_acc.dtm_accuracy(r.masked(), r.geotransform, x, y, z, method=method)
+            feedback.setProgress(50)
+            summary = res.summary()
+            results = {name: summary[key] for name, key, _ in NUMBERS}
+            feedback.pushInfo(self.tr("N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; "
+                                      "{} outside, {} on nodata").format(
+                res.n_used, summary["rmse"], summary["me"], summary["r"], res.n_outside,
+                res.n_nodata))
+            if out.requested(self.OUTPUT):
+                self.write_residuals(out.path(self.OUTPUT), res, ids, dtm_crs)
+                results[self.OUTPUT] = out.final(self.OUTPUT)
+            if feedback.isCanceled():
+                raise Cancelled("cancelled by the user")
+            if out.requested(self.OUTPUT_HTML):
+                out.write_text(self.OUTPUT_HTML,
+                               self.report(res, ids, layer.source(), method, dtm_crs))
+                results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         feedback.setProgress(100)
         return results
+
+    @staticmethod
+    def write_residuals(path, res, ids, crs) -> None:
+        """The residual point layer (id, x, y, z_check, z_dtm, error, abs_error, status)."""
+        ok = res.status == core_acc.OK
+        err = np.where(ok, res.error, np.nan)
+        authid = crs.authid() if crs.isValid() else ""
+        crs_text = authid if authid.upper().startswith("EPSG:") else (
+            crs.toWkt() if crs.isValid() else None)
+        write_points_layer(path, res.x, res.y, res.z_check, {
+            "id": [str(i) for i in ids], "x": res.x, "y": res.y, "z_check": res.z_check,
+            "z_dtm": np.where(ok, res.z_dtm, np.nan), "error": err,
+            "abs_error": np.abs(err),
+            "status": [core_acc.STATUS_NAMES[int(s)] for s in res.status]},
+            crs=crs_text, layer_name="residuals")
 
     def report(self, res, ids, dtm_path, method, crs) -> str:
         s = res.summary()

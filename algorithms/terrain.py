@@ -25,7 +25,7 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
-from ..core.io.contract import check_not_input
+from ..core.coords import check_projected
 from ..core.io.las import iter_las_chunks, las_info
 from ..core.io.points import parse_classes, read_class_points, write_grid
 from ..core.io.raster import read_raster
@@ -61,6 +61,34 @@ _HELP_COMMON = QT_TRANSLATE_NOOP(
     "<li><b>Output</b> (OUTPUT): GeoTIFF (float32, DEFLATE, nodata −9999) in the input "
     "CRS; values belong to cell centres.</li>"
     "<li><b>Report</b> (OUTPUT_HTML, optional): HTML report.</li>")
+
+
+#: ASPRS LAS 1.4 R15 classes 0–22 (index = class code), for the class pickers.
+ASPRS_CLASSES = (
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Created, never classified"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Unclassified"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Ground"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Low vegetation"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Medium vegetation"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "High vegetation"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Building"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Low point (noise)"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Reserved (model key-point)"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Water"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Rail"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Road surface"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Reserved (overlap)"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Wire – guard (shield)"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Wire – conductor (phase)"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Transmission tower"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Wire-structure connector (insulator)"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Bridge deck"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "High noise"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Overhead structure"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Ignored ground"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Snow"),
+    QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Temporal exclusion"),
+)
 
 
 def _crs_string(crs: QgsCoordinateReferenceSystem) -> str:
@@ -102,13 +130,25 @@ class _GridAlgorithm(GeomaticsAlgorithm):
     OUTPUT = "OUTPUT"
     OUTPUT_HTML = "OUTPUT_HTML"
 
-    def add_input_params(self, *, classes_default: str = "2"):
+    def classes_param(self, name, label, default):
+        """Multi-select enum of the ASPRS classes (option index = class code).
+
+        Old comma text such as ``"2,8"`` is still accepted (``qgis_process``).
+        """
+        return QgsProcessingParameterEnum(
+            name, label, [f"{c} — {self.tr(n)}" for c, n in enumerate(ASPRS_CLASSES)],
+            allowMultiple=True, defaultValue=list(default), optional=True)
+
+    def classes(self, parameters, name, context):
+        """Selected class codes (``()`` = every class)."""
+        return parse_classes(self.parameterAsEnums(parameters, name, context))
+
+    def add_input_params(self, *, classes_default=(2,)):
         self.add(QgsProcessingParameterFile(
             self.INPUT, self.tr("Point cloud (LAS/LAZ)"),
             behavior=QgsProcessingParameterFile.File, fileFilter=LAS_FILTER))
-        self.add(QgsProcessingParameterString(
-            self.CLASSES, self.tr("Classes used (comma-separated; empty = all)"),
-            defaultValue=classes_default, optional=True))
+        self.add(self.classes_param(self.CLASSES, self.tr("Classes used (none = all)"),
+                                    classes_default))
         self.add_number(self.CELL_SIZE, self.tr("Cell size (m)"), 1.0, minimum=0.0)
         self.add(QgsProcessingParameterExtent(self.EXTENT, self.tr("Extent"), optional=True))
         self.add(QgsProcessingParameterCrs(
@@ -159,7 +199,7 @@ class _GridAlgorithm(GeomaticsAlgorithm):
 
     def load_points(self, parameters, context, feedback):
         path = self.parameterAsFile(parameters, self.INPUT, context)
-        classes = parse_classes(self.parameterAsString(parameters, self.CLASSES, context))
+        classes = self.classes(parameters, self.CLASSES, context)
         info = las_info(path)
         crs, crs_source = self.resolve_crs(parameters, context, info.crs)
         box = self.extent_box(parameters, context, crs)
@@ -168,15 +208,17 @@ class _GridAlgorithm(GeomaticsAlgorithm):
         feedback.pushInfo(self.tr("Reading points of class(es) {} from {}").format(
             ", ".join(map(str, classes)) or "all", path))
         pts = read_class_points(path, classes, extent=box, progress=None, cancel=cb["cancel"])
+        check_projected(pts.x, pts.y, pts.z, crs=crs)
         feedback.pushInfo(self.tr("{} of {} points selected").format(len(pts), pts.n_total))
         grid = grid_from_points(pts.x, pts.y, cell, extent=box, crs=crs)
         return path, pts, grid, crs_source
 
-    def output_path(self, parameters, name, context, *inputs):
-        out = self.parameterAsOutputLayer(parameters, name, context)
-        _check_tif(out)
-        if out:
-            check_not_input(out, *inputs)
+    def contract(self, parameters, context, rasters, inputs):
+        """The output contract of the rasters + the report; rasters must be GeoTIFF."""
+        out = self.output_contract(parameters, context, [*rasters, self.OUTPUT_HTML],
+                                   inputs=inputs)
+        for name in rasters:
+            _check_tif(out.final(name))
         return out
 
     @staticmethod
@@ -259,41 +301,42 @@ class IdwDtmAlgorithm(_GridAlgorithm):
     def process(self, parameters, context, feedback):
         t0 = time.time()
         path = self.parameterAsFile(parameters, self.INPUT, context)
-        out = self.output_path(parameters, self.OUTPUT, context, path)
-        html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
         power = self.parameterAsDouble(parameters, self.POWER, context)
         k = self.parameterAsInt(parameters, self.NEIGHBOURS, context)
         radius = self.parameterAsDouble(parameters, self.RADIUS, context)
         minp = self.parameterAsInt(parameters, self.MIN_POINTS, context)
         fill, maxd = self.gap_options(parameters, context)
-        path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
-        cb = self.core_callbacks(feedback)
-        dtm = core_idw.idw_grid(pts.x, pts.y, pts.z, grid, power=power, max_points=k,
-                                radius=radius if radius > 0 else None, min_points=minp,
-                                max_distance=maxd, fill=fill, **cb)
-        meta = {"method": f"IDW p={power:g} k={k} radius={radius:g} min_points={minp}",
-                "source": os.path.basename(path)}
-        write_grid(out, dtm, grid, metadata=meta, band_name="DTM (IDW)")
-        stats = self.grid_stats(dtm)
-        results = {self.OUTPUT: out, "N_POINTS": len(pts),
-                   "VALID_CELLS": stats["valid_cells"], "NODATA_CELLS": stats["nodata_cells"]}
-        if html:
-            params = {"power": power, "neighbours": k,
-                      "radius (m)": radius if radius > 0 else "unlimited",
-                      "min points": minp,
-                      "gaps": "filled" if fill else (f"{maxd:g} m" if maxd else "auto")}
-            body = html_params(params)
-            body += "<h2>Input and grid</h2>" + html_table(
-                ("item", "value"), self.input_rows(path, pts, crs_source, grid))
-            body += "<h2>Result</h2>" + html_table(("item", "value"), [
-                ("cells with a value", stats["valid_cells"]),
-                ("nodata cells", stats["nodata_cells"]),
-                ("min height (m)", stats["min"]), ("max height (m)", stats["max"]),
-                ("run time (s)", time.time() - t0)])
-            body += ("<p class='note'>Method: Shepard (1968) inverse distance weighting, "
-                     "semantics of gdal_grid -a invdistnn.</p>")
-            results[self.OUTPUT_HTML] = self.write_text(
-                html, html_page(self.tr("IDW DTM report"), body))
+        with self.contract(parameters, context, [self.OUTPUT], {self.INPUT: path}) as out:
+            path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
+            cb = self.core_callbacks(feedback)
+            dtm = core_idw.idw_grid(pts.x, pts.y, pts.z, grid, power=power, max_points=k,
+                                    radius=radius if radius > 0 else None, min_points=minp,
+                                    max_distance=maxd, fill=fill, **cb)
+            meta = {"method": f"IDW p={power:g} k={k} radius={radius:g} min_points={minp}",
+                    "source": os.path.basename(path)}
+            write_grid(out.path(self.OUTPUT), dtm, grid, metadata=meta, band_name="DTM (IDW)")
+            stats = self.grid_stats(dtm)
+            results = {self.OUTPUT: out.final(self.OUTPUT), "N_POINTS": len(pts),
+                       "VALID_CELLS": stats["valid_cells"],
+                       "NODATA_CELLS": stats["nodata_cells"]}
+            if out.requested(self.OUTPUT_HTML):
+                params = {"power": power, "neighbours": k,
+                          "radius (m)": radius if radius > 0 else "unlimited",
+                          "min points": minp,
+                          "gaps": "filled" if fill else (f"{maxd:g} m" if maxd else "auto")}
+                body = html_params(params)
+                body += "<h2>Input and grid</h2>" + html_table(
+                    ("item", "value"), self.input_rows(path, pts, crs_source, grid))
+                body += "<h2>Result</h2>" + html_table(("item", "value"), [
+                    ("cells with a value", stats["valid_cells"]),
+                    ("nodata cells", stats["nodata_cells"]),
+                    ("min height (m)", stats["min"]), ("max height (m)", stats["max"]),
+                    ("run time (s)", time.time() - t0)])
+                body += ("<p class='note'>Method: Shepard (1968) inverse distance weighting, "
+                         "semantics of gdal_grid -a invdistnn.</p>")
+                out.write_text(self.OUTPUT_HTML,
+                               html_page(self.tr("IDW DTM report"), body))
+                results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         return results
 
 
@@ -420,9 +463,6 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
     def process(self, parameters, context, feedback):
         t0 = time.time()
         path = self.parameterAsFile(parameters, self.INPUT, context)
-        out = self.output_path(parameters, self.OUTPUT, context, path)
-        var_out = self.output_path(parameters, self.OUTPUT_VARIANCE, context, path)
-        html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
         drift = "linear" if self.parameterAsEnum(parameters, self.KRIGING_TYPE, context) \
             else "none"
         model = core_kriging.MODELS[self.parameterAsEnum(parameters, self.VARIOGRAM, context)]
@@ -436,40 +476,45 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
         seed = self.parameterAsInt(parameters, self.SEED, context)
         as_std = self.parameterAsBool(parameters, self.VARIANCE_AS_STD, context)
         fill, maxd = self.gap_options(parameters, context)
-        path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
-        cb = self.core_callbacks(feedback)
-        res = core_kriging.kriging_grid(
-            pts.x, pts.y, pts.z, grid, model=model, variogram=vario, drift=drift,
-            n_closest=k, fit_points=fit_points, nlags=nlags,
-            max_lag=max_lag if max_lag > 0 else "auto", max_distance=maxd, fill=fill,
-            cv_points=cv_points, seed=seed, **cb)
-        v = res.variogram
-        vd = v.as_dict()
-        feedback.pushInfo(self.tr("Variogram: {}").format(
-            ", ".join(f"{a} {b}" for a, b in core_kriging.describe_variogram(v))))
-        kind = "ordinary" if drift == "none" else "universal (linear drift)"
-        meta = {"method": f"{kind} kriging, {model} variogram, {k} neighbours",
-                "variogram": "; ".join(f"{a}={b}" for a, b in
-                                       core_kriging.describe_variogram(v)),
-                "source": os.path.basename(path)}
-        write_grid(out, res.z, grid, metadata=meta, band_name="DTM (kriging)")
-        results = {self.OUTPUT: out}
-        if var_out:
-            data = res.std if as_std else res.variance
-            write_grid(var_out, data, grid, metadata=meta,
-                       band_name="kriging standard deviation (m)" if as_std
-                       else "kriging variance (m²)")
-            results[self.OUTPUT_VARIANCE] = var_out
-        stats = self.grid_stats(res.z)
-        cv = res.cross_validation or {}
-        nan = float("nan")
-        results.update(NUGGET=vd.get("nugget", nan), SILL=vd.get("sill", nan),
-                       RANGE=vd.get("range", nan), N_POINTS=res.n_points,
-                       VALID_CELLS=stats["valid_cells"], CV_ME=cv.get("me", nan),
-                       CV_RMSE=cv.get("rmse", nan), CV_MSE=cv.get("mse_std", nan))
-        if html:
-            results[self.OUTPUT_HTML] = self.write_text(html, self.report(
-                res, kind, path, pts, crs_source, grid, stats, time.time() - t0, fill, maxd))
+        with self.contract(parameters, context, [self.OUTPUT, self.OUTPUT_VARIANCE],
+                           {self.INPUT: path}) as out:
+            path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
+            cb = self.core_callbacks(feedback)
+            res = core_kriging.kriging_grid(
+                pts.x, pts.y, pts.z, grid, model=model, variogram=vario, drift=drift,
+                n_closest=k, fit_points=fit_points, nlags=nlags,
+                max_lag=max_lag if max_lag > 0 else "auto", max_distance=maxd, fill=fill,
+                cv_points=cv_points, seed=seed, **cb)
+            v = res.variogram
+            vd = v.as_dict()
+            feedback.pushInfo(self.tr("Variogram: {}").format(
+                ", ".join(f"{a} {b}" for a, b in core_kriging.describe_variogram(v))))
+            kind = "ordinary" if drift == "none" else "universal (linear drift)"
+            meta = {"method": f"{kind} kriging, {model} variogram, {k} neighbours",
+                    "variogram": "; ".join(f"{a}={b}" for a, b in
+                                           core_kriging.describe_variogram(v)),
+                    "source": os.path.basename(path)}
+            write_grid(out.path(self.OUTPUT), res.z, grid, metadata=meta,
+                       band_name="DTM (kriging)")
+            results = {self.OUTPUT: out.final(self.OUTPUT)}
+            if out.requested(self.OUTPUT_VARIANCE):
+                data = res.std if as_std else res.variance
+                write_grid(out.path(self.OUTPUT_VARIANCE), data, grid, metadata=meta,
+                           band_name="kriging standard deviation (m)" if as_std
+                           else "kriging variance (m²)")
+                results[self.OUTPUT_VARIANCE] = out.final(self.OUTPUT_VARIANCE)
+            stats = self.grid_stats(res.z)
+            cv = res.cross_validation or {}
+            nan = float("nan")
+            results.update(NUGGET=vd.get("nugget", nan), SILL=vd.get("sill", nan),
+                           RANGE=vd.get("range", nan), N_POINTS=res.n_points,
+                           VALID_CELLS=stats["valid_cells"], CV_ME=cv.get("me", nan),
+                           CV_RMSE=cv.get("rmse", nan), CV_MSE=cv.get("mse_std", nan))
+            if out.requested(self.OUTPUT_HTML):
+                out.write_text(self.OUTPUT_HTML, self.report(
+                    res, kind, path, pts, crs_source, grid, stats, time.time() - t0, fill,
+                    maxd))
+                results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         return results
 
     def report(self, res, kind, path, pts, crs_source, grid, stats, elapsed, fill, maxd):
@@ -567,10 +612,9 @@ class DsmAlgorithm(_GridAlgorithm):
             "<li><b>Report</b> (OUTPUT_HTML, optional).</li></ul>")
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.add_input_params(classes_default="")
-        self.add(QgsProcessingParameterString(
-            self.EXCLUDE_CLASSES, self.tr("Excluded classes"), defaultValue="7,18",
-            optional=True))
+        self.add_input_params(classes_default=())
+        self.add(self.classes_param(self.EXCLUDE_CLASSES, self.tr("Excluded classes"),
+                                    (7, 18)))
         self.add(QgsProcessingParameterBoolean(
             self.FIRST_RETURNS, self.tr("First returns only"), False))
         self.add_number(self.FILL_DISTANCE, self.tr("Fill empty cells up to (m)"), 0.0,
@@ -588,20 +632,8 @@ class DsmAlgorithm(_GridAlgorithm):
                             ("NDSM_MAX", "Maximum nDSM height")):
             self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
 
-    def process(self, parameters, context, feedback):
-        t0 = time.time()
-        path = self.parameterAsFile(parameters, self.INPUT, context)
-        out = self.output_path(parameters, self.OUTPUT, context, path)
-        ndsm_out = self.output_path(parameters, self.OUTPUT_NDSM, context, path)
-        html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
-        classes = parse_classes(self.parameterAsString(parameters, self.CLASSES, context))
-        excl = parse_classes(self.parameterAsString(parameters, self.EXCLUDE_CLASSES, context))
-        first = self.parameterAsBool(parameters, self.FIRST_RETURNS, context)
-        fill_d = self.parameterAsDouble(parameters, self.FILL_DISTANCE, context)
-        clamp = self.parameterAsBool(parameters, self.CLAMP_NEGATIVE, context)
-        dtm_layer = self.parameterAsRasterLayer(parameters, self.DTM, context)
-        info = las_info(path)
-        dtm = None
+    def target_grid(self, parameters, context, info, dtm_layer, want_ndsm):
+        """(grid, DTM array or None, grid source): the DTM's grid, else from the cloud."""
         if dtm_layer is not None:
             r = read_raster(dtm_layer.source())
             crs = _crs_string(dtm_layer.crs()) or r.crs
@@ -613,67 +645,91 @@ class DsmAlgorithm(_GridAlgorithm):
                     "the point cloud's CRS. No output was written.").format(
                         _qgs_crs(las_crs).authid() or "custom",
                         _qgs_crs(crs).authid() or "custom"))
-            grid = grid_like(r.geotransform, r.shape, crs=crs)
-            dtm = r.masked()
-            crs_source = "DTM grid"
-        else:
-            if ndsm_out:
-                raise QgsProcessingException(self.tr(
-                    "The nDSM needs a DTM: give the DTM parameter (e.g. the output of the "
-                    "IDW DTM algorithm). No output was written."))
-            crs, crs_source = self.resolve_crs(parameters, context, info.crs)
-            cell = self.cell_size(parameters, context)
-            box = self.extent_box(parameters, context, crs)
-            if box is None:
-                box = (info.mins[0], info.maxs[0], info.mins[1], info.maxs[1])
-            grid = grid_from_extent(box, cell, crs=crs)
-        dims = ["classification"] + (["return_number"] if first else [])
-        cb = self.core_callbacks(feedback)
+            check_projected([info.mins[0], info.maxs[0]], [info.mins[1], info.maxs[1]],
+                            crs=las_crs or crs)
+            return grid_like(r.geotransform, r.shape, crs=crs), r.masked(), "DTM grid"
+        if want_ndsm:
+            raise QgsProcessingException(self.tr(
+                "The nDSM needs a DTM: give the DTM parameter (e.g. the output of the "
+                "IDW DTM algorithm). No output was written."))
+        crs, crs_source = self.resolve_crs(parameters, context, info.crs)
+        check_projected([info.mins[0], info.maxs[0]], [info.mins[1], info.maxs[1]], crs=crs)
+        cell = self.cell_size(parameters, context)
+        box = self.extent_box(parameters, context, crs)
+        if box is None:
+            box = (info.mins[0], info.maxs[0], info.mins[1], info.maxs[1])
+        return grid_from_extent(box, cell, crs=crs), None, crs_source
 
-        def chunks():
-            for start, chunk in iter_las_chunks(path, dims):
-                if classes:
-                    keep = np.isin(chunk["classification"], classes)
-                    chunk.x, chunk.y, chunk.z = chunk.x[keep], chunk.y[keep], chunk.z[keep]
-                    chunk.dims = {n: a[keep] for n, a in chunk.dims.items()}
-                yield start, chunk
+    def process(self, parameters, context, feedback):
+        t0 = time.time()
+        path = self.parameterAsFile(parameters, self.INPUT, context)
+        classes = self.classes(parameters, self.CLASSES, context)
+        excl = self.classes(parameters, self.EXCLUDE_CLASSES, context)
+        first = self.parameterAsBool(parameters, self.FIRST_RETURNS, context)
+        fill_d = self.parameterAsDouble(parameters, self.FILL_DISTANCE, context)
+        clamp = self.parameterAsBool(parameters, self.CLAMP_NEGATIVE, context)
+        dtm_layer = self.parameterAsRasterLayer(parameters, self.DTM, context)
+        inputs = {self.INPUT: path, self.DTM: dtm_layer.source() if dtm_layer else None}
+        with self.contract(parameters, context, [self.OUTPUT, self.OUTPUT_NDSM],
+                           inputs) as out:
+            info = las_info(path)
+            grid, dtm, crs_source = self.target_grid(parameters, context, info, dtm_layer,
+                                                     out.requested(self.OUTPUT_NDSM))
+            dims = ["classification"] + (["return_number"] if first else [])
+            cb = self.core_callbacks(feedback)
 
-        surf = core_dsm.dsm_from_chunks(chunks(), grid, n_total=info.count, first_only=first,
-                                        exclude_classes=excl, fill_distance=fill_d, **cb)
-        meta = {"method": f"highest {'first ' if first else ''}return per cell",
-                "source": os.path.basename(path)}
-        write_grid(out, surf, grid, metadata=meta, band_name="DSM")
-        stats = self.grid_stats(surf)
-        results = {self.OUTPUT: out, "VALID_CELLS": stats["valid_cells"],
-                   "NDSM_MAX": float("nan")}
-        nd_stats = None
-        if dtm is not None and ndsm_out:
-            nd = core_dsm.ndsm(surf, dtm, clamp_negative=clamp)
-            write_grid(ndsm_out, nd, grid, metadata=meta, band_name="nDSM")
-            nd_stats = self.grid_stats(nd)
-            results[self.OUTPUT_NDSM] = ndsm_out
-            results["NDSM_MAX"] = nd_stats["max"]
-        if html:
-            rows = [("input", os.path.basename(path)), ("points in file", f"{info.count:,}"),
-                    ("grid", f"{grid.ncols} × {grid.nrows} cells of {grid.cell:g} m"),
-                    ("grid source", crs_source),
-                    ("first returns only", "yes" if first else "no"),
-                    ("classes used", ", ".join(map(str, classes)) or "all"),
-                    ("excluded classes", ", ".join(map(str, excl)) or "none"),
-                    ("DSM cells with a value", stats["valid_cells"]),
-                    ("DSM empty cells", stats["nodata_cells"]),
-                    ("DSM min / max (m)", f"{stats['min']:.2f} / {stats['max']:.2f}")]
-            body = html_table(("item", "value"), rows)
-            if nd_stats is not None:
-                nd_valid = nd[np.isfinite(nd)]
-                body += "<h2>nDSM</h2>" + html_table(("item", "value"), [
-                    ("cells with a value", nd_stats["valid_cells"]),
-                    ("max height (m)", nd_stats["max"]),
-                    ("cells ≥ 2 m", int((nd_valid >= 2).sum())),
-                    ("negative heights clamped", "yes" if clamp else "no")])
-                body += svg_histogram(nd_valid, xlabel="nDSM height (m)",
-                                      title="nDSM heights")
-            body += f"<p class='note'>Run time {time.time() - t0:.1f} s.</p>"
-            results[self.OUTPUT_HTML] = self.write_text(
-                html, html_page(self.tr("DSM / nDSM report"), body))
+            def chunks():
+                for start, chunk in iter_las_chunks(path, dims):
+                    if classes:
+                        keep = np.isin(chunk["classification"], classes)
+                        chunk.x, chunk.y, chunk.z = (chunk.x[keep], chunk.y[keep],
+                                                     chunk.z[keep])
+                        chunk.dims = {n: a[keep] for n, a in chunk.dims.items()}
+                    yield start, chunk
+
+            surf = core_dsm.dsm_from_chunks(chunks(), grid, n_total=info.count,
+                                            first_only=first, exclude_classes=excl,
+                                            fill_distance=fill_d, **cb)
+            meta = {"method": f"highest {'first ' if first else ''}return per cell",
+                    "source": os.path.basename(path)}
+            write_grid(out.path(self.OUTPUT), surf, grid, metadata=meta, band_name="DSM")
+            stats = self.grid_stats(surf)
+            results = {self.OUTPUT: out.final(self.OUTPUT), "VALID_CELLS": stats["valid_cells"],
+                       "NDSM_MAX": float("nan")}
+            nd = None
+            if dtm is not None and out.requested(self.OUTPUT_NDSM):
+                nd = core_dsm.ndsm(surf, dtm, clamp_negative=clamp)
+                write_grid(out.path(self.OUTPUT_NDSM), nd, grid, metadata=meta,
+                           band_name="nDSM")
+                results[self.OUTPUT_NDSM] = out.final(self.OUTPUT_NDSM)
+                results["NDSM_MAX"] = self.grid_stats(nd)["max"]
+            if out.requested(self.OUTPUT_HTML):
+                out.write_text(self.OUTPUT_HTML, self.report(
+                    path, info, grid, crs_source, first, classes, excl, stats, nd, clamp,
+                    time.time() - t0))
+                results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         return results
+
+    def report(self, path, info, grid, crs_source, first, classes, excl, stats, nd, clamp,
+               elapsed):
+        rows = [("input", os.path.basename(path)), ("points in file", f"{info.count:,}"),
+                ("grid", f"{grid.ncols} × {grid.nrows} cells of {grid.cell:g} m"),
+                ("grid source", crs_source),
+                ("first returns only", "yes" if first else "no"),
+                ("classes used", ", ".join(map(str, classes)) or "all"),
+                ("excluded classes", ", ".join(map(str, excl)) or "none"),
+                ("DSM cells with a value", stats["valid_cells"]),
+                ("DSM empty cells", stats["nodata_cells"]),
+                ("DSM min / max (m)", f"{stats['min']:.2f} / {stats['max']:.2f}")]
+        body = html_table(("item", "value"), rows)
+        if nd is not None:
+            nd_stats = self.grid_stats(nd)
+            nd_valid = nd[np.isfinite(nd)]
+            body += "<h2>nDSM</h2>" + html_table(("item", "value"), [
+                ("cells with a value", nd_stats["valid_cells"]),
+                ("max height (m)", nd_stats["max"]),
+                ("cells ≥ 2 m", int((nd_valid >= 2).sum())),
+                ("negative heights clamped", "yes" if clamp else "no")])
+            body += svg_histogram(nd_valid, xlabel="nDSM height (m)", title="nDSM heights")
+        body += f"<p class='note'>Run time {elapsed:.1f} s.</p>"
+        return html_page(self.tr("DSM / nDSM report"), body)

@@ -611,6 +611,98 @@
             <source>Terminated; no output was written.</source>
             <translation>أُنهي التشغيل؛ لم يُكتب أي ناتج.</translation>
         </message>
+        <message>
+            <source>Created, never classified</source>
+            <translation>مُنشأة، لم تُصنَّف قط</translation>
+        </message>
+        <message>
+            <source>Unclassified</source>
+            <translation>غير مصنّفة</translation>
+        </message>
+        <message>
+            <source>Ground</source>
+            <translation>أرض</translation>
+        </message>
+        <message>
+            <source>Low vegetation</source>
+            <translation>نباتات منخفضة</translation>
+        </message>
+        <message>
+            <source>Medium vegetation</source>
+            <translation>نباتات متوسطة</translation>
+        </message>
+        <message>
+            <source>High vegetation</source>
+            <translation>نباتات عالية</translation>
+        </message>
+        <message>
+            <source>Building</source>
+            <translation>مبنى</translation>
+        </message>
+        <message>
+            <source>Low point (noise)</source>
+            <translation>نقطة منخفضة (ضجيج)</translation>
+        </message>
+        <message>
+            <source>Reserved (model key-point)</source>
+            <translation>محجوزة (نقطة مفتاحية للنموذج)</translation>
+        </message>
+        <message>
+            <source>Water</source>
+            <translation>ماء</translation>
+        </message>
+        <message>
+            <source>Rail</source>
+            <translation>سكة حديد</translation>
+        </message>
+        <message>
+            <source>Road surface</source>
+            <translation>سطح طريق</translation>
+        </message>
+        <message>
+            <source>Reserved (overlap)</source>
+            <translation>محجوزة (تداخل)</translation>
+        </message>
+        <message>
+            <source>Wire – guard (shield)</source>
+            <translation>سلك – حماية (واقٍ)</translation>
+        </message>
+        <message>
+            <source>Wire – conductor (phase)</source>
+            <translation>سلك – موصل (طور)</translation>
+        </message>
+        <message>
+            <source>Transmission tower</source>
+            <translation>برج نقل كهرباء</translation>
+        </message>
+        <message>
+            <source>Wire-structure connector (insulator)</source>
+            <translation>وصلة سلك بهيكل (عازل)</translation>
+        </message>
+        <message>
+            <source>Bridge deck</source>
+            <translation>سطح جسر</translation>
+        </message>
+        <message>
+            <source>High noise</source>
+            <translation>ضجيج مرتفع</translation>
+        </message>
+        <message>
+            <source>Overhead structure</source>
+            <translation>منشأة علوية</translation>
+        </message>
+        <message>
+            <source>Ignored ground</source>
+            <translation>أرض مُتجاهَلة</translation>
+        </message>
+        <message>
+            <source>Snow</source>
+            <translation>ثلج</translation>
+        </message>
+        <message>
+            <source>Temporal exclusion</source>
+            <translation>استبعاد زمني</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>
@@ -1616,10 +1708,6 @@
             <translation>سحابة النقاط (LAS/LAZ)</translation>
         </message>
         <message>
-            <source>Classes used (comma-separated; empty = all)</source>
-            <translation>الأصناف المستخدمة (مفصولة بفواصل؛ فارغ = الكل)</translation>
-        </message>
-        <message>
             <source>Cell size (m)</source>
             <translation>حجم الخلية (م)</translation>
         </message>
@@ -1662,6 +1750,10 @@
         <message>
             <source>{} of {} points selected</source>
             <translation>اختيرت {} نقطة من أصل {}</translation>
+        </message>
+        <message>
+            <source>Classes used (none = all)</source>
+            <translation>الفئات المستخدمة (بلا اختيار = الكل)</translation>
         </message>
     </context>
     <context>

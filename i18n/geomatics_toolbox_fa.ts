@@ -611,6 +611,98 @@
             <source>Terminated; no output was written.</source>
             <translation>اجرا متوقف شد؛ هیچ خروجی‌ای نوشته نشد.</translation>
         </message>
+        <message>
+            <source>Created, never classified</source>
+            <translation>ایجادشده، هرگز کلاس‌بندی‌نشده</translation>
+        </message>
+        <message>
+            <source>Unclassified</source>
+            <translation>کلاس‌بندی‌نشده</translation>
+        </message>
+        <message>
+            <source>Ground</source>
+            <translation>زمین</translation>
+        </message>
+        <message>
+            <source>Low vegetation</source>
+            <translation>پوشش گیاهی کوتاه</translation>
+        </message>
+        <message>
+            <source>Medium vegetation</source>
+            <translation>پوشش گیاهی متوسط</translation>
+        </message>
+        <message>
+            <source>High vegetation</source>
+            <translation>پوشش گیاهی بلند</translation>
+        </message>
+        <message>
+            <source>Building</source>
+            <translation>ساختمان</translation>
+        </message>
+        <message>
+            <source>Low point (noise)</source>
+            <translation>نقطهٔ پایین (نویز)</translation>
+        </message>
+        <message>
+            <source>Reserved (model key-point)</source>
+            <translation>رزروشده (نقطهٔ کلیدی مدل)</translation>
+        </message>
+        <message>
+            <source>Water</source>
+            <translation>آب</translation>
+        </message>
+        <message>
+            <source>Rail</source>
+            <translation>ریل</translation>
+        </message>
+        <message>
+            <source>Road surface</source>
+            <translation>سطح جاده</translation>
+        </message>
+        <message>
+            <source>Reserved (overlap)</source>
+            <translation>رزروشده (هم‌پوشانی)</translation>
+        </message>
+        <message>
+            <source>Wire – guard (shield)</source>
+            <translation>سیم – محافظ (شیلد)</translation>
+        </message>
+        <message>
+            <source>Wire – conductor (phase)</source>
+            <translation>سیم – رسانا (فاز)</translation>
+        </message>
+        <message>
+            <source>Transmission tower</source>
+            <translation>دکل انتقال نیرو</translation>
+        </message>
+        <message>
+            <source>Wire-structure connector (insulator)</source>
+            <translation>اتصال سیم به سازه (مقره)</translation>
+        </message>
+        <message>
+            <source>Bridge deck</source>
+            <translation>عرشهٔ پل</translation>
+        </message>
+        <message>
+            <source>High noise</source>
+            <translation>نویز بالا</translation>
+        </message>
+        <message>
+            <source>Overhead structure</source>
+            <translation>سازهٔ هوایی</translation>
+        </message>
+        <message>
+            <source>Ignored ground</source>
+            <translation>زمین نادیده‌گرفته</translation>
+        </message>
+        <message>
+            <source>Snow</source>
+            <translation>برف</translation>
+        </message>
+        <message>
+            <source>Temporal exclusion</source>
+            <translation>حذف زمانی</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>
@@ -1616,10 +1708,6 @@
             <translation>ابر نقاط (LAS/LAZ)</translation>
         </message>
         <message>
-            <source>Classes used (comma-separated; empty = all)</source>
-            <translation>کلاس‌های به‌کاررفته (جداشده با ویرگول؛ خالی = همه)</translation>
-        </message>
-        <message>
             <source>Cell size (m)</source>
             <translation>اندازهٔ سلول (متر)</translation>
         </message>
@@ -1662,6 +1750,10 @@
         <message>
             <source>{} of {} points selected</source>
             <translation>{} نقطه از {} نقطه انتخاب شد</translation>
+        </message>
+        <message>
+            <source>Classes used (none = all)</source>
+            <translation>کلاس‌های به‌کاررفته (بدون انتخاب = همه)</translation>
         </message>
     </context>
     <context>

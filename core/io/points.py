@@ -6,38 +6,75 @@ from __future__ import annotations
 
 import csv
 import io
+import math
 import os
 from dataclasses import dataclass
 from typing import List, Optional, Sequence, Tuple
 
 import numpy as np
 
+from ..errors import InputError
 from ..progress import Monitor
 from .las import LasInfo, iter_las_chunks, las_info
 from .raster import write_geotiff
 
 
-def parse_classes(text) -> Tuple[int, ...]:
-    """Parse a class filter such as ``'2'``, ``'2,8'`` or ``'2 9'``; ``''`` = all classes."""
+def parse_classes(text, *, name: str = "class filter",
+                  allow_empty: bool = True) -> Tuple[int, ...]:
+    """Parse a list of LAS classes: the one parser of the project.
+
+    Accepts text such as ``'2'``, ``'2,8'``, ``'2; 8 11'`` or a sequence of numbers
+    (e.g. the indices of a multi-select enum, where index = ASPRS class code).
+
+    Parameters
+    ----------
+    text : str, sequence of int or None
+        The classes.
+    name : str
+        What the classes are, for the message (e.g. ``'ground classes'``).
+    allow_empty : bool
+        When True (default) an empty value returns ``()`` (= every class); when
+        False it is an error.
+
+    Returns
+    -------
+    tuple of int
+        Sorted, unique class codes 0–255.
+
+    Raises
+    ------
+    InputError
+        A non-integer item (``'2.7'`` or ``'ground'`` — never silently truncated), a
+        code outside 0–255, or an empty value with ``allow_empty=False``.
+
+    Examples
+    --------
+    >>> parse_classes("2, 8 11")
+    (2, 8, 11)
+    """
     if text is None:
-        return ()
-    if isinstance(text, (list, tuple)):
-        items = [str(t) for t in text]
+        items = []
+    elif isinstance(text, (list, tuple, set, np.ndarray)):
+        items = [str(t) for t in np.asarray(list(text), dtype=object).ravel()]
     else:
         items = str(text).replace(";", ",").replace(" ", ",").split(",")
     out = []
-    for item in items:
-        item = item.strip()
+    for item in (i.strip() for i in items):
         if not item:
             continue
         try:
-            c = int(item)
+            value = float(item)
         except ValueError:
-            raise ValueError(f"Class filter must list integer LAS classes such as '2' or "
-                             f"'2,8'; {item!r} is not an integer.") from None
+            value = math.nan
+        if not (math.isfinite(value) and value.is_integer()):
+            raise InputError(f"The {name} must list integer LAS classes such as '2' or "
+                             f"'2, 8'; {item!r} is not an integer class.")
+        c = int(value)
         if not 0 <= c <= 255:
-            raise ValueError(f"LAS class {c} is out of range 0–255.")
+            raise InputError(f"The {name} lists class {c}, outside the LAS range 0–255.")
         out.append(c)
+    if not out and not allow_empty:
+        raise InputError(f"The {name} must list at least one LAS class, e.g. '2'.")
     return tuple(sorted(set(out)))
 
 
@@ -202,3 +239,100 @@ def write_grid(path, data: np.ndarray, grid, *, metadata=None,
     return write_geotiff(path, data, geotransform=grid.geotransform, crs=grid.crs,
                          nodata=grid.nodata, metadata=metadata,
                          band_names=[band_name] if band_name else None)
+
+
+#: Vector formats the point writer supports (extension -> OGR driver).
+VECTOR_DRIVERS = {".gpkg": "GPKG", ".geojson": "GeoJSON", ".json": "GeoJSON"}
+
+
+def write_points_layer(path, x, y, z, columns, *, crs: Optional[str] = None,
+                       layer_name: str = "points") -> str:
+    """Write 3-D points with attributes as a GeoPackage or GeoJSON file (OGR).
+
+    Parameters
+    ----------
+    path : path-like
+        Output file (``.gpkg`` or ``.geojson``); an output-contract temporary is
+        written directly.
+    x, y, z : array_like
+        Point coordinates (non-finite z is written as 0 in the geometry).
+    columns : dict
+        Field name -> sequence of values: floats (NaN -> NULL), ints or strings; the
+        type of the first non-null value sets the field type.
+    crs : str, optional
+        'EPSG:n' or WKT of the coordinates.
+    layer_name : str
+        Layer name inside the file.
+
+    Returns
+    -------
+    str
+        ``path``.
+
+    Raises
+    ------
+    InputError
+        An extension other than ``.gpkg``/``.geojson``.
+    """
+    from osgeo import ogr, osr
+
+    path = os.fspath(path)
+    ext = os.path.splitext(path)[1].lower()
+    if ext not in VECTOR_DRIVERS:
+        raise InputError(f"Output {path}: the residual layer is written as a GeoPackage "
+                         "(.gpkg) or GeoJSON (.geojson); choose one of these extensions.")
+    srs = None
+    if crs:
+        srs = osr.SpatialReference()
+        srs.SetAxisMappingStrategy(osr.OAMS_TRADITIONAL_GIS_ORDER)
+        if srs.SetFromUserInput(str(crs)) != 0:
+            srs = None
+    ds = ogr.GetDriverByName(VECTOR_DRIVERS[ext]).CreateDataSource(path)
+    if ds is None:
+        raise OSError(f"Cannot create {path}; check the folder and the file name.")
+    try:
+        _fill_points_layer(ds.CreateLayer(layer_name, srs, ogr.wkbPoint25D), x, y, z,
+                           columns)
+    finally:
+        ds = None
+    return path
+
+
+def _field_kind(values) -> str:
+    for v in values:
+        if v is None or (isinstance(v, float) and math.isnan(v)):
+            continue
+        if isinstance(v, (bool, np.bool_)):
+            return "int"
+        if isinstance(v, (int, np.integer)):
+            return "int"
+        if isinstance(v, (float, np.floating)):
+            return "float"
+        return "str"
+    return "float"
+
+
+def _fill_points_layer(layer, x, y, z, columns) -> None:
+    """Create the fields and add one feature per point (in one transaction)."""
+    from osgeo import ogr
+
+    types = {"int": ogr.OFTInteger64, "float": ogr.OFTReal, "str": ogr.OFTString}
+    kinds = {name: _field_kind(vals) for name, vals in columns.items()}
+    for name, kind in kinds.items():
+        layer.CreateField(ogr.FieldDefn(name, types[kind]))
+    defn = layer.GetLayerDefn()
+    x, y, z = (np.asarray(v, dtype=np.float64).ravel() for v in (x, y, z))
+    layer.StartTransaction()
+    for i in range(x.size):  # one OGR call per feature: OGR has no array API here
+        feat = ogr.Feature(defn)
+        for name, kind in kinds.items():
+            v = columns[name][i]
+            if v is None or (kind == "float" and not np.isfinite(float(v))):
+                feat.SetFieldNull(name)
+            else:
+                feat.SetField(name, {"int": int, "float": float, "str": str}[kind](v))
+        geom = ogr.Geometry(ogr.wkbPoint25D)
+        geom.AddPoint(float(x[i]), float(y[i]), float(z[i]) if np.isfinite(z[i]) else 0.0)
+        feat.SetGeometry(geom)
+        layer.CreateFeature(feat)
+    layer.CommitTransaction()

@@ -21,6 +21,8 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from ..io.points import parse_classes as _parse_classes
+
 GROUND = 2
 
 
@@ -150,25 +152,12 @@ def error_codes(predicted_ground, reference_ground) -> np.ndarray:
 
 # ----------------------------------------------------------------------------- files
 def parse_classes(text, *, name: str = "ground classes") -> tuple:
-    """Parse a class list such as ``"2"``, ``"2, 8"`` or ``"2 11"`` into a tuple of ints.
+    """Parse a non-empty class list (the project's one parser, :func:`..io.points.parse_classes`).
 
     >>> parse_classes("2, 8 11")
     (2, 8, 11)
     """
-    if isinstance(text, (list, tuple, np.ndarray)):
-        items = [str(v) for v in text]
-    else:
-        items = str(text if text is not None else "").replace(";", ",").replace(" ", ",")
-        items = [t for t in items.split(",") if t.strip()]
-    try:
-        out = tuple(int(float(t)) for t in items)
-    except ValueError:
-        raise ValueError(f"The {name} '{text}' must be class numbers separated by commas, "
-                         "e.g. '2' or '2, 8'.") from None
-    if not out or any(c < 0 or c > 255 for c in out):
-        raise ValueError(f"The {name} '{text}' must list at least one class number "
-                         "between 0 and 255, e.g. '2'.")
-    return out
+    return _parse_classes(text, name=name, allow_empty=False)
 
 
 @dataclass(frozen=True)

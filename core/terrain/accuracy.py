@@ -225,3 +225,68 @@ def dtm_accuracy(dtm: np.ndarray, geotransform: Sequence[float], x, y, z, *,
             "height). Check that the check points and the DTM are in the same CRS and "
             "overlap.")
     return res
+
+
+def check_duplicates(ids: Sequence, x, y, *, tolerance: float = 0.001,
+                     rows: Optional[Sequence] = None, limit: int = 5) -> None:
+    """Refuse duplicated check points: the same id twice, or two points at one position.
+
+    A check point counted twice (a copy-paste, or a re-observation with a 2 m blunder)
+    silently weights the RMSE; the user must decide which observation is right.
+
+    Parameters
+    ----------
+    ids : sequence
+        Check point ids (compared as text).
+    x, y : array_like
+        Horizontal coordinates.
+    tolerance : float
+        Points closer than this (m) are at the same position (default 1 mm).
+    rows : sequence, optional
+        Row label of each point for the message (default: 1-based point number).
+    limit : int
+        At most this many duplicate groups are named.
+
+    Raises
+    ------
+    InputError
+        Naming the rows (and ids) of the duplicated points.
+    """
+    from ..errors import InputError
+
+    x = np.asarray(x, dtype=np.float64).ravel()
+    y = np.asarray(y, dtype=np.float64).ravel()
+    rows = list(rows) if rows is not None else [str(i + 1) for i in range(x.size)]
+    ids = [str(i) for i in ids]
+    groups = []
+    for kind, (inverse, counts) in (("id", _groups(np.asarray(ids, dtype=str))),
+                                    ("position", _position_groups(x, y, tolerance))):
+        for g in np.flatnonzero(counts > 1):
+            members = np.flatnonzero(inverse.ravel() == g)
+            groups.append((kind, members))
+    if not groups:
+        return
+    parts = [f"same {kind}: " + ", ".join(f"row {rows[i]} (id {ids[i]})" for i in members)
+             for kind, members in groups[:limit]]
+    more = f" and {len(groups) - limit} more" if len(groups) > limit else ""
+    raise InputError(
+        "Duplicated check points (" + "; ".join(parts) + more + "). Each check point "
+        "must be counted once: remove or rename the duplicates (keep the observation you "
+        "trust) and run again.")
+
+
+def _groups(keys: np.ndarray):
+    """Return (inverse, counts) of equal keys (rows of a 2-D array, or items of a 1-D one)."""
+    _, inverse, counts = np.unique(keys, axis=0, return_inverse=True, return_counts=True)
+    return inverse.ravel(), counts
+
+
+def _position_groups(x: np.ndarray, y: np.ndarray, tolerance: float):
+    """Group the points snapped to the same ``tolerance`` cell (non-finite: alone)."""
+    finite = np.isfinite(x) & np.isfinite(y)
+    idx = np.arange(x.size, dtype=np.float64)
+    keys = np.column_stack([np.where(finite, np.round(x / tolerance), np.nan),
+                            np.where(finite, np.round(y / tolerance), idx),
+                            np.where(finite, 0.0, idx)])
+    keys[~finite, 0] = -1.0 - idx[~finite]
+    return _groups(keys)

@@ -66,7 +66,7 @@ from scipy.spatial import cKDTree
 
 from ..coords import as_xyz
 from ..progress import Monitor
-from .grid import GridSpec, check_memory, resolve_max_distance, row_blocks
+from .grid import GridSpec, check_memory, distance_mask, resolve_max_distance, row_blocks
 
 MODELS = ("linear", "power", "gaussian", "spherical", "exponential")
 DRIFTS = ("none", "linear")
@@ -669,6 +669,10 @@ def kriging_grid(x, y, z, grid: GridSpec, *, model: str = "spherical",
     check_memory(grid, arrays=2, limit=memory_limit)
     x, y, z = _check_xyz(x, y, z)
     mon.step(0.0)
+    if variogram is None and float(np.ptp(z)) == 0.0:
+        return _flat_result(x, y, z, grid, model=model, drift=drift, n_closest=n_closest,
+                            max_distance=max_distance, fill=fill, cv_points=cv_points,
+                            workers=workers, mon=mon)
     if variogram is None:
         variogram = fit_variogram(x, y, z, model=model, fit_points=fit_points, nlags=nlags,
                                   max_lag=max_lag, n_neighbours=n_closest, weight=weight,
@@ -696,6 +700,34 @@ def kriging_grid(x, y, z, grid: GridSpec, *, model: str = "spherical",
                          n_closest=kr.n_closest, n_points=kr.n_points,
                          n_merged=kr.n_merged, max_distance=max_distance,
                          cross_validation=cv)
+
+
+def _flat_result(x, y, z, grid: GridSpec, *, model, drift, n_closest, max_distance, fill,
+                 cv_points, workers, mon) -> KrigingResult:
+    """Kriging of flat ground (every height equal): that height, with zero variance.
+
+    Any variogram gives weights summing to one, so the estimate is the common height;
+    the fitted variogram is identically zero (no spatial variation), hence zero
+    kriging variance and zero cross-validation error.
+    """
+    xu, yu, zu, merged = merge_duplicates(x, y, z)
+    max_distance = resolve_max_distance(grid, xu.size, max_distance, fill=fill)
+    zg = np.full(grid.shape, float(z[0]))
+    if max_distance is not None:
+        tree = cKDTree(np.column_stack([xu, yu]))
+        zg[~distance_mask(tree, grid, max_distance, workers=workers)] = np.nan
+    vg = np.where(np.isfinite(zg), 0.0, np.nan)
+    params = {"linear": [0.0, 0.0], "power": [0.0, 1.0, 0.0]}.get(model, [0.0, 0.0, 0.0])
+    vario = Variogram(model=model, params=params, fitted=True, n_fit=int(xu.size))
+    cv = None
+    if int(cv_points) > 0:
+        n = int(min(int(cv_points), xu.size))
+        cv = {"n": n, "me": 0.0, "rmse": 0.0, "mae": 0.0, "mse_std": math.nan,
+              "rmsse": math.nan}
+    mon.step(1.0)
+    return KrigingResult(z=zg, variance=vg, variogram=vario, drift=drift,
+                         n_closest=int(min(n_closest, xu.size)), n_points=int(xu.size),
+                         n_merged=merged, max_distance=max_distance, cross_validation=cv)
 
 
 def parse_variogram_parameters(text: str, model: str) -> Optional[Variogram]:

@@ -45,3 +45,18 @@ def test_cli_bad_class_filter(qgis_process, data):
                                           OUTPUT=str(d / "none.tif"))
     assert "No ground points in the input class filter" in msg
     assert not (d / "none.tif").exists()
+
+
+def test_cli_ndsm_onto_the_dtm_refused_dtm_intact(qgis_process, data):
+    import hashlib
+    d, laz, _ = data
+    qgis_process.run("geomatics:idwdtm", INPUT=laz, CELL_SIZE=2, OUTPUT=str(d / "dtm2.tif"))
+    before = hashlib.sha256((d / "dtm2.tif").read_bytes()).hexdigest()
+    msg = qgis_process.run_expect_failure("geomatics:dsm", INPUT=laz, DTM=str(d / "dtm2.tif"),
+                                          OUTPUT=str(d / "dsm2.tif"),
+                                          OUTPUT_NDSM=str(d / "dtm2.tif"),
+                                          OUTPUT_HTML=str(d / "dsm2.html"))
+    assert "is the same file as the input DTM" in msg and "Traceback" not in msg
+    assert hashlib.sha256((d / "dtm2.tif").read_bytes()).hexdigest() == before
+    assert not (d / "dsm2.tif").exists() and not (d / "dsm2.html").exists()
+    assert not [p.name for p in d.iterdir() if ".part-" in p.name]

@@ -143,3 +143,29 @@ def test_geotiff_georeferencing_round_trip(tmp_path):
     for px, py in [(1000.5, 2079.5), (1099.5, 2000.5), (1042.5, 2017.5)]:
         v, st, _ = sample_raster(data, r.geotransform, [px], [py], method="nearest")
         assert st[0] == OK and v[0] == pytest.approx(plane(px, py), abs=1e-4)
+
+
+def test_one_parse_classes_refuses_non_integers():
+    from geomatics_toolbox.core.errors import InputError
+    from geomatics_toolbox.core.lidar.accuracy import parse_classes as lidar_parse
+    for parse in (parse_classes, lidar_parse):
+        assert parse("2, 8;11 ") == (2, 8, 11) and parse([9, 2, 2]) == (2, 9)
+        for bad in ("2.7", "ground", "300", "-1"):
+            with pytest.raises(InputError, match="class"):
+                parse(bad)
+    assert parse_classes("2.0") == (2,) and parse_classes(None) == ()
+    with pytest.raises(InputError, match="at least one"):
+        lidar_parse("")
+
+
+def test_duplicated_checkpoints_named():
+    from geomatics_toolbox.core.errors import InputError
+    from geomatics_toolbox.core.terrain.accuracy import check_duplicates
+    check_duplicates(["a", "b", "c"], [0, 1, 2], [0, 0, 0])
+    check_duplicates(["a", "b"], [0, 0.002], [0, 0])              # 2 mm apart: distinct
+    with pytest.raises(InputError, match=r"same id: row 1 \(id a\), row 3 \(id a\)"):
+        check_duplicates(["a", "b", "a"], [0, 1, 2], [0, 0, 0])
+    with pytest.raises(InputError, match=r"same position: row 2 \(id b\), row 3 \(id c\)"):
+        check_duplicates(["a", "b", "c"], [0, 5, 5.0003], [0, 1, 1])
+    with pytest.raises(InputError, match=r"row 8 \(id q\)"):
+        check_duplicates(["p", "q"], [0, 0], [0, 0], rows=[7, 8])

@@ -136,3 +136,17 @@ def test_parse_parameters_and_bad_input():
     grid = grid_from_extent((0, 1e7, 0, 1e7), 0.05)
     with pytest.raises(ValueError, match="would need"):
         kriging_grid(x, y, z, grid, variogram=v, n_closest=4)
+
+
+def test_flat_ground_gives_flat_dtm_with_zero_variance():
+    from geomatics_toolbox.core.terrain.grid import grid_from_points
+    from geomatics_toolbox.core.terrain.kriging import kriging_grid
+    rng = np.random.default_rng(0)
+    x, y = rng.uniform(0, 40, 500), rng.uniform(0, 40, 500)
+    z = np.full(500, 7.5)
+    grid = grid_from_points(x, y, 1.0, crs="EPSG:32632")
+    res = kriging_grid(x, y, z, grid, n_closest=8, cv_points=20)
+    ok = np.isfinite(res.z)
+    assert ok.sum() > 1000 and np.all(res.z[ok] == 7.5)
+    assert np.array_equal(ok, np.isfinite(res.variance)) and np.all(res.variance[ok] == 0)
+    assert res.variogram.as_dict()["sill"] == 0 and res.cross_validation["rmse"] == 0
