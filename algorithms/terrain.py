@@ -632,6 +632,13 @@ class DsmAlgorithm(_GridAlgorithm):
                             ("NDSM_MAX", "Maximum nDSM height")):
             self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
 
+    @staticmethod
+    def check_cloud_projected(info, crs):
+        """Refuse a cloud in degrees (its header extent); an empty one is refused later."""
+        if info.count:
+            check_projected([info.mins[0], info.maxs[0]], [info.mins[1], info.maxs[1]],
+                            crs=crs)
+
     def target_grid(self, parameters, context, info, dtm_layer, want_ndsm):
         """(grid, DTM array or None, grid source): the DTM's grid, else from the cloud."""
         if dtm_layer is not None:
@@ -645,15 +652,14 @@ class DsmAlgorithm(_GridAlgorithm):
                     "the point cloud's CRS. No output was written.").format(
                         _qgs_crs(las_crs).authid() or "custom",
                         _qgs_crs(crs).authid() or "custom"))
-            check_projected([info.mins[0], info.maxs[0]], [info.mins[1], info.maxs[1]],
-                            crs=las_crs or crs)
+            self.check_cloud_projected(info, las_crs or crs)
             return grid_like(r.geotransform, r.shape, crs=crs), r.masked(), "DTM grid"
         if want_ndsm:
             raise QgsProcessingException(self.tr(
                 "The nDSM needs a DTM: give the DTM parameter (e.g. the output of the "
                 "IDW DTM algorithm). No output was written."))
         crs, crs_source = self.resolve_crs(parameters, context, info.crs)
-        check_projected([info.mins[0], info.maxs[0]], [info.mins[1], info.maxs[1]], crs=crs)
+        self.check_cloud_projected(info, crs)
         cell = self.cell_size(parameters, context)
         box = self.extent_box(parameters, context, crs)
         if box is None:
