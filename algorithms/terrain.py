@@ -637,7 +637,7 @@ class DsmAlgorithm(_GridAlgorithm):
         """Refuse a cloud in degrees (its header extent); an empty one is refused later."""
         if info.count:
             check_projected([info.mins[0], info.maxs[0]], [info.mins[1], info.maxs[1]],
-                            crs=crs)
+                            [info.mins[2], info.maxs[2]], crs=crs)
 
     def target_grid(self, parameters, context, info, dtm_layer, want_ndsm):
         """(grid, DTM array or None, grid source): the DTM's grid, else from the cloud."""
