@@ -24,8 +24,9 @@ from qgis.core import (
 from ..core.io.points import read_checkpoints_csv, write_points_layer
 from ..core.io.raster import read_raster
 from ..core.progress import Cancelled
-from ..core.reporting.html import html_page, html_table, svg_histogram, svg_scatter
+from ..core.reporting import translator
 from ..core.terrain import accuracy as core_acc
+from ..core.terrain import report as terrain_report
 from .base import GeomaticsAlgorithm
 
 NUMBERS = (
@@ -137,6 +138,7 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=True))
+        self.add_report_language()
         for name, _, label in NUMBERS:
             self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
 
@@ -244,8 +246,12 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
             if feedback.isCanceled():
                 raise Cancelled("cancelled by the user")
             if out.requested(self.OUTPUT_HTML):
-                out.write_text(self.OUTPUT_HTML,
-                               self.report(res, ids, layer.source(), method, dtm_crs))
+                rep = terrain_report.accuracy_report(
+                    res, ids, r.masked(), r.geotransform,
+                    dtm_name=os.path.basename(layer.source()),
+                    crs_label=dtm_crs.authid() or dtm_crs.description() or "unknown",
+                    tr=translator(self.report_lang(parameters, context)))
+                out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters, context))
                 results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         feedback.setProgress(100)
         return results
@@ -264,46 +270,3 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
             "abs_error": np.abs(err),
             "status": [core_acc.STATUS_NAMES[int(s)] for s in res.status]},
             crs=crs_text, layer_name="residuals")
-
-    def report(self, res, ids, dtm_path, method, crs) -> str:
-        s = res.summary()
-        body = html_table(("item", "value"), [
-            ("DTM", os.path.basename(dtm_path)),
-            ("CRS", crs.authid() or crs.description() or "unknown"),
-            ("sampling", method), ("check points given", res.n_total),
-            ("used", res.n_used), ("outside the DTM (excluded)", res.n_outside),
-            ("on DTM nodata or without height (excluded)", res.n_nodata),
-            ("bilinear with some nodata neighbours (renormalised)", res.n_partial)])
-        rows = [("N", s["n"]), ("mean error ME (m)", s["me"]),
-                ("median error (m)", s["median_error"]),
-                ("mean absolute error MAE (m)", s["mae"]), ("RMSE (m)", s["rmse"]),
-                ("standard deviation (m)", s["std"]),
-                ("min / max error (m)", f"{s['min_error']:.3f} / {s['max_error']:.3f}"),
-                ("max |error| (m)", s["max_abs_error"]),
-                ("Pearson r", f"{s['r']:.6f}"), ("R² (= r²)", f"{s['r2']:.6f}"),
-                ("NMAD (m)", s["nmad"]),
-                ("vertical accuracy 95 % = 1.96·RMSE (m, ASPRS 2014)", s["accuracy_95"]),
-                ("95th percentile of |error| (m)", s["p95_abs_error"])]
-        body += "<h2>Statistics (error = DTM − check)</h2>" + html_table(
-            ("statistic", "value"), rows, digits=4)
-        used = res.status == core_acc.OK
-        body += "<h2>Plots</h2>"
-        body += svg_scatter(res.z_check[used], res.z_dtm[used], xlabel="check height (m)",
-                            ylabel="DTM height (m)", title="DTM vs check heights",
-                            one_to_one=True)
-        body += svg_histogram(res.error[used], xlabel="error DTM − check (m)",
-                              title="error histogram")
-        order = np.argsort(-np.nan_to_num(np.abs(res.error), nan=-1.0))
-        trows = []
-        for i in order[:500]:
-            ok = res.status[i] == core_acc.OK
-            trows.append((str(ids[i]), res.x[i], res.y[i], res.z_check[i],
-                          res.z_dtm[i] if ok else float("nan"),
-                          res.error[i] if ok else float("nan"),
-                          core_acc.STATUS_NAMES[int(res.status[i])]))
-        body += "<h2>Residuals (largest |error| first)</h2>" + html_table(
-            ("id", "x", "y", "z check", "z DTM", "error", "status"), trows, digits=3)
-        body += ("<p class='note'>ASPRS Positional Accuracy Standards for Digital Geospatial "
-                 "Data (2014): 95 % vertical accuracy = 1.96·RMSE for normally distributed "
-                 "errors; NMAD after Höhle &amp; Höhle (2009), ISPRS J. 64(4), 398–406.</p>")
-        return html_page(self.tr("DTM accuracy against check points"), body)

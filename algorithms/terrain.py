@@ -15,6 +15,7 @@ from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterCrs,
+    QgsProcessingParameterDefinition,
     QgsProcessingParameterEnum,
     QgsProcessingParameterExtent,
     QgsProcessingParameterFile,
@@ -29,11 +30,12 @@ from ..core.coords import check_projected
 from ..core.io.las import iter_las_chunks, las_info
 from ..core.io.points import parse_classes, read_class_points, write_grid
 from ..core.io.raster import read_raster
-from ..core.reporting.html import html_page, html_params, html_table, svg_histogram, svg_scatter
+from ..core.reporting import T, translator
 from ..core.terrain import dsm as core_dsm
 from ..core.terrain import idw as core_idw
 from ..core.terrain import kriging as core_kriging
-from ..core.terrain.grid import GridSpec, grid_from_extent, grid_from_points, grid_like
+from ..core.terrain import report as terrain_report
+from ..core.terrain.grid import grid_from_extent, grid_from_points, grid_like
 from .base import GeomaticsAlgorithm
 
 NAN = float("nan")
@@ -163,8 +165,16 @@ class _GridAlgorithm(GeomaticsAlgorithm):
 
     def add_html(self):
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.report_label(), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
+        self.add_report_language()
+
+    def report_label(self):
+        return self.tr("Report")
+
+    def tr_report(self, parameters, context):
+        """Translator of the report language (for the figures' text)."""
+        return translator(self.report_lang(parameters, context))
 
     # ---------------------------------------------------------------- helpers
     def resolve_crs(self, parameters, context, las_crs):
@@ -229,16 +239,13 @@ class _GridAlgorithm(GeomaticsAlgorithm):
                 "max": float(arr[ok].max()) if ok.any() else float("nan")}
 
     @staticmethod
-    def input_rows(path, pts, crs_source, grid: GridSpec):
-        classes = ", ".join(f"{c}: {n:,}" for c, n in sorted(pts.class_counts.items()))
-        return [("input", os.path.basename(path)), ("points in file", f"{pts.n_total:,}"),
-                ("classes present (class: count)", classes),
-                ("points used", f"{len(pts):,}"),
-                ("classes used", ", ".join(map(str, pts.classes)) or "all"),
-                ("CRS source", crs_source),
-                ("grid", f"{grid.ncols} × {grid.nrows} cells of {grid.cell:g} m"),
-                ("extent (xmin, xmax, ymin, ymax)",
-                 ", ".join(f"{v:.3f}" for v in grid.extent))]
+    def input_rows(path, pts, crs_source):
+        """Report rows describing the cloud and the points used."""
+        classes = ", ".join(f"{c}: {n}" for c, n in sorted(pts.class_counts.items()))
+        return [("input", os.path.basename(path)), ("points in file", pts.n_total),
+                ("classes present (class: count)", classes), ("points used", len(pts)),
+                ("classes used", ", ".join(map(str, pts.classes)) or T("all")),
+                ("CRS source", T(crs_source))]
 
 
 class IdwDtmAlgorithm(_GridAlgorithm):
@@ -320,22 +327,21 @@ class IdwDtmAlgorithm(_GridAlgorithm):
                        "VALID_CELLS": stats["valid_cells"],
                        "NODATA_CELLS": stats["nodata_cells"]}
             if out.requested(self.OUTPUT_HTML):
-                params = {"power": power, "neighbours": k,
-                          "radius (m)": radius if radius > 0 else "unlimited",
-                          "min points": minp,
-                          "gaps": "filled" if fill else (f"{maxd:g} m" if maxd else "auto")}
-                body = html_params(params)
-                body += "<h2>Input and grid</h2>" + html_table(
-                    ("item", "value"), self.input_rows(path, pts, crs_source, grid))
-                body += "<h2>Result</h2>" + html_table(("item", "value"), [
-                    ("cells with a value", stats["valid_cells"]),
-                    ("nodata cells", stats["nodata_cells"]),
-                    ("min height (m)", stats["min"]), ("max height (m)", stats["max"]),
-                    ("run time (s)", time.time() - t0)])
-                body += ("<p class='note'>Method: Shepard (1968) inverse distance weighting, "
-                         "semantics of gdal_grid -a invdistnn.</p>")
-                out.write_text(self.OUTPUT_HTML,
-                               html_page(self.tr("IDW DTM report"), body))
+                method = [("method", T("inverse distance weighting (Shepard 1968)")),
+                          ("power", power), ("neighbours", k),
+                          ("search radius", radius if radius > 0 else T("unlimited"),
+                           "m" if radius > 0 else ""),
+                          ("minimum points", minp),
+                          ("gaps", T("filled") if fill else (maxd or T("automatic")),
+                           "m" if maxd and not fill else "")]
+                rep = terrain_report.grid_report(
+                    "IDW DTM report", method_rows=method,
+                    input_rows=self.input_rows(path, pts, crs_source), grid=grid, data=dtm,
+                    stats=stats, elapsed=time.time() - t0,
+                    citation="Shepard (1968) inverse distance weighting, semantics of "
+                             "gdal_grid -a invdistnn.",
+                    tr=self.tr_report(parameters, context))
+                out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters, context))
                 results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         return results
 
@@ -345,7 +351,13 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
 
     KRIGING_TYPE = "KRIGING_TYPE"
     VARIOGRAM = "VARIOGRAM"
-    VARIOGRAM_PARAMS = "VARIOGRAM_PARAMS"
+    VARIOGRAM_PARAMS = "VARIOGRAM_PARAMS"        # old text form, hidden, still accepted
+    VARIOGRAM_NUGGET = "VARIOGRAM_NUGGET"
+    VARIOGRAM_SILL = "VARIOGRAM_SILL"
+    VARIOGRAM_RANGE = "VARIOGRAM_RANGE"
+    VARIOGRAM_SLOPE = "VARIOGRAM_SLOPE"
+    VARIOGRAM_SCALE = "VARIOGRAM_SCALE"
+    VARIOGRAM_EXPONENT = "VARIOGRAM_EXPONENT"
     NEIGHBOURS = "NEIGHBOURS"
     FIT_POINTS = "FIT_POINTS"
     NLAGS = "NLAGS"
@@ -397,10 +409,10 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
             "linear drift).</li>"
             "<li><b>Variogram model</b> (VARIOGRAM, 0 linear, 1 power, 2 gaussian, 3 "
             "spherical (default), 4 exponential).</li>"
-            "<li><b>Variogram parameters</b> (VARIOGRAM_PARAMS, optional text, e.g. "
-            "<code>nugget=0.01, sill=4, range=60</code>; linear: slope, nugget; power: "
-            "scale, exponent, nugget). Empty = fitted automatically. The sill includes "
-            "the nugget; the range is the practical range.</li>"
+            "<li><b>Variogram</b> (VARIOGRAM_NUGGET m², VARIOGRAM_SILL m², "
+            "VARIOGRAM_RANGE m; linear: VARIOGRAM_SLOPE; power: VARIOGRAM_SCALE, "
+            "VARIOGRAM_EXPONENT; all optional numbers). Empty = fitted automatically. The "
+            "sill includes the nugget; the range is the practical range.</li>"
             "<li><b>Neighbours</b> (NEIGHBOURS, default 16, ≥ 2).</li>"
             "<li><b>Points for the variogram fit</b> (FIT_POINTS, default 3000).</li>"
             "<li><b>Lag classes</b> (NLAGS, default 12) and <b>maximum lag</b> (MAX_LAG, m, "
@@ -420,6 +432,21 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
             "<p>Output numbers: NUGGET, SILL, RANGE (NaN for linear/power), N_POINTS, "
             "VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).</p>"))
 
+    def variogram(self, parameters, context, model):
+        """The user's variogram (numbers, or the old text form), or None to fit one."""
+        names = (self.VARIOGRAM_NUGGET, self.VARIOGRAM_SILL, self.VARIOGRAM_RANGE,
+                 self.VARIOGRAM_SLOPE, self.VARIOGRAM_SCALE, self.VARIOGRAM_EXPONENT)
+        given = {n: (None if parameters.get(n) in (None, "")
+                     else self.parameterAsDouble(parameters, n, context)) for n in names}
+        if any(v is not None for v in given.values()):
+            return core_kriging.given_variogram(
+                model, nugget=given[self.VARIOGRAM_NUGGET] or 0.0,
+                sill=given[self.VARIOGRAM_SILL], range_=given[self.VARIOGRAM_RANGE],
+                slope=given[self.VARIOGRAM_SLOPE], scale=given[self.VARIOGRAM_SCALE],
+                exponent=given[self.VARIOGRAM_EXPONENT])
+        return core_kriging.parse_variogram_parameters(
+            self.parameterAsString(parameters, self.VARIOGRAM_PARAMS, context), model)
+
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input_params()
         self.add(QgsProcessingParameterEnum(
@@ -428,10 +455,25 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
         self.add(QgsProcessingParameterEnum(
             self.VARIOGRAM, self.tr("Variogram model"), list(core_kriging.MODELS),
             defaultValue=core_kriging.MODELS.index("spherical")))
-        self.add(QgsProcessingParameterString(
-            self.VARIOGRAM_PARAMS,
-            self.tr("Variogram parameters (e.g. nugget=0.01, sill=4, range=60; empty = fit)"),
-            optional=True))
+        self.add_number(self.VARIOGRAM_NUGGET, self.tr("Variogram nugget (m², empty = fit)"),
+                        None, minimum=0.0, optional=True)
+        self.add_number(self.VARIOGRAM_SILL,
+                        self.tr("Variogram sill, nugget included (m², empty = fit)"), None,
+                        minimum=0.0, optional=True)
+        self.add_number(self.VARIOGRAM_RANGE,
+                        self.tr("Variogram practical range (m, empty = fit)"), None,
+                        minimum=0.0, optional=True)
+        self.add_number(self.VARIOGRAM_SLOPE, self.tr("Linear variogram slope (m²/m)"), None,
+                        minimum=0.0, optional=True, advanced=True)
+        self.add_number(self.VARIOGRAM_SCALE, self.tr("Power variogram scale"), None,
+                        minimum=0.0, optional=True, advanced=True)
+        self.add_number(self.VARIOGRAM_EXPONENT, self.tr("Power variogram exponent (0–2)"),
+                        None, minimum=0.0, maximum=2.0, optional=True, advanced=True)
+        legacy = QgsProcessingParameterString(
+            self.VARIOGRAM_PARAMS, self.tr("Variogram parameters as text (old form)"),
+            optional=True)
+        legacy.setFlags(legacy.flags() | QgsProcessingParameterDefinition.FlagHidden)
+        self.add(legacy)
         self.add_number(self.NEIGHBOURS, self.tr("Neighbours per cell"), 16, minimum=2,
                         integer=True)
         self.add_number(self.FIT_POINTS, self.tr("Points for the variogram fit"), 3000,
@@ -466,8 +508,7 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
         drift = "linear" if self.parameterAsEnum(parameters, self.KRIGING_TYPE, context) \
             else "none"
         model = core_kriging.MODELS[self.parameterAsEnum(parameters, self.VARIOGRAM, context)]
-        vario = core_kriging.parse_variogram_parameters(
-            self.parameterAsString(parameters, self.VARIOGRAM_PARAMS, context), model)
+        vario = self.variogram(parameters, context, model)
         k = self.parameterAsInt(parameters, self.NEIGHBOURS, context)
         fit_points = self.parameterAsInt(parameters, self.FIT_POINTS, context)
         nlags = self.parameterAsInt(parameters, self.NLAGS, context)
@@ -511,57 +552,28 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
                            VALID_CELLS=stats["valid_cells"], CV_ME=cv.get("me", nan),
                            CV_RMSE=cv.get("rmse", nan), CV_MSE=cv.get("mse_std", nan))
             if out.requested(self.OUTPUT_HTML):
-                out.write_text(self.OUTPUT_HTML, self.report(
-                    res, kind, path, pts, crs_source, grid, stats, time.time() - t0, fill,
-                    maxd))
+                rep = self.report(res, kind, path, pts, crs_source, grid, stats,
+                                  time.time() - t0, fill, maxd,
+                                  self.tr_report(parameters, context))
+                out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters, context))
                 results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         return results
 
-    def report(self, res, kind, path, pts, crs_source, grid, stats, elapsed, fill, maxd):
-        v = res.variogram
-        body = html_params({"kriging": kind, "variogram model": v.model,
-                            "neighbours per cell": res.n_closest,
-                            "gaps": "filled" if fill else
-                            f"nodata beyond {res.max_distance:.3g} m"
-                            + ("" if maxd else " (auto)")})
-        body += "<h2>Variogram</h2>" + html_table(
-            ("parameter", "value"), core_kriging.describe_variogram(v))
-        if v.fitted and v.lags.size:
-            model_at = v(v.lags)
-            body += html_table(("lag (m)", "experimental γ", "model γ"),
-                               list(zip(v.lags, v.semivariance, model_at)), digits=4,
-                               caption="Experimental and fitted semivariogram")
-            dense = np.linspace(0, float(v.lags.max()), 60)
-            xs = np.concatenate([v.lags, dense])
-            ys = np.concatenate([v.semivariance, v(dense)])
-            body += svg_scatter(xs, ys, xlabel="lag (m)", ylabel="semivariance (m²)",
-                                title="experimental (all) and model (dense) semivariogram")
-        body += "<h2>Input and grid</h2>" + html_table(
-            ("item", "value"), self.input_rows(path, pts, crs_source, grid) + [
-                ("duplicate x,y merged", f"{res.n_merged:,}")])
-        var = res.variance[np.isfinite(res.variance)]
-        body += "<h2>Result</h2>" + html_table(("item", "value"), [
-            ("cells with a value", stats["valid_cells"]),
-            ("nodata cells", stats["nodata_cells"]),
-            ("min height (m)", stats["min"]), ("max height (m)", stats["max"]),
-            ("mean kriging std (m)", float(np.sqrt(var).mean()) if var.size else NAN),
-            ("max kriging std (m)", float(np.sqrt(var).max()) if var.size else NAN),
-            ("run time (s)", elapsed)])
-        if var.size:
-            body += svg_histogram(np.sqrt(var), xlabel="kriging standard deviation (m)",
-                                  title="kriging standard deviation of the cells")
-        cv = res.cross_validation
-        if cv:
-            body += "<h2>Leave-one-out cross-validation</h2>" + html_table(
-                ("statistic", "value"), [
-                    ("points", cv["n"]), ("mean error ME (m)", cv["me"]),
-                    ("RMSE (m)", cv["rmse"]), ("MAE (m)", cv["mae"]),
-                    ("mean standardised error (ideal 0)", cv["mse_std"]),
-                    ("RMS standardised error (ideal 1)", cv["rmsse"])], digits=4)
-        body += ("<p class='note'>Local-neighbourhood kriging with a variogram fitted by "
-                 "PyKrige's estimator on a random subsample; see the algorithm help for "
-                 "what is approximated. References: Matheron (1963); Cressie (1993).</p>")
-        return html_page(self.tr("Kriging DTM report"), body)
+    def report(self, res, kind, path, pts, crs_source, grid, stats, elapsed, fill, maxd,
+               tr):
+        method = [("method", T(kind + " kriging")), ("variogram model", res.variogram.model),
+                  ("neighbours per cell", res.n_closest),
+                  ("gaps", T("filled") if fill else res.max_distance,
+                   "" if fill else "m")]
+        inputs = self.input_rows(path, pts, crs_source) + [
+            ("duplicate x,y merged", res.n_merged)]
+        rep = terrain_report.grid_report(
+            "Kriging DTM report", method_rows=method, input_rows=inputs, grid=grid,
+            data=res.z, stats=stats, elapsed=elapsed,
+            citation="Local-neighbourhood kriging with a variogram fitted by PyKrige's "
+                     "estimator on a random subsample; Matheron (1963), Cressie (1993).",
+            tr=tr)
+        return terrain_report.kriging_sections(rep, res, tr=tr)
 
 
 class DsmAlgorithm(_GridAlgorithm):
@@ -710,32 +722,32 @@ class DsmAlgorithm(_GridAlgorithm):
                 results[self.OUTPUT_NDSM] = out.final(self.OUTPUT_NDSM)
                 results["NDSM_MAX"] = self.grid_stats(nd)["max"]
             if out.requested(self.OUTPUT_HTML):
-                out.write_text(self.OUTPUT_HTML, self.report(
-                    path, info, grid, crs_source, first, classes, excl, stats, nd, clamp,
-                    time.time() - t0))
+                rep = self.report(path, info, grid, crs_source, first, classes, excl,
+                                  stats, surf, nd, clamp, time.time() - t0,
+                                  self.tr_report(parameters, context))
+                out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters, context))
                 results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         return results
 
-    def report(self, path, info, grid, crs_source, first, classes, excl, stats, nd, clamp,
-               elapsed):
-        rows = [("input", os.path.basename(path)), ("points in file", f"{info.count:,}"),
-                ("grid", f"{grid.ncols} × {grid.nrows} cells of {grid.cell:g} m"),
-                ("grid source", crs_source),
-                ("first returns only", "yes" if first else "no"),
-                ("classes used", ", ".join(map(str, classes)) or "all"),
-                ("excluded classes", ", ".join(map(str, excl)) or "none"),
-                ("DSM cells with a value", stats["valid_cells"]),
-                ("DSM empty cells", stats["nodata_cells"]),
-                ("DSM min / max (m)", f"{stats['min']:.2f} / {stats['max']:.2f}")]
-        body = html_table(("item", "value"), rows)
+    def report(self, path, info, grid, crs_source, first, classes, excl, stats, surf, nd,
+               clamp, elapsed, tr):
+        method = [("method", T("highest return per cell")),
+                  ("first returns only", T("yes") if first else T("no")),
+                  ("classes used", ", ".join(map(str, classes)) or T("all")),
+                  ("excluded classes", ", ".join(map(str, excl)) or T("none"))]
+        inputs = [("input", os.path.basename(path)), ("points in file", info.count),
+                  ("grid source", T(crs_source))]
+        rep = terrain_report.grid_report(
+            "DSM / nDSM report", method_rows=method, input_rows=inputs, grid=grid,
+            data=surf, stats=stats, elapsed=elapsed,
+            citation="Digital surface model: highest return per cell; nDSM = DSM − DTM.",
+            tr=tr)
         if nd is not None:
             nd_stats = self.grid_stats(nd)
             nd_valid = nd[np.isfinite(nd)]
-            body += "<h2>nDSM</h2>" + html_table(("item", "value"), [
+            rep.section("nDSM").add(terrain_report.KeyValues([
                 ("cells with a value", nd_stats["valid_cells"]),
-                ("max height (m)", nd_stats["max"]),
+                ("max height", nd_stats["max"], "m"),
                 ("cells ≥ 2 m", int((nd_valid >= 2).sum())),
-                ("negative heights clamped", "yes" if clamp else "no")])
-            body += svg_histogram(nd_valid, xlabel="nDSM height (m)", title="nDSM heights")
-        body += f"<p class='note'>Run time {elapsed:.1f} s.</p>"
-        return html_page(self.tr("DSM / nDSM report"), body)
+                ("negative heights clamped", T("yes") if clamp else T("no"))]))
+        return rep

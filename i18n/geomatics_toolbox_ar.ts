@@ -150,10 +150,6 @@
             <source>The nDSM needs a DTM: give the DTM parameter (e.g. the output of the IDW DTM algorithm). No output was written.</source>
             <translation>يتطلب nDSM نموذج ارتفاعات رقمياً للأرض: حدِّد المعامل DTM (مثلاً مخرج خوارزمية نموذج الارتفاعات الرقمي بطريقة IDW). لم تُكتب أي مخرجات.</translation>
         </message>
-        <message>
-            <source>DSM / nDSM report</source>
-            <translation>تقرير DSM / nDSM</translation>
-        </message>
     </context>
     <context>
         <name>DtmAccuracyAlgorithm</name>
@@ -875,10 +871,6 @@
             <translation>نموذج الارتفاعات الرقمي للأرض بطريقة IDW</translation>
         </message>
         <message>
-            <source>IDW DTM report</source>
-            <translation>تقرير نموذج الارتفاعات الرقمي بطريقة IDW</translation>
-        </message>
-        <message>
             <source>&lt;li&gt;&lt;b&gt;Power&lt;/b&gt; (POWER, default 2; the paper found 3 best).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 12): nearest points used (gdal max_points); 0 = all points within the radius (needs RADIUS). More neighbours than points → error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Search radius&lt;/b&gt; (RADIUS, m, default 0 = unlimited): only points within it are used (gdal radius).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points&lt;/b&gt; (MIN_POINTS, default 0): cells with fewer neighbours within the radius are nodata (gdal min_points).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs also the numbers N_POINTS, VALID_CELLS, NODATA_CELLS.&lt;/p&gt;</source>
             <translation>&lt;li&gt;&lt;b&gt;الأس&lt;/b&gt; (POWER، الافتراضي 2؛ وجد البحث أن 3 هو الأفضل).&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد الجيران&lt;/b&gt; (NEIGHBOURS، الافتراضي 12): عدد أقرب النقاط المستخدمة (max_points في gdal)؛ 0 = كل النقاط ضمن نصف القطر (يتطلب RADIUS). عدد جيران أكبر من عدد النقاط → خطأ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نصف قطر البحث&lt;/b&gt; (RADIUS، م، الافتراضي 0 = غير محدود): لا تُستخدم إلا النقاط الواقعة ضمنه (radius في gdal).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأدنى لعدد النقاط&lt;/b&gt; (MIN_POINTS، الافتراضي 0): الخلايا التي لها جيران أقل من ذلك ضمن نصف القطر تُجعل nodata (min_points في gdal).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;تُخرج أيضاً الأرقام N_POINTS وVALID_CELLS وNODATA_CELLS.&lt;/p&gt;</translation>
         </message>
@@ -912,10 +904,6 @@
         <message>
             <source>Variogram model</source>
             <translation>نموذج الفاريوغرام</translation>
-        </message>
-        <message>
-            <source>Variogram parameters (e.g. nugget=0.01, sill=4, range=60; empty = fit)</source>
-            <translation>معاملات الفاريوغرام (مثلاً nugget=0.01, sill=4, range=60؛ فارغ = مواءمة تلقائية)</translation>
         </message>
         <message>
             <source>Neighbours per cell</source>
@@ -958,12 +946,36 @@
             <translation>الفاريوغرام: {}</translation>
         </message>
         <message>
-            <source>Kriging DTM report</source>
-            <translation>تقرير نموذج الارتفاعات الرقمي بطريقة الكريغينغ</translation>
+            <source>&lt;li&gt;&lt;b&gt;Kriging type&lt;/b&gt; (KRIGING_TYPE, 0 ordinary (default), 1 universal with linear drift).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram model&lt;/b&gt; (VARIOGRAM, 0 linear, 1 power, 2 gaussian, 3 spherical (default), 4 exponential).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram&lt;/b&gt; (VARIOGRAM_NUGGET m², VARIOGRAM_SILL m², VARIOGRAM_RANGE m; linear: VARIOGRAM_SLOPE; power: VARIOGRAM_SCALE, VARIOGRAM_EXPONENT; all optional numbers). Empty = fitted automatically. The sill includes the nugget; the range is the practical range.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 16, ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Points for the variogram fit&lt;/b&gt; (FIT_POINTS, default 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Lag classes&lt;/b&gt; (NLAGS, default 12) and &lt;b&gt;maximum lag&lt;/b&gt; (MAX_LAG, m, default 0 = automatic: three times the typical distance to the NEIGHBOURS-th neighbour, the scale local kriging uses, so the nugget and the short-range shape that set the weights and the variance are well sampled; the fitted sill and range then describe that local scale). For a classical field-scale fit give e.g. half the extent (Journel &amp;amp; Huijbregts 1978). A fitted nugget is raised to at least 1 % of the semivariance at the maximum lag, for numerical stability (Gaussian and power models).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cross-validation points&lt;/b&gt; (CV_POINTS, default 0 = off): leave-one-out on this many random points; reports ME, RMSE, mean standardised error (ideal 0) and RMS standardised error (ideal 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Seed&lt;/b&gt; (SEED, default 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variance output&lt;/b&gt; (OUTPUT_VARIANCE, optional GeoTIFF): kriging variance (m²), or standard deviation (m) with VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: NUGGET, SILL, RANGE (NaN for linear/power), N_POINTS, VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;نوع الكريغينغ&lt;/b&gt; (KRIGING_TYPE، 0 عادي (الافتراضي)، 1 شامل بانجراف خطي).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نموذج الفاريوغرام&lt;/b&gt; (VARIOGRAM، 0 خطي، 1 قوة (power)، 2 غاوسي، 3 كروي (الافتراضي)، 4 أُسّي).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الفاريوغرام&lt;/b&gt; (VARIOGRAM_NUGGET م²، VARIOGRAM_SILL م²، VARIOGRAM_RANGE م؛ الخطي: VARIOGRAM_SLOPE؛ القوة: VARIOGRAM_SCALE و VARIOGRAM_EXPONENT؛ كلها أرقام اختيارية). الفراغ = مُوفَّق تلقائياً. العتبة تشمل الأثر الكتلي؛ والمدى هو المدى العملي.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد الجيران&lt;/b&gt; (NEIGHBOURS، الافتراضي 16، ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد النقاط لمواءمة الفاريوغرام&lt;/b&gt; (FIT_POINTS، الافتراضي 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد فئات مسافة الإزاحة&lt;/b&gt; (NLAGS، الافتراضي 12) و&lt;b&gt;أقصى مسافة إزاحة&lt;/b&gt; (MAX_LAG، م، الافتراضي 0 = تلقائي: ثلاثة أضعاف المسافة النموذجية إلى الجار رقم NEIGHBOURS، وهو المقياس الذي يستخدمه الكريغينغ المحلي، كي يُعايَن جيداً أثر الكتلة وشكل الفاريوغرام عند المسافات القصيرة، وهما ما يحدد الأوزان والتباين؛ وتصف العتبة والمدى المُوائَمان حينئذٍ ذلك المقياس المحلي). لمواءمة تقليدية على مقياس الحقل كله حدِّد مثلاً نصف النطاق (Journel &amp;amp; Huijbregts 1978). يُرفع أثر الكتلة المُوائَم إلى 1 % على الأقل من نصف التباين (semivariance) عند أقصى مسافة إزاحة، من أجل الاستقرار العددي (نموذجا غاوس والقوة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط التحقق المتقاطع&lt;/b&gt; (CV_POINTS، الافتراضي 0 = معطَّل): استبعاد فردي على هذا العدد من النقاط العشوائية؛ يعطي ME وRMSE ومتوسط الخطأ المعيَّر (المثالي 0) وقيمة RMS للخطأ المعيَّر (المثالي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;البذرة العشوائية&lt;/b&gt; (SEED، الافتراضي 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مخرج التباين&lt;/b&gt; (OUTPUT_VARIANCE، GeoTIFF اختياري): تباين الكريغينغ (م²)، أو الانحراف المعياري (م) مع VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: NUGGET وSILL وRANGE (NaN للنموذجين الخطي والقوة)، وN_POINTS وVALID_CELLS وCV_ME وCV_RMSE وCV_MSE (NaN دون تحقق متقاطع).&lt;/p&gt;</translation>
         </message>
         <message>
-            <source>&lt;li&gt;&lt;b&gt;Kriging type&lt;/b&gt; (KRIGING_TYPE, 0 ordinary (default), 1 universal with linear drift).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram model&lt;/b&gt; (VARIOGRAM, 0 linear, 1 power, 2 gaussian, 3 spherical (default), 4 exponential).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram parameters&lt;/b&gt; (VARIOGRAM_PARAMS, optional text, e.g. &lt;code&gt;nugget=0.01, sill=4, range=60&lt;/code&gt;; linear: slope, nugget; power: scale, exponent, nugget). Empty = fitted automatically. The sill includes the nugget; the range is the practical range.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 16, ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Points for the variogram fit&lt;/b&gt; (FIT_POINTS, default 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Lag classes&lt;/b&gt; (NLAGS, default 12) and &lt;b&gt;maximum lag&lt;/b&gt; (MAX_LAG, m, default 0 = automatic: three times the typical distance to the NEIGHBOURS-th neighbour, the scale local kriging uses, so the nugget and the short-range shape that set the weights and the variance are well sampled; the fitted sill and range then describe that local scale). For a classical field-scale fit give e.g. half the extent (Journel &amp;amp; Huijbregts 1978). A fitted nugget is raised to at least 1 % of the semivariance at the maximum lag, for numerical stability (Gaussian and power models).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cross-validation points&lt;/b&gt; (CV_POINTS, default 0 = off): leave-one-out on this many random points; reports ME, RMSE, mean standardised error (ideal 0) and RMS standardised error (ideal 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Seed&lt;/b&gt; (SEED, default 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variance output&lt;/b&gt; (OUTPUT_VARIANCE, optional GeoTIFF): kriging variance (m²), or standard deviation (m) with VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: NUGGET, SILL, RANGE (NaN for linear/power), N_POINTS, VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).&lt;/p&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;نوع الكريغينغ&lt;/b&gt; (KRIGING_TYPE، 0 عادي (الافتراضي)، 1 شامل بانجراف خطي).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نموذج الفاريوغرام&lt;/b&gt; (VARIOGRAM، 0 خطي، 1 قوة (power)، 2 غاوسي، 3 كروي (الافتراضي)، 4 أُسّي).&lt;/li&gt;&lt;li&gt;&lt;b&gt;معاملات الفاريوغرام&lt;/b&gt; (VARIOGRAM_PARAMS، نص اختياري، مثلاً &lt;code&gt;nugget=0.01, sill=4, range=60&lt;/code&gt;؛ للنموذج الخطي: slope وnugget؛ ولنموذج القوة: scale وexponent وnugget). فارغ = مواءمة تلقائية. تتضمن العتبة (sill) أثرَ الكتلة (nugget)؛ والمدى (range) هو المدى العملي.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد الجيران&lt;/b&gt; (NEIGHBOURS، الافتراضي 16، ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد النقاط لمواءمة الفاريوغرام&lt;/b&gt; (FIT_POINTS، الافتراضي 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;عدد فئات مسافة الإزاحة&lt;/b&gt; (NLAGS، الافتراضي 12) و&lt;b&gt;أقصى مسافة إزاحة&lt;/b&gt; (MAX_LAG، م، الافتراضي 0 = تلقائي: ثلاثة أضعاف المسافة النموذجية إلى الجار رقم NEIGHBOURS، وهو المقياس الذي يستخدمه الكريغينغ المحلي، كي يُعايَن جيداً أثر الكتلة وشكل الفاريوغرام عند المسافات القصيرة، وهما ما يحدد الأوزان والتباين؛ وتصف العتبة والمدى المُوائَمان حينئذٍ ذلك المقياس المحلي). لمواءمة تقليدية على مقياس الحقل كله حدِّد مثلاً نصف النطاق (Journel &amp;amp; Huijbregts 1978). يُرفع أثر الكتلة المُوائَم إلى 1 % على الأقل من نصف التباين (semivariance) عند أقصى مسافة إزاحة، من أجل الاستقرار العددي (نموذجا غاوس والقوة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط التحقق المتقاطع&lt;/b&gt; (CV_POINTS، الافتراضي 0 = معطَّل): استبعاد فردي على هذا العدد من النقاط العشوائية؛ يعطي ME وRMSE ومتوسط الخطأ المعيَّر (المثالي 0) وقيمة RMS للخطأ المعيَّر (المثالي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;البذرة العشوائية&lt;/b&gt; (SEED، الافتراضي 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مخرج التباين&lt;/b&gt; (OUTPUT_VARIANCE، GeoTIFF اختياري): تباين الكريغينغ (م²)، أو الانحراف المعياري (م) مع VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: NUGGET وSILL وRANGE (NaN للنموذجين الخطي والقوة)، وN_POINTS وVALID_CELLS وCV_ME وCV_RMSE وCV_MSE (NaN دون تحقق متقاطع).&lt;/p&gt;</translation>
+            <source>Variogram nugget (m², empty = fit)</source>
+            <translation>الأثر الكتلي للفاريوغرام (م²، فارغ = توفيق)</translation>
+        </message>
+        <message>
+            <source>Variogram sill, nugget included (m², empty = fit)</source>
+            <translation>عتبة الفاريوغرام شاملة الأثر الكتلي (م²، فارغ = توفيق)</translation>
+        </message>
+        <message>
+            <source>Variogram practical range (m, empty = fit)</source>
+            <translation>المدى العملي للفاريوغرام (م، فارغ = توفيق)</translation>
+        </message>
+        <message>
+            <source>Linear variogram slope (m²/m)</source>
+            <translation>ميل الفاريوغرام الخطي (م²/م)</translation>
+        </message>
+        <message>
+            <source>Power variogram scale</source>
+            <translation>مقياس فاريوغرام القوة</translation>
+        </message>
+        <message>
+            <source>Power variogram exponent (0–2)</source>
+            <translation>أس فاريوغرام القوة (0–2)</translation>
+        </message>
+        <message>
+            <source>Variogram parameters as text (old form)</source>
+            <translation>معاملات الفاريوغرام نصاً (الصيغة القديمة)</translation>
         </message>
     </context>
     <context>

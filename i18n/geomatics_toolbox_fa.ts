@@ -150,10 +150,6 @@
             <source>The nDSM needs a DTM: give the DTM parameter (e.g. the output of the IDW DTM algorithm). No output was written.</source>
             <translation>nDSM به مدل رقومی زمین نیاز دارد: پارامتر DTM را بدهید (مثلاً خروجی الگوریتم مدل رقومی زمین به روش IDW). هیچ خروجی‌ای نوشته نشد.</translation>
         </message>
-        <message>
-            <source>DSM / nDSM report</source>
-            <translation>گزارش DSM / nDSM</translation>
-        </message>
     </context>
     <context>
         <name>DtmAccuracyAlgorithm</name>
@@ -875,10 +871,6 @@
             <translation>مدل رقومی زمین به روش IDW</translation>
         </message>
         <message>
-            <source>IDW DTM report</source>
-            <translation>گزارش مدل رقومی زمین به روش IDW</translation>
-        </message>
-        <message>
             <source>&lt;li&gt;&lt;b&gt;Power&lt;/b&gt; (POWER, default 2; the paper found 3 best).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 12): nearest points used (gdal max_points); 0 = all points within the radius (needs RADIUS). More neighbours than points → error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Search radius&lt;/b&gt; (RADIUS, m, default 0 = unlimited): only points within it are used (gdal radius).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points&lt;/b&gt; (MIN_POINTS, default 0): cells with fewer neighbours within the radius are nodata (gdal min_points).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs also the numbers N_POINTS, VALID_CELLS, NODATA_CELLS.&lt;/p&gt;</source>
             <translation>&lt;li&gt;&lt;b&gt;توان&lt;/b&gt; (POWER، پیش‌فرض 2؛ مقاله 3 را بهترین یافت).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد همسایه‌ها&lt;/b&gt; (NEIGHBOURS، پیش‌فرض 12): تعداد نزدیک‌ترین نقاطی که به کار می‌روند (max_points در gdal)؛ 0 = همهٔ نقاط درون شعاع (نیازمند RADIUS). همسایه‌های بیشتر از تعداد نقاط → خطا.&lt;/li&gt;&lt;li&gt;&lt;b&gt;شعاع جست‌وجو&lt;/b&gt; (RADIUS، متر، پیش‌فرض 0 = نامحدود): فقط نقاط درون آن به کار می‌روند (radius در gdal).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداقل تعداد نقاط&lt;/b&gt; (MIN_POINTS، پیش‌فرض 0): سلول‌هایی که همسایه‌های کمتری درون شعاع دارند nodata می‌شوند (min_points در gdal).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد N_POINTS، VALID_CELLS و NODATA_CELLS نیز خروجی داده می‌شوند.&lt;/p&gt;</translation>
         </message>
@@ -912,10 +904,6 @@
         <message>
             <source>Variogram model</source>
             <translation>مدل واریوگرام</translation>
-        </message>
-        <message>
-            <source>Variogram parameters (e.g. nugget=0.01, sill=4, range=60; empty = fit)</source>
-            <translation>پارامترهای واریوگرام (مثلاً nugget=0.01, sill=4, range=60؛ خالی = برازش خودکار)</translation>
         </message>
         <message>
             <source>Neighbours per cell</source>
@@ -958,12 +946,36 @@
             <translation>واریوگرام: {}</translation>
         </message>
         <message>
-            <source>Kriging DTM report</source>
-            <translation>گزارش مدل رقومی زمین به روش کریجینگ</translation>
+            <source>&lt;li&gt;&lt;b&gt;Kriging type&lt;/b&gt; (KRIGING_TYPE, 0 ordinary (default), 1 universal with linear drift).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram model&lt;/b&gt; (VARIOGRAM, 0 linear, 1 power, 2 gaussian, 3 spherical (default), 4 exponential).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram&lt;/b&gt; (VARIOGRAM_NUGGET m², VARIOGRAM_SILL m², VARIOGRAM_RANGE m; linear: VARIOGRAM_SLOPE; power: VARIOGRAM_SCALE, VARIOGRAM_EXPONENT; all optional numbers). Empty = fitted automatically. The sill includes the nugget; the range is the practical range.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 16, ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Points for the variogram fit&lt;/b&gt; (FIT_POINTS, default 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Lag classes&lt;/b&gt; (NLAGS, default 12) and &lt;b&gt;maximum lag&lt;/b&gt; (MAX_LAG, m, default 0 = automatic: three times the typical distance to the NEIGHBOURS-th neighbour, the scale local kriging uses, so the nugget and the short-range shape that set the weights and the variance are well sampled; the fitted sill and range then describe that local scale). For a classical field-scale fit give e.g. half the extent (Journel &amp;amp; Huijbregts 1978). A fitted nugget is raised to at least 1 % of the semivariance at the maximum lag, for numerical stability (Gaussian and power models).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cross-validation points&lt;/b&gt; (CV_POINTS, default 0 = off): leave-one-out on this many random points; reports ME, RMSE, mean standardised error (ideal 0) and RMS standardised error (ideal 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Seed&lt;/b&gt; (SEED, default 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variance output&lt;/b&gt; (OUTPUT_VARIANCE, optional GeoTIFF): kriging variance (m²), or standard deviation (m) with VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: NUGGET, SILL, RANGE (NaN for linear/power), N_POINTS, VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;نوع کریجینگ&lt;/b&gt; (KRIGING_TYPE، 0 معمولی (پیش‌فرض)، 1 عام با روند خطی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مدل واریوگرام&lt;/b&gt; (VARIOGRAM، 0 خطی، 1 توانی، 2 گوسی، 3 کروی (پیش‌فرض)، 4 نمایی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;واریوگرام&lt;/b&gt; (VARIOGRAM_NUGGET متر²، VARIOGRAM_SILL متر²، VARIOGRAM_RANGE متر؛ خطی: VARIOGRAM_SLOPE؛ توانی: VARIOGRAM_SCALE و VARIOGRAM_EXPONENT؛ همه اعداد اختیاری). خالی = برازش خودکار. آستانه شامل اثر قطعه‌ای است؛ دامنه، دامنهٔ عملی است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد همسایه‌ها&lt;/b&gt; (NEIGHBOURS، پیش‌فرض 16، ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد نقاط برای برازش واریوگرام&lt;/b&gt; (FIT_POINTS، پیش‌فرض 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد کلاس‌های فاصلهٔ تأخیر&lt;/b&gt; (NLAGS، پیش‌فرض 12) و &lt;b&gt;بیشینهٔ فاصلهٔ تأخیر&lt;/b&gt; (MAX_LAG، متر، پیش‌فرض 0 = خودکار: سه برابر فاصلهٔ معمول تا همسایهٔ NEIGHBOURS-ام، یعنی مقیاسی که کریجینگ محلی به کار می‌برد، تا اثر قطعه‌ای و شکل واریوگرام در فواصل کوتاه، که وزن‌ها و واریانس را تعیین می‌کنند، به‌خوبی نمونه‌برداری شوند؛ در این حالت سقف و دامنهٔ برازش‌شده همان مقیاس محلی را توصیف می‌کنند). برای برازش کلاسیک در مقیاس کل منطقه، مثلاً نصف محدوده را بدهید (Journel &amp;amp; Huijbregts 1978). اثر قطعه‌ای برازش‌شده برای پایداری عددی دست‌کم تا 1 % نیم‌واریانس (semivariance) در بیشینهٔ فاصلهٔ تأخیر بالا برده می‌شود (مدل‌های گوسی و توانی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط اعتبارسنجی متقابل&lt;/b&gt; (CV_POINTS، پیش‌فرض 0 = خاموش): حذف‌یکی روی این تعداد نقطهٔ تصادفی؛ ME، RMSE، میانگین خطای استانداردشده (ایده‌آل 0) و RMS خطای استانداردشده (ایده‌آل 1) را گزارش می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بذر تصادفی&lt;/b&gt; (SEED، پیش‌فرض 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی واریانس&lt;/b&gt; (OUTPUT_VARIANCE، GeoTIFF اختیاری): واریانس کریجینگ (متر²)، یا انحراف معیار (متر) با VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: NUGGET، SILL، RANGE (برای خطی/توانی NaN)، N_POINTS، VALID_CELLS، CV_ME، CV_RMSE، CV_MSE (بدون اعتبارسنجی متقابل NaN).&lt;/p&gt;</translation>
         </message>
         <message>
-            <source>&lt;li&gt;&lt;b&gt;Kriging type&lt;/b&gt; (KRIGING_TYPE, 0 ordinary (default), 1 universal with linear drift).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram model&lt;/b&gt; (VARIOGRAM, 0 linear, 1 power, 2 gaussian, 3 spherical (default), 4 exponential).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variogram parameters&lt;/b&gt; (VARIOGRAM_PARAMS, optional text, e.g. &lt;code&gt;nugget=0.01, sill=4, range=60&lt;/code&gt;; linear: slope, nugget; power: scale, exponent, nugget). Empty = fitted automatically. The sill includes the nugget; the range is the practical range.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Neighbours&lt;/b&gt; (NEIGHBOURS, default 16, ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Points for the variogram fit&lt;/b&gt; (FIT_POINTS, default 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Lag classes&lt;/b&gt; (NLAGS, default 12) and &lt;b&gt;maximum lag&lt;/b&gt; (MAX_LAG, m, default 0 = automatic: three times the typical distance to the NEIGHBOURS-th neighbour, the scale local kriging uses, so the nugget and the short-range shape that set the weights and the variance are well sampled; the fitted sill and range then describe that local scale). For a classical field-scale fit give e.g. half the extent (Journel &amp;amp; Huijbregts 1978). A fitted nugget is raised to at least 1 % of the semivariance at the maximum lag, for numerical stability (Gaussian and power models).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cross-validation points&lt;/b&gt; (CV_POINTS, default 0 = off): leave-one-out on this many random points; reports ME, RMSE, mean standardised error (ideal 0) and RMS standardised error (ideal 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Seed&lt;/b&gt; (SEED, default 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Variance output&lt;/b&gt; (OUTPUT_VARIANCE, optional GeoTIFF): kriging variance (m²), or standard deviation (m) with VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: NUGGET, SILL, RANGE (NaN for linear/power), N_POINTS, VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).&lt;/p&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;نوع کریجینگ&lt;/b&gt; (KRIGING_TYPE، 0 معمولی (پیش‌فرض)، 1 عام با روند خطی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مدل واریوگرام&lt;/b&gt; (VARIOGRAM، 0 خطی، 1 توانی، 2 گوسی، 3 کروی (پیش‌فرض)، 4 نمایی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;پارامترهای واریوگرام&lt;/b&gt; (VARIOGRAM_PARAMS، متن اختیاری، مثلاً &lt;code&gt;nugget=0.01, sill=4, range=60&lt;/code&gt;؛ خطی: slope، nugget؛ توانی: scale، exponent، nugget). خالی = برازش خودکار. سقف (sill) اثر قطعه‌ای (nugget) را در بر می‌گیرد؛ دامنه (range) همان دامنهٔ عملی است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد همسایه‌ها&lt;/b&gt; (NEIGHBOURS، پیش‌فرض 16، ≥ 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد نقاط برای برازش واریوگرام&lt;/b&gt; (FIT_POINTS، پیش‌فرض 3000).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تعداد کلاس‌های فاصلهٔ تأخیر&lt;/b&gt; (NLAGS، پیش‌فرض 12) و &lt;b&gt;بیشینهٔ فاصلهٔ تأخیر&lt;/b&gt; (MAX_LAG، متر، پیش‌فرض 0 = خودکار: سه برابر فاصلهٔ معمول تا همسایهٔ NEIGHBOURS-ام، یعنی مقیاسی که کریجینگ محلی به کار می‌برد، تا اثر قطعه‌ای و شکل واریوگرام در فواصل کوتاه، که وزن‌ها و واریانس را تعیین می‌کنند، به‌خوبی نمونه‌برداری شوند؛ در این حالت سقف و دامنهٔ برازش‌شده همان مقیاس محلی را توصیف می‌کنند). برای برازش کلاسیک در مقیاس کل منطقه، مثلاً نصف محدوده را بدهید (Journel &amp;amp; Huijbregts 1978). اثر قطعه‌ای برازش‌شده برای پایداری عددی دست‌کم تا 1 % نیم‌واریانس (semivariance) در بیشینهٔ فاصلهٔ تأخیر بالا برده می‌شود (مدل‌های گوسی و توانی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط اعتبارسنجی متقابل&lt;/b&gt; (CV_POINTS، پیش‌فرض 0 = خاموش): حذف‌یکی روی این تعداد نقطهٔ تصادفی؛ ME، RMSE، میانگین خطای استانداردشده (ایده‌آل 0) و RMS خطای استانداردشده (ایده‌آل 1) را گزارش می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بذر تصادفی&lt;/b&gt; (SEED، پیش‌فرض 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی واریانس&lt;/b&gt; (OUTPUT_VARIANCE، GeoTIFF اختیاری): واریانس کریجینگ (متر²)، یا انحراف معیار (متر) با VARIANCE_AS_STD.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: NUGGET، SILL، RANGE (برای خطی/توانی NaN)، N_POINTS، VALID_CELLS، CV_ME، CV_RMSE، CV_MSE (بدون اعتبارسنجی متقابل NaN).&lt;/p&gt;</translation>
+            <source>Variogram nugget (m², empty = fit)</source>
+            <translation>اثر قطعه‌ای واریوگرام (متر²، خالی = برازش)</translation>
+        </message>
+        <message>
+            <source>Variogram sill, nugget included (m², empty = fit)</source>
+            <translation>آستانهٔ واریوگرام با اثر قطعه‌ای (متر²، خالی = برازش)</translation>
+        </message>
+        <message>
+            <source>Variogram practical range (m, empty = fit)</source>
+            <translation>دامنهٔ عملی واریوگرام (متر، خالی = برازش)</translation>
+        </message>
+        <message>
+            <source>Linear variogram slope (m²/m)</source>
+            <translation>شیب واریوگرام خطی (متر²/متر)</translation>
+        </message>
+        <message>
+            <source>Power variogram scale</source>
+            <translation>مقیاس واریوگرام توانی</translation>
+        </message>
+        <message>
+            <source>Power variogram exponent (0–2)</source>
+            <translation>توان واریوگرام توانی (0–2)</translation>
+        </message>
+        <message>
+            <source>Variogram parameters as text (old form)</source>
+            <translation>پارامترهای واریوگرام به‌صورت متن (شکل قدیمی)</translation>
         </message>
     </context>
     <context>

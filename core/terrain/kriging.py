@@ -65,6 +65,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from ..coords import as_xyz
+from ..errors import InputError
 from ..progress import Monitor
 from .grid import GridSpec, check_memory, distance_mask, resolve_max_distance, row_blocks
 
@@ -178,6 +179,53 @@ def _bin_and_fit(d, g, used_lag, nlags, model, func, weight):
     return lags, semi, core._calculate_variogram_model(lags, semi, model, func, weight)
 
 
+def _resolve_lag(xy, sel, mode, max_lag, n_neighbours) -> Optional[float]:
+    """Return the maximum lag of a fit: local scale ('auto'), a value, or None ('half')."""
+    if mode == "auto":
+        n = xy.shape[0]
+        k = int(min(n - 1, max(2, n_neighbours)))
+        dk, _ = cKDTree(xy).query(xy[sel], k=k + 1)
+        used_lag = 3.0 * float(np.median(dk[:, -1]))
+        if not used_lag > 0:
+            raise ValueError("All points coincide; a variogram cannot be fitted.")
+        return used_lag
+    if mode == "value":
+        used_lag = float(max_lag)
+        if not math.isfinite(used_lag) or used_lag <= 0:
+            raise ValueError(f"max_lag must be > 0, got {max_lag}.")
+        return used_lag
+    return None
+
+
+def _sample_pairs(xy, z, sel, mode, used_lag):
+    """Return distances and semivariances ``½(z_i − z_j)²`` of the fitting pairs.
+
+    Pairs are every point within ``used_lag`` of each anchor ``sel`` when few enough,
+    otherwise every pair among the anchors (up to ``used_lag``; half the largest
+    distance when ``used_lag`` is None). Returns ``d, g, used_lag``.
+    """
+    n = xy.shape[0]
+    area = max(float(np.ptp(xy[:, 0])) * float(np.ptp(xy[:, 1])), 1e-12)
+    expected = n / area * math.pi * used_lag ** 2 if used_lag else np.inf
+    if mode in ("auto", "value") and expected <= 2000:
+        lists = cKDTree(xy).query_ball_point(xy[sel], used_lag)
+        counts = np.fromiter((len(v) for v in lists), np.int64, sel.size)
+        ii = np.repeat(sel, counts)
+        jj = (np.fromiter((j for v in lists for j in v), np.int64, int(counts.sum()))
+              if counts.sum() else np.empty(0, np.int64))
+        keep = jj != ii
+        ii, jj = ii[keep], jj[keep]
+        d = np.hypot(xy[ii, 0] - xy[jj, 0], xy[ii, 1] - xy[jj, 1])
+        return d, 0.5 * (z[ii] - z[jj]) ** 2, used_lag
+    from scipy.spatial.distance import pdist
+    d = pdist(xy[sel])
+    g = 0.5 * pdist(z[sel][:, None], metric="sqeuclidean")
+    if used_lag is None:
+        used_lag = 0.5 * float(d.max())
+    keep = d <= used_lag
+    return d[keep], g[keep], used_lag
+
+
 def fit_variogram(x, y, z, *, model: str = "spherical", fit_points: int = 3000,
                   nlags: int = 12, max_lag: Union[None, float, str] = "auto",
                   n_neighbours: int = 16, weight: bool = False, detrend: bool = False,
@@ -244,51 +292,21 @@ def fit_variogram(x, y, z, *, model: str = "spherical", fit_points: int = 3000,
     if mode not in ("auto", "half", "value", None):
         raise ValueError(f"max_lag must be 'auto', 'half', a distance or None; got "
                          f"{max_lag!r}.")
-    n_pairs = 0
     if mode is None:
         lags, semi, params = core._initialize_variogram_model(
             xy[sel], z[sel], model, None, func, nlags, weight, "euclidean")
         used_lag = None
         n_pairs = sel.size * (sel.size - 1) // 2
     else:
-        tree = None
-        if mode == "auto":
-            tree = cKDTree(xy)
-            k = int(min(n - 1, max(2, n_neighbours)))
-            dk, _ = tree.query(xy[sel], k=k + 1)
-            used_lag = 3.0 * float(np.median(dk[:, -1]))
-            if not used_lag > 0:
-                raise ValueError("All points coincide; a variogram cannot be fitted.")
-        elif mode == "value":
-            used_lag = float(max_lag)
-            if not math.isfinite(used_lag) or used_lag <= 0:
-                raise ValueError(f"max_lag must be > 0, got {max_lag}.")
-        else:
-            used_lag = None
-        area = max(float(np.ptp(x)) * float(np.ptp(y)), 1e-12)
-        expected = n / area * math.pi * used_lag ** 2 if used_lag else np.inf
-        if mode in ("auto", "value") and expected <= 2000:
-            tree = tree if tree is not None else cKDTree(xy)
-            lists = tree.query_ball_point(xy[sel], used_lag)
-            counts = np.fromiter((len(v) for v in lists), np.int64, sel.size)
-            ii = np.repeat(sel, counts)
-            jj = (np.fromiter((j for v in lists for j in v), np.int64, int(counts.sum()))
-                  if counts.sum() else np.empty(0, np.int64))
-            keep = jj != ii
-            ii, jj = ii[keep], jj[keep]
-            d = np.hypot(xy[ii, 0] - xy[jj, 0], xy[ii, 1] - xy[jj, 1])
-            g = 0.5 * (z[ii] - z[jj]) ** 2
-        else:
-            from scipy.spatial.distance import pdist
-            d = pdist(xy[sel])
-            g = 0.5 * pdist(z[sel][:, None], metric="sqeuclidean")
-            if used_lag is None:
-                used_lag = 0.5 * float(d.max())
-            keep = d <= used_lag
-            d, g = d[keep], g[keep]
+        used_lag = _resolve_lag(xy, sel, mode, max_lag, n_neighbours)
+        d, g, used_lag = _sample_pairs(xy, z, sel, mode, used_lag)
         if d.size < nlags:
             raise ValueError(f"Only {d.size} point pairs are closer than max_lag = "
                              f"{used_lag:g}; increase max_lag or fit_points.")
+        if not np.any(g > 0):
+            raise InputError("The heights do not vary between the sampled point pairs, so "
+                             "no variogram can be fitted; give the variogram parameters or "
+                             "use the IDW DTM.")
         n_pairs = int(d.size)
         lags, semi, params = _bin_and_fit(d, g, used_lag, nlags, model, func, weight)
     params = [float(v) for v in params]

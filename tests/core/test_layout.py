@@ -20,7 +20,7 @@ LONG_ALLOWED = {
     ("lidar/lsq.py", "fit_tiles"), ("lidar/lsq.py", "lsq_ground_filter"),
     ("lidar/noise.py", "flag_low_outliers"), ("lidar/slope.py", "_bounded_max_slope"),
     ("photogrammetry/gsd.py", "compute"), ("rectification/accuracy.py", "to_html"),
-    ("terrain/kriging.py", "fit_variogram"),
+
 }
 
 

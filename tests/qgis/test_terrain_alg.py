@@ -71,7 +71,7 @@ def test_kriging_dtm_variance_and_cv(qgis_processing, scene):
     # user-given variogram, universal kriging
     res2 = qgis_processing.run("geomatics:krigingdtm", {
         "INPUT": scene["laz"], "CELL_SIZE": 2.0, "KRIGING_TYPE": 1, "VARIOGRAM": 4,
-        "VARIOGRAM_PARAMS": "nugget=0.01, sill=5, range=40", "NEIGHBOURS": 12,
+        "VARIOGRAM_NUGGET": 0.01, "VARIOGRAM_SILL": 5, "VARIOGRAM_RANGE": 40, "NEIGHBOURS": 12,
         "OUTPUT": str(d / "uk.tif")})
     assert res2["NUGGET"] == pytest.approx(0.01) and res2["SILL"] == pytest.approx(5.0)
 

@@ -222,3 +222,27 @@ def test_legacy_class_text_and_enum_agree(qgis_processing, data, tmp_path):
         qgis_processing.run("geomatics:idwdtm", {
             "INPUT": data["laz"], "CLASSES": "2.7", "OUTPUT": str(tmp_path / "c.tif")})
     assert not (tmp_path / "c.tif").exists()
+
+
+@pytest.mark.parametrize("lang", ["ar", "fa"])
+def test_reports_in_the_requested_language_with_figures(qgis_processing, data, dtm, tmp_path,
+                                                        lang):
+    from geomatics_toolbox.core.reporting import translator
+    index = {"ar": 2, "fa": 3}[lang]
+    idw = tmp_path / "idw.html"
+    qgis_processing.run("geomatics:idwdtm", {
+        "INPUT": data["laz"], "OUTPUT": str(tmp_path / "i.tif"), "OUTPUT_HTML": str(idw),
+        "REPORT_LANGUAGE": index})
+    acc = tmp_path / "acc.html"
+    qgis_processing.run("geomatics:dtmaccuracy", {
+        "DTM": dtm, "CHECKPOINTS_CSV": data["csv"], "OUTPUT_HTML": str(acc),
+        "REPORT_LANGUAGE": index})
+    tr = translator(lang)
+    for path, figures, title in ((idw, ["hillshade"], "IDW DTM report"),
+                                 (acc, ["residual-map", "error-vs-height"],
+                                  "DTM accuracy against check points")):
+        html = path.read_text(encoding="utf-8")
+        assert f'lang="{lang}" dir="rtl"' in html and tr(title) in html
+        for fid in figures:
+            assert f'<figure id="{fid}">' in html
+        assert "Legend" not in html and tr("Legend") in html

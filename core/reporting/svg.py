@@ -1,0 +1,218 @@
+"""Small SVG building blocks for report figures (no plotting dependency).
+
+Every figure of a report is an inline SVG string made from these helpers: a raster
+image (PNG data URI), point symbols, axes, a colour legend, a scale bar and a north
+arrow. Text passed in must already be translated (the callers hold a translator);
+numbers and units are written left to right inside ``direction="ltr"`` text.
+
+Examples
+--------
+>>> svg = figure(200, 100, [scale_bar(10, 90, 50.0, 1.0, unit="m")])
+>>> svg.startswith("<svg")
+True
+"""
+from __future__ import annotations
+
+import base64
+import math
+import struct
+import zlib
+from typing import Callable, Iterable, Optional, Sequence, Tuple
+from xml.sax.saxutils import escape
+
+import numpy as np
+
+#: Diverging colours (blue - white - red), ColorBrewer RdBu reversed, 7 classes.
+DIVERGING = ("#2166ac", "#67a9cf", "#d1e5f0", "#f7f7f7", "#fddbc7", "#ef8a62", "#b2182b")
+NODATA_COLOUR = (255, 0, 255)
+FONT = 'font-family="sans-serif" font-size="11"'
+
+
+def esc(text) -> str:
+    """Escape text for SVG."""
+    return escape(str(text), {'"': "&quot;"})
+
+
+def figure(width: int, height: int, parts: Iterable[str], *, title: str = "") -> str:
+    """Return a complete ``<svg>`` element of ``width`` × ``height`` pixels."""
+    head = (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+            f'viewBox="0 0 {width} {height}" role="img">')
+    label = f"<title>{esc(title)}</title>" if title else ""
+    return head + label + "".join(parts) + "</svg>"
+
+
+def text(x: float, y: float, value, *, anchor: str = "start", size: int = 11,
+         ltr: bool = False, bold: bool = False) -> str:
+    """Return a ``<text>`` element; ``ltr`` for numbers, units and ids."""
+    extra = ' direction="ltr" unicode-bidi="embed"' if ltr else ""
+    weight = ' font-weight="bold"' if bold else ""
+    return (f'<text x="{x:.1f}" y="{y:.1f}" text-anchor="{anchor}" font-family="sans-serif" '
+            f'font-size="{size}"{weight}{extra}>{esc(value)}</text>')
+
+
+def png_data_uri(rgb: np.ndarray) -> str:
+    """Encode an ``(rows, cols, 3)`` uint8 array as a PNG ``data:`` URI (no dependency)."""
+    rgb = np.ascontiguousarray(rgb, dtype=np.uint8)
+    rows, cols = rgb.shape[:2]
+    raw = np.concatenate([np.zeros((rows, 1), np.uint8), rgb.reshape(rows, cols * 3)], axis=1)
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return (struct.pack(">I", len(data)) + kind + data
+                + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
+
+    png = (b"\x89PNG\r\n\x1a\n"
+           + chunk(b"IHDR", struct.pack(">IIBBBBB", cols, rows, 8, 2, 0, 0, 0))
+           + chunk(b"IDAT", zlib.compress(raw.tobytes(), 6)) + chunk(b"IEND", b""))
+    return "data:image/png;base64," + base64.b64encode(png).decode("ascii")
+
+
+def image(x: float, y: float, width: float, height: float, rgb: np.ndarray) -> str:
+    """Return an ``<image>`` showing ``rgb`` (pixelated, not smoothed)."""
+    return (f'<image x="{x:.1f}" y="{y:.1f}" width="{width:.1f}" height="{height:.1f}" '
+            f'preserveAspectRatio="none" style="image-rendering:pixelated" '
+            f'href="{png_data_uri(rgb)}"/>')
+
+
+def nice_length(max_length: float) -> float:
+    """Largest 1-2-5 × 10^k not above ``max_length`` (for scale bars and ticks)."""
+    if not max_length > 0:
+        return 0.0
+    base = 10.0 ** math.floor(math.log10(max_length))
+    return max(m * base for m in (1, 2, 5) if m * base <= max_length)
+
+
+def scale_bar(x: float, y: float, max_px: float, units_per_px: float, *,
+              unit: str = "m") -> str:
+    """Return a scale bar at ``(x, y)`` no longer than ``max_px`` pixels."""
+    length = nice_length(max_px * units_per_px)
+    if not length > 0:
+        return ""
+    px = length / units_per_px
+    half = px / 2
+    return (f'<g class="scale-bar"><rect x="{x:.1f}" y="{y:.1f}" width="{half:.1f}" '
+            f'height="5" fill="#222"/><rect x="{x + half:.1f}" y="{y:.1f}" '
+            f'width="{half:.1f}" height="5" fill="#fff" stroke="#222"/>'
+            + text(x, y - 3, "0", ltr=True, size=10)
+            + text(x + px, y - 3, f"{length:g} {unit}", anchor="end", ltr=True, size=10)
+            + "</g>")
+
+
+def north_arrow(x: float, y: float) -> str:
+    """Return a small north arrow with its tip at ``(x, y)``."""
+    return (f'<g class="north"><path d="M{x:.1f},{y:.1f} l6,16 l-6,-5 l-6,5 z" fill="#222"/>'
+            + text(x, y + 28, "N", anchor="middle", size=10, ltr=True) + "</g>")
+
+
+def legend(x: float, y: float, entries: Sequence[Tuple[str, str]], *, title: str = "",
+           shape: str = "rect") -> str:
+    """Return a legend: ``entries`` are ``(colour, label)``; ``shape`` rect or circle."""
+    parts = ['<g class="legend">']
+    if title:
+        parts.append(text(x, y, title, bold=True))
+        y += 6
+    for i, (colour, label) in enumerate(entries):
+        yy = y + 14 * i
+        if shape == "circle":
+            parts.append(f'<circle cx="{x + 5:.1f}" cy="{yy + 5:.1f}" r="4.5" '
+                         f'fill="{colour}" stroke="#333" stroke-width="0.6"/>')
+        else:
+            parts.append(f'<rect x="{x:.1f}" y="{yy:.1f}" width="10" height="10" '
+                         f'fill="{colour}" stroke="#333" stroke-width="0.6"/>')
+        parts.append(text(x + 15, yy + 9, label, ltr=True, size=10))
+    parts.append("</g>")
+    return "".join(parts)
+
+
+def class_edges(limit: float, n: int = len(DIVERGING)) -> np.ndarray:
+    """Symmetric class edges ``-limit … +limit`` for a diverging scale of ``n`` classes."""
+    limit = float(limit) if limit > 0 else 1.0
+    return np.linspace(-limit, limit, n + 1)
+
+
+def diverging_colours(values, limit: float) -> list:
+    """Colour of each value on the :data:`DIVERGING` scale symmetric about zero."""
+    edges = class_edges(limit)
+    idx = np.clip(np.searchsorted(edges, np.asarray(values, float), side="right") - 1,
+                  0, len(DIVERGING) - 1)
+    return [DIVERGING[i] for i in idx]
+
+
+def diverging_legend_entries(limit: float, unit: str = "m", digits: int = 2) -> list:
+    """``(colour, 'a … b unit')`` for each diverging class (outer classes open-ended)."""
+    edges = class_edges(limit)
+    out = []
+    for i, colour in enumerate(DIVERGING):
+        lo, hi = edges[i], edges[i + 1]
+        if i == 0:
+            label = f"< {hi:+.{digits}f} {unit}"
+        elif i == len(DIVERGING) - 1:
+            label = f"> {lo:+.{digits}f} {unit}"
+        else:
+            label = f"{lo:+.{digits}f} … {hi:+.{digits}f} {unit}"
+        out.append((colour, label))
+    return out
+
+
+def axes(box: Tuple[float, float, float, float], xlim: Tuple[float, float],
+         ylim: Tuple[float, float], *, xlabel: str, ylabel: str,
+         ticks: int = 5) -> Tuple[str, Callable, Callable]:
+    """Draw axes in ``box`` = (left, top, width, height) with ticks and labels.
+
+    Returns the markup and the two data-to-pixel functions ``(px(x), py(y))``.
+    """
+    left, top, width, height = box
+    x0, x1 = _padded(*xlim)
+    y0, y1 = _padded(*ylim)
+
+    def px(v):
+        return left + (np.asarray(v, float) - x0) / (x1 - x0) * width
+
+    def py(v):
+        return top + height - (np.asarray(v, float) - y0) / (y1 - y0) * height
+
+    parts = [f'<rect x="{left}" y="{top}" width="{width}" height="{height}" fill="none" '
+             'stroke="#444"/>']
+    for v in _ticks(x0, x1, ticks):
+        parts.append(f'<line x1="{px(v):.1f}" y1="{top + height}" x2="{px(v):.1f}" '
+                     f'y2="{top + height + 4}" stroke="#444"/>')
+        parts.append(text(float(px(v)), top + height + 15, f"{v:g}", anchor="middle",
+                          ltr=True, size=10))
+    for v in _ticks(y0, y1, ticks):
+        parts.append(f'<line x1="{left - 4}" y1="{py(v):.1f}" x2="{left}" y2="{py(v):.1f}" '
+                     'stroke="#444"/>')
+        parts.append(text(left - 6, float(py(v)) + 3, f"{v:g}", anchor="end", ltr=True,
+                          size=10))
+    parts.append(text(left + width / 2, top + height + 32, xlabel, anchor="middle"))
+    parts.append(f'<g transform="translate({left - 42},{top + height / 2}) rotate(-90)">'
+                 + text(0, 0, ylabel, anchor="middle") + "</g>")
+    return "".join(parts), px, py
+
+
+def _padded(lo: float, hi: float) -> Tuple[float, float]:
+    lo, hi = float(lo), float(hi)
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        return 0.0, 1.0
+    if hi <= lo:
+        return lo - 0.5, hi + 0.5
+    pad = 0.05 * (hi - lo)
+    return lo - pad, hi + pad
+
+
+def _ticks(lo: float, hi: float, n: int) -> np.ndarray:
+    step = nice_length((hi - lo) / max(n, 1)) or 1.0
+    if (hi - lo) / step > 2 * n:
+        step *= 2
+    first = math.ceil(lo / step) * step
+    return np.round(np.arange(first, hi + step * 1e-9, step), 10)
+
+
+def circles(xs, ys, colours: Sequence[str], *, r: float = 4.5,
+            titles: Optional[Sequence[str]] = None) -> str:
+    """Return filled circles with an optional tooltip each."""
+    parts = []
+    for i, (x, y, c) in enumerate(zip(np.asarray(xs, float), np.asarray(ys, float),
+                                      colours)):
+        tip = f"<title>{esc(titles[i])}</title>" if titles is not None else ""
+        parts.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{r}" fill="{c}" stroke="#222" '
+                     f'stroke-width="0.7">{tip}</circle>')
+    return "".join(parts)
