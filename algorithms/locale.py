@@ -12,4 +12,5 @@ def user_locale() -> str:
         name = settings.value("locale/userLocale", "") or QLocale().name()
     else:
         name = QLocale().name()
-    return (name or "en")[:2]
+    from ..core.reporting.i18n import normalise_lang
+    return normalise_lang(name)

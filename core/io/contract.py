@@ -25,6 +25,7 @@ import atexit
 import contextlib
 import os
 import signal
+import tempfile
 import threading
 import uuid
 from pathlib import Path
@@ -149,14 +150,27 @@ def check_paths(outputs: Mapping[str, Optional[PathLike]],
         seen[real] = name
         if real.is_dir():
             raise InputError(f"The output {name} ({path}) is a folder; give a file name.")
-        folder = real.parent
-        while not folder.exists() and folder != folder.parent:
-            folder = folder.parent
-        if not os.access(folder, os.W_OK | os.X_OK):
-            raise InputError(
-                f"The folder {folder} of the output {name} cannot be written; choose a "
-                "folder you can write to.")
+        _check_writable(real.parent, name)
     return outs
+
+
+def _check_writable(folder: Path, name: str) -> None:
+    """Probe the output folder (or its nearest existing parent) with a temporary file."""
+    while not folder.exists() and folder != folder.parent:
+        folder = folder.parent
+    reason = ""
+    if not folder.is_dir():
+        reason = "it is not a folder"
+    else:
+        try:
+            with tempfile.TemporaryFile(dir=folder, prefix=".probe" + TEMP_MARK):
+                pass
+        except OSError as exc:
+            reason = exc.strerror or str(exc)
+    if reason:
+        raise InputError(
+            f"The folder {folder} of the output {name} cannot be written ({reason}); "
+            "choose a folder you can write to. Nothing was written.")
 
 
 class OutputContract:

@@ -27,8 +27,10 @@ STRINGS_DIR = Path(__file__).resolve().parents[2] / "i18n" / "strings"
 
 def normalise_lang(lang) -> str:
     """Return the two-letter language code: ``fa_IR`` -> ``fa``, empty -> ``en``."""
-    text = str(lang or "en").strip().replace("-", "_")
-    return (text.split("_")[0] or "en").lower()
+    text = str(lang or "en").strip().replace("-", "_").split(".")[0]
+    code = (text.split("_")[0] or "en").lower()
+    # 'C' / 'POSIX' (headless runs) and anything that is not a language code -> English
+    return code if len(code) in (2, 3) and code.isalpha() and code != "c" else "en"
 
 
 def direction(lang) -> str:

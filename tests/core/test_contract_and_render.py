@@ -92,3 +92,16 @@ def test_render_rtl_translates_and_isolates():
     assert '<html lang="fa" dir="rtl">' in html
     assert '<bdi dir="ltr">x.laz</bdi>' in html and '<bdi dir="ltr">0.500</bdi>' in html
     assert "<script" not in render_html(Report("<script>x</script>"))
+
+
+def test_unwritable_output_folder_is_a_clear_error_before_anything_is_written(tmp_path):
+    # /proc refuses new files even for root (chmod does not stop root)
+    with pytest.raises(InputError, match=r"folder /proc .* cannot be written"):
+        OutputContract({"A": tmp_path / "a.txt", "B": "/proc/report.html"})
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_language_codes():
+    from geomatics_toolbox.core.reporting.i18n import normalise_lang
+    assert [normalise_lang(x) for x in ("C", "POSIX", "fa_IR", "ar-SA", "", None, "en_US.UTF-8")] \
+        == ["en", "en", "fa", "ar", "en", "en", "en"]
