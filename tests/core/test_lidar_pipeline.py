@@ -90,8 +90,17 @@ def test_failing_report_leaves_nothing(cloud, tmp_path):
     path, _ = cloud
     out = tmp_path / "o.las"
     before = path.read_bytes()
-    with pytest.raises(OSError):
+    # refused up front: the report folder cannot be written
+    with pytest.raises(ValueError, match="cannot be written"):
         classify_file(path, DUMMY, FilterOutputs(cloud=out, report="/proc/report.html"))
+    assert os.listdir(tmp_path) == [] and path.read_bytes() == before
+
+    # the report fails after the cloud was written: the cloud is not kept either
+    def broken(report):
+        raise OSError(28, "No space left on device")
+    with pytest.raises(OSError, match="No space left"):
+        classify_file(path, DUMMY, FilterOutputs(cloud=out, report=tmp_path / "r.html",
+                                                 render=broken))
     assert os.listdir(tmp_path) == [] and path.read_bytes() == before
 
 
