@@ -45,6 +45,33 @@ NUMBERS = (
 )
 
 
+def residual_style(errors) -> str:
+    """QML of a diverging graduated renderer on ``error`` (blue below, red above)."""
+    from qgis.core import (
+        QgsGraduatedSymbolRenderer,
+        QgsMarkerSymbol,
+        QgsRendererRange,
+        QgsVectorLayer,
+    )
+    from qgis.PyQt.QtXml import QDomDocument
+
+    from ..core.reporting import svg
+    err = np.asarray(errors, dtype=float)
+    limit = float(np.nanmax(np.abs(err))) if np.isfinite(err).any() else 1.0
+    edges = svg.class_edges(limit)
+    edges[0], edges[-1] = -1e9, 1e9
+    ranges = []
+    for i, (colour, label) in enumerate(svg.diverging_legend_entries(limit)):
+        symbol = QgsMarkerSymbol.createSimple({"name": "circle", "color": colour,
+                                              "size": "3", "outline_color": "#222222"})
+        ranges.append(QgsRendererRange(float(edges[i]), float(edges[i + 1]), symbol, label))
+    layer = QgsVectorLayer("Point?field=error:double", "residuals", "memory")
+    layer.setRenderer(QgsGraduatedSymbolRenderer("error", ranges))
+    doc = QDomDocument()
+    layer.exportNamedStyle(doc)
+    return doc.toString()
+
+
 class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
     """DTM accuracy against check points: statistics, residual layer, HTML report."""
 
@@ -269,4 +296,4 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
             "z_dtm": np.where(ok, res.z_dtm, np.nan), "error": err,
             "abs_error": np.abs(err),
             "status": [core_acc.STATUS_NAMES[int(s)] for s in res.status]},
-            crs=crs_text, layer_name="residuals")
+            crs=crs_text, layer_name="residuals", style_qml=residual_style(err))

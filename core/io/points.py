@@ -246,7 +246,7 @@ VECTOR_DRIVERS = {".gpkg": "GPKG", ".geojson": "GeoJSON", ".json": "GeoJSON"}
 
 
 def write_points_layer(path, x, y, z, columns, *, crs: Optional[str] = None,
-                       layer_name: str = "points") -> str:
+                       layer_name: str = "points", style_qml: Optional[str] = None) -> str:
     """Write 3-D points with attributes as a GeoPackage or GeoJSON file (OGR).
 
     Parameters
@@ -263,6 +263,9 @@ def write_points_layer(path, x, y, z, columns, *, crs: Optional[str] = None,
         'EPSG:n' or WKT of the coordinates.
     layer_name : str
         Layer name inside the file.
+    style_qml : str, optional
+        QGIS style (QML) stored as the layer's default style in the GeoPackage
+        ``layer_styles`` table, so QGIS draws the layer with it when it loads it.
 
     Returns
     -------
@@ -293,6 +296,8 @@ def write_points_layer(path, x, y, z, columns, *, crs: Optional[str] = None,
     try:
         _fill_points_layer(ds.CreateLayer(layer_name, srs, ogr.wkbPoint25D), x, y, z,
                            columns)
+        if style_qml and VECTOR_DRIVERS[ext] == "GPKG":
+            _write_gpkg_style(ds, layer_name, style_qml, f"{layer_name} style")
     finally:
         ds = None
     return path
@@ -336,3 +341,31 @@ def _fill_points_layer(layer, x, y, z, columns) -> None:
         feat.SetGeometry(geom)
         layer.CreateFeature(feat)
     layer.CommitTransaction()
+
+
+def _write_gpkg_style(ds, layer_name: str, qml: str, style_name: str) -> None:
+    """Store ``qml`` as the default style of ``layer_name`` (QGIS ``layer_styles`` table)."""
+    from osgeo import ogr
+
+    table = ds.GetLayerByName("layer_styles")
+    if table is None:
+        table = ds.CreateLayer("layer_styles", None, ogr.wkbNone)
+        for name, kind in (("f_table_catalog", ogr.OFTString), ("f_table_schema", ogr.OFTString),
+                           ("f_table_name", ogr.OFTString),
+                           ("f_geometry_column", ogr.OFTString),
+                           ("styleName", ogr.OFTString), ("styleQML", ogr.OFTString),
+                           ("styleSLD", ogr.OFTString), ("useAsDefault", ogr.OFTInteger),
+                           ("description", ogr.OFTString), ("owner", ogr.OFTString),
+                           ("ui", ogr.OFTString), ("update_time", ogr.OFTDateTime)):
+            field = ogr.FieldDefn(name, kind)
+            if name == "useAsDefault":
+                field.SetSubType(ogr.OFSTBoolean)
+            table.CreateField(field)
+    feat = ogr.Feature(table.GetLayerDefn())
+    for name, value in (("f_table_catalog", ""), ("f_table_schema", ""),
+                        ("f_table_name", layer_name), ("f_geometry_column", "geom"),
+                        ("styleName", style_name), ("styleQML", qml), ("styleSLD", ""),
+                        ("useAsDefault", 1), ("description", style_name), ("owner", ""),
+                        ("ui", "")):
+        feat.SetField(name, value)
+    table.CreateFeature(feat)

@@ -246,3 +246,16 @@ def test_reports_in_the_requested_language_with_figures(qgis_processing, data, d
         for fid in figures:
             assert f'<figure id="{fid}">' in html
         assert "Legend" not in html and tr("Legend") in html
+
+
+def test_residual_layer_styled_by_error(qgis_processing, data, dtm, tmp_path):
+    from qgis.core import QgsVectorLayer
+    res = qgis_processing.run("geomatics:dtmaccuracy", {
+        "DTM": dtm, "CHECKPOINTS_CSV": data["csv"], "OUTPUT": str(tmp_path / "s.gpkg")})
+    lyr = QgsVectorLayer(res["OUTPUT"], "s", "ogr")
+    assert lyr.isValid() and lyr.renderer().type() == "graduatedSymbol"
+    r = lyr.renderer()
+    assert r.classAttribute() == "error" and len(r.ranges()) == 7
+    colours = [rg.symbol().color().name() for rg in r.ranges()]
+    assert colours[0] == "#2166ac" and colours[-1] == "#b2182b"
+    assert lyr.featureCount() == 8 and not _leftovers(tmp_path)
