@@ -1,5 +1,7 @@
-"""Input helpers for terrain models: class-filtered points from LAS/LAZ, check points
-from CSV, and writing a DTM/variance GeoTIFF from a grid (any object with
+"""Point inputs and outputs for terrain models.
+
+Class-filtered points from LAS/LAZ, check points from CSV, the residual point layer
+(GeoPackage), and a DTM/variance GeoTIFF from a grid (any object with
 ``geotransform``, ``crs`` and ``nodata``, e.g. ``terrain.grid.GridSpec``).
 """
 from __future__ import annotations
@@ -91,6 +93,7 @@ class ClassPoints:
     class_counts: dict
 
     def __len__(self) -> int:
+        """Return the number of points."""
         return int(self.x.size)
 
 
@@ -161,63 +164,12 @@ def read_checkpoints_csv(path, *, x_field: str = "", y_field: str = "",
     header the columns are ``id, x, y, z`` (4+ columns) or ``x, y, z`` (3 columns).
     """
     path = os.fspath(path)
-    if not os.path.exists(path):
-        raise ValueError(f"Check point file not found: {path}.")
-    with open(path, encoding="utf-8-sig") as fh:
-        text = fh.read()
-    lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
-    if not lines:
-        raise ValueError(f"{path} holds no check points.")
-    sample = "\n".join(lines[:20])
-    try:
-        dialect = csv.Sniffer().sniff(sample, delimiters=",;\t ")
-        delim = dialect.delimiter
-    except csv.Error:
-        delim = ","
-    rows = [r for r in csv.reader(io.StringIO("\n".join(lines)), delimiter=delim,
-                                  skipinitialspace=True)]
-    rows = [[c.strip() for c in r if c.strip() != ""] if delim == " " else
-            [c.strip() for c in r] for r in rows]
-
-    def _isnum(s):
-        try:
-            float(s)
-            return True
-        except ValueError:
-            return False
-
+    rows = _delimited_rows(path)
     header = None
-    if not all(_isnum(c) for c in rows[0][-3:]):
+    if not all(_is_number(c) for c in rows[0][-3:]):
         header = [c.lower() for c in rows[0]]
         rows = rows[1:]
-
-    def _find(names, given, what):
-        if given:
-            if header is None or given.lower() not in header:
-                raise ValueError(f"Column {given!r} for {what} not found in {path} "
-                                 f"(columns: {header}).")
-            return header.index(given.lower())
-        for nm in names:
-            if header is not None and nm in header:
-                return header.index(nm)
-        return None
-
-    if header is not None:
-        ix = _find(_X_NAMES, x_field, "x")
-        iy = _find(_Y_NAMES, y_field, "y")
-        iz = _find(_Z_NAMES, z_field, "z")
-        iid = _find(_ID_NAMES, "", "id")
-        if ix is None or iy is None or iz is None:
-            raise ValueError(f"Cannot find x, y and z columns in {path}: header is {header}. "
-                             "Name them x, y, z (or easting, northing, height).")
-    else:
-        width = len(rows[0])
-        if width >= 4:
-            iid, ix, iy, iz = 0, 1, 2, 3
-        elif width == 3:
-            iid, ix, iy, iz = None, 0, 1, 2
-        else:
-            raise ValueError(f"{path}: expected at least 3 columns (x, y, z), got {width}.")
+    iid, ix, iy, iz = _xyz_columns(path, header, rows, (x_field, y_field, z_field))
     ids, xs, ys, zs = [], [], [], []
     for k, r in enumerate(rows, start=1):
         try:
@@ -225,12 +177,65 @@ def read_checkpoints_csv(path, *, x_field: str = "", y_field: str = "",
             ys.append(float(r[iy]))
             zs.append(float(r[iz]))
         except (ValueError, IndexError):
-            raise ValueError(f"{path}: row {k + (header is not None)} is not numeric x, y, z: "
+            raise InputError(f"{path}: row {k + (header is not None)} is not numeric x, y, z: "
                              f"{r}.") from None
         ids.append(r[iid] if iid is not None and iid < len(r) else str(k))
     if not xs:
-        raise ValueError(f"{path} holds no check points.")
+        raise InputError(f"{path} holds no check points.")
     return ids, np.array(xs), np.array(ys), np.array(zs)
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def _delimited_rows(path: str) -> List[List[str]]:
+    """Return the non-comment rows of a delimited text file, delimiter detected."""
+    if not os.path.exists(path):
+        raise InputError(f"Check point file not found: {path}.")
+    with open(path, encoding="utf-8-sig") as fh:
+        text = fh.read()
+    lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
+    if not lines:
+        raise InputError(f"{path} holds no check points.")
+    try:
+        delim = csv.Sniffer().sniff("\n".join(lines[:20]), delimiters=",;\t ").delimiter
+    except csv.Error:
+        delim = ","
+    rows = csv.reader(io.StringIO("\n".join(lines)), delimiter=delim, skipinitialspace=True)
+    if delim == " ":
+        return [[c.strip() for c in r if c.strip() != ""] for r in rows]
+    return [[c.strip() for c in r] for r in rows]
+
+
+def _xyz_columns(path: str, header, rows, fields) -> tuple:
+    """Return the ``(id, x, y, z)`` column indices (id may be None)."""
+    if header is None:
+        width = len(rows[0]) if rows else 0
+        if width >= 4:
+            return 0, 1, 2, 3
+        if width == 3:
+            return None, 0, 1, 2
+        raise InputError(f"{path}: expected at least 3 columns (x, y, z), got {width}.")
+
+    def find(names, given, what):
+        if given:
+            if given.lower() not in header:
+                raise InputError(f"Column {given!r} for {what} not found in {path} "
+                                 f"(columns: {header}).")
+            return header.index(given.lower())
+        return next((header.index(nm) for nm in names if nm in header), None)
+
+    ix, iy, iz = (find(n, g, w) for n, g, w in zip((_X_NAMES, _Y_NAMES, _Z_NAMES), fields,
+                                                    ("x", "y", "z")))
+    if ix is None or iy is None or iz is None:
+        raise InputError(f"Cannot find x, y and z columns in {path}: header is {header}. "
+                         "Name them x, y, z (or easting, northing, height).")
+    return find(_ID_NAMES, "", "id"), ix, iy, iz
 
 
 def write_grid(path, data: np.ndarray, grid, *, metadata=None,

@@ -147,29 +147,36 @@ class AccuracyResult:
 
     @property
     def error(self) -> np.ndarray:
+        """Return DTM minus check height (m) per check point."""
         return self.z_dtm - self.z_check
 
     @property
     def n_total(self) -> int:
+        """Return the number of check points read."""
         return int(self.status.size)
 
     @property
     def n_outside(self) -> int:
+        """Return the number of check points outside the DTM."""
         return int((self.status == OUTSIDE).sum())
 
     @property
     def n_nodata(self) -> int:
+        """Return the number of check points on DTM nodata."""
         return int((self.status == NODATA).sum())
 
     @property
     def n_used(self) -> int:
+        """Return the number of check points used in the statistics."""
         return int((self.status == OK).sum())
 
     @property
     def n_partial(self) -> int:
+        """Return the number of points interpolated from fewer than four cells."""
         return int(self.partial.sum())
 
     def summary(self) -> Dict[str, float]:
+        """Return the statistics with the point counts, as a flat dict."""
         out = dict(self.stats)
         out.update(n_total=self.n_total, n_outside=self.n_outside, n_nodata=self.n_nodata,
                    n_partial=self.n_partial)

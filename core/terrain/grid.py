@@ -62,18 +62,22 @@ class GridSpec:
 
     @property
     def xmax(self) -> float:
+        """Return the east edge of the grid."""
         return self.xmin + self.ncols * self.cell
 
     @property
     def ymin(self) -> float:
+        """Return the south edge of the grid."""
         return self.ymax - self.nrows * self.cell
 
     @property
     def shape(self) -> Tuple[int, int]:
+        """Return ``(rows, columns)``."""
         return (self.nrows, self.ncols)
 
     @property
     def size(self) -> int:
+        """Return the number of cells."""
         return self.nrows * self.ncols
 
     @property
@@ -117,6 +121,7 @@ class GridSpec:
         return row, col, inside
 
     def with_crs(self, crs: Optional[str]) -> "GridSpec":
+        """Return a copy of the grid with another CRS."""
         return replace(self, crs=crs)
 
     def describe(self) -> dict:
@@ -292,9 +297,10 @@ def default_max_distance(grid: GridSpec, n_points: int, *, factor: float = 5.0) 
 
 def resolve_max_distance(grid: GridSpec, n_points: int, max_distance: Optional[float],
                          *, fill: bool = False) -> Optional[float]:
-    """The gap distance a gridder uses: ``None`` (no mask) when ``fill``, the
-    :func:`default_max_distance` when ``max_distance`` is None, else ``max_distance``
-    after checking it is positive.
+    """Return the gap distance a gridder uses.
+
+    ``None`` (no mask) when ``fill``, the :func:`default_max_distance` when
+    ``max_distance`` is None, else ``max_distance`` after checking it is positive.
     """
     if fill:
         return None
@@ -308,7 +314,7 @@ def resolve_max_distance(grid: GridSpec, n_points: int, max_distance: Optional[f
 
 def distance_mask(tree, grid: GridSpec, max_distance: float, *, row0: int = 0,
                   row1: Optional[int] = None, workers: int = -1) -> np.ndarray:
-    """True for cells of rows ``row0:row1`` whose nearest point is within ``max_distance``.
+    """Return True for cells of rows ``row0:row1`` with a point within ``max_distance``.
 
     ``tree`` is a :class:`scipy.spatial.cKDTree` of the points' (x, y).
     """

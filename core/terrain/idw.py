@@ -31,6 +31,9 @@ the grid or the number of points.
 
 References
 ----------
+Sepehr journal (~2020, in Persian): DTM of a Zagros forest (Doroud, Lorestan) from
+airborne LiDAR by IDW (powers 2 and 3) and kriging, judged on check points — the
+spec this module implements (``shared/docs/seeds/02-slope-filter-idw-kriging.md``).
 Shepard, D. (1968). A two-dimensional interpolation function for irregularly-spaced
 data. Proc. 23rd ACM National Conference, 517–524. doi:10.1145/800186.810616
 
@@ -208,6 +211,7 @@ class IDW:
 
     @property
     def n_points(self) -> int:
+        """Return the number of data points."""
         return int(self.x.size)
 
     def _neighbours(self, q: np.ndarray):
