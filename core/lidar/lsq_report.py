@@ -55,8 +55,8 @@ def _stat_rows(rows) -> list:
 
 
 def _step(label: str):
-    if label == "fitting points":
-        return T("fitting points")
+    if label in ("fitting points", "all fitting points"):
+        return T(label)
     if label.startswith("iteration "):
         return T("iteration {k}", k=int(label.split()[1]))
     return label
@@ -116,7 +116,10 @@ def _tile_sections(res, report, order, tr) -> None:
 
 
 def _tile_map(res, sec, tr) -> None:
-    """Tile-status map (filled in by the reporting step)."""
+    """Add the tile-status map (converged, iteration cap, too few points, ...)."""
+    from .figures import tile_map
+    from .lsq import STATUS_NAMES
+    sec.add(tile_map(res.grid, res.tile_status, tr, STATUS_NAMES))
 
 
 def tile_csv(res) -> str:

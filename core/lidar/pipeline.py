@@ -664,4 +664,6 @@ def _crs_label(pd: PointData) -> str:
 
 
 def _class_map_section(rep: Report, run: ClassifyRun, tr) -> None:
-    """Plan-view class map (filled in by the reporting step)."""
+    """Add the plan-view class map (cell colour = majority class) of the output."""
+    from .figures import class_map
+    rep.section("Class map").add(class_map(run.points.x, run.points.y, run.classes, tr))

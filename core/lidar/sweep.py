@@ -18,9 +18,19 @@ from ..errors import InputError
 from ..io.contract import OutputContract
 from ..io.las import check_las_file, las_info, read_las, write_las_like
 from ..progress import Monitor
-from ..reporting import KeyValues, Paragraph, Report, T, Table, render_html, translator
+from ..reporting import (
+    Figure,
+    KeyValues,
+    Paragraph,
+    Report,
+    T,
+    Table,
+    render_html,
+    translator,
+)
 from . import slope as sf
-from .accuracy import ground_mask
+from .accuracy import error_codes, ground_mask
+from .figures import error_map, sweep_plot
 from .pipeline import (
     GROUND_CLASS,
     LAS_SUFFIXES,
@@ -46,6 +56,7 @@ class SweepSummary:
     settings: Dict[str, object]
     seconds: float = 0.0
     report: Optional[Report] = field(default=None, repr=False)
+    error_map: Optional[Figure] = field(default=None, repr=False)
 
 
 def _load_reference(reference, ground_classes, pd, mon: Monitor) -> np.ndarray:
@@ -157,9 +168,11 @@ def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_C
                         ground_classes=", ".join(map(str, ground_classes)))
         summary = SweepSummary(
             result=res, input=os.fspath(src),
-            reference=os.fspath(ref_in) if ref_in else "input classification",
+            reference=os.fspath(ref_in) if ref_in else _OWN_LABELS,
             n_points=len(pd), n_evaluated=int(np.count_nonzero(sel.candidates)),
             outputs=roles, settings=settings)
+        summary.error_map = error_map(pd.x, pd.y, error_codes(res.best_ground, ref),
+                                      translator(lang))
         if output:
             best = res.best_ground[sel.candidates]
             cls = assemble_classes(sel, np.where(best, 2, 1).astype(np.uint8),
@@ -177,6 +190,7 @@ def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_C
     return summary
 
 
+_OWN_LABELS = "input classification"
 _METRIC_LABELS = {"total": "lowest total error", "kappa": "highest kappa",
                   "type1": "lowest Type I error", "type2": "lowest Type II error"}
 
@@ -205,8 +219,9 @@ def sweep_report(summary: SweepSummary, *, lang: str = "en") -> Report:
         "{n} points, {e} filtered (the others — low outliers, non-last returns — count as "
         "non-ground); {g} reference ground points.", n=summary.n_points,
         e=summary.n_evaluated, g=res.n_reference_ground)))
+    ref = summary.reference
     rep.section("Inputs").add(KeyValues([("Point cloud", summary.input),
-                                         ("Reference", summary.reference)]))
+                                         ("Reference", T(ref) if ref == _OWN_LABELS else ref)]))
     rep.section("Best setting").add(KeyValues([
         ("Chosen by", T(_METRIC_LABELS[res.metric])), ("Radius r (m)", b.radius),
         ("Slope threshold θ (degrees)", b.slope), ("Height tolerance h (m)",
@@ -224,6 +239,8 @@ def sweep_report(summary: SweepSummary, *, lang: str = "en") -> Report:
     sec = rep.section("All settings")
     _sweep_figure(sec, res, translator(lang))
     sec.add(Table(headers, rows, digits=2))
+    if summary.error_map is not None:
+        rep.section("Error map of the best setting").add(summary.error_map)
     st = summary.settings
     rep.section("Parameters").add(KeyValues([
         ("Slope thresholds θ (degrees)", st["slopes_deg"]), ("Radii r (m)", st["radii_m"]),
@@ -231,14 +248,17 @@ def sweep_report(summary: SweepSummary, *, lang: str = "en") -> Report:
         ("Best by", T(_METRIC_LABELS[st["metric"]])),
         ("Returns filtered", T("all returns") if st["returns"] == "all"
          else T("last returns only")),
-        ("Low-outlier pre-filter", st["noise_prefilter"]), ("Mode", st["mode"]),
+        ("Low-outlier pre-filter", st["noise_prefilter"]), ("Mode", T(st["mode"])),
         ("Reference ground classes", st["ground_classes"])]))
     rep.section("Computation").add(KeyValues([("Total (s)", summary.seconds)], digits=1))
     return rep
 
 
 def _sweep_figure(sec, res, tr) -> None:
-    """Errors against θ (filled in by the reporting step)."""
+    """Add the plot of the errors against θ (best radius and height tolerance)."""
+    fig = sweep_plot(res.rows, res.best, tr)
+    if fig is not None:
+        sec.add(fig)
 
 
 

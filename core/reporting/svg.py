@@ -105,14 +105,17 @@ def north_arrow(x: float, y: float) -> str:
 
 def legend(x: float, y: float, entries: Sequence[Tuple[str, str]], *, title: str = "",
            shape: str = "rect") -> str:
-    """Return a legend: ``entries`` are ``(colour, label)``; ``shape`` rect or circle."""
+    """Return a legend: ``entries`` are ``(colour, label)``; ``shape`` rect, circle or line."""
     parts = ['<g class="legend">']
     if title:
         parts.append(text(x, y, title, bold=True))
         y += 6
     for i, (colour, label) in enumerate(entries):
         yy = y + 14 * i
-        if shape == "circle":
+        if shape == "line":
+            parts.append(f'<line x1="{x:.1f}" y1="{yy + 5:.1f}" x2="{x + 10:.1f}" '
+                         f'y2="{yy + 5:.1f}" stroke="{colour}" stroke-width="2"/>')
+        elif shape == "circle":
             parts.append(f'<circle cx="{x + 5:.1f}" cy="{yy + 5:.1f}" r="4.5" '
                          f'fill="{colour}" stroke="#333" stroke-width="0.6"/>')
         else:
@@ -216,3 +219,37 @@ def circles(xs, ys, colours: Sequence[str], *, r: float = 4.5,
         parts.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{r}" fill="{c}" stroke="#222" '
                      f'stroke-width="0.7">{tip}</circle>')
     return "".join(parts)
+
+
+def hex_rgb(colour: str) -> Tuple[int, int, int]:
+    """Return the ``(r, g, b)`` of ``#rrggbb``."""
+    c = colour.lstrip("#")
+    return int(c[0:2], 16), int(c[2:4], 16), int(c[4:6], 16)
+
+
+def category_image(x: float, y: float, width: float, height: float, codes: np.ndarray,
+                   colours: Sequence[str], *, empty: str = "#ffffff") -> str:
+    """Return an ``<image>`` of a categorical raster: ``codes[r, c]`` indexes ``colours``.
+
+    Negative codes (no data) take the ``empty`` colour; row 0 is drawn at the top.
+    """
+    palette = np.array([hex_rgb(c) for c in colours] + [hex_rgb(empty)], np.uint8)
+    idx = np.where(np.asarray(codes) < 0, len(colours), codes)
+    return image(x, y, width, height, palette[idx])
+
+
+def polyline(xs, ys, colour: str, *, width: float = 1.8) -> str:
+    """Return a polyline through the finite points ``(xs, ys)`` (pixels) with markers."""
+    xs, ys = np.asarray(xs, float), np.asarray(ys, float)
+    ok = np.isfinite(xs) & np.isfinite(ys)
+    pts = " ".join(f"{a:.1f},{b:.1f}" for a, b in zip(xs[ok], ys[ok]))
+    dots = "".join(f'<circle cx="{a:.1f}" cy="{b:.1f}" r="2.5" fill="{colour}"/>'
+                   for a, b in zip(xs[ok], ys[ok]))
+    return (f'<polyline points="{pts}" fill="none" stroke="{colour}" '
+            f'stroke-width="{width}"/>' + dots)
+
+
+def vline(x: float, top: float, bottom: float, *, colour: str = "#777777") -> str:
+    """Return a dashed vertical line at ``x`` (e.g. a chosen threshold)."""
+    return (f'<line x1="{x:.1f}" y1="{top:.1f}" x2="{x:.1f}" y2="{bottom:.1f}" '
+            f'stroke="{colour}" stroke-dasharray="4 3"/>')
