@@ -109,7 +109,7 @@ IMPROVED_DEFAULTS = dict(
 
 
 def n_coefficients(order: int) -> int:
-    """Number of polynomial coefficients: 3 for order 1, 6 for order 2."""
+    """Return the number of polynomial coefficients: 3 for order 1, 6 for order 2."""
     return {1: 3, 2: 6}[int(order)]
 
 
@@ -286,6 +286,7 @@ class TileGrid:
 
     @property
     def count(self) -> int:
+        """Number of occupied tiles."""
         return int(self.ix.size)
 
     @property
@@ -342,7 +343,7 @@ STATUS_NAMES = {0: "too few points", 1: "converged", 2: "iteration cap",
 def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20,
               tolerance=0.01, min_points=None, active=None, rejection="reweighted",
               start=None, mon=None) -> FitOutcome:
-    """Iterative one-sided least-squares fit of every tile at once (paper step 4).
+    """Fit every tile at once by iterative one-sided least squares (paper step 4).
 
     Parameters
     ----------
@@ -377,29 +378,73 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
     FitOutcome
     """
     mon = mon or Monitor()
-    cumulative = rejection == "cumulative"
-    p = n_coefficients(order)
-    min_points = 3 * p if min_points is None else max(int(min_points), p)
-    rows = np.arange(tid.size) if active is None else np.flatnonzero(active)
-    kept = np.zeros(tid.size, dtype=bool)
-    zt0 = np.zeros(ntiles)
-    cnt0 = np.bincount(tid[rows], minlength=ntiles)
-    # height origin per tile (numerical safety of the sums of squares)
-    s0 = np.bincount(tid[rows], weights=z[rows], minlength=ntiles)
-    zt0[cnt0 > 0] = s0[cnt0 > 0] / cnt0[cnt0 > 0]
-    status = np.zeros(ntiles, dtype=np.int8)
-    iterations = np.zeros(ntiles, dtype=np.int32)
-    coef = np.full((ntiles, p), np.nan)
-    per_row = np.ndim(threshold) > 0
-    if per_row:
-        threshold = np.asarray(threshold, dtype=np.float64)
-    else:
-        threshold = float(threshold)
+    fit = _TileFit(tid, u, v, z, ntiles, order=order, threshold=threshold,
+                   min_points=min_points, active=active, rejection=rejection)
+    fit.first_step(start)
+    for it in range(1, int(max_iterations) + 1):
+        # progress: share of tiles finished, blended with the iteration count
+        mon.step(0.5 * (it - 1) / max_iterations
+                 + 0.5 * (1 - fit.live.sum() / max(fit.n_fit_tiles, 1)))
+        if not fit.live.any():
+            break
+        fit.iterate(it, int(max_iterations), tolerance)
+    out = fit.outcome()
+    mon.update(1.0)
+    return out
 
-    def minmax(T, Z, cur):
+
+class _TileFit:
+    """State of the iterative fit of every tile (:func:`fit_tiles`).
+
+    The working pool is every active row; with no subset it is the caller's arrays
+    themselves (no copies: memory matters at tens of millions of points). Heights are
+    taken relative to a per-tile origin ``zt0`` (numerical safety of the sums of
+    squares) and the normal equations are updated incrementally as the kept set
+    changes.
+    """
+
+    def __init__(self, tid, u, v, z, ntiles, *, order, threshold, min_points, active,
+                 rejection):
+        self.ntiles, self.order = ntiles, order
+        self.cumulative = rejection == "cumulative"
+        self.p = p = n_coefficients(order)
+        self.min_points = 3 * p if min_points is None else max(int(min_points), p)
+        rows = np.arange(tid.size) if active is None else np.flatnonzero(active)
+        self.kept = np.zeros(tid.size, dtype=bool)
+        self.zt0 = np.zeros(ntiles)
+        self.cnt0 = cnt0 = np.bincount(tid[rows], minlength=ntiles)
+        s0 = np.bincount(tid[rows], weights=z[rows], minlength=ntiles)
+        self.zt0[cnt0 > 0] = s0[cnt0 > 0] / cnt0[cnt0 > 0]
+        self.status = np.zeros(ntiles, dtype=np.int8)
+        self.iterations = np.zeros(ntiles, dtype=np.int32)
+        self.coef = np.full((ntiles, p), np.nan)
+        self.per_row = np.ndim(threshold) > 0
+        threshold = (np.asarray(threshold, dtype=np.float64) if self.per_row
+                     else float(threshold))
+        # step 0: every tile (also the under-populated ones), all fitting rows
+        self.live = cnt0 >= self.min_points          # tiles still iterating
+        self.n_fit_tiles = int(self.live.sum())
+        if active is None:
+            self.pool = None
+            self.T, self.U, self.V = tid, u, v
+            self.Z = z - self.zt0[tid]
+        else:
+            self.pool = rows
+            self.T, self.U, self.V = tid[rows], u[rows], v[rows]
+            self.Z = z[rows] - self.zt0[self.T]
+        self.H = threshold if not self.per_row or self.pool is None else threshold[rows]
+
+    def _equations(self, sel=None):
+        T, U, V, Z = self.T, self.U, self.V, self.Z
+        if sel is not None:
+            T, U, V, Z = T[sel], U[sel], V[sel], Z[sel]
+        return _normal_equations(T, U, V, Z, None, self.ntiles, self.order)
+
+    def _minmax(self, cur):
         """Per-tile min and max of the kept heights (NaN where none)."""
-        lo = np.full(ntiles, np.nan)
-        hi = np.full(ntiles, np.nan)
+        T, Z, zt0 = self.T, self.Z, self.zt0
+        lo = np.full(self.ntiles, np.nan)
+        hi = np.full(self.ntiles, np.nan)
         if T.size:
             starts = np.flatnonzero(np.r_[True, T[1:] != T[:-1]])
             present = T[starts]
@@ -417,118 +462,116 @@ def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20
             hi[present[ok]] = mx[ok] + zt0[present[ok]]
         return lo, hi
 
-    def stats_from(cnt, sz, szz, lo, hi):
-        st = np.full((ntiles, 5), np.nan)
+    def _stats(self, cnt, sz, szz, cur):
+        """Per-tile count, min, max, mean, std of the kept heights."""
+        lo, hi = self._minmax(cur)
+        st = np.full((self.ntiles, 5), np.nan)
         st[:, 0] = cnt
         has = cnt > 0
         mean = sz[has] / cnt[has]
         st[has, 1] = lo[has]
         st[has, 2] = hi[has]
-        st[has, 3] = mean + zt0[has]
+        st[has, 3] = mean + self.zt0[has]
         st[has, 4] = np.sqrt(np.maximum(szz[has] / cnt[has] - mean ** 2, 0.0))
         return st
 
-    # step 0: every tile (also the under-populated ones), all fitting rows.
-    # The working pool is every active row; with no subset it is the caller's arrays
-    # themselves (no copies: memory matters at tens of millions of points).
-    live = cnt0 >= min_points               # tiles still iterating
-    n_fit_tiles = int(live.sum())
-    if active is None:
-        pool = None
-        T, U, V = tid, u, v
-        Z = z - zt0[tid]
-    else:
-        pool = rows
-        T, U, V = tid[pool], u[pool], v[pool]
-        Z = z[pool] - zt0[T]
-    del rows
-    N0, r0, szz0 = _normal_equations(T, U, V, Z, None, ntiles, order)
-    st0 = stats_from(N0[:, 0, 0], r0[:, 0], szz0, *minmax(T, Z, None))
-    steps = [st0]
-    agg = [_aggregate(st0, cnt0 > 0, "all fitting points", active_tiles=n_fit_tiles)]
-    prev = st0[:, 1:5]
-    H = threshold if not per_row else (threshold if pool is None else threshold[pool])
-    if start is None:
-        cur = np.ones(T.size, dtype=bool)   # kept set within the pool
-        N, r, szz = N0, r0, szz0
-    else:
-        cur = np.asarray(start, dtype=bool)
-        cur = cur.copy() if pool is None else cur[pool]
-        N, r, szz = _normal_equations(T[cur], U[cur], V[cur], Z[cur], None, ntiles, order)
-    for it in range(1, int(max_iterations) + 1):
-        # progress: share of tiles finished, blended with the iteration count
-        mon.step(0.5 * (it - 1) / max_iterations
-                 + 0.5 * (1 - live.sum() / max(n_fit_tiles, 1)))
-        if not live.any():
-            break
-        new_coef, solved = _solve(N, r, live & (N[:, 0, 0] >= p))
+    def first_step(self, start) -> None:
+        """Record step 0 (all fitting rows) and the sums of the first kept set."""
+        N0, r0, szz0 = self._equations()
+        st0 = self._stats(N0[:, 0, 0], r0[:, 0], szz0, None)
+        self.steps = [st0]
+        self.agg = [_aggregate(st0, self.cnt0 > 0, "all fitting points",
+                               active_tiles=self.n_fit_tiles)]
+        self.prev = st0[:, 1:5]
+        if start is None:
+            self.cur = np.ones(self.T.size, dtype=bool)   # kept set within the pool
+            self.N, self.r, self.szz = N0, r0, szz0
+        else:
+            cur = np.asarray(start, dtype=bool)
+            self.cur = cur.copy() if self.pool is None else cur[self.pool]
+            self.N, self.r, self.szz = self._equations(self.cur)
+
+    def iterate(self, it: int, max_iterations: int, tolerance: float) -> None:
+        """Fit every live tile once, update its kept set, statistics and status."""
+        new_coef, solved = _solve(self.N, self.r, self.live & (self.N[:, 0, 0] >= self.p))
         # a tile that cannot be solved any more keeps its previous surface
-        lost = live & ~solved
-        status[lost & (iterations > 0)] = 3
-        status[lost & (iterations == 0)] = 0
-        live &= solved
-        coef[live] = new_coef[live]
-        iterations[live] += 1
-        ok = _within(coef, T, U, V, Z, H, order)
-        if cumulative:
-            ok &= cur                       # rows once rejected stay out
+        lost = self.live & ~solved
+        self.status[lost & (self.iterations > 0)] = 3
+        self.status[lost & (self.iterations == 0)] = 0
+        self.live &= solved
+        self.coef[self.live] = new_coef[self.live]
+        self.iterations[self.live] += 1
+        self._update_kept()
+        self._record(it, max_iterations, tolerance, lost)
+        self._compact()
+
+    def _update_kept(self) -> None:
+        ok = _within(self.coef, self.T, self.U, self.V, self.Z, self.H, self.order)
+        if self.cumulative:
+            ok &= self.cur                  # rows once rejected stay out
         # (re-weighted: W = diag(v <= T) from every row's residual.) Rows of tiles
         # that have stopped (or never started) keep their kept flag.
-        act = live.take(T)
-        new = np.where(act, ok, cur)
-        del ok, act
+        new = np.where(self.live.take(self.T), ok, self.cur)
+        del ok
         # the kept set changed by a few rows: update the sums incrementally
-        for sel, sign in ((new & ~cur, 1.0), (cur & ~new, -1.0)):
+        for sel, sign in ((new & ~self.cur, 1.0), (self.cur & ~new, -1.0)):
             if sel.any():
-                dN, dr, dszz = _normal_equations(T[sel], U[sel], V[sel], Z[sel], None,
-                                                 ntiles, order)
-                N += sign * dN
-                r += sign * dr
-                szz += sign * dszz
+                dN, dr, dszz = self._equations(sel)
+                self.N += sign * dN
+                self.r += sign * dr
+                self.szz += sign * dszz
             del sel
-        cur = new
-        cnt = np.rint(N[:, 0, 0])
-        st = stats_from(cnt, r[:, 0], szz, *minmax(T, Z, cur))
-        st[~live] = steps[-1][~live]        # finished tiles keep their last statistics
+        self.cur = new
+
+    def _record(self, it, max_iterations, tolerance, lost) -> None:
+        live = self.live
+        cnt = np.rint(self.N[:, 0, 0])
+        st = self._stats(cnt, self.r[:, 0], self.szz, self.cur)
+        st[~live] = self.steps[-1][~live]   # finished tiles keep their last statistics
         now = st[:, 1:5]
-        same = np.all(np.abs(now - prev) < tolerance, axis=1)
-        prev = now
-        steps.append(st)
-        agg.append(_aggregate(st, cnt0 > 0, f"iteration {it}", active_tiles=int(live.sum())))
+        same = np.all(np.abs(now - self.prev) < tolerance, axis=1)
+        self.prev = now
+        self.steps.append(st)
+        self.agg.append(_aggregate(st, self.cnt0 > 0, f"iteration {it}",
+                                   active_tiles=int(live.sum())))
         conv = live & same
-        status[conv] = 1
-        small = live & (cnt < p)            # too few kept points left: stop here
-        status[small] = 3
+        self.status[conv] = 1
+        small = live & (cnt < self.p)       # too few kept points left: stop here
+        self.status[small] = 3
         done = conv | small | lost
-        if it == int(max_iterations):
-            status[live & ~done] = 2
+        if it == max_iterations:
+            self.status[live & ~done] = 2
             done |= live
         live &= ~done
-        # compact the pool once most of its rows belong to finished tiles
-        stay = live.take(T)
-        if stay.sum() < 0.5 * T.size:
-            fin = ~stay
-            if pool is None:
-                kept[fin & cur] = True
-                pool = np.flatnonzero(stay)
-            else:
-                kept[pool[fin & cur]] = True
-                pool = pool[stay]
-            T, U, V, Z, cur = T[stay], U[stay], V[stay], Z[stay], cur[stay]
-            if per_row:
-                H = H[stay]
-        del stay
-    if pool is None:
-        kept |= cur
-    else:
-        kept[pool[cur]] = True
-    coef_out = coef.copy()
-    # z was fitted relative to zt0: move it into the constant term
-    coef_out[:, 0] = coef_out[:, 0] + zt0
-    coef_out[status == 0] = np.nan
-    stats = np.stack(steps)
-    mon.update(1.0)
-    return FitOutcome(coef_out, status, iterations, cnt0, stats, agg, kept)
+
+    def _compact(self) -> None:
+        """Drop the rows of finished tiles once they are most of the pool."""
+        stay = self.live.take(self.T)
+        if stay.sum() >= 0.5 * self.T.size:
+            return
+        fin = ~stay
+        if self.pool is None:
+            self.kept[fin & self.cur] = True
+            self.pool = np.flatnonzero(stay)
+        else:
+            self.kept[self.pool[fin & self.cur]] = True
+            self.pool = self.pool[stay]
+        self.T, self.U, self.V = self.T[stay], self.U[stay], self.V[stay]
+        self.Z, self.cur = self.Z[stay], self.cur[stay]
+        if self.per_row:
+            self.H = self.H[stay]
+
+    def outcome(self) -> FitOutcome:
+        """Return the :class:`FitOutcome` (coefficients with ``zt0`` moved into b0)."""
+        if self.pool is None:
+            self.kept |= self.cur
+        else:
+            self.kept[self.pool[self.cur]] = True
+        coef_out = self.coef.copy()
+        coef_out[:, 0] = coef_out[:, 0] + self.zt0
+        coef_out[self.status == 0] = np.nan
+        return FitOutcome(coef_out, self.status, self.iterations, self.cnt0,
+                          np.stack(self.steps), self.agg, self.kept)
 
 
 def _aggregate(st, present, label, active_tiles=None) -> dict:
@@ -626,7 +669,7 @@ class LsqResult:
         return rows
 
     def status_counts(self) -> Dict[str, int]:
-        """Number of tiles per status name."""
+        """Return the number of tiles per status name."""
         vals, cnt = np.unique(self.tile_status, return_counts=True)
         return {STATUS_NAMES[int(k)]: int(c) for k, c in zip(vals, cnt)}
 
@@ -740,66 +783,24 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
     ----------
     x, y, z : array_like, shape (n,)
         Coordinates in a projected CRS, metres. Must be finite and non-empty.
-    order : {1, 2}, default 2
-        Polynomial order (order 2 beat order 1 on every sample of the paper).
-    tile_size : float, default 50.0
-        Square tile side, metres. Must exceed the largest building so that every
-        tile holds ground (paper: 100 m for large buildings, 50 m for small ones).
-    threshold : float, default 0.5
-        ``T`` in metres: rejection (``v > T``) and classification
-        (``z ≤ ẑ + T``) threshold; 0.5–1.0 m, larger on steeper terrain.
-    mode : {"faithful", "improved"}, default "faithful"
-        ``"faithful"`` = the paper. ``"improved"`` = ours (beyond the paper): the
-        low-outlier pre-filter; a coarse-to-fine cascade of tile sizes
-        (``levels`` × ``tile_size``: 100, 50, 25, 12.5 m by default), each level
-        fitted on overlapping windows (each tile grown by ``overlap`` × its size)
-        and started from the ground of the previous level (the fit may re-admit
-        points, so the cascade can recover ground a coarse level lost); a
-        slope-adapted threshold ``T + min(slope_factor·|∇ẑ|, slope_cap)`` for
-        rejection and classification. Defaults in :data:`IMPROVED_DEFAULTS`, one
-        parameter set chosen on the four ISPRS samples (no held-out data: see the
-        benchmark for each idea's measured effect). Under-populated tiles always
-        borrow their neighbours' surfaces in this mode.
-    max_iterations : int, optional
-        Cap on fits per tile. Default 5 in faithful mode — the paper's Tables 1–2
-        run five iterations, its stopping rule firing at iteration 4–5; on
-        terrain a polynomial cannot follow, one-sided rejection keeps lowering
-        the surface if iterated much longer (measured in the benchmark).
-    tolerance : float, default 0.01
-        Metres. A tile stops when ZMin, ZMax, ZMean and σ of its kept heights all
-        change by less than this between consecutive iterations.
-    subset_size : int, optional
-        Fit on at most this many random points per tile (paper: 5000); all points
-        are classified. None (default) fits every point.
-    seed : int, default 0
-        Seed of the random subset.
-    min_points : int, optional
-        Tiles with fewer fitting points get no surface of their own (default
-        ``3 × p``: 9 for order 1, 18 for order 2).
-    sparse_tiles : {"borrow", "unclassified"}, default "borrow"
-        What under-populated tiles do: use the nearest fitted tile's surface, or
-        leave their points in class 0.
-    noise : bool, optional
-        Run :func:`~.noise.flag_low_outliers` first (class 7, excluded from the
-        fit). Default: off in faithful mode, on in improved mode.
-    noise_radius, noise_threshold : float, default 5.0 and 1.0
-        Metres; ``radius`` and ``threshold`` of the pre-filter.
-    rejection : {"reweighted", "cumulative"}, default "reweighted"
-        ``"reweighted"``: every iteration ``W = diag(v ≤ T)`` is recomputed from
-        the residuals of all fitting points of the tile (the paper's
-        ``Δ = (BᵀWB)⁻¹BᵀWF`` with 0/1 weights: a point dropped earlier can come
-        back when the surface moves); ``"cumulative"``: a dropped point stays out.
-        The two differ by less than 0.5 point of total error on the ISPRS samples.
+    order, tile_size, threshold, mode, max_iterations, tolerance, subset_size, seed
+        See :class:`LsqOptions` (defaults 2, 50 m, 0.5 m, ``"faithful"``, 5, 0.01 m,
+        all points, 0).
+    min_points, sparse_tiles, rejection
+        See :class:`LsqOptions`.
+    noise, noise_radius, noise_threshold
+        The low-outlier pre-filter (:func:`~.noise.flag_low_outliers`, class 7, off
+        in faithful mode by default), its cell and depth in metres.
     levels, overlap, slope_factor, slope_cap, blend : optional
-        Improved-mode options (see ``mode``; ``blend=True`` blends the four
-        surrounding tile surfaces bilinearly instead of using the point's own
-        tile — seamless, but measured worse at cliffs); ignored in faithful mode.
+        Improved-mode options (described under :class:`LsqOptions`); ignored in
+        faithful mode.
     progress, cancel : callable, optional
         ``progress(fraction)``, ``cancel() -> bool`` (checked every iteration).
 
     Returns
     -------
     LsqResult
+        Classes, surface, thresholds, tiles and their iteration statistics.
 
     Raises
     ------
@@ -822,35 +823,21 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
     True
     """
     t_start = time.perf_counter()
+    improved = mode == "improved"
     if max_iterations is None:
-        max_iterations = (FAITHFUL_MAX_ITERATIONS if mode != "improved"
-                          else IMPROVED_DEFAULTS["max_iterations"])
+        max_iterations = (IMPROVED_DEFAULTS["max_iterations"] if improved
+                          else FAITHFUL_MAX_ITERATIONS)
     x, y, z = _validate(x, y, z, order, tile_size, threshold, max_iterations, tolerance,
                         subset_size, mode, sparse_tiles, rejection)
     order = int(order)
-    p = n_coefficients(order)
     mon = Monitor(progress, cancel)
-    improved = mode == "improved"
     if noise is None:
         noise = bool(IMPROVED_DEFAULTS["noise"]) if improved else False
-    n = x.size
     timings = {}
-    cls = np.full(n, OTHER, dtype=np.uint8)
-    is_noise = np.zeros(n, dtype=bool)
-    t0 = time.perf_counter()
-    if noise:
-        is_noise = flag_low_outliers(x, y, z, radius=noise_radius, threshold=noise_threshold,
-                                     progress=mon.sub(0.0, 0.15).update, cancel=cancel)
-        timings["noise_filter"] = time.perf_counter() - t0
-    mon.step(0.15)
-    n_fit = n - int(is_noise.sum())
-    # None = every point (saves an index array of n entries on large clouds)
-    fit_pts = None if n_fit == n else np.flatnonzero(~is_noise)
-    if n_fit < p:
-        raise ValueError(f"Too few points: only {n_fit} point(s) are left for fitting "
-                         f"and an order-{order} surface needs at least {p} in a tile. Use "
-                         "ORDER 1, a larger cloud, or switch the noise pre-filter off.")
+    is_noise, fit_pts = _fit_points(x, y, z, order, noise, noise_radius, noise_threshold,
+                                    mon, timings)
     x0, y0 = float(x.min()), float(y.min())
+    p = n_coefficients(order)
     params = dict(mode=mode, order=order, tile_size=float(tile_size),
                   threshold=float(threshold), max_iterations=int(max_iterations),
                   tolerance=float(tolerance), subset_size=subset_size, seed=seed,
@@ -858,40 +845,72 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
                   sparse_tiles=sparse_tiles, rejection=rejection, noise=bool(noise),
                   noise_radius=float(noise_radius), noise_threshold=float(noise_threshold),
                   origin=(x0, y0))
+    common = (x, y, z, fit_pts, x0, y0, order, float(tile_size), float(threshold),
+              max_iterations, tolerance, subset_size, seed, min_points, sparse_tiles)
     if not improved:
-        res = _faithful(x, y, z, fit_pts, x0, y0, order, float(tile_size), float(threshold),
-                        max_iterations, tolerance, subset_size, seed, min_points,
-                        sparse_tiles, rejection, mon.sub(0.15, 1.0), timings)
+        res = _faithful(*common, rejection, mon.sub(0.15, 1.0), timings)
     else:
-        lv = tuple(IMPROVED_DEFAULTS["levels"] if levels is None else levels)
-        ov = float(IMPROVED_DEFAULTS["overlap"] if overlap is None else overlap)
-        sf = float(IMPROVED_DEFAULTS["slope_factor"] if slope_factor is None
-                   else slope_factor)
-        cap = float(IMPROVED_DEFAULTS["slope_cap"] if slope_cap is None else slope_cap)
-        bl = bool(IMPROVED_DEFAULTS["blend"] if blend is None else blend)
-        if not lv or any((not np.isfinite(f)) or f <= 0 for f in lv):
-            raise ValueError(f"levels must be positive fractions of tile_size, got {lv}.")
-        if not (0 <= ov <= 2):
-            raise ValueError(f"overlap must be between 0 and 2 (fraction of a tile), got {ov}.")
-        if not np.isfinite(sf) or sf < 0:
-            raise ValueError(f"slope_factor must be ≥ 0, got {sf}.")
-        if not (cap >= 0):
-            raise ValueError(f"slope_cap must be ≥ 0 metres, got {cap}.")
-        params.update(levels=lv, overlap=ov, slope_factor=sf, slope_cap=cap, blend=bl)
-        res = _improved(x, y, z, fit_pts, x0, y0, order, float(tile_size), float(threshold),
-                        max_iterations, tolerance, subset_size, seed, min_points,
-                        sparse_tiles, lv, ov, sf, cap, bl, rejection, mon.sub(0.15, 1.0),
-                        timings)
-    ground, surface, thr, extra = res
+        opts = _improved_options(levels, overlap, slope_factor, slope_cap, blend)
+        params.update(opts)
+        res = _improved(*common, *opts.values(), rejection, mon.sub(0.15, 1.0), timings)
+    cls = _classes(res[0], res[1], is_noise)
+    total = time.perf_counter() - t_start
+    timings["total"] = total
+    timings["points_per_second"] = x.size / total if total > 0 else float("inf")
+    mon.update(1.0)
+    return LsqResult(classification=cls, surface=res[1], threshold=res[2], params=params,
+                     timings=timings, **res[3])
+
+
+def _fit_points(x, y, z, order, noise, noise_radius, noise_threshold, mon, timings):
+    """Run the optional low-outlier pre-filter; return its flags and the fitting rows.
+
+    The fitting rows are None when every point fits (saves an index array of n
+    entries on large clouds).
+    """
+    n = x.size
+    is_noise = np.zeros(n, dtype=bool)
+    t0 = time.perf_counter()
+    if noise:
+        is_noise = flag_low_outliers(x, y, z, radius=noise_radius, threshold=noise_threshold,
+                                     progress=mon.sub(0.0, 0.15).update, cancel=mon.cancelled)
+        timings["noise_filter"] = time.perf_counter() - t0
+    mon.step(0.15)
+    n_fit = n - int(is_noise.sum())
+    p = n_coefficients(order)
+    if n_fit < p:
+        raise ValueError(f"Too few points: only {n_fit} point(s) are left for fitting "
+                         f"and an order-{order} surface needs at least {p} in a tile. Use "
+                         "ORDER 1, a larger cloud, or switch the noise pre-filter off.")
+    return is_noise, (None if n_fit == n else np.flatnonzero(~is_noise))
+
+
+def _improved_options(levels, overlap, slope_factor, slope_cap, blend) -> dict:
+    """Check the improved-mode options (None = :data:`IMPROVED_DEFAULTS`), in order."""
+    d = IMPROVED_DEFAULTS
+    lv = tuple(d["levels"] if levels is None else levels)
+    ov = float(d["overlap"] if overlap is None else overlap)
+    sf = float(d["slope_factor"] if slope_factor is None else slope_factor)
+    cap = float(d["slope_cap"] if slope_cap is None else slope_cap)
+    bl = bool(d["blend"] if blend is None else blend)
+    if not lv or any((not np.isfinite(f)) or f <= 0 for f in lv):
+        raise ValueError(f"levels must be positive fractions of tile_size, got {lv}.")
+    if not (0 <= ov <= 2):
+        raise ValueError(f"overlap must be between 0 and 2 (fraction of a tile), got {ov}.")
+    if not np.isfinite(sf) or sf < 0:
+        raise ValueError(f"slope_factor must be ≥ 0, got {sf}.")
+    if not (cap >= 0):
+        raise ValueError(f"slope_cap must be ≥ 0 metres, got {cap}.")
+    return dict(levels=lv, overlap=ov, slope_factor=sf, slope_cap=cap, blend=bl)
+
+
+def _classes(ground, surface, is_noise) -> np.ndarray:
+    """ASPRS classes: 2 ground, 1 other, 0 without surface, 7 low noise."""
+    cls = np.full(ground.size, OTHER, dtype=np.uint8)
     cls[ground] = GROUND
     cls[np.isnan(surface) & ~is_noise] = UNCLASSIFIED
     cls[is_noise] = NOISE
-    total = time.perf_counter() - t_start
-    timings["total"] = total
-    timings["points_per_second"] = n / total if total > 0 else float("inf")
-    mon.update(1.0)
-    return LsqResult(classification=cls, surface=surface, threshold=thr, params=params,
-                     timings=timings, **extra)
+    return cls
 
 
 def _too_few(order, min_points, npoints, n) -> ValueError:
@@ -1112,10 +1131,63 @@ def _improved(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterati
 # ============================================================================ pipeline object
 @dataclass
 class LsqOptions:
-    """Options of :class:`LsqFilter` (see :func:`lsq_ground_filter` for each).
+    """Options of :class:`LsqFilter` and :func:`lsq_ground_filter`.
 
     The low-outlier pre-filter is the pipeline's
     (:class:`~.pipeline.SelectionOptions`), not an option here.
+
+    Attributes
+    ----------
+    order : {1, 2}, default 2
+        Polynomial order (order 2 beat order 1 on every sample of the paper).
+    tile_size : float, default 50.0
+        Square tile side, metres. Must exceed the largest building so that every
+        tile holds ground (paper: 100 m for large buildings, 50 m for small ones).
+    threshold : float, default 0.5
+        ``T`` in metres: rejection (``v > T``) and classification
+        (``z ≤ ẑ + T``) threshold; 0.5–1.0 m, larger on steeper terrain.
+    mode : {"faithful", "improved"}, default "faithful"
+        ``"faithful"`` = the paper. ``"improved"`` = ours (beyond the paper): the
+        low-outlier pre-filter; a coarse-to-fine cascade of tile sizes
+        (``levels`` × ``tile_size``: 100, 50, 25, 12.5 m by default), each level
+        fitted on overlapping windows (each tile grown by ``overlap`` × its size)
+        and started from the ground of the previous level (the fit may re-admit
+        points, so the cascade can recover ground a coarse level lost); a
+        slope-adapted threshold ``T + min(slope_factor·|∇ẑ|, slope_cap)`` for
+        rejection and classification. Defaults in :data:`IMPROVED_DEFAULTS`, one
+        parameter set chosen on the four ISPRS samples (no held-out data: see the
+        benchmark for each idea's measured effect). Under-populated tiles always
+        borrow their neighbours' surfaces in this mode.
+    max_iterations : int, optional
+        Cap on fits per tile. Default 5 in faithful mode — the paper's Tables 1–2
+        run five iterations, its stopping rule firing at iteration 4–5; on
+        terrain a polynomial cannot follow, one-sided rejection keeps lowering
+        the surface if iterated much longer (measured in the benchmark).
+    tolerance : float, default 0.01
+        Metres. A tile stops when ZMin, ZMax, ZMean and σ of its kept heights all
+        change by less than this between consecutive iterations.
+    subset_size : int, optional
+        Fit on at most this many random points per tile (paper: 5000); all points
+        are classified. None (default) fits every point.
+    seed : int, default 0
+        Seed of the random subset.
+    min_points : int, optional
+        Tiles with fewer fitting points get no surface of their own (default
+        ``3 × p``: 9 for order 1, 18 for order 2).
+    sparse_tiles : {"borrow", "unclassified"}, default "borrow"
+        What under-populated tiles do: use the nearest fitted tile's surface, or
+        leave their points in class 0.
+    rejection : {"reweighted", "cumulative"}, default "reweighted"
+        ``"reweighted"``: every iteration ``W = diag(v ≤ T)`` is recomputed from
+        the residuals of all fitting points of the tile (the paper's
+        ``Δ = (BᵀWB)⁻¹BᵀWF`` with 0/1 weights: a point dropped earlier can come
+        back when the surface moves); ``"cumulative"``: a dropped point stays out.
+        The two differ by less than 0.5 point of total error on the ISPRS samples.
+    levels, overlap, slope_factor, slope_cap, blend : optional
+        Arguments of :func:`lsq_ground_filter` only, not fields: improved-mode
+        options (see ``mode``; ``blend=True`` blends the four
+        surrounding tile surfaces bilinearly instead of using the point's own
+        tile — seamless, but measured worse at cliffs); ignored in faithful mode.
     """
 
     order: int = 2
@@ -1161,7 +1233,7 @@ class LsqFilter(GroundFilter):
         return lsq_settings(self.options)
 
     def report_sections(self, run, report, tr) -> None:
-        """Iterations, levels, fullest tile, tile map and status table."""
+        """Append the iterations, levels, fullest tile, tile map and status table."""
         from .lsq_report import lsq_sections
         lsq_sections(run.outcome.details, report, tr)
 

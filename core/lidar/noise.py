@@ -42,6 +42,8 @@ ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from scipy.spatial import cKDTree
 
@@ -202,6 +204,29 @@ def flag_low_outliers(x, y, z, *, radius: float = 5.0, threshold: float = 1.0,
     [210]
     """
     x, y, z = as_xyz(x, y, z)
+    _check_options(radius, threshold, min_neighbors, max_cluster, max_iterations)
+    mon = Monitor(progress, cancel)
+    flagged = np.zeros(x.size, dtype=bool)
+    if x.size <= int(min_neighbors):
+        mon.update(1.0)
+        return flagged
+    grid = _CellKeys.of(x, y, float(radius))
+    opts = dict(rank=int(max_cluster) - 1, min_neighbors=int(min_neighbors),
+                threshold=float(threshold), workers=workers)
+    new_idx = None                          # points flagged by the previous pass
+    iters = int(max_iterations)
+    for it in range(iters):
+        mon.step(it / iters)
+        new_idx = _noise_pass(x, y, z, grid, flagged, new_idx, mon, **opts)
+        if new_idx is None or new_idx.size == 0:
+            break
+        flagged[new_idx] = True
+    mon.update(1.0)
+    return flagged
+
+
+def _check_options(radius, threshold, min_neighbors, max_cluster, max_iterations) -> None:
+    """Raise ValueError naming the first invalid option of :func:`flag_low_outliers`."""
     if not np.isfinite(radius) or radius <= 0:
         raise ValueError(f"radius must be a positive number of metres, got {radius}.")
     if not np.isfinite(threshold) or threshold <= 0:
@@ -213,51 +238,57 @@ def flag_low_outliers(x, y, z, *, radius: float = 5.0, threshold: float = 1.0,
                          f"({max_cluster}); raise min_neighbors.")
     if int(max_iterations) < 1:
         raise ValueError(f"max_iterations must be at least 1, got {max_iterations}.")
-    mon = Monitor(progress, cancel)
-    n = x.size
-    flagged = np.zeros(n, dtype=bool)
-    if n <= int(min_neighbors):
-        mon.update(1.0)
-        return flagged
-    rank = int(max_cluster) - 1
-    iters = int(max_iterations)
-    cell = float(radius)
-    origin = (float(x.min()), float(y.min()))
-    # global cell key of every point (for the local re-tests of later passes)
-    gy = np.floor((y - origin[1]) / cell).astype(np.int64)
-    ny = int(gy.max()) + 5
-    key = np.floor((x - origin[0]) / cell).astype(np.int64) * ny + gy
-    del gy
-    offs = {r: np.array([dx * ny + dy for dx in range(-r, r + 1) for dy in range(-r, r + 1)])
-            for r in (1, 2)}
-    new_idx = np.empty(0, dtype=np.int64)   # points flagged by the previous pass
-    for it in range(iters):
-        mon.step(it / iters)
-        if it == 0:
-            sub = np.arange(n)
-        else:
-            # only points whose 3 x 3 block held a newly flagged point can change:
-            # re-test those, computing their blocks from the 5 x 5 cells around
-            fk = np.unique(key[new_idx])
-            near1 = np.unique((fk[:, None] + offs[1]).ravel())
-            near2 = np.unique((fk[:, None] + offs[2]).ravel())
-            sub = np.flatnonzero(~flagged & np.isin(key, near2))
-            if sub.size <= int(min_neighbors):
-                break
-        xs, ys, zs = x[sub], y[sub], z[sub]
-        ref, count = _block_reference(xs, ys, zs, cell, rank, origin)
-        cand = np.ones(sub.size, bool) if it == 0 else np.isin(key[sub], near1)
-        sparse = np.flatnonzero(cand & (count < int(min_neighbors)))
-        if sparse.size:
-            mon.check()
-            rest = np.flatnonzero(~flagged)
-            pos = np.searchsorted(rest, sub[sparse])
-            ref[sparse] = _knn_reference(x[rest], y[rest], z[rest], pos,
-                                         int(min_neighbors), rank, workers)
-        new = cand & (zs < ref - float(threshold))
-        if not new.any():
-            break
-        new_idx = sub[new]
-        flagged[new_idx] = True
-    mon.update(1.0)
-    return flagged
+
+
+@dataclass(frozen=True)
+class _CellKeys:
+    """Global cell key of every point (cells of side ``cell`` from ``origin``)."""
+
+    cell: float
+    origin: tuple
+    key: np.ndarray
+    offs: dict          # block radius (1, 2) -> key offsets of the (2r+1)^2 block
+
+    @classmethod
+    def of(cls, x, y, cell: float) -> _CellKeys:
+        """Return the keys of the points ``x, y``."""
+        origin = (float(x.min()), float(y.min()))
+        gy = np.floor((y - origin[1]) / cell).astype(np.int64)
+        ny = int(gy.max()) + 5
+        key = np.floor((x - origin[0]) / cell).astype(np.int64) * ny + gy
+        offs = {r: np.array([dx * ny + dy for dx in range(-r, r + 1)
+                             for dy in range(-r, r + 1)]) for r in (1, 2)}
+        return cls(cell, origin, key, offs)
+
+    def retest(self, new_idx, flagged):
+        """Return the points to re-test after ``new_idx`` were flagged, and the cells.
+
+        Only points whose 3 x 3 block held a newly flagged point can change: they are
+        re-tested, their blocks computed from the 5 x 5 cells around.
+        """
+        fk = np.unique(self.key[new_idx])
+        near1 = np.unique((fk[:, None] + self.offs[1]).ravel())
+        near2 = np.unique((fk[:, None] + self.offs[2]).ravel())
+        return np.flatnonzero(~flagged & np.isin(self.key, near2)), near1
+
+
+def _noise_pass(x, y, z, grid: _CellKeys, flagged, new_idx, mon: Monitor, *, rank: int,
+                min_neighbors: int, threshold: float, workers: int):
+    """Run one pass; return the newly flagged points (None: too few left to test)."""
+    if new_idx is None:
+        sub = np.arange(x.size)
+    else:
+        sub, near1 = grid.retest(new_idx, flagged)
+        if sub.size <= min_neighbors:
+            return None
+    xs, ys, zs = x[sub], y[sub], z[sub]
+    ref, count = _block_reference(xs, ys, zs, grid.cell, rank, grid.origin)
+    cand = np.ones(sub.size, bool) if new_idx is None else np.isin(grid.key[sub], near1)
+    sparse = np.flatnonzero(cand & (count < min_neighbors))
+    if sparse.size:
+        mon.check()
+        rest = np.flatnonzero(~flagged)
+        pos = np.searchsorted(rest, sub[sparse])
+        ref[sparse] = _knn_reference(x[rest], y[rest], z[rest], pos, min_neighbors, rank,
+                                     workers)
+    return sub[cand & (zs < ref - threshold)]

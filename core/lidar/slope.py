@@ -162,7 +162,7 @@ def _mask(mask, n: int, name: str) -> np.ndarray:
 
 
 def _take(x, y, z, mask):
-    """The masked coordinates (no copy when every point is selected)."""
+    """Return the masked coordinates (no copy when every point is selected)."""
     if mask.all():
         return x, y, z
     return x[mask], y[mask], z[mask]
@@ -215,177 +215,255 @@ def _choose_cell(qx, qy, r: float, n_q: int) -> float:
     return float(min(s, r))
 
 
-def _bounded_max_slope(px, py, pz, qx, qy, qz, *, radius: float, height: float,
-                       t_lo: float, t_hi: float, cell: Optional[float] = None,
-                       mon: Monitor, stats: _Stats, _tile: bool = False) -> np.ndarray:
-    """``S_i`` of every point of P against the neighbour set Q, exact where it matters.
+@dataclass(frozen=True)
+class _CellGrid:
+    """The padded square grid of one :func:`_bounded_max_slope` call, with margins."""
 
-    Returns ``v`` with: ``v = S`` exactly when ``t_lo < S <= t_hi``; ``v > t_hi``
-    when ``S > t_hi``; ``v <= t_lo`` when ``S <= t_lo``. Hence for every
-    threshold ``t`` in ``[t_lo, t_hi]``: ``(v > t) == (S > t)``.
+    x0: float
+    y0: float
+    s: float           # cell side (m)
+    pad: int           # cells of padding on every side (reach of r)
+    nx: int
+    ny: int
+    dd: float = 0.0    # distance margin (m)
+    dz: float = 0.0    # height margin (m)
+
+    def cell_of(self, xx, yy) -> np.ndarray:
+        """Return the flat (clipped) cell index of every point."""
+        ix = np.floor((xx - self.x0) / self.s).astype(np.int64) + self.pad
+        iy = np.floor((yy - self.y0) / self.s).astype(np.int64) + self.pad
+        np.clip(ix, 0, self.nx - 1, out=ix)
+        np.clip(iy, 0, self.ny - 1, out=iy)
+        return iy * self.nx + ix
+
+
+@dataclass
+class _Neighbours:
+    """Neighbour points sorted by (cell, z), with per-cell start, count, lowest z."""
+
+    x: np.ndarray
+    y: np.ndarray
+    z: np.ndarray
+    start: np.ndarray
+    count: np.ndarray
+    minz: np.ndarray
+
+
+def _sort_neighbours(g: _CellGrid, qx, qy, qz) -> _Neighbours:
+    """Sort the neighbour set by (cell, z) and index the cells' runs."""
+    qcell = g.cell_of(qx, qy)
+    order = np.lexsort((qz, qcell))
+    qcell = qcell[order]
+    ncell = g.nx * g.ny
+    count = np.bincount(qcell, minlength=ncell).astype(np.int64)
+    start = np.cumsum(count) - count
+    minz = np.full(ncell, np.inf)
+    qzs = qz[order]
+    first = np.flatnonzero(np.r_[True, qcell[1:] != qcell[:-1]])
+    minz[qcell[first]] = qzs[first]
+    return _Neighbours(qx[order], qy[order], qzs, start, count, minz)
+
+
+def _cell_offsets(g: _CellGrid, r: float) -> list:
+    """Cell offsets within reach, ``(dmin, ox, oy, dmax)`` sorted by ``dmin``."""
+    offs = []
+    for oy in range(-g.pad, g.pad + 1):
+        for ox in range(-g.pad, g.pad + 1):
+            gx = max(abs(ox) - 1, 0) * g.s
+            gy = max(abs(oy) - 1, 0) * g.s
+            dmin = math.hypot(gx, gy)
+            if dmin - g.dd <= r:
+                dmax = math.hypot((abs(ox) + 1) * g.s, (abs(oy) + 1) * g.s)
+                offs.append((dmin, ox, oy, dmax))
+    offs.sort()
+    return offs
+
+
+def _shifted(mz2: np.ndarray, ox: int, oy: int) -> np.ndarray:
+    """Return the minimum grid seen at cell + (ox, oy), inf outside."""
+    ny, nx = mz2.shape
+    out = np.full((ny, nx), np.inf)
+    ys_dst = slice(max(0, -oy), ny - max(0, oy))
+    xs_dst = slice(max(0, -ox), nx - max(0, ox))
+    ys_src = slice(max(0, oy), ny - max(0, -oy))
+    xs_src = slice(max(0, ox), nx - max(0, -ox))
+    out[ys_dst, xs_dst] = mz2[ys_src, xs_src]
+    return out
+
+
+def _cone_bounds(g: _CellGrid, minz, offs, r: float, t_lo: float, t_hi: float):
+    """Per-cell cone bounds ``(ub, lbfar)`` of the heights ``z - h``.
+
+    Above ``ub`` a point surely has ``S > t_hi``; at or below ``lbfar`` no pair with a
+    cell two or more cells away can exceed ``t_lo``.
     """
-    n_p, n_q = px.size, qx.size
-    v = np.full(n_p, -np.inf)
-    if not _tile:
-        stats.points += n_p
-    if n_q == 0 or n_p == 0:
-        return v
-    r, h = radius, height
+    mz2 = minz.reshape(g.ny, g.nx)
+    ub = np.full((g.ny, g.nx), np.inf)
+    lbfar = np.full((g.ny, g.nx), np.inf)
+    for dmin, ox, oy, dmax in offs:
+        far = max(abs(ox), abs(oy)) >= 2
+        use_ub = bool(ox or oy) and dmax + 4 * g.dd <= r
+        if not (far or use_ub):
+            continue
+        sh = _shifted(mz2, ox, oy)
+        if use_ub:
+            np.minimum(ub, sh + (t_hi * (dmax + 4 * g.dd) + g.dz), out=ub)
+        if far:
+            np.minimum(lbfar, sh + (t_lo * max(dmin - g.dd, 0.0) - g.dz), out=lbfar)
+    return ub.ravel(), lbfar.ravel()
+
+
+def _height_prefix(lo, hi, qzs, thr) -> np.ndarray:
+    """Binary search, in each cell run ``[lo, hi)``, of the prefix with ``z < thr``."""
+    n_q = qzs.size
+    while True:
+        open_ = lo < hi
+        if not open_.any():
+            return lo
+        mid = (lo + hi) >> 1
+        less = qzs[np.minimum(mid, n_q - 1)] < thr
+        lo = np.where(open_ & less, mid + 1, lo)
+        hi = np.where(open_ & ~less, mid, hi)
+
+
+@dataclass
+class _Block:
+    """Points of P classified together (one chunk, sorted by cell)."""
+
+    x: np.ndarray
+    y: np.ndarray
+    z: np.ndarray
+    cell: np.ndarray
+    zh: np.ndarray      # z - h
+    fx: np.ndarray      # fractional position inside the cell
+    fy: np.ndarray
+    v: np.ndarray       # the block's bounded S
+
+
+def _offset_pairs(g: _CellGrid, nb: _Neighbours, blk: _Block, idx, ox: int, oy: int, *,
+                  r: float, h: float, t_lo: float, stats: _Stats) -> None:
+    """Evaluate the candidate pairs of the points ``idx`` with the cells at (ox, oy)."""
+    c2 = blk.cell[idx] + (oy * g.nx + ox)
+    mz = nb.minz[c2]
+    # point-to-cell distance (lower bound), in cells then metres
+    fx, fy = blk.fx[idx], blk.fy[idx]
+    gx = np.maximum(np.maximum(ox - fx, fx - (ox + 1)), 0.0)
+    gy = np.maximum(np.maximum(oy - fy, fy - (oy + 1)), 0.0)
+    dlb = np.maximum(np.sqrt(gx * gx + gy * gy) * g.s - g.dd, 0.0)
+    thr = blk.zh[idx] - t_lo * dlb + g.dz       # only z_j < thr may exceed t_lo
+    cand = (mz < thr) & (dlb <= r)
+    if not cand.any():
+        return
+    idx, c2, thr = idx[cand], c2[cand], thr[cand]
+    seg0 = nb.start[c2]
+    m = _height_prefix(seg0.copy(), seg0 + nb.count[c2], nb.z, thr) - seg0
+    _eval_pairs(idx, seg0, m, blk.x, blk.y, blk.z, nb.x, nb.y, nb.z, r, h, blk.v, stats)
+
+
+def _classify_block(g: _CellGrid, nb: _Neighbours, offs, bounds, blk: _Block, *,
+                    r: float, h: float, t_lo: float, t_hi: float, mon: Monitor,
+                    stats: _Stats) -> None:
+    """Bound, then evaluate the candidate pairs of one block of P (fills ``blk.v``)."""
+    ub, lbfar = bounds
+    sure_ng = blk.zh > ub[blk.cell]
+    blk.v[sure_ng] = np.inf
+    need_far = (~sure_ng) & (blk.zh > lbfar[blk.cell])
+    stats.settled_by_bound += int(np.count_nonzero(sure_ng)) + int(
+        np.count_nonzero(~sure_ng & ~need_far))
+    act = np.flatnonzero(~sure_ng)
+    act_far = need_far[act]
+    for k, (_dmin, ox, oy, _dmax) in enumerate(offs):
+        if k % 8 == 0:
+            mon.step(k / len(offs))
+            keep = blk.v[act] <= t_hi           # drop points already proven non-ground
+            act, act_far = act[keep], act_far[keep]
+        idx = act[act_far] if max(abs(ox), abs(oy)) >= 2 else act
+        if k % 8:
+            idx = idx[blk.v[idx] <= t_hi]
+        if idx.size:
+            _offset_pairs(g, nb, blk, idx, ox, oy, r=r, h=h, t_lo=t_lo, stats=stats)
+    mon.update(1.0)
+
+
+def _make_block(g: _CellGrid, px, py, pz, pcell, sel, h: float) -> _Block:
+    """Gather the block ``sel`` of P with its cells and in-cell positions."""
+    bx, by, bz = px[sel], py[sel], pz[sel]
+    bcell = pcell[sel]
+    fx = (bx - g.x0) / g.s - (bcell % g.nx - g.pad)
+    fy = (by - g.y0) / g.s - (bcell // g.nx - g.pad)
+    return _Block(bx, by, bz, bcell, bz - h, fx, fy, np.full(sel.size, -np.inf))
+
+
+def _grid_for(px, py, pz, qx, qy, qz, r: float, h: float, cell) -> _CellGrid:
+    """Return the padded grid of P and Q (cell chosen for speed) with its safety margins."""
     x0 = min(float(px.min()), float(qx.min()))
     y0 = min(float(py.min()), float(qy.min()))
     x1 = max(float(px.max()), float(qx.max()))
     y1 = max(float(py.max()), float(qy.max()))
-    s = float(cell) if cell else _choose_cell(qx, qy, r, n_q)
+    s = float(cell) if cell else _choose_cell(qx, qy, r, qx.size)
     s = max(s, r * _MIN_CELL_FRACTION)      # caps the number of cell offsets
     pad = int(math.floor(r / s)) + 2
     nx = int(math.floor((x1 - x0) / s)) + 1 + 2 * pad
     ny = int(math.floor((y1 - y0) / s)) + 1 + 2 * pad
-    if nx * ny > _MAX_CELLS and not _tile:
-        # Too large for one dense grid (huge or sparse extent): exact tiling with an
-        # r-wide overlap of the neighbour set, each tile on its own grid.
-        return _tiled_max_slope(px, py, pz, qx, qy, qz, radius=r, height=h, t_lo=t_lo,
-                                t_hi=t_hi, cell=s, pad=pad, mon=mon, stats=stats,
-                                origin=(x0, y0))
-    stats.cell_size = s
     # Safety margins, far above float64 rounding of the bounds and of the
     # canonical comparison, far below any meaningful height or distance.
     cmax = max(abs(x0), abs(y0), abs(x1), abs(y1), r)
     zmax = max(float(np.abs(pz).max()), float(np.abs(qz).max()), 1.0) + h
-    dd = 1e-7 * s + 256 * _EPS * cmax            # distance margin (m)
-    dz = 1e-7 + 256 * _EPS * zmax                # height margin (m)
+    return _CellGrid(x0, y0, s, pad, nx, ny, dd=1e-7 * s + 256 * _EPS * cmax,
+                     dz=1e-7 + 256 * _EPS * zmax)
 
-    def cell_of(xx, yy):
-        ix = np.floor((xx - x0) / s).astype(np.int64) + pad
-        iy = np.floor((yy - y0) / s).astype(np.int64) + pad
-        np.clip(ix, 0, nx - 1, out=ix)
-        np.clip(iy, 0, ny - 1, out=iy)
-        return ix, iy
 
-    # -- neighbours: sorted by (cell, z); per cell start, count, lowest z
-    qix, qiy = cell_of(qx, qy)
-    qcell = qiy * nx + qix
-    del qix, qiy
-    order = np.lexsort((qz, qcell))
-    qcell = qcell[order]
-    qxs, qys, qzs = qx[order], qy[order], qz[order]
-    del order
-    ncell = nx * ny
-    count = np.bincount(qcell, minlength=ncell).astype(np.int64)
-    start = np.cumsum(count) - count
-    minz = np.full(ncell, np.inf)
-    first = np.flatnonzero(np.r_[True, qcell[1:] != qcell[:-1]])
-    minz[qcell[first]] = qzs[first]
-    del qcell, first
+def _bounded_max_slope(px, py, pz, qx, qy, qz, *, radius: float, height: float,
+                       t_lo: float, t_hi: float, cell: Optional[float] = None,
+                       mon: Monitor, stats: _Stats, _tile: bool = False) -> np.ndarray:
+    """Return ``S_i`` of every point of P against the neighbour set Q, exact where needed.
+
+    Vosselman (2000) slope rule with the cell bounds of the module docstring. The
+    result ``v`` has ``v = S`` exactly when ``t_lo < S <= t_hi``; ``v > t_hi`` when
+    ``S > t_hi``; ``v <= t_lo`` when ``S <= t_lo``. Hence for every threshold ``t``
+    in ``[t_lo, t_hi]``: ``(v > t) == (S > t)``.
+    """
+    n_p = px.size
+    v = np.full(n_p, -np.inf)
+    if not _tile:
+        stats.points += n_p
+    if qx.size == 0 or n_p == 0:
+        return v
+    g = _grid_for(px, py, pz, qx, qy, qz, radius, height, cell)
+    if g.nx * g.ny > _MAX_CELLS and not _tile:
+        # Too large for one dense grid (huge or sparse extent): exact tiling with an
+        # r-wide overlap of the neighbour set, each tile on its own grid.
+        return _tiled_max_slope(px, py, pz, qx, qy, qz, radius=radius, height=height,
+                                t_lo=t_lo, t_hi=t_hi, cell=g.s, pad=g.pad, mon=mon,
+                                stats=stats, origin=(g.x0, g.y0))
+    stats.cell_size = g.s
+    nb = _sort_neighbours(g, qx, qy, qz)
     mon.step(0.05)
-
-    # -- offsets within reach, sorted by their minimum distance
-    offs = []
-    for oy in range(-pad, pad + 1):
-        for ox in range(-pad, pad + 1):
-            gx = max(abs(ox) - 1, 0) * s
-            gy = max(abs(oy) - 1, 0) * s
-            dmin = math.hypot(gx, gy)
-            if dmin - dd <= r:
-                dmax = math.hypot((abs(ox) + 1) * s, (abs(oy) + 1) * s)
-                offs.append((dmin, ox, oy, dmax))
-    offs.sort()
+    offs = _cell_offsets(g, radius)
     stats.offsets = len(offs)
-    mz2 = minz.reshape(ny, nx)
-
-    def shifted(ox, oy):
-        """View of the minimum grid at cell + (ox, oy), inf outside."""
-        out = np.full((ny, nx), np.inf)
-        ys_dst = slice(max(0, -oy), ny - max(0, oy))
-        xs_dst = slice(max(0, -ox), nx - max(0, ox))
-        ys_src = slice(max(0, oy), ny - max(0, -oy))
-        xs_src = slice(max(0, ox), nx - max(0, -ox))
-        out[ys_dst, xs_dst] = mz2[ys_src, xs_src]
-        return out
-
-    # -- cell-level cone bounds
-    ub = np.full((ny, nx), np.inf)     # z - h above this: surely S > t_hi
-    lbfar = np.full((ny, nx), np.inf)  # z - h at or below: no far pair exceeds t_lo
-    for dmin, ox, oy, dmax in offs:
-        far = max(abs(ox), abs(oy)) >= 2
-        use_ub = bool(ox or oy) and dmax + 4 * dd <= r
-        if not (far or use_ub):
-            continue
-        sh = shifted(ox, oy)
-        if use_ub:
-            np.minimum(ub, sh + (t_hi * (dmax + 4 * dd) + dz), out=ub)
-        if far:
-            np.minimum(lbfar, sh + (t_lo * max(dmin - dd, 0.0) - dz), out=lbfar)
-    ub = ub.ravel()
-    lbfar = lbfar.ravel()
+    bounds = _cone_bounds(g, nb.minz, offs, radius, t_lo, t_hi)
     mon.step(0.1)
-
-    # -- classify P in blocks, sorted by cell for memory locality
-    pix, piy = cell_of(px, py)
-    pcell_all = piy * nx + pix
-    del pix, piy
-    porder = np.argsort(pcell_all, kind="stable")
+    # classify P in blocks, sorted by cell for memory locality
+    pcell = g.cell_of(px, py)
+    porder = np.argsort(pcell, kind="stable")
     n_blocks = max(1, -(-n_p // _POINT_CHUNK))
     for b in range(n_blocks):
         sel = porder[b * _POINT_CHUNK:(b + 1) * _POINT_CHUNK]
-        bx, by, bz = px[sel], py[sel], pz[sel]
-        bcell = pcell_all[sel]
-        bv = np.full(sel.size, -np.inf)
-        zh = bz - h
-        sure_ng = zh > ub[bcell]
-        bv[sure_ng] = np.inf
-        need_far = (~sure_ng) & (zh > lbfar[bcell])
-        stats.settled_by_bound += int(np.count_nonzero(sure_ng)) + int(
-            np.count_nonzero(~sure_ng & ~need_far))
-        # fractional position inside the cell, in [0, 1] up to rounding
-        fx = (bx - x0) / s - (bcell % nx - pad)
-        fy = (by - y0) / s - (bcell // nx - pad)
-        act = np.flatnonzero(~sure_ng)
-        act_far = need_far[act]
-        sub = mon.sub(0.1 + 0.9 * b / n_blocks, 0.1 + 0.9 * (b + 1) / n_blocks)
-        for k, (_dmin, ox, oy, _dmax) in enumerate(offs):
-            if k % 8 == 0:
-                sub.step(k / len(offs))
-                keep = bv[act] <= t_hi           # drop points already proven non-ground
-                act, act_far = act[keep], act_far[keep]
-            idx = act[act_far] if max(abs(ox), abs(oy)) >= 2 else act
-            if k % 8:
-                idx = idx[bv[idx] <= t_hi]
-            if idx.size == 0:
-                continue
-            c2 = bcell[idx] + (oy * nx + ox)
-            mz = minz[c2]
-            # point-to-cell distance (lower bound), in cells then metres
-            gx = np.maximum(np.maximum(ox - fx[idx], fx[idx] - (ox + 1)), 0.0)
-            gy = np.maximum(np.maximum(oy - fy[idx], fy[idx] - (oy + 1)), 0.0)
-            dlb = np.maximum(np.sqrt(gx * gx + gy * gy) * s - dd, 0.0)
-            thr = zh[idx] - t_lo * dlb + dz       # only z_j < thr may exceed t_lo
-            cand = (mz < thr) & (dlb <= r)
-            if not cand.any():
-                continue
-            idx, c2, thr = idx[cand], c2[cand], thr[cand]
-            lo = start[c2]
-            hi = lo + count[c2]
-            seg0 = lo.copy()
-            # binary search of the height prefix z_j < thr inside each cell run
-            while True:
-                open_ = lo < hi
-                if not open_.any():
-                    break
-                mid = (lo + hi) >> 1
-                less = qzs[np.minimum(mid, n_q - 1)] < thr
-                lo = np.where(open_ & less, mid + 1, lo)
-                hi = np.where(open_ & ~less, mid, hi)
-            m = lo - seg0
-            _eval_pairs(idx, seg0, m, bx, by, bz, qxs, qys, qzs, r, h, bv, stats)
-        sub.update(1.0)
-        v[sel] = bv
+        blk = _make_block(g, px, py, pz, pcell, sel, height)
+        _classify_block(g, nb, offs, bounds, blk, r=radius, h=height, t_lo=t_lo,
+                        t_hi=t_hi, mon=mon.sub(0.1 + 0.9 * b / n_blocks,
+                                               0.1 + 0.9 * (b + 1) / n_blocks),
+                        stats=stats)
+        v[sel] = blk.v
     return v
 
 
 def _tiled_max_slope(px, py, pz, qx, qy, qz, *, radius, height, t_lo, t_hi, cell, pad,
                      mon, stats, origin) -> np.ndarray:
-    """:func:`_bounded_max_slope` tile by tile; exact because each tile's neighbour
-    set holds every neighbour point within ``radius`` (plus a margin) of the tile.
+    """Run :func:`_bounded_max_slope` tile by tile (Vosselman 2000 rule, exact).
+
+    Exact because each tile's neighbour set holds every neighbour point within
+    ``radius`` (plus a margin) of the tile.
     """
     r, s = radius, cell
     x0, y0 = origin
@@ -463,7 +541,7 @@ def _eval_pairs(idx, seg0, m, bx, by, bz, qxs, qys, qzs, r, h, bv, stats) -> Non
 
 
 def _canonical_slope(xi, yi, zi, xj, yj, zj, r: float, h: float) -> np.ndarray:
-    """The canonical pair slope ``((z_i - z_j) - h) / d``, ``-inf`` for non-neighbours."""
+    """Return the canonical pair slope ``((z_i - z_j) - h) / d``, ``-inf`` for non-neighbours."""
     dx = xi - xj
     dy = yi - yj
     d2 = dx * dx + dy * dy
@@ -514,10 +592,12 @@ class SlopeFilterResult:
 
     @property
     def n_ground(self) -> int:
+        """Points classified as ground."""
         return int(np.count_nonzero(self.ground))
 
     @property
     def n_nonground(self) -> int:
+        """Classified points that are not ground."""
         return int(np.count_nonzero(self.classified & ~self.ground))
 
 
@@ -805,6 +885,7 @@ class SweepRow:
     kappa: float
 
     def as_dict(self) -> dict:
+        """Return the row as a dict."""
         return dict(self.__dict__)
 
 
@@ -825,6 +906,7 @@ class SweepResult:
                "kappa_pct")
 
     def table(self) -> List[tuple]:
+        """Return one tuple per setting, in the order of :attr:`HEADERS`."""
         return [(r.radius, r.slope, r.height_tolerance, r.allowed_rise, r.n_ground, r.a, r.b,
                  r.c, r.d, r.type1, r.type2, r.total, r.kappa) for r in self.rows]
 
@@ -1004,7 +1086,7 @@ class SlopeFilter(GroundFilter):
         return rows
 
     def report_sections(self, run, report, tr) -> None:
-        """Method, allowed rise table and work counters."""
+        """Append the method, allowed rise table and work counters."""
         o = self.options
         sec = report.section("Method")
         sec.add(Paragraph(T(
