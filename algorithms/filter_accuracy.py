@@ -1,7 +1,6 @@
 """Ground filter accuracy against reference labels (Processing algorithm)."""
 from __future__ import annotations
 
-import numpy as np
 from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterFile,
@@ -12,7 +11,6 @@ from qgis.core import (
 from ..core.io.las import write_las_like
 from ..core.lidar import accuracy as core_fa
 from ..core.progress import Cancelled
-from ..core.reporting.html import esc, html_page, html_table
 from .base import GeomaticsAlgorithm
 
 LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
@@ -147,8 +145,11 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
                                progress=(lambda f: cb["progress"](0.7 + 0.29 * f))
                                if cb["progress"] else None, cancel=cb["cancel"])
             if html_out:
-                out.write_text(self.OUTPUT_HTML, self.report(src, ref, field, ref_field, gc,
-                                                             rgc, res, parameters, context))
+                inputs = core_fa.AssessmentInputs(src, ref, field, ref_field, gc, rgc)
+                report = core_fa.accuracy_report(
+                    res, inputs, lang=self.report_lang(parameters, context))
+                out.write_text(self.OUTPUT_HTML,
+                               self.render_report(report, parameters, context))
             if feedback.isCanceled():
                 raise Cancelled("cancelled by the user")
         feedback.setProgress(100)
@@ -158,42 +159,3 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
         if err_out:
             result[self.ERROR_OUTPUT] = err_out
         return result
-
-    def report(self, src, ref, field, ref_field, gc, rgc, res, parameters=None,
-               context=None) -> str:
-        tr = self.tr
-        a = res.accuracy
-        d = a.as_dict()
-        matrix = [(tr("reference ground"), a.a, a.b, a.a + a.b),
-                  (tr("reference object"), a.c, a.d, a.c + a.d),
-                  (tr("total"), a.a + a.c, a.b + a.d, a.n)]
-        errors = [(tr("Type I (ground rejected) = b/(a+b)"), d["type1"]),
-                  (tr("Type II (object accepted) = c/(c+d)"), d["type2"]),
-                  (tr("Total = (b+c)/n"), d["total"]),
-                  (tr("Cohen's kappa"), d["kappa"])]
-        cls_rows = [(str(k), g, o, g + o) for k, (g, o) in sorted(res.classes.items())]
-        src_rows = [(tr("filtered cloud"), src), (tr("its class dimension"), field),
-                    (tr("its ground classes"), ", ".join(map(str, gc))),
-                    (tr("reference"), ref or tr("(dimension of the filtered cloud)")),
-                    (tr("reference class dimension"), ref_field),
-                    (tr("reference ground classes"), ", ".join(map(str, rgc)))]
-        share = np.array([a.b, a.c], float) / max(a.b + a.c, 1) * 100
-        body = "\n".join([
-            f"<h2>{esc(tr('Inputs'))}</h2>",
-            html_table((tr("item"), tr("value")), src_rows),
-            f"<h2>{esc(tr('Cross matrix (points)'))}</h2>",
-            html_table(("", tr("filtered ground"), tr("filtered object"), tr("total")),
-                       matrix),
-            f"<h2>{esc(tr('Errors (%)'))}</h2>",
-            html_table((tr("measure"), "%"), errors, digits=2),
-            "<p class='note'>" + esc(tr(
-                "Of all misclassified points, {p1:.1f} % are Type I and {p2:.1f} % Type "
-                "II.").format(p1=share[0], p2=share[1])) + "</p>",
-            f"<h2>{esc(tr('Reference labels of every filtered class'))}</h2>",
-            html_table((tr("filtered class"), tr("reference ground"),
-                        tr("reference object"), tr("points")), cls_rows),
-            "<p class='note'>" + esc(tr(
-                "Measures of the ISPRS filter test: Sithole, G. & Vosselman, G. (2004), "
-                "ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.")) + "</p>"])
-        return html_page(tr("Ground filter accuracy"), body,
-                         lang=self.report_lang(parameters, context))

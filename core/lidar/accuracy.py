@@ -17,7 +17,8 @@ Cross matrix (rows = reference, columns = filtered)::
 """
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field
+from typing import Optional, Sequence
 
 import numpy as np
 
@@ -37,6 +38,7 @@ class FilterAccuracy:
 
     @property
     def n(self) -> int:
+        """Number of points assessed, ``a + b + c + d``."""
         return self.a + self.b + self.c + self.d
 
     @property
@@ -68,7 +70,7 @@ class FilterAccuracy:
         return 100.0 * (po - pe) / (1.0 - pe)
 
     def as_dict(self) -> dict:
-        """Counts and metrics as a flat dict (for reports and Processing outputs)."""
+        """Return counts and metrics as a flat dict (for reports and Processing outputs)."""
         out = asdict(self)
         out.update(n=self.n, type1=self.type1, type2=self.type2,
                    total=self.total, kappa=self.kappa)
@@ -168,6 +170,8 @@ class CloudAssessment:
     predicted_ground: np.ndarray
     reference_ground: np.ndarray
     classes: dict          # filtered class value -> (reference ground, reference object)
+    x: Optional[np.ndarray] = field(default=None, repr=False)   # for the error map
+    y: Optional[np.ndarray] = field(default=None, repr=False)
 
     def error_codes(self) -> np.ndarray:
         """Per point: 0 correct, 1 Type I, 2 Type II."""
@@ -252,4 +256,83 @@ def assess_clouds(classified, reference=None, *, field: str = "classification",
     tot = np.bincount(inv, minlength=vals.size)
     classes = {int(v): (int(g), int(t - g)) for v, g, t in zip(vals, rg, tot)}
     mon.update(1.0)
-    return CloudAssessment(acc, p, r, classes)
+    return CloudAssessment(acc, p, r, classes, pd.x, pd.y)
+
+
+# ----------------------------------------------------------------------------- report
+CITATION = ("Measures of the ISPRS filter test: Sithole, G. & Vosselman, G. (2004), "
+            "ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.")
+
+
+@dataclass(frozen=True)
+class AssessmentInputs:
+    """What :func:`assess_clouds` compared (shown in the report)."""
+
+    classified: str
+    reference: Optional[str]
+    field: str = "classification"
+    reference_field: str = "classification"
+    ground_classes: Sequence[int] = (GROUND,)
+    reference_ground_classes: Sequence[int] = (GROUND,)
+
+
+def accuracy_report(res: CloudAssessment, inputs: AssessmentInputs, *,
+                    lang: str = "en"):
+    """Build the filter-accuracy report (Sithole & Vosselman 2004 measures).
+
+    Parameters
+    ----------
+    res : CloudAssessment
+        The comparison (:func:`assess_clouds`).
+    inputs : AssessmentInputs
+        The files, dimensions and ground classes compared.
+    lang : str
+        Language of the text drawn in the error map.
+
+    Returns
+    -------
+    Report
+        Inputs, cross matrix, errors, error map (when coordinates are known) and the
+        reference labels of every filtered class.
+    """
+    from ..reporting import KeyValues, Paragraph, Report, T, Table, translator
+    a = res.accuracy
+    rep = Report("Ground filter accuracy", citation=CITATION)
+    rep.summary.append(Paragraph(T(
+        "Type I {t1} %, Type II {t2} %, total {tot} %, kappa {k} % over {n} points.",
+        t1=_r2(a.type1), t2=_r2(a.type2), tot=_r2(a.total), k=_r2(a.kappa), n=a.n)))
+    rep.section("Inputs").add(KeyValues(_input_rows(inputs)))
+    rep.section("Cross matrix (points)").add(Table(
+        ["", "filtered ground", "filtered object", "total"],
+        [(T("reference ground"), a.a, a.b, a.a + a.b),
+         (T("reference object"), a.c, a.d, a.c + a.d),
+         (T("total"), a.a + a.c, a.b + a.d, a.n)], digits=0))
+    share = np.array([a.b, a.c], float) / max(a.b + a.c, 1) * 100
+    rep.section("Errors (%)").add(KeyValues([
+        ("Type I (ground rejected) = b/(a+b)", a.type1),
+        ("Type II (object accepted) = c/(c+d)", a.type2),
+        ("Total = (b+c)/n", a.total), ("Cohen's kappa", a.kappa)], digits=2)).add(
+        Paragraph(T("Of all misclassified points, {p1} % are Type I and {p2} % Type II.",
+                    p1=round(float(share[0]), 1), p2=round(float(share[1]), 1)), "note"))
+    if res.x is not None and a.n:
+        from .figures import error_map
+        rep.section("Error map").add(error_map(res.x, res.y, res.error_codes(),
+                                               translator(lang)))
+    rep.section("Reference labels of every filtered class").add(Table(
+        ["filtered class", "reference ground", "reference object", "points"],
+        [(k, g, o, g + o) for k, (g, o) in sorted(res.classes.items())], digits=0))
+    return rep
+
+
+def _r2(v: float) -> float:
+    return round(float(v), 2) if np.isfinite(v) else v
+
+
+def _input_rows(inputs: AssessmentInputs) -> list:
+    from ..reporting import T
+    return [("filtered cloud", inputs.classified), ("its class dimension", inputs.field),
+            ("its ground classes", ", ".join(map(str, inputs.ground_classes))),
+            ("reference", inputs.reference or T("(dimension of the filtered cloud)")),
+            ("reference class dimension", inputs.reference_field),
+            ("reference ground classes",
+             ", ".join(map(str, inputs.reference_ground_classes)))]

@@ -136,7 +136,12 @@ def _map_svg(codes: np.ndarray, colours: Sequence[str], grid: PlanGrid, entries,
              svg.north_arrow(w + 25, 12),
              svg.legend(w + 45, 24, entries, title=legend_title)]
     return svg.figure(int(w + 60 + legend_w), int(max(h + 35, 30 + 14 * len(entries))),
-                      parts, title=title)
+                      _ltr(parts), title=title)
+
+
+def _ltr(parts) -> list:
+    """Lay the figure out left to right in RTL pages too (the text is still shaped)."""
+    return ['<g direction="ltr">', *parts, "</g>"]
 
 
 def _cell_caption(grid: PlanGrid):
@@ -290,7 +295,7 @@ def sweep_plot(rows, best, tr: Callable[[str], str]) -> Optional[Figure]:
     entries = [(c, tr(label) + " (%)") for c, label, _ in series]
     entries.append(("#777777", tr("best threshold")))
     parts.append(svg.legend(455, 24, entries, shape="line"))
-    body = svg.figure(660, 290, parts, title=tr("Errors against the slope threshold"))
+    body = svg.figure(660, 290, _ltr(parts), title=tr("Errors against the slope threshold"))
     caption = T("Radius {r} m, height tolerance {h} m; the dashed line marks the chosen "
                 "threshold.", r=best.radius, h=best.height_tolerance)
     return Figure(body, caption, figure_id="sweep-plot")

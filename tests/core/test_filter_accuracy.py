@@ -107,3 +107,37 @@ def test_isprs_reference_against_itself(isprs_dir):
     a = assess_clouds(isprs_dir / "samp54.laz", isprs_dir / "samp54.laz")
     assert (a.accuracy.a, a.accuracy.d) == (3983, 4625)
     assert a.accuracy.total == 0.0 and a.accuracy.kappa == pytest.approx(100.0)
+
+
+@pytest.mark.parametrize("lang", ["ar", "fa"])
+def test_accuracy_report_translated_with_error_map(tmp_path, lang):
+    """The report holds the cross matrix, the errors and the error map, all in ar/fa."""
+    from geomatics_toolbox.core.io.las import read_las, write_las_like
+    from geomatics_toolbox.core.lidar import accuracy as core_fa
+    from geomatics_toolbox.core.reporting import Figure, Table, render_html
+    from geomatics_toolbox.core.reporting.i18n import has_translation
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+    src, filt = tmp_path / "ref.laz", tmp_path / "filt.laz"
+    write_tile(generate_tile(extent=(60, 40), density=2.0, seed=5), src)
+    cls = read_las(src, ("classification",))["classification"].copy()
+    flip = np.random.default_rng(0).random(cls.size) < 0.05
+    cls[flip] = np.where(cls[flip] == 2, 1, 2)
+    write_las_like(src, filt, dimensions={"classification": cls})
+    res = core_fa.assess_clouds(filt, src)
+    rep = core_fa.accuracy_report(res, core_fa.AssessmentInputs(str(filt), str(src)),
+                                  lang=lang)
+    assert [m for m in rep.messages() if not has_translation(m, lang)] == []
+    blocks = [b for s in rep.sections for b in s.blocks]
+    matrix = next(b for b in blocks if isinstance(b, Table)
+                  and "filtered ground" in b.headers)
+    a = res.accuracy
+    assert [list(r[1:]) for r in matrix.rows] == [[a.a, a.b, a.a + a.b],
+                                                  [a.c, a.d, a.c + a.d],
+                                                  [a.a + a.c, a.b + a.d, a.n]]
+    assert a.b > 0 and a.c > 0
+    figs = [b for b in blocks if isinstance(b, Figure)]
+    assert [f.figure_id for f in figs] == ["error-map"]
+    html = render_html(rep, lang=lang)
+    assert 'dir="rtl"' in html and 'id="error-map"' in html
+    for word in ("Cross matrix", "Classes", "Errors (%)", "filtered ground"):
+        assert word not in html
