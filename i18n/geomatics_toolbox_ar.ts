@@ -4,102 +4,6 @@
     <context>
         <name>@default</name>
         <message>
-            <source>reference ground</source>
-            <translation>أرض (في المرجع)</translation>
-        </message>
-        <message>
-            <source>reference object</source>
-            <translation>جسم (في المرجع)</translation>
-        </message>
-        <message>
-            <source>total</source>
-            <translation>المجموع</translation>
-        </message>
-        <message>
-            <source>Type I (ground rejected) = b/(a+b)</source>
-            <translation>خطأ النوع الأول (رفض نقاط الأرض) = b/(a+b)</translation>
-        </message>
-        <message>
-            <source>Type II (object accepted) = c/(c+d)</source>
-            <translation>خطأ النوع الثاني (قبول الأجسام كأرض) = c/(c+d)</translation>
-        </message>
-        <message>
-            <source>Total = (b+c)/n</source>
-            <translation>الخطأ الكلي = (b+c)/n</translation>
-        </message>
-        <message>
-            <source>Cohen's kappa</source>
-            <translation>معامل كابا لكوهين</translation>
-        </message>
-        <message>
-            <source>filtered cloud</source>
-            <translation>السحابة المفلترة</translation>
-        </message>
-        <message>
-            <source>its class dimension</source>
-            <translation>بُعد الصنف فيها</translation>
-        </message>
-        <message>
-            <source>its ground classes</source>
-            <translation>أصناف الأرض فيها</translation>
-        </message>
-        <message>
-            <source>reference</source>
-            <translation>المرجع</translation>
-        </message>
-        <message>
-            <source>(dimension of the filtered cloud)</source>
-            <translation>(بُعد في السحابة المفلترة)</translation>
-        </message>
-        <message>
-            <source>reference class dimension</source>
-            <translation>بُعد الصنف في المرجع</translation>
-        </message>
-        <message>
-            <source>reference ground classes</source>
-            <translation>أصناف الأرض في المرجع</translation>
-        </message>
-        <message>
-            <source>item</source>
-            <translation>البند</translation>
-        </message>
-        <message>
-            <source>value</source>
-            <translation>القيمة</translation>
-        </message>
-        <message>
-            <source>filtered ground</source>
-            <translation>أرض (بعد الفلترة)</translation>
-        </message>
-        <message>
-            <source>filtered object</source>
-            <translation>جسم (بعد الفلترة)</translation>
-        </message>
-        <message>
-            <source>measure</source>
-            <translation>المقياس</translation>
-        </message>
-        <message>
-            <source>Of all misclassified points, {p1:.1f} % are Type I and {p2:.1f} % Type II.</source>
-            <translation>من بين جميع النقاط المصنَّفة خطأً، {p1:.1f} % من النوع الأول و{p2:.1f} % من النوع الثاني.</translation>
-        </message>
-        <message>
-            <source>filtered class</source>
-            <translation>الصنف بعد الفلترة</translation>
-        </message>
-        <message>
-            <source>points</source>
-            <translation>عدد النقاط</translation>
-        </message>
-        <message>
-            <source>Measures of the ISPRS filter test: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</source>
-            <translation>مقاييس اختبار فلاتر ISPRS: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</translation>
-        </message>
-        <message>
-            <source>Ground filter accuracy</source>
-            <translation>دقة فلتر نقاط الأرض</translation>
-        </message>
-        <message>
             <source>terrain (hillshade)</source>
             <translation>التضاريس (تظليل)</translation>
         </message>
@@ -142,6 +46,50 @@
         <message>
             <source>Error against height</source>
             <translation>الخطأ مقابل الارتفاع</translation>
+        </message>
+        <message>
+            <source>no point</source>
+            <translation>لا نقاط</translation>
+        </message>
+        <message>
+            <source>Class map</source>
+            <translation>خريطة الأصناف</translation>
+        </message>
+        <message>
+            <source>ASPRS class</source>
+            <translation>صنف ASPRS</translation>
+        </message>
+        <message>
+            <source>Error map</source>
+            <translation>خريطة الأخطاء</translation>
+        </message>
+        <message>
+            <source>Filter error</source>
+            <translation>خطأ المرشِّح</translation>
+        </message>
+        <message>
+            <source>Tile map</source>
+            <translation>خريطة البلاطات</translation>
+        </message>
+        <message>
+            <source>Tile status</source>
+            <translation>حالة البلاطة</translation>
+        </message>
+        <message>
+            <source>Slope threshold θ (degrees)</source>
+            <translation>عتبة الميل θ (درجة)</translation>
+        </message>
+        <message>
+            <source>Percent (%)</source>
+            <translation>النسبة المئوية (%)</translation>
+        </message>
+        <message>
+            <source>best threshold</source>
+            <translation>أفضل عتبة</translation>
+        </message>
+        <message>
+            <source>Errors against the slope threshold</source>
+            <translation>الأخطاء مقابل عتبة الميل</translation>
         </message>
     </context>
     <context>

@@ -4,102 +4,6 @@
     <context>
         <name>@default</name>
         <message>
-            <source>reference ground</source>
-            <translation>زمینی (در مرجع)</translation>
-        </message>
-        <message>
-            <source>reference object</source>
-            <translation>عارضه (در مرجع)</translation>
-        </message>
-        <message>
-            <source>total</source>
-            <translation>مجموع</translation>
-        </message>
-        <message>
-            <source>Type I (ground rejected) = b/(a+b)</source>
-            <translation>خطای نوع اول (رد نقاط زمینی) = b/(a+b)</translation>
-        </message>
-        <message>
-            <source>Type II (object accepted) = c/(c+d)</source>
-            <translation>خطای نوع دوم (پذیرش عوارض به‌عنوان زمین) = c/(c+d)</translation>
-        </message>
-        <message>
-            <source>Total = (b+c)/n</source>
-            <translation>خطای کل = (b+c)/n</translation>
-        </message>
-        <message>
-            <source>Cohen's kappa</source>
-            <translation>ضریب کاپای کوهن</translation>
-        </message>
-        <message>
-            <source>filtered cloud</source>
-            <translation>ابر فیلترشده</translation>
-        </message>
-        <message>
-            <source>its class dimension</source>
-            <translation>بُعد کلاس آن</translation>
-        </message>
-        <message>
-            <source>its ground classes</source>
-            <translation>کلاس‌های زمینی آن</translation>
-        </message>
-        <message>
-            <source>reference</source>
-            <translation>مرجع</translation>
-        </message>
-        <message>
-            <source>(dimension of the filtered cloud)</source>
-            <translation>(بُعدی از ابر فیلترشده)</translation>
-        </message>
-        <message>
-            <source>reference class dimension</source>
-            <translation>بُعد کلاس مرجع</translation>
-        </message>
-        <message>
-            <source>reference ground classes</source>
-            <translation>کلاس‌های زمینی مرجع</translation>
-        </message>
-        <message>
-            <source>item</source>
-            <translation>مورد</translation>
-        </message>
-        <message>
-            <source>value</source>
-            <translation>مقدار</translation>
-        </message>
-        <message>
-            <source>filtered ground</source>
-            <translation>زمینی (پس از فیلتر)</translation>
-        </message>
-        <message>
-            <source>filtered object</source>
-            <translation>عارضه (پس از فیلتر)</translation>
-        </message>
-        <message>
-            <source>measure</source>
-            <translation>سنجه</translation>
-        </message>
-        <message>
-            <source>Of all misclassified points, {p1:.1f} % are Type I and {p2:.1f} % Type II.</source>
-            <translation>از همهٔ نقاطی که نادرست طبقه‌بندی شده‌اند، {p1:.1f} % از نوع اول و {p2:.1f} % از نوع دوم هستند.</translation>
-        </message>
-        <message>
-            <source>filtered class</source>
-            <translation>کلاس پس از فیلتر</translation>
-        </message>
-        <message>
-            <source>points</source>
-            <translation>تعداد نقاط</translation>
-        </message>
-        <message>
-            <source>Measures of the ISPRS filter test: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</source>
-            <translation>سنجه‌های آزمون فیلترهای ISPRS: Sithole, G. &amp; Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.</translation>
-        </message>
-        <message>
-            <source>Ground filter accuracy</source>
-            <translation>دقت فیلتر نقاط زمینی</translation>
-        </message>
-        <message>
             <source>terrain (hillshade)</source>
             <translation>ناهمواری (سایه‌روشن)</translation>
         </message>
@@ -142,6 +46,50 @@
         <message>
             <source>Error against height</source>
             <translation>خطا در برابر ارتفاع</translation>
+        </message>
+        <message>
+            <source>no point</source>
+            <translation>بدون نقطه</translation>
+        </message>
+        <message>
+            <source>Class map</source>
+            <translation>نقشهٔ کلاس‌ها</translation>
+        </message>
+        <message>
+            <source>ASPRS class</source>
+            <translation>کلاس ASPRS</translation>
+        </message>
+        <message>
+            <source>Error map</source>
+            <translation>نقشهٔ خطاها</translation>
+        </message>
+        <message>
+            <source>Filter error</source>
+            <translation>خطای فیلتر</translation>
+        </message>
+        <message>
+            <source>Tile map</source>
+            <translation>نقشهٔ کاشی‌ها</translation>
+        </message>
+        <message>
+            <source>Tile status</source>
+            <translation>وضعیت کاشی</translation>
+        </message>
+        <message>
+            <source>Slope threshold θ (degrees)</source>
+            <translation>آستانهٔ شیب θ (درجه)</translation>
+        </message>
+        <message>
+            <source>Percent (%)</source>
+            <translation>درصد (%)</translation>
+        </message>
+        <message>
+            <source>best threshold</source>
+            <translation>بهترین آستانه</translation>
+        </message>
+        <message>
+            <source>Errors against the slope threshold</source>
+            <translation>خطاها در برابر آستانهٔ شیب</translation>
         </message>
     </context>
     <context>
