@@ -19,10 +19,14 @@ import traceback
 
 from qgis.core import (
     QgsProcessingAlgorithm,
+    QgsProcessingContext,
     QgsProcessingException,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterDefinition,
+    QgsProcessingParameterFile,
     QgsProcessingParameterNumber,
+    QgsProcessingUtils,
+    QgsProviderRegistry,
 )
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
@@ -51,6 +55,22 @@ def _groups():
 
 
 GROUPS = tuple(_groups())
+
+#: File filter of LAS/LAZ inputs given as files.
+LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
+_LAS_EXTENSIONS = (".las", ".laz")
+
+
+def point_cloud_layers_supported() -> bool:
+    """True when this QGIS build can open LAS/LAZ as point-cloud layers (PDAL provider).
+
+    Debian's QGIS 3.22 is built without PDAL: there LiDAR inputs are file paths.
+    """
+    try:
+        from qgis.core import QgsProcessingParameterPointCloudLayer  # noqa: F401
+    except ImportError:  # QGIS < 3.18
+        return False
+    return "pdal" in QgsProviderRegistry.instance().providerList()
 
 
 class GeomaticsAlgorithm(QgsProcessingAlgorithm):
@@ -113,6 +133,63 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
             param.setHelp(help_text)
         self.addParameter(param)
         return param
+
+    # ---------------------------------------------------------------- LiDAR inputs
+    def las_input_note(self) -> str:
+        """One sentence on how the LAS/LAZ input is given in this QGIS build."""
+        if point_cloud_layers_supported():
+            return self.tr("Pick a loaded point-cloud layer or a .las/.laz file.")
+        return self.tr("This QGIS build has no PDAL point-cloud provider, so point clouds "
+                       "cannot be loaded as layers: give the .las/.laz file.")
+
+    def add_las_input(self, name: str = "INPUT", description: str | None = None, *,
+                      optional: bool = False, help_text: str | None = None):
+        """Add a LAS/LAZ input: a point-cloud layer where PDAL exists, else a file.
+
+        Either way ``qgis_process`` accepts a path. Read it back with
+        :meth:`las_input_path`. The parameter's help says which kind it is and why.
+        """
+        description = description or self.tr("Point cloud (LAS/LAZ)")
+        note = self.las_input_note()
+        help_text = f"{help_text} {note}" if help_text else note
+        if point_cloud_layers_supported():
+            from qgis.core import QgsProcessingParameterPointCloudLayer
+            param = QgsProcessingParameterPointCloudLayer(name, description,
+                                                          optional=optional)
+        else:
+            param = QgsProcessingParameterFile(
+                name, description, behavior=QgsProcessingParameterFile.File,
+                fileFilter=LAS_IN_FILTER, optional=optional)
+        return self.add(param, help_text=help_text)
+
+    def las_input_path(self, parameters, context, name: str = "INPUT") -> str:
+        """Path of the LAS/LAZ file behind an :meth:`add_las_input` parameter ('' if unset).
+
+        Raises :class:`InputError` when a picked layer is not a local .las/.laz file.
+        """
+        param = self.parameterDefinition(name)
+        if isinstance(param, QgsProcessingParameterFile) or param is None:
+            return self.parameterAsFile(parameters, name, context) or ""
+        layer = self.parameterAsPointCloudLayer(parameters, name, context)
+        if layer is None:
+            value = parameters.get(name) if parameters else None
+            return str(value) if isinstance(value, str) else ""
+        path = layer.source().split("|")[0]
+        if not (os.path.isfile(path) and path.lower().endswith(_LAS_EXTENSIONS)):
+            raise InputError(self.tr(
+                "The point-cloud layer '{name}' is not a local .las/.laz file ({source}): "
+                "export it to LAS/LAZ first.").format(name=layer.name(), source=path))
+        return path
+
+    def load_cloud_on_completion(self, context, path: str, name: str,
+                                 output_name: str = "OUTPUT") -> bool:
+        """Ask QGIS to load a written LAS/LAZ output as a point-cloud layer, if it can."""
+        if not path or context is None or not point_cloud_layers_supported():
+            return False
+        details = QgsProcessingContext.LayerDetails(name, context.project(), output_name,
+                                                    QgsProcessingUtils.LayerHint.PointCloud)
+        context.addLayerToLoadOnCompletion(path, details)
+        return True
 
     # Shared low-outlier pre-filter (core.noise.flag_low_outliers) of the ground filters
     NOISE = "NOISE"

@@ -384,6 +384,22 @@
             <translation>أُنهي التشغيل؛ لم يُكتب أي ناتج.</translation>
         </message>
         <message>
+            <source>Pick a loaded point-cloud layer or a .las/.laz file.</source>
+            <translation>اختر طبقة سحابة نقاط محمّلة أو ملف ‎.las/.laz‏.</translation>
+        </message>
+        <message>
+            <source>This QGIS build has no PDAL point-cloud provider, so point clouds cannot be loaded as layers: give the .las/.laz file.</source>
+            <translation>نسخة QGIS هذه لا تحتوي على مزوّد سحب النقاط PDAL، لذا لا يمكن تحميل سحب النقاط كطبقات: أعطِ ملف ‎.las/.laz‏.</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>سحابة النقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>The point-cloud layer '{name}' is not a local .las/.laz file ({source}): export it to LAS/LAZ first.</source>
+            <translation>طبقة سحابة النقاط '{name}' ليست ملف ‎.las/.laz‏ محليًا ({source}): صدّرها إلى LAS/LAZ أولًا.</translation>
+        </message>
+        <message>
             <source>Created, never classified</source>
             <translation>مُنشأة، لم تُصنَّف قط</translation>
         </message>

@@ -384,6 +384,22 @@
             <translation>اجرا متوقف شد؛ هیچ خروجی‌ای نوشته نشد.</translation>
         </message>
         <message>
+            <source>Pick a loaded point-cloud layer or a .las/.laz file.</source>
+            <translation>یک لایهٔ ابر نقاط بارشده یا یک فایل ‎.las/.laz‏ انتخاب کنید.</translation>
+        </message>
+        <message>
+            <source>This QGIS build has no PDAL point-cloud provider, so point clouds cannot be loaded as layers: give the .las/.laz file.</source>
+            <translation>این نسخهٔ QGIS ارائه‌دهندهٔ ابر نقاط PDAL ندارد، پس ابرهای نقاط را نمی‌توان به‌صورت لایه بار کرد: فایل ‎.las/.laz‏ را بدهید.</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>ابر نقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>The point-cloud layer '{name}' is not a local .las/.laz file ({source}): export it to LAS/LAZ first.</source>
+            <translation>لایهٔ ابر نقاط '{name}' یک فایل محلی ‎.las/.laz‏ نیست ({source}): ابتدا آن را به LAS/LAZ صادر کنید.</translation>
+        </message>
+        <message>
             <source>Created, never classified</source>
             <translation>ایجادشده، هرگز کلاس‌بندی‌نشده</translation>
         </message>
