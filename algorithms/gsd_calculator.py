@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import math
+import os
 
 from qgis.core import (
     QgsFeature,
@@ -20,9 +21,12 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QVariant
 
+from ..core.errors import InputError
+from ..core.io.contract import OutputContract
 from ..core.photogrammetry import gsd as core_gsd
 from ..core.photogrammetry.cameras import CAMERAS
-from ..core.reporting.html import html_page, html_table
+from ..core.photogrammetry.report import gsd_report
+from ..core.progress import Cancelled
 from .base import GeomaticsAlgorithm
 
 CAMERA_KEYS = ["custom"] + list(CAMERAS)
@@ -58,7 +62,7 @@ def _optional(parameters, name):
     try:
         value = float(value)
     except (TypeError, ValueError):
-        raise QgsProcessingException(f"{name}: '{value}' is not a number.") from None
+        raise InputError(f"{name}: '{value}' is not a number.") from None
     return None if math.isnan(value) else value
 
 
@@ -90,6 +94,8 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
     FORWARD_OVERLAP = "FORWARD_OVERLAP"
     SIDE_OVERLAP = "SIDE_OVERLAP"
     OUTPUT_HTML = "OUTPUT_HTML"
+    #: default camera–object distance / flying height, m (a typical drone survey)
+    DEFAULT_DISTANCE = 100.0
 
     def name(self):
         return "gsdcalculator"
@@ -101,61 +107,71 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
         return self.tr("gsd,ground sampling distance,flying height,footprint,accuracy,"
                        "photogrammetry,drone,flight planning,dense matching").split(",")
 
+    def shortDescription(self):  # noqa: N802
+        return self.tr("Ground sampling distance, footprint and theoretical "
+                       "photogrammetric accuracy of a camera at a distance.")
+
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
-            "<p>Computes the ground sampling distance (GSD) of a camera at a given "
-            "distance, the image footprint, the theoretical accuracy of "
-            "phototriangulation and of a dense-matching point cloud, and compares "
-            "observed accuracies with the theory (Al Khalil 2019).</p>"
+        return (self.tr(
+            "<p>Computes the ground sampling distance (GSD) and footprint of a camera at a "
+            "given distance or flying height. It also gives the theoretical accuracy of "
+            "phototriangulation and of a dense-matching cloud, and compares observed "
+            "accuracies with it (Al Khalil 2019).</p>")
+            + self.tr(
+            "<p><b>Example</b>: the paper's Nikon Coolpix P100 at 5.88 m (sensor width "
+            "6.123 mm, image width 3648 px, focal length 4.6 mm) gives a GSD of 0.21455 "
+            "cm/px, σ<sub>xyz</sub> 1.287 mm (1.26 mm with the rounded GSD), a dense-cloud "
+            "resolution of 0.858 cm and a footprint 7.827 m wide.</p>")
+            + self.tr(
             "<p><b>Formulas</b>: GSD [cm/px] = D·S<sub>W</sub>·100/(Im<sub>W</sub>·F<sub>R</sub>); "
             "footprint = D·S<sub>W</sub>/F<sub>R</sub>; σ<sub>meas</sub> = k<sub>m</sub>·GSD; "
             "σ<sub>xyz</sub> = k<sub>m</sub>·GSD·k<sub>s</sub>; matching step P = "
-            "T<sub>s</sub>/N<sub>p</sub>; dense resolution R<sub>theo</sub> = P·GSD.</p>"
-            "<p><b>Example</b> (the paper's Nikon Coolpix P100): DISTANCE=5.88 "
-            "SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 gives GSD 0.21455 cm/px, "
-            "σ<sub>xyz</sub> 1.287 mm (1.26 mm with ROUND_GSD), R<sub>theo</sub> 0.858 cm, "
-            "footprint 7.827 m.</p>"
+            "T<sub>s</sub>/N<sub>p</sub>; dense resolution R<sub>theo</sub> = P·GSD.</p>")
+            + self.tr(
             "<p><b>Parameters</b></p><ul>"
-            "<li><b>Camera preset</b> (CAMERA, default Custom): fills sensor width/height, "
-            "image width/height and focal length; values you enter override the preset.</li>"
-            "<li><b>Distance</b> (DISTANCE, m): camera–object distance or flying height "
-            "above ground. Required, &gt; 0.</li>"
-            "<li><b>Sensor width</b> (SENSOR_WIDTH, mm), <b>Image width</b> (IMAGE_WIDTH, "
-            "px), <b>Focal length</b> (FOCAL_LENGTH, mm, the true focal length, not the "
-            "35 mm equivalent): required with the Custom camera, &gt; 0.</li>"
-            "<li><b>Sensor height</b> (SENSOR_HEIGHT, mm) / <b>Image height</b> "
-            "(IMAGE_HEIGHT, px): optional, for the footprint height and flight spacing.</li>"
-            "<li><b>Target GSD</b> (TARGET_GSD, cm/px): optional; gives the distance or "
-            "flying height that achieves it.</li>"
-            "<li><b>Round GSD like the paper</b> (ROUND_GSD, default no): round the GSD "
-            "to 0.01 cm/px before the derived quantities.</li>"
-            "<li><b>k<sub>m</sub></b> (K_M, px, default 0.3; 0.13 for an expert "
-            "operator) and <b>k<sub>s</sub></b> (K_S, default 2).</li>"
-            "<li><b>Pyramid level N<sub>p</sub></b> (PYRAMID_LEVEL, default 0.5, a "
-            "fraction in (0, 1], or a percentage in (0, 100] with PYRAMID_PERCENT) and "
-            "<b>subsampling step T<sub>s</sub></b> (SUBSAMPLING_STEP, px, ≥ 1, default 2).</li>"
-            "<li><b>Observed σx, σy, σz, σxyz</b> (mm) and <b>observed dense-cloud "
-            "std</b> (cm): optional; give the observed/theoretical ratios.</li>"
-            "<li><b>Extension</b> (not in the paper): stereo base (STEREO_BASE, m) → "
-            "normal-case σ<sub>Z</sub> = (D/B)(D/c)σ<sub>image</sub> with σ<sub>image</sub> "
-            "= k<sub>m</sub> pixels; forward/side overlap (%) → exposure and line spacing "
-            "(image height along track, width across track).</li>"
-            "<li><b>Report</b> (OUTPUT_HTML): optional HTML report.</li></ul>"
+            "<li><b>Camera preset</b> (default Custom): fills the sensor, image and focal "
+            "length values; values you enter override the preset.</li>"
+            "<li><b>Distance</b> (m, default 100): camera–object distance or flying height "
+            "above ground, &gt; 0.</li>"
+            "<li><b>Sensor width</b> (mm), <b>image width</b> (px) and <b>focal length</b> "
+            "(mm, the true focal length, not the 35 mm equivalent): required with the "
+            "Custom camera.</li>"
+            "<li><b>Sensor height</b> (mm) / <b>image height</b> (px): optional, for the "
+            "footprint height and the flight spacing.</li>"
+            "<li><b>Target GSD</b> (cm/px): optional; gives the distance that achieves "
+            "it.</li>"
+            "<li><b>Round GSD like the paper</b> (default no): round the GSD to 0.01 cm/px "
+            "before the derived quantities.</li>"
+            "<li><b>k<sub>m</sub></b> (px, default 0.3; 0.13 for an expert operator) and "
+            "<b>k<sub>s</sub></b> (default 2).</li>"
+            "<li><b>Pyramid level N<sub>p</sub></b> (default 0.5, a fraction in (0, 1], or "
+            "a percentage) and <b>subsampling step T<sub>s</sub></b> (px, ≥ 1, default "
+            "2).</li>"
+            "<li><b>Observed σx, σy, σz, σxyz</b> (mm) and <b>observed dense-cloud std</b> "
+            "(cm): optional; give the observed/theoretical ratios.</li>"
+            "<li><b>Extension</b> (not in the paper): stereo base (m) gives the "
+            "normal-case σ<sub>Z</sub>; forward/side overlap (%) give the exposure and "
+            "line spacing.</li>"
+            "<li><b>GSD calculator report</b>: optional HTML report.</li></ul>"
             "<p>Every result is also an output number, so the graphical modeler can chain "
-            "it.</p>")
+            "it.</p>"))
 
     def initAlgorithm(self, config=None):  # noqa: N802
         names = [self.tr("Custom (enter the values below)")] + [c.name for c in CAMERAS.values()]
         self.add(QgsProcessingParameterEnum(self.CAMERA, self.tr("Camera preset"), names,
                                             defaultValue=0))
         self.add_number(self.DISTANCE, self.tr("Camera–object distance / flying height (m)"),
-                        minimum=0.0)
-        self.add_number(self.SENSOR_WIDTH, self.tr("Sensor width (mm)"), minimum=0.0,
-                        optional=True)
-        self.add_number(self.IMAGE_WIDTH, self.tr("Image width (px)"), minimum=0.0,
-                        optional=True)
-        self.add_number(self.FOCAL_LENGTH, self.tr("Focal length, true (mm)"), minimum=0.0,
-                        optional=True)
+                        self.DEFAULT_DISTANCE, minimum=1e-3)
+        required = self.tr("Required with the Custom camera; overrides the preset.")
+        self.add_number(self.SENSOR_WIDTH, self.tr("Sensor width (mm) — required with "
+                                                   "Custom"),
+                        minimum=0.0, optional=True, help_text=required)
+        self.add_number(self.IMAGE_WIDTH, self.tr("Image width (px) — required with "
+                                                  "Custom"),
+                        minimum=0.0, optional=True, help_text=required)
+        self.add_number(self.FOCAL_LENGTH, self.tr("Focal length, true (mm) — required "
+                                                   "with Custom"),
+                        minimum=0.0, optional=True, help_text=required)
         self.add_number(self.SENSOR_HEIGHT, self.tr("Sensor height (mm)"), minimum=0.0,
                         optional=True, advanced=True)
         self.add_number(self.IMAGE_HEIGHT, self.tr("Image height (px)"), minimum=0.0,
@@ -191,12 +207,24 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
         self.add_number(self.SIDE_OVERLAP, self.tr("Side overlap (%) [extension]"),
                         minimum=0.0, maximum=99.9, optional=True, advanced=True)
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("GSD calculator report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
+        self.add_report_language()
         for _, out, unit in NUMERIC_OUTPUTS:
             self.addOutput(QgsProcessingOutputNumber(out, f"{out} ({unit})" if unit else out))
 
     # ------------------------------------------------------------------ running
+    def checkParameterValues(self, parameters, context):  # noqa: N802
+        """Refuse a Custom camera without its values before the run starts."""
+        ok, msg = super().checkParameterValues(parameters, context)
+        if not ok:
+            return ok, msg
+        try:
+            self.camera_inputs(parameters, context)
+        except InputError as exc:
+            return False, str(exc)
+        return True, ""
+
     def camera_inputs(self, parameters, context) -> dict:
         """Sensor/image/focal values from the preset, overridden by entered values."""
         index = self.parameterAsEnum(parameters, self.CAMERA, context)
@@ -221,18 +249,36 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
                                  ("image_width", self.IMAGE_WIDTH, "px"),
                                  ("focal_length", self.FOCAL_LENGTH, "mm")):
             if key_ not in values:
-                raise QgsProcessingException(self.tr(
+                raise InputError(self.tr(
                     "{name} ({unit}) is required with the Custom camera: enter it or "
                     "choose a camera preset.").format(name=name, unit=unit))
         return values
 
     def process(self, parameters, context, feedback):
         camera = self.camera_inputs(parameters, context)
-        distance = _optional(parameters, self.DISTANCE)
-        if distance is None:
-            raise QgsProcessingException(self.tr("DISTANCE (m) is required."))
-        result = core_gsd.compute(
-            distance=distance, **camera,
+        distance = self.parameterAsDouble(parameters, self.DISTANCE, context)
+        with self.output_contract(parameters, context, [self.OUTPUT_HTML]) as out:
+            result = core_gsd.compute(distance=distance, **camera,
+                                      **self.options(parameters, context))
+            values = result.as_dict()
+            outputs = {}
+            for attr, name, unit in NUMERIC_OUTPUTS:
+                outputs[name] = values[attr]
+                if values[attr] is not None:
+                    feedback.pushInfo(f"{name}: {values[attr]:.6g} {unit}")
+            if out.requested(self.OUTPUT_HTML):
+                index = self.parameterAsEnum(parameters, self.CAMERA, context)
+                preset = CAMERAS.get(CAMERA_KEYS[index])
+                report = gsd_report(result, camera=preset.name if preset else None)
+                out.write_text(self.OUTPUT_HTML,
+                               self.render_report(report, parameters, context))
+                outputs[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
+        feedback.setProgress(100)
+        return outputs
+
+    def options(self, parameters, context) -> dict:
+        """Keyword arguments of :func:`core.photogrammetry.gsd.compute` besides the camera."""
+        return dict(
             target_gsd=_optional(parameters, self.TARGET_GSD),
             round_gsd=self.parameterAsBool(parameters, self.ROUND_GSD, context),
             k_m=self.parameterAsDouble(parameters, self.K_M, context),
@@ -249,60 +295,6 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
             stereo_base=_optional(parameters, self.STEREO_BASE),
             forward_overlap=_optional(parameters, self.FORWARD_OVERLAP),
             side_overlap=_optional(parameters, self.SIDE_OVERLAP))
-        values = result.as_dict()
-        outputs = {}
-        for attr, out, unit in NUMERIC_OUTPUTS:
-            outputs[out] = values[attr]
-            if values[attr] is not None:
-                feedback.pushInfo(f"{out}: {values[attr]:.6g} {unit}")
-        html_path = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
-        if html_path:
-            self.write_text(html_path, self.report(result, camera, distance))
-            outputs[self.OUTPUT_HTML] = html_path
-        feedback.setProgress(100)
-        return outputs
-
-    def report(self, result, camera, distance) -> str:
-        values = result.as_dict()
-        labels = {
-            "gsd_cm": self.tr("GSD used"),
-            "gsd_exact_cm": self.tr("GSD, unrounded"),
-            "pixel_pitch_um": self.tr("Pixel pitch"),
-            "footprint_width_m": self.tr("Footprint width"),
-            "footprint_height_m": self.tr("Footprint height"),
-            "sigma_meas_mm": self.tr("Image measurement precision σ_meas"),
-            "sigma_xyz_mm": self.tr("Theoretical phototriangulation accuracy σ_xyz"),
-            "matching_step_px": self.tr("Dense matching step P"),
-            "dense_resolution_cm": self.tr("Theoretical dense-cloud resolution R_theo"),
-            "distance_for_target_m": self.tr("Distance for the target GSD"),
-            "observed_sigma_xyz_mm": self.tr("Observed σxyz"),
-            "ratio_xyz": self.tr("Observed / theoretical σxyz"),
-            "ratio_dense": self.tr("Observed dense std / R_theo"),
-            "stereo_base_m": self.tr("Stereo base (extension)"),
-            "stereo_sigma_xy_mm": self.tr("Stereo planimetric precision (extension)"),
-            "stereo_sigma_z_mm": self.tr("Stereo depth precision σ_Z (extension)"),
-            "exposure_spacing_m": self.tr("Exposure spacing (extension)"),
-            "line_spacing_m": self.tr("Flight-line spacing (extension)"),
-        }
-        rows = [(labels[a], values[a], unit) for a, _, unit in NUMERIC_OUTPUTS
-                if values[a] is not None]
-        inputs = [(self.tr("Distance"), distance, "m"),
-                  (self.tr("Sensor width"), camera["sensor_width"], "mm"),
-                  (self.tr("Image width"), camera["image_width"], "px"),
-                  (self.tr("Focal length"), camera["focal_length"], "mm")]
-        h_inputs, h_results = self.tr("Inputs"), self.tr("Results")
-        body = (f"<h2>{h_inputs}</h2>"
-                + html_table((self.tr("quantity"), self.tr("value"), self.tr("unit")),
-                             inputs, digits=None)
-                + f"<h2>{h_results}</h2>"
-                + html_table((self.tr("quantity"), self.tr("value"), self.tr("unit")),
-                             rows, digits=None)
-                + "<p class='note'>" + self.tr(
-                    "Formulas and defaults from Al Khalil (2019); the paper finds observed "
-                    "phototriangulation accuracy about 3–5 times the theoretical value. "
-                    "Items marked (extension) are not in the paper.") + "</p>")
-        return html_page(self.tr("GSD and photogrammetric accuracy"), body,
-                         lang=self.report_lang())
 
 
 class GsdBatchAlgorithm(GeomaticsAlgorithm):
@@ -366,62 +358,117 @@ class GsdBatchAlgorithm(GeomaticsAlgorithm):
             raise QgsProcessingException(self.invalidSourceError(parameters, self.INPUT))
         names = {f.name().lower(): f.name() for f in source.fields()}
         if "distance" not in names:
-            raise QgsProcessingException(self.tr(
+            raise InputError(self.tr(
                 "The table has no 'distance' column (m); columns found: {0}.").format(
                     ", ".join(names.values())))
         round_gsd = self.parameterAsBool(parameters, self.ROUND_GSD, context)
-        fields = QgsFields(source.fields())
         result_names = [a for a, _, _ in NUMERIC_OUTPUTS]
-        for attr in result_names:
-            fields.append(QgsField(attr, QVariant.Double))
-        sink, dest = self.parameterAsSink(parameters, self.OUTPUT, context, fields,
-                                          source.wkbType() if source.wkbType()
-                                          else QgsWkbTypes.NoGeometry, source.sourceCrs())
-        if sink is None:
-            raise QgsProcessingException(self.invalidSinkError(parameters, self.OUTPUT))
+        # Every row is computed before anything is written: a bad row leaves no output.
+        rows = []
         total = source.featureCount() or 1
         for i, feat in enumerate(source.getFeatures()):
             if feedback.isCanceled():
-                raise QgsProcessingException(self.tr("Cancelled by the user."))
-            kwargs = {}
-            preset_key = feat[names["camera"]] if "camera" in names else None
-            if preset_key not in (None, "") and str(preset_key) != "NULL":
-                cam = CAMERAS.get(str(preset_key).strip())
-                if cam is None:
-                    raise QgsProcessingException(self.tr(
-                        "Row {row}: unknown camera '{cam}'; known: {known}.").format(
-                            row=i + 1, cam=preset_key, known=", ".join(CAMERAS)))
-                kwargs.update(sensor_width=cam.sensor_width_mm,
-                              sensor_height=cam.sensor_height_mm,
-                              image_width=cam.image_width_px,
-                              image_height=cam.image_height_px,
-                              focal_length=cam.focal_length_mm)
-            for col, kw in self.COLUMNS.items():
-                if col not in names:
-                    continue
-                raw = feat[names[col]]
-                if raw is None or str(raw).strip() in ("", "NULL"):
-                    continue
-                try:
-                    kwargs[kw] = float(raw)
-                except (TypeError, ValueError):
-                    raise QgsProcessingException(self.tr(
-                        "Row {row}, column '{col}': '{val}' is not a number.").format(
-                            row=i + 1, col=col, val=raw)) from None
-            missing = [c for c in ("sensor_width", "image_width", "focal_length")
-                       if c not in kwargs]
-            if missing:
-                raise QgsProcessingException(self.tr(
-                    "Row {row}: missing {cols}; give the columns or a camera preset.").format(
-                        row=i + 1, cols=", ".join(missing)))
+                raise Cancelled()
+            res = self.compute_row(i + 1, feat, names, round_gsd)
+            rows.append((feat, [res[a] for a in result_names]))
+            feedback.setProgress(90.0 * (i + 1) / total)
+        fields = QgsFields(source.fields())
+        for attr in result_names:
+            fields.append(QgsField(attr, QVariant.Double))
+        geometry = source.wkbType() if source.wkbType() else QgsWkbTypes.NoGeometry
+        dest = self.write_rows(parameters, context, fields, geometry, source.sourceCrs(),
+                               rows)
+        feedback.setProgress(100)
+        return {self.OUTPUT: dest}
+
+    def compute_row(self, row: int, feat, names: dict, round_gsd: bool) -> dict:
+        """The calculator's results for one table row; errors name the row and column."""
+        kwargs = {}
+        preset_key = feat[names["camera"]] if "camera" in names else None
+        if preset_key not in (None, "") and str(preset_key) != "NULL":
+            cam = CAMERAS.get(str(preset_key).strip())
+            if cam is None:
+                raise InputError(self.tr(
+                    "Row {row}: unknown camera '{cam}'; known: {known}.").format(
+                        row=row, cam=preset_key, known=", ".join(CAMERAS)))
+            kwargs.update(sensor_width=cam.sensor_width_mm,
+                          sensor_height=cam.sensor_height_mm,
+                          image_width=cam.image_width_px,
+                          image_height=cam.image_height_px,
+                          focal_length=cam.focal_length_mm)
+        for col, kw in self.COLUMNS.items():
+            if col not in names:
+                continue
+            raw = feat[names[col]]
+            if raw is None or str(raw).strip() in ("", "NULL"):
+                continue
             try:
-                res = core_gsd.compute(round_gsd=round_gsd, **kwargs).as_dict()
-            except ValueError as exc:
-                raise QgsProcessingException(self.tr("Row {row}: {err}").format(
-                    row=i + 1, err=exc)) from exc
+                kwargs[kw] = float(raw)
+            except (TypeError, ValueError):
+                raise InputError(self.tr(
+                    "Row {row}, column '{col}': '{val}' is not a number.").format(
+                        row=row, col=col, val=raw)) from None
+        missing = [c for c in ("distance", "sensor_width", "image_width", "focal_length")
+                   if c not in kwargs]
+        if missing:
+            raise InputError(self.tr(
+                "Row {row}: missing {cols}; give the columns or a camera preset.").format(
+                    row=row, cols=", ".join(missing)))
+        try:
+            return core_gsd.compute(round_gsd=round_gsd, **kwargs).as_dict()
+        except ValueError as exc:
+            raise InputError(self.tr("Row {row}: {err}").format(row=row, err=exc)) from exc
+
+    def write_rows(self, parameters, context, fields, geometry, crs, rows) -> str:
+        """Write the result table through the output contract; returns its destination.
+
+        A file destination is written under a temporary name and renamed only when
+        complete, and may not be the input table; other destinations (a temporary or
+        memory layer, a database) are written directly once every row is computed.
+        """
+        final = self.parameterAsOutputLayer(parameters, self.OUTPUT, context)
+        input_path = self.source_path(parameters, context)
+        path = final.split("|")[0]
+        if not _is_file_destination(path):
+            return self.fill_sink(parameters, context, fields, geometry, crs, rows)
+        inputs = {self.INPUT: input_path} if input_path else {}
+        with OutputContract({self.OUTPUT: path}, inputs=inputs) as out:
+            tmp = out.path(self.OUTPUT)
+            self.fill_sink({**parameters, self.OUTPUT: tmp}, context, fields, geometry,
+                           crs, rows)
+        return path
+
+    def fill_sink(self, parameters, context, fields, geometry, crs, rows) -> str:
+        """Create the sink of ``parameters[OUTPUT]``, add every row, flush and close it."""
+        sink, dest = self.parameterAsSink(parameters, self.OUTPUT, context, fields,
+                                          geometry, crs)
+        if sink is None:
+            raise QgsProcessingException(self.invalidSinkError(parameters, self.OUTPUT))
+        for feat, values in rows:
             out = QgsFeature(fields)
             out.setGeometry(feat.geometry())
-            out.setAttributes(list(feat.attributes()) + [res[a] for a in result_names])
-            sink.addFeature(out, QgsFeatureSink.FastInsert)
-            feedback.setProgress(100.0 * (i + 1) / total)
-        return {self.OUTPUT: dest}
+            out.setAttributes(list(feat.attributes()) + values)
+            if not sink.addFeature(out, QgsFeatureSink.FastInsert):
+                raise OSError(self.tr("Could not write the result table: {0}").format(
+                    sink.lastError() if hasattr(sink, "lastError") else dest))
+        del sink  # flushes and closes the file
+        return dest
+
+    def source_path(self, parameters, context) -> str:
+        """Local file behind the input table ('' for a memory or database layer)."""
+        layer = self.parameterAsVectorLayer(parameters, self.INPUT, context)
+        if layer is not None:
+            path = layer.source().split("|")[0]
+        else:
+            value = parameters.get(self.INPUT)
+            path = value.split("|")[0] if isinstance(value, str) else ""
+        if path.startswith("file://"):
+            path = path[len("file://"):].split("?")[0]
+        return path if os.path.exists(path) else ""
+
+
+def _is_file_destination(path: str) -> bool:
+    """True for a plain file path (not memory:, a database URI or an OGR/postgres URI)."""
+    return bool(path) and not path.startswith(("memory:", "postgres:", "postgis:", "ogr:",
+                                              "spatialite:", "dbname=")) and \
+        os.path.isdir(os.path.dirname(os.path.abspath(path)))

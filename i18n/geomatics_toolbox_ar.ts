@@ -581,10 +581,6 @@
             <translation>لا يحتوي الجدول على العمود 'distance' (م)؛ الأعمدة الموجودة: {0}.</translation>
         </message>
         <message>
-            <source>Cancelled by the user.</source>
-            <translation>ألغى المستخدم العملية.</translation>
-        </message>
-        <message>
             <source>Row {row}: unknown camera '{cam}'; known: {known}.</source>
             <translation>السطر {row}: كاميرا غير معروفة '{cam}'؛ المعروفة: {known}.</translation>
         </message>
@@ -604,6 +600,10 @@
             <source>&lt;p&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/p&gt;</source>
             <translation>&lt;p&gt;&lt;b&gt;تقريب GSD كما في البحث&lt;/b&gt; (ROUND_GSD، الافتراضي: لا): يقرّب GSD إلى 0.01 سم/بكسل قبل حساب الكميات المشتقة.&lt;/p&gt;</translation>
         </message>
+        <message>
+            <source>Could not write the result table: {0}</source>
+            <translation>تعذّرت كتابة جدول النتائج: {0}</translation>
+        </message>
     </context>
     <context>
         <name>GsdCalculatorAlgorithm</name>
@@ -616,10 +616,6 @@
             <translation>gsd,المسافة الأرضية للبكسل,ارتفاع الطيران,البصمة الأرضية,الدقة,المساحة التصويرية,طائرة مسيرة,تخطيط الطيران,المطابقة الكثيفة</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Computes the ground sampling distance (GSD) of a camera at a given distance, the image footprint, the theoretical accuracy of phototriangulation and of a dense-matching point cloud, and compares observed accuracies with the theory (Al Khalil 2019).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Formulas&lt;/b&gt;: GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;); footprint = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;; σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD; σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;; matching step P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;; dense resolution R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt; (the paper's Nikon Coolpix P100): DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 gives GSD 0.21455 cm/px, σ&lt;sub&gt;xyz&lt;/sub&gt; 1.287 mm (1.26 mm with ROUND_GSD), R&lt;sub&gt;theo&lt;/sub&gt; 0.858 cm, footprint 7.827 m.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Camera preset&lt;/b&gt; (CAMERA, default Custom): fills sensor width/height, image width/height and focal length; values you enter override the preset.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance&lt;/b&gt; (DISTANCE, m): camera–object distance or flying height above ground. Required, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor width&lt;/b&gt; (SENSOR_WIDTH, mm), &lt;b&gt;Image width&lt;/b&gt; (IMAGE_WIDTH, px), &lt;b&gt;Focal length&lt;/b&gt; (FOCAL_LENGTH, mm, the true focal length, not the 35 mm equivalent): required with the Custom camera, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor height&lt;/b&gt; (SENSOR_HEIGHT, mm) / &lt;b&gt;Image height&lt;/b&gt; (IMAGE_HEIGHT, px): optional, for the footprint height and flight spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Target GSD&lt;/b&gt; (TARGET_GSD, cm/px): optional; gives the distance or flying height that achieves it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (K_M, px, default 0.3; 0.13 for an expert operator) and &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (K_S, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pyramid level N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (PYRAMID_LEVEL, default 0.5, a fraction in (0, 1], or a percentage in (0, 100] with PYRAMID_PERCENT) and &lt;b&gt;subsampling step T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (SUBSAMPLING_STEP, px, ≥ 1, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Observed σx, σy, σz, σxyz&lt;/b&gt; (mm) and &lt;b&gt;observed dense-cloud std&lt;/b&gt; (cm): optional; give the observed/theoretical ratios.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extension&lt;/b&gt; (not in the paper): stereo base (STEREO_BASE, m) → normal-case σ&lt;sub&gt;Z&lt;/sub&gt; = (D/B)(D/c)σ&lt;sub&gt;image&lt;/sub&gt; with σ&lt;sub&gt;image&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt; pixels; forward/side overlap (%) → exposure and line spacing (image height along track, width across track).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): optional HTML report.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every result is also an output number, so the graphical modeler can chain it.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;تحسب المسافة الأرضية للبكسل (GSD) لكاميرا على مسافة معينة، والبصمة الأرضية للصورة، والدقة النظرية للتثليث التصويري ولسحابة النقاط الناتجة عن المطابقة الكثيفة، وتقارن الدقة المرصودة بالنظرية (الخليل 2019).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعادلات&lt;/b&gt;: GSD [سم/بكسل] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;)؛ البصمة = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;؛ σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD؛ σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;؛ خطوة المطابقة P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;؛ الدقة النظرية للسحابة R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt; (كاميرا Nikon Coolpix P100 في البحث): DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 يعطي GSD = 0.21455 سم/بكسل، σ&lt;sub&gt;xyz&lt;/sub&gt; = 1.287 مم (1.26 مم مع ROUND_GSD)، R&lt;sub&gt;theo&lt;/sub&gt; = 0.858 سم، البصمة 7.827 م.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;كاميرا معرّفة مسبقاً&lt;/b&gt; (CAMERA، الافتراضي: مخصص): تملأ عرض الحساس وارتفاعه وأبعاد الصورة والبعد البؤري؛ القيم التي تدخلها تتقدّم على قيم الكاميرا.&lt;/li&gt;&lt;li&gt;&lt;b&gt;المسافة&lt;/b&gt; (DISTANCE، م): المسافة بين الكاميرا والجسم أو ارتفاع الطيران فوق الأرض. إلزامية، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عرض الحساس&lt;/b&gt; (SENSOR_WIDTH، مم)، &lt;b&gt;عرض الصورة&lt;/b&gt; (IMAGE_WIDTH، بكسل)، &lt;b&gt;البعد البؤري&lt;/b&gt; (FOCAL_LENGTH، مم، البعد الحقيقي لا المكافئ لـ35 مم): إلزامية مع الكاميرا المخصصة، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ارتفاع الحساس&lt;/b&gt; (SENSOR_HEIGHT، مم) / &lt;b&gt;ارتفاع الصورة&lt;/b&gt; (IMAGE_HEIGHT، بكسل): اختيارية، لارتفاع البصمة والمسافات بين اللقطات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD المطلوب&lt;/b&gt; (TARGET_GSD، سم/بكسل): اختياري؛ يعطي المسافة أو ارتفاع الطيران المحقق له.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تقريب GSD كما في البحث&lt;/b&gt; (ROUND_GSD، الافتراضي: لا): يقرّب GSD إلى 0.01 سم/بكسل قبل حساب الكميات المشتقة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (K_M، بكسل، الافتراضي 0.3؛ 0.13 لمشغّل خبير) و&lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (K_S، الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مستوى الهرم N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (PYRAMID_LEVEL، الافتراضي 0.5، كسر في (0، 1]، أو نسبة مئوية في (0، 100] مع PYRAMID_PERCENT) و&lt;b&gt;خطوة الاعتيان T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (SUBSAMPLING_STEP، بكسل، ≥ 1، الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;σx وσy وσz وσxyz المرصودة&lt;/b&gt; (مم) و&lt;b&gt;الانحراف المعياري المرصود للسحابة الكثيفة&lt;/b&gt; (سم): اختيارية؛ تعطي نسب المرصود إلى النظري.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إضافة&lt;/b&gt; (ليست في البحث): قاعدة الزوج المجسم (STEREO_BASE، م) ← σ&lt;sub&gt;Z&lt;/sub&gt; = (D/B)(D/c)σ&lt;sub&gt;image&lt;/sub&gt; للحالة النظامية مع σ&lt;sub&gt;image&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt; بكسل؛ التداخل الطولي/الجانبي (%) ← المسافة بين اللقطات وبين خطوط الطيران (ارتفاع الصورة باتجاه الطيران وعرضها عمودياً عليه).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML): تقرير HTML اختياري.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;كل نتيجة هي أيضاً مخرج رقمي، لذا يمكن ربطها في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Custom (enter the values below)</source>
             <translation>مخصص (أدخل القيم أدناه)</translation>
         </message>
@@ -630,18 +626,6 @@
         <message>
             <source>Camera–object distance / flying height (m)</source>
             <translation>المسافة بين الكاميرا والجسم / ارتفاع الطيران (م)</translation>
-        </message>
-        <message>
-            <source>Sensor width (mm)</source>
-            <translation>عرض الحساس (مم)</translation>
-        </message>
-        <message>
-            <source>Image width (px)</source>
-            <translation>عرض الصورة (بكسل)</translation>
-        </message>
-        <message>
-            <source>Focal length, true (mm)</source>
-            <translation>البعد البؤري الحقيقي (مم)</translation>
         </message>
         <message>
             <source>Sensor height (mm)</source>
@@ -712,10 +696,6 @@
             <translation>التداخل الجانبي (%) [إضافة]</translation>
         </message>
         <message>
-            <source>Report</source>
-            <translation>التقرير</translation>
-        </message>
-        <message>
             <source>HTML files (*.html)</source>
             <translation>ملفات HTML (*.html)</translation>
         </message>
@@ -724,124 +704,44 @@
             <translation>القيمة {name} ({unit}) مطلوبة مع الكاميرا المخصصة: أدخلها أو اختر كاميرا معرّفة مسبقاً.</translation>
         </message>
         <message>
-            <source>DISTANCE (m) is required.</source>
-            <translation>المسافة DISTANCE (م) مطلوبة.</translation>
+            <source>Ground sampling distance, footprint and theoretical photogrammetric accuracy of a camera at a distance.</source>
+            <translation>المسافة الأرضية للعيّنة والتغطية الأرضية والدقة التصويرية النظرية لكاميرا على مسافة معيّنة.</translation>
         </message>
         <message>
-            <source>GSD used</source>
-            <translation>GSD المستخدم</translation>
+            <source>&lt;p&gt;Computes the ground sampling distance (GSD) and footprint of a camera at a given distance or flying height. It also gives the theoretical accuracy of phototriangulation and of a dense-matching cloud, and compares observed accuracies with it (Al Khalil 2019).&lt;/p&gt;</source>
+            <translation>&lt;p&gt;يحسب المسافة الأرضية للعيّنة (GSD) والتغطية الأرضية لكاميرا على مسافة أو ارتفاع طيران معيّن. ويعطي أيضًا الدقة النظرية للتثليث الجوي ولسحابة المطابقة الكثيفة، ويقارن الدقة المرصودة بها (الخليل 2019).&lt;/p&gt;</translation>
         </message>
         <message>
-            <source>GSD, unrounded</source>
-            <translation>GSD دون تقريب</translation>
+            <source>&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the paper's Nikon Coolpix P100 at 5.88 m (sensor width 6.123 mm, image width 3648 px, focal length 4.6 mm) gives a GSD of 0.21455 cm/px, σ&lt;sub&gt;xyz&lt;/sub&gt; 1.287 mm (1.26 mm with the rounded GSD), a dense-cloud resolution of 0.858 cm and a footprint 7.827 m wide.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: كاميرا Nikon Coolpix P100 في البحث على مسافة ‎5.88 m‏ (عرض المستشعر ‎6.123 mm‏، عرض الصورة ‎3648 px‏، البعد البؤري ‎4.6 mm‏) تعطي GSD مقدارها ‎0.21455 cm/px‏، و σ&lt;sub&gt;xyz&lt;/sub&gt; ‎1.287 mm‏ (‎1.26 mm‏ مع GSD المقرّبة)، ودقة سحابة كثيفة ‎0.858 cm‏، وتغطية أرضية بعرض ‎7.827 m‏.&lt;/p&gt;</translation>
         </message>
         <message>
-            <source>Pixel pitch</source>
-            <translation>أبعاد البكسل على الحساس</translation>
+            <source>&lt;p&gt;&lt;b&gt;Formulas&lt;/b&gt;: GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;); footprint = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;; σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD; σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;; matching step P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;; dense resolution R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;&lt;b&gt;الصيغ&lt;/b&gt;: &lt;span dir="ltr"&gt;GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;)&lt;/span&gt;؛ التغطية = &lt;span dir="ltr"&gt;D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;&lt;/span&gt;؛ &lt;span dir="ltr"&gt;σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD&lt;/span&gt;؛ &lt;span dir="ltr"&gt;σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;&lt;/span&gt;؛ خطوة المطابقة &lt;span dir="ltr"&gt;P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;&lt;/span&gt;؛ دقة السحابة الكثيفة &lt;span dir="ltr"&gt;R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD&lt;/span&gt;.&lt;/p&gt;</translation>
         </message>
         <message>
-            <source>Footprint width</source>
-            <translation>عرض البصمة الأرضية</translation>
+            <source>&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Camera preset&lt;/b&gt; (default Custom): fills the sensor, image and focal length values; values you enter override the preset.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance&lt;/b&gt; (m, default 100): camera–object distance or flying height above ground, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor width&lt;/b&gt; (mm), &lt;b&gt;image width&lt;/b&gt; (px) and &lt;b&gt;focal length&lt;/b&gt; (mm, the true focal length, not the 35 mm equivalent): required with the Custom camera.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor height&lt;/b&gt; (mm) / &lt;b&gt;image height&lt;/b&gt; (px): optional, for the footprint height and the flight spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Target GSD&lt;/b&gt; (cm/px): optional; gives the distance that achieves it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (px, default 0.3; 0.13 for an expert operator) and &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pyramid level N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (default 0.5, a fraction in (0, 1], or a percentage) and &lt;b&gt;subsampling step T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (px, ≥ 1, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Observed σx, σy, σz, σxyz&lt;/b&gt; (mm) and &lt;b&gt;observed dense-cloud std&lt;/b&gt; (cm): optional; give the observed/theoretical ratios.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extension&lt;/b&gt; (not in the paper): stereo base (m) gives the normal-case σ&lt;sub&gt;Z&lt;/sub&gt;; forward/side overlap (%) give the exposure and line spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD calculator report&lt;/b&gt;: optional HTML report.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every result is also an output number, so the graphical modeler can chain it.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الكاميرا المعرّفة مسبقًا&lt;/b&gt; (الافتراضي: مخصّص): تملأ قيم المستشعر والصورة والبعد البؤري؛ والقيم التي تُدخلها تتقدّم عليها.&lt;/li&gt;&lt;li&gt;&lt;b&gt;المسافة&lt;/b&gt; (m، الافتراضي 100): المسافة بين الكاميرا والجسم أو ارتفاع الطيران فوق الأرض، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عرض المستشعر&lt;/b&gt; (mm) و&lt;b&gt;عرض الصورة&lt;/b&gt; (px) و&lt;b&gt;البعد البؤري&lt;/b&gt; (mm، البعد البؤري الحقيقي لا المكافئ لـ 35 mm): مطلوبة مع الكاميرا «المخصّصة».&lt;/li&gt;&lt;li&gt;&lt;b&gt;ارتفاع المستشعر&lt;/b&gt; (mm) / &lt;b&gt;ارتفاع الصورة&lt;/b&gt; (px): اختياريان، لارتفاع التغطية ولتباعد الطيران.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD المستهدفة&lt;/b&gt; (cm/px): اختيارية؛ تعطي المسافة التي تحققها.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تقريب GSD كما في البحث&lt;/b&gt; (الافتراضي: لا): تقريب GSD إلى ‎0.01 cm/px‏ قبل حساب الكميات المشتقة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (px، الافتراضي 0.3؛ و0.13 لمشغّل خبير) و&lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مستوى الهرم N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (الافتراضي 0.5، كسر في (0، 1]، أو نسبة مئوية) و&lt;b&gt;خطوة الاعتيان T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (px، ≥ 1، الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;σx وσy وσz وσxyz المرصودة&lt;/b&gt; (mm) و&lt;b&gt;الانحراف المعياري المرصود للسحابة الكثيفة&lt;/b&gt; (cm): اختيارية؛ تعطي نسب المرصود إلى النظري.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إضافة&lt;/b&gt; (ليست في البحث): قاعدة الاستريو (m) تعطي σ&lt;sub&gt;Z&lt;/sub&gt; للحالة العادية؛ والتداخل الأمامي/الجانبي (%) يعطي تباعد اللقطات وتباعد خطوط الطيران.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تقرير حاسبة GSD&lt;/b&gt;: تقرير HTML اختياري.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;كل نتيجة هي أيضًا رقم ناتج، فيمكن ربطها في المُنمذج الرسومي.&lt;/p&gt;</translation>
         </message>
         <message>
-            <source>Footprint height</source>
-            <translation>ارتفاع البصمة الأرضية</translation>
+            <source>Required with the Custom camera; overrides the preset.</source>
+            <translation>مطلوب مع الكاميرا «المخصّصة»؛ ويتقدّم على الإعداد المسبق.</translation>
         </message>
         <message>
-            <source>Image measurement precision σ_meas</source>
-            <translation>دقة القياس على الصورة σ_meas</translation>
+            <source>Sensor width (mm) — required with Custom</source>
+            <translation>عرض المستشعر (mm) — مطلوب مع «مخصّص»</translation>
         </message>
         <message>
-            <source>Theoretical phototriangulation accuracy σ_xyz</source>
-            <translation>الدقة النظرية للتثليث التصويري σ_xyz</translation>
+            <source>Image width (px) — required with Custom</source>
+            <translation>عرض الصورة (px) — مطلوب مع «مخصّص»</translation>
         </message>
         <message>
-            <source>Dense matching step P</source>
-            <translation>خطوة المطابقة الكثيفة P</translation>
+            <source>Focal length, true (mm) — required with Custom</source>
+            <translation>البعد البؤري الحقيقي (mm) — مطلوب مع «مخصّص»</translation>
         </message>
         <message>
-            <source>Theoretical dense-cloud resolution R_theo</source>
-            <translation>الدقة النظرية للسحابة الكثيفة R_theo</translation>
-        </message>
-        <message>
-            <source>Distance for the target GSD</source>
-            <translation>المسافة اللازمة لتحقيق GSD المطلوب</translation>
-        </message>
-        <message>
-            <source>Observed σxyz</source>
-            <translation>σxyz المرصود</translation>
-        </message>
-        <message>
-            <source>Observed / theoretical σxyz</source>
-            <translation>نسبة σxyz المرصود إلى النظري</translation>
-        </message>
-        <message>
-            <source>Observed dense std / R_theo</source>
-            <translation>نسبة الانحراف المرصود للسحابة الكثيفة إلى R_theo</translation>
-        </message>
-        <message>
-            <source>Stereo base (extension)</source>
-            <translation>قاعدة الزوج المجسم (إضافة)</translation>
-        </message>
-        <message>
-            <source>Stereo planimetric precision (extension)</source>
-            <translation>الدقة المستوية للزوج المجسم (إضافة)</translation>
-        </message>
-        <message>
-            <source>Stereo depth precision σ_Z (extension)</source>
-            <translation>دقة العمق للزوج المجسم σ_Z (إضافة)</translation>
-        </message>
-        <message>
-            <source>Exposure spacing (extension)</source>
-            <translation>المسافة بين اللقطات (إضافة)</translation>
-        </message>
-        <message>
-            <source>Flight-line spacing (extension)</source>
-            <translation>المسافة بين خطوط الطيران (إضافة)</translation>
-        </message>
-        <message>
-            <source>Distance</source>
-            <translation>المسافة</translation>
-        </message>
-        <message>
-            <source>Sensor width</source>
-            <translation>عرض الحساس</translation>
-        </message>
-        <message>
-            <source>Image width</source>
-            <translation>عرض الصورة</translation>
-        </message>
-        <message>
-            <source>Focal length</source>
-            <translation>البعد البؤري</translation>
-        </message>
-        <message>
-            <source>quantity</source>
-            <translation>الكمية</translation>
-        </message>
-        <message>
-            <source>value</source>
-            <translation>القيمة</translation>
-        </message>
-        <message>
-            <source>unit</source>
-            <translation>الوحدة</translation>
-        </message>
-        <message>
-            <source>Formulas and defaults from Al Khalil (2019); the paper finds observed phototriangulation accuracy about 3–5 times the theoretical value. Items marked (extension) are not in the paper.</source>
-            <translation>المعادلات والقيم الافتراضية من الخليل (2019)؛ وجد البحث أن دقة التثليث التصويري المرصودة تعادل نحو 3–5 أضعاف القيمة النظرية. البنود المعلَّمة بـ(إضافة) ليست من البحث.</translation>
-        </message>
-        <message>
-            <source>GSD and photogrammetric accuracy</source>
-            <translation>GSD والدقة التصويرية</translation>
-        </message>
-        <message>
-            <source>Inputs</source>
-            <translation>المدخلات</translation>
-        </message>
-        <message>
-            <source>Results</source>
-            <translation>النتائج</translation>
+            <source>GSD calculator report</source>
+            <translation>تقرير حاسبة GSD</translation>
         </message>
     </context>
     <context>

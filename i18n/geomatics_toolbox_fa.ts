@@ -581,10 +581,6 @@
             <translation>جدول ستون 'distance' (متر) ندارد؛ ستون‌های موجود: {0}.</translation>
         </message>
         <message>
-            <source>Cancelled by the user.</source>
-            <translation>کاربر عملیات را لغو کرد.</translation>
-        </message>
-        <message>
             <source>Row {row}: unknown camera '{cam}'; known: {known}.</source>
             <translation>ردیف {row}: دوربین ناشناختهٔ '{cam}'؛ دوربین‌های شناخته: {known}.</translation>
         </message>
@@ -604,6 +600,10 @@
             <source>&lt;p&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/p&gt;</source>
             <translation>&lt;p&gt;&lt;b&gt;گرد کردن GSD مانند مقاله&lt;/b&gt; (ROUND_GSD، پیش‌فرض: خیر): GSD را پیش از محاسبهٔ کمیت‌های وابسته به ۰٫۰۱ سانتی‌متر/پیکسل گرد می‌کند.&lt;/p&gt;</translation>
         </message>
+        <message>
+            <source>Could not write the result table: {0}</source>
+            <translation>نوشتن جدول نتایج ممکن نشد: {0}</translation>
+        </message>
     </context>
     <context>
         <name>GsdCalculatorAlgorithm</name>
@@ -616,10 +616,6 @@
             <translation>gsd,فاصله نمونه‌برداری زمینی,ارتفاع پرواز,پوشش زمینی,دقت,فتوگرامتری,پهپاد,طراحی پرواز,تناظریابی متراکم</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Computes the ground sampling distance (GSD) of a camera at a given distance, the image footprint, the theoretical accuracy of phototriangulation and of a dense-matching point cloud, and compares observed accuracies with the theory (Al Khalil 2019).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Formulas&lt;/b&gt;: GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;); footprint = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;; σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD; σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;; matching step P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;; dense resolution R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt; (the paper's Nikon Coolpix P100): DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 gives GSD 0.21455 cm/px, σ&lt;sub&gt;xyz&lt;/sub&gt; 1.287 mm (1.26 mm with ROUND_GSD), R&lt;sub&gt;theo&lt;/sub&gt; 0.858 cm, footprint 7.827 m.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Camera preset&lt;/b&gt; (CAMERA, default Custom): fills sensor width/height, image width/height and focal length; values you enter override the preset.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance&lt;/b&gt; (DISTANCE, m): camera–object distance or flying height above ground. Required, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor width&lt;/b&gt; (SENSOR_WIDTH, mm), &lt;b&gt;Image width&lt;/b&gt; (IMAGE_WIDTH, px), &lt;b&gt;Focal length&lt;/b&gt; (FOCAL_LENGTH, mm, the true focal length, not the 35 mm equivalent): required with the Custom camera, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor height&lt;/b&gt; (SENSOR_HEIGHT, mm) / &lt;b&gt;Image height&lt;/b&gt; (IMAGE_HEIGHT, px): optional, for the footprint height and flight spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Target GSD&lt;/b&gt; (TARGET_GSD, cm/px): optional; gives the distance or flying height that achieves it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (K_M, px, default 0.3; 0.13 for an expert operator) and &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (K_S, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pyramid level N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (PYRAMID_LEVEL, default 0.5, a fraction in (0, 1], or a percentage in (0, 100] with PYRAMID_PERCENT) and &lt;b&gt;subsampling step T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (SUBSAMPLING_STEP, px, ≥ 1, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Observed σx, σy, σz, σxyz&lt;/b&gt; (mm) and &lt;b&gt;observed dense-cloud std&lt;/b&gt; (cm): optional; give the observed/theoretical ratios.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extension&lt;/b&gt; (not in the paper): stereo base (STEREO_BASE, m) → normal-case σ&lt;sub&gt;Z&lt;/sub&gt; = (D/B)(D/c)σ&lt;sub&gt;image&lt;/sub&gt; with σ&lt;sub&gt;image&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt; pixels; forward/side overlap (%) → exposure and line spacing (image height along track, width across track).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): optional HTML report.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every result is also an output number, so the graphical modeler can chain it.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;فاصلهٔ نمونه‌برداری زمینی (GSD) یک دوربین در فاصلهٔ معین، پوشش زمینی تصویر، دقت نظری مثلث‌بندی هوایی و ابر نقاط حاصل از تناظریابی متراکم را محاسبه می‌کند و دقت مشاهده‌شده را با مقدار نظری می‌سنجد (الخلیل ۲۰۱۹).&lt;/p&gt;&lt;p&gt;&lt;b&gt;فرمول‌ها&lt;/b&gt;: GSD [سانتی‌متر/پیکسل] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;)؛ پوشش = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;؛ σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD؛ σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;؛ گام تناظریابی P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;؛ تفکیک نظری ابر R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt; (دوربین Nikon Coolpix P100 مقاله): DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 نتیجه می‌دهد GSD = 0.21455 سانتی‌متر/پیکسل، σ&lt;sub&gt;xyz&lt;/sub&gt; = 1.287 میلی‌متر (1.26 با ROUND_GSD)، R&lt;sub&gt;theo&lt;/sub&gt; = 0.858 سانتی‌متر، پوشش 7.827 متر.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;دوربین از پیش تعریف‌شده&lt;/b&gt; (CAMERA، پیش‌فرض: سفارشی): عرض و ارتفاع حسگر، ابعاد تصویر و فاصلهٔ کانونی را پر می‌کند؛ مقادیری که وارد کنید بر آن مقدم‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;فاصله&lt;/b&gt; (DISTANCE، متر): فاصلهٔ دوربین تا شیء یا ارتفاع پرواز از زمین. الزامی، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عرض حسگر&lt;/b&gt; (SENSOR_WIDTH، میلی‌متر)، &lt;b&gt;عرض تصویر&lt;/b&gt; (IMAGE_WIDTH، پیکسل)، &lt;b&gt;فاصلهٔ کانونی&lt;/b&gt; (FOCAL_LENGTH، میلی‌متر، مقدار واقعی نه معادل ۳۵ میلی‌متری): برای دوربین سفارشی الزامی، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ارتفاع حسگر&lt;/b&gt; (SENSOR_HEIGHT، میلی‌متر) / &lt;b&gt;ارتفاع تصویر&lt;/b&gt; (IMAGE_HEIGHT، پیکسل): اختیاری، برای طول پوشش و فواصل پرواز.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD هدف&lt;/b&gt; (TARGET_GSD، سانتی‌متر/پیکسل): اختیاری؛ فاصله یا ارتفاع پروازی را که به آن می‌رسد می‌دهد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گرد کردن GSD مانند مقاله&lt;/b&gt; (ROUND_GSD، پیش‌فرض: خیر): GSD را پیش از محاسبهٔ کمیت‌های وابسته به ۰٫۰۱ سانتی‌متر/پیکسل گرد می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (K_M، پیکسل، پیش‌فرض 0.3؛ 0.13 برای اپراتور خبره) و &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (K_S، پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;سطح هرم N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (PYRAMID_LEVEL، پیش‌فرض 0.5، کسری در (0، 1]، یا درصدی در (0، 100] با PYRAMID_PERCENT) و &lt;b&gt;گام نمونه‌برداری T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (SUBSAMPLING_STEP، پیکسل، ≥ 1، پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;σx، σy، σz و σxyz مشاهده‌شده&lt;/b&gt; (میلی‌متر) و &lt;b&gt;انحراف معیار ابر متراکم&lt;/b&gt; (سانتی‌متر): اختیاری؛ نسبت مشاهده‌شده به نظری را می‌دهند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;افزوده&lt;/b&gt; (نه در مقاله): طول باز استریو (STEREO_BASE، متر) ← σ&lt;sub&gt;Z&lt;/sub&gt; = (D/B)(D/c)σ&lt;sub&gt;image&lt;/sub&gt; در حالت نرمال با σ&lt;sub&gt;image&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt; پیکسل؛ پوشش طولی/عرضی (%) ← فاصلهٔ نوردهی‌ها و خطوط پرواز (ارتفاع تصویر در امتداد پرواز، عرض آن عمود بر پرواز).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML): گزارش HTML اختیاری.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;هر نتیجه یک خروجی عددی نیز هست تا در طراح گرافیکی مدل زنجیره شود.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Custom (enter the values below)</source>
             <translation>سفارشی (مقادیر زیر را وارد کنید)</translation>
         </message>
@@ -630,18 +626,6 @@
         <message>
             <source>Camera–object distance / flying height (m)</source>
             <translation>فاصلهٔ دوربین تا شیء / ارتفاع پرواز (متر)</translation>
-        </message>
-        <message>
-            <source>Sensor width (mm)</source>
-            <translation>عرض حسگر (میلی‌متر)</translation>
-        </message>
-        <message>
-            <source>Image width (px)</source>
-            <translation>عرض تصویر (پیکسل)</translation>
-        </message>
-        <message>
-            <source>Focal length, true (mm)</source>
-            <translation>فاصلهٔ کانونی واقعی (میلی‌متر)</translation>
         </message>
         <message>
             <source>Sensor height (mm)</source>
@@ -712,10 +696,6 @@
             <translation>پوشش عرضی (%) [افزوده]</translation>
         </message>
         <message>
-            <source>Report</source>
-            <translation>گزارش</translation>
-        </message>
-        <message>
             <source>HTML files (*.html)</source>
             <translation>پرونده‌های HTML (*.html)</translation>
         </message>
@@ -724,124 +704,44 @@
             <translation>مقدار {name} ({unit}) برای دوربین سفارشی لازم است: آن را وارد کنید یا یک دوربین از پیش تعریف‌شده برگزینید.</translation>
         </message>
         <message>
-            <source>DISTANCE (m) is required.</source>
-            <translation>فاصلهٔ DISTANCE (متر) لازم است.</translation>
+            <source>Ground sampling distance, footprint and theoretical photogrammetric accuracy of a camera at a distance.</source>
+            <translation>فاصلهٔ نمونه‌برداری زمینی، پوشش زمینی و دقت نظری فتوگرامتری یک دوربین در یک فاصلهٔ معین.</translation>
         </message>
         <message>
-            <source>GSD used</source>
-            <translation>GSD به‌کاررفته</translation>
+            <source>&lt;p&gt;Computes the ground sampling distance (GSD) and footprint of a camera at a given distance or flying height. It also gives the theoretical accuracy of phototriangulation and of a dense-matching cloud, and compares observed accuracies with it (Al Khalil 2019).&lt;/p&gt;</source>
+            <translation>&lt;p&gt;فاصلهٔ نمونه‌برداری زمینی (GSD) و پوشش زمینی یک دوربین را در فاصله یا ارتفاع پرواز معین محاسبه می‌کند. همچنین دقت نظری مثلث‌بندی هوایی و ابر نقاط تناظریابی متراکم را می‌دهد و دقت مشاهده‌شده را با آن مقایسه می‌کند (الخلیل ۲۰۱۹).&lt;/p&gt;</translation>
         </message>
         <message>
-            <source>GSD, unrounded</source>
-            <translation>GSD بدون گرد کردن</translation>
+            <source>&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the paper's Nikon Coolpix P100 at 5.88 m (sensor width 6.123 mm, image width 3648 px, focal length 4.6 mm) gives a GSD of 0.21455 cm/px, σ&lt;sub&gt;xyz&lt;/sub&gt; 1.287 mm (1.26 mm with the rounded GSD), a dense-cloud resolution of 0.858 cm and a footprint 7.827 m wide.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: دوربین Nikon Coolpix P100 مقاله در فاصلهٔ ‎5.88 m‏ (عرض حسگر ‎6.123 mm‏، عرض تصویر ‎3648 px‏، فاصلهٔ کانونی ‎4.6 mm‏) GSD برابر ‎0.21455 cm/px‏، σ&lt;sub&gt;xyz&lt;/sub&gt; برابر ‎1.287 mm‏ (‎1.26 mm‏ با GSD گردشده)، تفکیک ابر متراکم ‎0.858 cm‏ و پوشش زمینی به عرض ‎7.827 m‏ می‌دهد.&lt;/p&gt;</translation>
         </message>
         <message>
-            <source>Pixel pitch</source>
-            <translation>اندازهٔ پیکسل روی حسگر</translation>
+            <source>&lt;p&gt;&lt;b&gt;Formulas&lt;/b&gt;: GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;); footprint = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;; σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD; σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;; matching step P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;; dense resolution R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;&lt;b&gt;فرمول‌ها&lt;/b&gt;: &lt;span dir="ltr"&gt;GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;)&lt;/span&gt;؛ پوشش زمینی = &lt;span dir="ltr"&gt;D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;&lt;/span&gt;؛ &lt;span dir="ltr"&gt;σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD&lt;/span&gt;؛ &lt;span dir="ltr"&gt;σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;&lt;/span&gt;؛ گام تناظریابی &lt;span dir="ltr"&gt;P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;&lt;/span&gt;؛ تفکیک ابر متراکم &lt;span dir="ltr"&gt;R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD&lt;/span&gt;.&lt;/p&gt;</translation>
         </message>
         <message>
-            <source>Footprint width</source>
-            <translation>عرض پوشش زمینی</translation>
+            <source>&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Camera preset&lt;/b&gt; (default Custom): fills the sensor, image and focal length values; values you enter override the preset.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance&lt;/b&gt; (m, default 100): camera–object distance or flying height above ground, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor width&lt;/b&gt; (mm), &lt;b&gt;image width&lt;/b&gt; (px) and &lt;b&gt;focal length&lt;/b&gt; (mm, the true focal length, not the 35 mm equivalent): required with the Custom camera.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor height&lt;/b&gt; (mm) / &lt;b&gt;image height&lt;/b&gt; (px): optional, for the footprint height and the flight spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Target GSD&lt;/b&gt; (cm/px): optional; gives the distance that achieves it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (px, default 0.3; 0.13 for an expert operator) and &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pyramid level N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (default 0.5, a fraction in (0, 1], or a percentage) and &lt;b&gt;subsampling step T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (px, ≥ 1, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Observed σx, σy, σz, σxyz&lt;/b&gt; (mm) and &lt;b&gt;observed dense-cloud std&lt;/b&gt; (cm): optional; give the observed/theoretical ratios.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extension&lt;/b&gt; (not in the paper): stereo base (m) gives the normal-case σ&lt;sub&gt;Z&lt;/sub&gt;; forward/side overlap (%) give the exposure and line spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD calculator report&lt;/b&gt;: optional HTML report.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every result is also an output number, so the graphical modeler can chain it.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;دوربین از پیش تعریف‌شده&lt;/b&gt; (پیش‌فرض: سفارشی): مقادیر حسگر، تصویر و فاصلهٔ کانونی را پر می‌کند؛ مقادیری که وارد کنید بر آن مقدم‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;فاصله&lt;/b&gt; (m، پیش‌فرض 100): فاصلهٔ دوربین تا شیء یا ارتفاع پرواز از زمین، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عرض حسگر&lt;/b&gt; (mm)، &lt;b&gt;عرض تصویر&lt;/b&gt; (px) و &lt;b&gt;فاصلهٔ کانونی&lt;/b&gt; (mm، فاصلهٔ کانونی واقعی نه معادل 35 mm): با دوربین «سفارشی» الزامی‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ارتفاع حسگر&lt;/b&gt; (mm) / &lt;b&gt;ارتفاع تصویر&lt;/b&gt; (px): اختیاری، برای ارتفاع پوشش زمینی و فاصله‌گذاری پرواز.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD هدف&lt;/b&gt; (cm/px): اختیاری؛ فاصله‌ای را می‌دهد که به آن می‌رسد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گرد کردن GSD مانند مقاله&lt;/b&gt; (پیش‌فرض: خیر): GSD را پیش از کمیت‌های مشتق به ‎0.01 cm/px‏ گرد می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (px، پیش‌فرض 0.3؛ 0.13 برای اپراتور خبره) و &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;سطح هرم N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (پیش‌فرض 0.5، کسری در (0، 1]، یا درصد) و &lt;b&gt;گام زیرنمونه‌برداری T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (px، ≥ 1، پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;σx، σy، σz، σxyz مشاهده‌شده&lt;/b&gt; (mm) و &lt;b&gt;انحراف معیار مشاهده‌شدهٔ ابر متراکم&lt;/b&gt; (cm): اختیاری؛ نسبت مشاهده‌شده به نظری را می‌دهند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;افزوده&lt;/b&gt; (در مقاله نیست): باز استریو (m) σ&lt;sub&gt;Z&lt;/sub&gt; حالت نرمال را می‌دهد؛ همپوشانی طولی/عرضی (%) فاصلهٔ عکس‌ها و فاصلهٔ خطوط پرواز را می‌دهد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش محاسبه‌گر GSD&lt;/b&gt;: گزارش HTML اختیاری.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;هر نتیجه یک عدد خروجی نیز هست، پس در مدل‌ساز گرافیکی قابل زنجیره‌شدن است.&lt;/p&gt;</translation>
         </message>
         <message>
-            <source>Footprint height</source>
-            <translation>طول پوشش زمینی</translation>
+            <source>Required with the Custom camera; overrides the preset.</source>
+            <translation>با دوربین «سفارشی» الزامی است؛ بر مقدار پیش‌فرض دوربین مقدم است.</translation>
         </message>
         <message>
-            <source>Image measurement precision σ_meas</source>
-            <translation>دقت اندازه‌گیری روی تصویر σ_meas</translation>
+            <source>Sensor width (mm) — required with Custom</source>
+            <translation>عرض حسگر (mm) — با «سفارشی» الزامی است</translation>
         </message>
         <message>
-            <source>Theoretical phototriangulation accuracy σ_xyz</source>
-            <translation>دقت نظری مثلث‌بندی هوایی σ_xyz</translation>
+            <source>Image width (px) — required with Custom</source>
+            <translation>عرض تصویر (px) — با «سفارشی» الزامی است</translation>
         </message>
         <message>
-            <source>Dense matching step P</source>
-            <translation>گام تناظریابی متراکم P</translation>
+            <source>Focal length, true (mm) — required with Custom</source>
+            <translation>فاصلهٔ کانونی واقعی (mm) — با «سفارشی» الزامی است</translation>
         </message>
         <message>
-            <source>Theoretical dense-cloud resolution R_theo</source>
-            <translation>تفکیک نظری ابر نقاط متراکم R_theo</translation>
-        </message>
-        <message>
-            <source>Distance for the target GSD</source>
-            <translation>فاصلهٔ لازم برای GSD هدف</translation>
-        </message>
-        <message>
-            <source>Observed σxyz</source>
-            <translation>σxyz مشاهده‌شده</translation>
-        </message>
-        <message>
-            <source>Observed / theoretical σxyz</source>
-            <translation>نسبت σxyz مشاهده‌شده به نظری</translation>
-        </message>
-        <message>
-            <source>Observed dense std / R_theo</source>
-            <translation>نسبت انحراف معیار ابر متراکم به R_theo</translation>
-        </message>
-        <message>
-            <source>Stereo base (extension)</source>
-            <translation>طول باز استریو (افزوده)</translation>
-        </message>
-        <message>
-            <source>Stereo planimetric precision (extension)</source>
-            <translation>دقت مسطحاتی استریو (افزوده)</translation>
-        </message>
-        <message>
-            <source>Stereo depth precision σ_Z (extension)</source>
-            <translation>دقت عمق استریو σ_Z (افزوده)</translation>
-        </message>
-        <message>
-            <source>Exposure spacing (extension)</source>
-            <translation>فاصلهٔ نوردهی‌ها (افزوده)</translation>
-        </message>
-        <message>
-            <source>Flight-line spacing (extension)</source>
-            <translation>فاصلهٔ خطوط پرواز (افزوده)</translation>
-        </message>
-        <message>
-            <source>Distance</source>
-            <translation>فاصله</translation>
-        </message>
-        <message>
-            <source>Sensor width</source>
-            <translation>عرض حسگر</translation>
-        </message>
-        <message>
-            <source>Image width</source>
-            <translation>عرض تصویر</translation>
-        </message>
-        <message>
-            <source>Focal length</source>
-            <translation>فاصلهٔ کانونی</translation>
-        </message>
-        <message>
-            <source>quantity</source>
-            <translation>کمیت</translation>
-        </message>
-        <message>
-            <source>value</source>
-            <translation>مقدار</translation>
-        </message>
-        <message>
-            <source>unit</source>
-            <translation>واحد</translation>
-        </message>
-        <message>
-            <source>Formulas and defaults from Al Khalil (2019); the paper finds observed phototriangulation accuracy about 3–5 times the theoretical value. Items marked (extension) are not in the paper.</source>
-            <translation>فرمول‌ها و مقادیر پیش‌فرض از الخلیل (۲۰۱۹)؛ مقاله دقت مشاهده‌شدهٔ مثلث‌بندی را حدود ۳ تا ۵ برابر مقدار نظری یافته است. موارد علامت‌خورده با (افزوده) در مقاله نیستند.</translation>
-        </message>
-        <message>
-            <source>GSD and photogrammetric accuracy</source>
-            <translation>GSD و دقت فتوگرامتری</translation>
-        </message>
-        <message>
-            <source>Inputs</source>
-            <translation>ورودی‌ها</translation>
-        </message>
-        <message>
-            <source>Results</source>
-            <translation>نتایج</translation>
+            <source>GSD calculator report</source>
+            <translation>گزارش محاسبه‌گر GSD</translation>
         </message>
     </context>
     <context>

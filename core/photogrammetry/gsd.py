@@ -167,7 +167,7 @@ def dense_resolution(gsd_cm, *, pyramid_level=N_P, subsampling_step=T_S,
 
 
 def observed_sigma_xyz(sx, sy, sz):
-    """Combined 3-D standard deviation √(σx² + σy² + σz²) from per-axis values."""
+    """Return the combined 3-D standard deviation √(σx² + σy² + σz²) of per-axis values."""
     vals = [_check(n, v, low=0.0, low_inclusive=True) for n, v in
             (("observed_sx", sx), ("observed_sy", sy), ("observed_sz", sz))]
     return np.sqrt(sum(np.square(v) for v in vals))
@@ -245,6 +245,7 @@ class GsdResult:
     inputs: dict = field(default_factory=dict)
 
     def as_dict(self) -> dict:
+        """Return every result quantity by name (without the echoed inputs)."""
         out = asdict(self)
         out.pop("inputs")
         return out
@@ -297,8 +298,34 @@ def compute(*, distance: float, sensor_width: float, image_width: float,
     """
     g_exact = float(gsd(distance, sensor_width, image_width, focal_length))
     g = round(g_exact, 2) if round_gsd else g_exact
+    if not math.isfinite(g_exact):
+        raise ValueError("The GSD is not finite; check the inputs.")
     if g <= 0:
         raise ValueError(f"The GSD rounds to 0 cm/px ({g_exact:.5f}); do not round it.")
+    res = _base_result(g, g_exact, distance, sensor_width, image_width, focal_length,
+                       sensor_height, image_height, k_m=k_m, k_s=k_s,
+                       pyramid_level=pyramid_level, pyramid_percent=pyramid_percent,
+                       subsampling_step=subsampling_step)
+    if target_gsd is not None:
+        res.distance_for_target_m = float(distance_for_gsd(target_gsd, sensor_width,
+                                                           image_width, focal_length))
+    _add_observed(res, observed_sx, observed_sy, observed_sz, observed_sxyz,
+                  observed_dense_std)
+    stereo_base = _add_flight_spacing(res, forward_overlap, side_overlap, stereo_base)
+    if stereo_base is not None:
+        _add_stereo(res, stereo_base, distance, sensor_width, image_width, focal_length, k_m)
+    res.inputs = dict(distance=distance, sensor_width=sensor_width, image_width=image_width,
+                      focal_length=focal_length, sensor_height=sensor_height,
+                      image_height=image_height, target_gsd=target_gsd, k_m=k_m, k_s=k_s,
+                      pyramid_level=pyramid_level, pyramid_percent=pyramid_percent,
+                      subsampling_step=subsampling_step, round_gsd=round_gsd)
+    return res
+
+
+def _base_result(g, g_exact, distance, sensor_width, image_width, focal_length,
+                 sensor_height, image_height, *, k_m, k_s, pyramid_level, pyramid_percent,
+                 subsampling_step) -> GsdResult:
+    """GSD, footprint, σ and dense-matching quantities (paper eqs. 1-8)."""
     fw = float(footprint(distance, sensor_width, focal_length))
     fh = None
     if sensor_height is not None or image_height is not None:
@@ -306,7 +333,9 @@ def compute(*, distance: float, sensor_width: float, image_width: float,
             ih = _positive("image_height", image_height, "px")
             sensor_height = ih * float(sensor_width) / float(image_width)
         fh = float(footprint(distance, sensor_height, focal_length))
-    res = GsdResult(
+    dense = dict(pyramid_level=pyramid_level, subsampling_step=subsampling_step,
+                 percent=pyramid_percent)
+    return GsdResult(
         gsd_cm=g,
         gsd_exact_cm=g_exact,
         pixel_pitch_um=1000.0 * float(sensor_width) / float(image_width),
@@ -314,49 +343,48 @@ def compute(*, distance: float, sensor_width: float, image_width: float,
         footprint_height_m=fh,
         sigma_meas_mm=10.0 * float(sigma_measurement(g, k_m=k_m)),
         sigma_xyz_mm=10.0 * float(sigma_xyz(g, k_m=k_m, k_s=k_s)),
-        matching_step_px=float(matching_step(pyramid_level=pyramid_level,
-                                             subsampling_step=subsampling_step,
-                                             percent=pyramid_percent)),
-        dense_resolution_cm=float(dense_resolution(g, pyramid_level=pyramid_level,
-                                                   subsampling_step=subsampling_step,
-                                                   percent=pyramid_percent)),
+        matching_step_px=float(matching_step(**dense)),
+        dense_resolution_cm=float(dense_resolution(g, **dense)),
     )
-    if target_gsd is not None:
-        res.distance_for_target_m = float(distance_for_gsd(target_gsd, sensor_width,
-                                                           image_width, focal_length))
-    if observed_sxyz is not None:
-        res.observed_sigma_xyz_mm = float(_check("observed_sxyz", observed_sxyz, unit="mm"))
-    elif None not in (observed_sx, observed_sy, observed_sz):
-        res.observed_sigma_xyz_mm = float(observed_sigma_xyz(observed_sx, observed_sy,
-                                                             observed_sz))
-    elif any(v is not None for v in (observed_sx, observed_sy, observed_sz)):
+
+
+def _add_observed(res: GsdResult, sx, sy, sz, sxyz, dense_std) -> None:
+    """Observed σxyz and the observed/theoretical ratios (paper section 4)."""
+    if sxyz is not None:
+        res.observed_sigma_xyz_mm = float(_check("observed_sxyz", sxyz, unit="mm"))
+    elif None not in (sx, sy, sz):
+        res.observed_sigma_xyz_mm = float(observed_sigma_xyz(sx, sy, sz))
+    elif any(v is not None for v in (sx, sy, sz)):
         raise ValueError("Give all three observed σx, σy, σz (mm), or the combined σxyz.")
     if res.observed_sigma_xyz_mm is not None:
         res.ratio_xyz = float(accuracy_ratio(res.observed_sigma_xyz_mm, res.sigma_xyz_mm))
-    if observed_dense_std is not None:
-        res.ratio_dense = float(accuracy_ratio(observed_dense_std, res.dense_resolution_cm))
-    if forward_overlap is not None or side_overlap is not None:
-        if fh is None:
-            raise ValueError("Flight spacing needs the footprint height: give the sensor "
-                             "height (mm) or the image height (px).")
-        base, line = flight_spacing(fh, fw, forward_overlap=forward_overlap or 0.0,
-                                    side_overlap=side_overlap or 0.0)
-        res.exposure_spacing_m = float(base) if forward_overlap is not None else None
-        res.line_spacing_m = float(line) if side_overlap is not None else None
-        if stereo_base is None and forward_overlap is not None:
-            stereo_base = float(base)
-    if stereo_base is not None:
-        pitch_mm = float(sensor_width) / float(image_width)
-        sigma_img_mm = _positive("k_m", k_m, "px") * pitch_mm
-        res.stereo_base_m = float(_positive("stereo_base", stereo_base, "m"))
-        res.stereo_sigma_z_mm = 1000.0 * float(stereo_depth_precision(
-            distance, stereo_base, focal_length, sigma_img_mm))
-        res.stereo_sigma_xy_mm = 1000.0 * float(distance) / float(focal_length) * sigma_img_mm
-    res.inputs = dict(distance=distance, sensor_width=sensor_width, image_width=image_width,
-                      focal_length=focal_length, sensor_height=sensor_height,
-                      image_height=image_height, target_gsd=target_gsd, k_m=k_m, k_s=k_s,
-                      pyramid_level=pyramid_level, pyramid_percent=pyramid_percent,
-                      subsampling_step=subsampling_step, round_gsd=round_gsd)
-    if not math.isfinite(res.gsd_cm):
-        raise ValueError("The GSD is not finite; check the inputs.")
-    return res
+    if dense_std is not None:
+        res.ratio_dense = float(accuracy_ratio(dense_std, res.dense_resolution_cm))
+
+
+def _add_flight_spacing(res: GsdResult, forward_overlap, side_overlap, stereo_base):
+    """Exposure and line spacing; returns the stereo base to use (extension)."""
+    if forward_overlap is None and side_overlap is None:
+        return stereo_base
+    if res.footprint_height_m is None:
+        raise ValueError("Flight spacing needs the footprint height: give the sensor "
+                         "height (mm) or the image height (px).")
+    base, line = flight_spacing(res.footprint_height_m, res.footprint_width_m,
+                                forward_overlap=forward_overlap or 0.0,
+                                side_overlap=side_overlap or 0.0)
+    res.exposure_spacing_m = float(base) if forward_overlap is not None else None
+    res.line_spacing_m = float(line) if side_overlap is not None else None
+    if stereo_base is None and forward_overlap is not None:
+        return float(base)
+    return stereo_base
+
+
+def _add_stereo(res: GsdResult, stereo_base, distance, sensor_width, image_width,
+                focal_length, k_m) -> None:
+    """Normal-case stereo precision σ_XY, σ_Z (extension, Kraus 2007)."""
+    pitch_mm = float(sensor_width) / float(image_width)
+    sigma_img_mm = _positive("k_m", k_m, "px") * pitch_mm
+    res.stereo_base_m = float(_positive("stereo_base", stereo_base, "m"))
+    res.stereo_sigma_z_mm = 1000.0 * float(stereo_depth_precision(
+        distance, stereo_base, focal_length, sigma_img_mm))
+    res.stereo_sigma_xy_mm = 1000.0 * float(distance) / float(focal_length) * sigma_img_mm

@@ -50,7 +50,7 @@ def test_bad_input_raises_processing_exception(qgis_processing, params, name):
     from qgis.core import QgsProcessingException
     with pytest.raises(QgsProcessingException) as err:
         qgis_processing.run("geomatics:gsdcalculator", params)
-    assert name in str(err.value)
+    assert name.lower() in str(err.value).lower()
 
 
 def test_negative_focal_length_refused_by_qgis(qgis_processing):
@@ -86,3 +86,43 @@ def test_batch_bad_row_names_row_and_column(qgis_processing, tmp_path):
     out = tmp_path / "never.csv"
     with pytest.raises(QgsProcessingException, match="Row 2.*focal_length"):
         qgis_processing.run("geomatics:gsdbatch", {"INPUT": str(src), "OUTPUT": str(out)})
+    assert not out.exists()
+    assert not list(tmp_path.glob(".never*")), "temporary left behind"
+
+
+def test_batch_output_is_input_refused_and_input_untouched(qgis_processing, tmp_path):
+    from qgis.core import QgsProcessingException
+    src = tmp_path / "cams.csv"
+    text = "distance,sensor_width,image_width,focal_length\n5.88,6.123,3648,4.6\n"
+    src.write_text(text)
+    with pytest.raises(QgsProcessingException, match="(?i)input"):
+        qgis_processing.run("geomatics:gsdbatch", {"INPUT": str(src), "OUTPUT": str(src)})
+    assert src.read_text() == text
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["cams.csv"]
+
+
+def test_distance_default_is_valid_and_custom_needs_camera(qgis_processing, qgis_app):
+    from qgis.core import QgsApplication, QgsProcessingContext
+    alg = QgsApplication.processingRegistry().algorithmById("geomatics:gsdcalculator")
+    assert alg.parameterDefinition("DISTANCE").defaultValue() == 100.0
+    res = qgis_processing.run("geomatics:gsdcalculator",
+                              {k: v for k, v in P100.items() if k != "DISTANCE"})
+    assert res["GSD"] == pytest.approx(100 * 6.123 * 100 / (3648 * 4.6))
+    ok, msg = alg.checkParameterValues({"CAMERA": 0, "DISTANCE": 5.88, "SENSOR_WIDTH": 6.1,
+                                        "IMAGE_WIDTH": 3648}, QgsProcessingContext())
+    assert not ok and "FOCAL_LENGTH" in msg and "Custom" in msg
+    ok, msg = alg.checkParameterValues({**P100}, QgsProcessingContext())
+    assert ok, msg
+    assert alg.shortDescription()
+
+
+@pytest.mark.parametrize("lang, index, title", [
+    ("ar", 2, "المسافة الأرضية"), ("fa", 3, "نمونه‌برداری زمینی")])
+def test_report_in_the_requested_language(qgis_processing, tmp_path, lang, index, title):
+    html = tmp_path / f"gsd_{lang}.html"
+    qgis_processing.run("geomatics:gsdcalculator",
+                        {**P100, "OUTPUT_HTML": str(html), "REPORT_LANGUAGE": index})
+    text = html.read_text(encoding="utf-8")
+    assert f'lang="{lang}" dir="rtl"' in text
+    assert '<bdi dir="ltr">0.21455</bdi>' in text
+    assert "Results" not in text and "Inputs" not in text
