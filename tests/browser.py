@@ -1,0 +1,125 @@
+"""Render HTML in Debian's headless Chromium and read what a user would see.
+
+``dump_dom(path)`` returns the DOM after Chromium parsed and laid out the page;
+``screenshot(path, png)`` writes a PNG. Both run Chromium with a throw-away profile
+and no network services, so they work offline and leave nothing behind.
+``english_leftovers(dom)`` lists English words outside data (``<bdi>``, ``dir="ltr"``
+spans, formulas, ``<style>``) that are not on the allow-list of units, ids and acronyms.
+"""
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+import tempfile
+from html.parser import HTMLParser
+from pathlib import Path
+
+FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+         "--disable-background-networking", "--disable-component-update", "--disable-sync")
+
+#: Words allowed untranslated in an Arabic/Persian report: units, acronyms, symbols.
+ALLOWED = {
+    "cm", "mm", "px", "µm", "km", "deg", "gsd", "dtm", "dsm", "ndsm", "rmse", "nmad",
+    "lidar", "las", "laz", "idw", "isprs", "gcp", "gcps", "epsg", "crs", "svg", "html",
+    "csv", "tin", "qgis", "pdal", "lsq", "asprs", "kappa", "utm", "wgs", "tif", "tiff",
+    "geotiff", "xyz", "theo", "meas", "sub", "max", "min", "std",
+}
+
+
+def chromium() -> str | None:
+    """Path of the Chromium executable, or None."""
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        exe = shutil.which(name)
+        if exe:
+            return exe
+    return None
+
+
+def _run(args, timeout: float) -> subprocess.CompletedProcess:
+    exe = chromium()
+    if exe is None:
+        raise RuntimeError("Chromium not found: install the Debian package 'chromium'")
+    with tempfile.TemporaryDirectory(prefix="chromium-profile-") as profile:
+        return subprocess.run([exe, *FLAGS, f"--user-data-dir={profile}", *args],
+                              capture_output=True, text=True, timeout=timeout)
+
+
+def dump_dom(html_path, *, timeout: float = 120) -> str:
+    """The serialised DOM of ``html_path`` as headless Chromium builds it."""
+    out = _run(["--dump-dom", Path(html_path).resolve().as_uri()], timeout)
+    if out.returncode != 0 or "<html" not in out.stdout:
+        raise RuntimeError(f"chromium failed ({out.returncode}): {out.stderr[-2000:]}")
+    return out.stdout
+
+
+def screenshot(html_path, png_path, *, width: int = 1100, height: int = 1400,
+               timeout: float = 120) -> Path:
+    """Write a PNG screenshot of ``html_path``; returns its path."""
+    png = Path(png_path).resolve()
+    out = _run([f"--screenshot={png}", f"--window-size={width},{height}",
+                "--hide-scrollbars", Path(html_path).resolve().as_uri()], timeout)
+    if not png.exists():
+        raise RuntimeError(f"chromium wrote no screenshot ({out.returncode}): "
+                           f"{out.stderr[-2000:]}")
+    return png
+
+
+class _Page(HTMLParser):
+    """Collects the root's lang/dir, figure ids and text outside data spans."""
+
+    DATA_TAGS = {"bdi", "style", "script", "code"}
+
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.lang = self.dir = None
+        self.figures = []
+        self.texts = []
+        self._stack = []          # (tag, is_data)
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if tag == "html":
+            self.lang, self.dir = attrs.get("lang"), attrs.get("dir")
+        if tag == "figure" and attrs.get("id"):
+            self.figures.append(attrs["id"])
+        parent_data = bool(self._stack and self._stack[-1][1])
+        is_data = (parent_data or tag in self.DATA_TAGS
+                   or (attrs.get("dir") == "ltr" and tag not in ("html", "body"))
+                   or "formula" in (attrs.get("class") or ""))
+        if tag not in {"br", "meta", "img", "hr", "input", "link"}:
+            self._stack.append((tag, is_data))
+
+    def handle_endtag(self, tag):
+        for i in range(len(self._stack) - 1, -1, -1):
+            if self._stack[i][0] == tag:
+                del self._stack[i:]
+                break
+
+    def handle_data(self, data):
+        if data.strip() and not (self._stack and self._stack[-1][1]):
+            self.texts.append(data.strip())
+
+
+def parse(dom: str) -> _Page:
+    """Parse a DOM dump: ``.lang``, ``.dir``, ``.figures`` (ids), ``.texts``."""
+    page = _Page()
+    page.feed(dom)
+    return page
+
+
+def english_leftovers(texts, allowed=ALLOWED) -> list:
+    """Text pieces holding an English word that is neither data nor allow-listed.
+
+    A word is English when it is Latin letters only, at least three long and not
+    all capitals (acronyms such as RMSE are ids); file names and words with digits
+    or underscores are data.
+    """
+    out = []
+    for text in texts:
+        words = [w for w in re.findall(r"[A-Za-zÀ-ÿ][\w'.\-]*", text)
+                 if re.fullmatch(r"[A-Za-z]{3,}", w) and not w.isupper()
+                 and w.lower() not in allowed]
+        if words:
+            out.append(text)
+    return out
