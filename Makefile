@@ -23,7 +23,7 @@ TS_FILES := i18n/$(PLUGIN)_ar.ts i18n/$(PLUGIN)_fa.ts
 QM_FILES := $(TS_FILES:.ts=.qm)
 
 .PHONY: help system-deps venv demo test test-core test-qgis test-cli bench lint ts qm \
-	package deploy clean
+	package deploy clean model screenshots
 
 help:
 	@echo "make demo | test | bench | lint | ts | qm | package | deploy | clean"
@@ -90,6 +90,10 @@ bench: venv
 lint: venv
 	$(VENV)/bin/ruff check .
 	$(PY) scripts/i18n_sync.py --check
+
+# The shipped model is generated (every child parameter set): rerun after changing a child.
+model: venv
+	$(PY) scripts/build_model.py
 
 # --------------------------------------------------------------------------- ship
 package: venv qm

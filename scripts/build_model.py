@@ -1,24 +1,27 @@
 #!/usr/bin/env python3
 """Build the shipped Processing model ``models/lidar_to_dtm.model3``.
 
-LAS/LAZ → ground filter (``geomatics:lsqgroundfilter``) → IDW DTM
-(``geomatics:idwdtm``, p = 3, 12 neighbours: the seed paper's best setting) →
-DTM accuracy against check points (``geomatics:dtmaccuracy``), with the classified
-cloud, the DTM, the residual layer and the reports as model outputs.
+LAS/LAZ → ground filter (the recommended ``geomatics:groundfilter`` when registered,
+else ``geomatics:lsqgroundfilter``) → IDW DTM (``geomatics:idwdtm``, p = 3, 12
+neighbours: the seed paper's best setting) → DTM accuracy against check points
+(``geomatics:dtmaccuracy``), with the classified cloud, the DTM, the residual layer and
+the reports as model outputs. Every child parameter is written into the model (the
+exposed ones as model inputs, the others as their defaults), so a parameter added to a
+child makes ``tests/cli/test_model_cli.py`` fail until ``make model`` is rerun.
 
 The model is built with the QGIS API (``QgsProcessingModelAlgorithm``) so that it is
 reproducible and reviewable; rerun this script after changing a parameter.
 
 Usage::
 
-    .venv/bin/python scripts/build_model.py [--filter lsq|slope] [--out models/lidar_to_dtm.model3]
+    make model     # = .venv/bin/python scripts/build_model.py [--filter auto|lsq|slope]
 
 Run the model (plugin enabled in the QGIS profile)::
 
     qgis_process.bin run models/lidar_to_dtm.model3 -- INPUT=out/demo/demo.laz \\
         CHECKPOINTS_CSV=out/demo/checkpoints.csv CELL_SIZE=1 \\
-        groundfilter:CLASSIFIED=out/model/ground.laz dtm:DTM=out/model/dtm.tif \\
-        accuracy:RESIDUALS=out/model/residuals.gpkg accuracy:ACCURACY_REPORT=out/model/accuracy.html
+        "groundfilter:Classified point cloud=out/model/ground.laz" \\
+        dtm:DTM=out/model/dtm.tif "accuracy:DTM accuracy report=out/model/accuracy.html"
 """
 from __future__ import annotations
 
@@ -30,130 +33,156 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_OUT = ROOT / "models" / "lidar_to_dtm.model3"
 
-# ground filter choices: algorithm id, extra parameters (name -> model parameter spec)
+MODEL_NAME = "lidar_to_dtm"                 # stable id: geomatics:lidar_to_dtm
+TITLE = "LiDAR to DTM with accuracy"        # shown (translated) by the provider
+GROUP, GROUP_ID = "Terrain models", "terrain"
+
+#: ground filters in order of preference; the first registered one is used
 FILTERS = {
-    "lsq": ("geomatics:lsqgroundfilter", "LSQ polynomial ground filter",
-            [("ORDER", "Polynomial order of the ground filter", 2, 1, 2, True),
-             ("TILE_SIZE", "Ground filter tile size (m)", 50.0, 0.0, None, False),
-             ("THRESHOLD", "Ground filter threshold T (m)", 0.5, 0.0, None, False)]),
-    "slope": ("geomatics:slopegroundfilter", "Vosselman slope ground filter",
-              [("RADIUS", "Slope filter radius r (m)", 3.0, 0.0, None, False),
-               ("SLOPE", "Slope threshold θ (degrees)", 44.0, 0.0, 90.0, False)]),
+    "recommended": "geomatics:groundfilter",
+    "lsq": "geomatics:lsqgroundfilter",
+    "slope": "geomatics:slopegroundfilter",
 }
+#: DTM settings exposed as model inputs (IDW child parameter -> model default)
+DTM_SETTINGS = {"CELL_SIZE": 1.0, "POWER": 3.0, "FILL_GAPS": False, "CRS": None}
+#: human labels of the model inputs that differ from the child's own label
+LABELS = {"CELL_SIZE": "DTM cell size (m)", "POWER": "IDW power",
+          "FILL_GAPS": "Fill data gaps in the DTM (interpolate far from ground points)",
+          "CRS": "CRS override for a cloud without a CRS record",
+          "CHECKPOINTS": "Check points (point layer)",
+          "CHECKPOINTS_CSV": "Check points (CSV/TXT file: id,x,y,z)"}
+#: (model output name, child id, child output) — the names the user sees
+OUTPUTS = (("Classified point cloud", "groundfilter", "OUTPUT", True),
+           ("Ground filter report", "groundfilter", "OUTPUT_HTML", False),
+           ("DTM", "dtm", "OUTPUT", True),
+           ("DTM report", "dtm", "OUTPUT_HTML", False),
+           ("Check-point residuals", "accuracy", "OUTPUT", False),
+           ("DTM accuracy report", "accuracy", "OUTPUT_HTML", True))
 
 
-def build(filter_key: str = "lsq"):
+def pick_filter(requested: str = "auto") -> str:
+    """Algorithm id of the ground filter: the recommended one when registered."""
+    from qgis.core import QgsApplication
+    registry = QgsApplication.processingRegistry()
+    if requested != "auto":
+        return FILTERS[requested]
+    for alg_id in FILTERS.values():
+        if registry.algorithmById(alg_id) is not None:
+            return alg_id
+    raise SystemExit("no geomatics ground filter registered")
+
+
+def _is_destination(defn) -> bool:
+    return bool(defn.isDestination())
+
+
+def build(filter_key: str = "auto"):
+    """The model: cloud → ground filter → IDW DTM → DTM accuracy, every parameter set."""
     from qgis.core import (
+        QgsApplication,
         QgsProcessingModelAlgorithm,
-        QgsProcessingModelChildAlgorithm,
-        QgsProcessingModelOutput,
         QgsProcessingModelParameter,
-        QgsProcessingParameterBoolean,
-        QgsProcessingParameterCrs,
-        QgsProcessingParameterFile,
-        QgsProcessingParameterNumber,
     )
     from qgis.core import QgsProcessingModelChildParameterSource as Src
     from qgis.PyQt.QtCore import QPointF
 
-    alg_id, filter_label, filter_params = FILTERS[filter_key]
-    m = QgsProcessingModelAlgorithm("lidar_to_dtm", "Terrain models", "terrain")
+    registry = QgsApplication.processingRegistry()
+    filter_id = pick_filter(filter_key)
+    algs = {"groundfilter": registry.algorithmById(filter_id),
+            "dtm": registry.algorithmById("geomatics:idwdtm"),
+            "accuracy": registry.algorithmById("geomatics:dtmaccuracy")}
+    missing = [k for k, a in algs.items() if a is None]
+    if missing:
+        raise SystemExit(f"algorithms not registered: {missing}")
+    m = QgsProcessingModelAlgorithm(MODEL_NAME, GROUP, GROUP_ID)
+    y = [40.0]
+    order = []        # model inputs in the order a user thinks of them
+
+    def expose(defn, name=None, default=None, label=None):
+        """Add a clone of a child's parameter as a model input; returns its name."""
+        p = defn.clone()
+        name = name or defn.name()
+        p.setName(name)
+        if label or name in LABELS:
+            p.setDescription(label or LABELS[name])
+        if default is not None:
+            p.setDefaultValue(default)
+        mp = QgsProcessingModelParameter(name)
+        mp.setPosition(QPointF(120.0, y[0]))
+        y[0] += 55.0
+        m.addModelParameter(p, mp)
+        order.append(name)
+        return name
+
+    sources = {k: {} for k in algs}
+    gf = algs["groundfilter"]
+    # 1. the cloud, 2. ground filter settings (its non-advanced parameters)
+    sources["groundfilter"]["INPUT"] = Src.fromModelParameter(
+        expose(gf.parameterDefinition("INPUT")))
+    for d in gf.parameterDefinitions():
+        if d.name() == "INPUT" or _is_destination(d) or \
+                d.flags() & d.FlagAdvanced or d.name() == "REPORT_LANGUAGE":
+            continue
+        name = d.name() if d.name() not in DTM_SETTINGS else f"FILTER_{d.name()}"
+        sources["groundfilter"][d.name()] = Src.fromModelParameter(expose(d, name))
+    # 3. DTM settings
+    idw = algs["dtm"]
+    for name, default in DTM_SETTINGS.items():
+        sources["dtm"][name] = Src.fromModelParameter(
+            expose(idw.parameterDefinition(name), default=default))
+    sources["dtm"]["INPUT"] = Src.fromChildOutput("groundfilter", "OUTPUT")
+    sources["dtm"]["CLASSES"] = Src.fromStaticValue("2")
+    # 4. check points: a point layer or a CSV file
+    acc = algs["accuracy"]
+    for name in ("CHECKPOINTS", "CHECKPOINTS_CSV"):
+        sources["accuracy"][name] = Src.fromModelParameter(
+            expose(acc.parameterDefinition(name)))
+    sources["accuracy"]["DTM"] = Src.fromChildOutput("dtm", "OUTPUT")
+    # every other child parameter: its default, written into the model explicitly
+    for child_id, alg in algs.items():
+        for d in alg.parameterDefinitions():
+            if d.name() not in sources[child_id] and not _is_destination(d):
+                sources[child_id][d.name()] = Src.fromStaticValue(d.defaultValue())
+    _add_children(m, algs, sources)
+    m.setParameterOrder(order)
     m.setHelpContent({
-        "ALG_DESC": ("LiDAR point cloud → ground filter → IDW DTM (p = 3, 12 neighbours) "
-                     "→ DTM accuracy against check points (RMSE, r, NMAD, 95 % accuracy). "
-                     f"Ground filter: {filter_label}."),
-        "INPUT": "LAS/LAZ point cloud (with a CRS record, or give CRS).",
-        "CHECKPOINTS_CSV": "Check points: CSV with id,x,y,z in the DTM's CRS.",
-        "CELL_SIZE": "DTM cell size in metres (default 1).",
-        "POWER": "IDW power (default 3, the seed paper's best).",
-        "CRS": "Optional CRS override for a point cloud without a CRS record.",
-        "FILL_GAPS": ("Interpolate every DTM cell; by default cells farther than five mean "
-                      "point spacings from a ground point stay nodata (no invented terrain)."),
+        "ALG_DESC": (
+            "Classifies the ground of a LiDAR point cloud, interpolates a DTM from it by "
+            "IDW and measures the DTM's accuracy against check points. Example: a "
+            "classified tile with 15 check points gives the classified cloud, a 1 m DTM "
+            "and a report with RMSE, NMAD and the 95 % vertical accuracy."),
+        "ALG_CREATOR": "Geomatics Toolbox",
+        "ALG_HELP_CREATOR": "Geomatics Toolbox",
+        "TITLE": TITLE,
+        "FILTER": filter_id,
     })
-    y = 60.0
+    return m
 
-    def add_param(defn, x=120.0):
-        nonlocal y
-        mp = QgsProcessingModelParameter(defn.name())
-        mp.setPosition(QPointF(x, y))
-        y += 60.0
-        m.addModelParameter(defn, mp)
 
-    las = QgsProcessingParameterFile("INPUT", "Point cloud (LAS/LAZ)",
-                                     fileFilter="LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)")
-    add_param(las)
-    add_param(QgsProcessingParameterFile(
-        "CHECKPOINTS_CSV", "Check points (CSV: id,x,y,z)",
-        fileFilter="Delimited text (*.csv *.txt *.CSV *.TXT)"))
-    add_param(QgsProcessingParameterNumber("CELL_SIZE", "DTM cell size (m)",
-                                           QgsProcessingParameterNumber.Double, 1.0,
-                                           False, 0.01))
-    add_param(QgsProcessingParameterNumber("POWER", "IDW power", QgsProcessingParameterNumber
-                                           .Double, 3.0, False, 0.1))
-    add_param(QgsProcessingParameterCrs("CRS", "CRS override (optional)", optional=True))
-    add_param(QgsProcessingParameterBoolean(
-        "FILL_GAPS", "Fill data gaps in the DTM (interpolate far from ground points)",
-        False))
-    from qgis.core import QgsApplication
-    registered = QgsApplication.processingRegistry().algorithmById(alg_id)
-    for name, label, default, lo, hi, integer in filter_params:
-        src = registered.parameterDefinition(name) if registered is not None else None
-        if src is not None:             # same type, default and limits as the filter
-            p = src.clone()
-            p.setDescription(label)
-        else:
-            kind = (QgsProcessingParameterNumber.Integer if integer
-                    else QgsProcessingParameterNumber.Double)
-            p = QgsProcessingParameterNumber(name, label, kind, default, False, lo)
-            if hi is not None:
-                p.setMaximum(hi)
-        add_param(p)
-
-    def child(child_id, algorithm, description, x, yy, sources, outputs):
-        c = QgsProcessingModelChildAlgorithm(algorithm)
+def _add_children(m, algs, sources) -> None:
+    """Add the three child algorithms with their parameter sources and outputs."""
+    from qgis.core import QgsProcessingModelChildAlgorithm, QgsProcessingModelOutput
+    from qgis.PyQt.QtCore import QPointF
+    descriptions = {"groundfilter": f"Ground filter ({algs['groundfilter'].displayName()})",
+                    "dtm": "DTM by IDW", "accuracy": "DTM accuracy against check points"}
+    for i, (child_id, alg) in enumerate(algs.items()):
+        c = QgsProcessingModelChildAlgorithm(alg.id())
         c.setChildId(child_id)
-        c.setDescription(description)
-        c.setPosition(QPointF(x, yy))
-        for pname, src in sources.items():
+        c.setDescription(descriptions[child_id])
+        c.setPosition(QPointF(480.0, 80.0 + 180.0 * i))
+        for pname, src in sources[child_id].items():
             c.addParameterSources(pname, [src])
         outs = {}
-        for out_name, child_output, label in outputs:
-            o = QgsProcessingModelOutput(out_name)
+        for out_name, cid, child_output, mandatory in OUTPUTS:
+            if cid != child_id:
+                continue
+            o = QgsProcessingModelOutput(out_name, out_name)
             o.setChildId(child_id)
             o.setChildOutputName(child_output)
-            o.setDescription(label)
-            # the classified cloud, the DTM and the accuracy report must be named; the
-            # other reports and the residual layer are optional
-            o.setMandatory(out_name in ("CLASSIFIED", "DTM", "ACCURACY_REPORT"))
+            o.setMandatory(mandatory)
             outs[out_name] = o
         c.setModelOutputs(outs)
         m.addChildAlgorithm(c)
-        return c
-
-    fsources = {"INPUT": Src.fromModelParameter("INPUT")}
-    for name, *_ in filter_params:
-        fsources[name] = Src.fromModelParameter(name)
-    child("groundfilter", alg_id, f"Ground filter ({filter_label})", 420.0, 80.0, fsources,
-          [("CLASSIFIED", "OUTPUT", "Ground-classified point cloud"),
-           ("FILTER_REPORT", "OUTPUT_HTML", "Ground filter report")])
-    child("dtm", "geomatics:idwdtm", "DTM by IDW", 420.0, 240.0, {
-        "INPUT": Src.fromChildOutput("groundfilter", "OUTPUT"),
-        "CLASSES": Src.fromStaticValue("2"),
-        "CELL_SIZE": Src.fromModelParameter("CELL_SIZE"),
-        "POWER": Src.fromModelParameter("POWER"),
-        "NEIGHBOURS": Src.fromStaticValue(12),
-        "RADIUS": Src.fromStaticValue(0.0),
-        "CRS": Src.fromModelParameter("CRS"),
-        "FILL_GAPS": Src.fromModelParameter("FILL_GAPS"),
-    }, [("DTM", "OUTPUT", "DTM (IDW)"), ("DTM_REPORT", "OUTPUT_HTML", "DTM report")])
-    child("accuracy", "geomatics:dtmaccuracy", "DTM accuracy against check points", 420.0,
-          400.0, {
-              "DTM": Src.fromChildOutput("dtm", "OUTPUT"),
-              "CHECKPOINTS_CSV": Src.fromModelParameter("CHECKPOINTS_CSV"),
-              "METHOD": Src.fromStaticValue(0),
-          }, [("RESIDUALS", "OUTPUT", "Check point residuals"),
-              ("ACCURACY_REPORT", "OUTPUT_HTML", "DTM accuracy report")])
-    return m
 
 
 def _register_provider():
@@ -181,7 +210,8 @@ def _register_provider():
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--filter", choices=sorted(FILTERS), default="lsq")
+    ap.add_argument("--filter", choices=["auto", *sorted(FILTERS)], default="auto",
+                    help="ground filter (auto: the recommended one when registered)")
     ap.add_argument("--out", default=str(DEFAULT_OUT))
     args = ap.parse_args(argv)
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
@@ -198,7 +228,7 @@ def main(argv=None) -> int:
             print(f"could not write {out}", file=sys.stderr)
             return 1
         os.replace(tmp, out)
-        print(f"wrote {out} (ground filter: {FILTERS[args.filter][0]})")
+        print(f"wrote {out} (ground filter: {model.helpContent().get('FILTER')})")
     finally:
         if provider is not None:
             QgsApplication.processingRegistry().removeProvider(provider)

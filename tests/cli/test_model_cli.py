@@ -30,11 +30,11 @@ def run_model(qgis_process, model, d, **extra):
     out.mkdir(exist_ok=True)
     params = {"INPUT": d / "demo.laz", "CHECKPOINTS_CSV": d / "checkpoints.csv",
               "CELL_SIZE": 1, "POWER": 3,
-              "groundfilter:CLASSIFIED": out / "ground.laz",
-              "groundfilter:FILTER_REPORT": out / "filter.html",
-              "dtm:DTM": out / "dtm.tif", "dtm:DTM_REPORT": out / "dtm.html",
-              "accuracy:RESIDUALS": out / "residuals.gpkg",
-              "accuracy:ACCURACY_REPORT": out / "accuracy.html", **extra}
+              "groundfilter:Classified point cloud": out / "ground.laz",
+              "groundfilter:Ground filter report": out / "filter.html",
+              "dtm:DTM": out / "dtm.tif", "dtm:DTM report": out / "dtm.html",
+              "accuracy:Check-point residuals": out / "residuals.gpkg",
+              "accuracy:DTM accuracy report": out / "accuracy.html", **extra}
     res = qgis_process.run(str(model), **{k: str(v) for k, v in params.items()})
     return res, out
 
@@ -54,7 +54,7 @@ def test_chain_with_slope_filter(qgis_process, demo):
     model = demo / "slope_chain.model3"
     subprocess.run([sys.executable, str(ROOT / "scripts" / "build_model.py"), "--filter",
                     "slope", "--out", str(model)], check=True, capture_output=True)
-    res, out = run_model(qgis_process, model, demo, RADIUS=3, SLOPE=44)
+    res, out = run_model(qgis_process, model, demo)
     check_outputs(res, out)
 
 
@@ -70,3 +70,39 @@ def test_shipped_model(qgis_process, demo):
     if "geomatics:lidar_to_dtm" in listing:
         res, out = run_model(qgis_process, Path("geomatics:lidar_to_dtm"), demo)
         check_outputs(res, out)
+
+
+def test_shipped_model_is_valid_and_sets_every_child_parameter(qgis_app):
+    """validate() finds no issue, and a parameter added to a child fails this test."""
+    from qgis.core import QgsApplication, QgsProcessingModelAlgorithm
+
+    from geomatics_toolbox.algorithms.base import _groups
+    model = QgsProcessingModelAlgorithm()
+    assert model.fromFile(str(MODEL))
+    ok, issues = model.validate()
+    assert ok and not issues, issues
+    registry = QgsApplication.processingRegistry()
+    expected_filter = ("geomatics:groundfilter"
+                       if registry.algorithmById("geomatics:groundfilter") is not None
+                       else "geomatics:lsqgroundfilter")
+    children = model.childAlgorithms()
+    assert children["groundfilter"].algorithmId() == expected_filter, "run make model"
+    for child_id, child in children.items():
+        alg = registry.algorithmById(child.algorithmId())
+        wanted = {d.name() for d in alg.parameterDefinitions() if not d.isDestination()}
+        unset = wanted - set(child.parameterSources())
+        assert not unset, f"{child_id} does not set {sorted(unset)}: run make model"
+    order = [p.parameterName() for p in model.orderedParameters()]
+    assert order[0] == "INPUT" and order[-2:] == ["CHECKPOINTS", "CHECKPOINTS_CSV"]
+    assert order.index("CELL_SIZE") > order.index("THRESHOLD")
+    for d in model.destinationParameterDefinitions():
+        label = d.name().split(":", 1)[1]
+        assert (label == "DTM" or not label.isupper()) and label == d.description(), d.name()
+    for d in model.parameterDefinitions():
+        assert "optional" not in d.description().lower(), d.description()
+    # offered by the provider under a translated title in its own translated group
+    shipped = registry.algorithmById("geomatics:lidar_to_dtm")
+    assert shipped is not None
+    assert shipped.displayName() == "LiDAR to DTM with accuracy"
+    assert shipped.group() == _groups()["terrain"] and shipped.groupId() == "terrain"
+    assert shipped.createInstance().displayName() == shipped.displayName()
