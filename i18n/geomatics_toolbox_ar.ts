@@ -498,6 +498,10 @@
             <source>Geomatics Toolbox</source>
             <translation>صندوق أدوات الجيوماتكس</translation>
         </message>
+        <message>
+            <source>LiDAR to DTM with accuracy</source>
+            <translation>من LiDAR إلى نموذج تضاريس رقمي مع الدقة</translation>
+        </message>
     </context>
     <context>
         <name>GroundFilterAccuracyAlgorithm</name>

@@ -498,6 +498,10 @@
             <source>Geomatics Toolbox</source>
             <translation>جعبه‌ابزار ژئوماتیک</translation>
         </message>
+        <message>
+            <source>LiDAR to DTM with accuracy</source>
+            <translation>از LiDAR تا DTM همراه با دقت</translation>
+        </message>
     </context>
     <context>
         <name>GroundFilterAccuracyAlgorithm</name>
