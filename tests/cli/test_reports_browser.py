@@ -25,16 +25,38 @@ def _gsd(tmp_path):
     return P100, "OUTPUT_HTML", []
 
 
+def _tile(tmp_path):
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+    path = tmp_path / "tile.laz"
+    if not path.exists():
+        write_tile(generate_tile(extent=(60, 60), density=2.0, seed=8), path,
+                   crs="EPSG:32632")
+    return path
+
+
+def _lsq(tmp_path):
+    return dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "lsq.laz"), "OUTPUT_HTML", []
+
+
+def _slope(tmp_path):
+    return dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "slope.laz"), "OUTPUT_HTML", []
+
+
+def _sweep(tmp_path):
+    return (dict(INPUT=_tile(tmp_path), SLOPES="40:60:10", RADII="3",
+                 HEIGHT_TOLERANCES="0", OUTPUT_CSV=tmp_path / "sweep.csv"), "OUTPUT_HTML", [])
+
+
 #: algorithm id -> builder(tmp_path) -> (parameters, report output name, figure ids)
 CASES = {
     "geomatics:gsdcalculator": _gsd,
+    "geomatics:lsqgroundfilter": _lsq,
+    "geomatics:slopegroundfilter": _slope,
+    "geomatics:slopethresholdsweep": _sweep,
 }
 
 #: report algorithms not checked yet, with the reason (remove once migrated)
 PENDING = {
-    "geomatics:lsqgroundfilter": "report being migrated to core.reporting (lidar)",
-    "geomatics:slopegroundfilter": "report being migrated to core.reporting (lidar)",
-    "geomatics:slopethresholdsweep": "report being migrated to core.reporting (lidar)",
     "geomatics:groundfilteraccuracy": "report being migrated to core.reporting (lidar)",
     "geomatics:idwdtm": "report being migrated to core.reporting (terrain)",
     "geomatics:krigingdtm": "report being migrated to core.reporting (terrain)",
@@ -42,6 +64,14 @@ PENDING = {
     "geomatics:dtmaccuracy": "report being migrated to core.reporting (terrain)",
     "geomatics:gcpaccuracyreport": "report being migrated to core.reporting (rect)",
     "geomatics:rectifygcp": "report being migrated to core.reporting (rect)",
+}
+
+#: checked reports with a known, reported gap (xfail, not strict, so a fix just passes)
+KNOWN_GAPS = {
+    "geomatics:slopegroundfilter": "the Vosselman (2000) reference title is prose, not "
+                                   "bidi-isolated data (lidar: render references as data)",
+    "geomatics:slopethresholdsweep": "the Vosselman (2000) / Sithole & Vosselman (2004) "
+                                     "reference titles are prose, not bidi-isolated data",
 }
 
 needs_chromium = pytest.mark.skipif(browser.chromium() is None,
@@ -68,7 +98,9 @@ def test_pending_reports(reason):
 @needs_chromium
 @pytest.mark.parametrize("lang", sorted(LANGS))
 @pytest.mark.parametrize("alg", sorted(CASES))
-def test_report_in_browser(qgis_process, tmp_path, alg, lang):
+def test_report_in_browser(qgis_process, tmp_path, alg, lang, request):
+    if alg in KNOWN_GAPS:
+        request.applymarker(pytest.mark.xfail(reason=KNOWN_GAPS[alg], strict=False))
     params, output, figures = CASES[alg](tmp_path)
     html = tmp_path / f"{alg.split(':')[1]}_{lang}.html"
     qgis_process.run(alg, **params, **{output: html, "REPORT_LANGUAGE": LANGS[lang]})
