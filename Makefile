@@ -23,10 +23,10 @@ TS_FILES := i18n/$(PLUGIN)_ar.ts i18n/$(PLUGIN)_fa.ts
 QM_FILES := $(TS_FILES:.ts=.qm)
 
 .PHONY: help system-deps venv demo test test-core test-qgis test-cli bench lint ts qm \
-	package deploy clean model screenshots
+	package deploy clean model help-pages screenshots
 
 help:
-	@echo "make demo | test | bench | lint | ts | qm | package | deploy | clean"
+	@echo "make demo | test | bench | lint | ts | qm | model | help-pages | screenshots | package | deploy | clean"
 
 # --------------------------------------------------------------------------- set-up
 system-deps:
@@ -94,6 +94,15 @@ lint: venv
 # The shipped model is generated (every child parameter set): rerun after changing a child.
 model: venv
 	$(PY) scripts/build_model.py
+
+# Help pages shipped with the plugin (helpUrl), generated from the help strings.
+help-pages: venv qm
+	$(PY) scripts/build_help.py
+
+# Every dialog and report in en/ar/fa as PNGs for review (Xvfb + QGIS, headless Chromium).
+screenshots: venv qm
+	xvfb-run -a -s "-screen 0 1280x1024x24" env QT_QPA_PLATFORM=xcb \
+		$(PY) scripts/screenshots.py --out out/screenshots
 
 # --------------------------------------------------------------------------- ship
 package: venv qm

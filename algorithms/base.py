@@ -15,6 +15,7 @@ Translations: call ``self.tr('…')`` with a string literal inside the subclass 
 from __future__ import annotations
 
 import os
+import re
 import traceback
 
 from qgis.core import (
@@ -28,7 +29,7 @@ from qgis.core import (
     QgsProcessingUtils,
     QgsProviderRegistry,
 )
-from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtCore import QCoreApplication, QUrl
 from qgis.PyQt.QtGui import QIcon
 
 from ..core.errors import InputError
@@ -39,6 +40,19 @@ from .locale import user_locale
 
 ICON = os.path.join(os.path.dirname(os.path.dirname(__file__)),
                     "provider", "icons", "geomatics.svg")
+#: help pages shipped with the plugin (scripts/build_help.py writes them)
+HELP_DIR = os.path.join(os.path.dirname(os.path.dirname(__file__)), "help")
+
+
+def first_sentence(html: str) -> str:
+    """The first sentence of an HTML help text, as plain text."""
+    text = re.sub(r"<[^>]+>", "", html or "")
+    text = re.sub(r"\s+", " ", text).strip()
+    match = re.match(r"(.+?[.!?。؟])(\s|$)", text)
+    sentence = match.group(1) if match else text
+    if len(sentence) > 200:      # a tooltip, not a paragraph
+        sentence = sentence[:200].rsplit(" ", 1)[0].rstrip(",;:") + " …"
+    return sentence
 
 
 def _groups():
@@ -110,6 +124,22 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
 
     def svgIconPath(self) -> str:  # noqa: N802 - QGIS API name
         return ICON
+
+    def shortDescription(self) -> str:  # noqa: N802 - QGIS API name
+        """Toolbox tooltip: the first sentence of the help (override for a better one)."""
+        return first_sentence(self.shortHelpString())
+
+    def helpUrl(self) -> str:  # noqa: N802 - QGIS API name
+        """The help page shipped with the plugin, in the interface language if present."""
+        try:
+            lang = user_locale()
+        except Exception:  # noqa: BLE001 - the help language is cosmetic
+            lang = "en"
+        for sub in ((lang,) if lang and lang != "en" else ()) + ("",):
+            path = os.path.join(HELP_DIR, sub, f"{self.name()}.html")
+            if os.path.isfile(path):
+                return QUrl.fromLocalFile(path).toString()
+        return ""
 
     # ---------------------------------------------------------------- parameters
     def add_number(self, name: str, label: str, default=None, *, minimum=None,
