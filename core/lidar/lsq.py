@@ -772,6 +772,7 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
                       overlap: Optional[float] = None,
                       slope_factor: Optional[float] = None,
                       slope_cap: Optional[float] = None, blend: Optional[bool] = None,
+                      origin: Optional[Sequence[float]] = None,
                       progress=None, cancel=None) -> LsqResult:
     """Classify ground points with tiled least-squares polynomial surfaces.
 
@@ -794,6 +795,11 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
     levels, overlap, slope_factor, slope_cap, blend : optional
         Improved-mode options (described under :class:`LsqOptions`); ignored in
         faithful mode.
+    origin : (float, float), optional
+        Global tile-lattice origin (tile catalogs): the grid starts at the lattice
+        corner at or below the cloud's minimum (lattice period ``tile_size``, or the
+        coarsest level's size in improved mode), so tiles of separate chunks line
+        up with those of the merged cloud. Default: the cloud's own minimum.
     progress, cancel : callable, optional
         ``progress(fraction)``, ``cancel() -> bool`` (checked every iteration).
 
@@ -836,7 +842,7 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
     timings = {}
     is_noise, fit_pts = _fit_points(x, y, z, order, noise, noise_radius, noise_threshold,
                                     mon, timings)
-    x0, y0 = float(x.min()), float(y.min())
+    x0, y0 = _origin(x, y, origin, float(tile_size), levels if improved else (1.0,))
     p = n_coefficients(order)
     params = dict(mode=mode, order=order, tile_size=float(tile_size),
                   threshold=float(threshold), max_iterations=int(max_iterations),
@@ -911,6 +917,18 @@ def _classes(ground, surface, is_noise) -> np.ndarray:
     cls[np.isnan(surface) & ~is_noise] = UNCLASSIFIED
     cls[is_noise] = NOISE
     return cls
+
+
+def _origin(x, y, origin, tile_size, levels):
+    """Grid origin: the cloud minimum, or snapped down to a global lattice."""
+    x0, y0 = float(x.min()), float(y.min())
+    if origin is None:
+        return x0, y0
+    lv = IMPROVED_DEFAULTS["levels"] if levels is None else levels
+    period = tile_size * max(1.0, max(float(f) for f in lv))
+    ox, oy = float(origin[0]), float(origin[1])
+    return (ox + np.floor((x0 - ox) / period) * period,
+            oy + np.floor((y0 - oy) / period) * period)
 
 
 def _too_few(order, min_points, npoints, n) -> ValueError:

@@ -1,0 +1,407 @@
+"""Whole LiDAR projects: tile catalogs processed chunk by chunk with buffers, on Dask.
+
+A :class:`Catalog` indexes LAS/LAZ tiles from their headers only (a folder, a glob, a
+list or a PDAL/QGIS ``.vpc``), keeps the tile bounds as a spatial index and refuses
+mixed CRSs. :func:`run_catalog` processes one chunk per tile: the tile plus the points
+of its neighbours within ``buffer`` metres (streamed, never whole neighbours), the
+ground filter, a DTM of the tile on the global cell lattice, the buffer dropped and the
+outputs written per chunk (classified tile, DTM GeoTIFF, a done marker). This is the
+LAScatalog scheme of lidR (Roussel et al. 2020, Remote Sens. Environ. 251:112061) and
+LAStools' ``-buffered``; tiling-dependent methods (LSQ tiles, raster grids) are
+anchored on a global origin so a catalog run equals a run on the merged cloud away
+from the catalog's outer edge.
+
+Engine: Dask ``distributed`` (Rocklin 2015, Proc. SciPy): a local cluster with one
+single-threaded worker process per core, or an existing cluster given by its scheduler
+address (``tcp://host:8786``; start one with ``dask scheduler`` and ``dask worker``).
+A failed chunk is retried once and then reported; a rerun skips finished chunks
+(resume); cancel stops scheduling, removes unfinished chunk outputs and keeps the
+finished ones. Memory per worker is bounded by one buffered tile.
+"""
+from __future__ import annotations
+
+import math
+import os
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Dict, List, Optional, Sequence
+
+import numpy as np
+
+from ..errors import InputError
+from ..io.catalog import build_vrt, find_tiles, index_tiles
+from ..io.contract import OutputContract, check_paths, remove_temp
+from ..io.las import LasInfo
+from ..progress import Cancelled, Monitor
+from ._chunks import (
+    DTM_METHODS,
+    GROUND_FILTERS,
+    ChunkTask,
+    default_ground_filter,
+    is_done,
+    neighbour_paths,
+    process_chunk,
+    register_dtm_method,
+    register_ground_filter,
+)
+
+__all__ = ["Catalog", "CatalogResult", "run_catalog", "GROUND_FILTERS", "DTM_METHODS",
+           "register_ground_filter", "register_dtm_method", "default_ground_filter",
+           "plan_tasks"]
+
+STATE_DIR = ".catalog"
+
+
+# ============================================================================ catalog
+@dataclass
+class Catalog:
+    """Header index of a set of LAS/LAZ tiles.
+
+    Attributes
+    ----------
+    tiles : list of LasInfo
+        Header facts per tile (path, count, bounds, CRS).
+    bounds : ndarray, shape (n, 4)
+        ``xmin, ymin, xmax, ymax`` per tile (the spatial index).
+    crs : str or None
+        The common CRS.
+    """
+
+    tiles: List[LasInfo]
+    bounds: np.ndarray
+    crs: Optional[str]
+
+    @classmethod
+    def open(cls, source) -> Catalog:
+        """Index ``source`` (folder, glob, list or ``.vpc``) from the headers only.
+
+        Raises
+        ------
+        InputError
+            No tile, an unreadable tile, an empty tile or tiles in different CRSs.
+        """
+        infos = index_tiles(find_tiles(source))
+        empty = [t.path for t in infos if t.count == 0]
+        if empty:
+            raise InputError(f"Tile(s) without points: {', '.join(empty)}; remove them "
+                             "from the catalog.")
+        crss = {t.crs for t in infos}
+        if len(crss) > 1:
+            listing = "; ".join(f"{os.path.basename(t.path)}: {t.crs or 'none'}"
+                                for t in infos[:6])
+            raise InputError(f"The tiles are in {len(crss)} different CRSs ({listing}); "
+                             "reproject them to one CRS (e.g. pdal translate) first.")
+        bounds = np.array([[t.mins[0], t.mins[1], t.maxs[0], t.maxs[1]] for t in infos])
+        return cls(infos, bounds, crss.pop())
+
+    @property
+    def paths(self) -> List[str]:
+        """Tile paths, in catalog order."""
+        return [t.path for t in self.tiles]
+
+    @property
+    def n_points(self) -> int:
+        """Total points of the catalog (from the headers)."""
+        return int(sum(t.count for t in self.tiles))
+
+    @property
+    def extent(self) -> tuple:
+        """``(xmin, ymin, xmax, ymax)`` of the whole catalog."""
+        b = self.bounds
+        return (float(b[:, 0].min()), float(b[:, 1].min()), float(b[:, 2].max()),
+                float(b[:, 3].max()))
+
+    def query(self, box) -> List[int]:
+        """Return the indices of the tiles whose bounds intersect ``box`` (x0, y0, x1, y1)."""
+        b = self.bounds
+        hit = ((b[:, 0] <= box[2]) & (b[:, 2] >= box[0]) & (b[:, 1] <= box[3])
+               & (b[:, 3] >= box[1]))
+        return [int(i) for i in np.flatnonzero(hit)]
+
+    def default_max_distance(self) -> float:
+        """DTM gap distance for the whole catalog: 10 mean point spacings."""
+        e = self.extent
+        area = max((e[2] - e[0]) * (e[3] - e[1]), 1e-9)
+        return 10.0 * math.sqrt(area / max(self.n_points, 1))
+
+
+# ============================================================================ planning
+def _output_names(folder: Path, tile: str) -> Dict[str, str]:
+    stem = Path(tile).stem
+    suffix = Path(tile).suffix.lower()
+    return {"LAS": str(folder / f"{stem}_classified{suffix}"),
+            "DTM": str(folder / f"{stem}_dtm.tif"),
+            "DONE": str(folder / STATE_DIR / f"{stem}.done.json")}
+
+
+def _check_folder(cat: Catalog, folder: Path) -> None:
+    root = folder.resolve()
+    inside = [p for p in cat.paths if root in Path(p).resolve().parents]
+    if inside:
+        raise InputError(f"The output folder {folder} contains input tiles "
+                         f"({os.path.basename(inside[0])}, ...); choose another folder.")
+    stems = [Path(p).stem for p in cat.paths]
+    if len(set(stems)) != len(stems):
+        raise InputError("Two tiles have the same file name; their outputs would collide. "
+                         "Rename them.")
+
+
+def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
+               cell_size: float, buffer: float, origin=None,
+               max_distance: Optional[float] = None) -> List[ChunkTask]:
+    """One :class:`ChunkTask` per tile (validated parameters, output paths checked)."""
+    if ground_filter not in GROUND_FILTERS:
+        raise InputError(f"Unknown ground filter {ground_filter!r}; choose one of "
+                         f"{', '.join(GROUND_FILTERS)}.")
+    if dtm_method not in DTM_METHODS:
+        raise InputError(f"Unknown DTM method {dtm_method!r}; choose one of "
+                         f"{', '.join(DTM_METHODS)}.")
+    if not (cell_size > 0 and math.isfinite(cell_size)):
+        raise InputError(f"CELL_SIZE must be > 0 metres (e.g. 1), got {cell_size}.")
+    if not (buffer >= 0 and math.isfinite(buffer)):
+        raise InputError(f"BUFFER must be >= 0 metres (e.g. 100), got {buffer}.")
+    folder = Path(folder)
+    _check_folder(cat, folder)
+    if origin is None:
+        e = cat.extent
+        origin = (math.floor(e[0] / 1000.0) * 1000.0, math.floor(e[1] / 1000.0) * 1000.0)
+    md = cat.default_max_distance() if max_distance is None else float(max_distance)
+    tasks, outs = [], {}
+    for i, t in enumerate(cat.tiles):
+        names = _output_names(folder, t.path)
+        outs.update({f"{k}:{i}": v for k, v in names.items() if k != "DONE"})
+        tasks.append(ChunkTask(
+            key=Path(t.path).stem, tile=t.path,
+            neighbours=neighbour_paths(cat.bounds, cat.paths, i, buffer),
+            bounds=tuple(float(v) for v in cat.bounds[i]), buffer=float(buffer),
+            origin=(float(origin[0]), float(origin[1])), cell_size=float(cell_size),
+            crs=cat.crs, ground_filter=ground_filter, dtm_method=dtm_method,
+            max_distance=md, outputs=names))
+    check_paths(outs, {"TILES": cat.paths})
+    return tasks
+
+
+# ============================================================================ engine
+@dataclass
+class CatalogResult:
+    """Outcome of :func:`run_catalog`: per-chunk stats, failures, mosaic, timing."""
+
+    chunks: List[dict]
+    failed: Dict[str, str]
+    skipped: List[str]
+    vrt: Optional[str]
+    cog: Optional[str]
+    seconds: float
+    workers: int
+    scheduler: str
+    settings: dict = field(default_factory=dict)
+
+    @property
+    def points(self) -> int:
+        """Points processed in this run (skipped chunks excluded)."""
+        return int(sum(c["points"] for c in self.chunks if c["key"] not in self.skipped))
+
+    @property
+    def points_per_second(self) -> float:
+        """Overall throughput of this run (wall time)."""
+        return self.points / self.seconds if self.seconds > 0 else float("nan")
+
+    def per_worker(self) -> Dict[str, dict]:
+        """Points, chunks, busy seconds and points/s per worker."""
+        out: Dict[str, dict] = {}
+        for c in self.chunks:
+            if c["key"] in self.skipped:
+                continue
+            w = out.setdefault(c["worker"], dict(points=0, chunks=0, seconds=0.0))
+            w["points"] += c["points"]
+            w["chunks"] += 1
+            w["seconds"] += c["seconds"]
+        for w in out.values():
+            w["points_per_second"] = w["points"] / w["seconds"] if w["seconds"] else 0.0
+        return out
+
+
+def _worker_env() -> None:
+    """Make the package importable in spawned workers (PYTHONPATH, python executable)."""
+    pkg_dir = Path(__file__).resolve().parents[2]
+    if pkg_dir.name != _pkg_name():    # a checkout under another name: the venv .pth serves
+        return
+    pkg_parent = str(pkg_dir.parent)
+    parts = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
+    if pkg_parent not in parts:
+        os.environ["PYTHONPATH"] = os.pathsep.join([pkg_parent] + parts)
+    exe = os.path.basename(sys.executable or "")
+    if not exe.startswith("python"):   # inside QGIS: sys.executable is the QGIS binary
+        import multiprocessing
+        import shutil
+        py = shutil.which("python3")
+        if py:
+            multiprocessing.set_executable(py)
+
+
+def _client(workers: int, scheduler: str, memory_limit):
+    try:
+        from distributed import Client, LocalCluster
+    except ImportError as exc:  # pragma: no cover - install problem
+        raise InputError("The Python packages 'dask' and 'distributed' are not installed; "
+                         "pip install dask distributed.") from exc
+    if scheduler:
+        try:
+            return Client(scheduler, timeout="20s"), None
+        except (OSError, TimeoutError) as exc:
+            raise InputError(f"Cannot reach the Dask scheduler {scheduler} ({exc}); start "
+                             "it with 'dask scheduler' or leave SCHEDULER empty.") from exc
+    _worker_env()
+    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                           dashboard_address=None, memory_limit=memory_limit,
+                           silence_logs=40)
+    return Client(cluster), cluster
+
+
+def _pkg_name() -> str:
+    return __name__.split(".")[0]
+
+
+def _collect(futures: dict, mon: Monitor, n_total: int, done_before: int, failed: dict):
+    """Wait for the chunk futures; progress per chunk; cancel stops scheduling."""
+    pending = set(futures)
+    results = []
+    while pending:
+        if mon.cancelled():
+            for f in pending:
+                f.cancel()
+            raise Cancelled()
+        finished, pending = _wait_pending(list(pending))
+        pending = set(pending)
+        for f in finished:
+            key = futures[f]
+            if f.status == "finished":
+                results.append(f.result())
+            else:
+                exc = f.exception()
+                failed[key] = f"{type(exc).__name__}: {exc}"
+            mon.update((done_before + len(results) + len(failed)) / max(n_total, 1))
+    return results
+
+
+def _wait_pending(futures, timeout: float = 0.5):
+    from distributed import wait
+    try:
+        return wait(futures, timeout=timeout, return_when="FIRST_COMPLETED")
+    except TimeoutError:
+        return set(), set(futures)
+
+
+def _sweep_temps(folder: Path, tasks: Sequence[ChunkTask]) -> None:
+    """Remove unfinished chunk outputs (contract temporaries) left by cancelled chunks."""
+    for t in tasks:
+        for k in ("LAS", "DTM"):
+            final = Path(t.outputs[k])
+            for tmp in final.parent.glob(f".{final.stem}.part-*"):
+                remove_temp(tmp)
+        attempted = Path(t.outputs["DONE"] + ".attempted")
+        if attempted.exists():
+            attempted.unlink()
+
+
+def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
+                dtm_method: str = "idw", cell_size: float = 1.0, buffer: float = 100.0,
+                workers: Optional[int] = None, scheduler: str = "", cog: bool = False,
+                origin=None, max_distance: Optional[float] = None,
+                memory_limit="auto", fail_once: Sequence[str] = (),
+                progress=None, cancel=None) -> CatalogResult:
+    """Process a tile catalog chunk by chunk on Dask (see the module docstring).
+
+    Parameters
+    ----------
+    source : str, path or list
+        Folder, glob, list of files or ``.vpc``.
+    out_folder : path
+        Receives ``<tile>_classified.las|laz``, ``<tile>_dtm.tif``, ``dtm.vrt``
+        (and ``dtm_cog.tif``) and the resume markers in ``.catalog/``. Must not
+        hold input tiles.
+    ground_filter : str, optional
+        Key of :data:`GROUND_FILTERS` (``keep`` = the files' own classes); default
+        :func:`default_ground_filter`.
+    dtm_method : str
+        Key of :data:`DTM_METHODS` (``idw``, ``kriging``).
+    cell_size, buffer : float
+        DTM cell (m) and chunk buffer (m; wider than the filter's reach: LSQ tiles,
+        slope radius, IDW search).
+    workers : int, optional
+        Local worker processes (default: CPU count). Ignored with ``scheduler``.
+    scheduler : str
+        Address of an existing Dask scheduler (``tcp://host:8786``); empty = local.
+    origin : (float, float), optional
+        Global lattice origin (default: the catalog's lower-left corner floored to km).
+    max_distance : float, optional
+        DTM gap distance (m); default :meth:`Catalog.default_max_distance`.
+    fail_once : sequence of str
+        Tile stems whose first attempt raises (tests of the retry).
+
+    Returns
+    -------
+    CatalogResult
+    """
+    t0 = time.perf_counter()
+    mon = Monitor(progress, cancel)
+    cat = Catalog.open(source)
+    folder = Path(out_folder)
+    gf = ground_filter or default_ground_filter()
+    tasks = plan_tasks(cat, folder, ground_filter=gf, dtm_method=dtm_method,
+                       cell_size=cell_size, buffer=buffer, origin=origin,
+                       max_distance=max_distance)
+    (folder / STATE_DIR).mkdir(parents=True, exist_ok=True)
+    previous = {t.key: is_done(t) for t in tasks}
+    todo = [t for t in tasks if previous[t.key] is None]
+    for t in todo:
+        t.fail_once = t.key in set(fail_once)
+    nw = int(workers or os.cpu_count() or 1)
+    chunks = [s for s in previous.values() if s is not None]
+    failed: Dict[str, str] = {}
+    mon.update(len(chunks) / len(tasks))
+    if todo:
+        chunks += _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon,
+                            len(chunks), failed)
+    done_tasks = [t for t in tasks if t.key not in failed]
+    vrt = str(folder / "dtm.vrt")
+    cog_path = str(folder / "dtm_cog.tif") if cog else None
+    outs = {"VRT": vrt, "COG": cog_path}
+    with OutputContract(outs, inputs={"TILES": cat.paths}) as out:
+        build_vrt(out.path("VRT"), [t.outputs["DTM"] for t in done_tasks],
+                  cog_path=out.path("COG") if cog else None)
+    order = {t.key: i for i, t in enumerate(tasks)}
+    chunks.sort(key=lambda c: order[c["key"]])
+    settings = dict(ground_filter=gf, dtm_method=dtm_method, cell_size=float(cell_size),
+                    buffer=float(buffer), tiles=len(tasks), points_total=cat.n_points,
+                    crs=cat.crs or "", origin=tasks[0].origin)
+    return CatalogResult(chunks=chunks, failed=failed,
+                         skipped=[k for k, v in previous.items() if v is not None],
+                         vrt=vrt, cog=cog_path, seconds=time.perf_counter() - t0,
+                         workers=nw, scheduler=scheduler or "local", settings=settings)
+
+
+def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, failed):
+    client, cluster = _client(nw, scheduler, memory_limit)
+    try:
+        futures = {client.submit(process_chunk, t, key=f"chunk-{t.key}-{time.time_ns()}",
+                                 retries=1, pure=False): t.key for t in todo}
+        return _collect(futures, mon, len(tasks), n_before, failed)
+    except BaseException:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+        client = cluster = None
+        _sweep_temps(folder, todo)
+        raise
+    finally:
+        if client is not None:
+            client.close()
+        if cluster is not None:
+            cluster.close()
+        for t in todo:
+            flag = Path(t.outputs["DONE"] + ".attempted")
+            if flag.exists():
+                flag.unlink()

@@ -1,0 +1,242 @@
+"""Tile catalog on Dask: catalog run == merged-cloud run, resume, retry, cluster, bad input."""
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from geomatics_toolbox.core.errors import InputError
+from geomatics_toolbox.core.io.catalog import find_tiles, read_box
+from geomatics_toolbox.core.io.las import read_las
+from geomatics_toolbox.core.io.raster import read_raster
+from geomatics_toolbox.core.lidar import catalog as cc
+from geomatics_toolbox.core.lidar._chunks import GROUND_FILTERS, snap_grid
+from geomatics_toolbox.core.terrain.idw import idw_grid
+from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+
+pytest.importorskip("distributed")
+
+SIDE = 250.0
+ORIGIN = (500_000.0, 4_000_000.0)
+BUFFER = 120.0
+CELL = 2.0
+
+
+@pytest.fixture(scope="module")
+def tiles(tmp_path_factory) -> Path:
+    """Four adjacent 250 m tiles of about 50 000 points each (2 x 2)."""
+    d = tmp_path_factory.mktemp("tiles")
+    for i in range(2):
+        for j in range(2):
+            t = generate_tile(extent=(SIDE, SIDE), origin=(ORIGIN[0] + SIDE * i,
+                                                           ORIGIN[1] + SIDE * j),
+                              density=0.8, seed=10 * i + j)
+            write_tile(t, d / f"t{i}{j}.laz")
+    return d
+
+
+def _merged(tiles: Path):
+    paths = find_tiles(str(tiles))
+    parts = [read_las(p, ("classification",)) for p in paths]
+    x = np.concatenate([p.x for p in parts])
+    y = np.concatenate([p.y for p in parts])
+    z = np.concatenate([p.z for p in parts])
+    cls0 = np.concatenate([p["classification"] for p in parts])
+    return paths, x, y, z, cls0
+
+
+def _catalog_classes(paths, out: Path) -> np.ndarray:
+    return np.concatenate([read_las(out / f"{Path(p).stem}_classified.laz",
+                                    ("classification",))["classification"] for p in paths])
+
+
+def _dtm(path) -> np.ndarray:
+    r = read_raster(path)
+    data = r.data.astype(np.float64)
+    data[data == r.nodata] = np.nan
+    return data
+
+
+def _outer_distance(x, y, extent):
+    return np.minimum.reduce([x - extent[0], y - extent[1], extent[2] - x, extent[3] - y])
+
+
+@pytest.fixture(scope="module")
+def local_run(tiles, tmp_path_factory):
+    out = tmp_path_factory.mktemp("out_local")
+    res = cc.run_catalog(str(tiles), out, ground_filter="lsq_improved", cell_size=CELL,
+                         buffer=BUFFER, workers=2)
+    return out, res
+
+
+def test_catalog_equals_merged_run(tiles, local_run):
+    out, res = local_run
+    assert not res.failed and len(res.chunks) == 4
+    paths, x, y, z, cls0 = _merged(tiles)
+    cat = cc.Catalog.open(str(tiles))
+    merged = GROUND_FILTERS["lsq_improved"].func(x, y, z, {"classification": cls0},
+                                                 res.settings["origin"])
+    got = _catalog_classes(paths, out)
+    assert got.shape == merged.shape == (cat.n_points,)
+    inner = _outer_distance(x, y, cat.extent) > BUFFER
+    assert inner.sum() > 20_000
+    assert np.array_equal(got[inner], merged[inner])
+    assert np.mean(got == merged) >= 0.999
+    # DTM: IDW on the merged ground onto the same global lattice
+    g = merged == 2
+    grid = snap_grid(cat.extent, res.settings["origin"], CELL)
+    ref = idw_grid(x[g], y[g], z[g], grid, max_distance=cat.default_max_distance(), workers=1)
+    mosaic = _dtm(out / "dtm.vrt")
+    assert mosaic.shape == ref.shape
+    both = np.isfinite(ref) & np.isfinite(mosaic)
+    assert both.mean() > 0.95
+    assert np.array_equal(np.isfinite(ref), np.isfinite(_dtm(out / "dtm.vrt")))
+    cx, cy = grid.block_centers(0, grid.nrows)
+    away = (_outer_distance(cx, cy, cat.extent) > BUFFER).reshape(grid.shape) & both
+    assert away.sum() > 5_000
+    assert np.max(np.abs(mosaic[away] - ref[away])) <= 1e-3
+    assert np.mean(np.abs(mosaic[both] - ref[both]) <= 1e-3) >= 0.99
+
+
+def test_buffered_read_keeps_only_the_box(tiles):
+    paths = find_tiles(str(tiles))
+    box = (ORIGIN[0] + 200, ORIGIN[1] + 200, ORIGIN[0] + 300, ORIGIN[1] + 300)
+    pd, src = read_box(paths, box, ("classification",), chunk_size=7_000)
+    _, x, y, _, _ = _merged(tiles)
+    inside = (x >= box[0]) & (x <= box[2]) & (y >= box[1]) & (y <= box[3])
+    assert len(pd) == inside.sum() and set(np.unique(src)) == {0, 1, 2, 3}
+    assert np.all((pd.x >= box[0]) & (pd.x <= box[2]) & (pd.y >= box[1]) & (pd.y <= box[3]))
+
+
+def test_resume_and_retry(tiles, tmp_path):
+    out = tmp_path / "out"
+    first = cc.run_catalog(str(tiles), out, ground_filter="keep", cell_size=CELL,
+                           buffer=50.0, workers=2, fail_once=["t01"])
+    assert not first.failed and len(first.chunks) == 4     # t01 failed once, retried
+    # "interrupt": forget two finished chunks as if the run had stopped before them
+    for stem in ("t10", "t11"):
+        (out / ".catalog" / f"{stem}.done.json").unlink()
+        (out / f"{stem}_dtm.tif").unlink()
+    mtime = (out / "t00_classified.laz").stat().st_mtime_ns
+    second = cc.run_catalog(str(tiles), out, ground_filter="keep", cell_size=CELL,
+                            buffer=50.0, workers=1)
+    assert sorted(second.skipped) == ["t00", "t01"]
+    assert sorted(c["key"] for c in second.chunks if c["key"] not in second.skipped) == \
+        ["t10", "t11"]
+    assert (out / "t00_classified.laz").stat().st_mtime_ns == mtime
+    assert second.points == sum(c["points"] for c in second.chunks
+                                if c["key"] in ("t10", "t11"))
+
+
+def test_cancel_keeps_finished_and_removes_unfinished(tiles, tmp_path):
+    out = tmp_path / "out"
+    calls = []
+
+    def cancel():
+        calls.append(1)
+        return len(calls) > 3
+
+    with pytest.raises(cc.Cancelled):
+        cc.run_catalog(str(tiles), out, ground_filter="lsq_faithful", cell_size=CELL,
+                       buffer=50.0, workers=1, cancel=cancel)
+    leftovers = [p.name for p in out.iterdir() if ".part-" in p.name]
+    assert leftovers == []
+    for marker in (out / ".catalog").glob("*.done.json"):
+        stem = marker.name.split(".")[0]
+        assert (out / f"{stem}_classified.laz").exists()
+
+
+def test_bad_inputs(tiles, tmp_path):
+    with pytest.raises(InputError, match="contains input tiles"):
+        cc.run_catalog(str(tiles), tiles, ground_filter="keep")
+    other = tmp_path / "utm33"
+    other.mkdir()
+    shutil.copy(tiles / "t00.laz", other / "a.laz")
+    write_tile(generate_tile(extent=(50.0, 50.0), density=0.5), other / "b.laz",
+               crs="EPSG:32633")
+    with pytest.raises(InputError, match="different CRSs"):
+        cc.Catalog.open(str(other))
+    with pytest.raises(InputError, match="No LAS/LAZ tile"):
+        cc.Catalog.open(str(tmp_path / "nothing*.laz"))
+    with pytest.raises(InputError, match="Unknown ground filter"):
+        cc.run_catalog(str(tiles), tmp_path / "o", ground_filter="nope")
+
+
+def test_vpc_input(tiles, tmp_path):
+    feats = [{"type": "Feature", "assets": {"data": {"href": str(p)}}}
+             for p in sorted(tiles.glob("*.laz"))]
+    vpc = tmp_path / "cat.vpc"
+    vpc.write_text(json.dumps({"type": "FeatureCollection", "features": feats}))
+    cat = cc.Catalog.open(str(vpc))
+    assert len(cat.tiles) == 4 and cat.extent == pytest.approx(
+        (ORIGIN[0], ORIGIN[1], ORIGIN[0] + 2 * SIDE, ORIGIN[1] + 2 * SIDE), abs=0.05)
+    assert cat.query((ORIGIN[0] + 10, ORIGIN[1] + 10, ORIGIN[0] + 20, ORIGIN[1] + 20)) == [0]
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture
+def dask_cluster(tmp_path):
+    """A real ``dask scheduler`` and two ``dask worker`` processes on 127.0.0.1."""
+    dask_bin = Path(sys.executable).with_name("dask")
+    if not dask_bin.exists():
+        pytest.skip("the dask command-line tool is not installed")
+    port = _free_port()
+    addr = f"tcp://127.0.0.1:{port}"
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(
+        [str(Path(sys.executable).parents[1] / "plugin-path"),
+         os.environ.get("PYTHONPATH", "")]))
+    log = open(tmp_path / "dask.log", "w")
+    procs = [subprocess.Popen([str(dask_bin), "scheduler", "--host", "127.0.0.1", "--port",
+                               str(port), "--dashboard-address", ":0"],
+                              env=env, stdout=log, stderr=log, start_new_session=True)]
+    try:
+        for _ in range(2):
+            procs.append(subprocess.Popen(
+                [str(dask_bin), "worker", addr, "--nthreads", "1", "--nworkers", "1",
+                 "--host", "127.0.0.1", "--no-dashboard"],
+                env=env, stdout=log, stderr=log, start_new_session=True))
+        from distributed import Client
+        with Client(addr, timeout="30s") as client:
+            client.wait_for_workers(2, timeout=60)
+        yield addr
+    finally:
+        for p in procs:
+            p.terminate()
+        for p in procs:
+            try:
+                p.wait(timeout=15)
+            except subprocess.TimeoutExpired:
+                p.kill()
+                p.wait(timeout=5)
+        log.close()
+
+
+def test_external_cluster_matches_local(tiles, tmp_path, dask_cluster):
+    local = tmp_path / "local"
+    remote = tmp_path / "remote"
+    cc.run_catalog(str(tiles), local, ground_filter="lsq_faithful", cell_size=CELL,
+                   buffer=60.0, workers=1)
+    t0 = time.perf_counter()
+    res = cc.run_catalog(str(tiles), remote, ground_filter="lsq_faithful", cell_size=CELL,
+                         buffer=60.0, scheduler=dask_cluster)
+    assert time.perf_counter() - t0 < 300
+    assert not res.failed and res.scheduler == dask_cluster
+    assert len({c["worker"] for c in res.chunks}) == 2
+    paths = find_tiles(str(tiles))
+    assert np.array_equal(_catalog_classes(paths, local), _catalog_classes(paths, remote))
+    a = _dtm(local / "dtm.vrt")
+    b = _dtm(remote / "dtm.vrt")
+    assert np.array_equal(np.isnan(a), np.isnan(b)) and np.nanmax(np.abs(a - b)) == 0.0
