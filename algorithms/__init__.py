@@ -7,6 +7,7 @@ and one entry per algorithm.
 
 def all_algorithms():
     """Fresh instances of every algorithm the provider offers."""
+    from .catalog import CatalogAlgorithm
     from .dtm_accuracy import DtmAccuracyAlgorithm
     from .filter_accuracy import GroundFilterAccuracyAlgorithm
     from .gcp_rectification import GcpAccuracyReportAlgorithm, RectifyGcpAlgorithm
@@ -28,4 +29,5 @@ def all_algorithms():
         SlopeThresholdSweepAlgorithm(),
         LsqGroundFilterAlgorithm(),
         GroundFilterAccuracyAlgorithm(),
+        CatalogAlgorithm(),
     ]

@@ -2,7 +2,8 @@
 # The main job on embedded (generated) demo data, entirely through qgis_process:
 #   1. generate the demo LiDAR tile and check points (deterministic, no downloads);
 #   2. GSD / photogrammetric accuracy for the paper's camera;
-#   3. LiDAR chain: ground filter → DTM → accuracy against the check points.
+#   3. LiDAR chain: ground filter → DTM → accuracy against the check points;
+#   4. a 4-tile catalog processed in buffered chunks on a local Dask cluster.
 # Outputs go to the folder given as $1 (default out/).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
@@ -53,6 +54,20 @@ run geomatics:dtmaccuracy dtm_accuracy DTM="$OUT/dtm_idw.tif" \
 # the filter's own accuracy: the demo tile carries its true classes (2 = ground)
 run geomatics:groundfilteraccuracy ground_filter_accuracy INPUT="$OUT/demo_classified.laz" \
   REFERENCE="$OUT/demo/demo.laz" OUTPUT_HTML="$OUT/ground_filter_accuracy.html"
+
+# a small tile catalog: 4 adjacent generated tiles, buffered chunks on a local Dask cluster
+mkdir -p "$OUT/catalog_tiles"
+"$PY" - "$OUT/catalog_tiles" <<'PYEOF'
+import sys
+from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+for i in range(2):
+    for j in range(2):
+        t = generate_tile(extent=(250.0, 250.0), origin=(500000.0 + 250 * i, 4000000.0 + 250 * j),
+                          density=0.8, seed=10 * i + j)
+        write_tile(t, f"{sys.argv[1]}/tile_{i}{j}.laz")
+PYEOF
+run geomatics:catalog catalog INPUT="$OUT/catalog_tiles" CELL_SIZE=2 BUFFER=120 WORKERS=2 \
+  OUTPUT_FOLDER="$OUT/catalog" OUTPUT_HTML="$OUT/catalog_report.html"
 
 "$PY" - "$OUT" <<'PYEOF'
 import json, sys, pathlib

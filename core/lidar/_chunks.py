@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import resource
 import socket
 import time
 from dataclasses import dataclass, field
@@ -196,7 +197,8 @@ def process_chunk(task: ChunkTask) -> dict:
     stats = dict(key=task.key, status="done", points=int(n_own), buffer_points=int(x.size - n_own),
                  ground=int(np.count_nonzero(cls[:n_own] == GROUND)), seconds=t3 - t0,
                  filter_seconds=t1 - t0, dtm_seconds=t2 - t1, worker=_worker_name(),
-                 bounds=list(task.bounds))
+                 bounds=list(task.bounds),
+                 peak_rss_mb=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0)
     with open(task.outputs["DONE"], "w", encoding="utf-8") as fh:
         json.dump(stats, fh)
     return stats

@@ -225,7 +225,7 @@ class CatalogResult:
 
 def _worker_env() -> None:
     """Make the package importable in spawned workers (PYTHONPATH, python executable)."""
-    pkg_dir = Path(__file__).resolve().parents[2]
+    pkg_dir = Path(os.path.abspath(__file__)).parents[2]   # as imported (plugin link)
     if pkg_dir.name != _pkg_name():    # a checkout under another name: the venv .pth serves
         return
     pkg_parent = str(pkg_dir.parent)
@@ -376,7 +376,8 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     chunks.sort(key=lambda c: order[c["key"]])
     settings = dict(ground_filter=gf, dtm_method=dtm_method, cell_size=float(cell_size),
                     buffer=float(buffer), tiles=len(tasks), points_total=cat.n_points,
-                    crs=cat.crs or "", origin=tasks[0].origin)
+                    crs=cat.crs or "", origin=tasks[0].origin,
+                    keys=[t.key for t in tasks], bounds=cat.bounds.tolist())
     return CatalogResult(chunks=chunks, failed=failed,
                          skipped=[k for k, v in previous.items() if v is not None],
                          vrt=vrt, cog=cog_path, seconds=time.perf_counter() - t0,

@@ -1,0 +1,143 @@
+"""Process a LiDAR tile catalog with buffers on Dask (Processing algorithm)."""
+from __future__ import annotations
+
+from qgis.core import (
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterEnum,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterFolderDestination,
+    QgsProcessingParameterString,
+)
+
+from ..core.lidar import catalog as core_cat
+from ..core.lidar.catalog_report import catalog_report
+from .base import GeomaticsAlgorithm
+
+
+class CatalogAlgorithm(GeomaticsAlgorithm):
+    """Ground filter + DTM over a folder of tiles, chunk by chunk with buffers."""
+
+    GROUP = "lidarfiltering"
+
+    INPUT = "INPUT"
+    GROUND_FILTER = "GROUND_FILTER"
+    DTM_METHOD = "DTM_METHOD"
+    CELL_SIZE = "CELL_SIZE"
+    BUFFER = "BUFFER"
+    WORKERS = "WORKERS"
+    SCHEDULER = "SCHEDULER"
+    COG = "COG"
+    OUTPUT_FOLDER = "OUTPUT_FOLDER"
+    OUTPUT_HTML = "OUTPUT_HTML"
+    N_TILES = "N_TILES"
+    N_FAILED = "N_FAILED"
+    POINTS_PER_SECOND = "POINTS_PER_SECOND"
+
+    def name(self) -> str:
+        return "catalog"
+
+    def displayName(self) -> str:  # noqa: N802
+        return self.tr("Process a LiDAR tile catalog")
+
+    def shortDescription(self) -> str:  # noqa: N802
+        return self.tr("Ground filter and DTM over a whole folder of LAS/LAZ tiles, in "
+                       "parallel, without seams.")
+
+    def _filter_labels(self) -> dict:
+        return {"keep": self.tr("Keep the classes already in the files"),
+                "lsq_faithful": self.tr("LSQ surfaces, faithful (the paper)"),
+                "lsq_improved": self.tr("LSQ surfaces, improved (ours)"),
+                "slope_exact": self.tr("Slope filter, exact (Vosselman 2000)"),
+                "slope_adaptive": self.tr("Slope filter, terrain-adaptive")}
+
+    def _dtm_labels(self) -> dict:
+        return {"idw": self.tr("IDW"), "kriging": self.tr("Kriging"), "tin": self.tr("TIN")}
+
+    def shortHelpString(self) -> str:  # noqa: N802
+        return self.tr(
+            "<p>Classifies ground and builds a DTM for every tile of a LiDAR project, each "
+            "tile read with a buffer of points from its neighbours so that results have no "
+            "seams at tile edges; tiles run in parallel on Dask, locally or on a cluster. "
+            "Example: INPUT = a folder of 1 km LAZ tiles, BUFFER = 100 m, CELL_SIZE = 1 m "
+            "gives classified tiles, one DTM GeoTIFF per tile and a VRT mosaic.</p><ul>"
+            "<li><b>Tiles</b> (INPUT): a folder of .las/.laz files, a .vpc virtual point "
+            "cloud, or files separated by ';'. All tiles must share one CRS.</li>"
+            "<li><b>Ground filter</b> (GROUND_FILTER, default the recommended one): 0 keeps "
+            "the classes already in the files.</li>"
+            "<li><b>DTM method</b> (DTM_METHOD, default IDW) and <b>cell size</b> "
+            "(CELL_SIZE, m, default 1).</li>"
+            "<li><b>Buffer</b> (BUFFER, m, default 100): must exceed the filter's reach "
+            "(LSQ tile size × 2, slope radius) and the DTM search distance.</li>"
+            "<li><b>Workers</b> (WORKERS, default 0 = one per core) and <b>Dask scheduler"
+            "</b> (SCHEDULER, e.g. tcp://host:8786; empty = a local cluster).</li>"
+            "<li><b>Output folder</b> (OUTPUT_FOLDER; must not hold the input tiles): "
+            "&lt;tile&gt;_classified, &lt;tile&gt;_dtm.tif, dtm.vrt, optionally one "
+            "Cloud-Optimized GeoTIFF (COG), and the HTML report (OUTPUT_HTML) with a map "
+            "of the tiles by status and time and points per second per worker. A rerun "
+            "skips finished tiles; cancel keeps finished tiles.</li></ul>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add(QgsProcessingParameterString(
+            self.INPUT, self.tr("Tiles: folder, .vpc or files separated by ';'")))
+        fl = self._filter_labels()
+        keys = list(core_cat.GROUND_FILTERS)
+        self.add(QgsProcessingParameterEnum(
+            self.GROUND_FILTER, self.tr("Ground filter"),
+            [fl.get(k, core_cat.GROUND_FILTERS[k].label) for k in keys],
+            defaultValue=keys.index(core_cat.default_ground_filter())))
+        dl = self._dtm_labels()
+        self.add(QgsProcessingParameterEnum(
+            self.DTM_METHOD, self.tr("DTM method"),
+            [dl.get(k, core_cat.DTM_METHODS[k].label) for k in core_cat.DTM_METHODS],
+            defaultValue=0))
+        self.add_number(self.CELL_SIZE, self.tr("DTM cell size (m)"), 1.0, minimum=0.0)
+        self.add_number(self.BUFFER, self.tr("Buffer around each tile (m)"), 100.0,
+                        minimum=0.0)
+        self.add_number(self.WORKERS, self.tr("Worker processes (0 = one per core)"), 0,
+                        minimum=0, integer=True)
+        self.add(QgsProcessingParameterString(
+            self.SCHEDULER, self.tr("Dask scheduler address (empty = local)"), "",
+            optional=True), advanced=True)
+        self.add(QgsProcessingParameterBoolean(
+            self.COG, self.tr("Also write one Cloud-Optimized GeoTIFF"), False))
+        self.add_report_language()
+        self.add(QgsProcessingParameterFolderDestination(
+            self.OUTPUT_FOLDER, self.tr("Output folder")))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            optional=True))
+        for name, label in ((self.N_TILES, self.tr("Tiles")),
+                            (self.N_FAILED, self.tr("Failed tiles")),
+                            (self.POINTS_PER_SECOND, self.tr("Points per second"))):
+            self.addOutput(QgsProcessingOutputNumber(name, label))
+
+    def process(self, parameters, context, feedback) -> dict:
+        source = self.parameterAsString(parameters, self.INPUT, context)
+        folder = self.parameterAsString(parameters, self.OUTPUT_FOLDER, context)
+        fkey = list(core_cat.GROUND_FILTERS)[
+            self.parameterAsEnum(parameters, self.GROUND_FILTER, context)]
+        dkey = list(core_cat.DTM_METHODS)[
+            self.parameterAsEnum(parameters, self.DTM_METHOD, context)]
+        workers = self.parameterAsInt(parameters, self.WORKERS, context)
+        cat = core_cat.Catalog.open(source)
+        with self.output_contract(parameters, context, [self.OUTPUT_HTML],
+                                  inputs={"INPUT": cat.paths}) as out:
+            res = core_cat.run_catalog(
+                cat.paths, folder, ground_filter=fkey, dtm_method=dkey,
+                cell_size=self.parameterAsDouble(parameters, self.CELL_SIZE, context),
+                buffer=self.parameterAsDouble(parameters, self.BUFFER, context),
+                workers=workers or None,
+                scheduler=self.parameterAsString(parameters, self.SCHEDULER, context).strip(),
+                cog=self.parameterAsBool(parameters, self.COG, context),
+                **self.core_callbacks(feedback))
+            for key, msg in res.failed.items():
+                feedback.reportError(self.tr("Tile {0} failed: {1}").format(key, msg))
+            if out.requested(self.OUTPUT_HTML):
+                report = catalog_report(res, cat.bounds,
+                                        lang=self.report_lang(parameters, context))
+                out.write_text(self.OUTPUT_HTML, self.render_report(report, parameters,
+                                                                    context))
+        return {self.OUTPUT_FOLDER: folder, self.OUTPUT_HTML: out.final(self.OUTPUT_HTML),
+                self.N_TILES: len(res.chunks), self.N_FAILED: len(res.failed),
+                self.POINTS_PER_SECOND: res.points_per_second}

@@ -1,0 +1,102 @@
+"""Report of a catalog run: summary, tile map by status and time, per tile and per worker.
+
+Content only (:class:`~..reporting.Report`); the algorithm renders it. The tile map is
+an inline SVG (figure id ``tile-status``) drawn from the header bounds: finished tiles
+shaded by processing time, tiles of an earlier run grey, failed tiles red.
+"""
+from __future__ import annotations
+
+from html import escape
+from typing import Callable, Optional
+
+from ..reporting import Figure, KeyValues, Paragraph, Report, T, Table, translator
+
+_DONE_LIGHT = (199, 233, 192)   # fast
+_DONE_DARK = (0, 109, 44)       # slow
+_SKIPPED = "#bdbdbd"
+_FAILED = "#d7301f"
+
+
+def _shade(f: float) -> str:
+    f = min(max(f, 0.0), 1.0)
+    rgb = [round(a + (b - a) * f) for a, b in zip(_DONE_LIGHT, _DONE_DARK)]
+    return "#%02x%02x%02x" % tuple(rgb)
+
+
+def _legend(tr, y: int) -> str:
+    items = ((_shade(0.0), tr("fast")), (_shade(1.0), tr("slow")),
+             (_SKIPPED, tr("finished earlier")), (_FAILED, tr("failed")))
+    out = []
+    for k, (colour, label) in enumerate(items):
+        x = 10 + 130 * k
+        out.append(f'<rect x="{x}" y="{y}" width="14" height="14" fill="{colour}"/>'
+                   f'<text x="{x + 20}" y="{y + 12}" font-size="12">{escape(label)}</text>')
+    return "".join(out)
+
+
+def tile_status_svg(result, tiles_bounds, *, width: int = 520,
+                    tr: Optional[Callable[[str], str]] = None) -> str:
+    """SVG map of the tiles coloured by status and processing time."""
+    tr = tr or (lambda s: s)
+    b = tiles_bounds
+    x0, y0 = float(b[:, 0].min()), float(b[:, 1].min())
+    span = max(float(b[:, 2].max()) - x0, float(b[:, 3].max()) - y0, 1e-9)
+    scale = (width - 20) / span
+    height = int((float(b[:, 3].max()) - y0) * scale) + 20
+    times = [c["seconds"] for c in result.chunks if c["key"] not in result.skipped]
+    tmin, tmax = (min(times), max(times)) if times else (0.0, 1.0)
+    stats = {c["key"]: c for c in result.chunks}
+    parts = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" '
+             f'height="{height + 30}" role="img">']
+    for key, bb in zip(result.settings["keys"], b):
+        if key in result.failed:
+            colour = _FAILED
+        elif key in result.skipped or key not in stats:
+            colour = _SKIPPED
+        else:
+            colour = _shade((stats[key]["seconds"] - tmin) / max(tmax - tmin, 1e-9))
+        px = 10 + (bb[0] - x0) * scale
+        py = 10 + height - 20 - (bb[3] - y0) * scale
+        w, h = (bb[2] - bb[0]) * scale, (bb[3] - bb[1]) * scale
+        tip = f"{key}: {stats[key]['seconds']:.1f} s" if key in stats else key
+        parts.append(f'<rect x="{px:.1f}" y="{py:.1f}" width="{w:.1f}" height="{h:.1f}" '
+                     f'fill="{colour}" stroke="#333"><title>{escape(tip)}</title></rect>'
+                     f'<text x="{px + w / 2:.1f}" y="{py + h / 2:.1f}" font-size="11" '
+                     f'text-anchor="middle">{escape(key)}</text>')
+    parts.append(_legend(tr, height + 8))
+    parts.append("</svg>")
+    return "".join(parts)
+
+
+def catalog_report(result, tiles_bounds, *, lang: str = "en") -> Report:
+    """Build the :class:`Report` of a :class:`~.catalog.CatalogResult`."""
+    s = result.settings
+    rep = Report(T("Tile catalog processing"),
+                 citation="Roussel et al. (2020) lidR: an R package for analysis of "
+                          "Airborne Laser Scanning data. Remote Sens. Environ. 251:112061; "
+                          "Rocklin (2015) Dask. Proc. 14th Python in Science Conf.")
+    n_done = len(result.chunks) - len(result.skipped)
+    rep.summary.append(Paragraph(T("{done} tiles processed, {skipped} finished earlier, "
+                                   "{failed} failed.", done=n_done,
+                                   skipped=len(result.skipped), failed=len(result.failed)),
+                                 "fail" if result.failed else "ok"))
+    rep.section(T("Run")).add(KeyValues([
+        (T("Ground filter"), s["ground_filter"]), (T("DTM method"), s["dtm_method"]),
+        (T("Cell size"), s["cell_size"], "m"), (T("Buffer"), s["buffer"], "m"),
+        (T("Tiles"), s["tiles"]), (T("Points in the catalog"), s["points_total"]),
+        (T("Workers"), result.workers), (T("Dask scheduler"), result.scheduler),
+        (T("Wall time"), result.seconds, "s"),
+        (T("Points per second (overall)"), result.points_per_second)], digits=1))
+    rep.section(T("Tiles")).add(Figure(
+        tile_status_svg(result, tiles_bounds, tr=translator(lang)),
+        T("Tiles coloured by status and processing time"), figure_id="tile-status")).add(
+        Table([T("Tile"), T("Status"), T("Points"), T("Ground"), T("Seconds"), T("Worker")],
+              [[c["key"], T("finished earlier") if c["key"] in result.skipped else T("done"),
+                c["points"], c["ground"], c["seconds"], c["worker"]] for c in result.chunks]
+              + [[k, T("failed"), "", "", "", msg] for k, msg in result.failed.items()],
+              digits=1))
+    rep.section(T("Workers")).add(Table(
+        [T("Worker"), T("Tiles"), T("Points"), T("Busy seconds"), T("Points per second")],
+        [[w, v["chunks"], v["points"], v["seconds"], v["points_per_second"]]
+         for w, v in sorted(result.per_worker().items())], digits=0))
+    return rep
