@@ -20,7 +20,7 @@ _FAILED = "#d7301f"
 def _shade(f: float) -> str:
     f = min(max(f, 0.0), 1.0)
     rgb = [round(a + (b - a) * f) for a, b in zip(_DONE_LIGHT, _DONE_DARK)]
-    return "#%02x%02x%02x" % tuple(rgb)
+    return "#{:02x}{:02x}{:02x}".format(*rgb)
 
 
 def _legend(tr, y: int) -> str:
