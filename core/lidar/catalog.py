@@ -232,12 +232,16 @@ def _worker_env() -> None:
     parts = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
     if pkg_parent not in parts:
         os.environ["PYTHONPATH"] = os.pathsep.join([pkg_parent] + parts)
-    exe = os.path.basename(sys.executable or "")
-    if not exe.startswith("python"):   # inside QGIS: sys.executable is the QGIS binary
+    exe = os.path.abspath(sys.executable or "")
+    prefixes = {os.path.abspath(p) + os.sep for p in (sys.exec_prefix, sys.base_exec_prefix)}
+    if not (os.path.basename(exe).startswith("python")
+            and any(exe.startswith(p) for p in prefixes)):
+        # inside QGIS sys.executable is the QGIS binary (or some other python3 on PATH):
+        # spawn workers with the interpreter QGIS embeds (same version and prefix)
         import multiprocessing
-        import shutil
-        py = shutil.which("python3")
-        if py:
+        name = f"python{sys.version_info[0]}.{sys.version_info[1]}"
+        py = os.path.join(sys.base_exec_prefix, "bin", name)
+        if os.path.exists(py):
             multiprocessing.set_executable(py)
 
 

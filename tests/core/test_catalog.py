@@ -240,3 +240,18 @@ def test_external_cluster_matches_local(tiles, tmp_path, dask_cluster):
     a = _dtm(local / "dtm.vrt")
     b = _dtm(remote / "dtm.vrt")
     assert np.array_equal(np.isnan(a), np.isnan(b)) and np.nanmax(np.abs(a - b)) == 0.0
+
+
+def test_chunk_failing_twice_is_reported_and_others_finish(tiles, tmp_path):
+    src = tmp_path / "tiles"
+    shutil.copytree(tiles, src)
+    data = (src / "t11.laz").read_bytes()
+    (src / "t11.laz").write_bytes(data[:len(data) // 2])      # header intact, points cut
+    out = tmp_path / "out"
+    res = cc.run_catalog(str(src), out, ground_filter="keep", cell_size=CELL, buffer=0.0,
+                         workers=2)
+    assert list(res.failed) == ["t11"] and "truncated or corrupt" in res.failed["t11"]
+    assert sorted(c["key"] for c in res.chunks) == ["t00", "t01", "t10"]
+    assert not (out / "t11_classified.laz").exists()
+    assert not [p for p in out.iterdir() if ".part-" in p.name]
+    assert read_raster(out / "dtm.vrt").data.shape == (250, 250)
