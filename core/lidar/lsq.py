@@ -765,14 +765,11 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
                       max_iterations: Optional[int] = None, tolerance: float = 0.01,
                       subset_size: Optional[int] = None, seed: int = 0,
                       min_points: Optional[int] = None, sparse_tiles: str = "borrow",
-                      rejection: str = "reweighted",
-                      noise: Optional[bool] = None, noise_radius: float = 5.0,
-                      noise_threshold: float = 1.0,
-                      levels: Optional[Sequence[float]] = None,
-                      overlap: Optional[float] = None,
-                      slope_factor: Optional[float] = None,
-                      slope_cap: Optional[float] = None, blend: Optional[bool] = None,
-                      origin: Optional[Sequence[float]] = None,
+                      rejection: str = "reweighted", noise: Optional[bool] = None,
+                      noise_radius: float = 5.0, noise_threshold: float = 1.0,
+                      levels: Optional[Sequence[float]] = None, overlap: Optional[float] = None,
+                      slope_factor: Optional[float] = None, slope_cap: Optional[float] = None,
+                      blend: Optional[bool] = None, origin: Optional[Sequence[float]] = None,
                       progress=None, cancel=None) -> LsqResult:
     """Classify ground points with tiled least-squares polynomial surfaces.
 
@@ -796,10 +793,7 @@ def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
         Improved-mode options (described under :class:`LsqOptions`); ignored in
         faithful mode.
     origin : (float, float), optional
-        Global tile-lattice origin (tile catalogs): the grid starts at the lattice
-        corner at or below the cloud's minimum (lattice period ``tile_size``, or the
-        coarsest level's size in improved mode), so tiles of separate chunks line
-        up with those of the merged cloud. Default: the cloud's own minimum.
+        Global tile-lattice origin for tile catalogs (see :func:`_origin`).
     progress, cancel : callable, optional
         ``progress(fraction)``, ``cancel() -> bool`` (checked every iteration).
 
@@ -920,7 +914,12 @@ def _classes(ground, surface, is_noise) -> np.ndarray:
 
 
 def _origin(x, y, origin, tile_size, levels):
-    """Grid origin: the cloud minimum, or snapped down to a global lattice."""
+    """Grid origin: the cloud minimum, or snapped down to a global lattice.
+
+    With ``origin`` the grid starts at the lattice corner at or below the cloud's
+    minimum (period ``tile_size`` times the coarsest level), so the tiles of
+    separate chunks line up with those of the merged cloud.
+    """
     x0, y0 = float(x.min()), float(y.min())
     if origin is None:
         return x0, y0
