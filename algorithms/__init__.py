@@ -15,6 +15,7 @@ def all_algorithms():
     from .lsq_filter import LsqGroundFilterAlgorithm
     from .slope_filter import SlopeGroundFilterAlgorithm, SlopeThresholdSweepAlgorithm
     from .terrain import DsmAlgorithm, IdwDtmAlgorithm, KrigingDtmAlgorithm
+    from .tin_dtm import TinDtmAlgorithm
 
     return [
         GsdCalculatorAlgorithm(),
@@ -24,6 +25,7 @@ def all_algorithms():
         IdwDtmAlgorithm(),
         KrigingDtmAlgorithm(),
         DsmAlgorithm(),
+        TinDtmAlgorithm(),
         DtmAccuracyAlgorithm(),
         SlopeGroundFilterAlgorithm(),
         SlopeThresholdSweepAlgorithm(),

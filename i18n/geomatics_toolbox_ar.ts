@@ -1418,6 +1418,41 @@
         </message>
     </context>
     <context>
+        <name>TinDtmAlgorithm</name>
+        <message>
+            <source>DTM by TIN (Delaunay linear interpolation)</source>
+            <translation>نموذج تضاريس رقمي بـ TIN (استيفاء خطي ديلوني)</translation>
+        </message>
+        <message>
+            <source>Terrain raster from the planes of the ground points' Delaunay triangles, gaps left empty.</source>
+            <translation>شبكة تضاريس من مستويات مثلثات ديلوني لنقاط الأرض، مع ترك الفجوات فارغة.</translation>
+        </message>
+        <message>
+            <source>dtm,dem,tin,delaunay,triangulation,linear,gdal_grid,blast2dem,lidar,ground,raster</source>
+            <translation>نموذج تضاريس,dem,tin,ديلوني,تثليث,خطي,gdal_grid,blast2dem,ليدار,أرض,شبكة</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Triangulates the ground points of a LAS/LAZ file (Delaunay, Qhull) and gives every cell centre the height of the plane of its triangle — the TIN DTM most practitioners default to, the method of &lt;code&gt;gdal_grid -a linear&lt;/code&gt;. Triangles with an edge longer than the maximum edge are dropped, so gaps under buildings or water stay nodata unless you fill them; cells outside the points' convex hull are always nodata.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=0.5 MAX_EDGE=0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
+            <translation>&lt;p&gt;يثلّث نقاط الأرض في ملف LAS/LAZ (ديلوني، Qhull) ويعطي كل مركز خلية ارتفاع مستوى مثلثه — نموذج TIN للتضاريس الذي يعتمده معظم الممارسين، وهي طريقة &lt;code&gt;gdal_grid -a linear&lt;/code&gt;. تُحذف المثلثات التي يتجاوز أحد أضلاعها الطول الأقصى، فتبقى الفجوات تحت المباني أو فوق الماء بلا بيانات ما لم تطلب ملأها؛ والخلايا خارج الغلاف المحدّب للنقاط تبقى دائماً بلا بيانات.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=0.5 MAX_EDGE=0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Maximum triangle edge&lt;/b&gt; (MAX_EDGE, m, default 0 = automatic: ten mean point spacings, at least four cells): longer triangles are nodata.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill gaps&lt;/b&gt; (FILL_GAPS, default no): keep every triangle, bridging gaps inside the hull with flat facets.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs also the numbers N_POINTS, N_TRIANGLES, VALID_CELLS, NODATA_CELLS.&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;أقصى طول لضلع المثلث&lt;/b&gt; (MAX_EDGE، م، الافتراضي 0 = تلقائي: عشرة أضعاف متوسط التباعد بين النقاط، وأربع خلايا على الأقل): المثلثات الأطول تُترك بلا بيانات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ملء الفجوات&lt;/b&gt; (FILL_GAPS، الافتراضي لا): إبقاء كل المثلثات وسدّ الفجوات داخل الغلاف بأوجه مستوية.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;يُخرج أيضاً الأعداد N_POINTS وN_TRIANGLES وVALID_CELLS وNODATA_CELLS.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Maximum triangle edge (m, 0 = auto)</source>
+            <translation>أقصى طول لضلع المثلث (م، 0 = تلقائي)</translation>
+        </message>
+        <message>
+            <source>Fill gaps (keep long triangles)</source>
+            <translation>ملء الفجوات (إبقاء المثلثات الطويلة)</translation>
+        </message>
+        <message>
+            <source>TIN DTM</source>
+            <translation>نموذج تضاريس TIN</translation>
+        </message>
+    </context>
+    <context>
         <name>_GcpBase</name>
         <message>
             <source>Image (raster) to rectify</source>

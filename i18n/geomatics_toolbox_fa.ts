@@ -1418,6 +1418,41 @@
         </message>
     </context>
     <context>
+        <name>TinDtmAlgorithm</name>
+        <message>
+            <source>DTM by TIN (Delaunay linear interpolation)</source>
+            <translation>مدل رقومی زمین با TIN (درون‌یابی خطی دلونی)</translation>
+        </message>
+        <message>
+            <source>Terrain raster from the planes of the ground points' Delaunay triangles, gaps left empty.</source>
+            <translation>رستر زمین از صفحه‌های مثلث‌های دلونی نقاط زمین، با شکاف‌های خالی.</translation>
+        </message>
+        <message>
+            <source>dtm,dem,tin,delaunay,triangulation,linear,gdal_grid,blast2dem,lidar,ground,raster</source>
+            <translation>مدل رقومی زمین,dem,tin,دلونی,مثلث‌بندی,خطی,gdal_grid,blast2dem,لیدار,زمین,رستر</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Triangulates the ground points of a LAS/LAZ file (Delaunay, Qhull) and gives every cell centre the height of the plane of its triangle — the TIN DTM most practitioners default to, the method of &lt;code&gt;gdal_grid -a linear&lt;/code&gt;. Triangles with an edge longer than the maximum edge are dropped, so gaps under buildings or water stay nodata unless you fill them; cells outside the points' convex hull are always nodata.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=0.5 MAX_EDGE=0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
+            <translation>&lt;p&gt;نقاط زمین یک فایل LAS/LAZ را مثلث‌بندی می‌کند (دلونی، Qhull) و به مرکز هر سلول ارتفاع صفحهٔ مثلث آن را می‌دهد — مدل رقومی زمین TIN که بیشتر کاربران به‌طور پیش‌فرض به کار می‌برند، همان روش &lt;code&gt;gdal_grid -a linear&lt;/code&gt;. مثلث‌هایی که ضلعی بلندتر از بیشینهٔ طول دارند حذف می‌شوند، بنابراین شکاف‌های زیر ساختمان‌ها یا روی آب بدون داده می‌مانند مگر آنکه پر کردن آن‌ها را بخواهید؛ سلول‌های بیرون از پوستهٔ محدب نقاط همیشه بدون داده‌اند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=0.5 MAX_EDGE=0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Maximum triangle edge&lt;/b&gt; (MAX_EDGE, m, default 0 = automatic: ten mean point spacings, at least four cells): longer triangles are nodata.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill gaps&lt;/b&gt; (FILL_GAPS, default no): keep every triangle, bridging gaps inside the hull with flat facets.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs also the numbers N_POINTS, N_TRIANGLES, VALID_CELLS, NODATA_CELLS.&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;بیشینهٔ طول ضلع مثلث&lt;/b&gt; (MAX_EDGE، متر، پیش‌فرض 0 = خودکار: ده برابر فاصلهٔ میانگین نقاط، دست‌کم چهار سلول): مثلث‌های بلندتر بدون داده می‌مانند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;پر کردن شکاف‌ها&lt;/b&gt; (FILL_GAPS، پیش‌فرض خیر): همهٔ مثلث‌ها نگه داشته می‌شوند و شکاف‌های درون پوسته با وجوه تخت پر می‌شوند.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد N_POINTS، N_TRIANGLES، VALID_CELLS و NODATA_CELLS نیز خروجی داده می‌شوند.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Maximum triangle edge (m, 0 = auto)</source>
+            <translation>بیشینهٔ طول ضلع مثلث (متر، 0 = خودکار)</translation>
+        </message>
+        <message>
+            <source>Fill gaps (keep long triangles)</source>
+            <translation>پر کردن شکاف‌ها (نگه داشتن مثلث‌های بلند)</translation>
+        </message>
+        <message>
+            <source>TIN DTM</source>
+            <translation>مدل رقومی زمین TIN</translation>
+        </message>
+    </context>
+    <context>
         <name>_GcpBase</name>
         <message>
             <source>Image (raster) to rectify</source>

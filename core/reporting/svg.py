@@ -253,3 +253,105 @@ def vline(x: float, top: float, bottom: float, *, colour: str = "#777777") -> st
     """Return a dashed vertical line at ``x`` (e.g. a chosen threshold)."""
     return (f'<line x1="{x:.1f}" y1="{top:.1f}" x2="{x:.1f}" y2="{bottom:.1f}" '
             f'stroke="{colour}" stroke-dasharray="4 3"/>')
+
+
+# ------------------------------------------------------------ raster maps and bar charts
+#: Colour ramps as anchor colours (RGB 0-255), interpolated linearly.
+RAMPS = {
+    "viridis": [(68, 1, 84), (59, 82, 139), (33, 145, 140), (94, 201, 98), (253, 231, 37)],
+    "diverging": [(178, 24, 43), (239, 138, 98), (247, 247, 247), (103, 169, 207),
+                  (33, 102, 172)],
+    "gaps": [(240, 240, 240), (200, 30, 30)],
+}
+
+
+def _png(rgba: np.ndarray) -> bytes:
+    """Encode an (h, w, 4) uint8 array as a PNG file."""
+    h, w = rgba.shape[:2]
+    raw = b"".join(b"\x00" + rgba[r].tobytes() for r in range(h))
+
+    def chunk(tag: bytes, data: bytes) -> bytes:
+        return (struct.pack(">I", len(data)) + tag + data
+                + struct.pack(">I", zlib.crc32(tag + data) & 0xFFFFFFFF))
+
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
+def colourise(values: np.ndarray, vmin: float, vmax: float, ramp: str = "viridis"
+              ) -> np.ndarray:
+    """Return the RGBA (uint8) of a 2-D array on a colour ramp; NaN is transparent."""
+    anchors = np.array(RAMPS[ramp], float)
+    span = (vmax - vmin) or 1.0
+    t = np.clip((np.nan_to_num(values, nan=vmin) - vmin) / span, 0, 1) * (len(anchors) - 1)
+    i = np.minimum(t.astype(int), len(anchors) - 2)
+    f = (t - i)[..., None]
+    rgb = anchors[i] * (1 - f) + anchors[i + 1] * f
+    alpha = np.where(np.isfinite(values), 255, 0)[..., None]
+    return np.concatenate([rgb, alpha], axis=-1).astype(np.uint8)
+
+
+def _fmt(v: float) -> str:
+    return f"{v:.3g}"
+
+
+def svg_raster(values, *, title: str = "", unit: str = "", ramp: str = "viridis",
+               vmin: Optional[float] = None, vmax: Optional[float] = None,
+               max_pixels: int = 400) -> str:
+    """Draw a raster map (row 0 north) as an embedded PNG with a labelled colour bar.
+
+    NaN cells are transparent. Large rasters are decimated to ``max_pixels`` a side.
+    """
+    a = np.asarray(values, float)
+    step = max(1, int(np.ceil(max(a.shape) / max_pixels)))
+    a = a[::step, ::step]
+    ok = a[np.isfinite(a)]
+    lo = float(ok.min()) if vmin is None and ok.size else float(vmin or 0.0)
+    hi = float(ok.max()) if vmax is None and ok.size else float(vmax if vmax is not None
+                                                                 else 1.0)
+    png = base64.b64encode(_png(colourise(a, lo, hi, ramp))).decode("ascii")
+    h, w = a.shape
+    scale = 360.0 / max(h, w)
+    iw, ih = w * scale, h * scale
+    bar = colourise(np.linspace(hi, lo, 64)[:, None], lo, hi, ramp)
+    bar_png = base64.b64encode(_png(bar)).decode("ascii")
+    width, height = iw + 110, ih + 40
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width:.0f}" '
+            f'height="{height:.0f}" viewBox="0 0 {width:.0f} {height:.0f}">'
+            f'<text x="5" y="15" font-size="12">{esc(title)}</text>'
+            f'<image x="5" y="25" width="{iw:.1f}" height="{ih:.1f}" '
+            f'style="image-rendering:pixelated" preserveAspectRatio="none" '
+            f'href="data:image/png;base64,{png}"/>'
+            f'<image x="{iw + 15:.1f}" y="25" width="14" height="{ih:.1f}" '
+            f'preserveAspectRatio="none" href="data:image/png;base64,{bar_png}"/>'
+            f'<text x="{iw + 33:.1f}" y="33" font-size="11">{_fmt(hi)} {esc(unit)}</text>'
+            f'<text x="{iw + 33:.1f}" y="{ih + 25:.1f}" font-size="11">{_fmt(lo)} '
+            f'{esc(unit)}</text></svg>')
+
+
+def svg_bars(labels: Sequence, values: Sequence[float], *, xlabel: str = "",
+             ylabel: str = "", title: str = "", colour: str = "#1f5f8b") -> str:
+    """Draw a bar chart (histograms of classes, returns, binned values)."""
+    vals = np.asarray(values, float)
+    n = max(len(vals), 1)
+    width, height, left, bottom = 560, 260, 60, 40
+    bw = (width - left - 10) / n
+    top = float(vals.max()) if vals.size and vals.max() > 0 else 1.0
+    parts = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+             f'viewBox="0 0 {width} {height}">',
+             f'<text x="{left}" y="14" font-size="12">{esc(title)}</text>']
+    every = max(1, n // 12)
+    for i, (lab, v) in enumerate(zip(labels, vals)):
+        h = (height - bottom - 25) * v / top
+        x = left + i * bw
+        parts.append(f'<rect x="{x:.1f}" y="{height - bottom - h:.1f}" '
+                     f'width="{max(bw - 1, 0.5):.1f}" height="{h:.1f}" fill="{colour}">'
+                     f'<title>{esc(str(lab))}: {_fmt(v)}</title></rect>')
+        if i % every == 0:
+            parts.append(f'<text x="{x + bw / 2:.1f}" y="{height - bottom + 14}" '
+                         f'font-size="10" text-anchor="middle">{esc(str(lab))}</text>')
+    parts += [f'<text x="{left}" y="{height - bottom + 20 + 12}" font-size="11">'
+              f'{esc(xlabel)}</text>',
+              f'<text x="5" y="30" font-size="11">{esc(ylabel)} (max {_fmt(top)})</text>',
+              "</svg>"]
+    return "".join(parts)

@@ -1,0 +1,120 @@
+"""TIN DTM: Delaunay linear interpolation of the ground points (core.terrain.tin)."""
+from __future__ import annotations
+
+import os
+
+import numpy as np
+from qgis.core import (
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterRasterDestination,
+)
+
+from ..core.io.points import write_grid
+from ..core.reporting import Figure, KeyValues, Paragraph, Report
+from ..core.reporting.svg import svg_raster
+from ..core.terrain import tin as core_tin
+from .terrain import _HELP_COMMON, _check_tif, _GridAlgorithm
+
+
+class TinDtmAlgorithm(_GridAlgorithm):
+    """DTM by linear interpolation in the Delaunay triangles of the ground points."""
+
+    MAX_EDGE = "MAX_EDGE"
+
+    def name(self):
+        return "tindtm"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("DTM by TIN (Delaunay linear interpolation)")
+
+    def shortDescription(self):  # noqa: N802
+        return self.tr("Terrain raster from the planes of the ground points' Delaunay "
+                       "triangles, gaps left empty.")
+
+    def tags(self):
+        return self.tr("dtm,dem,tin,delaunay,triangulation,linear,gdal_grid,blast2dem,"
+                       "lidar,ground,raster").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return (self.tr(
+            "<p>Triangulates the ground points of a LAS/LAZ file (Delaunay, Qhull) and "
+            "gives every cell centre the height of the plane of its triangle — the TIN "
+            "DTM most practitioners default to, the method of <code>gdal_grid -a "
+            "linear</code>. Triangles with an edge longer than the maximum edge are "
+            "dropped, so gaps under buildings or water stay nodata unless you fill "
+            "them; cells outside the points' convex hull are always nodata.</p>"
+            "<p><b>Example</b>: INPUT=ground.laz CLASSES=2 CELL_SIZE=0.5 MAX_EDGE=0.</p>"
+            "<p><b>Parameters</b></p><ul>") + self.tr(_HELP_COMMON) + self.tr(
+            "<li><b>Maximum triangle edge</b> (MAX_EDGE, m, default 0 = automatic: ten "
+            "mean point spacings, at least four cells): longer triangles are nodata.</li>"
+            "<li><b>Fill gaps</b> (FILL_GAPS, default no): keep every triangle, bridging "
+            "gaps inside the hull with flat facets.</li></ul>"
+            "<p>Outputs also the numbers N_POINTS, N_TRIANGLES, VALID_CELLS, "
+            "NODATA_CELLS.</p>"))
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_input_params()
+        self.add_number(self.MAX_EDGE, self.tr("Maximum triangle edge (m, 0 = auto)"), 0.0,
+                        minimum=0.0)
+        self.add(QgsProcessingParameterBoolean(
+            self.FILL_GAPS, self.tr("Fill gaps (keep long triangles)"), False),
+            advanced=True)
+        self.add(QgsProcessingParameterRasterDestination(self.OUTPUT, self.tr("TIN DTM")))
+        self.add_html()
+        self.add_report_language()
+        for name, label in (("N_POINTS", "Points triangulated"),
+                            ("N_TRIANGLES", "Triangles"),
+                            ("VALID_CELLS", "Cells with a value"),
+                            ("NODATA_CELLS", "Nodata cells")):
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+
+    def process(self, parameters, context, feedback):
+        path = self.parameterAsFile(parameters, self.INPUT, context)
+        _check_tif(self.parameterAsOutputLayer(parameters, self.OUTPUT, context))
+        max_edge = self.parameterAsDouble(parameters, self.MAX_EDGE, context)
+        fill = self.parameterAsBool(parameters, self.FILL_GAPS, context)
+        with self.output_contract(parameters, context, [self.OUTPUT, self.OUTPUT_HTML],
+                                  inputs={self.INPUT: path}) as out:
+            path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
+            res = core_tin.tin_grid(pts.x, pts.y, pts.z, grid,
+                                    max_edge=max_edge if max_edge > 0 else None, fill=fill,
+                                    **self.core_callbacks(feedback))
+            meta = {"method": "TIN linear (Delaunay) "
+                    + ("gaps filled" if fill else f"max edge {res.max_edge:g} m"),
+                    "source": os.path.basename(path)}
+            write_grid(out.path(self.OUTPUT), res.z, grid, metadata=meta,
+                       band_name="DTM (TIN)")
+            stats = self.grid_stats(res.z)
+            if out.requested(self.OUTPUT_HTML):
+                out.write_text(self.OUTPUT_HTML, self.render_report(
+                    self.report(res, path, pts, grid, stats), parameters, context))
+        results = {self.OUTPUT: out.final(self.OUTPUT), "N_POINTS": res.n_points,
+                   "N_TRIANGLES": res.n_triangles, "VALID_CELLS": stats["valid_cells"],
+                   "NODATA_CELLS": stats["nodata_cells"]}
+        if out.requested(self.OUTPUT_HTML):
+            results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
+        return results
+
+    @staticmethod
+    def report(res, path, pts, grid, stats) -> Report:
+        rep = Report("TIN DTM report", citation="Delaunay (1934); Barber et al. (1996), "
+                     "Qhull; same method as gdal_grid -a linear.")
+        rep.section("Input and grid").add(KeyValues([
+            ("Input", os.path.basename(path)),
+            ("Points in file", pts.n_total),
+            ("Points triangulated", res.n_points),
+            ("Grid (columns × rows)", f"{grid.ncols} × {grid.nrows}"),
+            ("Cell size (m)", grid.cell)]))
+        rep.section("Result").add(KeyValues([
+            ("Triangles", res.n_triangles),
+            ("Triangles dropped (edge too long)", res.n_long),
+            ("Maximum triangle edge (m)", res.max_edge if res.max_edge else np.nan),
+            ("Cells with a value", stats["valid_cells"]),
+            ("Nodata cells", stats["nodata_cells"]),
+            ("Minimum height (m)", stats["min"]), ("Maximum height (m)", stats["max"])])
+        ).add(Figure(svg_raster(res.z, unit="m"), "TIN DTM heights", "dtm-map"))
+        if res.max_edge is None:
+            rep.sections[-1].add(Paragraph("Gaps were filled: long triangles were kept.",
+                                           "note"))
+        return rep
