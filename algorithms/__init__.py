@@ -9,9 +9,11 @@ def all_algorithms():
     """Fresh instances of every algorithm the provider offers."""
     from .catalog import CatalogAlgorithm
     from .dtm_accuracy import DtmAccuracyAlgorithm
+    from .elevation_change import ElevationChangeAlgorithm
     from .filter_accuracy import GroundFilterAccuracyAlgorithm
     from .gcp_rectification import GcpAccuracyReportAlgorithm, RectifyGcpAlgorithm
     from .gsd_calculator import GsdBatchAlgorithm, GsdCalculatorAlgorithm
+    from .lidar_qa import LidarQaAlgorithm
     from .lsq_filter import LsqGroundFilterAlgorithm
     from .slope_filter import SlopeGroundFilterAlgorithm, SlopeThresholdSweepAlgorithm
     from .terrain import DsmAlgorithm, IdwDtmAlgorithm, KrigingDtmAlgorithm
@@ -31,5 +33,10 @@ def all_algorithms():
         SlopeThresholdSweepAlgorithm(),
         LsqGroundFilterAlgorithm(),
         GroundFilterAccuracyAlgorithm(),
+<<<<<<< HEAD
         CatalogAlgorithm(),
+=======
+        LidarQaAlgorithm(),
+        ElevationChangeAlgorithm(),
+>>>>>>> f9216f7 (Point density and quality (geomatics:lidarqa) with numeric ELiT advice, maps and histograms; elevation change (geomatics:elevationchange): LoD95, cut/fill polygons to GeoPackage (core/io/vector.py), report; ar/fa)
     ]

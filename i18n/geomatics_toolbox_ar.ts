@@ -382,6 +382,69 @@
         </message>
     </context>
     <context>
+        <name>ElevationChangeAlgorithm</name>
+        <message>
+            <source>Elevation change between two epochs (cut / fill)</source>
+            <translation>تغيّر الارتفاع بين حقبتين (حفر / ردم)</translation>
+        </message>
+        <message>
+            <source>Difference of two surveys with a 95 % level of detection, and cut and fill polygons with volumes.</source>
+            <translation>فرق مسحين مع حد كشف عند 95 %، ومضلعات الحفر والردم مع أحجامها.</translation>
+        </message>
+        <message>
+            <source>change,difference,dod,cut,fill,volume,epochs,lod,monitoring,lidar,dtm,dsm</source>
+            <translation>تغيّر,فرق,dod,حفر,ردم,حجم,حقب,حد الكشف,مراقبة,ليدار,dtm,dsm</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Subtracts an earlier surface from a later one (two DTM/DSM rasters on one grid, or two LAS/LAZ clouds gridded by TIN on a common grid) and keeps the change beyond the level of detection LoD95 = 1.96·√(σ₁² + σ₂²), σ being each epoch's vertical accuracy (e.g. the RMSE of the DTM accuracy tool). Significant cells form cut and fill polygons with area, mean change and volume.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Before&lt;/b&gt; (INPUT) and &lt;b&gt;After&lt;/b&gt; (INPUT_AFTER): two GeoTIFFs on the same grid, or two LAS/LAZ clouds in one CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;σ₁, σ₂&lt;/b&gt; (SIGMA1, SIGMA2, m, default 0.1): vertical accuracy of each epoch.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes&lt;/b&gt; (CLASSES, clouds only, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, clouds only, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum area&lt;/b&gt; (MIN_AREA, m², default 0 = eight cells): smaller regions are dropped (noise alone exceeds the LoD in 5 % of cells).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Difference&lt;/b&gt; (OUTPUT): GeoTIFF after − before (m).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Change polygons&lt;/b&gt; (OUTPUT_POLYGONS, GeoPackage): id, kind (cut / fill), area_m2, mean_change_m, volume_m3.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: LOD, FILL_VOLUME, CUT_VOLUME (m³), N_REGIONS.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;يطرح سطحاً سابقاً من سطح لاحق (شبكتا DTM/DSM على شبكة واحدة، أو سحابتا LAS/LAZ تُشبَّكان بـ TIN على شبكة مشتركة) ويحتفظ بالتغيّر الذي يتجاوز حد الكشف LoD95 = 1.96·√(σ₁² + σ₂²)، حيث σ الدقة الرأسية لكل حقبة (مثلاً RMSE من أداة دقة نموذج التضاريس). تكوّن الخلايا المعنوية مضلعات حفر وردم مع المساحة ومتوسط التغيّر والحجم.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;قبل&lt;/b&gt; (INPUT) و&lt;b&gt;بعد&lt;/b&gt; (INPUT_AFTER): ملفا GeoTIFF على الشبكة نفسها، أو سحابتا LAS/LAZ في نظام إحداثيات واحد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;σ₁ وσ₂&lt;/b&gt; (SIGMA1 وSIGMA2، م، الافتراضي 0.1): الدقة الرأسية لكل حقبة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الأصناف&lt;/b&gt; (CLASSES، للسحب فقط، الافتراضي &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، للسحب فقط، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى مساحة&lt;/b&gt; (MIN_AREA، م²، الافتراضي 0 = ثماني خلايا): تُحذف المناطق الأصغر (الضوضاء وحدها تتجاوز حد الكشف في 5 % من الخلايا).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الفرق&lt;/b&gt; (OUTPUT): GeoTIFF بعد − قبل (م).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مضلعات التغيّر&lt;/b&gt; (OUTPUT_POLYGONS، GeoPackage): id وkind (حفر / ردم) وarea_m2 وmean_change_m وvolume_m3.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;الأعداد الناتجة: LOD وFILL_VOLUME وCUT_VOLUME (م³) وN_REGIONS.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Before (raster or point cloud)</source>
+            <translation>قبل (شبكة أو سحابة نقاط)</translation>
+        </message>
+        <message>
+            <source>After (raster or point cloud)</source>
+            <translation>بعد (شبكة أو سحابة نقاط)</translation>
+        </message>
+        <message>
+            <source>Vertical accuracy before σ₁ (m)</source>
+            <translation>الدقة الرأسية قبل σ₁ (م)</translation>
+        </message>
+        <message>
+            <source>Vertical accuracy after σ₂ (m)</source>
+            <translation>الدقة الرأسية بعد σ₂ (م)</translation>
+        </message>
+        <message>
+            <source>Classes used (clouds)</source>
+            <translation>الأصناف المستخدمة (للسحب)</translation>
+        </message>
+        <message>
+            <source>Cell size (m, clouds)</source>
+            <translation>حجم الخلية (م، للسحب)</translation>
+        </message>
+        <message>
+            <source>Minimum region area (m², 0 = 8 cells)</source>
+            <translation>أدنى مساحة للمنطقة (م²، 0 = 8 خلايا)</translation>
+        </message>
+        <message>
+            <source>Difference</source>
+            <translation>الفرق</translation>
+        </message>
+        <message>
+            <source>Change polygons</source>
+            <translation>مضلعات التغيّر</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
         <name>GcpAccuracyReportAlgorithm</name>
         <message>
             <source>GCP accuracy report</source>
@@ -1011,6 +1074,49 @@
         <message>
             <source>Variogram parameters as text (old form)</source>
             <translation>معاملات الفاريوغرام نصاً (الصيغة القديمة)</translation>
+        </message>
+    </context>
+    <context>
+        <name>LidarQaAlgorithm</name>
+        <message>
+            <source>Point density and quality (with parameter advice)</source>
+            <translation>كثافة النقاط وجودتها (مع توصيات المعاملات)</translation>
+        </message>
+        <message>
+            <source>Density rasters, gaps, duplicates and noise of a cloud, and the filter window and DTM cell its density supports.</source>
+            <translation>شبكات الكثافة والفجوات والنقاط المكررة والضوضاء في سحابة، ونافذة المرشّح وخلية نموذج التضاريس التي تسمح بها كثافتها.</translation>
+        </message>
+        <message>
+            <source>density,quality,qa,lasinfo,gaps,duplicates,noise,scan angle,returns,advice,lidar</source>
+            <translation>كثافة,جودة,qa,lasinfo,فجوات,مكررات,ضوضاء,زاوية المسح,انعكاسات,توصيات,ليدار</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Checks a LAS/LAZ cloud before processing: density rasters of all returns, last returns and ground points, cells with returns but no ground (gaps), histograms of returns and classes, duplicate points, the share of noise (classes 7, 18) and the scan-angle range. It then states which settings the density supports: the ground filter window (1–2 pts/m² → 2 m), the DTM cell size, LOD1 only below 1 pt/m² (about 0.6 pts/m² in the ELiT study), and the radius and tile of our slope-based and LSQ filters.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz in a projected CRS (metres); a cloud in degrees is refused.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 5, &amp;gt; 0): cell of the density rasters.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Density rasters&lt;/b&gt; (OUTPUT): GeoTIFF with four bands: all returns, last returns, ground (pts/m²), gap (1/0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML report with maps and advice.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: DENSITY, GROUND_DENSITY (pts/m²), GAP_SHARE, DUPLICATES, NOISE_SHARE, GROUND_WINDOW (m), DTM_CELL (m).&lt;/p&gt;</source>
+            <translation>&lt;p&gt;يفحص سحابة LAS/LAZ قبل المعالجة: شبكات كثافة كل الانعكاسات والانعكاسات الأخيرة ونقاط الأرض، والخلايا التي فيها انعكاسات بلا أرض (فجوات)، ومدرّجات الانعكاسات والأصناف، والنقاط المكررة، ونسبة الضوضاء (الصنفان 7 و18) ومدى زاوية المسح. ثم يبيّن الإعدادات التي تسمح بها الكثافة: نافذة مرشّح الأرض (1–2 نقطة/م² ← 2 م)، وحجم خلية نموذج التضاريس، وLOD1 فقط تحت نقطة واحدة/م² (نحو 0.6 نقطة/م² في دراسة ELiT)، ونصف قطر وبلاطة مرشّحينا المعتمدين على الميل وLSQ.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف ‎.las/.laz في نظام إسقاط مستوٍ (بالأمتار)؛ تُرفض السحابة بالدرجات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 5، &amp;gt; 0): خلية شبكات الكثافة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;أصناف الأرض&lt;/b&gt; (GROUND_CLASSES، الافتراضي &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شبكات الكثافة&lt;/b&gt; (OUTPUT): ملف GeoTIFF بأربع طبقات: كل الانعكاسات، الأخيرة، الأرض (نقطة/م²)، الفجوة (1/0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): تقرير HTML بالخرائط والتوصيات.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;الأعداد الناتجة: DENSITY وGROUND_DENSITY (نقطة/م²) وGAP_SHARE وDUPLICATES وNOISE_SHARE وGROUND_WINDOW (م) وDTM_CELL (م).&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>سحابة النقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Cell size (m)</source>
+            <translation>حجم الخلية (م)</translation>
+        </message>
+        <message>
+            <source>Ground classes</source>
+            <translation>أصناف الأرض</translation>
+        </message>
+        <message>
+            <source>Density rasters</source>
+            <translation>شبكات الكثافة</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
         </message>
     </context>
     <context>

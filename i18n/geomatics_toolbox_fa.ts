@@ -382,6 +382,69 @@
         </message>
     </context>
     <context>
+        <name>ElevationChangeAlgorithm</name>
+        <message>
+            <source>Elevation change between two epochs (cut / fill)</source>
+            <translation>تغییر ارتفاع میان دو دوره (خاک‌برداری / خاک‌ریزی)</translation>
+        </message>
+        <message>
+            <source>Difference of two surveys with a 95 % level of detection, and cut and fill polygons with volumes.</source>
+            <translation>تفاضل دو برداشت با حد آشکارسازی ۹۵ درصد، و چندضلعی‌های خاک‌برداری و خاک‌ریزی با حجم آن‌ها.</translation>
+        </message>
+        <message>
+            <source>change,difference,dod,cut,fill,volume,epochs,lod,monitoring,lidar,dtm,dsm</source>
+            <translation>تغییر,تفاضل,dod,خاک‌برداری,خاک‌ریزی,حجم,دوره‌ها,حد آشکارسازی,پایش,لیدار,dtm,dsm</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Subtracts an earlier surface from a later one (two DTM/DSM rasters on one grid, or two LAS/LAZ clouds gridded by TIN on a common grid) and keeps the change beyond the level of detection LoD95 = 1.96·√(σ₁² + σ₂²), σ being each epoch's vertical accuracy (e.g. the RMSE of the DTM accuracy tool). Significant cells form cut and fill polygons with area, mean change and volume.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Before&lt;/b&gt; (INPUT) and &lt;b&gt;After&lt;/b&gt; (INPUT_AFTER): two GeoTIFFs on the same grid, or two LAS/LAZ clouds in one CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;σ₁, σ₂&lt;/b&gt; (SIGMA1, SIGMA2, m, default 0.1): vertical accuracy of each epoch.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes&lt;/b&gt; (CLASSES, clouds only, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, clouds only, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum area&lt;/b&gt; (MIN_AREA, m², default 0 = eight cells): smaller regions are dropped (noise alone exceeds the LoD in 5 % of cells).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Difference&lt;/b&gt; (OUTPUT): GeoTIFF after − before (m).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Change polygons&lt;/b&gt; (OUTPUT_POLYGONS, GeoPackage): id, kind (cut / fill), area_m2, mean_change_m, volume_m3.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: LOD, FILL_VOLUME, CUT_VOLUME (m³), N_REGIONS.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;سطح پیشین را از سطح پسین کم می‌کند (دو رستر DTM/DSM روی یک شبکه، یا دو ابر LAS/LAZ که با TIN روی شبکه‌ای مشترک شبکه‌بندی می‌شوند) و تغییری را نگه می‌دارد که از حد آشکارسازی LoD95 = 1.96·√(σ₁² + σ₂²) بیشتر است؛ σ دقت ارتفاعی هر دوره است (مثلاً RMSE ابزار دقت مدل رقومی زمین). سلول‌های معنادار چندضلعی‌های خاک‌برداری و خاک‌ریزی با مساحت، میانگین تغییر و حجم می‌سازند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;پیش از&lt;/b&gt; (INPUT) و &lt;b&gt;پس از&lt;/b&gt; (INPUT_AFTER): دو GeoTIFF روی یک شبکه، یا دو ابر LAS/LAZ در یک سیستم مختصات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;σ₁ و σ₂&lt;/b&gt; (SIGMA1، SIGMA2، متر، پیش‌فرض 0.1): دقت ارتفاعی هر دوره.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌ها&lt;/b&gt; (CLASSES، فقط برای ابرها، پیش‌فرض &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، فقط برای ابرها، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کمینهٔ مساحت&lt;/b&gt; (MIN_AREA، مترمربع، پیش‌فرض 0 = هشت سلول): نواحی کوچک‌تر حذف می‌شوند (نویز به‌تنهایی در ۵ درصد سلول‌ها از حد آشکارسازی می‌گذرد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تفاضل&lt;/b&gt; (OUTPUT): GeoTIFF پس از − پیش از (متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;چندضلعی‌های تغییر&lt;/b&gt; (OUTPUT_POLYGONS، GeoPackage): id، kind (خاک‌برداری / خاک‌ریزی)، area_m2، mean_change_m، volume_m3.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: LOD، FILL_VOLUME، CUT_VOLUME (مترمکعب)، N_REGIONS.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Before (raster or point cloud)</source>
+            <translation>پیش از (رستر یا ابر نقاط)</translation>
+        </message>
+        <message>
+            <source>After (raster or point cloud)</source>
+            <translation>پس از (رستر یا ابر نقاط)</translation>
+        </message>
+        <message>
+            <source>Vertical accuracy before σ₁ (m)</source>
+            <translation>دقت ارتفاعی پیش از σ₁ (متر)</translation>
+        </message>
+        <message>
+            <source>Vertical accuracy after σ₂ (m)</source>
+            <translation>دقت ارتفاعی پس از σ₂ (متر)</translation>
+        </message>
+        <message>
+            <source>Classes used (clouds)</source>
+            <translation>کلاس‌های به‌کاررفته (برای ابرها)</translation>
+        </message>
+        <message>
+            <source>Cell size (m, clouds)</source>
+            <translation>اندازهٔ سلول (متر، برای ابرها)</translation>
+        </message>
+        <message>
+            <source>Minimum region area (m², 0 = 8 cells)</source>
+            <translation>کمینهٔ مساحت ناحیه (مترمربع، 0 = هشت سلول)</translation>
+        </message>
+        <message>
+            <source>Difference</source>
+            <translation>تفاضل</translation>
+        </message>
+        <message>
+            <source>Change polygons</source>
+            <translation>چندضلعی‌های تغییر</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
         <name>GcpAccuracyReportAlgorithm</name>
         <message>
             <source>GCP accuracy report</source>
@@ -1011,6 +1074,49 @@
         <message>
             <source>Variogram parameters as text (old form)</source>
             <translation>پارامترهای واریوگرام به‌صورت متن (شکل قدیمی)</translation>
+        </message>
+    </context>
+    <context>
+        <name>LidarQaAlgorithm</name>
+        <message>
+            <source>Point density and quality (with parameter advice)</source>
+            <translation>تراکم و کیفیت نقاط (با توصیهٔ پارامترها)</translation>
+        </message>
+        <message>
+            <source>Density rasters, gaps, duplicates and noise of a cloud, and the filter window and DTM cell its density supports.</source>
+            <translation>رسترهای تراکم، شکاف‌ها، نقاط تکراری و نویز یک ابر، و پنجرهٔ فیلتر و سلول مدل رقومی زمین که تراکم آن پشتیبانی می‌کند.</translation>
+        </message>
+        <message>
+            <source>density,quality,qa,lasinfo,gaps,duplicates,noise,scan angle,returns,advice,lidar</source>
+            <translation>تراکم,کیفیت,qa,lasinfo,شکاف‌ها,تکراری‌ها,نویز,زاویهٔ اسکن,بازتاب‌ها,توصیه,لیدار</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Checks a LAS/LAZ cloud before processing: density rasters of all returns, last returns and ground points, cells with returns but no ground (gaps), histograms of returns and classes, duplicate points, the share of noise (classes 7, 18) and the scan-angle range. It then states which settings the density supports: the ground filter window (1–2 pts/m² → 2 m), the DTM cell size, LOD1 only below 1 pt/m² (about 0.6 pts/m² in the ELiT study), and the radius and tile of our slope-based and LSQ filters.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz in a projected CRS (metres); a cloud in degrees is refused.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 5, &amp;gt; 0): cell of the density rasters.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Density rasters&lt;/b&gt; (OUTPUT): GeoTIFF with four bands: all returns, last returns, ground (pts/m²), gap (1/0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML report with maps and advice.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: DENSITY, GROUND_DENSITY (pts/m²), GAP_SHARE, DUPLICATES, NOISE_SHARE, GROUND_WINDOW (m), DTM_CELL (m).&lt;/p&gt;</source>
+            <translation>&lt;p&gt;یک ابر LAS/LAZ را پیش از پردازش بررسی می‌کند: رسترهای تراکم همهٔ بازتاب‌ها، آخرین بازتاب‌ها و نقاط زمین، سلول‌های دارای بازتاب ولی بدون زمین (شکاف‌ها)، هیستوگرام بازتاب‌ها و کلاس‌ها، نقاط تکراری، سهم نویز (کلاس‌های ۷ و ۱۸) و بازهٔ زاویهٔ اسکن. سپس می‌گوید تراکم داده چه تنظیماتی را پشتیبانی می‌کند: پنجرهٔ فیلتر زمین (۱ تا ۲ نقطه بر مترمربع ← ۲ متر)، اندازهٔ سلول مدل رقومی زمین، فقط LOD1 زیر ۱ نقطه بر مترمربع (حدود ۰٫۶ در مطالعهٔ ELiT)، و شعاع و کاشی فیلترهای شیب‌مبنا و LSQ ما.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): فایل ‎.las/.laz در سیستم تصویر مسطح (متر)؛ ابر بر حسب درجه پذیرفته نمی‌شود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض ۵، &amp;gt; 0): سلول رسترهای تراکم.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های زمین&lt;/b&gt; (GROUND_CLASSES، پیش‌فرض &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;رسترهای تراکم&lt;/b&gt; (OUTPUT): GeoTIFF با چهار باند: همهٔ بازتاب‌ها، آخرین بازتاب‌ها، زمین (نقطه بر مترمربع)، شکاف (1/0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): گزارش HTML با نقشه‌ها و توصیه‌ها.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: DENSITY، GROUND_DENSITY (نقطه بر مترمربع)، GAP_SHARE، DUPLICATES، NOISE_SHARE، GROUND_WINDOW (متر)، DTM_CELL (متر).&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>ابر نقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Cell size (m)</source>
+            <translation>اندازهٔ سلول (متر)</translation>
+        </message>
+        <message>
+            <source>Ground classes</source>
+            <translation>کلاس‌های زمین</translation>
+        </message>
+        <message>
+            <source>Density rasters</source>
+            <translation>رسترهای تراکم</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
         </message>
     </context>
     <context>

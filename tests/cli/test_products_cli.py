@@ -45,3 +45,45 @@ def test_tindtm_no_ground_is_a_clear_error(qgis_process, demo):
                                           OUTPUT=str(d / "none.tif"))
     assert "No ground points in the input class filter" in msg
     assert "Traceback" not in msg and not (d / "none.tif").exists()
+
+
+def test_lidarqa_defaults(qgis_process, demo):
+    d, laz = demo
+    html = d / "qa.html"
+    res = qgis_process.run("geomatics:lidarqa", INPUT=laz, OUTPUT=str(d / "qa.tif"),
+                           OUTPUT_HTML=str(html), REPORT_LANGUAGE=2)["results"]
+    # the demo tile: ~4 pts/m² of all returns (make_demo_data.DEMO)
+    assert 3.0 < res["DENSITY"] < 5.0 and 0 < res["GROUND_DENSITY"] < res["DENSITY"]
+    assert res["GROUND_WINDOW"] == 1.0 and res["DTM_CELL"] in (0.5, 1.0)
+    dens = read_raster(d / "qa.tif").masked()
+    assert dens.shape == (60, 60)
+    text = html.read_text(encoding="utf-8")
+    assert 'dir="rtl"' in text and 'id="density-map"' in text and 'id="gap-map"' in text
+
+
+def test_elevationchange_clouds_defaults(qgis_process, demo):
+    import laspy
+    d, laz = demo
+    las = laspy.read(laz)
+    x0, y0 = las.header.mins[:2]
+    box = ((las.x > x0 + 100) & (las.x <= x0 + 140) & (las.y > y0 + 100)
+           & (las.y <= y0 + 130))                        # a 40 x 30 m fill of 2 m
+    las.z = np.where(box, las.z + 2.0, las.z)
+    after = d / "after.laz"
+    las.write(str(after))
+    html = d / "change.html"
+    res = qgis_process.run("geomatics:elevationchange", INPUT=laz, INPUT_AFTER=str(after),
+                           OUTPUT=str(d / "diff.tif"), OUTPUT_POLYGONS=str(d / "chg.gpkg"),
+                           OUTPUT_HTML=str(html))["results"]
+    assert res["N_REGIONS"] >= 1 and res["CUT_VOLUME"] == 0
+    assert res["FILL_VOLUME"] == pytest.approx(2.0 * 40 * 30, rel=0.08)
+    assert res["LOD"] == pytest.approx(1.96 * np.sqrt(0.02))
+    assert (d / "chg.gpkg").exists() and 'id="change-map"' in html.read_text("utf-8")
+
+
+def test_elevationchange_mixed_inputs_error(qgis_process, demo):
+    d, laz = demo
+    msg = qgis_process.run_expect_failure(
+        "geomatics:elevationchange", INPUT=laz, INPUT_AFTER=str(d / "diff.tif"),
+        OUTPUT=str(d / "x.tif"))
+    assert "two rasters or two point clouds" in msg and "Traceback" not in msg

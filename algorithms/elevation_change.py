@@ -1,0 +1,183 @@
+"""Elevation change between two epochs (two clouds or two rasters), core.terrain.change."""
+from __future__ import annotations
+
+import os
+
+import numpy as np
+from qgis.core import (
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterRasterDestination,
+    QgsProcessingParameterString,
+    QgsProcessingParameterVectorDestination,
+)
+
+from ..core.errors import InputError
+from ..core.io.las import las_info
+from ..core.io.points import parse_classes, read_class_points, write_grid
+from ..core.io.raster import read_raster
+from ..core.io.vector import write_label_polygons
+from ..core.terrain import change as core_change
+from ..core.terrain.grid import grid_from_extent, grid_like
+from ..core.terrain.tin import tin_grid
+from .base import GeomaticsAlgorithm
+
+EPOCH_FILTER = ("Point clouds or rasters (*.las *.laz *.LAS *.LAZ *.tif *.tiff *.TIF "
+                "*.TIFF)")
+FIELDS = [("id", "int"), ("kind", "str"), ("area_m2", "float"),
+          ("mean_change_m", "float"), ("volume_m3", "float")]
+
+
+def _is_las(path: str) -> bool:
+    return os.path.splitext(path)[1].lower() in (".las", ".laz")
+
+
+class ElevationChangeAlgorithm(GeomaticsAlgorithm):
+    """Difference raster, LoD95 and cut/fill polygons of two epochs."""
+
+    GROUP = "terrain"
+    INPUT = "INPUT"
+    INPUT_AFTER = "INPUT_AFTER"
+    SIGMA1 = "SIGMA1"
+    SIGMA2 = "SIGMA2"
+    CLASSES = "CLASSES"
+    CELL_SIZE = "CELL_SIZE"
+    MIN_AREA = "MIN_AREA"
+    OUTPUT = "OUTPUT"
+    OUTPUT_POLYGONS = "OUTPUT_POLYGONS"
+    OUTPUT_HTML = "OUTPUT_HTML"
+
+    def name(self):
+        return "elevationchange"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("Elevation change between two epochs (cut / fill)")
+
+    def shortDescription(self):  # noqa: N802
+        return self.tr("Difference of two surveys with a 95 % level of detection, and "
+                       "cut and fill polygons with volumes.")
+
+    def tags(self):
+        return self.tr("change,difference,dod,cut,fill,volume,epochs,lod,monitoring,"
+                       "lidar,dtm,dsm").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Subtracts an earlier surface from a later one (two DTM/DSM rasters on one "
+            "grid, or two LAS/LAZ clouds gridded by TIN on a common grid) and keeps the "
+            "change beyond the level of detection LoD95 = 1.96·√(σ₁² + σ₂²), σ being "
+            "each epoch's vertical accuracy (e.g. the RMSE of the DTM accuracy tool). "
+            "Significant cells form cut and fill polygons with area, mean change and "
+            "volume.</p>"
+            "<p><b>Example</b>: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 "
+            "SIGMA2=0.06.</p>"
+            "<p><b>Parameters</b></p><ul>"
+            "<li><b>Before</b> (INPUT) and <b>After</b> (INPUT_AFTER): two GeoTIFFs on "
+            "the same grid, or two LAS/LAZ clouds in one CRS.</li>"
+            "<li><b>σ₁, σ₂</b> (SIGMA1, SIGMA2, m, default 0.1): vertical accuracy of "
+            "each epoch.</li>"
+            "<li><b>Classes</b> (CLASSES, clouds only, default <code>2</code>).</li>"
+            "<li><b>Cell size</b> (CELL_SIZE, m, clouds only, default 1).</li>"
+            "<li><b>Minimum area</b> (MIN_AREA, m², default 0 = eight cells): smaller "
+            "regions are dropped (noise alone exceeds the LoD in 5 % of cells).</li>"
+            "<li><b>Difference</b> (OUTPUT): GeoTIFF after − before (m).</li>"
+            "<li><b>Change polygons</b> (OUTPUT_POLYGONS, GeoPackage): id, kind (cut / "
+            "fill), area_m2, mean_change_m, volume_m3.</li>"
+            "<li><b>Report</b> (OUTPUT_HTML, optional).</li></ul>"
+            "<p>Output numbers: LOD, FILL_VOLUME, CUT_VOLUME (m³), N_REGIONS.</p>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        for name, label in ((self.INPUT, self.tr("Before (raster or point cloud)")),
+                            (self.INPUT_AFTER, self.tr("After (raster or point cloud)"))):
+            self.add(QgsProcessingParameterFile(
+                name, label, behavior=QgsProcessingParameterFile.File,
+                fileFilter=EPOCH_FILTER))
+        self.add_number(self.SIGMA1, self.tr("Vertical accuracy before σ₁ (m)"), 0.1,
+                        minimum=0.0)
+        self.add_number(self.SIGMA2, self.tr("Vertical accuracy after σ₂ (m)"), 0.1,
+                        minimum=0.0)
+        self.add(QgsProcessingParameterString(
+            self.CLASSES, self.tr("Classes used (clouds)"), defaultValue="2", optional=True),
+            advanced=True)
+        self.add_number(self.CELL_SIZE, self.tr("Cell size (m, clouds)"), 1.0, minimum=0.0,
+                        advanced=True)
+        self.add_number(self.MIN_AREA, self.tr("Minimum region area (m², 0 = 8 cells)"),
+                        0.0, minimum=0.0)
+        self.add(QgsProcessingParameterRasterDestination(self.OUTPUT,
+                                                         self.tr("Difference")))
+        self.add(QgsProcessingParameterVectorDestination(
+            self.OUTPUT_POLYGONS, self.tr("Change polygons"), optional=True,
+            createByDefault=True))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            optional=True, createByDefault=False))
+        self.add_report_language()
+        for name, label in (("LOD", "Level of detection LoD95 (m)"),
+                            ("FILL_VOLUME", "Fill volume above the LoD (m³)"),
+                            ("CUT_VOLUME", "Cut volume above the LoD (m³)"),
+                            ("N_REGIONS", "Change regions")):
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+
+    def epochs(self, before, after, parameters, context, feedback):
+        """Both surfaces on one grid: rasters as they are, clouds by TIN."""
+        if _is_las(before) != _is_las(after):
+            raise InputError("Give two rasters or two point clouds, not one of each.")
+        if not _is_las(before):
+            ra, rb = read_raster(before), read_raster(after)
+            if ra.shape != rb.shape or np.abs(np.subtract(ra.geotransform,
+                                                          rb.geotransform)).max() > 1e-6:
+                raise InputError(
+                    "The two rasters are not on the same grid (origin, cell size, size); "
+                    "resample one onto the other's grid first (e.g. gdalwarp -te -tr).")
+            return ra.masked(), rb.masked(), grid_like(ra.geotransform, ra.shape,
+                                                       crs=ra.crs)
+        classes = parse_classes(self.parameterAsString(parameters, self.CLASSES, context))
+        cell = self.parameterAsDouble(parameters, self.CELL_SIZE, context)
+        if not cell > 0:
+            raise InputError("Cell size must be > 0 (m); give e.g. 1.0.")
+        ia, ib = las_info(before), las_info(after)
+        box = (max(ia.mins[0], ib.mins[0]), min(ia.maxs[0], ib.maxs[0]),
+               max(ia.mins[1], ib.mins[1]), min(ia.maxs[1], ib.maxs[1]))
+        if box[0] >= box[1] or box[2] >= box[3]:
+            raise InputError("The two point clouds do not overlap; check their CRS.")
+        grid = grid_from_extent(box, cell, crs=ia.crs or ib.crs)
+        cb = self.core_callbacks(feedback)
+        out = []
+        for path in (before, after):
+            pts = read_class_points(path, classes, extent=box, cancel=cb["cancel"])
+            out.append(tin_grid(pts.x, pts.y, pts.z, grid, cancel=cb["cancel"]).z)
+        return out[0], out[1], grid
+
+    def process(self, parameters, context, feedback):
+        before = self.parameterAsFile(parameters, self.INPUT, context)
+        after = self.parameterAsFile(parameters, self.INPUT_AFTER, context)
+        s1 = self.parameterAsDouble(parameters, self.SIGMA1, context)
+        s2 = self.parameterAsDouble(parameters, self.SIGMA2, context)
+        min_area = self.parameterAsDouble(parameters, self.MIN_AREA, context)
+        names = [self.OUTPUT, self.OUTPUT_POLYGONS, self.OUTPUT_HTML]
+        with self.output_contract(parameters, context, names,
+                                  inputs={self.INPUT: before,
+                                          self.INPUT_AFTER: after}) as out:
+            a, b, grid = self.epochs(before, after, parameters, context, feedback)
+            res = core_change.elevation_change(a, b, grid.cell, sigma1=s1, sigma2=s2,
+                                               min_area=min_area,
+                                               **self.core_callbacks(feedback))
+            write_grid(out.path(self.OUTPUT), res.diff, grid, band_name="after - before (m)",
+                       metadata={"lod95": f"{res.lod:.4f}"})
+            if out.requested(self.OUTPUT_POLYGONS):
+                recs = {r["id"]: {"id": r["id"], "kind": r["kind"], "area_m2": r["area"],
+                                  "mean_change_m": r["mean_change"],
+                                  "volume_m3": r["volume"]} for r in res.regions}
+                write_label_polygons(out.path(self.OUTPUT_POLYGONS), res.labels,
+                                     grid.geotransform, crs=grid.crs, layer_name="change",
+                                     fields=FIELDS, records=recs)
+            if out.requested(self.OUTPUT_HTML):
+                rep = core_change.change_report(
+                    res, (os.path.basename(before), os.path.basename(after)), s1, s2)
+                out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters,
+                                                                    context))
+        results = {n: out.final(n) for n in names if out.requested(n)}
+        results.update(LOD=res.lod, FILL_VOLUME=res.fill_volume, CUT_VOLUME=res.cut_volume,
+                       N_REGIONS=len(res.regions))
+        return results
