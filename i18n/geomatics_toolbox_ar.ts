@@ -109,6 +109,69 @@
         </message>
     </context>
     <context>
+        <name>BuildingsAlgorithm</name>
+        <message>
+            <source>Building footprints with heights</source>
+            <translation>مساقط المباني مع ارتفاعاتها</translation>
+        </message>
+        <message>
+            <source>Roof planes found by region growing above the DTM, as footprints with height, area, volume, storeys and roof type.</source>
+            <translation>مستويات الأسطح المستخرجة بتنمية المناطق فوق نموذج التضاريس، كمساقط مع الارتفاع والمساحة والحجم والطوابق ونوع السطح.</translation>
+        </message>
+        <message>
+            <source>buildings,footprints,roofs,lod1,extraction,height,volume,storeys,class 6,lidar</source>
+            <translation>مبانٍ,مساقط,أسطح,lod1,استخراج,ارتفاع,حجم,طوابق,الصنف 6,ليدار</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Extracts buildings from a ground-classified LAS/LAZ cloud: points more than the minimum height above a TIN of the ground points are fitted with local planes; neighbours whose normals agree within the maximum angle grow into roof patches; patches of at least the minimum patch area become footprints with height (top of roof − ground at the outline), area, volume, storeys (height / 3 m) and roof type (flat / pitched). Trees are rejected because their points are not planar.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz with ground in class 2 (run a ground filter first), projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum height&lt;/b&gt; (MIN_HEIGHT, m, default 2; the spec gives 1.5–2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum normal angle&lt;/b&gt; (MAX_ANGLE, degrees, default 20).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum roof patch area&lt;/b&gt; (MIN_PATCH_AREA, m², default 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum building area&lt;/b&gt; (MIN_AREA, m², default 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 0.5): footprint raster.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Footprints&lt;/b&gt; (OUTPUT, GeoPackage polygons): id, height_m, area_m2, volume_m3, storeys, roof_type, ground_z, roof_z.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified cloud&lt;/b&gt; (OUTPUT_CLOUD, optional LAS/LAZ): the input with roof points set to class 6, every other attribute kept.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_BUILDINGS, TOTAL_AREA (m²), TOTAL_VOLUME (m³).&lt;/p&gt;</source>
+            <translation>&lt;p&gt;يستخرج المباني من سحابة LAS/LAZ مصنّفة الأرض: تُطابَق النقاط التي تعلو نموذج TIN لنقاط الأرض بأكثر من الارتفاع الأدنى بمستويات محلية؛ وتنمو النقاط المتجاورة التي تتفق نواظمها ضمن الزاوية القصوى إلى رقع أسطح؛ والرقع التي تبلغ المساحة الدنيا تصبح مساقط مع الارتفاع (أعلى السطح − الأرض عند المحيط) والمساحة والحجم والطوابق (الارتفاع / 3 م) ونوع السطح (مسطّح / مائل). تُستبعد الأشجار لأن نقاطها غير مستوية.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف ‎.las/.laz فيه الأرض في الصنف 2 (شغّل مرشّح أرض أولاً)، بنظام إسقاط مستوٍ بالأمتار.&lt;/li&gt;&lt;li&gt;&lt;b&gt;أصناف الأرض&lt;/b&gt; (GROUND_CLASSES، الافتراضي &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الارتفاع الأدنى&lt;/b&gt; (MIN_HEIGHT، م، الافتراضي 2؛ تعطي المواصفة 1.5–2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أقصى زاوية للنواظم&lt;/b&gt; (MAX_ANGLE، درجة، الافتراضي 20).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى مساحة لرقعة السطح&lt;/b&gt; (MIN_PATCH_AREA، م²، الافتراضي 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى مساحة للمبنى&lt;/b&gt; (MIN_AREA، م²، الافتراضي 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 0.5): شبكة المساقط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;المساقط&lt;/b&gt; (OUTPUT، مضلعات GeoPackage): id وheight_m وarea_m2 وvolume_m3 وstoreys وroof_type وground_z وroof_z.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المصنّفة&lt;/b&gt; (OUTPUT_CLOUD، LAS/LAZ اختياري): المدخل مع وضع نقاط الأسطح في الصنف 6 والحفاظ على كل السمات الأخرى.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;الأعداد الناتجة: N_BUILDINGS وTOTAL_AREA (م²) وTOTAL_VOLUME (م³).&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>سحابة النقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Ground classes</source>
+            <translation>أصناف الأرض</translation>
+        </message>
+        <message>
+            <source>Minimum height above ground (m)</source>
+            <translation>أدنى ارتفاع فوق الأرض (م)</translation>
+        </message>
+        <message>
+            <source>Maximum angle between roof normals (°)</source>
+            <translation>أقصى زاوية بين نواظم الأسطح (°)</translation>
+        </message>
+        <message>
+            <source>Minimum roof patch area (m²)</source>
+            <translation>أدنى مساحة لرقعة السطح (م²)</translation>
+        </message>
+        <message>
+            <source>Minimum building area (m²)</source>
+            <translation>أدنى مساحة للمبنى (م²)</translation>
+        </message>
+        <message>
+            <source>Cell size (m)</source>
+            <translation>حجم الخلية (م)</translation>
+        </message>
+        <message>
+            <source>Building footprints</source>
+            <translation>مساقط المباني</translation>
+        </message>
+        <message>
+            <source>Classified cloud (class 6 = building)</source>
+            <translation>السحابة المصنّفة (الصنف 6 = مبنى)</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
         <name>CatalogAlgorithm</name>
         <message>
             <source>Process a LiDAR tile catalog</source>

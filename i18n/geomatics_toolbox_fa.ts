@@ -109,6 +109,69 @@
         </message>
     </context>
     <context>
+        <name>BuildingsAlgorithm</name>
+        <message>
+            <source>Building footprints with heights</source>
+            <translation>ردپای ساختمان‌ها با ارتفاع</translation>
+        </message>
+        <message>
+            <source>Roof planes found by region growing above the DTM, as footprints with height, area, volume, storeys and roof type.</source>
+            <translation>صفحه‌های بام یافته‌شده با رشد ناحیه بالای مدل رقومی زمین، به‌صورت ردپا با ارتفاع، مساحت، حجم، طبقه‌ها و نوع بام.</translation>
+        </message>
+        <message>
+            <source>buildings,footprints,roofs,lod1,extraction,height,volume,storeys,class 6,lidar</source>
+            <translation>ساختمان‌ها,ردپا,بام‌ها,lod1,استخراج,ارتفاع,حجم,طبقه‌ها,کلاس ۶,لیدار</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Extracts buildings from a ground-classified LAS/LAZ cloud: points more than the minimum height above a TIN of the ground points are fitted with local planes; neighbours whose normals agree within the maximum angle grow into roof patches; patches of at least the minimum patch area become footprints with height (top of roof − ground at the outline), area, volume, storeys (height / 3 m) and roof type (flat / pitched). Trees are rejected because their points are not planar.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz with ground in class 2 (run a ground filter first), projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum height&lt;/b&gt; (MIN_HEIGHT, m, default 2; the spec gives 1.5–2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum normal angle&lt;/b&gt; (MAX_ANGLE, degrees, default 20).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum roof patch area&lt;/b&gt; (MIN_PATCH_AREA, m², default 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum building area&lt;/b&gt; (MIN_AREA, m², default 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 0.5): footprint raster.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Footprints&lt;/b&gt; (OUTPUT, GeoPackage polygons): id, height_m, area_m2, volume_m3, storeys, roof_type, ground_z, roof_z.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified cloud&lt;/b&gt; (OUTPUT_CLOUD, optional LAS/LAZ): the input with roof points set to class 6, every other attribute kept.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_BUILDINGS, TOTAL_AREA (m²), TOTAL_VOLUME (m³).&lt;/p&gt;</source>
+            <translation>&lt;p&gt;ساختمان‌ها را از ابر LAS/LAZ با زمین طبقه‌بندی‌شده استخراج می‌کند: به نقاطی که بیش از کمینهٔ ارتفاع بالای TIN نقاط زمین‌اند صفحه‌های محلی برازش داده می‌شود؛ نقاط همسایه‌ای که بردار عمودشان در حد بیشینهٔ زاویه هم‌جهت است به وصله‌های بام رشد می‌کنند؛ وصله‌هایی که دست‌کم کمینهٔ مساحت را دارند ردپا می‌شوند با ارتفاع (بالای بام − زمین کنار دیوار)، مساحت، حجم، طبقه‌ها (ارتفاع / ۳ متر) و نوع بام (تخت / شیب‌دار). درختان کنار گذاشته می‌شوند چون نقاطشان صفحه‌ای نیست.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): فایل ‎.las/.laz با زمین در کلاس ۲ (نخست یک فیلتر زمین اجرا کنید)، در سیستم تصویر مسطح بر حسب متر.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های زمین&lt;/b&gt; (GROUND_CLASSES، پیش‌فرض &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کمینهٔ ارتفاع&lt;/b&gt; (MIN_HEIGHT، متر، پیش‌فرض ۲؛ مشخصات ۱٫۵ تا ۲ را می‌دهد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بیشینهٔ زاویهٔ بردار عمود&lt;/b&gt; (MAX_ANGLE، درجه، پیش‌فرض ۲۰).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کمینهٔ مساحت وصلهٔ بام&lt;/b&gt; (MIN_PATCH_AREA، مترمربع، پیش‌فرض ۱۵).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کمینهٔ مساحت ساختمان&lt;/b&gt; (MIN_AREA، مترمربع، پیش‌فرض ۱۵).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض ۰٫۵): رستر ردپا.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ردپاها&lt;/b&gt; (OUTPUT، چندضلعی GeoPackage): id، height_m، area_m2، volume_m3، storeys، roof_type، ground_z، roof_z.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر طبقه‌بندی‌شده&lt;/b&gt; (OUTPUT_CLOUD، LAS/LAZ اختیاری): ورودی با نقاط بام در کلاس ۶ و همهٔ ویژگی‌های دیگر دست‌نخورده.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: N_BUILDINGS، TOTAL_AREA (مترمربع)، TOTAL_VOLUME (مترمکعب).&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>ابر نقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Ground classes</source>
+            <translation>کلاس‌های زمین</translation>
+        </message>
+        <message>
+            <source>Minimum height above ground (m)</source>
+            <translation>کمینهٔ ارتفاع از زمین (متر)</translation>
+        </message>
+        <message>
+            <source>Maximum angle between roof normals (°)</source>
+            <translation>بیشینهٔ زاویهٔ میان بردارهای عمود بام (درجه)</translation>
+        </message>
+        <message>
+            <source>Minimum roof patch area (m²)</source>
+            <translation>کمینهٔ مساحت وصلهٔ بام (مترمربع)</translation>
+        </message>
+        <message>
+            <source>Minimum building area (m²)</source>
+            <translation>کمینهٔ مساحت ساختمان (مترمربع)</translation>
+        </message>
+        <message>
+            <source>Cell size (m)</source>
+            <translation>اندازهٔ سلول (متر)</translation>
+        </message>
+        <message>
+            <source>Building footprints</source>
+            <translation>ردپای ساختمان‌ها</translation>
+        </message>
+        <message>
+            <source>Classified cloud (class 6 = building)</source>
+            <translation>ابر طبقه‌بندی‌شده (کلاس ۶ = ساختمان)</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
         <name>CatalogAlgorithm</name>
         <message>
             <source>Process a LiDAR tile catalog</source>

@@ -87,3 +87,20 @@ def test_elevationchange_mixed_inputs_error(qgis_process, demo):
         "geomatics:elevationchange", INPUT=laz, INPUT_AFTER=str(d / "diff.tif"),
         OUTPUT=str(d / "x.tif"))
     assert "two rasters or two point clouds" in msg and "Traceback" not in msg
+
+
+def test_buildings_defaults(qgis_process, demo):
+    import laspy
+    from geomatics_toolbox.core.io.vector import read_polygons
+    d, laz = demo
+    res = qgis_process.run("geomatics:buildings", INPUT=laz, OUTPUT=str(d / "b.gpkg"),
+                           OUTPUT_CLOUD=str(d / "b.laz"), OUTPUT_HTML=str(d / "b.html"),
+                           REPORT_LANGUAGE=3)["results"]
+    polys = read_polygons(d / "b.gpkg")
+    assert res["N_BUILDINGS"] == len(polys) >= 5
+    assert all(a["height_m"] > 2 and a["storeys"] >= 1 for a, _ in polys)
+    src, out = laspy.read(laz), laspy.read(str(d / "b.laz"))
+    changed = np.asarray(out.classification) != np.asarray(src.classification)
+    assert (np.asarray(out.classification)[changed] == 6).all()
+    assert np.array_equal(np.asarray(out.intensity), np.asarray(src.intensity))
+    assert 'id="footprint-map"' in (d / "b.html").read_text("utf-8")
