@@ -18,6 +18,7 @@ from ..core.io.las import las_info
 from ..core.io.points import parse_classes, read_class_points, write_grid
 from ..core.io.raster import read_raster
 from ..core.io.vector import write_label_polygons
+from ..core.lidar.qa import check_projected
 from ..core.terrain import change as core_change
 from ..core.terrain.grid import grid_from_extent, grid_like
 from ..core.terrain.tin import tin_grid
@@ -146,6 +147,7 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
         out = []
         for path in (before, after):
             pts = read_class_points(path, classes, extent=box, cancel=cb["cancel"])
+            check_projected(pts.x, pts.y)
             out.append(tin_grid(pts.x, pts.y, pts.z, grid, cancel=cb["cancel"]).z)
         return out[0], out[1], grid
 

@@ -11,6 +11,7 @@ from qgis.core import (
 )
 
 from ..core.io.points import write_grid
+from ..core.lidar.qa import check_projected
 from ..core.reporting import Figure, KeyValues, Paragraph, Report
 from ..core.reporting.svg import svg_raster
 from ..core.terrain import tin as core_tin
@@ -77,6 +78,7 @@ class TinDtmAlgorithm(_GridAlgorithm):
         with self.output_contract(parameters, context, [self.OUTPUT, self.OUTPUT_HTML],
                                   inputs={self.INPUT: path}) as out:
             path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
+            check_projected(pts.x, pts.y)
             res = core_tin.tin_grid(pts.x, pts.y, pts.z, grid,
                                     max_edge=max_edge if max_edge > 0 else None, fill=fill,
                                     **self.core_callbacks(feedback))
