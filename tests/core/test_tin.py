@@ -95,3 +95,14 @@ def test_bad_inputs():
         tin_grid([0, 1, 2, 3], [0, 1, 2, 3], [0, 1, 2, 3], grid)
     with pytest.raises(InputError, match="max_edge"):
         tin_grid([0, 5, 0], [0, 0, 5], [1, 1, 1], grid, max_edge=-1.0)
+
+
+def test_cancel_and_progress(cloud):
+    from geomatics_toolbox.core.progress import Cancelled
+    x, y, z = cloud
+    grid = grid_from_extent((600000, 600120, 3900000, 3900090), 1.0)
+    seen = []
+    tin_grid(x, y, z, grid, progress=seen.append)
+    assert seen[-1] == 1.0 and seen == sorted(seen)
+    with pytest.raises(Cancelled):
+        tin_grid(x, y, z, grid, cancel=lambda: True)
