@@ -91,6 +91,7 @@ def test_elevationchange_mixed_inputs_error(qgis_process, demo):
 
 def test_buildings_defaults(qgis_process, demo):
     import laspy
+
     from geomatics_toolbox.core.io.vector import read_polygons
     d, laz = demo
     res = qgis_process.run("geomatics:buildings", INPUT=laz, OUTPUT=str(d / "b.gpkg"),
