@@ -87,6 +87,10 @@ CASES = {
 
 #: report algorithms not checked yet, with the reason (remove once migrated)
 PENDING = {
+    "geomatics:tindtm": "new (products): translations checked in tests/core",
+    "geomatics:lidarqa": "new (products): translations checked in tests/core",
+    "geomatics:elevationchange": "new (products): translations checked in tests/core",
+    "geomatics:buildings": "new (products): translations checked in tests/core",
     "geomatics:idwdtm": "report being migrated to core.reporting (terrain)",
     "geomatics:krigingdtm": "report being migrated to core.reporting (terrain)",
     "geomatics:dsm": "report being migrated to core.reporting (terrain)",
