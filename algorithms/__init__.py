@@ -7,11 +7,8 @@ and one entry per algorithm.
 
 def all_algorithms():
     """Fresh instances of every algorithm the provider offers."""
-<<<<<<< HEAD
-    from .catalog import CatalogAlgorithm
-=======
     from .buildings import BuildingsAlgorithm
->>>>>>> cf7e7e9 (Building footprints (geomatics:buildings): TIN DTM, k-NN plane normals, region growing within 20°, patches >= 15 m², GeoPackage footprints with height/area/volume/storeys/roof type, optional class 6 cloud; synthetic accuracy evaluator; benchmark rows (Whitebox classify_buildings_in_lidar needs footprints as input); ar/fa)
+    from .catalog import CatalogAlgorithm
     from .dtm_accuracy import DtmAccuracyAlgorithm
     from .elevation_change import ElevationChangeAlgorithm
     from .filter_accuracy import GroundFilterAccuracyAlgorithm
@@ -37,14 +34,8 @@ def all_algorithms():
         SlopeThresholdSweepAlgorithm(),
         LsqGroundFilterAlgorithm(),
         GroundFilterAccuracyAlgorithm(),
-<<<<<<< HEAD
         CatalogAlgorithm(),
-=======
         LidarQaAlgorithm(),
         ElevationChangeAlgorithm(),
-<<<<<<< HEAD
->>>>>>> f9216f7 (Point density and quality (geomatics:lidarqa) with numeric ELiT advice, maps and histograms; elevation change (geomatics:elevationchange): LoD95, cut/fill polygons to GeoPackage (core/io/vector.py), report; ar/fa)
-=======
         BuildingsAlgorithm(),
->>>>>>> cf7e7e9 (Building footprints (geomatics:buildings): TIN DTM, k-NN plane normals, region growing within 20°, patches >= 15 m², GeoPackage footprints with height/area/volume/storeys/roof type, optional class 6 cloud; synthetic accuracy evaluator; benchmark rows (Whitebox classify_buildings_in_lidar needs footprints as input); ar/fa)
     ]
