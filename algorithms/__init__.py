@@ -15,6 +15,7 @@ def all_algorithms():
     from .gcp_rectification import GcpAccuracyReportAlgorithm, RectifyGcpAlgorithm
     from .gsd_calculator import GsdBatchAlgorithm, GsdCalculatorAlgorithm
     from .lidar_qa import LidarQaAlgorithm
+    from .lidar_to_dtm import LidarToDtmAlgorithm
     from .lsq_filter import LsqGroundFilterAlgorithm
     from .slope_filter import SlopeGroundFilterAlgorithm, SlopeThresholdSweepAlgorithm
     from .terrain import DsmAlgorithm, IdwDtmAlgorithm, KrigingDtmAlgorithm
@@ -30,6 +31,7 @@ def all_algorithms():
         DsmAlgorithm(),
         TinDtmAlgorithm(),
         DtmAccuracyAlgorithm(),
+        LidarToDtmAlgorithm(),
         SlopeGroundFilterAlgorithm(),
         SlopeThresholdSweepAlgorithm(),
         LsqGroundFilterAlgorithm(),

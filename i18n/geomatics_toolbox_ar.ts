@@ -1183,6 +1183,133 @@
         </message>
     </context>
     <context>
+        <name>LidarToDtmAlgorithm</name>
+        <message>
+            <source>LiDAR to DTM with accuracy</source>
+            <translation>من LiDAR إلى نموذج تضاريس رقمي مع الدقة</translation>
+        </message>
+        <message>
+            <source>lidar,ground,filter,dtm,dem,idw,accuracy,rmse,check points,chain,all-or-nothing</source>
+            <translation>ليدار,أرض,مرشح,نموذج تضاريس,dem,idw,دقة,rmse,نقاط تحقق,سلسلة,الكل أو لا شيء</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Classifies the ground of a LiDAR point cloud, interpolates a DTM from the ground points and measures its accuracy against check points, in one step. It writes all its outputs or none: when any step fails or is cancelled, no classified cloud, DTM or report is left behind.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html → the classified cloud, the DTM and the RMSE.&lt;/p&gt;&lt;p&gt;The steps are the recommended ground filter (the improved least-squares filter where the recommended one is not installed), the IDW DTM (power 3, 12 neighbours by default: the seed paper's best setting) and the DTM accuracy; the results equal those of the three algorithms run one after another. Before anything is written the CRS, the check points (no duplicates, inside the cloud's extent) and every output path are checked. The graphical model of the same name is its editable counterpart, without this guarantee.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt;: .las or .laz in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (default yes), with its search cell (m, default 5) and depth (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM cell size&lt;/b&gt; (m, default 1), &lt;b&gt;IDW power&lt;/b&gt; (default 3), &lt;b&gt;neighbours&lt;/b&gt; (default 12), &lt;b&gt;fill data gaps&lt;/b&gt; (default no) and a &lt;b&gt;CRS&lt;/b&gt; for a cloud without a CRS record.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check points&lt;/b&gt;: a point layer (heights from a field or the geometry Z) or a CSV/TXT file (id, x, y, z) with its CRS; reprojection of x, y on request; bilinear (default) or nearest-cell sampling.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud, DTM (GeoTIFF), check-point residuals and the DTM accuracy report; optional ground filter report and DTM report.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;يصنّف أرض سحابة نقاط LiDAR، ويستكمل منها نموذج تضاريس رقميًا (DTM) من نقاط الأرض، ويقيس دقته مقابل نقاط التحقق، في خطوة واحدة. يكتب كل نواتجه أو لا شيء منها: إذا فشلت أي خطوة أو أُلغيت لا تبقى سحابة مصنّفة ولا DTM ولا تقرير.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: &lt;span dir="ltr"&gt;INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html&lt;/span&gt; ← السحابة المصنّفة والـ DTM وقيمة RMSE.&lt;/p&gt;&lt;p&gt;الخطوات هي مرشّح الأرض الموصى به (أو مرشّح المربعات الصغرى المحسّن حيث لا يتوفر الموصى به)، ثم DTM بطريقة IDW (الأس 3 و12 جارًا افتراضيًا: أفضل إعداد في البحث المرجعي)، ثم دقة الـ DTM؛ والنتائج مطابقة لتشغيل الخوارزميات الثلاث واحدة تلو الأخرى. قبل كتابة أي شيء يُتحقَّق من نظام الإحداثيات ومن نقاط التحقق (بلا تكرار وضمن امتداد السحابة) ومن كل مسار ناتج. النموذج الرسومي الذي يحمل الاسم نفسه هو نظيره القابل للتعديل، ولكن دون هذا الضمان.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt;: ملف ‎.las‏ أو ‎.laz‏ في نظام إحداثيات مسقط (أمتار).&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة النقاط الشاذة المنخفضة أولًا&lt;/b&gt; (افتراضيًا نعم)، مع خلية البحث (م، افتراضيًا 5) والعمق (م، افتراضيًا 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم خلية الـ DTM&lt;/b&gt; (م، افتراضيًا 1)، و&lt;b&gt;أس IDW&lt;/b&gt; (افتراضيًا 3)، و&lt;b&gt;عدد الجيران&lt;/b&gt; (افتراضيًا 12)، و&lt;b&gt;ملء فجوات البيانات&lt;/b&gt; (افتراضيًا لا)، و&lt;b&gt;نظام إحداثيات&lt;/b&gt; لسحابة بلا سجل نظام إحداثيات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط التحقق&lt;/b&gt;: طبقة نقطية (الارتفاعات من حقل أو من Z الهندسة) أو ملف CSV/TXT ‏(id, x, y, z) مع نظام إحداثياته؛ إعادة إسقاط x وy عند الطلب؛ اعتيان ثنائي الخطية (افتراضيًا) أو بأقرب خلية.&lt;/li&gt;&lt;li&gt;&lt;b&gt;النواتج&lt;/b&gt;: السحابة المصنّفة، والـ DTM ‏(GeoTIFF)، وبواقي نقاط التحقق، وتقرير دقة الـ DTM؛ واختياريًا تقرير مرشّح الأرض وتقرير الـ DTM.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>DTM cell size (m)</source>
+            <translation>حجم خلية نموذج التضاريس (م)</translation>
+        </message>
+        <message>
+            <source>IDW power</source>
+            <translation>أس IDW</translation>
+        </message>
+        <message>
+            <source>IDW neighbours</source>
+            <translation>عدد جيران IDW</translation>
+        </message>
+        <message>
+            <source>Fill data gaps in the DTM (interpolate far from ground points)</source>
+            <translation>ملء فجوات البيانات في نموذج التضاريس (الاستكمال بعيدًا عن نقاط الأرض)</translation>
+        </message>
+        <message>
+            <source>CRS override for a cloud without a CRS record</source>
+            <translation>نظام إحداثيات بديل لسحابة بلا سجل نظام إحداثيات</translation>
+        </message>
+        <message>
+            <source>Check points (point layer)</source>
+            <translation>نقاط التحقق (طبقة نقطية)</translation>
+        </message>
+        <message>
+            <source>Height field (empty = geometry Z)</source>
+            <translation>حقل الارتفاع (فارغ = قيمة Z من الهندسة)</translation>
+        </message>
+        <message>
+            <source>Id field</source>
+            <translation>حقل المعرِّف</translation>
+        </message>
+        <message>
+            <source>Check points (CSV/TXT file: id,x,y,z)</source>
+            <translation>نقاط التحقق (ملف CSV/TXT: ‏id,x,y,z)</translation>
+        </message>
+        <message>
+            <source>CRS of the check point file (default: DTM CRS)</source>
+            <translation>نظام إحداثيات ملف نقاط التحقق (الافتراضي: نظام إحداثيات DTM)</translation>
+        </message>
+        <message>
+            <source>Reproject check points to the DTM CRS</source>
+            <translation>إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM</translation>
+        </message>
+        <message>
+            <source>Sampling</source>
+            <translation>طريقة الاعتيان</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>ثنائي الخطية</translation>
+        </message>
+        <message>
+            <source>Nearest cell</source>
+            <translation>أقرب خلية</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>سحابة النقاط المصنَّفة</translation>
+        </message>
+        <message>
+            <source>DTM</source>
+            <translation>نموذج الارتفاعات الرقمي للأرض (DTM)</translation>
+        </message>
+        <message>
+            <source>Check-point residuals</source>
+            <translation>بواقي نقاط التحقق</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>DTM accuracy report</source>
+            <translation>تقرير دقة نموذج التضاريس الرقمي</translation>
+        </message>
+        <message>
+            <source>Ground filter report</source>
+            <translation>تقرير مرشّح الأرض</translation>
+        </message>
+        <message>
+            <source>DTM report</source>
+            <translation>تقرير نموذج التضاريس الرقمي</translation>
+        </message>
+        <message>
+            <source>Ground points</source>
+            <translation>نقاط الأرض</translation>
+        </message>
+        <message>
+            <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
+            <translation>سحابة النقاط لا تحوي سجل نظام إحداثيات ولم يُحدَّد نظام إحداثيات؛ اضبط المعامل CRS (مثلاً EPSG:32632). لم تُكتب أي مخرجات.</translation>
+        </message>
+        <message>
+            <source>None of the {n} check points lies within the point cloud's extent (x {x0:.1f}–{x1:.1f}, y {y0:.1f}–{y1:.1f}); are they in another CRS? No output was written.</source>
+            <translation>لا تقع أي من نقاط التحقق الـ {n} ضمن امتداد سحابة النقاط (x ‏{x0:.1f}–{x1:.1f}، y ‏{y0:.1f}–{y1:.1f})؛ هل هي في نظام إحداثيات آخر؟ لم يُكتب أي ناتج.</translation>
+        </message>
+        <message>
+            <source>Choose the point cloud (a .las or .laz file).</source>
+            <translation>اختر سحابة النقاط (ملف ‎.las‏ أو ‎.laz‏).</translation>
+        </message>
+        <message>
+            <source>Choose an output file for {}.</source>
+            <translation>اختر ملف ناتج لـ {}.</translation>
+        </message>
+        <message>
+            <source>Cell size must be &gt; 0 (metres); give e.g. 1.0.</source>
+            <translation>يجب أن يكون حجم الخلية &gt; 0 (أمتار)؛ أعطِ مثلًا 1.0.</translation>
+        </message>
+        <message>
+            <source>The ground filter found no ground point; no DTM can be interpolated. No output was written.</source>
+            <translation>لم يجد مرشّح الأرض أي نقطة أرض؛ لا يمكن استكمال نموذج تضاريس. لم يُكتب أي ناتج.</translation>
+        </message>
+    </context>
+    <context>
         <name>LsqGroundFilterAlgorithm</name>
         <message>
             <source>Ground filter (least-squares polynomial)</source>

@@ -1183,6 +1183,133 @@
         </message>
     </context>
     <context>
+        <name>LidarToDtmAlgorithm</name>
+        <message>
+            <source>LiDAR to DTM with accuracy</source>
+            <translation>از LiDAR تا DTM همراه با دقت</translation>
+        </message>
+        <message>
+            <source>lidar,ground,filter,dtm,dem,idw,accuracy,rmse,check points,chain,all-or-nothing</source>
+            <translation>لیدار,زمین,فیلتر,مدل رقومی زمین,dem,idw,دقت,rmse,نقاط کنترل,زنجیره,همه یا هیچ</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Classifies the ground of a LiDAR point cloud, interpolates a DTM from the ground points and measures its accuracy against check points, in one step. It writes all its outputs or none: when any step fails or is cancelled, no classified cloud, DTM or report is left behind.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html → the classified cloud, the DTM and the RMSE.&lt;/p&gt;&lt;p&gt;The steps are the recommended ground filter (the improved least-squares filter where the recommended one is not installed), the IDW DTM (power 3, 12 neighbours by default: the seed paper's best setting) and the DTM accuracy; the results equal those of the three algorithms run one after another. Before anything is written the CRS, the check points (no duplicates, inside the cloud's extent) and every output path are checked. The graphical model of the same name is its editable counterpart, without this guarantee.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt;: .las or .laz in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (default yes), with its search cell (m, default 5) and depth (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM cell size&lt;/b&gt; (m, default 1), &lt;b&gt;IDW power&lt;/b&gt; (default 3), &lt;b&gt;neighbours&lt;/b&gt; (default 12), &lt;b&gt;fill data gaps&lt;/b&gt; (default no) and a &lt;b&gt;CRS&lt;/b&gt; for a cloud without a CRS record.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check points&lt;/b&gt;: a point layer (heights from a field or the geometry Z) or a CSV/TXT file (id, x, y, z) with its CRS; reprojection of x, y on request; bilinear (default) or nearest-cell sampling.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud, DTM (GeoTIFF), check-point residuals and the DTM accuracy report; optional ground filter report and DTM report.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;زمین یک ابر نقاط LiDAR را طبقه‌بندی می‌کند، از نقاط زمین یک مدل رقومی زمین (DTM) درون‌یابی می‌کند و دقت آن را با نقاط کنترل می‌سنجد، همه در یک گام. همهٔ خروجی‌هایش را می‌نویسد یا هیچ‌کدام را: اگر هر گامی شکست بخورد یا لغو شود، هیچ ابر طبقه‌بندی‌شده، DTM یا گزارشی باقی نمی‌ماند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: &lt;span dir="ltr"&gt;INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html&lt;/span&gt; ← ابر طبقه‌بندی‌شده، DTM و RMSE.&lt;/p&gt;&lt;p&gt;گام‌ها عبارت‌اند از فیلتر زمین پیشنهادی (یا فیلتر کمترین مربعات بهبودیافته در جایی که پیشنهادی نصب نیست)، DTM به روش IDW (توان 3 و 12 همسایه به‌طور پیش‌فرض: بهترین تنظیم مقالهٔ مرجع) و دقت DTM؛ نتایج با اجرای پشت‌سرهم سه الگوریتم برابرند. پیش از نوشتن هر چیز، سیستم مختصات، نقاط کنترل (بدون تکرار و درون گسترهٔ ابر) و همهٔ مسیرهای خروجی بررسی می‌شوند. مدل گرافیکی هم‌نام، همتای ویرایش‌پذیر آن است، اما بدون این تضمین.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt;: فایل ‎.las‏ یا ‎.laz‏ در سیستم مختصات تصویری (متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابتدا نقاط پرت پایین حذف شوند&lt;/b&gt; (پیش‌فرض بله)، با سلول جست‌وجو (متر، پیش‌فرض 5) و عمق (متر، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول DTM&lt;/b&gt; (متر، پیش‌فرض 1)، &lt;b&gt;توان IDW&lt;/b&gt; (پیش‌فرض 3)، &lt;b&gt;تعداد همسایه‌ها&lt;/b&gt; (پیش‌فرض 12)، &lt;b&gt;پر کردن شکاف‌های داده&lt;/b&gt; (پیش‌فرض خیر) و یک &lt;b&gt;سیستم مختصات&lt;/b&gt; برای ابری بدون رکورد سیستم مختصات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط کنترل&lt;/b&gt;: یک لایهٔ نقطه‌ای (ارتفاع از یک فیلد یا Z هندسه) یا یک فایل CSV/TXT ‏(id, x, y, z) با سیستم مختصاتش؛ تبدیل x و y در صورت درخواست؛ نمونه‌برداری دوخطی (پیش‌فرض) یا نزدیک‌ترین سلول.&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی‌ها&lt;/b&gt;: ابر طبقه‌بندی‌شده، DTM ‏(GeoTIFF)، باقیمانده‌های نقاط کنترل و گزارش دقت DTM؛ و به‌طور اختیاری گزارش فیلتر زمین و گزارش DTM.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>DTM cell size (m)</source>
+            <translation>اندازهٔ سلول مدل زمین (متر)</translation>
+        </message>
+        <message>
+            <source>IDW power</source>
+            <translation>توان IDW</translation>
+        </message>
+        <message>
+            <source>IDW neighbours</source>
+            <translation>تعداد همسایه‌های IDW</translation>
+        </message>
+        <message>
+            <source>Fill data gaps in the DTM (interpolate far from ground points)</source>
+            <translation>پر کردن شکاف‌های داده در DTM (درون‌یابی دور از نقاط زمین)</translation>
+        </message>
+        <message>
+            <source>CRS override for a cloud without a CRS record</source>
+            <translation>سیستم مختصات جایگزین برای ابری بدون رکورد سیستم مختصات</translation>
+        </message>
+        <message>
+            <source>Check points (point layer)</source>
+            <translation>نقاط چک (لایهٔ نقطه‌ای)</translation>
+        </message>
+        <message>
+            <source>Height field (empty = geometry Z)</source>
+            <translation>فیلد ارتفاع (خالی = Z هندسه)</translation>
+        </message>
+        <message>
+            <source>Id field</source>
+            <translation>فیلد شناسه</translation>
+        </message>
+        <message>
+            <source>Check points (CSV/TXT file: id,x,y,z)</source>
+            <translation>نقاط کنترل (فایل CSV/TXT: ‏id,x,y,z)</translation>
+        </message>
+        <message>
+            <source>CRS of the check point file (default: DTM CRS)</source>
+            <translation>سیستم مختصات پروندهٔ نقاط چک (پیش‌فرض: سیستم مختصات DTM)</translation>
+        </message>
+        <message>
+            <source>Reproject check points to the DTM CRS</source>
+            <translation>بازتصویر نقاط چک به سیستم مختصات DTM</translation>
+        </message>
+        <message>
+            <source>Sampling</source>
+            <translation>روش نمونه‌برداری</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>دوخطی</translation>
+        </message>
+        <message>
+            <source>Nearest cell</source>
+            <translation>نزدیک‌ترین سلول</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>ابر نقاط طبقه‌بندی‌شده</translation>
+        </message>
+        <message>
+            <source>DTM</source>
+            <translation>مدل رقومی زمین (DTM)</translation>
+        </message>
+        <message>
+            <source>Check-point residuals</source>
+            <translation>باقیمانده‌های نقاط کنترل</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>DTM accuracy report</source>
+            <translation>گزارش دقت مدل رقومی زمین</translation>
+        </message>
+        <message>
+            <source>Ground filter report</source>
+            <translation>گزارش فیلتر زمین</translation>
+        </message>
+        <message>
+            <source>DTM report</source>
+            <translation>گزارش مدل رقومی زمین</translation>
+        </message>
+        <message>
+            <source>Ground points</source>
+            <translation>نقاط زمینی</translation>
+        </message>
+        <message>
+            <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
+            <translation>ابر نقاط رکورد سیستم مختصات ندارد و سیستم مختصاتی هم داده نشده است؛ پارامتر CRS را تنظیم کنید (مثلاً EPSG:32632). هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>None of the {n} check points lies within the point cloud's extent (x {x0:.1f}–{x1:.1f}, y {y0:.1f}–{y1:.1f}); are they in another CRS? No output was written.</source>
+            <translation>هیچ‌یک از {n} نقطهٔ کنترل درون گسترهٔ ابر نقاط نیست (x ‏{x0:.1f}–{x1:.1f}، y ‏{y0:.1f}–{y1:.1f})؛ آیا در سیستم مختصات دیگری‌اند؟ هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>Choose the point cloud (a .las or .laz file).</source>
+            <translation>ابر نقاط را انتخاب کنید (فایل ‎.las‏ یا ‎.laz‏).</translation>
+        </message>
+        <message>
+            <source>Choose an output file for {}.</source>
+            <translation>یک فایل خروجی برای {} انتخاب کنید.</translation>
+        </message>
+        <message>
+            <source>Cell size must be &gt; 0 (metres); give e.g. 1.0.</source>
+            <translation>اندازهٔ سلول باید &gt; 0 (متر) باشد؛ مثلاً 1.0 بدهید.</translation>
+        </message>
+        <message>
+            <source>The ground filter found no ground point; no DTM can be interpolated. No output was written.</source>
+            <translation>فیلتر زمین هیچ نقطهٔ زمینی نیافت؛ DTM قابل درون‌یابی نیست. هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+    </context>
+    <context>
         <name>LsqGroundFilterAlgorithm</name>
         <message>
             <source>Ground filter (least-squares polynomial)</source>

@@ -150,7 +150,11 @@ def build(filter_key: str = "auto"):
             "Classifies the ground of a LiDAR point cloud, interpolates a DTM from it by "
             "IDW and measures the DTM's accuracy against check points. Example: a "
             "classified tile with 15 check points gives the classified cloud, a 1 m DTM "
-            "and a report with RMSE, NMAD and the 95 % vertical accuracy."),
+            "and a report with RMSE, NMAD and the 95 % vertical accuracy. This model is "
+            "the editable counterpart of the one-step algorithm 'LiDAR to DTM with "
+            "accuracy' (geomatics:lidartodtm), which is the all-or-nothing version: a "
+            "model has no transaction, so when its last step fails the classified cloud "
+            "and the DTM of the earlier steps are already written."),
         "ALG_CREATOR": "Geomatics Toolbox",
         "ALG_HELP_CREATOR": "Geomatics Toolbox",
         "TITLE": TITLE,

@@ -12,6 +12,10 @@ One rule for every algorithm that writes files (Sithole-style "no partial result
 4. on an error, a cancel, ``SIGTERM`` or interpreter exit every temporary is removed
    and pre-existing files are left untouched.
 
+A contract whose outputs are the temporaries of an outer contract (a chain of steps
+under one contract, e.g. ``geomatics:lidartodtm``) writes them directly and leaves the
+renaming to the outer contract.
+
 Examples
 --------
 >>> with OutputContract({"OUTPUT": "dtm.tif", "OUTPUT_HTML": "dtm.html"},
@@ -208,7 +212,7 @@ class OutputContract:
         if name not in self._temps:
             final = self.finals[name]
             final.parent.mkdir(parents=True, exist_ok=True)
-            tmp = temp_path(final)
+            tmp = temp_path(final)      # == final when final is an outer temporary
             self._temps[name] = tmp
             _register(tmp)
         return str(self._temps[name])
@@ -257,6 +261,8 @@ class OutputContract:
         try:
             for name, tmp in self._temps.items():
                 final = self.finals[name]
+                if tmp == final:      # an outer contract's temporary: it commits it
+                    continue
                 if final.exists():
                     backup = temp_path(final)
                     os.replace(final, backup)

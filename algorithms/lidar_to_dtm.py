@@ -1,0 +1,341 @@
+"""LiDAR to DTM with accuracy in one step: ground filter → IDW DTM → DTM accuracy.
+
+The all-or-nothing counterpart of the shipped graphical model
+(``models/lidar_to_dtm.model3``): the three steps run under ONE output contract, so a
+failure in the last step (or a cancel, or SIGTERM) leaves no classified cloud and no
+DTM behind. Everything that can be checked is checked before the first step writes:
+every output path against every input and each other, the CRS (present, projected),
+the check points (readable, no duplicates, inside the cloud's extent).
+
+The steps call the same core functions as ``lsqgroundfilter``/``groundfilter``
+(:func:`..core.lidar.pipeline.classify_file`), ``idwdtm``
+(:func:`..core.terrain.idw.idw_grid` on the classified cloud's ground points) and
+``dtmaccuracy`` (:func:`..core.terrain.accuracy.dtm_accuracy`), so a run gives the same
+DTM and the same RMSE as the three algorithms run one after another.
+"""
+from __future__ import annotations
+
+import os
+import time
+
+from qgis.core import (
+    QgsCoordinateReferenceSystem,
+    QgsProcessing,
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterCrs,
+    QgsProcessingParameterEnum,
+    QgsProcessingParameterFeatureSource,
+    QgsProcessingParameterField,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterRasterDestination,
+    QgsProcessingParameterVectorDestination,
+)
+
+from ..core.coords import check_projected
+from ..core.errors import InputError
+from ..core.io.las import las_info
+from ..core.io.points import read_class_points, write_grid
+from ..core.io.raster import read_raster
+from ..core.lidar import lsq as core_lsq
+from ..core.lidar.pipeline import FilterOutputs, SelectionOptions, classify_file
+from ..core.progress import Monitor
+from ..core.reporting import T, translator
+from ..core.terrain import accuracy as core_acc
+from ..core.terrain import idw as core_idw
+from ..core.terrain import report as terrain_report
+from ..core.terrain.grid import grid_from_points
+from .base import GeomaticsAlgorithm
+from .dtm_accuracy import NUMBERS, DtmAccuracyAlgorithm
+from .terrain import _check_tif, _crs_string, _GridAlgorithm
+
+LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
+
+
+def ground_filter():
+    """``(algorithm object, selection options, id)`` of the ground step.
+
+    The recommended filter (``core.lidar.recommended``, as ``geomatics:groundfilter``
+    with its defaults) when it exists, else the improved LSQ filter (as
+    ``geomatics:lsqgroundfilter`` with MODE=1).
+    """
+    try:
+        from ..core.lidar import recommended as core_rec
+    except ImportError:
+        return (core_lsq.LsqFilter(core_lsq.LsqOptions(mode="improved")),
+                dict(keep_noise_classes=False), "lsqgroundfilter")
+    return core_rec.recommended_filter(), dict(keep_noise_classes=True), "groundfilter"
+
+
+class LidarToDtmAlgorithm(GeomaticsAlgorithm):
+    """Ground filter, IDW DTM and DTM accuracy through one output contract."""
+
+    GROUP = "terrain"
+
+    INPUT = "INPUT"
+    CELL_SIZE = "CELL_SIZE"
+    POWER = "POWER"
+    NEIGHBOURS = "NEIGHBOURS"
+    FILL_GAPS = "FILL_GAPS"
+    CRS = "CRS"
+    # check points: the same names as dtmaccuracy (its reader is reused)
+    CHECKPOINTS = "CHECKPOINTS"
+    Z_FIELD = "Z_FIELD"
+    ID_FIELD = "ID_FIELD"
+    CHECKPOINTS_CSV = "CHECKPOINTS_CSV"
+    CSV_CRS = "CSV_CRS"
+    REPROJECT = "REPROJECT"
+    METHOD = "METHOD"
+    OUTPUT = "OUTPUT"
+    OUTPUT_DTM = "OUTPUT_DTM"
+    OUTPUT_RESIDUALS = "OUTPUT_RESIDUALS"
+    OUTPUT_FILTER_HTML = "OUTPUT_FILTER_HTML"
+    OUTPUT_DTM_HTML = "OUTPUT_DTM_HTML"
+    OUTPUT_HTML = "OUTPUT_HTML"
+    OUTPUTS = (OUTPUT, OUTPUT_DTM, OUTPUT_RESIDUALS, OUTPUT_FILTER_HTML, OUTPUT_DTM_HTML,
+               OUTPUT_HTML)
+
+    def name(self):
+        return "lidartodtm"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("LiDAR to DTM with accuracy")
+
+    def tags(self):
+        return self.tr("lidar,ground,filter,dtm,dem,idw,accuracy,rmse,check points,"
+                       "chain,all-or-nothing").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Classifies the ground of a LiDAR point cloud, interpolates a DTM from the "
+            "ground points and measures its accuracy against check points, in one step. "
+            "It writes all its outputs or none: when any step fails or is cancelled, no "
+            "classified cloud, DTM or report is left behind.</p>"
+            "<p><b>Example</b>: INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 "
+            "OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html → the "
+            "classified cloud, the DTM and the RMSE.</p>"
+            "<p>The steps are the recommended ground filter (the improved least-squares "
+            "filter where the recommended one is not installed), the IDW DTM (power 3, 12 "
+            "neighbours by default: the seed paper's best setting) and the DTM accuracy; "
+            "the results equal those of the three algorithms run one after another. "
+            "Before anything is written the CRS, the check points (no duplicates, inside "
+            "the cloud's extent) and every output path are checked. The graphical model "
+            "of the same name is its editable counterpart, without this guarantee.</p>"
+            "<p><b>Parameters</b></p><ul>"
+            "<li><b>Point cloud</b>: .las or .laz in a projected CRS (metres).</li>"
+            "<li><b>Remove low outliers first</b> (default yes), with its search cell "
+            "(m, default 5) and depth (m, default 1).</li>"
+            "<li><b>DTM cell size</b> (m, default 1), <b>IDW power</b> (default 3), "
+            "<b>neighbours</b> (default 12), <b>fill data gaps</b> (default no) and a "
+            "<b>CRS</b> for a cloud without a CRS record.</li>"
+            "<li><b>Check points</b>: a point layer (heights from a field or the geometry "
+            "Z) or a CSV/TXT file (id, x, y, z) with its CRS; reprojection of x, y on "
+            "request; bilinear (default) or nearest-cell sampling.</li>"
+            "<li><b>Outputs</b>: classified cloud, DTM (GeoTIFF), check-point residuals "
+            "and the DTM accuracy report; optional ground filter report and DTM "
+            "report.</li></ul>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_las_input(self.INPUT)
+        self.add_noise_params()
+        self.add_number(self.CELL_SIZE, self.tr("DTM cell size (m)"), 1.0, minimum=0.0)
+        self.add_number(self.POWER, self.tr("IDW power"), 3.0, minimum=0.0)
+        self.add_number(self.NEIGHBOURS, self.tr("IDW neighbours"), 12, minimum=1,
+                        integer=True, advanced=True)
+        self.add(QgsProcessingParameterBoolean(
+            self.FILL_GAPS,
+            self.tr("Fill data gaps in the DTM (interpolate far from ground points)"),
+            False), advanced=True)
+        self.add(QgsProcessingParameterCrs(
+            self.CRS, self.tr("CRS override for a cloud without a CRS record"),
+            optional=True), advanced=True)
+        self.add(QgsProcessingParameterFeatureSource(
+            self.CHECKPOINTS, self.tr("Check points (point layer)"),
+            [QgsProcessing.TypeVectorPoint], optional=True))
+        self.add(QgsProcessingParameterField(
+            self.Z_FIELD, self.tr("Height field (empty = geometry Z)"),
+            parentLayerParameterName=self.CHECKPOINTS,
+            type=QgsProcessingParameterField.Numeric, optional=True))
+        self.add(QgsProcessingParameterField(
+            self.ID_FIELD, self.tr("Id field"), parentLayerParameterName=self.CHECKPOINTS,
+            optional=True))
+        self.add(QgsProcessingParameterFile(
+            self.CHECKPOINTS_CSV, self.tr("Check points (CSV/TXT file: id,x,y,z)"),
+            behavior=QgsProcessingParameterFile.File,
+            fileFilter="Delimited text (*.csv *.txt *.xyz *.CSV *.TXT)", optional=True))
+        self.add(QgsProcessingParameterCrs(
+            self.CSV_CRS, self.tr("CRS of the check point file (default: DTM CRS)"),
+            optional=True), advanced=True)
+        self.add(QgsProcessingParameterBoolean(
+            self.REPROJECT, self.tr("Reproject check points to the DTM CRS"), False),
+            advanced=True)
+        self.add(QgsProcessingParameterEnum(
+            self.METHOD, self.tr("Sampling"), [self.tr("Bilinear"), self.tr("Nearest cell")],
+            defaultValue=0), advanced=True)
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT, self.tr("Classified point cloud"), LAS_OUT_FILTER))
+        self.add(QgsProcessingParameterRasterDestination(self.OUTPUT_DTM, self.tr("DTM")))
+        self.add(QgsProcessingParameterVectorDestination(
+            self.OUTPUT_RESIDUALS, self.tr("Check-point residuals"),
+            QgsProcessing.TypeVectorPoint, optional=True, createByDefault=True))
+        html = self.tr("HTML files (*.html)")
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_HTML, self.tr("DTM accuracy report"), html, optional=True,
+            createByDefault=True))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_FILTER_HTML, self.tr("Ground filter report"), html, optional=True,
+            createByDefault=False))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_DTM_HTML, self.tr("DTM report"), html, optional=True,
+            createByDefault=False))
+        self.add_report_language()
+        self.addOutput(QgsProcessingOutputNumber("N_GROUND", self.tr("Ground points")))
+        for name, _, label in NUMBERS:
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+
+    # ------------------------------------------------------------------ checks
+    def read_points(self, parameters, context, dtm_crs, feedback):
+        """Check points ``(ids, x, y, z)`` in the DTM CRS (dtmaccuracy's reader)."""
+        return DtmAccuracyAlgorithm.read_points(self, parameters, context, dtm_crs, feedback)
+
+    def resolve_crs(self, parameters, context, info) -> str:
+        """The DTM's CRS: the CRS parameter, else the cloud's; refused if geographic."""
+        given = self.parameterAsCrs(parameters, self.CRS, context)
+        crs = _crs_string(given) if given is not None and given.isValid() else info.crs
+        if not crs:
+            raise InputError(self.tr(
+                "The point cloud has no CRS record and no CRS was given; set the CRS "
+                "parameter (e.g. EPSG:32632). No output was written."))
+        check_projected(crs=crs, what=f"The point cloud {info.path}")
+        return crs
+
+    def check_extent(self, info, ids, x, y) -> None:
+        """Refuse check points none of which lies within the cloud's extent."""
+        (x0, y0, _), (x1, y1, _) = info.mins, info.maxs
+        inside = (x >= x0) & (x <= x1) & (y >= y0) & (y <= y1)
+        if not inside.any():
+            raise InputError(self.tr(
+                "None of the {n} check points lies within the point cloud's extent "
+                "(x {x0:.1f}–{x1:.1f}, y {y0:.1f}–{y1:.1f}); are they in another CRS? "
+                "No output was written.").format(n=len(ids), x0=x0, x1=x1, y0=y0, y1=y1))
+
+    def input_files(self, parameters, context, src) -> dict:
+        """Every file read: the cloud, the check point file and the layer's file."""
+        files = {self.INPUT: src,
+                 self.CHECKPOINTS_CSV: self.parameterAsFile(parameters, self.CHECKPOINTS_CSV,
+                                                            context) or None}
+        lyr = (self.parameterAsVectorLayer(parameters, self.CHECKPOINTS, context)
+               if parameters.get(self.CHECKPOINTS) not in (None, "") else None)
+        if lyr is not None and lyr.providerType() == "ogr":
+            path = lyr.source().split("|")[0]
+            files[self.CHECKPOINTS] = path if os.path.exists(path) else None
+        return files
+
+    # ------------------------------------------------------------------ run
+    def process(self, parameters, context, feedback):
+        src = self.las_input_path(parameters, context, self.INPUT)
+        if not src:
+            raise InputError(self.tr("Choose the point cloud (a .las or .laz file)."))
+        mon = Monitor(**self.core_callbacks(feedback))
+        lang = self.report_lang(parameters, context)
+        with self.output_contract(parameters, context, self.OUTPUTS,
+                                  self.input_files(parameters, context, src)) as out:
+            for name in (self.OUTPUT, self.OUTPUT_DTM):
+                if not out.requested(name):
+                    raise InputError(self.tr("Choose an output file for {}.").format(
+                        self.parameterDefinition(name).description()))
+            _check_tif(out.final(self.OUTPUT_DTM))
+            # 1. everything that can be checked before the first write
+            info = las_info(src)
+            crs = self.resolve_crs(parameters, context, info)
+            qcrs = QgsCoordinateReferenceSystem(crs)
+            if not qcrs.isValid():
+                qcrs = QgsCoordinateReferenceSystem.fromWkt(crs)
+            ids, x, y, z = self.read_points(parameters, context, qcrs, feedback)
+            core_acc.check_duplicates(ids, x, y)
+            self.check_extent(info, ids, x, y)
+            # 2. ground filter (writes the classified cloud to its contract temporary)
+            run = self.classify(parameters, context, src, out, lang, mon.sub(0.0, 0.7))
+            # 3. IDW DTM from the classified cloud's ground points
+            dtm, grid = self.idw(parameters, context, src, out, crs, lang, mon.sub(0.7, 0.9))
+            # 4. accuracy of the DTM just written
+            results = self.accuracy(parameters, context, out, (ids, x, y, z), qcrs, lang)
+            mon.check()
+        results["N_GROUND"] = run.n_ground
+        results.update({name: out.final(name) for name in self.OUTPUTS
+                        if out.final(name)})
+        self.load_cloud_on_completion(context, results[self.OUTPUT],
+                                      self.tr("Classified point cloud"), self.OUTPUT)
+        feedback.setProgress(100)
+        return results
+
+    def classify(self, parameters, context, src, out, lang, mon):
+        """Step 1: the ground filter through the pipeline, onto the contract temps."""
+        algorithm, selection, alg_id = ground_filter()
+        selection = SelectionOptions(
+            returns="all", noise=self.parameterAsBool(parameters, self.NOISE, context),
+            noise_radius=self.parameterAsDouble(parameters, self.NOISE_RADIUS, context),
+            noise_threshold=self.parameterAsDouble(parameters, self.NOISE_THRESHOLD, context),
+            **selection)
+        report = (out.path(self.OUTPUT_FILTER_HTML)
+                  if out.requested(self.OUTPUT_FILTER_HTML) else None)
+        outputs = FilterOutputs(
+            cloud=out.path(self.OUTPUT), report=report,
+            names={"cloud": self.OUTPUT, "report": self.OUTPUT_FILTER_HTML}, lang=lang,
+            render=lambda rep: self.render_report(rep, parameters, context))
+        return classify_file(src, algorithm, outputs, mon, selection=selection)
+
+    def idw(self, parameters, context, src, out, crs, lang, mon):
+        """Step 2: IDW DTM (idwdtm's core calls) of the classified cloud's ground."""
+        t0 = time.time()
+        cell = self.parameterAsDouble(parameters, self.CELL_SIZE, context)
+        if not cell > 0:
+            raise InputError(self.tr("Cell size must be > 0 (metres); give e.g. 1.0."))
+        power = self.parameterAsDouble(parameters, self.POWER, context)
+        k = self.parameterAsInt(parameters, self.NEIGHBOURS, context)
+        fill = self.parameterAsBool(parameters, self.FILL_GAPS, context)
+        cloud = out.path(self.OUTPUT)
+        pts = read_class_points(cloud, (2,), cancel=mon.cancelled)
+        if len(pts) == 0:
+            raise InputError(self.tr("The ground filter found no ground point; no DTM can "
+                                     "be interpolated. No output was written."))
+        grid = grid_from_points(pts.x, pts.y, cell, crs=crs)
+        dtm = core_idw.idw_grid(pts.x, pts.y, pts.z, grid, power=power, max_points=k,
+                                radius=None, min_points=0, max_distance=None, fill=fill,
+                                progress=mon.update, cancel=mon.cancelled)
+        name = os.path.basename(out.final(self.OUTPUT))
+        write_grid(out.path(self.OUTPUT_DTM), dtm, grid,
+                   metadata={"method": f"IDW p={power:g} k={k} radius=0 min_points=0",
+                             "source": name}, band_name="DTM (IDW)")
+        if out.requested(self.OUTPUT_DTM_HTML):
+            method = [("method", T("inverse distance weighting (Shepard 1968)")),
+                      ("power", power), ("neighbours", k),
+                      ("gaps", T("filled") if fill else T("automatic"))]
+            rows = _GridAlgorithm.input_rows(out.final(self.OUTPUT), pts, "LAS file")
+            rep = terrain_report.grid_report(
+                "IDW DTM report", method_rows=method, input_rows=rows, grid=grid,
+                data=dtm, stats=_GridAlgorithm.grid_stats(dtm), elapsed=time.time() - t0,
+                citation="Shepard (1968) inverse distance weighting, semantics of "
+                         "gdal_grid -a invdistnn.", tr=translator(lang))
+            out.write_text(self.OUTPUT_DTM_HTML, self.render_report(rep, parameters, context))
+        return dtm, grid
+
+    def accuracy(self, parameters, context, out, points, qcrs, lang) -> dict:
+        """Step 3: dtmaccuracy's core calls on the DTM just written."""
+        ids, x, y, z = points
+        method = core_acc.METHODS[self.parameterAsEnum(parameters, self.METHOD, context)]
+        r = read_raster(out.path(self.OUTPUT_DTM), 1)
+        res = core_acc.dtm_accuracy(r.masked(), r.geotransform, x, y, z, method=method)
+        summary = res.summary()
+        if out.requested(self.OUTPUT_RESIDUALS):
+            DtmAccuracyAlgorithm.write_residuals(out.path(self.OUTPUT_RESIDUALS), res, ids,
+                                                 qcrs)
+        if out.requested(self.OUTPUT_HTML):
+            rep = terrain_report.accuracy_report(
+                res, ids, r.masked(), r.geotransform,
+                dtm_name=os.path.basename(out.final(self.OUTPUT_DTM)),
+                crs_label=qcrs.authid() or qcrs.description() or "unknown",
+                tr=translator(lang))
+            out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters, context))
+        return {name: summary[key] for name, key, _ in NUMBERS}
