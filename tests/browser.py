@@ -25,7 +25,7 @@ ALLOWED = {
     "csv", "tin", "qgis", "pdal", "lsq", "asprs", "kappa", "utm", "wgs", "tif", "tiff",
     "geotiff", "xyz", "theo", "meas", "sub", "max", "min", "std",
     "xmin", "xmax", "ymin", "ymax", "zmin", "zmax",   # coordinate names (ids)
-    "nugget", "sill", "pykrige",   # variogram terms glossed in parentheses, a library
+    "nugget", "sill", "pykrige", "dask",   # terms glossed in parentheses, libraries
     # authors cited in the reports (names are not translated)
     "vosselman", "sithole", "khalil", "shepard", "matheron", "cressie", "kraus", "gülch",
     "axelsson", "zhang", "kriging", "tan", "cos", "sin", "log", "exp",
