@@ -3,7 +3,6 @@ from __future__ import annotations
 
 from qgis.core import (
     QgsProcessingOutputNumber,
-    QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterString,
 )
@@ -84,18 +83,15 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
             "graphical modeler.</p>")
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.add(QgsProcessingParameterFile(
-            self.INPUT, self.tr("Filtered point cloud (LAS/LAZ)"),
-            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_IN_FILTER))
+        self.add_las_input(self.INPUT, self.tr("Filtered point cloud (LAS/LAZ)"))
         self.add(QgsProcessingParameterString(
             self.FIELD, self.tr("Class dimension of the filtered cloud"), "classification"),
             advanced=True)
         self.add(QgsProcessingParameterString(
             self.GROUND_CLASSES, self.tr("Ground classes of the filtered cloud"), "2"))
-        self.add(QgsProcessingParameterFile(
-            self.REFERENCE, self.tr("Reference point cloud (same points, same order)"),
-            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_IN_FILTER,
-            optional=True))
+        self.add_las_input(self.REFERENCE,
+                           self.tr("Reference point cloud (same points, same order)"),
+                           optional=True)
         self.add(QgsProcessingParameterString(
             self.REFERENCE_FIELD, self.tr("Reference class dimension"), "classification"))
         self.add(QgsProcessingParameterString(
@@ -112,8 +108,8 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
             self.addOutput(QgsProcessingOutputNumber(out, f"{out}: {label}"))
 
     def process(self, parameters, context, feedback):
-        src = self.parameterAsFile(parameters, self.INPUT, context)
-        ref = self.parameterAsFile(parameters, self.REFERENCE, context) or None
+        src = self.las_input_path(parameters, context, self.INPUT)
+        ref = self.las_input_path(parameters, context, self.REFERENCE) or None
         html_out = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
         err_out = self.parameterAsFileOutput(parameters, self.ERROR_OUTPUT, context)
         field = self.parameterAsString(parameters, self.FIELD, context).strip()

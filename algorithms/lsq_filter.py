@@ -4,7 +4,6 @@ from __future__ import annotations
 from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterEnum,
-    QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
 )
 
@@ -121,9 +120,7 @@ class LsqGroundFilterAlgorithm(LidarFilterMixin):
             "accuracy</i>. Nothing is written when the run fails or is cancelled.</p>")
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.add(QgsProcessingParameterFile(
-            self.INPUT, self.tr("Point cloud (LAS/LAZ)"),
-            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_IN_FILTER))
+        self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))
         self.add_number(self.ORDER, self.tr("Polynomial order (1 or 2)"), 2, minimum=1,
                         maximum=2, integer=True)
         self.add_number(self.TILE_SIZE, self.tr("Tile size (m)"), 50.0, minimum=0.0)
@@ -197,7 +194,7 @@ class LsqGroundFilterAlgorithm(LidarFilterMixin):
                                                           context)])
 
     def process(self, parameters, context, feedback):
-        src = self.parameterAsFile(parameters, self.INPUT, context)
+        src = self.las_input_path(parameters, context, self.INPUT)
         opts = self.options(parameters, context)
         selection = SelectionOptions(
             returns="all", noise=self.parameterAsBool(parameters, self.NOISE, context),
@@ -231,4 +228,6 @@ class LsqGroundFilterAlgorithm(LidarFilterMixin):
                   self.N_UNCLASSIFIED: counts.get(core_lsq.UNCLASSIFIED, 0),
                   self.N_TILES: res.grid.count,
                   self.POINTS_PER_SECOND: run.n_points / total if total > 0 else 0.0}
+        self.load_cloud_on_completion(context, outputs.cloud,
+                                      self.tr("Classified point cloud"), self.OUTPUT)
         return {**result, **self.filter_results(outputs)}

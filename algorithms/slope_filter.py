@@ -6,7 +6,6 @@ from qgis.core import (
     QgsProcessingOutputString,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterEnum,
-    QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterString,
 )
@@ -40,9 +39,7 @@ class _SlopeCommon(LidarFilterMixin):
     TREND_WINDOW = "TREND_WINDOW"
 
     def add_input(self):
-        self.add(QgsProcessingParameterFile(
-            self.INPUT, self.tr("Point cloud (LAS/LAZ)"),
-            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_IN_FILTER))
+        self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))
 
     def add_selection_params(self):
         self.add(QgsProcessingParameterEnum(
@@ -196,7 +193,7 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
             self.addOutput(QgsProcessingOutputNumber(name, label))
 
     def process(self, parameters, context, feedback):
-        src = self.parameterAsFile(parameters, self.INPUT, context)
+        src = self.las_input_path(parameters, context, self.INPUT)
         kw = self.common_kwargs(parameters, context)
         opts = core_sf.SlopeOptions(
             radius=self.parameterAsDouble(parameters, self.RADIUS, context),
@@ -222,6 +219,8 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
         result = {"N_POINTS": s.n_points, "N_GROUND": s.n_ground,
                   "N_NONGROUND": s.n_nonground, "N_NOISE": s.n_noise,
                   "POINTS_PER_SECOND": s.n_points / filt if filt > 0 else None}
+        self.load_cloud_on_completion(context, outputs.cloud,
+                                      self.tr("Classified point cloud"), self.OUTPUT)
         return {**result, **self.filter_results(outputs)}
 
 
@@ -286,10 +285,9 @@ class SlopeThresholdSweepAlgorithm(_SlopeCommon):
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input()
-        self.add(QgsProcessingParameterFile(
-            self.REFERENCE, self.tr("Reference cloud (empty = the input's classification)"),
-            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_IN_FILTER,
-            optional=True))
+        self.add_las_input(self.REFERENCE,
+                           self.tr("Reference cloud (empty = the input's classification)"),
+                           optional=True)
         self.add(QgsProcessingParameterString(
             self.GROUND_CLASSES, self.tr("Reference ground classes"), defaultValue="2"))
         self.add(QgsProcessingParameterString(
@@ -327,8 +325,8 @@ class SlopeThresholdSweepAlgorithm(_SlopeCommon):
         self.addOutput(QgsProcessingOutputString("BEST_SETTING", self.tr("Best setting")))
 
     def process(self, parameters, context, feedback):
-        src = self.parameterAsFile(parameters, self.INPUT, context)
-        ref = self.parameterAsFile(parameters, self.REFERENCE, context) or None
+        src = self.las_input_path(parameters, context, self.INPUT)
+        ref = self.las_input_path(parameters, context, self.REFERENCE) or None
         csv = self.parameterAsFileOutput(parameters, self.OUTPUT_CSV, context)
         html = self.parameterAsFileOutput(parameters, self.OUTPUT_HTML, context)
         out = self.parameterAsFileOutput(parameters, self.OUTPUT, context)

@@ -18,7 +18,6 @@ from qgis.core import (
     QgsProcessingParameterDefinition,
     QgsProcessingParameterEnum,
     QgsProcessingParameterExtent,
-    QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterRasterDestination,
     QgsProcessingParameterRasterLayer,
@@ -146,9 +145,7 @@ class _GridAlgorithm(GeomaticsAlgorithm):
         return parse_classes(self.parameterAsEnums(parameters, name, context))
 
     def add_input_params(self, *, classes_default=(2,)):
-        self.add(QgsProcessingParameterFile(
-            self.INPUT, self.tr("Point cloud (LAS/LAZ)"),
-            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_FILTER))
+        self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))
         self.add(self.classes_param(self.CLASSES, self.tr("Classes used (none = all)"),
                                     classes_default))
         self.add_number(self.CELL_SIZE, self.tr("Cell size (m)"), 1.0, minimum=0.0)
@@ -208,7 +205,7 @@ class _GridAlgorithm(GeomaticsAlgorithm):
         return fill, (maxd if maxd > 0 else None)
 
     def load_points(self, parameters, context, feedback):
-        path = self.parameterAsFile(parameters, self.INPUT, context)
+        path = self.las_input_path(parameters, context, self.INPUT)
         classes = self.classes(parameters, self.CLASSES, context)
         info = las_info(path)
         crs, crs_source = self.resolve_crs(parameters, context, info.crs)
@@ -307,7 +304,7 @@ class IdwDtmAlgorithm(_GridAlgorithm):
 
     def process(self, parameters, context, feedback):
         t0 = time.time()
-        path = self.parameterAsFile(parameters, self.INPUT, context)
+        path = self.las_input_path(parameters, context, self.INPUT)
         power = self.parameterAsDouble(parameters, self.POWER, context)
         k = self.parameterAsInt(parameters, self.NEIGHBOURS, context)
         radius = self.parameterAsDouble(parameters, self.RADIUS, context)
@@ -504,7 +501,7 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
 
     def process(self, parameters, context, feedback):
         t0 = time.time()
-        path = self.parameterAsFile(parameters, self.INPUT, context)
+        path = self.las_input_path(parameters, context, self.INPUT)
         drift = "linear" if self.parameterAsEnum(parameters, self.KRIGING_TYPE, context) \
             else "none"
         model = core_kriging.MODELS[self.parameterAsEnum(parameters, self.VARIOGRAM, context)]
@@ -680,7 +677,7 @@ class DsmAlgorithm(_GridAlgorithm):
 
     def process(self, parameters, context, feedback):
         t0 = time.time()
-        path = self.parameterAsFile(parameters, self.INPUT, context)
+        path = self.las_input_path(parameters, context, self.INPUT)
         classes = self.classes(parameters, self.CLASSES, context)
         excl = self.classes(parameters, self.EXCLUDE_CLASSES, context)
         first = self.parameterAsBool(parameters, self.FIRST_RETURNS, context)
