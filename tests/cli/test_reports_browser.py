@@ -154,7 +154,6 @@ CASES = {
 
 #: report algorithms not checked yet, with the reason (remove once migrated)
 PENDING = {
-    "geomatics:catalog": "new (catalog): not yet checked in a browser",
     "geomatics:tindtm": "new (products): translations checked in tests/core",
     "geomatics:lidarqa": "new (products): translations checked in tests/core",
     "geomatics:elevationchange": "new (products): translations checked in tests/core",
