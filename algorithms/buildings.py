@@ -6,7 +6,6 @@ import os
 import numpy as np
 from qgis.core import (
     QgsProcessingOutputNumber,
-    QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterString,
     QgsProcessingParameterVectorDestination,
@@ -84,9 +83,7 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
             "<p>Output numbers: N_BUILDINGS, TOTAL_AREA (m²), TOTAL_VOLUME (m³).</p>")
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.add(QgsProcessingParameterFile(
-            self.INPUT, self.tr("Point cloud (LAS/LAZ)"),
-            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_FILTER))
+        self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))
         self.add(QgsProcessingParameterString(
             self.GROUND_CLASSES, self.tr("Ground classes"), defaultValue="2"), advanced=True)
         self.add_number(self.MIN_HEIGHT, self.tr("Minimum height above ground (m)"), 2.0,
@@ -125,7 +122,7 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
                 "cell": cell}
 
     def process(self, parameters, context, feedback):
-        path = self.parameterAsFile(parameters, self.INPUT, context)
+        path = self.las_input_path(parameters, context, self.INPUT)
         p = self.params(parameters, context)
         ground = parse_classes(self.parameterAsString(parameters, self.GROUND_CLASSES,
                                                       context)) or (2,)

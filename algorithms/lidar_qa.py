@@ -5,7 +5,6 @@ import os
 
 from qgis.core import (
     QgsProcessingOutputNumber,
-    QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterRasterDestination,
     QgsProcessingParameterString,
@@ -16,7 +15,6 @@ from ..core.io.points import parse_classes
 from ..core.io.raster import write_geotiff
 from ..core.lidar import qa as core_qa
 from .base import GeomaticsAlgorithm
-from .terrain import LAS_FILTER
 
 BANDS = ("density of all returns (pts/m²)", "density of last returns (pts/m²)",
          "density of ground points (pts/m²)", "gap (1 = returns but no ground)")
@@ -71,9 +69,7 @@ class LidarQaAlgorithm(GeomaticsAlgorithm):
             "DUPLICATES, NOISE_SHARE, GROUND_WINDOW (m), DTM_CELL (m).</p>")
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.add(QgsProcessingParameterFile(
-            self.INPUT, self.tr("Point cloud (LAS/LAZ)"),
-            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_FILTER))
+        self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))
         self.add_number(self.CELL_SIZE, self.tr("Cell size (m)"), 5.0, minimum=0.0)
         self.add(QgsProcessingParameterString(
             self.GROUND_CLASSES, self.tr("Ground classes"), defaultValue="2"), advanced=True)
@@ -93,7 +89,7 @@ class LidarQaAlgorithm(GeomaticsAlgorithm):
             self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
 
     def process(self, parameters, context, feedback):
-        path = self.parameterAsFile(parameters, self.INPUT, context)
+        path = self.las_input_path(parameters, context, self.INPUT)
         cell = self.parameterAsDouble(parameters, self.CELL_SIZE, context)
         ground = parse_classes(self.parameterAsString(parameters, self.GROUND_CLASSES,
                                                       context)) or (2,)
