@@ -13,6 +13,8 @@ from qgis.core import (
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingOutputNumber,
+    QgsProcessingOutputString,
+    QgsProcessingParameterBoolean,
     QgsProcessingParameterCrs,
     QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSource,
@@ -27,7 +29,7 @@ from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.io import gcp as gcp_io
 from ..core.rectification import accuracy as gcp_report
-from ..core.rectification import warp
+from ..core.rectification import assess, warp
 from .base import GeomaticsAlgorithm
 
 PIXEL_ORIGINS = ("corner", "center")
@@ -47,7 +49,29 @@ NUMBERS = (
     ("N_CHECK", "Independent check points"),
     ("RECOMMENDED_ORDER", "Recommended order (0 = none)"),
     ("ACCEPTED", "Accepted by criteria C4–C6 (1/0)"),
+    ("N_DROPPED", "GCPs dropped by the refinement"),
+    ("HONEST_RMS_T", "Check-point (else leave-one-out) RMS_T of the transformation used"),
 )
+
+#: TRANSFORMATION options: index -> core kind (None: polynomial of order ORDER)
+TRANSFORMATIONS = (None, "polynomial1", "polynomial2", "polynomial3", "linear", "helmert",
+                   "projective", "tps", assess.RECOMMENDED)
+
+_HELP_TRANSFORM = QT_TRANSLATE_NOOP(
+    "GeomaticsAlgorithm",
+    "<li><b>Transformation</b> (TRANSFORMATION, default 0): 0 polynomial of order ORDER; "
+    "1–3 polynomial of order 1, 2, 3; 4 linear (shift and scale per axis, ≥ 2 GCPs); "
+    "5 Helmert (shift, one scale, one rotation, ≥ 2); 6 projective (homography, ≥ 4); "
+    "7 thin-plate spline (through every GCP, ≥ 3, as gdalwarp -tps); 8 recommended: "
+    "every transformation is compared and the one with the lowest check-point (else "
+    "leave-one-out) error is used, the simplest within 10 % of the best.</li>"
+    "<li><b>Refine GCPs</b> (REFINE, default off): as gdalwarp -refine_gcps, drop the GCP "
+    "with the largest residual while it exceeds the tolerance, then refit; the dropped "
+    "points are listed in the report.</li>"
+    "<li><b>Refinement tolerance</b> (REFINE_TOLERANCE, map units, default the C5 "
+    "per-point limit 0.25 mm·S = 5·GR).</li>"
+    "<li><b>Minimum GCPs</b> (MIN_GCPS, default the transformation's minimum + 2): the "
+    "refinement never goes below this count.</li>")
 
 _HELP_GCP = QT_TRANSLATE_NOOP(
     "GeomaticsAlgorithm",
@@ -106,6 +130,10 @@ class _GcpBase(GeomaticsAlgorithm):
     PIXEL_ORIGIN = "PIXEL_ORIGIN"
     GCP_CRS = "GCP_CRS"
     ORDER = "ORDER"
+    TRANSFORMATION = "TRANSFORMATION"
+    REFINE = "REFINE"
+    REFINE_TOLERANCE = "REFINE_TOLERANCE"
+    MIN_GCPS = "MIN_GCPS"
     GR = "GR"
     OUTPUT_HTML = "OUTPUT_HTML"
 
@@ -139,9 +167,52 @@ class _GcpBase(GeomaticsAlgorithm):
             "CRS of the GCP map coordinates (if the file does not say)"), optional=True))
         self.add_number(self.ORDER, self.tr("Polynomial order (1–3)"), 1, minimum=1,
                         maximum=3, integer=True)
+        self.add(QgsProcessingParameterEnum(
+            self.TRANSFORMATION, self.tr("Transformation"),
+            [self.tr("polynomial of order ORDER"), self.tr("polynomial order 1 (affine)"),
+             self.tr("polynomial order 2"), self.tr("polynomial order 3"),
+             self.tr("linear (shift and scale per axis)"),
+             self.tr("Helmert (shift, scale, rotation)"),
+             self.tr("projective (homography)"), self.tr("thin-plate spline"),
+             self.tr("recommended (lowest check-point / leave-one-out error)")],
+            defaultValue=0))
+        self.add(QgsProcessingParameterBoolean(
+            self.REFINE, self.tr("Refine GCPs: drop the worst while over the tolerance"),
+            defaultValue=False))
+        self.add_number(self.REFINE_TOLERANCE, self.tr(
+            "Refinement tolerance (map units) [default: C5 limit 5·GR]"), minimum=0.0,
+            optional=True, advanced=True)
+        self.add_number(self.MIN_GCPS, self.tr(
+            "Minimum GCPs kept by the refinement [default: minimum + 2]"), minimum=0,
+            integer=True, optional=True, advanced=True)
         self.add_number(self.GR, self.tr("Ground resolution GR (map units/pixel) "
                                          "[default: from the GCPs]"), minimum=0.0,
                         optional=True)
+
+    def add_numbers_outputs(self):
+        """Declare the summary numbers and the transformation names as outputs."""
+        for name, label in NUMBERS:
+            self.addOutput(QgsProcessingOutputNumber(name, label))
+        self.addOutput(QgsProcessingOutputString("TRANSFORMATION_USED",
+                                                 "Transformation used"))
+        self.addOutput(QgsProcessingOutputString("RECOMMENDED_TRANSFORMATION",
+                                                 "Recommended transformation"))
+
+    def kind(self, parameters, context) -> str:
+        """Return the core transformation kind chosen by TRANSFORMATION and ORDER."""
+        k = TRANSFORMATIONS[self.parameterAsEnum(parameters, self.TRANSFORMATION, context)]
+        return k or f"polynomial{self.parameterAsInt(parameters, self.ORDER, context)}"
+
+    def assess(self, parameters, context, gcps, size, unit, callbacks):
+        """Refine (REFINE), evaluate and compare the GCPs for the chosen transformation."""
+        min_gcps = self._optional_number(parameters, self.MIN_GCPS)
+        return assess.assess_gcps(
+            gcps, kind=self.kind(parameters, context),
+            order=self.parameterAsInt(parameters, self.ORDER, context),
+            gr=self._optional_number(parameters, self.GR), image_size=size, units=unit,
+            refine=self.parameterAsBool(parameters, self.REFINE, context),
+            tolerance=self._optional_number(parameters, self.REFINE_TOLERANCE),
+            min_gcps=None if min_gcps is None else int(min_gcps), **callbacks)
 
     # ------------------------------------------------------------------ helpers
     def _optional_number(self, parameters, name):
@@ -303,10 +374,32 @@ class _GcpBase(GeomaticsAlgorithm):
                 "zone of the image."))
         return gcps, unit
 
-    def numbers(self, acc):
-        out = acc.summary_numbers()
-        return {k: (None if isinstance(v, float) and math.isnan(v) else v)
-                for k, v in out.items()}
+    def numbers(self, a):
+        """Processing outputs of an :class:`~..core.rectification.assess.Assessment`."""
+        out = a.summary_numbers()
+        out = {k: (None if isinstance(v, float) and math.isnan(v) else v)
+               for k, v in out.items()}
+        out["TRANSFORMATION_USED"] = a.kind
+        out["RECOMMENDED_TRANSFORMATION"] = a.comparison.recommended or ""
+        return out
+
+    def report_html(self, a, parameters, context, extra=None) -> str:
+        """HTML accuracy report of an assessment in the report language."""
+        return gcp_report.to_html(a.acc, lang=self.report_lang(parameters, context),
+                                  extra_params=extra)
+
+    @staticmethod
+    def log_assessment(a, unit, feedback):
+        """Push the transformation, its RMS, honest error, verdict and drops to the log."""
+        r = a.selected
+        basis = assess.honest_label(a.comparison.basis)
+        feedback.pushInfo(f"{a.kind}: fit RMS_T = {r.fit.rms_t:.4f} {unit}, {basis} RMS_T = "
+                          f"{r.score(a.comparison.basis):.4f} {unit} (n = {r.n_gcps}); "
+                          f"verdict {a.verdict}.")
+        feedback.pushInfo(f"Recommended transformation: {a.comparison.reason}")
+        for d in a.dropped:
+            feedback.pushWarning(f"Refinement dropped GCP {d['id']} (residual "
+                                 f"{d['residual']:.4f} {unit}; {d['n_after']} left).")
 
 
 
@@ -368,8 +461,7 @@ class RectifyGcpAlgorithm(_GcpBase):
             self.OUTPUT_HTML, self.tr("Accuracy report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=True))
         self.add_report_language()
-        for name, label in NUMBERS:
-            self.addOutput(QgsProcessingOutputNumber(name, label))
+        self.add_numbers_outputs()
 
     def process(self, parameters, context, feedback):
         raster = self.raster_path(parameters, context, required=True)
@@ -378,7 +470,6 @@ class RectifyGcpAlgorithm(_GcpBase):
             raise QgsProcessingException(self.tr(
                 "OUTPUT must be a GeoTIFF file (.tif); got {0}.").format(out_path))
         parameters = dict(parameters, **{self.OUTPUT: out_path})
-        order = self.parameterAsInt(parameters, self.ORDER, context)
         target = self.crs_param(parameters, self.TARGET_CRS, context)
         gcps, gcp_path = self.load_gcps(parameters, context, raster)
         with self.output_contract(parameters, context, [self.OUTPUT, self.OUTPUT_HTML],
@@ -387,18 +478,14 @@ class RectifyGcpAlgorithm(_GcpBase):
             width, height, _, _ = warp.image_info(raster)
             gcp_io.check_in_image(gcps, width, height)
             cb = self.core_callbacks(feedback)
-            acc = gcp_report.evaluate_gcps(
-                gcps, order=order, gr=self._optional_number(parameters, self.GR),
-                image_size=(width, height), units=unit,
-                progress=(lambda f: cb["progress"](0.1 * f)) if cb["progress"] else None,
-                cancel=cb["cancel"])
-            feedback.pushInfo(f"Order {order}: RMS_T = {acc.selected.stats.rms_t:.4f} {unit} "
-                              f"(n = {acc.selected.n_gcps}), verdict {acc.verdict}; "
-                              f"recommended order {acc.recommended or '–'}.")
+            a = self.assess(parameters, context, gcps, (width, height), unit, {
+                "progress": (lambda f: cb["progress"](0.1 * f)) if cb["progress"] else None,
+                "cancel": cb["cancel"]})
+            self.log_assessment(a, unit, feedback)
             resampling = warp.RESAMPLING[self.parameterAsEnum(parameters, self.RESAMPLING,
                                                               context)]
             res = warp.rectify(
-                raster, gcps, out.path(self.OUTPUT), order=order,
+                raster, a.gcps, out.path(self.OUTPUT), kind=a.kind,
                 target_crs=target or None, resampling=resampling,
                 resolution=self._optional_number(parameters, self.RESOLUTION),
                 nodata=(None if parameters.get(self.NODATA) in (None, "") else
@@ -408,13 +495,13 @@ class RectifyGcpAlgorithm(_GcpBase):
             for note in res.model.warnings:
                 feedback.pushWarning(note)
             outputs = {self.OUTPUT: out.final(self.OUTPUT)}
-            outputs.update(self.numbers(acc))
+            outputs.update(self.numbers(a))
             if out.requested(self.OUTPUT_HTML):
                 extra = {"rectified image": out.final(self.OUTPUT), "resampling": resampling,
                          "output resolution": f"{res.resolution:.6g}",
                          "output size": f"{res.width} × {res.height} px"}
-                out.write_text(self.OUTPUT_HTML, gcp_report.to_html(
-                    acc, lang=self.report_lang(parameters, context), extra_params=extra))
+                out.write_text(self.OUTPUT_HTML, self.report_html(a, parameters, context,
+                                                                  extra))
                 outputs[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         feedback.pushInfo(f"Wrote {outputs[self.OUTPUT]}: {res.width} × {res.height} px at "
                           f"{res.resolution:.6g} units/px, resampling {resampling}.")
@@ -477,8 +564,7 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
             self.OUTPUT_JSON, self.tr("Report as JSON"), self.tr("JSON files (*.json)"),
             optional=True, createByDefault=False))
         self.add_report_language()
-        for name, label in NUMBERS:
-            self.addOutput(QgsProcessingOutputNumber(name, label))
+        self.add_numbers_outputs()
         for t in (1, 2, 3):
             self.addOutput(QgsProcessingOutputNumber(f"RMS_T_ORDER{t}",
                                                      f"RMS_T of order {t} (map units)"))
@@ -487,7 +573,6 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
 
     def process(self, parameters, context, feedback):
         raster = self.raster_path(parameters, context, required=False)
-        order = self.parameterAsInt(parameters, self.ORDER, context)
         gcps, gcp_path = self.load_gcps(parameters, context, raster)
         names = [self.OUTPUT_HTML, self.OUTPUT_CSV, self.OUTPUT_JSON]
         with self.output_contract(parameters, context, names,
@@ -496,21 +581,19 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
             size = self.image_size(parameters, raster)
             if size is not None:
                 gcp_io.check_in_image(gcps, *size)
-            acc = gcp_report.evaluate_gcps(gcps, order=order,
-                                           gr=self._optional_number(parameters, self.GR),
-                                           image_size=size, units=unit,
-                                           **self.core_callbacks(feedback))
-            self.log_summary(acc, order, unit, feedback)
-            outputs = self.numbers(acc)
+            a = self.assess(parameters, context, gcps, size, unit,
+                            self.core_callbacks(feedback))
+            self.log_summary(a.acc, a.acc.order, unit, feedback)
+            self.log_assessment(a, unit, feedback)
+            outputs = self.numbers(a)
             for t in (1, 2, 3):
-                r = acc.results.get(t)
+                r = a.acc.results.get(t)
                 ok = r is not None and r.ok
                 outputs[f"RMS_T_ORDER{t}"] = r.stats.rms_t if ok else None
                 outputs[f"LOO_RMS_T_ORDER{t}"] = r.loo_rms if ok else None
-            writers = {self.OUTPUT_HTML: lambda: gcp_report.to_html(
-                           acc, lang=self.report_lang(parameters, context)),
-                       self.OUTPUT_CSV: lambda: gcp_report.to_csv(acc),
-                       self.OUTPUT_JSON: lambda: gcp_report.to_json(acc)}
+            writers = {self.OUTPUT_HTML: lambda: self.report_html(a, parameters, context),
+                       self.OUTPUT_CSV: lambda: gcp_report.to_csv(a.acc),
+                       self.OUTPUT_JSON: lambda: gcp_report.to_json(a.acc)}
             for name in names:
                 if out.requested(name):
                     out.write_text(name, writers[name]())

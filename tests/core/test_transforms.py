@@ -3,13 +3,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+import skimage.transform as skt  # noqa: E402  test-only oracle (requirements-dev.txt)
+from osgeo import gdal  # noqa: E402
 
 from geomatics_toolbox.core.errors import InputError
 from geomatics_toolbox.core.io import gcp as gcp_io
 from geomatics_toolbox.core.rectification import compare, transforms
 from geomatics_toolbox.synthetic import gcp as gcp_synthetic
 
-gdal = pytest.importorskip("osgeo.gdal")
 GR = gcp_synthetic.IMAGE1_GR
 TOL = 1e-6 * GR  # "≤ 1e-6 of the pixel size"
 
@@ -27,7 +28,6 @@ def test_linear_recovers_shift_and_scale():
 
 
 def test_helmert_recovers_scale_rotation_shift_and_equals_skimage():
-    skt = pytest.importorskip("skimage.transform")
     pix, mp, truth, size = gcp_synthetic.transformed_gcps("helmert")
     t = transforms.fit_transform("helmert", pix, mp)
     assert t.parameters() == pytest.approx(truth, rel=1e-10, abs=1e-6)
@@ -45,7 +45,6 @@ def test_helmert_recovers_scale_rotation_shift_and_equals_skimage():
 
 
 def test_projective_recovers_matrix_and_equals_skimage():
-    skt = pytest.importorskip("skimage.transform")
     pix, mp, truth, size = gcp_synthetic.transformed_gcps("projective")
     t = transforms.fit_transform("projective", pix, mp)
     assert np.allclose(t.parameters()["matrix"], truth, rtol=1e-7, atol=1e-12)
