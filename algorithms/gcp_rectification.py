@@ -28,8 +28,7 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.io import gcp as gcp_io
-from ..core.rectification import accuracy as gcp_report
-from ..core.rectification import assess, warp
+from ..core.rectification import assess, export, report, warp
 from .base import GeomaticsAlgorithm
 
 PIXEL_ORIGINS = ("corner", "center")
@@ -385,8 +384,9 @@ class _GcpBase(GeomaticsAlgorithm):
 
     def report_html(self, a, parameters, context, extra=None) -> str:
         """HTML accuracy report of an assessment in the report language."""
-        return gcp_report.to_html(a.acc, lang=self.report_lang(parameters, context),
-                                  extra_params=extra)
+        lang = self.report_lang(parameters, context)
+        return self.render_report(report.build_report(a, extra=extra, lang=lang),
+                                  parameters, context)
 
     @staticmethod
     def log_assessment(a, unit, feedback):
@@ -592,8 +592,8 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
                 outputs[f"RMS_T_ORDER{t}"] = r.stats.rms_t if ok else None
                 outputs[f"LOO_RMS_T_ORDER{t}"] = r.loo_rms if ok else None
             writers = {self.OUTPUT_HTML: lambda: self.report_html(a, parameters, context),
-                       self.OUTPUT_CSV: lambda: gcp_report.to_csv(a.acc),
-                       self.OUTPUT_JSON: lambda: gcp_report.to_json(a.acc)}
+                       self.OUTPUT_CSV: lambda: export.to_csv(a.acc),
+                       self.OUTPUT_JSON: lambda: export.to_json(a.acc)}
             for name in names:
                 if out.requested(name):
                     out.write_text(name, writers[name]())

@@ -25,9 +25,6 @@ residuals of every GCP, all three orders side by side with a recommended order
 """
 from __future__ import annotations
 
-import csv
-import io
-import json
 import math
 from dataclasses import dataclass, field
 from typing import Dict, List, Optional, Sequence
@@ -37,7 +34,6 @@ import numpy as np
 from ..errors import InputError
 from ..io.gcp import GCPSet
 from ..progress import Monitor
-from ..reporting import html as rep
 from .polynomial import (
     MAX_CONDITION,
     IllConditionedError,
@@ -62,8 +58,9 @@ SCALE_FACTOR = 20000.0
 
 
 def min_redundancy(order: int) -> int:
-    """Redundancy ``n − N`` needed before an order is *recommended*: ``max(2, ⌈N/2⌉)``
-    (order 1: n ≥ 5, order 2: n ≥ 9, order 3: n ≥ 15).
+    """Return the redundancy ``n − N`` needed before an order is *recommended*.
+
+    ``max(2, ⌈N/2⌉)``: order 1 needs n ≥ 5, order 2 n ≥ 9, order 3 n ≥ 15.
     """
     return max(2, math.ceil(n_terms(order) / 2))
 
@@ -96,10 +93,12 @@ class ResidualStats:
     # --- derived criteria
     @property
     def frac_within(self) -> float:
+        """Return the share of points with RMS_i ≤ RMS_T (C6)."""
         return self.n_within / self.n if self.n else float("nan")
 
     @property
     def within(self) -> np.ndarray:
+        """Return a mask of the points with RMS_i ≤ RMS_T."""
         return self.rms_i <= self.rms_t + 1e-12
 
     @property
@@ -122,6 +121,7 @@ class ResidualStats:
 
     @property
     def over_limit(self) -> np.ndarray:
+        """Return a mask of the points over the C5 limit."""
         lim = self.point_limit
         return np.zeros(self.n, bool) if lim is None else self.rms_i > lim
 
@@ -137,23 +137,28 @@ class ResidualStats:
 
     @property
     def c5(self) -> Optional[bool]:
+        """Return True when no point exceeds the C5 limit (None without GR)."""
         return None if self.gr is None else not self.over_limit.any()
 
     @property
     def c6(self) -> bool:
+        """Return True when ≥ 68 % of the points are within RMS_T (C6)."""
         return self.frac_within >= RULE_68
 
     @property
     def c6_strict(self) -> bool:
+        """Return True when ≥ 90 % of the points are within RMS_T."""
         return self.frac_within >= RULE_90
 
     @property
     def c7(self) -> Optional[bool]:
+        """Return True without directional-bias flag (C7; None without positions)."""
         return None if self.bias is None else not self.bias["flags"]
 
     @property
     def verdict(self) -> str:
-        """'accepted' when C4 (≤ 6·GR), C5 and C6 hold; 'rejected' otherwise;
+        """Return 'accepted' when C4 (≤ 6·GR), C5 and C6 hold, else 'rejected'.
+
         'undetermined' without GR. A C7 bias flag adds ' (bias warning)'.
         """
         if self.gr is None:
@@ -183,6 +188,7 @@ class ResidualStats:
         return out
 
     def as_dict(self) -> dict:
+        """Return the criteria as a JSON-ready dict."""
         d = {
             "n": self.n, "rms_x": self.rms_x, "rms_y": self.rms_y, "rms_t": self.rms_t,
             "divisor": "n",
@@ -391,10 +397,12 @@ class OrderResult:
 
     @property
     def ok(self) -> bool:
+        """Return True when the order could be fitted."""
         return self.model is not None
 
     @property
     def redundancy(self) -> int:
+        """Return the redundancy ``n − N``."""
         return self.n_gcps - self.n_terms
 
     @property
@@ -403,6 +411,7 @@ class OrderResult:
         return self.ok and self.redundancy >= min_redundancy(self.order)
 
     def as_dict(self) -> dict:
+        """Return the evaluation as a JSON-ready dict."""
         d = {"order": self.order, "n_terms_per_axis": self.n_terms, "n_gcps": self.n_gcps,
              "redundancy": self.redundancy, "min_redundancy_to_recommend":
                  min_redundancy(self.order), "supported": self.supported, "error": self.error}
@@ -434,10 +443,12 @@ class GcpAccuracy:
 
     @property
     def selected(self) -> OrderResult:
+        """Return the evaluation of the chosen order."""
         return self.results[self.order]
 
     @property
     def verdict(self) -> str:
+        """Return the verdict of the chosen order."""
         r = self.selected
         return r.stats.verdict if r.ok else "not computed"
 
@@ -463,6 +474,7 @@ class GcpAccuracy:
         }
 
     def as_dict(self) -> dict:
+        """Return the whole evaluation as a JSON-ready dict."""
         g = self.gcps
         return {
             "title": "GCP polynomial rectification — accuracy report",
@@ -529,8 +541,10 @@ def _evaluate_order(g: GCPSet, order: int, gr, image_size, *, max_condition,
 
 
 def _suggest_drops(pix, mp, ids, w, order, gr, max_condition) -> List[dict]:
-    """Drop the worst point over the C5 limit and refit, while the redundancy stays at
-    least :func:`min_redundancy` and at most a quarter of the points are dropped.
+    """Drop the worst point over the C5 limit and refit, one at a time.
+
+    Stops when the redundancy would fall below :func:`min_redundancy` or a quarter of
+    the points are dropped.
     """
     if gr is None:
         return []
@@ -689,209 +703,6 @@ def evaluate_gcps(gcps: GCPSet, *, order: int = 2, gr: Optional[float] = None,
                        results, rec, why, crs or gcps.crs, units, notes)
 
 
-# ---------------------------------------------------------------------- outputs
-def _mark(ok) -> str:
-    if ok is None:
-        return "–"
-    return '<span class="ok">pass</span>' if ok else '<span class="fail">fail</span>'
-
-
-def to_html(acc: GcpAccuracy, *, lang: str = "en", extra_params: Optional[dict] = None) -> str:
-    """Self-contained HTML report (tables, residual-vector SVG, comparison of orders)."""
-    r = acc.selected
-    s = r.stats
-    u = acc.units
-    g = acc.gcps
-    parts = []
-    verdict_cls = "ok" if acc.verdict.startswith("accepted") else "fail"
-    parts.append(f'<p>Verdict for order {acc.order}: <span class="{verdict_cls}">'
-                 f'{rep.esc(acc.verdict.upper())}</span>'
-                 + (" — " + rep.esc("; ".join(s.reasons())) if s.reasons() else "") + "</p>")
-    if acc.recommended:
-        parts.append(f"<p>Recommended order: <b>{acc.recommended}</b> — "
-                     f"{rep.esc(acc.recommendation)}</p>")
-    else:
-        parts.append(f'<p class="fail">No order recommended: {rep.esc(acc.recommendation)}'
-                     "</p>")
-    params = {"GCP source": g.source or "–", "CRS": _crs_name(acc.crs),
-              "map units": u, "order": acc.order,
-              "GCPs used in the fit (n)": r.n_gcps,
-              "coefficients per axis (N)": r.n_terms,
-              "redundancy n − N": r.redundancy,
-              "check points": int(g.check_mask.sum()),
-              "disabled points": int((~g.enabled).sum()),
-              "condition number": f"{r.model.condition:.3g}",
-              "GR (ground resolution)": f"{acc.gr:.4f} {u} ({acc.gr_source})",
-              "map scale S = 20000·GR": f"1 : {s.scale:.0f}",
-              "RMS_T band 4·GR … 6·GR": f"{s.band[0]:.3f} … {s.band[1]:.3f} {u}",
-              "per-point limit 0.25 mm·S": f"{s.point_limit:.3f} {u}"}
-    if acc.image_size:
-        params["image size"] = f"{acc.image_size[0]} × {acc.image_size[1]} px"
-    params.update(extra_params or {})
-    parts.append(rep.html_params(params, title="Set-up"))
-    # criteria
-    crit = [
-        ("C2 RMS_x, RMS_y (divisor n)", f"{s.rms_x:.3f}, {s.rms_y:.3f} {u}", "–"),
-        ("C2 RMS_T (divisor n)", f"{s.rms_t:.3f} {u} = {s.rms_t / acc.gr:.2f} px", "–"),
-        ("RMS_T with divisor n − N (QGIS Georeferencer 'mean error')",
-         "–" if s.rms_t_qgis is None else f"{s.rms_t_qgis:.3f} {u}", "–"),
-        ("C4 RMS_T within 4·GR … 6·GR",
-         f"{s.rms_t:.3f} vs {s.band[0]:.3f} … {s.band[1]:.3f}",
-         {"strict": '<span class="ok">pass (strict)</span>',
-          "accepted": '<span class="ok">pass</span>',
-          "rejected": '<span class="fail">fail</span>'}[s.c4]),
-        ("C5 every RMS_i ≤ 0.25 mm·S",
-         f"max {s.largest_rms:.3f} (point {s.largest_id}) vs {s.point_limit:.3f}",
-         _mark(s.c5)),
-        ("C6 ≥ 68 % of points with RMS_i ≤ RMS_T",
-         f"{s.n_within}/{s.n} = {100 * s.frac_within:.1f} %", _mark(s.c6)),
-        ("C6 strict: ≥ 90 %", f"{100 * s.frac_within:.1f} %", _mark(s.c6_strict)),
-        ("C7 no directional bias", "; ".join(s.bias["flags"]) if s.bias and s.bias["flags"]
-         else "no flag", _mark(s.c7)),
-        ("leave-one-out RMS_T", "–" if r.loo_rms is None else f"{r.loo_rms:.3f} {u}", "–"),
-        ("independent check points RMS_T",
-         "–" if r.check is None else f"{r.check.rms_t:.3f} {u} (n = {r.check.n})",
-         "–" if r.check is None else
-         ('<span class="ok">within 6·GR</span>' if r.check.rms_t <= s.band[1]
-          else '<span class="fail">over 6·GR</span>')),
-    ]
-    rows = "".join(f'<tr><td class="text">{rep.esc(a)}</td><td class="text">{rep.esc(b)}</td>'
-                   f"<td>{c}</td></tr>" for a, b, c in crit)
-    parts.append("<h2>Criteria</h2><table><tr><th>criterion</th><th>value</th>"
-                 f"<th>result</th></tr>{rows}</table>")
-    # per point
-    heads = ["id", "col", "row", f"v_x ({u})", f"v_y ({u})", f"RMS_i ({u})", "C_i",
-             "v_col (px)", "v_row (px)", "RMS_i (px)", f"LOO |v| ({u})", "≤ RMS_T",
-             "≤ limit"]
-    fitm = g.fit_mask
-    pix = g.pixel[fitm]
-    prow = []
-    for k, pid in enumerate(s.ids):
-        lo = r.loo[k]
-        prow.append([pid, pix[k, 0], pix[k, 1], s.vx[k], s.vy[k], s.rms_i[k], s.c_i[k],
-                     r.pixel_res[k, 0], r.pixel_res[k, 1], float(np.hypot(*r.pixel_res[k])),
-                     float(np.hypot(*lo)) if np.isfinite(lo).all() else None,
-                     "yes" if s.within[k] else "no", "yes" if not s.over_limit[k] else "NO"])
-    parts.append("<h2>Residuals of the GCPs (fit)</h2>" + rep.html_table(heads, prow))
-    if r.check is not None:
-        c = r.check
-        cpix = g.pixel[g.check_mask]
-        crow = [[pid, cpix[k, 0], cpix[k, 1], c.vx[k], c.vy[k], c.rms_i[k],
-                 r.check_pixel_res[k, 0], r.check_pixel_res[k, 1]]
-                for k, pid in enumerate(c.ids)]
-        parts.append("<h2>Independent check points (not used in the fit)</h2>"
-                     + rep.html_table(["id", "col", "row", f"v_x ({u})", f"v_y ({u})",
-                                       f"|v| ({u})", "v_col (px)", "v_row (px)"], crow)
-                     + f"<p>RMS_x {c.rms_x:.3f}, RMS_y {c.rms_y:.3f}, RMS_T {c.rms_t:.3f} {u}"
-                       f" over {c.n} check points.</p>")
-    # plot over the image footprint, in map coordinates (arrows in their true direction)
-    parts.append("<h2>Residual vectors over the image footprint</h2>"
-                 + residual_plot(acc)
-                 + '<p class="note">GCPs at their map positions, arrows = residual vectors '
-                   "(v_x, v_y) exaggerated by the printed factor; the grey frame is the "
-                   "bounding box of the image footprint"
-                   + (", check points are labelled with '*'" if r.check is not None else "")
-                   + ".</p>")
-    # bias
-    if s.bias:
-        qrows = [[q["quadrant"], q["n"], f"{q['vx_pos']}/{q['vx_neg']}",
-                  f"{q['vy_pos']}/{q['vy_neg']}", q["mean_vx"], q["mean_vy"], q["flag"] or "–"]
-                 for q in s.bias["quadrants"]]
-        parts.append("<h2>C7 bias checks</h2>" + rep.html_table(
-            ["quadrant", "n", "v_x +/−", "v_y +/−", f"mean v_x ({u})", f"mean v_y ({u})",
-             "flag"], qrows))
-        rad = s.bias.get("radial") or {}
-        if "mean_inner" in rad:
-            parts.append(f"<p>Mean radial residual (positive = away from the image centre): "
-                         f"inner {rad['mean_inner']:+.3f} {u} (n = {rad['n_inner']}), edge "
-                         f"{rad['mean_edge']:+.3f} {u} (n = {rad['n_edge']}); split "
-                         f"{rep.esc(rad['split'])}.</p>")
-    # orders side by side
-    orow = []
-    for t, o in sorted(acc.results.items()):
-        if not o.ok:
-            orow.append([t, o.n_terms, o.n_gcps, o.redundancy, None, None, None, None, None,
-                         "–", "cannot fit: " + (o.error or "")[:160]])
-            continue
-        os_ = o.stats
-        orow.append([t, o.n_terms, o.n_gcps, o.redundancy, os_.rms_t, os_.rms_t_qgis,
-                     o.loo_rms, None if o.check is None else o.check.rms_t,
-                     100 * os_.frac_within, os_.verdict,
-                     ("recommended" if acc.recommended == t else
-                      ("supported" if o.supported else "redundancy too small"))])
-    parts.append("<h2>Orders 1, 2, 3 side by side</h2>" + rep.html_table(
-        ["order", "N", "n", "n − N", f"RMS_T ({u})", f"RMS_T n−N ({u})",
-         f"LOO RMS_T ({u})", f"check RMS_T ({u})", "% ≤ RMS_T", "verdict", "status"], orow))
-    # drops
-    if r.drops:
-        drows = [[d["id"], d["rms_i"], d["rms_t_after"], d["n_after"]] for d in r.drops]
-        parts.append("<h2>Suggested points to drop (over the per-point limit, one at a time)"
-                     "</h2>" + rep.html_table(["id", f"RMS_i ({u})", f"RMS_T after ({u})",
-                                               "n after"], drows)
-                     + '<p class="note">Suggestions only: check these points on the image '
-                       "and on the map before removing them; then re-run.</p>")
-    else:
-        parts.append("<h2>Suggested points to drop</h2><p>None: no point exceeds the "
-                     "per-point limit (or the redundancy does not allow dropping).</p>")
-    # coefficients
-    m = r.model
-    cx, cy = m.raw_coefficients()
-    crow = [[name, a, b, ca, cb] for name, a, b, ca, cb in
-            zip(m.as_dict()["terms"], m.coef_x, m.coef_y, cx, cy)]
-    parts.append("<h2>Coefficients</h2>"
-                 + rep.html_table(["term", "X (normalised u,v)", "Y (normalised u,v)",
-                                   "X (raw col,row)", "Y (raw col,row)"],
-                                  [[a, b, c, f"{d:.10g}", f"{e:.10g}"]
-                                   for a, b, c, d, e in crow], digits=6)
-                 + f'<p class="note">u = (col − {m.pixel_norm.x0:.3f}) / '
-                   f"{m.pixel_norm.scale:.3f}, v = (row − {m.pixel_norm.y0:.3f}) / "
-                   f"{m.pixel_norm.scale:.3f}; X, Y relative to ({m.map_norm.x0:.3f}, "
-                   f"{m.map_norm.y0:.3f}) for the normalised columns.</p>")
-    notes = acc.notes + list(g.notes) + list(m.warnings)
-    notes += ["Pixel convention: GDAL pixel/line, (0, 0) = top-left corner of the image, "
-              "rows grow downwards.",
-              "Residuals v = predicted − given (map units). Pixel residuals = given pixel − "
-              "inverse(given map point).",
-              "RMS_T uses the divisor n (paper); the QGIS Georeferencer divides by n − N.",
-              "C6: for normally distributed residuals only about 63 % of the points are "
-              "expected within RMS_T (1 − e⁻¹), so the 68 % rule fails about half of the "
-              "time by chance alone; read it together with C4, C5 and the check points.",
-              CITATION]
-    parts.append("<h2>Notes</h2><ul>" + "".join(f"<li>{rep.esc(t)}</li>" for t in notes)
-                 + "</ul>")
-    return rep.html_page("GCP polynomial rectification — accuracy report", "\n".join(parts),
-                         lang=lang)
-
-
-def residual_plot(acc: GcpAccuracy, order: Optional[int] = None) -> str:
-    """SVG residual-vector plot of ``order`` (default: the selected one) over the image
-    footprint in map coordinates; check points included, labelled with '*'.
-    """
-    r = acc.results[order or acc.order]
-    s = r.stats
-    g = acc.gcps
-    xy = g.map[g.fit_mask]
-    vx, vy, labels = s.vx, s.vy, list(s.ids)
-    if r.check is not None:
-        xy = np.vstack([xy, g.map[g.check_mask]])
-        vx = np.concatenate([vx, r.check.vx])
-        vy = np.concatenate([vy, r.check.vy])
-        labels += [f"{i}*" for i in r.check.ids]
-    ext = None
-    if acc.image_size:
-        w, h = acc.image_size
-        t = np.linspace(0.0, 1.0, 21)
-        cols = np.concatenate([t * w, np.full_like(t, w), (1 - t) * w, np.zeros_like(t)])
-        rows = np.concatenate([np.zeros_like(t), t * h, np.full_like(t, h), (1 - t) * h])
-        fx, fy = r.model.forward(cols, rows)
-        ext = (min(fx.min(), xy[:, 0].min()), min(fy.min(), xy[:, 1].min()),
-               max(fx.max(), xy[:, 0].max()), max(fy.max(), xy[:, 1].max()))
-    return rep.svg_vectors(xy[:, 0], xy[:, 1], vx, vy, labels=labels, extent=ext,
-                           unit=acc.units, xlabel=f"map X ({acc.units})",
-                           ylabel=f"map Y ({acc.units})",
-                           title=f"order {r.order}: residual vectors v = predicted − given")
-
-
 def _crs_name(crs: str) -> str:
     if not crs:
         return "unknown"
@@ -905,60 +716,3 @@ def _crs_name(crs: str) -> str:
         return f"{name} ({auth}:{code})" if code else (name or crs[:60])
     except Exception:  # noqa: BLE001 - a name for display only
         return crs[:60]
-
-
-def to_csv(acc: GcpAccuracy) -> str:
-    """Per-point CSV: every point (GCPs, check points, disabled) for the chosen order."""
-    r = acc.selected
-    s = r.stats
-    g = acc.gcps
-    buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["id", "role", "enabled", "col", "row", "X", "Y", "order", "vx", "vy", "rms_i",
-                "c_i", "v_col_px", "v_row_px", "rms_i_px", "loo_vx", "loo_vy", "loo_rms_i",
-                "within_rms_t", "over_point_limit"])
-    fit_ids = {pid: k for k, pid in enumerate(s.ids)}
-    chk_ids = {pid: k for k, pid in enumerate(r.check.ids)} if r.check else {}
-
-    def f(v):
-        return "" if v is None or not np.isfinite(v) else f"{float(v):.6f}"
-
-    for k, pid in enumerate(g.ids):
-        base = [pid, g.role[k], int(g.enabled[k]), f(g.pixel[k, 0]), f(g.pixel[k, 1]),
-                f(g.map[k, 0]), f(g.map[k, 1]), acc.order]
-        if pid in fit_ids and g.fit_mask[k]:
-            j = fit_ids[pid]
-            lo = r.loo[j]
-            w.writerow(base + [f(s.vx[j]), f(s.vy[j]), f(s.rms_i[j]), f(s.c_i[j]),
-                               f(r.pixel_res[j, 0]), f(r.pixel_res[j, 1]),
-                               f(np.hypot(*r.pixel_res[j])), f(lo[0]), f(lo[1]),
-                               f(np.hypot(*lo)), int(s.within[j]), int(s.over_limit[j])])
-        elif pid in chk_ids and g.check_mask[k]:
-            j = chk_ids[pid]
-            c = r.check
-            w.writerow(base + [f(c.vx[j]), f(c.vy[j]), f(c.rms_i[j]), "",
-                               f(r.check_pixel_res[j, 0]), f(r.check_pixel_res[j, 1]),
-                               f(np.hypot(*r.check_pixel_res[j])), "", "", "", "",
-                               int(c.over_limit[j])])
-        else:
-            w.writerow(base + [""] * 12)
-    return buf.getvalue()
-
-
-def to_json(acc: GcpAccuracy) -> str:
-    """The whole report as JSON (NaN written as null)."""
-    def clean(o):
-        if isinstance(o, dict):
-            return {str(k): clean(v) for k, v in o.items()}
-        if isinstance(o, (list, tuple)):
-            return [clean(v) for v in o]
-        if isinstance(o, np.ndarray):
-            return clean(o.tolist())
-        if isinstance(o, (np.floating, float)):
-            return float(o) if math.isfinite(float(o)) else None
-        if isinstance(o, (np.integer,)):
-            return int(o)
-        if isinstance(o, np.bool_):
-            return bool(o)
-        return o
-    return json.dumps(clean(acc.as_dict()), indent=1, ensure_ascii=False)

@@ -355,3 +355,79 @@ def svg_bars(labels: Sequence, values: Sequence[float], *, xlabel: str = "",
               f'<text x="5" y="30" font-size="11">{esc(ylabel)} (max {_fmt(top)})</text>',
               "</svg>"]
     return "".join(parts)
+
+
+# ---------------------------------------------------------------- GCP residual figures
+def _equal_box(dx: float, dy: float, width: float = 440.0, max_height: float = 440.0):
+    """``(width, height)`` of a plot box with equal scales on both axes."""
+    dx, dy = max(dx, 1e-12), max(dy, 1e-12)
+    h = width * dy / dx
+    return (width, h) if h <= max_height else (max_height * dx / dy, max_height)
+
+
+def vector_plot(x, y, dx, dy, *, labels: Optional[Sequence[str]] = None, frame=None,
+                unit: str = "m", xlabel: str = "X", ylabel: str = "Y") -> str:
+    """Residual-vector (quiver) plot with equal axes: an arrow ``(dx, dy)·k`` at each point.
+
+    ``frame`` (m, 2) is an outline drawn in grey (e.g. the image footprint); the
+    exaggeration ``k`` makes the longest arrow 12 % of the extent and is printed with a
+    reference arrow.
+    """
+    x, y, dx, dy = (np.asarray(a, float) for a in (x, y, dx, dy))
+    pts = np.column_stack([x, y]) if frame is None else np.vstack([np.column_stack([x, y]),
+                                                                   frame])
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    span = float(max(hi - lo)) or 1.0
+    lmax = float(np.hypot(dx, dy).max()) if dx.size else 0.0
+    k = 0.12 * span / lmax if lmax > 0 else 1.0
+    bw, bh = _equal_box(*(hi - lo))
+    markup, px, py = axes((70, 30, bw, bh), (lo[0], hi[0]), (lo[1], hi[1]), xlabel=xlabel,
+                          ylabel=ylabel, ticks=4)
+    parts = [markup, '<defs><marker id="gcp-ah" markerWidth="8" markerHeight="6" refX="7" '
+             'refY="3" orient="auto"><path d="M0,0 L8,3 L0,6 z" fill="#b42318"/></marker>'
+             "</defs>"]
+    if frame is not None:
+        path = " ".join(f"{px(a):.1f},{py(b):.1f}" for a, b in frame)
+        parts.append(f'<polygon points="{path}" fill="#f4f4f4" stroke="#999"/>')
+    for i in range(x.size):
+        x0, y0 = float(px(x[i])), float(py(y[i]))
+        x1, y1 = float(px(x[i] + k * dx[i])), float(py(y[i] + k * dy[i]))
+        parts.append(f'<circle cx="{x0:.1f}" cy="{y0:.1f}" r="2.5" fill="#1f5f8b"/>'
+                     f'<line x1="{x0:.1f}" y1="{y0:.1f}" x2="{x1:.1f}" y2="{y1:.1f}" '
+                     'stroke="#b42318" stroke-width="1.5" marker-end="url(#gcp-ah)"/>')
+        if labels is not None:
+            parts.append(text(x0 + 4, y0 + 11, labels[i], size=9, ltr=True))
+    ref = nice_length(lmax) or 1.0
+    ref_px = float(px(lo[0] + ref * k) - px(lo[0]))
+    parts.append(f'<line x1="80" y1="18" x2="{80 + ref_px:.1f}" y2="18" stroke="#b42318" '
+                 'stroke-width="1.5" marker-end="url(#gcp-ah)"/>'
+                 + text(86 + ref_px, 21, f"{ref:g} {unit} (×{k:.4g})", size=10, ltr=True))
+    return figure(int(bw + 100), int(bh + 80), parts)
+
+
+def bar_chart(labels: Sequence[str], values: Sequence[float], *,
+              colours: Optional[Sequence[str]] = None, unit: str = "m",
+              limit: Optional[float] = None, ylabel: str = "") -> str:
+    """Vertical bar chart of ``values`` (one bar per label) with an optional dashed limit."""
+    v = np.asarray(values, float)
+    n = len(labels)
+    top = max(float(np.nanmax(v)) if n else 1.0, limit or 0.0) or 1.0
+    width, height = max(300, 70 * n + 90), 300
+    markup, px, py = axes((70, 20, width - 90, 200), (0, n), (0, top), xlabel="",
+                          ylabel=f"{ylabel} ({unit})", ticks=4)
+    parts = [markup]
+    colours = colours or ["#1f5f8b"] * n
+    for i, (lab, val) in enumerate(zip(labels, v)):
+        x0, x1 = float(px(i + 0.15)), float(px(i + 0.85))
+        y0, y1 = float(py(0)), float(py(val))
+        parts.append(f'<rect x="{x0:.1f}" y="{y1:.1f}" width="{x1 - x0:.1f}" '
+                     f'height="{max(y0 - y1, 0):.1f}" fill="{colours[i]}"/>')
+        parts.append(text((x0 + x1) / 2, y1 - 3, f"{val:.3g}", anchor="middle", size=9,
+                          ltr=True))
+        parts.append(f'<g transform="translate({(x0 + x1) / 2:.1f},{y0 + 28:.1f}) '
+                     'rotate(-30)">' + text(0, 0, lab, anchor="end", size=10) + "</g>")
+    if limit:
+        yl = float(py(limit))
+        parts.append(f'<line x1="70" y1="{yl:.1f}" x2="{width - 20}" y2="{yl:.1f}" '
+                     'stroke="#b42318" stroke-dasharray="5 3"/>')
+    return figure(width, height + 30, parts)

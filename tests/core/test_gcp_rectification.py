@@ -15,7 +15,8 @@ import pytest
 
 from geomatics_toolbox.core.io import gcp as gcp_io
 from geomatics_toolbox.core.rectification import accuracy as gcp_report
-from geomatics_toolbox.core.rectification import polynomial, warp
+from geomatics_toolbox.core.rectification import assess, export, polynomial, report, warp
+from geomatics_toolbox.core.reporting import render_html
 from geomatics_toolbox.synthetic import gcp as gcp_synthetic
 
 gdal = pytest.importorskip("osgeo.gdal")
@@ -357,13 +358,15 @@ def test_report_orders_side_by_side_and_outputs():
     for r in acc.results.values():
         assert r.ok and r.loo_rms is not None
     assert acc.results[1].loo_rms > acc.results[2].loo_rms  # order 1 misses the curvature
-    html = gcp_report.to_html(acc)
-    for text in ("RMS_T", "n − N", "C6", "<svg", "Orders 1, 2, 3", "check points",
-                 "Tishreen"):
+    html = render_html(report.build_report(
+        assess.assess_gcps(g, kind="polynomial2", gr=gcp_synthetic.IMAGE1_GR,
+                           image_size=size)))
+    for text in ("RMS_T", "n − N", "C6", "<svg", "orders 1, 2, 3", "check points",
+                 "Tishreen", 'id="residual-vectors"', 'id="transform-comparison"'):
         assert text in html
-    rows = gcp_report.to_csv(acc).splitlines()
+    rows = export.to_csv(acc).splitlines()
     assert len(rows) == 23 and rows[0].startswith("id,role,enabled,col,row")
-    d = json.loads(gcp_report.to_json(acc))
+    d = json.loads(export.to_json(acc))
     assert d["orders"]["2"]["fit"]["rms_t"] == pytest.approx(acc.selected.stats.rms_t)
     assert d["recommended_order"] == acc.recommended
 

@@ -240,12 +240,12 @@ def test_report_failure_leaves_no_rectified_image(qgis_processing, tmp_path, mon
     """All-or-nothing: the warp succeeded, the report failed -> nothing at all."""
     from qgis.core import QgsProcessingException
 
-    from geomatics_toolbox.core.rectification import accuracy
+    from geomatics_toolbox.core.rectification import report
 
     def broken(*_a, **_k):
         raise OSError("disk full while writing the report")
 
-    monkeypatch.setattr(accuracy, "to_html", broken)
+    monkeypatch.setattr(report, "build_report", broken)
     img, pts, _, _ = make_case(tmp_path)
     old = tmp_path / "rect.tif"
     old.write_bytes(b"an older result")
