@@ -12,6 +12,7 @@ def all_algorithms():
     from .dtm_accuracy import DtmAccuracyAlgorithm
     from .elevation_change import ElevationChangeAlgorithm
     from .filter_accuracy import GroundFilterAccuracyAlgorithm
+    from .gcp_batch import RectifyBatchAlgorithm
     from .gcp_rectification import GcpAccuracyReportAlgorithm, RectifyGcpAlgorithm
     from .gsd_calculator import GsdBatchAlgorithm, GsdCalculatorAlgorithm
     from .lidar_qa import LidarQaAlgorithm
@@ -26,6 +27,7 @@ def all_algorithms():
         GsdBatchAlgorithm(),
         RectifyGcpAlgorithm(),
         GcpAccuracyReportAlgorithm(),
+        RectifyBatchAlgorithm(),
         IdwDtmAlgorithm(),
         KrigingDtmAlgorithm(),
         DsmAlgorithm(),

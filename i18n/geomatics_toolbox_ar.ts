@@ -135,6 +135,18 @@
             <source>Error against height</source>
             <translation>الخطأ مقابل الارتفاع</translation>
         </message>
+        <message>
+            <source>check-point RMS_T</source>
+            <translation>RMS_T نقاط التحقق</translation>
+        </message>
+        <message>
+            <source>map X</source>
+            <translation>X الخريطة</translation>
+        </message>
+        <message>
+            <source>map Y</source>
+            <translation>Y الخريطة</translation>
+        </message>
     </context>
     <context>
         <name>DsmAlgorithm</name>

@@ -135,6 +135,18 @@
             <source>Error against height</source>
             <translation>خطا در برابر ارتفاع</translation>
         </message>
+        <message>
+            <source>check-point RMS_T</source>
+            <translation>RMS_T نقاط چک</translation>
+        </message>
+        <message>
+            <source>map X</source>
+            <translation>X نقشه</translation>
+        </message>
+        <message>
+            <source>map Y</source>
+            <translation>Y نقشه</translation>
+        </message>
     </context>
     <context>
         <name>DsmAlgorithm</name>

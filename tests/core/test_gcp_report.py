@@ -81,3 +81,15 @@ def test_every_report_message_is_translated(lang):
         assert not missing, missing
         html = render_html(rep, lang=lang)
         assert f'lang="{lang}" dir="rtl"' in html
+
+
+@pytest.mark.parametrize("lang", ["ar", "fa"])
+def test_batch_summary_is_translated(lang):
+    from geomatics_toolbox.core.rectification import batch
+    rows = [batch.BatchRow("a.tif", "out/a_rectified.tif", "helmert", 22, 0.4, 0.5, "loo",
+                           "accepted", 0),
+            batch.BatchRow("b.tif", error="the .points file has no '#CRS:' line")]
+    rep = batch.summary_report(rows)
+    assert not {m for m in rep.messages() if not has_translation(m, lang)}
+    assert batch.summary_csv(rows).splitlines()[1].startswith(
+        "a.tif,out/a_rectified.tif,helmert,22,0.400000,0.500000,loo,accepted,0,")

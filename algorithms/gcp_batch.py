@@ -1,0 +1,144 @@
+"""Batch GCP rectification of a folder of images with their .points files.
+
+Thin wrapper over :mod:`..core.rectification.batch`.
+"""
+from __future__ import annotations
+
+from qgis.core import (
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterCrs,
+    QgsProcessingParameterEnum,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterFolderDestination,
+)
+
+from ..core.rectification import batch, warp
+from .base import GeomaticsAlgorithm
+from .gcp_rectification import TRANSFORMATIONS
+
+
+class RectifyBatchAlgorithm(GeomaticsAlgorithm):
+    """Rectify every image of a folder that has a Georeferencer .points file."""
+
+    GROUP = "rectification"
+    INPUT_FOLDER = "INPUT_FOLDER"
+    TRANSFORMATION = "TRANSFORMATION"
+    ORDER = "ORDER"
+    REFINE = "REFINE"
+    GCP_CRS = "GCP_CRS"
+    RESAMPLING = "RESAMPLING"
+    OUTPUT_FOLDER = "OUTPUT_FOLDER"
+    OUTPUT_CSV = "OUTPUT_CSV"
+    OUTPUT_HTML = "OUTPUT_HTML"
+
+    def name(self):
+        return "rectifybatch"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("Rectify a folder of images with GCPs (batch)")
+
+    def shortDescription(self):  # noqa: N802
+        return self.tr("Warps every image of a folder with its .points file and "
+                       "summarises the accuracy in one table.")
+
+    def tags(self):
+        return self.tr("georeference,gcp,batch,folder,rectification,warp,rms").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Rectifies every image of a folder that has its QGIS Georeferencer "
+            "<i>.points</i> file next to it (scan.tif + scan.tif.points), with a fixed "
+            "transformation or the one recommended for each image, and writes one summary "
+            "table: image, transformation, RMS_T, check-point / leave-one-out RMS_T, "
+            "verdict.</p>"
+            "<p><b>Example</b>: INPUT_FOLDER=scans TRANSFORMATION=8 "
+            "OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv</p>"
+            "<p><b>Parameters</b></p><ul>"
+            "<li><b>Input folder</b> (INPUT_FOLDER).</li>"
+            "<li><b>Transformation</b> (TRANSFORMATION, default 8 = recommended per image; "
+            "0 polynomial of order ORDER, 1–3 polynomial 1–3, 4 linear, 5 Helmert, "
+            "6 projective, 7 thin-plate spline).</li>"
+            "<li><b>Polynomial order</b> (ORDER, default 1).</li>"
+            "<li><b>Refine GCPs</b> (REFINE, default off): drop GCPs over the C5 limit "
+            "5·GR.</li>"
+            "<li><b>GCP CRS</b> (GCP_CRS): for .points files without a '#CRS:' line.</li>"
+            "<li><b>Resampling</b> (RESAMPLING, default 0 = nearest).</li>"
+            "<li><b>Output folder</b> (OUTPUT_FOLDER): image_rectified.tif per image, "
+            "each written all-or-nothing.</li>"
+            "<li><b>Summary</b> (OUTPUT_CSV, OUTPUT_HTML): one row per image; an image "
+            "that cannot be rectified gets its error in the table and the others go "
+            "on.</li></ul>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add(QgsProcessingParameterFile(
+            self.INPUT_FOLDER, self.tr("Folder of images with .points files"),
+            QgsProcessingParameterFile.Folder))
+        self.add(QgsProcessingParameterEnum(
+            self.TRANSFORMATION, self.tr("Transformation"),
+            [self.tr("polynomial of order ORDER"), self.tr("polynomial order 1 (affine)"),
+             self.tr("polynomial order 2"), self.tr("polynomial order 3"),
+             self.tr("linear (shift and scale per axis)"),
+             self.tr("Helmert (shift, scale, rotation)"),
+             self.tr("projective (homography)"), self.tr("thin-plate spline"),
+             self.tr("recommended (lowest check-point / leave-one-out error)")],
+            defaultValue=8))
+        self.add_number(self.ORDER, self.tr("Polynomial order (1–3)"), 1, minimum=1,
+                        maximum=3, integer=True)
+        self.add(QgsProcessingParameterBoolean(
+            self.REFINE, self.tr("Refine GCPs: drop the worst while over the tolerance"),
+            defaultValue=False))
+        self.add(QgsProcessingParameterCrs(self.GCP_CRS, self.tr(
+            "CRS of the GCP map coordinates (if the file does not say)"), optional=True))
+        self.add(QgsProcessingParameterEnum(self.RESAMPLING, self.tr("Resampling"),
+                                            list(warp.RESAMPLING), defaultValue=0))
+        self.add(QgsProcessingParameterFolderDestination(
+            self.OUTPUT_FOLDER, self.tr("Folder of rectified images")))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_CSV, self.tr("Summary table"), self.tr("CSV files (*.csv)"),
+            optional=True, createByDefault=True))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_HTML, self.tr("Summary report"), self.tr("HTML files (*.html)"),
+            optional=True, createByDefault=True))
+        self.add_report_language()
+        self.addOutput(QgsProcessingOutputNumber("N_IMAGES", "Images found"))
+        self.addOutput(QgsProcessingOutputNumber("N_RECTIFIED", "Images rectified"))
+
+    def process(self, parameters, context, feedback):
+        folder = self.parameterAsFile(parameters, self.INPUT_FOLDER, context)
+        out_folder = self.parameterAsString(parameters, self.OUTPUT_FOLDER, context)
+        kind = TRANSFORMATIONS[self.parameterAsEnum(parameters, self.TRANSFORMATION,
+                                                    context)]
+        kind = kind or f"polynomial{self.parameterAsInt(parameters, self.ORDER, context)}"
+        crs = self.parameterAsCrs(parameters, self.GCP_CRS, context)
+        pairs = batch.find_images(folder)
+        inputs = {f"IMAGE{k}": p for k, pair in enumerate(pairs) for p in pair}
+        with self.output_contract(parameters, context, [self.OUTPUT_CSV, self.OUTPUT_HTML],
+                                  inputs=inputs) as out:
+
+            def log(row):
+                if row.error:
+                    feedback.reportError(f"{row.image}: {row.error}", False)
+                else:
+                    feedback.pushInfo(f"{row.image}: {row.kind}, RMS_T {row.rms_t:.4f}, "
+                                      f"{row.basis} RMS_T {row.honest_rms_t:.4f}, "
+                                      f"{row.verdict} -> {row.output}")
+
+            rows = batch.rectify_folder(
+                folder, out_folder, kind=kind, crs=crs.toWkt() if crs.isValid() else "",
+                refine=self.parameterAsBool(parameters, self.REFINE, context),
+                resampling=warp.RESAMPLING[self.parameterAsEnum(parameters, self.RESAMPLING,
+                                                                context)],
+                log=log, **self.core_callbacks(feedback))
+            outputs = {self.OUTPUT_FOLDER: out_folder, "N_IMAGES": len(rows),
+                       "N_RECTIFIED": sum(1 for r in rows if not r.error)}
+            if out.requested(self.OUTPUT_CSV):
+                out.write_text(self.OUTPUT_CSV, batch.summary_csv(rows))
+                outputs[self.OUTPUT_CSV] = out.final(self.OUTPUT_CSV)
+            if out.requested(self.OUTPUT_HTML):
+                out.write_text(self.OUTPUT_HTML, self.render_report(
+                    batch.summary_report(rows), parameters, context))
+                outputs[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
+        feedback.setProgress(100)
+        return outputs
