@@ -354,9 +354,8 @@ def _parameters(rep: Report, a: Assessment) -> None:
         else:
             sec.add(KeyValues([("control points", p["control_points"])],
                               caption=T(KIND_NAMES[kind])))
-    sec.add(Formula("col, row: GDAL pixel/line (0,0 = top-left corner); "
-                    "Helmert: X = shift_x + s·cos θ·col + s·sin θ·row, "
-                    "Y = shift_y + s·sin θ·col − s·cos θ·row"))
+    sec.add(Formula("Helmert: X = shift_X + s·cos θ·col + s·sin θ·row;  "
+                    "Y = shift_Y + s·sin θ·col − s·cos θ·row"))
 
 
 _PARAM_LABELS = {"shift_x": "shift X", "shift_y": "shift Y", "scale_x": "scale X",
