@@ -50,7 +50,7 @@ WARN_CONDITION = 1.0e3
 
 
 def n_terms(order: int) -> int:
-    """Number of coefficients per axis ``N = (t+1)(t+2)/2`` (3, 6, 10)."""
+    """Return the number of coefficients per axis ``N = (t+1)(t+2)/2`` (3, 6, 10)."""
     _check_order(order)
     return (order + 1) * (order + 2) // 2
 
@@ -97,15 +97,18 @@ class Normaliser:
 
     @classmethod
     def fit(cls, xy: np.ndarray) -> "Normaliser":
+        """Return the normaliser of ``xy``: centroid and largest distance from it."""
         c = xy.mean(axis=0)
         s = float(np.max(np.hypot(xy[:, 0] - c[0], xy[:, 1] - c[1]))) if len(xy) else 1.0
         return cls(float(c[0]), float(c[1]), s if s > 0 else 1.0)
 
     def apply(self, x, y):
+        """Return ``x, y`` normalised."""
         return ((np.asarray(x, float) - self.x0) / self.scale,
                 (np.asarray(y, float) - self.y0) / self.scale)
 
     def as_dict(self) -> dict:
+        """Return the normaliser as a dict."""
         return {"x0": self.x0, "y0": self.y0, "scale": self.scale}
 
 
@@ -230,8 +233,9 @@ class PolynomialModel:
         return col.reshape(shape), row.reshape(shape)
 
     def pixel_size(self, col=None, row=None) -> float:
-        """Ground size of a pixel ``sqrt(|det J|)`` (map units), at the GCP centroid
-        by default — the ground resolution GR implied by the fit.
+        """Return the ground size of a pixel ``sqrt(|det J|)`` (map units).
+
+        At the GCP centroid by default — the ground resolution GR implied by the fit.
         """
         if col is None:
             col, row = self.pixel_norm.x0, self.pixel_norm.y0

@@ -55,7 +55,7 @@ def _srs(crs: str, what: str):
 
 
 def same_crs(a: str, b: str) -> bool:
-    """True when the two CRS definitions describe the same CRS."""
+    """Return True when the two CRS definitions describe the same CRS."""
     if not a or not b:
         return a == b
     return bool(_srs(a, "CRS").IsSame(_srs(b, "CRS")))
@@ -85,8 +85,9 @@ def to_crs(xy: np.ndarray, src: str, dst: str) -> np.ndarray:
 
 
 def ground_resolution(gcps: GCPSet, crs: Optional[str] = None) -> float:
-    """Pixel size on the ground implied by the enabled GCPs (affine fit, ``sqrt|det J|``),
-    in the units of ``crs`` (default: the GCPs' CRS).
+    """Return the pixel size on the ground implied by the enabled GCPs.
+
+    Affine fit, ``sqrt|det J|``, in the units of ``crs`` (default: the GCPs' CRS).
     """
     m = gcps.fit_mask
     mp = gcps.map[m]
@@ -104,7 +105,7 @@ def linear_units(crs: str) -> tuple:
 
 
 def gcps_vrt(src_path: str, gcps: GCPSet, crs: str):
-    """An in-memory VRT of ``src_path`` with the enabled role-'gcp' GCPs attached.
+    """Return an in-memory VRT of ``src_path`` with the enabled role-'gcp' GCPs attached.
 
     Returns ``(dataset, vsimem_path)``; unlink the path when done.
     """
