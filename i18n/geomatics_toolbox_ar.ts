@@ -1102,6 +1102,105 @@
         </message>
     </context>
     <context>
+        <name>RectifyBatchAlgorithm</name>
+        <message>
+            <source>Rectify a folder of images with GCPs (batch)</source>
+            <translation>تصحيح مجلد من المرئيات بنقاط الضبط (دفعة)</translation>
+        </message>
+        <message>
+            <source>Warps every image of a folder with its .points file and summarises the accuracy in one table.</source>
+            <translation>يصحّح كل مرئية في المجلد بملف ‎.points‎ الخاص بها ويلخّص الدقة في جدول واحد.</translation>
+        </message>
+        <message>
+            <source>georeference,gcp,batch,folder,rectification,warp,rms</source>
+            <translation>georeference,gcp,batch,folder,rectification,warp,rms,إسناد جغرافي,دفعة,مجلد,تصحيح</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Rectifies every image of a folder that has its QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file next to it (scan.tif + scan.tif.points), with a fixed transformation or the one recommended for each image, and writes one summary table: image, transformation, RMS_T, check-point / leave-one-out RMS_T, verdict.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Input folder&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 8 = recommended per image; 0 polynomial of order ORDER, 1–3 polynomial 1–3, 4 linear, 5 Helmert, 6 projective, 7 thin-plate spline).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): drop GCPs over the C5 limit 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): for .points files without a '#CRS:' line.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output folder&lt;/b&gt; (OUTPUT_FOLDER): image_rectified.tif per image, each written all-or-nothing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Summary&lt;/b&gt; (OUTPUT_CSV, OUTPUT_HTML): one row per image; an image that cannot be rectified gets its error in the table and the others go on.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;يصحّح كل مرئية في المجلد يجاورها ملف &lt;i&gt;.points&lt;/i&gt; من Georeferencer في QGIS (scan.tif + scan.tif.points)، بتحويل ثابت أو بالتحويل الموصى به لكل مرئية، ويكتب جدول ملخص واحداً: المرئية، التحويل، RMS_T، RMS_T نقاط التحقق / ترك واحدة، الحكم.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;مجلد الإدخال&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التحويل&lt;/b&gt; (TRANSFORMATION، الافتراضي 8 = الموصى به لكل مرئية؛ 0 كثيرة حدود من الدرجة ORDER، 1–3 كثيرة حدود 1–3، 4 خطي، 5 هلمرت، 6 إسقاطي، 7 شريحة الصفيحة الرقيقة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجة كثيرة الحدود&lt;/b&gt; (ORDER، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تنقيح النقاط&lt;/b&gt; (REFINE، الافتراضي معطّل): حذف النقاط فوق حدّ C5 أي 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام إحداثيات النقاط&lt;/b&gt; (GCP_CRS): لملفات .points التي لا سطر '#CRS:' فيها.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إعادة المعاينة&lt;/b&gt; (RESAMPLING، الافتراضي 0 = الأقرب).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مجلد الإخراج&lt;/b&gt; (OUTPUT_FOLDER): ‏image_rectified.tif لكل مرئية، يُكتب كل منها كاملاً أو لا يُكتب.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الملخص&lt;/b&gt; (OUTPUT_CSV، OUTPUT_HTML): سطر لكل مرئية؛ المرئية التي يتعذر تصحيحها يُسجَّل خطؤها في الجدول وتستمر البقية.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Folder of images with .points files</source>
+            <translation>مجلد المرئيات مع ملفات .points</translation>
+        </message>
+        <message>
+            <source>Transformation</source>
+            <translation>التحويل</translation>
+        </message>
+        <message>
+            <source>polynomial of order ORDER</source>
+            <translation>كثيرة حدود من الدرجة ORDER</translation>
+        </message>
+        <message>
+            <source>polynomial order 1 (affine)</source>
+            <translation>كثيرة حدود من الدرجة 1 (تآلفي)</translation>
+        </message>
+        <message>
+            <source>polynomial order 2</source>
+            <translation>كثيرة حدود من الدرجة 2</translation>
+        </message>
+        <message>
+            <source>polynomial order 3</source>
+            <translation>كثيرة حدود من الدرجة 3</translation>
+        </message>
+        <message>
+            <source>linear (shift and scale per axis)</source>
+            <translation>خطي (إزاحة ومقياس لكل محور)</translation>
+        </message>
+        <message>
+            <source>Helmert (shift, scale, rotation)</source>
+            <translation>هلمرت (إزاحة، مقياس، دوران)</translation>
+        </message>
+        <message>
+            <source>projective (homography)</source>
+            <translation>إسقاطي (تحويل متجانس)</translation>
+        </message>
+        <message>
+            <source>thin-plate spline</source>
+            <translation>شريحة الصفيحة الرقيقة</translation>
+        </message>
+        <message>
+            <source>recommended (lowest check-point / leave-one-out error)</source>
+            <translation>الموصى به (أصغر خطأ على نقاط التحقق / ترك واحدة خارجاً)</translation>
+        </message>
+        <message>
+            <source>Polynomial order (1–3)</source>
+            <translation>درجة متعدد الحدود (1–3)</translation>
+        </message>
+        <message>
+            <source>Refine GCPs: drop the worst while over the tolerance</source>
+            <translation>تنقيح النقاط: حذف الأسوأ ما دام فوق التسامح</translation>
+        </message>
+        <message>
+            <source>CRS of the GCP map coordinates (if the file does not say)</source>
+            <translation>نظام الإحداثيات للإحداثيات الخرائطية لنقاط الضبط (إن لم يحدده الملف)</translation>
+        </message>
+        <message>
+            <source>Resampling</source>
+            <translation>إعادة الاعتيان</translation>
+        </message>
+        <message>
+            <source>Folder of rectified images</source>
+            <translation>مجلد المرئيات المصحّحة</translation>
+        </message>
+        <message>
+            <source>Summary table</source>
+            <translation>جدول الملخص</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>ملفات CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>Summary report</source>
+            <translation>تقرير الملخص</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
         <name>RectifyGcpAlgorithm</name>
         <message>
             <source>Rectify image with GCPs (polynomial)</source>

@@ -1102,6 +1102,105 @@
         </message>
     </context>
     <context>
+        <name>RectifyBatchAlgorithm</name>
+        <message>
+            <source>Rectify a folder of images with GCPs (batch)</source>
+            <translation>تصحیح پوشه‌ای از تصاویر با نقاط کنترل (دسته‌ای)</translation>
+        </message>
+        <message>
+            <source>Warps every image of a folder with its .points file and summarises the accuracy in one table.</source>
+            <translation>هر تصویر پوشه را با فایل ‎.points‎ آن تصحیح و دقت را در یک جدول خلاصه می‌کند.</translation>
+        </message>
+        <message>
+            <source>georeference,gcp,batch,folder,rectification,warp,rms</source>
+            <translation>georeference,gcp,batch,folder,rectification,warp,rms,زمین‌مرجع,دسته‌ای,پوشه,تصحیح</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Rectifies every image of a folder that has its QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file next to it (scan.tif + scan.tif.points), with a fixed transformation or the one recommended for each image, and writes one summary table: image, transformation, RMS_T, check-point / leave-one-out RMS_T, verdict.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Input folder&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 8 = recommended per image; 0 polynomial of order ORDER, 1–3 polynomial 1–3, 4 linear, 5 Helmert, 6 projective, 7 thin-plate spline).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): drop GCPs over the C5 limit 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): for .points files without a '#CRS:' line.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output folder&lt;/b&gt; (OUTPUT_FOLDER): image_rectified.tif per image, each written all-or-nothing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Summary&lt;/b&gt; (OUTPUT_CSV, OUTPUT_HTML): one row per image; an image that cannot be rectified gets its error in the table and the others go on.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;هر تصویر پوشه را که فایل &lt;i&gt;.points&lt;/i&gt; مربوط به Georeferencer در QGIS کنارش است (scan.tif + scan.tif.points)، با یک تبدیل ثابت یا تبدیل پیشنهادی برای هر تصویر تصحیح می‌کند و یک جدول خلاصه می‌نویسد: تصویر، تبدیل، RMS_T، RMS_T نقاط چک / حذف‌یکی، رأی.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;پوشهٔ ورودی&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تبدیل&lt;/b&gt; (TRANSFORMATION، پیش‌فرض 8 = پیشنهادی برای هر تصویر؛ 0 چندجمله‌ای درجهٔ ORDER، 1–3 چندجمله‌ای 1–3، 4 خطی، 5 هلمرت، 6 تصویری، 7 اسپلاین صفحهٔ نازک).&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجهٔ چندجمله‌ای&lt;/b&gt; (ORDER، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;پالایش نقاط&lt;/b&gt; (REFINE، پیش‌فرض خاموش): حذف نقاط بالای حد C5 یعنی 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات نقاط&lt;/b&gt; (GCP_CRS): برای فایل‌های .points بدون سطر '#CRS:'.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بازنمونه‌گیری&lt;/b&gt; (RESAMPLING، پیش‌فرض 0 = نزدیک‌ترین).&lt;/li&gt;&lt;li&gt;&lt;b&gt;پوشهٔ خروجی&lt;/b&gt; (OUTPUT_FOLDER): ‏image_rectified.tif برای هر تصویر، هر کدام همه‌یا‌هیچ نوشته می‌شود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;خلاصه&lt;/b&gt; (OUTPUT_CSV، OUTPUT_HTML): یک سطر برای هر تصویر؛ خطای تصویری که تصحیح نشود در جدول می‌آید و بقیه ادامه می‌یابند.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Folder of images with .points files</source>
+            <translation>پوشهٔ تصاویر با فایل‌های .points</translation>
+        </message>
+        <message>
+            <source>Transformation</source>
+            <translation>تبدیل</translation>
+        </message>
+        <message>
+            <source>polynomial of order ORDER</source>
+            <translation>چندجمله‌ای درجهٔ ORDER</translation>
+        </message>
+        <message>
+            <source>polynomial order 1 (affine)</source>
+            <translation>چندجمله‌ای درجهٔ 1 (آفین)</translation>
+        </message>
+        <message>
+            <source>polynomial order 2</source>
+            <translation>چندجمله‌ای درجهٔ 2</translation>
+        </message>
+        <message>
+            <source>polynomial order 3</source>
+            <translation>چندجمله‌ای درجهٔ 3</translation>
+        </message>
+        <message>
+            <source>linear (shift and scale per axis)</source>
+            <translation>خطی (انتقال و مقیاس برای هر محور)</translation>
+        </message>
+        <message>
+            <source>Helmert (shift, scale, rotation)</source>
+            <translation>هلمرت (انتقال، مقیاس، دوران)</translation>
+        </message>
+        <message>
+            <source>projective (homography)</source>
+            <translation>تصویری (هموگرافی)</translation>
+        </message>
+        <message>
+            <source>thin-plate spline</source>
+            <translation>اسپلاین صفحهٔ نازک</translation>
+        </message>
+        <message>
+            <source>recommended (lowest check-point / leave-one-out error)</source>
+            <translation>پیشنهادی (کمترین خطای نقاط چک / حذف‌یکی)</translation>
+        </message>
+        <message>
+            <source>Polynomial order (1–3)</source>
+            <translation>درجهٔ چندجمله‌ای (1–3)</translation>
+        </message>
+        <message>
+            <source>Refine GCPs: drop the worst while over the tolerance</source>
+            <translation>پالایش نقاط: حذف بدترین تا وقتی بالای تلورانس است</translation>
+        </message>
+        <message>
+            <source>CRS of the GCP map coordinates (if the file does not say)</source>
+            <translation>سیستم مختصاتِ مختصات نقشه‌ای نقاط کنترل (اگر پرونده آن را مشخص نکند)</translation>
+        </message>
+        <message>
+            <source>Resampling</source>
+            <translation>بازنمونه‌برداری</translation>
+        </message>
+        <message>
+            <source>Folder of rectified images</source>
+            <translation>پوشهٔ تصاویر تصحیح‌شده</translation>
+        </message>
+        <message>
+            <source>Summary table</source>
+            <translation>جدول خلاصه</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>پرونده‌های CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>Summary report</source>
+            <translation>گزارش خلاصه</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
         <name>RectifyGcpAlgorithm</name>
         <message>
             <source>Rectify image with GCPs (polynomial)</source>

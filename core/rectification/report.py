@@ -82,7 +82,8 @@ def build_report(a: Assessment, *, extra: Optional[dict] = None, lang: str = "en
 def _summary(a: Assessment, tr) -> List[Paragraph]:
     r = a.selected
     out = [Paragraph(T("Transformation used: {kind}.", kind=tr(KIND_NAMES[a.kind]))),
-           Paragraph(T(_VERDICT.get(a.verdict, a.verdict)),
+           Paragraph(T("Verdict of the criteria C4–C6: {verdict}.",
+                       verdict=tr(_VERDICT.get(a.verdict, a.verdict))),
                      "ok" if a.verdict.startswith("accepted") else "fail")]
     if a.comparison.recommended:
         best = a.comparison.results[a.comparison.recommended]

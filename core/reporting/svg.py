@@ -408,26 +408,30 @@ def vector_plot(x, y, dx, dy, *, labels: Optional[Sequence[str]] = None, frame=N
 def bar_chart(labels: Sequence[str], values: Sequence[float], *,
               colours: Optional[Sequence[str]] = None, unit: str = "m",
               limit: Optional[float] = None, ylabel: str = "") -> str:
-    """Vertical bar chart of ``values`` (one bar per label) with an optional dashed limit."""
+    """Horizontal bar chart, one labelled bar per value, with an optional dashed limit.
+
+    ``ylabel`` names the measured quantity (shown under the bars with ``unit``).
+    """
     v = np.asarray(values, float)
     n = len(labels)
     top = max(float(np.nanmax(v)) if n else 1.0, limit or 0.0) or 1.0
-    width, height = max(300, 70 * n + 90), 300
-    markup, px, py = axes((70, 20, width - 90, 200), (0, n), (0, top), xlabel="",
-                          ylabel=f"{ylabel} ({unit})", ticks=4)
-    parts = [markup]
+    left, width, row = 170, 330, 24
+    height = n * row + 50
     colours = colours or ["#1f5f8b"] * n
+
+    def px(x):
+        return left + float(x) / top * width
+
+    parts = [f'<line x1="{left}" y1="10" x2="{left}" y2="{n * row + 14}" stroke="#444"/>']
     for i, (lab, val) in enumerate(zip(labels, v)):
-        x0, x1 = float(px(i + 0.15)), float(px(i + 0.85))
-        y0, y1 = float(py(0)), float(py(val))
-        parts.append(f'<rect x="{x0:.1f}" y="{y1:.1f}" width="{x1 - x0:.1f}" '
-                     f'height="{max(y0 - y1, 0):.1f}" fill="{colours[i]}"/>')
-        parts.append(text((x0 + x1) / 2, y1 - 3, f"{val:.3g}", anchor="middle", size=9,
-                          ltr=True))
-        parts.append(f'<g transform="translate({(x0 + x1) / 2:.1f},{y0 + 28:.1f}) '
-                     'rotate(-30)">' + text(0, 0, lab, anchor="end", size=10) + "</g>")
+        y = 14 + i * row
+        parts.append(f'<rect x="{left}" y="{y:.1f}" width="{px(val) - left:.1f}" '
+                     f'height="{row - 8}" fill="{colours[i]}"/>')
+        parts.append(text(left - 6, y + row - 12, lab, anchor="end", size=11, ltr=True))
+        parts.append(text(px(val) + 4, y + row - 12, f"{val:.3g}", size=10, ltr=True))
     if limit:
-        yl = float(py(limit))
-        parts.append(f'<line x1="70" y1="{yl:.1f}" x2="{width - 20}" y2="{yl:.1f}" '
-                     'stroke="#b42318" stroke-dasharray="5 3"/>')
-    return figure(width, height + 30, parts)
+        parts.append(f'<line x1="{px(limit):.1f}" y1="8" x2="{px(limit):.1f}" '
+                     f'y2="{n * row + 16}" stroke="#b42318" stroke-dasharray="5 3"/>')
+    parts.append(text(left + width / 2, n * row + 40, f"{ylabel} ({unit})",
+                      anchor="middle", ltr=True))
+    return figure(left + width + 60, height, parts)
