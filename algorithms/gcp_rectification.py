@@ -416,7 +416,7 @@ class RectifyGcpAlgorithm(_GcpBase):
         return "rectifygcp"
 
     def displayName(self):  # noqa: N802
-        return self.tr("Rectify image with GCPs (polynomial)")
+        return self.tr("Rectify image with GCPs")
 
     def tags(self):
         return self.tr("georeference,georeferencer,gcp,ground control points,polynomial,"
@@ -424,14 +424,16 @@ class RectifyGcpAlgorithm(_GcpBase):
 
     def shortHelpString(self):  # noqa: N802
         return (self.tr(
-            "<p>Rectifies (warps) an image with ground control points and a 2-D polynomial "
-            "of order 1, 2 or 3 through GDAL (same result as <i>gdalwarp -order N</i>), and "
-            "writes the accuracy report of the fit. The input image is never modified: the "
-            "GCPs are attached to an in-memory copy.</p>"
-            "<p><b>Example</b>: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 "
-            "RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html</p>"
+            "<p>Rectifies (warps) an image with ground control points through GDAL: a "
+            "polynomial of order 1–3, a linear, Helmert, projective or thin-plate-spline "
+            "transformation, or the one with the lowest check-point / leave-one-out error "
+            "(as <i>gdalwarp -order N</i> / <i>-tps</i>), and writes the accuracy report. "
+            "The input image is never modified.</p>"
+            "<p><b>Example</b>: INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 "
+            "REFINE=true OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html</p>"
             "<p><b>Parameters</b></p><ul>"
-            "<li><b>Image</b> (INPUT): the raster to rectify.</li>") + self.tr(_HELP_GCP) + self.tr(
+            "<li><b>Image</b> (INPUT): the raster to rectify.</li>")
+            + self.tr(_HELP_GCP) + self.tr(_HELP_TRANSFORM) + self.tr(
             "<li><b>Target CRS</b> (TARGET_CRS, default the GCP CRS): output CRS; GDAL "
             "reprojects after the polynomial.</li>"
             "<li><b>Resampling</b> (RESAMPLING, default 0 = nearest neighbour as in the "
@@ -529,16 +531,17 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
 
     def shortHelpString(self):  # noqa: N802
         return (self.tr(
-            "<p>Judges a set of ground control points without warping: fits polynomials "
-            "of order 1, 2 and 3, reports the residuals and the paper's criteria for the "
-            "chosen order, compares the three orders and recommends one.</p>"
-            "<p><b>Example</b>: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 "
-            "OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv</p>"
+            "<p>Judges a set of ground control points without warping: every "
+            "transformation (polynomial 1–3, linear, Helmert, projective, thin-plate "
+            "spline) side by side by the paper's criteria on check points and "
+            "leave-one-out residuals, with the recommended one and why.</p>"
+            "<p><b>Example</b>: GCP_FILE=scan.tif.points INPUT=scan.tif TRANSFORMATION=8 "
+            "GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv</p>"
             "<p><b>Parameters</b></p><ul>"
             "<li><b>Image</b> (INPUT, optional): gives the image size (GCPs outside it are "
             "an error; quadrants and the plot use its footprint). Without it, give "
             "IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.</li>"
-           ) + self.tr(_HELP_GCP) + self.tr(
+           ) + self.tr(_HELP_GCP) + self.tr(_HELP_TRANSFORM) + self.tr(
             "<li><b>Report</b> (OUTPUT_HTML), <b>residual table</b> (OUTPUT_CSV: one row "
             "per point with v_x, v_y, RMS_i, C_i, pixel residuals, leave-one-out "
             "residuals) and <b>JSON</b> (OUTPUT_JSON: everything, all orders), each "
