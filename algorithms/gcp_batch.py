@@ -113,7 +113,7 @@ class RectifyBatchAlgorithm(GeomaticsAlgorithm):
         kind = kind or f"polynomial{self.parameterAsInt(parameters, self.ORDER, context)}"
         crs = self.parameterAsCrs(parameters, self.GCP_CRS, context)
         pairs = batch.find_images(folder)
-        inputs = {f"IMAGE{k}": p for k, pair in enumerate(pairs) for p in pair}
+        inputs = {f"IMAGE{k}": list(pair) for k, pair in enumerate(pairs)}
         with self.output_contract(parameters, context, [self.OUTPUT_CSV, self.OUTPUT_HTML],
                                   inputs=inputs) as out:
 

@@ -71,3 +71,13 @@ def test_rectifybatch_output_folder_is_not_the_input(qgis_process, tmp_path, sam
     msg = qgis_process.run_expect_failure("geomatics:rectifybatch", INPUT_FOLDER=src,
                                           OUTPUT_FOLDER=src)
     assert "OUTPUT_FOLDER must differ" in msg
+
+
+def test_rectifybatch_summary_on_an_input_points_file_is_refused(qgis_process, tmp_path):
+    src = _folder(tmp_path)
+    pts = src / "img2.tif.points"
+    before = pts.read_text()
+    msg = qgis_process.run_expect_failure("geomatics:rectifybatch", INPUT_FOLDER=src,
+                                          OUTPUT_FOLDER=tmp_path / "out", OUTPUT_CSV=pts)
+    assert "OUTPUT_CSV" in msg and pts.read_text() == before
+    assert not (tmp_path / "out").exists()
