@@ -3,8 +3,6 @@ from __future__ import annotations
 
 import csv
 
-import pytest
-
 from geomatics_toolbox.core.io import gcp as gcp_io
 from geomatics_toolbox.synthetic import gcp as gcp_synthetic
 
@@ -65,8 +63,7 @@ def test_rectifybatch_cli_bad_image_reported_others_done(qgis_process, tmp_path)
     assert not [p for p in out.iterdir() if ".part-" in p.name]
 
 
-@pytest.mark.parametrize("same", [True])
-def test_rectifybatch_output_folder_is_not_the_input(qgis_process, tmp_path, same):
+def test_rectifybatch_output_folder_is_not_the_input(qgis_process, tmp_path):
     src = _folder(tmp_path)
     msg = qgis_process.run_expect_failure("geomatics:rectifybatch", INPUT_FOLDER=src,
                                           OUTPUT_FOLDER=src)
