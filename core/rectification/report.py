@@ -190,7 +190,7 @@ def _criteria(rep: Report, a: Assessment) -> None:
     rows = [[T("C2 RMS_x, RMS_y (divisor n)"), f"{s.rms_x:.3f}, {s.rms_y:.3f} {u}", "–"],
             [T("C2 RMS_T (divisor n)"), f"{s.rms_t:.3f} {u} = {s.rms_t / a.acc.gr:.2f} px",
              "–"],
-            [T("RMS_T with divisor n − N (QGIS Georeferencer)"),
+            [T("RMS_T with divisor n − N ({tool})", tool="QGIS Georeferencer"),
              "–" if s.rms_t_qgis is None else f"{s.rms_t_qgis:.3f} {u}", "–"],
             [T("C4 RMS_T within 4·GR … 6·GR"),
              f"{s.rms_t:.3f} / {s.band[0]:.3f} … {s.band[1]:.3f}", T(_C4[s.c4])],
@@ -368,7 +368,8 @@ def _notes(rep: Report, a: Assessment) -> None:
     for text in ("Pixel convention: GDAL pixel/line, (0, 0) = top-left corner of the image, "
                  "rows grow downwards.",
                  "Residuals v = predicted − given (map units).",
-                 "RMS_T uses the divisor n (paper); the QGIS Georeferencer divides by n − N.",
+                 T("RMS_T uses the divisor n (paper); the {tool} divides by n − N.",
+                   tool="QGIS Georeferencer"),
                  "C6: for normally distributed residuals only about 63 % of the points are "
                  "expected within RMS_T, so the 68 % rule fails about half of the time by "
                  "chance alone; read it together with C4, C5 and the check points."):

@@ -358,6 +358,11 @@ def svg_bars(labels: Sequence, values: Sequence[float], *, xlabel: str = "",
 
 
 # ---------------------------------------------------------------- GCP residual figures
+def data_text(x: float, y: float, value, **kw) -> str:
+    """Return :func:`text` marked as data (``dir="ltr"``: numbers, units, ids)."""
+    return text(x, y, value, ltr=True, **kw).replace("<text ", '<text dir="ltr" ', 1)
+
+
 def _equal_box(dx: float, dy: float, width: float = 440.0, max_height: float = 440.0):
     """``(width, height)`` of a plot box with equal scales on both axes."""
     dx, dy = max(dx, 1e-12), max(dy, 1e-12)
@@ -396,12 +401,12 @@ def vector_plot(x, y, dx, dy, *, labels: Optional[Sequence[str]] = None, frame=N
                      f'<line x1="{x0:.1f}" y1="{y0:.1f}" x2="{x1:.1f}" y2="{y1:.1f}" '
                      'stroke="#b42318" stroke-width="1.5" marker-end="url(#gcp-ah)"/>')
         if labels is not None:
-            parts.append(text(x0 + 4, y0 + 11, labels[i], size=9, ltr=True))
+            parts.append(data_text(x0 + 4, y0 + 11, labels[i], size=9))
     ref = nice_length(lmax) or 1.0
     ref_px = float(px(lo[0] + ref * k) - px(lo[0]))
     parts.append(f'<line x1="80" y1="18" x2="{80 + ref_px:.1f}" y2="18" stroke="#b42318" '
                  'stroke-width="1.5" marker-end="url(#gcp-ah)"/>'
-                 + text(86 + ref_px, 21, f"{ref:g} {unit} (×{k:.4g})", size=10, ltr=True))
+                 + data_text(86 + ref_px, 21, f"{ref:g} {unit} (×{k:.4g})", size=10))
     return figure(int(bw + 100), int(bh + 80), parts)
 
 
@@ -428,10 +433,10 @@ def bar_chart(labels: Sequence[str], values: Sequence[float], *,
         parts.append(f'<rect x="{left}" y="{y:.1f}" width="{px(val) - left:.1f}" '
                      f'height="{row - 8}" fill="{colours[i]}"/>')
         parts.append(text(left - 6, y + row - 12, lab, anchor="end", size=11, ltr=True))
-        parts.append(text(px(val) + 4, y + row - 12, f"{val:.3g}", size=10, ltr=True))
+        parts.append(data_text(px(val) + 4, y + row - 12, f"{val:.3g}", size=10))
     if limit:
         parts.append(f'<line x1="{px(limit):.1f}" y1="8" x2="{px(limit):.1f}" '
                      f'y2="{n * row + 16}" stroke="#b42318" stroke-dasharray="5 3"/>')
-    parts.append(text(left + width / 2, n * row + 40, f"{ylabel} ({unit})",
-                      anchor="middle", ltr=True))
+    parts.append(f'<text x="{left + width / 2:.1f}" y="{n * row + 40}" text-anchor="middle" '
+                 f'{FONT}>{esc(ylabel)} <tspan dir="ltr">({esc(unit)})</tspan></text>')
     return figure(left + width + 60, height, parts)

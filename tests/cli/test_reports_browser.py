@@ -65,12 +65,19 @@ def _gcp_case(tmp_path):
 
 def _gcp_report(tmp_path):
     img, pts = _gcp_case(tmp_path)
-    return dict(GCP_FILE=pts, INPUT=img, ORDER=1, GR=7.28), "OUTPUT_HTML", []
+    return dict(GCP_FILE=pts, INPUT=img, ORDER=1, GR=7.28), "OUTPUT_HTML", \
+        ["residual-vectors", "transform-comparison"]
 
 
 def _rectify(tmp_path):
     img, pts = _gcp_case(tmp_path)
     return dict(INPUT=img, GCP_FILE=pts, ORDER=2, OUTPUT=tmp_path / "rect.tif"), \
+        "OUTPUT_HTML", ["residual-vectors", "transform-comparison"]
+
+
+def _rectify_batch(tmp_path):
+    _gcp_case(tmp_path)
+    return dict(INPUT_FOLDER=tmp_path, OUTPUT_FOLDER=tmp_path / "rectified"), \
         "OUTPUT_HTML", []
 
 
@@ -150,6 +157,7 @@ CASES = {
     "geomatics:dtmaccuracy": _dtm_accuracy,
     "geomatics:lidartodtm": _lidartodtm,
     "geomatics:catalog": _catalog,
+    "geomatics:rectifybatch": _rectify_batch,
 }
 
 #: report algorithms not checked yet, with the reason (remove once migrated)
@@ -167,10 +175,6 @@ KNOWN_GAPS = {
     "geomatics:groundfilteraccuracy": "report still English in ar/fa (title 'Ground filter "
                                       "accuracy', 'Inputs', 'item', 'value'; input path "
                                       "not isolated) — lidar",
-    "geomatics:gcpaccuracyreport": "report still English in ar/fa on the old HTML path "
-                                   "('Verdict for order 1:', 'Recommended order:') — rect",
-    "geomatics:rectifygcp": "report still English in ar/fa on the old HTML path "
-                            "('Verdict for order 2:', 'Recommended order:') — rect",
     "geomatics:slopegroundfilter": "the Vosselman (2000) reference title is prose, not "
                                    "bidi-isolated data (lidar: render references as data)",
     "geomatics:slopethresholdsweep": "the Vosselman (2000) / Sithole & Vosselman (2004) "
