@@ -103,6 +103,129 @@
             <source>map Y</source>
             <translation>Y الخريطة</translation>
         </message>
+        <message>
+            <source>fast</source>
+            <translation>سريعة</translation>
+        </message>
+        <message>
+            <source>slow</source>
+            <translation>بطيئة</translation>
+        </message>
+        <message>
+            <source>finished earlier</source>
+            <translation>انتهت سابقاً</translation>
+        </message>
+        <message>
+            <source>failed</source>
+            <translation>فشلت</translation>
+        </message>
+    </context>
+    <context>
+        <name>CatalogAlgorithm</name>
+        <message>
+            <source>Process a LiDAR tile catalog</source>
+            <translation>معالجة فهرس بلاطات ليدار</translation>
+        </message>
+        <message>
+            <source>Ground filter and DTM over a whole folder of LAS/LAZ tiles, in parallel, without seams.</source>
+            <translation>مرشح الأرض ونموذج التضاريس الرقمي لمجلد كامل من بلاطات LAS/LAZ، بالتوازي ودون فواصل.</translation>
+        </message>
+        <message>
+            <source>Keep the classes already in the files</source>
+            <translation>الإبقاء على الأصناف الموجودة في الملفات</translation>
+        </message>
+        <message>
+            <source>LSQ surfaces, faithful (the paper)</source>
+            <translation>أسطح المربعات الصغرى، مطابقة (الورقة)</translation>
+        </message>
+        <message>
+            <source>LSQ surfaces, improved (ours)</source>
+            <translation>أسطح المربعات الصغرى، محسّنة (نسختنا)</translation>
+        </message>
+        <message>
+            <source>Slope filter, exact (Vosselman 2000)</source>
+            <translation>مرشح الميل، دقيق (Vosselman 2000)</translation>
+        </message>
+        <message>
+            <source>Slope filter, terrain-adaptive</source>
+            <translation>مرشح الميل، متكيّف مع التضاريس</translation>
+        </message>
+        <message>
+            <source>IDW</source>
+            <translation>IDW</translation>
+        </message>
+        <message>
+            <source>Kriging</source>
+            <translation>الكريغينغ</translation>
+        </message>
+        <message>
+            <source>TIN</source>
+            <translation>TIN</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Classifies ground and builds a DTM for every tile of a LiDAR project, each tile read with a buffer of points from its neighbours so that results have no seams at tile edges; tiles run in parallel on Dask, locally or on a cluster. Example: INPUT = a folder of 1 km LAZ tiles, BUFFER = 100 m, CELL_SIZE = 1 m gives classified tiles, one DTM GeoTIFF per tile and a VRT mosaic.&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Tiles&lt;/b&gt; (INPUT): a folder of .las/.laz files, a .vpc virtual point cloud, or files separated by ';'. All tiles must share one CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground filter&lt;/b&gt; (GROUND_FILTER, default the recommended one): 0 keeps the classes already in the files.&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM method&lt;/b&gt; (DTM_METHOD, default IDW) and &lt;b&gt;cell size&lt;/b&gt; (CELL_SIZE, m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Buffer&lt;/b&gt; (BUFFER, m, default 100): must exceed the filter's reach (LSQ tile size × 2, slope radius) and the DTM search distance.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Workers&lt;/b&gt; (WORKERS, default 0 = one per core) and &lt;b&gt;Dask scheduler&lt;/b&gt; (SCHEDULER, e.g. tcp://host:8786; empty = a local cluster).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output folder&lt;/b&gt; (OUTPUT_FOLDER; must not hold the input tiles): &amp;lt;tile&amp;gt;_classified, &amp;lt;tile&amp;gt;_dtm.tif, dtm.vrt, optionally one Cloud-Optimized GeoTIFF (COG), and the HTML report (OUTPUT_HTML) with a map of the tiles by status and time and points per second per worker. A rerun skips finished tiles; cancel keeps finished tiles.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;يصنّف نقاط الأرض وينشئ نموذج تضاريس رقمياً لكل بلاطة في مشروع ليدار، وتُقرأ كل بلاطة مع هامش من نقاط جيرانها كي لا تظهر فواصل عند حواف البلاطات؛ وتُعالَج البلاطات بالتوازي على Dask محلياً أو على عنقود حواسيب. مثال: INPUT = مجلد بلاطات LAZ بطول 1 كم، BUFFER = 100 م، CELL_SIZE = 1 م ينتج بلاطات مصنّفة وملف GeoTIFF للتضاريس لكل بلاطة وفسيفساء VRT.&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;البلاطات&lt;/b&gt; (INPUT): مجلد ملفات ‎.las/.laz أو سحابة نقاط افتراضية ‎.vpc أو ملفات تفصل بينها ';'. يجب أن تشترك كل البلاطات في نظام إحداثيات واحد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;مرشح الأرض&lt;/b&gt; (GROUND_FILTER، الافتراضي هو الموصى به): 0 يُبقي الأصناف الموجودة في الملفات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طريقة نموذج التضاريس&lt;/b&gt; (DTM_METHOD، الافتراضي IDW) و&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الهامش&lt;/b&gt; (BUFFER، م، الافتراضي 100): يجب أن يتجاوز مدى المرشح (ضعف حجم بلاطة المربعات الصغرى، نصف قطر الميل) ومسافة البحث في النموذج.&lt;/li&gt;&lt;li&gt;&lt;b&gt;العمليات العاملة&lt;/b&gt; (WORKERS، الافتراضي 0 = واحدة لكل نواة) و&lt;b&gt;مجدول Dask&lt;/b&gt; (SCHEDULER، مثل tcp://host:8786؛ فارغ = عنقود محلي).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مجلد النواتج&lt;/b&gt; (OUTPUT_FOLDER؛ يجب ألا يحوي بلاطات الإدخال): &amp;lt;tile&amp;gt;_classified و&amp;lt;tile&amp;gt;_dtm.tif وdtm.vrt واختيارياً ملف GeoTIFF واحد محسَّن للسحابة (COG) وتقرير HTML ‏(OUTPUT_HTML) فيه خريطة البلاطات حسب الحالة والزمن وعدد النقاط في الثانية لكل عامل. إعادة التشغيل تتخطى البلاطات المنتهية؛ والإلغاء يُبقي البلاطات المنتهية.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Tiles: folder, .vpc or files separated by ';'</source>
+            <translation>البلاطات: مجلد أو ‎.vpc أو ملفات تفصل بينها ';'</translation>
+        </message>
+        <message>
+            <source>Ground filter</source>
+            <translation>مرشح الأرض</translation>
+        </message>
+        <message>
+            <source>DTM method</source>
+            <translation>طريقة نموذج التضاريس</translation>
+        </message>
+        <message>
+            <source>DTM cell size (m)</source>
+            <translation>حجم خلية نموذج التضاريس (م)</translation>
+        </message>
+        <message>
+            <source>Buffer around each tile (m)</source>
+            <translation>الهامش حول كل بلاطة (م)</translation>
+        </message>
+        <message>
+            <source>Worker processes (0 = one per core)</source>
+            <translation>العمليات العاملة (0 = واحدة لكل نواة)</translation>
+        </message>
+        <message>
+            <source>Dask scheduler address (empty = local)</source>
+            <translation>عنوان مجدول Dask (فارغ = محلي)</translation>
+        </message>
+        <message>
+            <source>Also write one Cloud-Optimized GeoTIFF</source>
+            <translation>كتابة ملف GeoTIFF واحد محسَّن للسحابة أيضاً</translation>
+        </message>
+        <message>
+            <source>Output folder</source>
+            <translation>مجلد النواتج</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Tiles</source>
+            <translation>البلاطات</translation>
+        </message>
+        <message>
+            <source>Failed tiles</source>
+            <translation>البلاطات الفاشلة</translation>
+        </message>
+        <message>
+            <source>Points per second</source>
+            <translation>نقطة في الثانية</translation>
+        </message>
+        <message>
+            <source>Tile {0} failed: {1}</source>
+            <translation>فشلت البلاطة {0}: {1}</translation>
+        </message>
     </context>
     <context>
         <name>DsmAlgorithm</name>
@@ -421,7 +544,7 @@
         </message>
         <message>
             <source>Ground</source>
-            <translation>أرض</translation>
+            <translation>الأرض</translation>
         </message>
         <message>
             <source>Low vegetation</source>

@@ -103,6 +103,129 @@
             <source>map Y</source>
             <translation>Y نقشه</translation>
         </message>
+        <message>
+            <source>fast</source>
+            <translation>سریع</translation>
+        </message>
+        <message>
+            <source>slow</source>
+            <translation>کند</translation>
+        </message>
+        <message>
+            <source>finished earlier</source>
+            <translation>پیش‌تر تمام‌شده</translation>
+        </message>
+        <message>
+            <source>failed</source>
+            <translation>ناموفق</translation>
+        </message>
+    </context>
+    <context>
+        <name>CatalogAlgorithm</name>
+        <message>
+            <source>Process a LiDAR tile catalog</source>
+            <translation>پردازش کاتالوگ کاشی‌های لیدار</translation>
+        </message>
+        <message>
+            <source>Ground filter and DTM over a whole folder of LAS/LAZ tiles, in parallel, without seams.</source>
+            <translation>فیلتر زمین و مدل رقومی زمین برای یک پوشهٔ کامل از کاشی‌های LAS/LAZ، به‌صورت موازی و بدون درز.</translation>
+        </message>
+        <message>
+            <source>Keep the classes already in the files</source>
+            <translation>نگه‌داشتن کلاس‌های موجود در فایل‌ها</translation>
+        </message>
+        <message>
+            <source>LSQ surfaces, faithful (the paper)</source>
+            <translation>سطوح کمترین مربعات، وفادار (مقاله)</translation>
+        </message>
+        <message>
+            <source>LSQ surfaces, improved (ours)</source>
+            <translation>سطوح کمترین مربعات، بهبودیافته (نسخهٔ ما)</translation>
+        </message>
+        <message>
+            <source>Slope filter, exact (Vosselman 2000)</source>
+            <translation>فیلتر شیب، دقیق (Vosselman 2000)</translation>
+        </message>
+        <message>
+            <source>Slope filter, terrain-adaptive</source>
+            <translation>فیلتر شیب، سازگار با عوارض زمین</translation>
+        </message>
+        <message>
+            <source>IDW</source>
+            <translation>IDW</translation>
+        </message>
+        <message>
+            <source>Kriging</source>
+            <translation>کریجینگ</translation>
+        </message>
+        <message>
+            <source>TIN</source>
+            <translation>TIN</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Classifies ground and builds a DTM for every tile of a LiDAR project, each tile read with a buffer of points from its neighbours so that results have no seams at tile edges; tiles run in parallel on Dask, locally or on a cluster. Example: INPUT = a folder of 1 km LAZ tiles, BUFFER = 100 m, CELL_SIZE = 1 m gives classified tiles, one DTM GeoTIFF per tile and a VRT mosaic.&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Tiles&lt;/b&gt; (INPUT): a folder of .las/.laz files, a .vpc virtual point cloud, or files separated by ';'. All tiles must share one CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground filter&lt;/b&gt; (GROUND_FILTER, default the recommended one): 0 keeps the classes already in the files.&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM method&lt;/b&gt; (DTM_METHOD, default IDW) and &lt;b&gt;cell size&lt;/b&gt; (CELL_SIZE, m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Buffer&lt;/b&gt; (BUFFER, m, default 100): must exceed the filter's reach (LSQ tile size × 2, slope radius) and the DTM search distance.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Workers&lt;/b&gt; (WORKERS, default 0 = one per core) and &lt;b&gt;Dask scheduler&lt;/b&gt; (SCHEDULER, e.g. tcp://host:8786; empty = a local cluster).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output folder&lt;/b&gt; (OUTPUT_FOLDER; must not hold the input tiles): &amp;lt;tile&amp;gt;_classified, &amp;lt;tile&amp;gt;_dtm.tif, dtm.vrt, optionally one Cloud-Optimized GeoTIFF (COG), and the HTML report (OUTPUT_HTML) with a map of the tiles by status and time and points per second per worker. A rerun skips finished tiles; cancel keeps finished tiles.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;نقاط زمین را طبقه‌بندی می‌کند و برای هر کاشی یک پروژهٔ لیدار مدل رقومی زمین می‌سازد؛ هر کاشی همراه با حاشیه‌ای از نقاط همسایگانش خوانده می‌شود تا در لبهٔ کاشی‌ها درزی نماند؛ کاشی‌ها به‌صورت موازی روی Dask، محلی یا روی یک خوشه، پردازش می‌شوند. مثال: INPUT = پوشه‌ای از کاشی‌های LAZ یک‌کیلومتری، BUFFER = ۱۰۰ متر، CELL_SIZE = ۱ متر، کاشی‌های طبقه‌بندی‌شده، یک GeoTIFF مدل زمین برای هر کاشی و یک موزاییک VRT می‌دهد.&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;کاشی‌ها&lt;/b&gt; (INPUT): پوشه‌ای از فایل‌های ‎.las/.laz، یک ابر نقاط مجازی ‎.vpc یا فایل‌هایی جداشده با ';'. همهٔ کاشی‌ها باید یک سیستم مختصات داشته باشند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;فیلتر زمین&lt;/b&gt; (GROUND_FILTER، پیش‌فرض: فیلتر توصیه‌شده): 0 کلاس‌های موجود در فایل‌ها را نگه می‌دارد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;روش مدل زمین&lt;/b&gt; (DTM_METHOD، پیش‌فرض IDW) و &lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض ۱).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حاشیه&lt;/b&gt; (BUFFER، متر، پیش‌فرض ۱۰۰): باید از برد فیلتر (دو برابر اندازهٔ کاشی کمترین مربعات، شعاع شیب) و فاصلهٔ جست‌وجوی مدل بیشتر باشد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;پردازه‌های کارگر&lt;/b&gt; (WORKERS، پیش‌فرض 0 = یکی برای هر هسته) و &lt;b&gt;زمان‌بند Dask&lt;/b&gt; (SCHEDULER، مثلاً tcp://host:8786؛ خالی = خوشهٔ محلی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;پوشهٔ خروجی&lt;/b&gt; (OUTPUT_FOLDER؛ نباید کاشی‌های ورودی را در خود داشته باشد): &amp;lt;tile&amp;gt;_classified، &amp;lt;tile&amp;gt;_dtm.tif، dtm.vrt، در صورت نیاز یک GeoTIFF بهینه برای ابر (COG) و گزارش HTML ‏(OUTPUT_HTML) با نقشهٔ کاشی‌ها بر پایهٔ وضعیت و زمان و تعداد نقطه در ثانیه برای هر کارگر. اجرای دوباره کاشی‌های تمام‌شده را رد می‌کند؛ لغو، کاشی‌های تمام‌شده را نگه می‌دارد.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Tiles: folder, .vpc or files separated by ';'</source>
+            <translation>کاشی‌ها: پوشه، ‎.vpc یا فایل‌های جداشده با ';'</translation>
+        </message>
+        <message>
+            <source>Ground filter</source>
+            <translation>فیلتر زمین</translation>
+        </message>
+        <message>
+            <source>DTM method</source>
+            <translation>روش مدل رقومی زمین</translation>
+        </message>
+        <message>
+            <source>DTM cell size (m)</source>
+            <translation>اندازهٔ سلول مدل زمین (متر)</translation>
+        </message>
+        <message>
+            <source>Buffer around each tile (m)</source>
+            <translation>حاشیهٔ پیرامون هر کاشی (متر)</translation>
+        </message>
+        <message>
+            <source>Worker processes (0 = one per core)</source>
+            <translation>پردازه‌های کارگر (0 = یکی برای هر هسته)</translation>
+        </message>
+        <message>
+            <source>Dask scheduler address (empty = local)</source>
+            <translation>نشانی زمان‌بند Dask (خالی = محلی)</translation>
+        </message>
+        <message>
+            <source>Also write one Cloud-Optimized GeoTIFF</source>
+            <translation>نوشتن یک GeoTIFF بهینه برای ابر نیز</translation>
+        </message>
+        <message>
+            <source>Output folder</source>
+            <translation>پوشهٔ خروجی</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Tiles</source>
+            <translation>کاشی‌ها</translation>
+        </message>
+        <message>
+            <source>Failed tiles</source>
+            <translation>کاشی‌های ناموفق</translation>
+        </message>
+        <message>
+            <source>Points per second</source>
+            <translation>نقطه در ثانیه</translation>
+        </message>
+        <message>
+            <source>Tile {0} failed: {1}</source>
+            <translation>کاشی {0} ناموفق بود: {1}</translation>
+        </message>
     </context>
     <context>
         <name>DsmAlgorithm</name>
