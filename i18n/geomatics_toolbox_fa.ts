@@ -121,6 +121,69 @@
         </message>
     </context>
     <context>
+        <name>BuildingsAlgorithm</name>
+        <message>
+            <source>Building footprints with heights</source>
+            <translation>ردپای ساختمان‌ها با ارتفاع</translation>
+        </message>
+        <message>
+            <source>Roof planes found by region growing above the DTM, as footprints with height, area, volume, storeys and roof type.</source>
+            <translation>صفحه‌های بام یافته‌شده با رشد ناحیه بالای مدل رقومی زمین، به‌صورت ردپا با ارتفاع، مساحت، حجم، طبقه‌ها و نوع بام.</translation>
+        </message>
+        <message>
+            <source>buildings,footprints,roofs,lod1,extraction,height,volume,storeys,class 6,lidar</source>
+            <translation>ساختمان‌ها,ردپا,بام‌ها,lod1,استخراج,ارتفاع,حجم,طبقه‌ها,کلاس ۶,لیدار</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Extracts buildings from a ground-classified LAS/LAZ cloud: points more than the minimum height above a TIN of the ground points are fitted with local planes; neighbours whose normals agree within the maximum angle grow into roof patches; patches of at least the minimum patch area become footprints with height (top of roof − ground at the outline), area, volume, storeys (height / 3 m) and roof type (flat / pitched). Trees are rejected because their points are not planar.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz with ground in class 2 (run a ground filter first), projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum height&lt;/b&gt; (MIN_HEIGHT, m, default 2; the spec gives 1.5–2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum normal angle&lt;/b&gt; (MAX_ANGLE, degrees, default 20).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum roof patch area&lt;/b&gt; (MIN_PATCH_AREA, m², default 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum building area&lt;/b&gt; (MIN_AREA, m², default 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 0.5): footprint raster.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Footprints&lt;/b&gt; (OUTPUT, GeoPackage polygons): id, height_m, area_m2, volume_m3, storeys, roof_type, ground_z, roof_z.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified cloud&lt;/b&gt; (OUTPUT_CLOUD, optional LAS/LAZ): the input with roof points set to class 6, every other attribute kept.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_BUILDINGS, TOTAL_AREA (m²), TOTAL_VOLUME (m³).&lt;/p&gt;</source>
+            <translation>&lt;p&gt;ساختمان‌ها را از ابر LAS/LAZ با زمین طبقه‌بندی‌شده استخراج می‌کند: به نقاطی که بیش از کمینهٔ ارتفاع بالای TIN نقاط زمین‌اند صفحه‌های محلی برازش داده می‌شود؛ نقاط همسایه‌ای که بردار عمودشان در حد بیشینهٔ زاویه هم‌جهت است به وصله‌های بام رشد می‌کنند؛ وصله‌هایی که دست‌کم کمینهٔ مساحت را دارند ردپا می‌شوند با ارتفاع (بالای بام − زمین کنار دیوار)، مساحت، حجم، طبقه‌ها (ارتفاع / ۳ متر) و نوع بام (تخت / شیب‌دار). درختان کنار گذاشته می‌شوند چون نقاطشان صفحه‌ای نیست.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): فایل ‎.las/.laz با زمین در کلاس ۲ (نخست یک فیلتر زمین اجرا کنید)، در سیستم تصویر مسطح بر حسب متر.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های زمین&lt;/b&gt; (GROUND_CLASSES، پیش‌فرض &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کمینهٔ ارتفاع&lt;/b&gt; (MIN_HEIGHT، متر، پیش‌فرض ۲؛ مشخصات ۱٫۵ تا ۲ را می‌دهد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بیشینهٔ زاویهٔ بردار عمود&lt;/b&gt; (MAX_ANGLE، درجه، پیش‌فرض ۲۰).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کمینهٔ مساحت وصلهٔ بام&lt;/b&gt; (MIN_PATCH_AREA، مترمربع، پیش‌فرض ۱۵).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کمینهٔ مساحت ساختمان&lt;/b&gt; (MIN_AREA، مترمربع، پیش‌فرض ۱۵).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض ۰٫۵): رستر ردپا.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ردپاها&lt;/b&gt; (OUTPUT، چندضلعی GeoPackage): id، height_m، area_m2، volume_m3، storeys، roof_type، ground_z، roof_z.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر طبقه‌بندی‌شده&lt;/b&gt; (OUTPUT_CLOUD، LAS/LAZ اختیاری): ورودی با نقاط بام در کلاس ۶ و همهٔ ویژگی‌های دیگر دست‌نخورده.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: N_BUILDINGS، TOTAL_AREA (مترمربع)، TOTAL_VOLUME (مترمکعب).&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>ابر نقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Ground classes</source>
+            <translation>کلاس‌های زمین</translation>
+        </message>
+        <message>
+            <source>Minimum height above ground (m)</source>
+            <translation>کمینهٔ ارتفاع از زمین (متر)</translation>
+        </message>
+        <message>
+            <source>Maximum angle between roof normals (°)</source>
+            <translation>بیشینهٔ زاویهٔ میان بردارهای عمود بام (درجه)</translation>
+        </message>
+        <message>
+            <source>Minimum roof patch area (m²)</source>
+            <translation>کمینهٔ مساحت وصلهٔ بام (مترمربع)</translation>
+        </message>
+        <message>
+            <source>Minimum building area (m²)</source>
+            <translation>کمینهٔ مساحت ساختمان (مترمربع)</translation>
+        </message>
+        <message>
+            <source>Cell size (m)</source>
+            <translation>اندازهٔ سلول (متر)</translation>
+        </message>
+        <message>
+            <source>Building footprints</source>
+            <translation>ردپای ساختمان‌ها</translation>
+        </message>
+        <message>
+            <source>Classified cloud (class 6 = building)</source>
+            <translation>ابر طبقه‌بندی‌شده (کلاس ۶ = ساختمان)</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
         <name>CatalogAlgorithm</name>
         <message>
             <source>Process a LiDAR tile catalog</source>
@@ -391,6 +454,69 @@
         <message>
             <source>N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; {} outside, {} on nodata</source>
             <translation>N = {}، RMSE = {:.4f} متر، ME = {:.4f} متر، r = {:.5f}؛ {} بیرون از مدل، {} روی nodata</translation>
+        </message>
+    </context>
+    <context>
+        <name>ElevationChangeAlgorithm</name>
+        <message>
+            <source>Elevation change between two epochs (cut / fill)</source>
+            <translation>تغییر ارتفاع میان دو دوره (خاک‌برداری / خاک‌ریزی)</translation>
+        </message>
+        <message>
+            <source>Difference of two surveys with a 95 % level of detection, and cut and fill polygons with volumes.</source>
+            <translation>تفاضل دو برداشت با حد آشکارسازی ۹۵ درصد، و چندضلعی‌های خاک‌برداری و خاک‌ریزی با حجم آن‌ها.</translation>
+        </message>
+        <message>
+            <source>change,difference,dod,cut,fill,volume,epochs,lod,monitoring,lidar,dtm,dsm</source>
+            <translation>تغییر,تفاضل,dod,خاک‌برداری,خاک‌ریزی,حجم,دوره‌ها,حد آشکارسازی,پایش,لیدار,dtm,dsm</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Subtracts an earlier surface from a later one (two DTM/DSM rasters on one grid, or two LAS/LAZ clouds gridded by TIN on a common grid) and keeps the change beyond the level of detection LoD95 = 1.96·√(σ₁² + σ₂²), σ being each epoch's vertical accuracy (e.g. the RMSE of the DTM accuracy tool). Significant cells form cut and fill polygons with area, mean change and volume.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Before&lt;/b&gt; (INPUT) and &lt;b&gt;After&lt;/b&gt; (INPUT_AFTER): two GeoTIFFs on the same grid, or two LAS/LAZ clouds in one CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;σ₁, σ₂&lt;/b&gt; (SIGMA1, SIGMA2, m, default 0.1): vertical accuracy of each epoch.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes&lt;/b&gt; (CLASSES, clouds only, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, clouds only, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum area&lt;/b&gt; (MIN_AREA, m², default 0 = eight cells): smaller regions are dropped (noise alone exceeds the LoD in 5 % of cells).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Difference&lt;/b&gt; (OUTPUT): GeoTIFF after − before (m).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Change polygons&lt;/b&gt; (OUTPUT_POLYGONS, GeoPackage): id, kind (cut / fill), area_m2, mean_change_m, volume_m3.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: LOD, FILL_VOLUME, CUT_VOLUME (m³), N_REGIONS.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;سطح پیشین را از سطح پسین کم می‌کند (دو رستر DTM/DSM روی یک شبکه، یا دو ابر LAS/LAZ که با TIN روی شبکه‌ای مشترک شبکه‌بندی می‌شوند) و تغییری را نگه می‌دارد که از حد آشکارسازی LoD95 = 1.96·√(σ₁² + σ₂²) بیشتر است؛ σ دقت ارتفاعی هر دوره است (مثلاً RMSE ابزار دقت مدل رقومی زمین). سلول‌های معنادار چندضلعی‌های خاک‌برداری و خاک‌ریزی با مساحت، میانگین تغییر و حجم می‌سازند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;پیش از&lt;/b&gt; (INPUT) و &lt;b&gt;پس از&lt;/b&gt; (INPUT_AFTER): دو GeoTIFF روی یک شبکه، یا دو ابر LAS/LAZ در یک سیستم مختصات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;σ₁ و σ₂&lt;/b&gt; (SIGMA1، SIGMA2، متر، پیش‌فرض 0.1): دقت ارتفاعی هر دوره.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌ها&lt;/b&gt; (CLASSES، فقط برای ابرها، پیش‌فرض &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، فقط برای ابرها، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کمینهٔ مساحت&lt;/b&gt; (MIN_AREA، مترمربع، پیش‌فرض 0 = هشت سلول): نواحی کوچک‌تر حذف می‌شوند (نویز به‌تنهایی در ۵ درصد سلول‌ها از حد آشکارسازی می‌گذرد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تفاضل&lt;/b&gt; (OUTPUT): GeoTIFF پس از − پیش از (متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;چندضلعی‌های تغییر&lt;/b&gt; (OUTPUT_POLYGONS، GeoPackage): id، kind (خاک‌برداری / خاک‌ریزی)، area_m2، mean_change_m، volume_m3.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: LOD، FILL_VOLUME، CUT_VOLUME (مترمکعب)، N_REGIONS.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Before (raster or point cloud)</source>
+            <translation>پیش از (رستر یا ابر نقاط)</translation>
+        </message>
+        <message>
+            <source>After (raster or point cloud)</source>
+            <translation>پس از (رستر یا ابر نقاط)</translation>
+        </message>
+        <message>
+            <source>Vertical accuracy before σ₁ (m)</source>
+            <translation>دقت ارتفاعی پیش از σ₁ (متر)</translation>
+        </message>
+        <message>
+            <source>Vertical accuracy after σ₂ (m)</source>
+            <translation>دقت ارتفاعی پس از σ₂ (متر)</translation>
+        </message>
+        <message>
+            <source>Classes used (clouds)</source>
+            <translation>کلاس‌های به‌کاررفته (برای ابرها)</translation>
+        </message>
+        <message>
+            <source>Cell size (m, clouds)</source>
+            <translation>اندازهٔ سلول (متر، برای ابرها)</translation>
+        </message>
+        <message>
+            <source>Minimum region area (m², 0 = 8 cells)</source>
+            <translation>کمینهٔ مساحت ناحیه (مترمربع، 0 = هشت سلول)</translation>
+        </message>
+        <message>
+            <source>Difference</source>
+            <translation>تفاضل</translation>
+        </message>
+        <message>
+            <source>Change polygons</source>
+            <translation>چندضلعی‌های تغییر</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
         </message>
     </context>
     <context>
@@ -1030,6 +1156,176 @@
         </message>
     </context>
     <context>
+        <name>LidarQaAlgorithm</name>
+        <message>
+            <source>Point density and quality (with parameter advice)</source>
+            <translation>تراکم و کیفیت نقاط (با توصیهٔ پارامترها)</translation>
+        </message>
+        <message>
+            <source>Density rasters, gaps, duplicates and noise of a cloud, and the filter window and DTM cell its density supports.</source>
+            <translation>رسترهای تراکم، شکاف‌ها، نقاط تکراری و نویز یک ابر، و پنجرهٔ فیلتر و سلول مدل رقومی زمین که تراکم آن پشتیبانی می‌کند.</translation>
+        </message>
+        <message>
+            <source>density,quality,qa,lasinfo,gaps,duplicates,noise,scan angle,returns,advice,lidar</source>
+            <translation>تراکم,کیفیت,qa,lasinfo,شکاف‌ها,تکراری‌ها,نویز,زاویهٔ اسکن,بازتاب‌ها,توصیه,لیدار</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Checks a LAS/LAZ cloud before processing: density rasters of all returns, last returns and ground points, cells with returns but no ground (gaps), histograms of returns and classes, duplicate points, the share of noise (classes 7, 18) and the scan-angle range. It then states which settings the density supports: the ground filter window (1–2 pts/m² → 2 m), the DTM cell size, LOD1 only below 1 pt/m² (about 0.6 pts/m² in the ELiT study), and the radius and tile of our slope-based and LSQ filters.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz in a projected CRS (metres); a cloud in degrees is refused.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 5, &amp;gt; 0): cell of the density rasters.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Density rasters&lt;/b&gt; (OUTPUT): GeoTIFF with four bands: all returns, last returns, ground (pts/m²), gap (1/0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML report with maps and advice.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: DENSITY, GROUND_DENSITY (pts/m²), GAP_SHARE, DUPLICATES, NOISE_SHARE, GROUND_WINDOW (m), DTM_CELL (m).&lt;/p&gt;</source>
+            <translation>&lt;p&gt;یک ابر LAS/LAZ را پیش از پردازش بررسی می‌کند: رسترهای تراکم همهٔ بازتاب‌ها، آخرین بازتاب‌ها و نقاط زمین، سلول‌های دارای بازتاب ولی بدون زمین (شکاف‌ها)، هیستوگرام بازتاب‌ها و کلاس‌ها، نقاط تکراری، سهم نویز (کلاس‌های ۷ و ۱۸) و بازهٔ زاویهٔ اسکن. سپس می‌گوید تراکم داده چه تنظیماتی را پشتیبانی می‌کند: پنجرهٔ فیلتر زمین (۱ تا ۲ نقطه بر مترمربع ← ۲ متر)، اندازهٔ سلول مدل رقومی زمین، فقط LOD1 زیر ۱ نقطه بر مترمربع (حدود ۰٫۶ در مطالعهٔ ELiT)، و شعاع و کاشی فیلترهای شیب‌مبنا و LSQ ما.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): فایل ‎.las/.laz در سیستم تصویر مسطح (متر)؛ ابر بر حسب درجه پذیرفته نمی‌شود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض ۵، &amp;gt; 0): سلول رسترهای تراکم.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های زمین&lt;/b&gt; (GROUND_CLASSES، پیش‌فرض &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;رسترهای تراکم&lt;/b&gt; (OUTPUT): GeoTIFF با چهار باند: همهٔ بازتاب‌ها، آخرین بازتاب‌ها، زمین (نقطه بر مترمربع)، شکاف (1/0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): گزارش HTML با نقشه‌ها و توصیه‌ها.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: DENSITY، GROUND_DENSITY (نقطه بر مترمربع)، GAP_SHARE، DUPLICATES، NOISE_SHARE، GROUND_WINDOW (متر)، DTM_CELL (متر).&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>ابر نقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Cell size (m)</source>
+            <translation>اندازهٔ سلول (متر)</translation>
+        </message>
+        <message>
+            <source>Ground classes</source>
+            <translation>کلاس‌های زمین</translation>
+        </message>
+        <message>
+            <source>Density rasters</source>
+            <translation>رسترهای تراکم</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
+        <name>LidarToDtmAlgorithm</name>
+        <message>
+            <source>LiDAR to DTM with accuracy</source>
+            <translation>از LiDAR تا DTM همراه با دقت</translation>
+        </message>
+        <message>
+            <source>lidar,ground,filter,dtm,dem,idw,accuracy,rmse,check points,chain,all-or-nothing</source>
+            <translation>لیدار,زمین,فیلتر,مدل رقومی زمین,dem,idw,دقت,rmse,نقاط کنترل,زنجیره,همه یا هیچ</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Classifies the ground of a LiDAR point cloud, interpolates a DTM from the ground points and measures its accuracy against check points, in one step. It writes all its outputs or none: when any step fails or is cancelled, no classified cloud, DTM or report is left behind.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html → the classified cloud, the DTM and the RMSE.&lt;/p&gt;&lt;p&gt;The steps are the recommended ground filter (the improved least-squares filter where the recommended one is not installed), the IDW DTM (power 3, 12 neighbours by default: the seed paper's best setting) and the DTM accuracy; the results equal those of the three algorithms run one after another. Before anything is written the CRS, the check points (no duplicates, inside the cloud's extent) and every output path are checked. The graphical model of the same name is its editable counterpart, without this guarantee.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt;: .las or .laz in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (default yes), with its search cell (m, default 5) and depth (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM cell size&lt;/b&gt; (m, default 1), &lt;b&gt;IDW power&lt;/b&gt; (default 3), &lt;b&gt;neighbours&lt;/b&gt; (default 12), &lt;b&gt;fill data gaps&lt;/b&gt; (default no) and a &lt;b&gt;CRS&lt;/b&gt; for a cloud without a CRS record.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check points&lt;/b&gt;: a point layer (heights from a field or the geometry Z) or a CSV/TXT file (id, x, y, z) with its CRS; reprojection of x, y on request; bilinear (default) or nearest-cell sampling.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud, DTM (GeoTIFF), check-point residuals and the DTM accuracy report; optional ground filter report and DTM report.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;زمین یک ابر نقاط LiDAR را طبقه‌بندی می‌کند، از نقاط زمین یک مدل رقومی زمین (DTM) درون‌یابی می‌کند و دقت آن را با نقاط کنترل می‌سنجد، همه در یک گام. همهٔ خروجی‌هایش را می‌نویسد یا هیچ‌کدام را: اگر هر گامی شکست بخورد یا لغو شود، هیچ ابر طبقه‌بندی‌شده، DTM یا گزارشی باقی نمی‌ماند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: &lt;span dir="ltr"&gt;INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html&lt;/span&gt; ← ابر طبقه‌بندی‌شده، DTM و RMSE.&lt;/p&gt;&lt;p&gt;گام‌ها عبارت‌اند از فیلتر زمین پیشنهادی (یا فیلتر کمترین مربعات بهبودیافته در جایی که پیشنهادی نصب نیست)، DTM به روش IDW (توان 3 و 12 همسایه به‌طور پیش‌فرض: بهترین تنظیم مقالهٔ مرجع) و دقت DTM؛ نتایج با اجرای پشت‌سرهم سه الگوریتم برابرند. پیش از نوشتن هر چیز، سیستم مختصات، نقاط کنترل (بدون تکرار و درون گسترهٔ ابر) و همهٔ مسیرهای خروجی بررسی می‌شوند. مدل گرافیکی هم‌نام، همتای ویرایش‌پذیر آن است، اما بدون این تضمین.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt;: فایل ‎.las‏ یا ‎.laz‏ در سیستم مختصات تصویری (متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابتدا نقاط پرت پایین حذف شوند&lt;/b&gt; (پیش‌فرض بله)، با سلول جست‌وجو (متر، پیش‌فرض 5) و عمق (متر، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول DTM&lt;/b&gt; (متر، پیش‌فرض 1)، &lt;b&gt;توان IDW&lt;/b&gt; (پیش‌فرض 3)، &lt;b&gt;تعداد همسایه‌ها&lt;/b&gt; (پیش‌فرض 12)، &lt;b&gt;پر کردن شکاف‌های داده&lt;/b&gt; (پیش‌فرض خیر) و یک &lt;b&gt;سیستم مختصات&lt;/b&gt; برای ابری بدون رکورد سیستم مختصات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط کنترل&lt;/b&gt;: یک لایهٔ نقطه‌ای (ارتفاع از یک فیلد یا Z هندسه) یا یک فایل CSV/TXT ‏(id, x, y, z) با سیستم مختصاتش؛ تبدیل x و y در صورت درخواست؛ نمونه‌برداری دوخطی (پیش‌فرض) یا نزدیک‌ترین سلول.&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی‌ها&lt;/b&gt;: ابر طبقه‌بندی‌شده، DTM ‏(GeoTIFF)، باقیمانده‌های نقاط کنترل و گزارش دقت DTM؛ و به‌طور اختیاری گزارش فیلتر زمین و گزارش DTM.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>DTM cell size (m)</source>
+            <translation>اندازهٔ سلول مدل زمین (متر)</translation>
+        </message>
+        <message>
+            <source>IDW power</source>
+            <translation>توان IDW</translation>
+        </message>
+        <message>
+            <source>IDW neighbours</source>
+            <translation>تعداد همسایه‌های IDW</translation>
+        </message>
+        <message>
+            <source>Fill data gaps in the DTM (interpolate far from ground points)</source>
+            <translation>پر کردن شکاف‌های داده در DTM (درون‌یابی دور از نقاط زمین)</translation>
+        </message>
+        <message>
+            <source>CRS override for a cloud without a CRS record</source>
+            <translation>سیستم مختصات جایگزین برای ابری بدون رکورد سیستم مختصات</translation>
+        </message>
+        <message>
+            <source>Check points (point layer)</source>
+            <translation>نقاط چک (لایهٔ نقطه‌ای)</translation>
+        </message>
+        <message>
+            <source>Height field (empty = geometry Z)</source>
+            <translation>فیلد ارتفاع (خالی = Z هندسه)</translation>
+        </message>
+        <message>
+            <source>Id field</source>
+            <translation>فیلد شناسه</translation>
+        </message>
+        <message>
+            <source>Check points (CSV/TXT file: id,x,y,z)</source>
+            <translation>نقاط کنترل (فایل CSV/TXT: ‏id,x,y,z)</translation>
+        </message>
+        <message>
+            <source>CRS of the check point file (default: DTM CRS)</source>
+            <translation>سیستم مختصات پروندهٔ نقاط چک (پیش‌فرض: سیستم مختصات DTM)</translation>
+        </message>
+        <message>
+            <source>Reproject check points to the DTM CRS</source>
+            <translation>بازتصویر نقاط چک به سیستم مختصات DTM</translation>
+        </message>
+        <message>
+            <source>Sampling</source>
+            <translation>روش نمونه‌برداری</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>دوخطی</translation>
+        </message>
+        <message>
+            <source>Nearest cell</source>
+            <translation>نزدیک‌ترین سلول</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>ابر نقاط طبقه‌بندی‌شده</translation>
+        </message>
+        <message>
+            <source>DTM</source>
+            <translation>مدل رقومی زمین (DTM)</translation>
+        </message>
+        <message>
+            <source>Check-point residuals</source>
+            <translation>باقیمانده‌های نقاط کنترل</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>DTM accuracy report</source>
+            <translation>گزارش دقت مدل رقومی زمین</translation>
+        </message>
+        <message>
+            <source>Ground filter report</source>
+            <translation>گزارش فیلتر زمین</translation>
+        </message>
+        <message>
+            <source>DTM report</source>
+            <translation>گزارش مدل رقومی زمین</translation>
+        </message>
+        <message>
+            <source>Ground points</source>
+            <translation>نقاط زمینی</translation>
+        </message>
+        <message>
+            <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
+            <translation>ابر نقاط رکورد سیستم مختصات ندارد و سیستم مختصاتی هم داده نشده است؛ پارامتر CRS را تنظیم کنید (مثلاً EPSG:32632). هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>None of the {n} check points lies within the point cloud's extent (x {x0:.1f}–{x1:.1f}, y {y0:.1f}–{y1:.1f}); are they in another CRS? No output was written.</source>
+            <translation>هیچ‌یک از {n} نقطهٔ کنترل درون گسترهٔ ابر نقاط نیست (x ‏{x0:.1f}–{x1:.1f}، y ‏{y0:.1f}–{y1:.1f})؛ آیا در سیستم مختصات دیگری‌اند؟ هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>Choose the point cloud (a .las or .laz file).</source>
+            <translation>ابر نقاط را انتخاب کنید (فایل ‎.las‏ یا ‎.laz‏).</translation>
+        </message>
+        <message>
+            <source>Choose an output file for {}.</source>
+            <translation>یک فایل خروجی برای {} انتخاب کنید.</translation>
+        </message>
+        <message>
+            <source>Cell size must be &gt; 0 (metres); give e.g. 1.0.</source>
+            <translation>اندازهٔ سلول باید &gt; 0 (متر) باشد؛ مثلاً 1.0 بدهید.</translation>
+        </message>
+        <message>
+            <source>The ground filter found no ground point; no DTM can be interpolated. No output was written.</source>
+            <translation>فیلتر زمین هیچ نقطهٔ زمینی نیافت؛ DTM قابل درون‌یابی نیست. هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+    </context>
+    <context>
         <name>LsqGroundFilterAlgorithm</name>
         <message>
             <source>Ground filter (least-squares polynomial)</source>
@@ -1530,6 +1826,41 @@
         <message>
             <source>&lt;li&gt;&lt;b&gt;Sweep table&lt;/b&gt; (OUTPUT_CSV): one row per setting: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): the table, the best setting and a chart of the errors against θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified with the best setting&lt;/b&gt; (OUTPUT, optional LAS/LAZ).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: BEST_RADIUS, BEST_SLOPE, BEST_HEIGHT_TOLERANCE, BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.&lt;/p&gt;</source>
             <translation>&lt;li&gt;&lt;b&gt;جدول پیمایش&lt;/b&gt; (OUTPUT_CSV): یک سطر برای هر تنظیم: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML): جدول، بهترین تنظیم و نمودار خطاها بر حسب θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقه‌بندی‌شده با بهترین تنظیم&lt;/b&gt; (OUTPUT، LAS/LAZ اختیاری).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: BEST_RADIUS، BEST_SLOPE، BEST_HEIGHT_TOLERANCE، BEST_TYPE1، BEST_TYPE2، BEST_TOTAL، BEST_KAPPA (درصد)، N_SETTINGS.&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>TinDtmAlgorithm</name>
+        <message>
+            <source>DTM by TIN (Delaunay linear interpolation)</source>
+            <translation>مدل رقومی زمین با TIN (درون‌یابی خطی دلونی)</translation>
+        </message>
+        <message>
+            <source>Terrain raster from the planes of the ground points' Delaunay triangles, gaps left empty.</source>
+            <translation>رستر زمین از صفحه‌های مثلث‌های دلونی نقاط زمین، با شکاف‌های خالی.</translation>
+        </message>
+        <message>
+            <source>dtm,dem,tin,delaunay,triangulation,linear,gdal_grid,blast2dem,lidar,ground,raster</source>
+            <translation>مدل رقومی زمین,dem,tin,دلونی,مثلث‌بندی,خطی,gdal_grid,blast2dem,لیدار,زمین,رستر</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Triangulates the ground points of a LAS/LAZ file (Delaunay, Qhull) and gives every cell centre the height of the plane of its triangle — the TIN DTM most practitioners default to, the method of &lt;code&gt;gdal_grid -a linear&lt;/code&gt;. Triangles with an edge longer than the maximum edge are dropped, so gaps under buildings or water stay nodata unless you fill them; cells outside the points' convex hull are always nodata.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=0.5 MAX_EDGE=0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
+            <translation>&lt;p&gt;نقاط زمین یک فایل LAS/LAZ را مثلث‌بندی می‌کند (دلونی، Qhull) و به مرکز هر سلول ارتفاع صفحهٔ مثلث آن را می‌دهد — مدل رقومی زمین TIN که بیشتر کاربران به‌طور پیش‌فرض به کار می‌برند، همان روش &lt;code&gt;gdal_grid -a linear&lt;/code&gt;. مثلث‌هایی که ضلعی بلندتر از بیشینهٔ طول دارند حذف می‌شوند، بنابراین شکاف‌های زیر ساختمان‌ها یا روی آب بدون داده می‌مانند مگر آنکه پر کردن آن‌ها را بخواهید؛ سلول‌های بیرون از پوستهٔ محدب نقاط همیشه بدون داده‌اند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=0.5 MAX_EDGE=0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Maximum triangle edge&lt;/b&gt; (MAX_EDGE, m, default 0 = automatic: ten mean point spacings, at least four cells): longer triangles are nodata.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill gaps&lt;/b&gt; (FILL_GAPS, default no): keep every triangle, bridging gaps inside the hull with flat facets.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs also the numbers N_POINTS, N_TRIANGLES, VALID_CELLS, NODATA_CELLS.&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;بیشینهٔ طول ضلع مثلث&lt;/b&gt; (MAX_EDGE، متر، پیش‌فرض 0 = خودکار: ده برابر فاصلهٔ میانگین نقاط، دست‌کم چهار سلول): مثلث‌های بلندتر بدون داده می‌مانند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;پر کردن شکاف‌ها&lt;/b&gt; (FILL_GAPS، پیش‌فرض خیر): همهٔ مثلث‌ها نگه داشته می‌شوند و شکاف‌های درون پوسته با وجوه تخت پر می‌شوند.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد N_POINTS، N_TRIANGLES، VALID_CELLS و NODATA_CELLS نیز خروجی داده می‌شوند.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Maximum triangle edge (m, 0 = auto)</source>
+            <translation>بیشینهٔ طول ضلع مثلث (متر، 0 = خودکار)</translation>
+        </message>
+        <message>
+            <source>Fill gaps (keep long triangles)</source>
+            <translation>پر کردن شکاف‌ها (نگه داشتن مثلث‌های بلند)</translation>
+        </message>
+        <message>
+            <source>TIN DTM</source>
+            <translation>مدل رقومی زمین TIN</translation>
         </message>
     </context>
     <context>
