@@ -12,7 +12,7 @@ from qgis.core import (
 
 from ..core.io.points import write_grid
 from ..core.lidar.qa import check_projected
-from ..core.reporting import Figure, KeyValues, Paragraph, Report
+from ..core.reporting import Figure, KeyValues, Paragraph, Report, T
 from ..core.reporting.svg import svg_raster
 from ..core.terrain import tin as core_tin
 from .terrain import _HELP_COMMON, _check_tif, _GridAlgorithm
@@ -100,8 +100,9 @@ class TinDtmAlgorithm(_GridAlgorithm):
 
     @staticmethod
     def report(res, path, pts, grid, stats) -> Report:
-        rep = Report("TIN DTM report", citation="Delaunay (1934); Barber et al. (1996), "
-                     "Qhull; same method as gdal_grid -a linear.")
+        rep = Report("TIN DTM report", citation=T(
+            "Delaunay (1934); Barber et al. (1996), {library}; same method as {command}.",
+            library="Qhull", command="gdal_grid -a linear"))
         rep.section("Input and grid").add(KeyValues([
             ("Input", os.path.basename(path)),
             ("Points in file", pts.n_total),

@@ -29,6 +29,7 @@ ALLOWED = {
     # authors cited in the reports (names are not translated)
     "vosselman", "sithole", "khalil", "shepard", "matheron", "cressie", "kraus", "gülch",
     "axelsson", "zhang", "kriging", "tan", "cos", "sin", "log", "exp",
+    "elit", "pts", "pingel", "kostrikov", "rabbani",   # software, units, authors
 }
 
 

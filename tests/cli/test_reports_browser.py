@@ -142,6 +142,36 @@ def _lidartodtm(tmp_path):
             ["residual-map", "error-vs-height"])
 
 
+def _tin(tmp_path):
+    return dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "tin.tif"), "OUTPUT_HTML", ["dtm-map"]
+
+
+def _lidarqa(tmp_path):
+    return (dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "density.tif"), "OUTPUT_HTML",
+            ["density-map", "ground-density-map", "gap-map", "returns-histogram",
+             "classes-histogram"])
+
+
+def _buildings(tmp_path):
+    return (dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "footprints.gpkg"), "OUTPUT_HTML",
+            ["footprint-map"])
+
+
+def _change(tmp_path):
+    """Two epochs: the DTM and the same DTM with a 2 m fill on a 20 m x 20 m square."""
+    from geomatics_toolbox.core.io.raster import read_raster, write_geotiff
+    before = _dtm(tmp_path)
+    after = tmp_path / "after.tif"
+    if not after.exists():
+        r = read_raster(str(before))
+        data = r.masked()
+        data[10:30, 10:30] += 2.0
+        write_geotiff(str(after), data, geotransform=r.geotransform, crs=r.crs)
+    return (dict(INPUT=before, INPUT_AFTER=after, SIGMA1=0.1, SIGMA2=0.1,
+                 OUTPUT=tmp_path / "diff.tif"), "OUTPUT_HTML",
+            ["change-map", "change-histogram"])
+
+
 #: algorithm id -> builder(tmp_path) -> (parameters, report output name, figure ids)
 CASES = {
     "geomatics:gsdcalculator": _gsd,
@@ -158,15 +188,14 @@ CASES = {
     "geomatics:lidartodtm": _lidartodtm,
     "geomatics:catalog": _catalog,
     "geomatics:rectifybatch": _rectify_batch,
+    "geomatics:tindtm": _tin,
+    "geomatics:lidarqa": _lidarqa,
+    "geomatics:buildings": _buildings,
+    "geomatics:elevationchange": _change,
 }
 
 #: report algorithms not checked yet, with the reason (remove once migrated)
-PENDING = {
-    "geomatics:tindtm": "new (products): translations checked in tests/core",
-    "geomatics:lidarqa": "new (products): translations checked in tests/core",
-    "geomatics:elevationchange": "new (products): translations checked in tests/core",
-    "geomatics:buildings": "new (products): translations checked in tests/core",
-}
+PENDING: dict = {}
 
 #: checked reports with a known, reported gap (xfail, not strict, so a fix just passes)
 KNOWN_GAPS = {
