@@ -14,6 +14,7 @@ def all_algorithms():
     from .filter_accuracy import GroundFilterAccuracyAlgorithm
     from .gcp_batch import RectifyBatchAlgorithm
     from .gcp_rectification import GcpAccuracyReportAlgorithm, RectifyGcpAlgorithm
+    from .ground_filter import GroundFilterAlgorithm, PtdGroundFilterAlgorithm
     from .gsd_calculator import GsdBatchAlgorithm, GsdCalculatorAlgorithm
     from .lidar_qa import LidarQaAlgorithm
     from .lidar_to_dtm import LidarToDtmAlgorithm
@@ -42,4 +43,6 @@ def all_algorithms():
         LidarQaAlgorithm(),
         ElevationChangeAlgorithm(),
         BuildingsAlgorithm(),
+        GroundFilterAlgorithm(),
+        PtdGroundFilterAlgorithm(),
     ]

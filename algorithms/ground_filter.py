@@ -1,0 +1,287 @@
+"""Recommended ground filter and progressive TIN densification (Processing algorithms)."""
+from __future__ import annotations
+
+from qgis.core import (
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+)
+from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
+
+from ..core.lidar import ptd as core_ptd
+from ..core.lidar import recommended as core_rec
+from ..core.lidar.pipeline import SelectionOptions, classify_file
+from ..core.progress import Monitor
+from .lidar_common import LidarFilterMixin
+
+LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
+LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
+
+
+class _GroundCommon(LidarFilterMixin):
+    """Input, outputs, output numbers and the run shared by both filters."""
+
+    INPUT = "INPUT"
+    OUTPUT = "OUTPUT"
+    GROUND_OUTPUT = "GROUND_OUTPUT"
+    OUTPUT_HTML = "OUTPUT_HTML"
+    KEEP_NOISE = "KEEP_NOISE"
+
+    def tags(self):
+        return self.tr("lidar,las,laz,ground,filter,classification,dtm,bare earth,"
+                       "point cloud").split(",")
+
+    def add_input(self):
+        self.add(QgsProcessingParameterFile(
+            self.INPUT, self.tr("Point cloud (LAS/LAZ)"),
+            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_IN_FILTER))
+
+    def add_outputs(self):
+        self.add(QgsProcessingParameterBoolean(
+            self.KEEP_NOISE, self.tr("Keep existing noise classes (7, 18)"), True),
+            advanced=True)
+        self.add_report_language()
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT, self.tr("Classified point cloud"), LAS_OUT_FILTER))
+        self.add(QgsProcessingParameterFileDestination(
+            self.GROUND_OUTPUT, self.tr("Ground points"), LAS_OUT_FILTER, optional=True,
+            createByDefault=False))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            optional=True, createByDefault=False))
+        for name, label in (("N_POINTS", self.tr("Points read")),
+                            ("N_GROUND", self.tr("Ground points (class 2)")),
+                            ("N_NONGROUND", self.tr("Non-ground points (class 1)")),
+                            ("N_NOISE", self.tr("Low outliers (class 7)")),
+                            ("POINTS_PER_SECOND", self.tr("Filter speed (points/s)"))):
+            self.addOutput(QgsProcessingOutputNumber(name, label))
+
+    def selection(self, parameters, context) -> SelectionOptions:
+        """The pipeline's point selection (all returns; noise pre-filter as asked)."""
+        noise = self.parameterAsBool(parameters, self.NOISE, context)
+        nr = self.parameterAsDouble(parameters, self.NOISE_RADIUS, context)
+        nt = self.parameterAsDouble(parameters, self.NOISE_THRESHOLD, context)
+        return SelectionOptions(returns="all", noise=noise, noise_radius=nr,
+                                noise_threshold=nt,
+                                keep_noise_classes=self.parameterAsBool(
+                                    parameters, self.KEEP_NOISE, context)).validate()
+
+    def run_filter(self, parameters, context, feedback, algorithm) -> dict:
+        """Classify INPUT with ``algorithm`` through the pipeline; the output numbers."""
+        src = self.parameterAsFile(parameters, self.INPUT, context)
+        selection = self.selection(parameters, context)
+        outputs = self.filter_outputs(parameters, context, cloud=self.OUTPUT,
+                                      ground=self.GROUND_OUTPUT, report=self.OUTPUT_HTML)
+        s = classify_file(src, algorithm, outputs, Monitor(**self.core_callbacks(feedback)),
+                          selection=selection)
+        filt = s.seconds.get("filter") or 0.0
+        feedback.pushInfo(self.tr("{} points: {} ground, {} non-ground, {} low outliers; "
+                                  "filter {:.1f} s").format(
+            s.n_points, s.n_ground, s.n_nonground, s.count(7), filt))
+        result = {"N_POINTS": s.n_points, "N_GROUND": s.n_ground,
+                  "N_NONGROUND": s.n_nonground, "N_NOISE": s.count(7),
+                  "POINTS_PER_SECOND": s.n_points / filt if filt > 0 else None}
+        return {**result, **self.filter_results(outputs)}
+
+
+_OUTPUT_HELP = QT_TRANSLATE_NOOP(
+    "GeomaticsAlgorithm",
+    "<li><b>Classified point cloud</b> (OUTPUT, .laz/.las): every point with class 2 "
+    "ground, 1 other or 7 low noise; every other attribute, VLR and the CRS copied "
+    "unchanged.</li>"
+    "<li><b>Ground points</b> (GROUND_OUTPUT, optional): only the ground points.</li>"
+    "<li><b>Report</b> (OUTPUT_HTML, optional) in REPORT_LANGUAGE (advanced).</li>"
+    "<li><b>Keep existing noise classes</b> (KEEP_NOISE, advanced, default yes): points "
+    "already classified 7 or 18 keep their class and take no part.</li></ul>"
+    "<p>Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE (class 7), "
+    "POINTS_PER_SECOND (filter step only).</p>")
+
+
+class GroundFilterAlgorithm(_GroundCommon):
+    """The recommended ground filter: no parameter to set."""
+
+    CELL = "CELL"
+    MAX_WINDOW = "MAX_WINDOW"
+    SLOPE = "SLOPE"
+    THRESHOLD = "THRESHOLD"
+    REFINE = "REFINE"
+
+    def name(self):
+        return "groundfilter"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("Ground filter (recommended)")
+
+    def shortDescription(self):  # noqa: N802
+        return self.tr("Classifies ground in a LAS/LAZ cloud with no parameter to set.")
+
+    def shortHelpString(self):  # noqa: N802
+        return (self.tr(
+            "<p>Classifies a LAS/LAZ point cloud into ground (class 2), other points "
+            "(class 1) and low noise (class 7) with no parameter to set: a progressive "
+            "morphological filter (Pingel et al. 2013, after Zhang et al. 2003) whose "
+            "raster cell and slope tolerance are derived from the cloud itself (point "
+            "density, terrain slope), followed by three passes that rebuild the terrain "
+            "from the points accepted and re-test every point against it.</p>"
+            "<p><b>Example</b>: INPUT=tile.laz OUTPUT=classified.laz — nothing else.</p>"
+            "<p><b>Measured accuracy</b> (total error, Sithole &amp; Vosselman 2004) on the "
+            "8 ISPRS filter-test samples 11, 12, 22, 31, 41, 53, 54, 61: mean 4.06 % at "
+            "these defaults; SMRF with PDAL's defaults 5.75 % in the same script. The "
+            "defaults were chosen on these samples: the honest, cross-validated figure "
+            "(leave one sample out) is 4.42 %; worst sample 9.82 % (samp11, steep "
+            "terrain with buildings). Beats SMRF on 5 of the 8 samples.</p>"
+            "<p><b>Parameters</b></p><ul>"
+            "<li><b>Point cloud</b> (INPUT): .las or .laz in a projected CRS (metres); "
+            "0.2 to 20+ points/m².</li>"
+            "<li>Advanced overrides (0 = derived from the cloud): <b>CELL</b> (m, default "
+            "0 → 1 m), <b>MAX_WINDOW</b> (m, default 18; must exceed the largest "
+            "building), <b>SLOPE</b> (rise/run, default 0 → 0.5 × local terrain slope, "
+            "0.10 to 0.60), <b>THRESHOLD</b> (m, default 0.5; plus 1.25 m per unit of "
+            "terrain slope), <b>REFINE</b> (passes, default 3).</li>"
+            "<li><b>Remove low outliers first</b> (NOISE, advanced, default no): the "
+            "filter finds low noise itself; yes runs the shared pre-filter first "
+            "(NOISE_RADIUS m, default 5; NOISE_THRESHOLD m, default 1).</li>")
+            + self.tr(_OUTPUT_HELP) + self.tr(
+            "<p>References: Pingel, T. J., Clarke, K. C. &amp; McBride, W. A. (2013), ISPRS "
+            "J. Photogramm. Remote Sens. 77, 21–30; Zhang, K. et al. (2003), IEEE TGRS "
+            "41(4), 872–882.</p>"))
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_input()
+        d = core_rec.RecommendedOptions()
+        self.add_number(self.CELL, self.tr("Raster cell, 0 = derived (m)"), 0.0,
+                        minimum=0.0, advanced=True)
+        self.add_number(self.MAX_WINDOW, self.tr("Largest window, > largest building (m)"),
+                        d.max_window, minimum=0.0, advanced=True)
+        self.add_number(self.SLOPE, self.tr("Slope tolerance, 0 = derived (rise/run)"),
+                        0.0, minimum=0.0, advanced=True)
+        self.add_number(self.THRESHOLD, self.tr("Height tolerance (m)"), d.threshold,
+                        minimum=0.0, advanced=True)
+        self.add_number(self.REFINE, self.tr("Refinement passes"), d.refine, minimum=0,
+                        integer=True, advanced=True)
+        self.add(QgsProcessingParameterBoolean(
+            self.NOISE, self.tr("Remove low outliers first (class 7)"), False),
+            advanced=True)
+        self.add_number(self.NOISE_RADIUS, self.tr("Low-outlier search cell (m)"), 5.0,
+                        minimum=0.0, advanced=True)
+        self.add_number(self.NOISE_THRESHOLD,
+                        self.tr("Low-outlier depth below neighbours (m)"), 1.0,
+                        minimum=0.0, advanced=True)
+        self.add_outputs()
+
+    def options(self, parameters, context) -> core_rec.RecommendedOptions:
+        """Options from the advanced overrides (0 = derived / default)."""
+        def num(name):
+            return self.parameterAsDouble(parameters, name, context)
+        kw = dict(cell=num(self.CELL) or None, slope=num(self.SLOPE) or None,
+                  refine=self.parameterAsInt(parameters, self.REFINE, context))
+        for name, field in ((self.MAX_WINDOW, "max_window"), (self.THRESHOLD, "threshold")):
+            if num(name) > 0:
+                kw[field] = num(name)
+        return core_rec.RecommendedOptions(**kw)
+
+    def process(self, parameters, context, feedback):
+        opts = self.options(parameters, context)
+        feedback.pushInfo(self.tr("Recommended ground filter: window {} m, threshold {} m, "
+                                  "{} refinement passes").format(
+            opts.max_window, opts.threshold, opts.refine))
+        return self.run_filter(parameters, context, feedback,
+                               core_rec.recommended_filter(opts))
+
+
+class PtdGroundFilterAlgorithm(_GroundCommon):
+    """Progressive TIN densification (Axelsson 2000)."""
+
+    CELL = "CELL"
+    MAX_BUILDING = "MAX_BUILDING"
+    MAX_DISTANCE = "MAX_DISTANCE"
+    MAX_ANGLE = "MAX_ANGLE"
+    MIN_EDGE = "MIN_EDGE"
+    MAX_ITERATIONS = "MAX_ITERATIONS"
+    FINAL_DISTANCE = "FINAL_DISTANCE"
+    LOW_NOISE_DEPTH = "LOW_NOISE_DEPTH"
+    SEED_DROP = "SEED_DROP"
+
+    def name(self):
+        return "ptdgroundfilter"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("Ground filter (progressive TIN densification)")
+
+    def shortDescription(self):  # noqa: N802
+        return self.tr("Axelsson's progressive TIN densification ground filter.")
+
+    def shortHelpString(self):  # noqa: N802
+        return (self.tr(
+            "<p>Classifies a LAS/LAZ point cloud into ground (class 2), other points "
+            "(class 1) and low noise (class 7) by progressive TIN densification (Axelsson "
+            "2000): seeds are the lowest points of overlapping parcels larger than the "
+            "largest building; the TIN is densified with every point close enough to its "
+            "facet and seen under a small enough angle from its vertices, until no point "
+            "is added. Pits and spikes are removed first by a step filter.</p>"
+            "<p><b>Example</b>: INPUT=tile.laz OUTPUT=classified.laz MAX_BUILDING=50 for "
+            "a town with 50 m buildings. On the 8 ISPRS samples its mean total error is "
+            "8.05 % at the defaults; use <i>Ground filter (recommended)</i> unless you need "
+            "a TIN filter.</p>"
+            "<p><b>Parameters</b></p><ul>"
+            "<li><b>Point cloud</b> (INPUT): .las or .laz in a projected CRS (metres).</li>"
+            "<li><b>Cell</b> (CELL, m, default 2): lowest point per cell for the step "
+            "filter and the seeds.</li>"
+            "<li><b>Parcel size</b> (MAX_BUILDING, m, default 30): larger than the "
+            "largest building (30–50 m).</li>"
+            "<li><b>Distance to facet</b> (MAX_DISTANCE, m, default 1.5) and <b>angle to "
+            "vertices</b> (MAX_ANGLE, degrees, default 18): densification limits.</li>"
+            "<li><b>Shortest facet edge</b> (MIN_EDGE, m, default 1, advanced), "
+            "<b>iteration cap</b> (MAX_ITERATIONS, default 150, advanced).</li>"
+            "<li><b>Final distance</b> (FINAL_DISTANCE, m, default 0.5): points this close "
+            "to the final TIN are ground; <b>low-noise depth</b> (LOW_NOISE_DEPTH, m, "
+            "default 1.5): points deeper below it get class 7.</li>"
+            "<li><b>Seed drop</b> (SEED_DROP, %, default 0.3, advanced): lowest share of "
+            "each parcel skipped before picking its seed.</li>"
+            "<li><b>Remove low outliers first</b> (NOISE, default yes; NOISE_RADIUS m, 5; "
+            "NOISE_THRESHOLD m, 1).</li>")
+            + self.tr(_OUTPUT_HELP) + self.tr(
+            "<p>Reference: Axelsson, P. (2000). DEM generation from laser scanner data "
+            "using adaptive TIN models. IAPRS XXXIII-B4, 110–117.</p>"))
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_input()
+        d = core_ptd.PtdOptions()
+        self.add_number(self.CELL, self.tr("Cell (m)"), d.cell, minimum=0.0)
+        self.add_number(self.MAX_BUILDING, self.tr("Parcel size, > largest building (m)"),
+                        d.max_building, minimum=0.0)
+        self.add_number(self.MAX_DISTANCE, self.tr("Distance to facet (m)"), d.max_distance,
+                        minimum=0.0)
+        self.add_number(self.MAX_ANGLE, self.tr("Angle to vertices (degrees)"), d.max_angle,
+                        minimum=0.0, maximum=90.0)
+        self.add_number(self.FINAL_DISTANCE, self.tr("Final distance (m)"),
+                        d.final_distance, minimum=0.0)
+        self.add_number(self.LOW_NOISE_DEPTH, self.tr("Low-noise depth (m)"),
+                        d.low_noise_depth, minimum=0.0)
+        self.add_number(self.MIN_EDGE, self.tr("Shortest facet edge (m)"), d.min_edge,
+                        minimum=0.0, advanced=True)
+        self.add_number(self.MAX_ITERATIONS, self.tr("Iteration cap"), d.max_iterations,
+                        minimum=1, integer=True, advanced=True)
+        self.add_number(self.SEED_DROP, self.tr("Seed drop (%)"), 100.0 * d.seed_drop,
+                        minimum=0.0, maximum=50.0, advanced=True)
+        self.add_noise_params()
+        self.add_outputs()
+
+    def options(self, parameters, context) -> core_ptd.PtdOptions:
+        """Options from the parameters."""
+        def num(name):
+            return self.parameterAsDouble(parameters, name, context)
+        return core_ptd.PtdOptions(
+            cell=num(self.CELL), max_building=num(self.MAX_BUILDING),
+            max_distance=num(self.MAX_DISTANCE), max_angle=num(self.MAX_ANGLE),
+            final_distance=num(self.FINAL_DISTANCE),
+            low_noise_depth=num(self.LOW_NOISE_DEPTH), min_edge=num(self.MIN_EDGE),
+            max_iterations=self.parameterAsInt(parameters, self.MAX_ITERATIONS, context),
+            seed_drop=num(self.SEED_DROP) / 100.0)
+
+    def process(self, parameters, context, feedback):
+        opts = self.options(parameters, context)
+        feedback.pushInfo(self.tr("PTD: parcels {} m, distance {} m, angle {}°").format(
+            opts.max_building, opts.max_distance, opts.max_angle))
+        return self.run_filter(parameters, context, feedback, core_ptd.ptd_filter(opts))

@@ -1,0 +1,259 @@
+"""Raster helpers of the morphological ground filter (numpy/scipy only, private).
+
+Row 0 of every raster is the southern-most row (y grows with the row index).
+Used by :mod:`.recommended` (progressive opening after Zhang et al. 2003 and
+Pingel et al. 2013).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import ndimage
+
+
+def density(x, y, cell: float = 5.0) -> float:
+    """Points per m² over the occupied ``cell``-sized cells (ignores empty areas).
+
+    Parameters
+    ----------
+    x, y : ndarray
+        Coordinates (m).
+    cell : float
+        Cell size (m).
+
+    Returns
+    -------
+    float
+        Points per square metre of occupied area.
+    """
+    ix = ((x - x.min()) // cell).astype(np.int64)
+    iy = ((y - y.min()) // cell).astype(np.int64)
+    occupied = np.unique(ix * (int(iy.max()) + 1) + iy).size
+    return x.size / (occupied * cell * cell)
+
+
+@dataclass(frozen=True)
+class Grid:
+    """A regular grid: lower-left origin, cell size (m) and shape (rows, cols)."""
+
+    x0: float
+    y0: float
+    cell: float
+    rows: int
+    cols: int
+
+    @classmethod
+    def around(cls, x, y, cell):
+        """Smallest grid with cell ``cell`` holding every point."""
+        x0, y0 = float(x.min()), float(y.min())
+        cols = int((float(x.max()) - x0) // cell) + 1
+        rows = int((float(y.max()) - y0) // cell) + 1
+        return cls(x0, y0, float(cell), rows, cols)
+
+    def index(self, x, y):
+        """Flat row-major cell index of every point (int64)."""
+        col = np.minimum(((x - self.x0) / self.cell).astype(np.int64), self.cols - 1)
+        row = np.minimum(((y - self.y0) / self.cell).astype(np.int64), self.rows - 1)
+        row *= self.cols
+        row += col
+        return row
+
+
+class PointCells:
+    """Per-point cell look-ups computed once: sort order, bilinear weights, cell ids.
+
+    ``cell_min(mask)`` gives the lowest z per cell of the points where ``mask`` is
+    True without sorting again; ``bilinear(raster)`` samples a cell-centred raster.
+
+    Parameters
+    ----------
+    x, y : ndarray
+        Coordinates (m).
+    grid : Grid
+        The raster grid.
+    """
+
+    def __init__(self, x, y, grid):
+        self.grid = grid
+        self.idx = grid.index(x, y)
+        self.order = np.argsort(self.idx, kind="stable")
+        sidx = self.idx[self.order]
+        self.starts = np.flatnonzero(np.r_[True, sidx[1:] != sidx[:-1]])
+        self.cells = sidx[self.starts]
+        del sidx
+        fx = ((x - grid.x0) / grid.cell - 0.5).astype(np.float32)
+        fy = ((y - grid.y0) / grid.cell - 0.5).astype(np.float32)
+        np.clip(fx, 0.0, grid.cols - 1.0, out=fx)
+        np.clip(fy, 0.0, grid.rows - 1.0, out=fy)
+        c0 = np.minimum(fx.astype(np.int64), max(grid.cols - 2, 0))
+        r0 = np.minimum(fy.astype(np.int64), max(grid.rows - 2, 0))
+        fx -= c0
+        fy -= r0
+        self.fx, self.fy = fx, fy
+        r0 *= grid.cols
+        r0 += c0
+        self.i00 = r0
+
+    def cell_min(self, z, mask=None):
+        """Lowest z per cell (NaN where empty or no masked point)."""
+        zs = z[self.order]
+        if mask is not None:
+            zs[~mask[self.order]] = np.inf
+        out = np.full(self.grid.rows * self.grid.cols, np.nan)
+        m = np.minimum.reduceat(zs, self.starts)
+        m[np.isinf(m)] = np.nan
+        out[self.cells] = m
+        return out.reshape(self.grid.rows, self.grid.cols)
+
+    def bilinear(self, raster):
+        """Bilinear value of a cell-centred raster at every point (float64)."""
+        g, flat = self.grid, raster.ravel()
+        c1 = 1 if g.cols > 1 else 0
+        r1 = g.cols if g.rows > 1 else 0
+        fx, fy, i = self.fx, self.fy, self.i00
+        top = flat[i] + (flat[i + c1] - flat[i]) * fx
+        bot = flat[i + r1] + (flat[i + r1 + c1] - flat[i + r1]) * fx
+        bot -= top
+        bot *= fy
+        bot += top
+        return bot
+
+    def nearest(self, raster):
+        """Value of the cell holding each point."""
+        return raster.ravel()[self.idx]
+
+
+def fill(z, valid):
+    """Fill cells where ``valid`` is False by a push-pull pyramid (smooth, O(cells)).
+
+    Parameters
+    ----------
+    z : ndarray
+        Raster.
+    valid : ndarray of bool
+        Cells to keep.
+
+    Returns
+    -------
+    ndarray
+        The filled raster.
+    """
+    if valid.all():
+        return z.copy()
+    if not valid.any():
+        raise ValueError("no valid cell to interpolate from")
+    w = valid.astype(np.float64)
+    v = np.where(valid, z, 0.0)
+    return _pushpull(v * w, w)
+
+
+def _pushpull(vw, w):
+    """Recursive push-pull on weighted values ``vw`` and weights ``w``."""
+    rows, cols = w.shape
+    if rows <= 2 and cols <= 2 or (w > 0).all():
+        out = np.divide(vw, w, out=np.zeros_like(vw), where=w > 0)
+        if not (w > 0).all():
+            out[w == 0] = vw.sum() / w.sum()
+        return out
+    r2, c2 = (rows + 1) // 2, (cols + 1) // 2
+    pad = ((0, 2 * r2 - rows), (0, 2 * c2 - cols))
+    cvw = np.pad(vw, pad).reshape(r2, 2, c2, 2).sum(axis=(1, 3))
+    cw = np.pad(w, pad).reshape(r2, 2, c2, 2).sum(axis=(1, 3))
+    coarse = _pushpull(cvw, cw)
+    up = ndimage.zoom(coarse, 2, order=1, mode="nearest", grid_mode=True)[:rows, :cols]
+    out = np.divide(vw, w, out=up.copy(), where=w > 0)
+    return out
+
+
+def opening(z, radius):
+    """Grey opening with a (2r+1)² square window (separable min/max filters)."""
+    size = 2 * int(radius) + 1
+    return ndimage.maximum_filter(ndimage.minimum_filter(z, size=size, mode="nearest"),
+                                  size=size, mode="nearest")
+
+
+def slope(z, cell):
+    """Gradient magnitude (rise over run) of a raster."""
+    gy, gx = np.gradient(z, cell)
+    return np.hypot(gx, gy)
+
+
+def fill_tin(z, valid):
+    """Fill invalid cells by linear interpolation in a TIN of the hole borders.
+
+    Only the valid cells bordering a hole are triangulated, so the cost follows
+    the hole perimeter, not the raster size; cells outside the hull of the borders
+    fall back to the push-pull fill.
+
+    Parameters
+    ----------
+    z : ndarray
+        Raster.
+    valid : ndarray of bool
+        Cells to keep.
+
+    Returns
+    -------
+    ndarray
+        The filled raster.
+    """
+    if valid.all():
+        return z.copy()
+    from scipy.interpolate import LinearNDInterpolator
+    ring = valid & ndimage.binary_dilation(~valid, structure=np.ones((3, 3), bool))
+    rr, cc = np.nonzero(ring)
+    out = np.where(valid, z, np.nan)
+    if rr.size >= 3:
+        try:
+            pts = np.column_stack((cc, rr)).astype(np.float64)
+            pts += _jitter(pts)          # lattices are co-circular: slow for Qhull
+            f = LinearNDInterpolator(pts, z[rr, cc])
+            hr, hc = np.nonzero(~valid)
+            out[hr, hc] = f(np.column_stack((hc, hr)).astype(np.float64))
+        except Exception:  # noqa: BLE001 - degenerate (collinear) borders: push-pull only
+            pass
+    miss = np.isnan(out)
+    if miss.any():
+        out[miss] = fill(z, valid)[miss]
+    return out
+
+
+def _jitter(pts):
+    """Deterministic sub-cell offsets (+-0.05 cell) that break lattice degeneracy."""
+    h = np.sin(pts[:, :1] * 12.9898 + pts[:, 1:] * 78.233) * 43758.5453
+    h = h - np.floor(h)
+    return (np.column_stack((h, np.roll(h, 1))) - 0.5) * 0.1
+
+
+def checked_xyz(x, y, z, min_points: int):
+    """Coordinates as float64 arrays, refused when unusable by a ground filter.
+
+    Parameters
+    ----------
+    x, y, z : array_like
+        Coordinates in a projected CRS (m).
+    min_points : int
+        Fewest points accepted.
+
+    Returns
+    -------
+    tuple of ndarray
+        ``x, y, z`` (contiguous float64).
+
+    Raises
+    ------
+    ValueError
+        Unequal lengths or non-finite values (:func:`~..coords.as_xyz`).
+    InputError
+        Too few points, a single xy position, or coordinates in degrees.
+    """
+    from ..coords import as_xyz
+    from ..errors import InputError
+    x, y, z = as_xyz(x, y, z, projected=True)
+    if x.size < min_points:
+        raise InputError(f"A ground filter needs at least {min_points} points, got "
+                         f"{x.size}.")
+    if max(float(np.ptp(x)), float(np.ptp(y))) <= 0.0:
+        raise InputError("All points share one x/y position; nothing to filter.")
+    return x, y, z

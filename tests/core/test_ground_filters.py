@@ -1,0 +1,230 @@
+"""Recommended ground filter and progressive TIN densification (core/lidar/{recommended,ptd})."""
+from __future__ import annotations
+
+import hashlib
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from scipy.spatial import Delaunay
+
+from geomatics_toolbox.core.errors import InputError
+from geomatics_toolbox.core.lidar import ptd, recommended
+from geomatics_toolbox.core.lidar.accuracy import assess
+from geomatics_toolbox.core.progress import Cancelled
+
+SAMPLES = ["samp11", "samp12", "samp22", "samp31", "samp41", "samp53", "samp54", "samp61"]
+
+#: Measured with the research code (/work/scratch/ground, before the port) on the
+#: 8 ISPRS samples at the defaults: sha1 of the uint8 classes and the total error (%).
+RESEARCH = {
+    "samp11": ("2993e4dd0fc3d02e2715f8447e9b26d2185488de", 9.8185,
+               "cae1fce13689aba9190ff667b6117300f05a3bad", 14.0016),
+    "samp12": ("8765feeb97f344be619a549c93c774943fea52da", 2.8416,
+               "f129cec773a034ce6241fea93ed948bc4a4cf9cf", 4.1444),
+    "samp22": ("f55a4dc473706a9067aac897576488dce4f1972b", 3.5987,
+               "b181b6d3f8b861ae6812d86e14e16e3d4fc35159", 8.4174),
+    "samp31": ("1ff303722cd59c030454ebb18a9f69f7acf41a41", 2.0304,
+               "15fa7f6d9ccfd7922976b536c3fddc4fa9f25be5", 1.6388),
+    "samp41": ("635d45f602e2855984c8fbfcbdc39c997b57a095", 2.8047,
+               "f0d080f830bca1fc610e58a96526ac9b2f74a5ad", 13.6497),
+    "samp53": ("fee7fa38b4f37251fdfe24750e720627990d56f3", 5.2621,
+               "2c031f6e040d4235119595a12d0c4f915c90c839", 16.3971),
+    "samp54": ("cf0aa3b91e91bbdcacaafe9bc32be252fa78df02", 2.6719,
+               "0c4a5077e146c5e690de3c139c4b3a046bd772a7", 3.1715),
+    "samp61": ("f70c963403456930fcce1803330883ec59f76b07", 3.4797,
+               "4252effacf52d924801baf070bc7685aef6ed833", 2.9492),
+}
+
+
+def scene(slope=0.0, cliff=0.0, seed=0, spacing=1.0, size=120.0):
+    """Jittered ground grid + two 12x12 m boxes 6 m high + optional cliff at x = 80 m."""
+    rng = np.random.default_rng(seed)
+    g = np.arange(0.0, size, spacing)
+    gx, gy = [a.ravel() + rng.uniform(-0.2, 0.2, a.size) * spacing
+              for a in np.meshgrid(g, g)]
+
+    def terrain(x):
+        return 100.0 + slope * x + np.where(x > 80.0, cliff, 0.0)
+
+    inside = np.zeros(gx.size, bool)
+    for bx, by in [(20.0, 20.0), (40.0, 70.0)]:
+        inside |= (np.abs(gx - bx) < 6) & (np.abs(gy - by) < 6)
+    z = terrain(gx) + rng.normal(0, 0.03, gx.size)
+    z[inside] = terrain(gx[inside]).max() + 6.0 + rng.normal(0, 0.03, inside.sum())
+    return gx, gy, z, np.where(inside, 1, 2).astype(np.uint8)
+
+
+def _cliff_xfail(wrong):
+    return pytest.mark.xfail(strict=True, reason=(
+        f"known PTD limitation (measured: {wrong} wrong points): the upper-terrace strip "
+        "next to a 4-5 m cliff (x 80-87 m) stays unaccepted even with Axelsson's "
+        "mirroring; the recommended filter gets 12-13 wrong there"))
+
+
+@pytest.mark.parametrize("slope,cliff", [
+    (0.0, 0.0), (0.2, 0.0),
+    pytest.param(0.0, 5.0, marks=_cliff_xfail(713)),
+    pytest.param(0.1, 4.0, marks=_cliff_xfail(547))])
+def test_ptd_known_geometry_every_point_right(slope, cliff):
+    x, y, z, truth = scene(slope=slope, cliff=cliff)
+    cls = ptd.classify(x, y, z)
+    assert cls.dtype == np.uint8
+    wrong = np.flatnonzero(cls != truth)
+    assert wrong.size == 0, (wrong.size, x[wrong][:5], y[wrong][:5])
+
+
+@pytest.mark.parametrize("slope", [0.0, 0.2])
+def test_recommended_known_geometry_every_point_right(slope):
+    x, y, z, truth = scene(slope=slope)
+    cls = recommended.classify(x, y, z)
+    assert np.array_equal(cls, truth)
+
+
+@pytest.mark.parametrize("mod", [ptd, recommended])
+def test_low_outliers_become_class_7(mod):
+    x, y, z, _ = scene()
+    z = z.copy()
+    z[[100, 5000, 9000]] -= 8.0
+    cls = mod.classify(x, y, z)
+    assert set(np.flatnonzero(cls == 7)) == {100, 5000, 9000}
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(seed=st.integers(0, 10_000), n=st.integers(60, 600),
+       tilt=st.floats(-0.5, 0.5), n_obj=st.integers(0, 40),
+       dist=st.floats(0.2, 2.0), ang=st.floats(3.0, 30.0), frac=st.floats(0.1, 1.0))
+def test_ptd_accepted_ground_within_limits_of_final_tin(seed, n, tilt, n_obj, dist, ang,
+                                                         frac):
+    rng = np.random.default_rng(seed)
+    x, y = rng.uniform(0, 80, n), rng.uniform(0, 80, n)
+    z = tilt * x + np.sin(y / 9.0) * 2.0 + rng.normal(0, 0.1, n)
+    obj = rng.choice(n, size=min(n_obj, n), replace=False)
+    z[obj] += rng.uniform(-5, 15, obj.size)
+    opt = ptd.PtdOptions(max_distance=dist, max_angle=ang, final_distance=dist * frac)
+    cls, tin = ptd.classify_with_tin(x, y, z, options=opt)
+    assert set(np.unique(cls)) <= {1, 2, 7}
+    tri = Delaunay(tin[:, :2])
+    g = np.flatnonzero(cls == 2)
+    s = tri.find_simplex(np.column_stack((x[g], y[g])))
+    assert np.all(s >= 0)
+    v = tin[tri.simplices[s]]
+    nrm = np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0])
+    nrm /= np.linalg.norm(nrm, axis=1)[:, None]
+    d = np.abs(np.einsum("ij,ij->i", np.column_stack((x[g], y[g], z[g])) - v[:, 0], nrm))
+    assert np.all(d <= opt.final_distance + 1e-6)
+
+
+@pytest.mark.parametrize("mod", [ptd, recommended])
+def test_bad_input(mod):
+    x, y, z, _ = scene(size=30.0)
+    with pytest.raises(InputError, match="at least"):
+        mod.classify(x[:3], y[:3], z[:3])
+    zz = z.copy()
+    zz[5] = np.nan
+    with pytest.raises(ValueError, match="non-finite"):
+        mod.classify(x, y, zz)
+    with pytest.raises(InputError, match="degrees"):
+        mod.classify(7.0 + x * 1e-5, 45.0 + y * 1e-5, z)
+    with pytest.raises(ValueError, match="same length"):
+        mod.classify(x, y[:-1], z)
+    with pytest.raises(InputError, match="one x/y position"):
+        mod.classify(np.full(20, 500.0), np.full(20, 500.0), np.arange(20.0))
+
+
+def test_bad_options():
+    with pytest.raises(InputError, match="max_window"):
+        recommended.RecommendedOptions(max_window=0)
+    with pytest.raises(InputError, match="final_distance"):
+        ptd.PtdOptions(max_distance=1.0, final_distance=2.0)
+
+
+@pytest.mark.parametrize("mod", [ptd, recommended])
+def test_progress_and_cancel(mod):
+    x, y, z, _ = scene(size=60.0)
+    seen = []
+    mod.classify(x, y, z, progress=seen.append)
+    assert seen[-1] == 1.0 and all(0.0 <= f <= 1.0 for f in seen)
+    assert seen == sorted(seen)
+    calls = []
+    with pytest.raises(Cancelled):
+        mod.classify(x, y, z, cancel=lambda: calls.append(1) or len(calls) > 2)
+
+
+def _load(isprs_dir, name):
+    import laspy
+    las = laspy.read(str(isprs_dir / f"{name}.laz"))
+    x, y, z = (np.asarray(v, float) for v in (las.x, las.y, las.z))
+    return x, y, z, np.asarray(las.classification) == 2
+
+
+@pytest.mark.parametrize("sample", SAMPLES)
+def test_recommended_isprs_golden_identical_to_research(isprs_dir, sample):
+    x, y, z, ref = _load(isprs_dir, sample)
+    cls = recommended.classify(x, y, z)
+    sha, total = RESEARCH[sample][:2]
+    assert assess(cls == 2, ref).total == pytest.approx(total, abs=1e-4)
+    assert hashlib.sha1(cls.tobytes()).hexdigest() == sha
+
+
+def test_recommended_isprs_mean_and_wins(isprs_dir):
+    totals = [RESEARCH[s][1] for s in SAMPLES]
+    assert np.mean(totals) == pytest.approx(4.06, abs=0.005)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("sample", SAMPLES)
+def test_ptd_isprs_golden_identical_to_research(isprs_dir, sample):
+    x, y, z, ref = _load(isprs_dir, sample)
+    cls = ptd.classify(x, y, z)
+    sha, total = RESEARCH[sample][2:]
+    assert assess(cls == 2, ref).total == pytest.approx(total, abs=1e-4)
+    assert hashlib.sha1(cls.tobytes()).hexdigest() == sha
+
+
+def test_pipeline_writes_classes_and_keeps_attributes(tmp_path):
+    import laspy
+
+    from geomatics_toolbox.core.io.las import read_las
+    from geomatics_toolbox.core.lidar.pipeline import (
+        FilterOutputs,
+        SelectionOptions,
+        classify_file,
+    )
+    from geomatics_toolbox.core.reporting import render_html
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+    tile = generate_tile(extent=(60, 60), density=4.0, seed=3)
+    src = tmp_path / "t.laz"
+    write_tile(tile, src)
+    out, html = tmp_path / "c.laz", tmp_path / "r.html"
+    run = classify_file(src, recommended.recommended_filter(),
+                        FilterOutputs(cloud=out, report=html),
+                        selection=SelectionOptions(noise=False, keep_noise_classes=False))
+    a, b = laspy.read(str(src)), laspy.read(str(out))
+    cls = read_las(out, ["classification"])["classification"]
+    x, y, z = (np.asarray(v, float) for v in (a.x, a.y, a.z))
+    expect = recommended.classify(x, y, z)
+    assert np.array_equal(cls, expect)
+    assert set(np.unique(cls)) <= {1, 2, 7}
+    for dim in ("X", "Y", "Z", "intensity", "return_number", "gps_time"):
+        if dim in a.point_format.dimension_names:
+            assert np.array_equal(np.asarray(a[dim]), np.asarray(b[dim])), dim
+    assert b.header.parse_crs() == a.header.parse_crs()
+    assert "Raster cell (m)" in render_html(run.report, lang="en")
+    assert html.exists()
+
+
+@pytest.mark.parametrize("lang", ["ar", "fa"])
+def test_reports_fully_translated(tmp_path, lang):
+    """Every message of the recommended and PTD reports has an ar/fa translation."""
+    from geomatics_toolbox.core.lidar.pipeline import FilterOutputs, classify_file
+    from geomatics_toolbox.core.reporting.i18n import has_translation
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+    src = tmp_path / "t.laz"
+    write_tile(generate_tile(extent=(60, 60), density=2.0, seed=3), src)
+    reports = [classify_file(src, alg, FilterOutputs(report=tmp_path / "r.html",
+                                                     lang=lang)).report
+               for alg in (recommended.recommended_filter(), ptd.ptd_filter())]
+    missing = {m for r in reports for m in r.messages() if not has_translation(m, lang)}
+    assert not missing, sorted(missing)
