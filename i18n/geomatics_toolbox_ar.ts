@@ -214,50 +214,6 @@
             <source>Tile {0} failed: {1}</source>
             <translation>فشلت البلاطة {0}: {1}</translation>
         </message>
-        <message>
-            <source>terrain (hillshade)</source>
-            <translation>التضاريس (تظليل)</translation>
-        </message>
-        <message>
-            <source>nodata</source>
-            <translation>بلا بيانات</translation>
-        </message>
-        <message>
-            <source>Legend</source>
-            <translation>مفتاح الرموز</translation>
-        </message>
-        <message>
-            <source>Hillshade</source>
-            <translation>تظليل التضاريس</translation>
-        </message>
-        <message>
-            <source>not used (outside / nodata)</source>
-            <translation>غير مستخدمة (خارج / بلا بيانات)</translation>
-        </message>
-        <message>
-            <source>Error DTM − check (m)</source>
-            <translation>الخطأ = النموذج − نقطة التحقق (م)</translation>
-        </message>
-        <message>
-            <source>Residual map</source>
-            <translation>خريطة البواقي</translation>
-        </message>
-        <message>
-            <source>check height (m)</source>
-            <translation>ارتفاع نقطة التحقق (م)</translation>
-        </message>
-        <message>
-            <source>error DTM − check (m)</source>
-            <translation>الخطأ = النموذج − نقطة التحقق (م)</translation>
-        </message>
-        <message>
-            <source>zero error</source>
-            <translation>خطأ صفري</translation>
-        </message>
-        <message>
-            <source>Error against height</source>
-            <translation>الخطأ مقابل الارتفاع</translation>
-        </message>
     </context>
     <context>
         <name>DsmAlgorithm</name>

@@ -214,50 +214,6 @@
             <source>Tile {0} failed: {1}</source>
             <translation>کاشی {0} ناموفق بود: {1}</translation>
         </message>
-        <message>
-            <source>terrain (hillshade)</source>
-            <translation>ناهمواری (سایه‌روشن)</translation>
-        </message>
-        <message>
-            <source>nodata</source>
-            <translation>بدون داده</translation>
-        </message>
-        <message>
-            <source>Legend</source>
-            <translation>راهنما</translation>
-        </message>
-        <message>
-            <source>Hillshade</source>
-            <translation>سایه‌روشن</translation>
-        </message>
-        <message>
-            <source>not used (outside / nodata)</source>
-            <translation>به‌کارنرفته (بیرون / بدون داده)</translation>
-        </message>
-        <message>
-            <source>Error DTM − check (m)</source>
-            <translation>خطا = مدل − نقطهٔ کنترل (متر)</translation>
-        </message>
-        <message>
-            <source>Residual map</source>
-            <translation>نقشهٔ باقیمانده‌ها</translation>
-        </message>
-        <message>
-            <source>check height (m)</source>
-            <translation>ارتفاع نقطهٔ کنترل (متر)</translation>
-        </message>
-        <message>
-            <source>error DTM − check (m)</source>
-            <translation>خطا = مدل − نقطهٔ کنترل (متر)</translation>
-        </message>
-        <message>
-            <source>zero error</source>
-            <translation>خطای صفر</translation>
-        </message>
-        <message>
-            <source>Error against height</source>
-            <translation>خطا در برابر ارتفاع</translation>
-        </message>
     </context>
     <context>
         <name>DsmAlgorithm</name>
