@@ -174,7 +174,12 @@ def opening(z, radius):
 
 
 def slope(z, cell):
-    """Gradient magnitude (rise over run) of a raster."""
+    """Gradient magnitude (rise over run) of a raster (flat along a 1-cell axis)."""
+    if min(z.shape) < 2:
+        rows, cols = z.shape
+        gy = np.gradient(z, cell, axis=0) if rows > 1 else np.zeros_like(z)
+        gx = np.gradient(z, cell, axis=1) if cols > 1 else np.zeros_like(z)
+        return np.hypot(gx, gy)
     gy, gx = np.gradient(z, cell)
     return np.hypot(gx, gy)
 

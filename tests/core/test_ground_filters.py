@@ -228,3 +228,13 @@ def test_reports_fully_translated(tmp_path, lang):
                for alg in (recommended.recommended_filter(), ptd.ptd_filter())]
     missing = {m for r in reports for m in r.messages() if not has_translation(m, lang)}
     assert not missing, sorted(missing)
+
+
+def test_recommended_one_cell_wide_strip():
+    """A strip narrower than one raster cell (a single row) is flat ground, no crash."""
+    x = np.linspace(0.0, 100.0, 1000)
+    y = np.random.default_rng(0).uniform(0.0, 0.5, 1000)
+    z = 0.02 * x
+    z[500] += 5.0
+    cls = recommended.classify(x, y, z)
+    assert np.flatnonzero(cls != 2).tolist() == [500]
