@@ -107,6 +107,81 @@
             <source>failed</source>
             <translation>فشلت</translation>
         </message>
+        <message>
+            <source>check-point RMS_T</source>
+            <translation>RMS_T نقاط التحقق</translation>
+        </message>
+        <message>
+            <source>map X</source>
+            <translation>X الخريطة</translation>
+        </message>
+        <message>
+            <source>map Y</source>
+            <translation>Y الخريطة</translation>
+        </message>
+    </context>
+    <context>
+        <name>BuildingsAlgorithm</name>
+        <message>
+            <source>Building footprints with heights</source>
+            <translation>مساقط المباني مع ارتفاعاتها</translation>
+        </message>
+        <message>
+            <source>Roof planes found by region growing above the DTM, as footprints with height, area, volume, storeys and roof type.</source>
+            <translation>مستويات الأسطح المستخرجة بتنمية المناطق فوق نموذج التضاريس، كمساقط مع الارتفاع والمساحة والحجم والطوابق ونوع السطح.</translation>
+        </message>
+        <message>
+            <source>buildings,footprints,roofs,lod1,extraction,height,volume,storeys,class 6,lidar</source>
+            <translation>مبانٍ,مساقط,أسطح,lod1,استخراج,ارتفاع,حجم,طوابق,الصنف 6,ليدار</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Extracts buildings from a ground-classified LAS/LAZ cloud: points more than the minimum height above a TIN of the ground points are fitted with local planes; neighbours whose normals agree within the maximum angle grow into roof patches; patches of at least the minimum patch area become footprints with height (top of roof − ground at the outline), area, volume, storeys (height / 3 m) and roof type (flat / pitched). Trees are rejected because their points are not planar.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz with ground in class 2 (run a ground filter first), projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum height&lt;/b&gt; (MIN_HEIGHT, m, default 2; the spec gives 1.5–2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum normal angle&lt;/b&gt; (MAX_ANGLE, degrees, default 20).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum roof patch area&lt;/b&gt; (MIN_PATCH_AREA, m², default 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum building area&lt;/b&gt; (MIN_AREA, m², default 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 0.5): footprint raster.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Footprints&lt;/b&gt; (OUTPUT, GeoPackage polygons): id, height_m, area_m2, volume_m3, storeys, roof_type, ground_z, roof_z.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified cloud&lt;/b&gt; (OUTPUT_CLOUD, optional LAS/LAZ): the input with roof points set to class 6, every other attribute kept.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_BUILDINGS, TOTAL_AREA (m²), TOTAL_VOLUME (m³).&lt;/p&gt;</source>
+            <translation>&lt;p&gt;يستخرج المباني من سحابة LAS/LAZ مصنّفة الأرض: تُطابَق النقاط التي تعلو نموذج TIN لنقاط الأرض بأكثر من الارتفاع الأدنى بمستويات محلية؛ وتنمو النقاط المتجاورة التي تتفق نواظمها ضمن الزاوية القصوى إلى رقع أسطح؛ والرقع التي تبلغ المساحة الدنيا تصبح مساقط مع الارتفاع (أعلى السطح − الأرض عند المحيط) والمساحة والحجم والطوابق (الارتفاع / 3 م) ونوع السطح (مسطّح / مائل). تُستبعد الأشجار لأن نقاطها غير مستوية.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف ‎.las/.laz فيه الأرض في الصنف 2 (شغّل مرشّح أرض أولاً)، بنظام إسقاط مستوٍ بالأمتار.&lt;/li&gt;&lt;li&gt;&lt;b&gt;أصناف الأرض&lt;/b&gt; (GROUND_CLASSES، الافتراضي &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الارتفاع الأدنى&lt;/b&gt; (MIN_HEIGHT، م، الافتراضي 2؛ تعطي المواصفة 1.5–2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أقصى زاوية للنواظم&lt;/b&gt; (MAX_ANGLE، درجة، الافتراضي 20).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى مساحة لرقعة السطح&lt;/b&gt; (MIN_PATCH_AREA، م²، الافتراضي 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى مساحة للمبنى&lt;/b&gt; (MIN_AREA، م²، الافتراضي 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 0.5): شبكة المساقط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;المساقط&lt;/b&gt; (OUTPUT، مضلعات GeoPackage): id وheight_m وarea_m2 وvolume_m3 وstoreys وroof_type وground_z وroof_z.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المصنّفة&lt;/b&gt; (OUTPUT_CLOUD، LAS/LAZ اختياري): المدخل مع وضع نقاط الأسطح في الصنف 6 والحفاظ على كل السمات الأخرى.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;الأعداد الناتجة: N_BUILDINGS وTOTAL_AREA (م²) وTOTAL_VOLUME (م³).&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>سحابة النقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Ground classes</source>
+            <translation>أصناف الأرض</translation>
+        </message>
+        <message>
+            <source>Minimum height above ground (m)</source>
+            <translation>أدنى ارتفاع فوق الأرض (م)</translation>
+        </message>
+        <message>
+            <source>Maximum angle between roof normals (°)</source>
+            <translation>أقصى زاوية بين نواظم الأسطح (°)</translation>
+        </message>
+        <message>
+            <source>Minimum roof patch area (m²)</source>
+            <translation>أدنى مساحة لرقعة السطح (م²)</translation>
+        </message>
+        <message>
+            <source>Minimum building area (m²)</source>
+            <translation>أدنى مساحة للمبنى (م²)</translation>
+        </message>
+        <message>
+            <source>Cell size (m)</source>
+            <translation>حجم الخلية (م)</translation>
+        </message>
+        <message>
+            <source>Building footprints</source>
+            <translation>مساقط المباني</translation>
+        </message>
+        <message>
+            <source>Classified cloud (class 6 = building)</source>
+            <translation>السحابة المصنّفة (الصنف 6 = مبنى)</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
     </context>
     <context>
         <name>CatalogAlgorithm</name>
@@ -382,6 +457,69 @@
         </message>
     </context>
     <context>
+        <name>ElevationChangeAlgorithm</name>
+        <message>
+            <source>Elevation change between two epochs (cut / fill)</source>
+            <translation>تغيّر الارتفاع بين حقبتين (حفر / ردم)</translation>
+        </message>
+        <message>
+            <source>Difference of two surveys with a 95 % level of detection, and cut and fill polygons with volumes.</source>
+            <translation>فرق مسحين مع حد كشف عند 95 %، ومضلعات الحفر والردم مع أحجامها.</translation>
+        </message>
+        <message>
+            <source>change,difference,dod,cut,fill,volume,epochs,lod,monitoring,lidar,dtm,dsm</source>
+            <translation>تغيّر,فرق,dod,حفر,ردم,حجم,حقب,حد الكشف,مراقبة,ليدار,dtm,dsm</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Subtracts an earlier surface from a later one (two DTM/DSM rasters on one grid, or two LAS/LAZ clouds gridded by TIN on a common grid) and keeps the change beyond the level of detection LoD95 = 1.96·√(σ₁² + σ₂²), σ being each epoch's vertical accuracy (e.g. the RMSE of the DTM accuracy tool). Significant cells form cut and fill polygons with area, mean change and volume.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Before&lt;/b&gt; (INPUT) and &lt;b&gt;After&lt;/b&gt; (INPUT_AFTER): two GeoTIFFs on the same grid, or two LAS/LAZ clouds in one CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;σ₁, σ₂&lt;/b&gt; (SIGMA1, SIGMA2, m, default 0.1): vertical accuracy of each epoch.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes&lt;/b&gt; (CLASSES, clouds only, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, clouds only, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum area&lt;/b&gt; (MIN_AREA, m², default 0 = eight cells): smaller regions are dropped (noise alone exceeds the LoD in 5 % of cells).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Difference&lt;/b&gt; (OUTPUT): GeoTIFF after − before (m).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Change polygons&lt;/b&gt; (OUTPUT_POLYGONS, GeoPackage): id, kind (cut / fill), area_m2, mean_change_m, volume_m3.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: LOD, FILL_VOLUME, CUT_VOLUME (m³), N_REGIONS.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;يطرح سطحاً سابقاً من سطح لاحق (شبكتا DTM/DSM على شبكة واحدة، أو سحابتا LAS/LAZ تُشبَّكان بـ TIN على شبكة مشتركة) ويحتفظ بالتغيّر الذي يتجاوز حد الكشف LoD95 = 1.96·√(σ₁² + σ₂²)، حيث σ الدقة الرأسية لكل حقبة (مثلاً RMSE من أداة دقة نموذج التضاريس). تكوّن الخلايا المعنوية مضلعات حفر وردم مع المساحة ومتوسط التغيّر والحجم.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;قبل&lt;/b&gt; (INPUT) و&lt;b&gt;بعد&lt;/b&gt; (INPUT_AFTER): ملفا GeoTIFF على الشبكة نفسها، أو سحابتا LAS/LAZ في نظام إحداثيات واحد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;σ₁ وσ₂&lt;/b&gt; (SIGMA1 وSIGMA2، م، الافتراضي 0.1): الدقة الرأسية لكل حقبة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الأصناف&lt;/b&gt; (CLASSES، للسحب فقط، الافتراضي &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، للسحب فقط، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى مساحة&lt;/b&gt; (MIN_AREA، م²، الافتراضي 0 = ثماني خلايا): تُحذف المناطق الأصغر (الضوضاء وحدها تتجاوز حد الكشف في 5 % من الخلايا).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الفرق&lt;/b&gt; (OUTPUT): GeoTIFF بعد − قبل (م).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مضلعات التغيّر&lt;/b&gt; (OUTPUT_POLYGONS، GeoPackage): id وkind (حفر / ردم) وarea_m2 وmean_change_m وvolume_m3.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;الأعداد الناتجة: LOD وFILL_VOLUME وCUT_VOLUME (م³) وN_REGIONS.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Before (raster or point cloud)</source>
+            <translation>قبل (شبكة أو سحابة نقاط)</translation>
+        </message>
+        <message>
+            <source>After (raster or point cloud)</source>
+            <translation>بعد (شبكة أو سحابة نقاط)</translation>
+        </message>
+        <message>
+            <source>Vertical accuracy before σ₁ (m)</source>
+            <translation>الدقة الرأسية قبل σ₁ (م)</translation>
+        </message>
+        <message>
+            <source>Vertical accuracy after σ₂ (m)</source>
+            <translation>الدقة الرأسية بعد σ₂ (م)</translation>
+        </message>
+        <message>
+            <source>Classes used (clouds)</source>
+            <translation>الأصناف المستخدمة (للسحب)</translation>
+        </message>
+        <message>
+            <source>Cell size (m, clouds)</source>
+            <translation>حجم الخلية (م، للسحب)</translation>
+        </message>
+        <message>
+            <source>Minimum region area (m², 0 = 8 cells)</source>
+            <translation>أدنى مساحة للمنطقة (م²، 0 = 8 خلايا)</translation>
+        </message>
+        <message>
+            <source>Difference</source>
+            <translation>الفرق</translation>
+        </message>
+        <message>
+            <source>Change polygons</source>
+            <translation>مضلعات التغيّر</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
         <name>GcpAccuracyReportAlgorithm</name>
         <message>
             <source>GCP accuracy report</source>
@@ -390,10 +528,6 @@
         <message>
             <source>georeference,gcp,ground control points,rms,residuals,accuracy,check points,leave-one-out,polynomial,georeferencer</source>
             <translation>إسناد جغرافي,gcp,نقاط الضبط الأرضي,rms,البواقي,الدقة,نقاط التحقق,الاستبعاد الفردي,متعدد الحدود,georeferencer</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Judges a set of ground control points without warping: fits polynomials of order 1, 2 and 3, reports the residuals and the paper's criteria for the chosen order, compares the three orders and recommends one.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;تقيِّم مجموعة من نقاط الضبط الأرضي دون تحويل الصورة هندسياً: تُوائم متعددات حدود من الدرجات 1 و2 و3، وتعرض البواقي ومعايير البحث للدرجة المختارة، وتقارن الدرجات الثلاث وتوصي بإحداها.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT، اختياري): تعطي أبعاد الصورة (نقاط الضبط الواقعة خارجها خطأ؛ وتعتمد الأرباع والمخطط على حدودها). ودونها حدِّد IMAGE_WIDTH وIMAGE_HEIGHT (بالبكسل) وإلا استُخدم مركز ثقل نقاط الضبط.&lt;/li&gt;</translation>
         </message>
         <message>
             <source>Image width (px) if no image is given</source>
@@ -434,6 +568,10 @@
         <message>
             <source>&lt;p&gt;Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, …) for the graphical modeler.&lt;/p&gt;</source>
             <translation>&lt;p&gt;كل رقم في الملخص هو أيضاً مخرج رقمي (RMS_T وRMS_T_QGIS وGR وSCALE وLOO_RMS_T وCHECK_RMS_T وRECOMMENDED_ORDER وACCEPTED وRMS_T_ORDER1…3 و…) لاستخدامه في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Judges a set of ground control points without warping: every transformation (polynomial 1–3, linear, Helmert, projective, thin-plate spline) side by side by the paper's criteria on check points and leave-one-out residuals, with the recommended one and why.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif TRANSFORMATION=8 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;تقيِّم مجموعة من نقاط الضبط الأرضي دون تحويل الصورة هندسياً: كل التحويلات (كثيرة الحدود 1–3، الخطي، هلمرت، الإسقاطي، شريحة الصفيحة الرقيقة) جنباً إلى جنب وفق معايير البحث على نقاط التحقق وبواقي ترك واحدة، مع التحويل الموصى به وسبب التوصية.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif TRANSFORMATION=8 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT، اختياري): تعطي أبعاد الصورة (نقاط الضبط الواقعة خارجها خطأ؛ وتعتمد الأرباع والمخطط على حدودها). ودونها حدِّد IMAGE_WIDTH وIMAGE_HEIGHT (بالبكسل) وإلا استُخدم مركز ثقل نقاط الضبط.&lt;/li&gt;</translation>
         </message>
     </context>
     <context>
@@ -617,6 +755,10 @@
         <message>
             <source>&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point with class 2 ground, 1 other or 7 low noise; every other attribute, VLR and the CRS copied unchanged.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional) in REPORT_LANGUAGE (advanced).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, advanced, default yes): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE (class 7), POINTS_PER_SECOND (filter step only).&lt;/p&gt;</source>
             <translation>&lt;li&gt;&lt;b&gt;سحابة النقاط المصنفة&lt;/b&gt; (OUTPUT، ‎.laz/.las): كل نقطة بالصنف 2 أرض أو 1 أخرى أو 7 ضجيج منخفض؛ وتُنسخ كل السمات الأخرى وسجلات VLR ونظام الإحداثيات دون تغيير.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط الأرض&lt;/b&gt; (GROUND_OUTPUT، اختياري): نقاط الأرض فقط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري) بلغة REPORT_LANGUAGE (متقدم).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الإبقاء على أصناف الضجيج الموجودة&lt;/b&gt; (KEEP_NOISE، متقدم، الافتراضي نعم): النقاط المصنفة مسبقاً 7 أو 18 تحتفظ بصنفها ولا تشارك.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;الأرقام المُخرَجة: N_POINTS، N_GROUND، N_NONGROUND، N_NOISE (الصنف 7)، POINTS_PER_SECOND (خطوة المرشح فقط).&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 0): 0 polynomial of order ORDER; 1–3 polynomial of order 1, 2, 3; 4 linear (shift and scale per axis, ≥ 2 GCPs); 5 Helmert (shift, one scale, one rotation, ≥ 2); 6 projective (homography, ≥ 4); 7 thin-plate spline (through every GCP, ≥ 3, as gdalwarp -tps); 8 recommended: every transformation is compared and the one with the lowest check-point (else leave-one-out) error is used, the simplest within 10 % of the best.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): as gdalwarp -refine_gcps, drop the GCP with the largest residual while it exceeds the tolerance, then refit; the dropped points are listed in the report.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refinement tolerance&lt;/b&gt; (REFINE_TOLERANCE, map units, default the C5 per-point limit 0.25 mm·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum GCPs&lt;/b&gt; (MIN_GCPS, default the transformation's minimum + 2): the refinement never goes below this count.&lt;/li&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;التحويل&lt;/b&gt; (TRANSFORMATION، الافتراضي 0): 0 كثيرة حدود من الدرجة ORDER؛ 1–3 كثيرة حدود من الدرجة 1 أو 2 أو 3؛ 4 خطي (إزاحة ومقياس لكل محور، ≥ 2 نقطة)؛ 5 هلمرت (إزاحة ومقياس واحد ودوران واحد، ≥ 2)؛ 6 إسقاطي (تحويل متجانس، ≥ 4)؛ 7 شريحة الصفيحة الرقيقة (تمر بكل نقطة، ≥ 3، مثل gdalwarp -tps)؛ 8 الموصى به: تُقارَن جميع التحويلات ويُستخدم صاحب أصغر خطأ على نقاط التحقق (وإلا على ترك واحدة خارجاً)، والأبسط ضمن 10 % من الأفضل.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تنقيح النقاط&lt;/b&gt; (REFINE، الافتراضي معطّل): كما في gdalwarp -refine_gcps، تُحذف النقطة ذات أكبر باقٍ ما دام يتجاوز التسامح ثم يُعاد الملاءمة؛ وتُسرد النقاط المحذوفة في التقرير.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تسامح التنقيح&lt;/b&gt; (REFINE_TOLERANCE، بوحدات الخريطة، الافتراضي حدّ النقطة C5 أي 0.25 مم·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى عدد للنقاط&lt;/b&gt; (MIN_GCPS، الافتراضي الحدّ الأدنى للتحويل + 2): لا ينزل التنقيح تحت هذا العدد.&lt;/li&gt;</translation>
         </message>
     </context>
     <context>
@@ -1073,6 +1215,176 @@
         </message>
     </context>
     <context>
+        <name>LidarQaAlgorithm</name>
+        <message>
+            <source>Point density and quality (with parameter advice)</source>
+            <translation>كثافة النقاط وجودتها (مع توصيات المعاملات)</translation>
+        </message>
+        <message>
+            <source>Density rasters, gaps, duplicates and noise of a cloud, and the filter window and DTM cell its density supports.</source>
+            <translation>شبكات الكثافة والفجوات والنقاط المكررة والضوضاء في سحابة، ونافذة المرشّح وخلية نموذج التضاريس التي تسمح بها كثافتها.</translation>
+        </message>
+        <message>
+            <source>density,quality,qa,lasinfo,gaps,duplicates,noise,scan angle,returns,advice,lidar</source>
+            <translation>كثافة,جودة,qa,lasinfo,فجوات,مكررات,ضوضاء,زاوية المسح,انعكاسات,توصيات,ليدار</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Checks a LAS/LAZ cloud before processing: density rasters of all returns, last returns and ground points, cells with returns but no ground (gaps), histograms of returns and classes, duplicate points, the share of noise (classes 7, 18) and the scan-angle range. It then states which settings the density supports: the ground filter window (1–2 pts/m² → 2 m), the DTM cell size, LOD1 only below 1 pt/m² (about 0.6 pts/m² in the ELiT study), and the radius and tile of our slope-based and LSQ filters.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz in a projected CRS (metres); a cloud in degrees is refused.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 5, &amp;gt; 0): cell of the density rasters.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Density rasters&lt;/b&gt; (OUTPUT): GeoTIFF with four bands: all returns, last returns, ground (pts/m²), gap (1/0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML report with maps and advice.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: DENSITY, GROUND_DENSITY (pts/m²), GAP_SHARE, DUPLICATES, NOISE_SHARE, GROUND_WINDOW (m), DTM_CELL (m).&lt;/p&gt;</source>
+            <translation>&lt;p&gt;يفحص سحابة LAS/LAZ قبل المعالجة: شبكات كثافة كل الانعكاسات والانعكاسات الأخيرة ونقاط الأرض، والخلايا التي فيها انعكاسات بلا أرض (فجوات)، ومدرّجات الانعكاسات والأصناف، والنقاط المكررة، ونسبة الضوضاء (الصنفان 7 و18) ومدى زاوية المسح. ثم يبيّن الإعدادات التي تسمح بها الكثافة: نافذة مرشّح الأرض (1–2 نقطة/م² ← 2 م)، وحجم خلية نموذج التضاريس، وLOD1 فقط تحت نقطة واحدة/م² (نحو 0.6 نقطة/م² في دراسة ELiT)، ونصف قطر وبلاطة مرشّحينا المعتمدين على الميل وLSQ.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف ‎.las/.laz في نظام إسقاط مستوٍ (بالأمتار)؛ تُرفض السحابة بالدرجات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 5، &amp;gt; 0): خلية شبكات الكثافة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;أصناف الأرض&lt;/b&gt; (GROUND_CLASSES، الافتراضي &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شبكات الكثافة&lt;/b&gt; (OUTPUT): ملف GeoTIFF بأربع طبقات: كل الانعكاسات، الأخيرة، الأرض (نقطة/م²)، الفجوة (1/0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): تقرير HTML بالخرائط والتوصيات.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;الأعداد الناتجة: DENSITY وGROUND_DENSITY (نقطة/م²) وGAP_SHARE وDUPLICATES وNOISE_SHARE وGROUND_WINDOW (م) وDTM_CELL (م).&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>سحابة النقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Cell size (m)</source>
+            <translation>حجم الخلية (م)</translation>
+        </message>
+        <message>
+            <source>Ground classes</source>
+            <translation>أصناف الأرض</translation>
+        </message>
+        <message>
+            <source>Density rasters</source>
+            <translation>شبكات الكثافة</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
+        <name>LidarToDtmAlgorithm</name>
+        <message>
+            <source>LiDAR to DTM with accuracy</source>
+            <translation>من LiDAR إلى نموذج تضاريس رقمي مع الدقة</translation>
+        </message>
+        <message>
+            <source>lidar,ground,filter,dtm,dem,idw,accuracy,rmse,check points,chain,all-or-nothing</source>
+            <translation>ليدار,أرض,مرشح,نموذج تضاريس,dem,idw,دقة,rmse,نقاط تحقق,سلسلة,الكل أو لا شيء</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Classifies the ground of a LiDAR point cloud, interpolates a DTM from the ground points and measures its accuracy against check points, in one step. It writes all its outputs or none: when any step fails or is cancelled, no classified cloud, DTM or report is left behind.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html → the classified cloud, the DTM and the RMSE.&lt;/p&gt;&lt;p&gt;The steps are the recommended ground filter (the improved least-squares filter where the recommended one is not installed), the IDW DTM (power 3, 12 neighbours by default: the seed paper's best setting) and the DTM accuracy; the results equal those of the three algorithms run one after another. Before anything is written the CRS, the check points (no duplicates, inside the cloud's extent) and every output path are checked. The graphical model of the same name is its editable counterpart, without this guarantee.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt;: .las or .laz in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (default yes), with its search cell (m, default 5) and depth (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM cell size&lt;/b&gt; (m, default 1), &lt;b&gt;IDW power&lt;/b&gt; (default 3), &lt;b&gt;neighbours&lt;/b&gt; (default 12), &lt;b&gt;fill data gaps&lt;/b&gt; (default no) and a &lt;b&gt;CRS&lt;/b&gt; for a cloud without a CRS record.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check points&lt;/b&gt;: a point layer (heights from a field or the geometry Z) or a CSV/TXT file (id, x, y, z) with its CRS; reprojection of x, y on request; bilinear (default) or nearest-cell sampling.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud, DTM (GeoTIFF), check-point residuals and the DTM accuracy report; optional ground filter report and DTM report.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;يصنّف أرض سحابة نقاط LiDAR، ويستكمل منها نموذج تضاريس رقميًا (DTM) من نقاط الأرض، ويقيس دقته مقابل نقاط التحقق، في خطوة واحدة. يكتب كل نواتجه أو لا شيء منها: إذا فشلت أي خطوة أو أُلغيت لا تبقى سحابة مصنّفة ولا DTM ولا تقرير.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: &lt;span dir="ltr"&gt;INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html&lt;/span&gt; ← السحابة المصنّفة والـ DTM وقيمة RMSE.&lt;/p&gt;&lt;p&gt;الخطوات هي مرشّح الأرض الموصى به (أو مرشّح المربعات الصغرى المحسّن حيث لا يتوفر الموصى به)، ثم DTM بطريقة IDW (الأس 3 و12 جارًا افتراضيًا: أفضل إعداد في البحث المرجعي)، ثم دقة الـ DTM؛ والنتائج مطابقة لتشغيل الخوارزميات الثلاث واحدة تلو الأخرى. قبل كتابة أي شيء يُتحقَّق من نظام الإحداثيات ومن نقاط التحقق (بلا تكرار وضمن امتداد السحابة) ومن كل مسار ناتج. النموذج الرسومي الذي يحمل الاسم نفسه هو نظيره القابل للتعديل، ولكن دون هذا الضمان.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt;: ملف ‎.las‏ أو ‎.laz‏ في نظام إحداثيات مسقط (أمتار).&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة النقاط الشاذة المنخفضة أولًا&lt;/b&gt; (افتراضيًا نعم)، مع خلية البحث (م، افتراضيًا 5) والعمق (م، افتراضيًا 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم خلية الـ DTM&lt;/b&gt; (م، افتراضيًا 1)، و&lt;b&gt;أس IDW&lt;/b&gt; (افتراضيًا 3)، و&lt;b&gt;عدد الجيران&lt;/b&gt; (افتراضيًا 12)، و&lt;b&gt;ملء فجوات البيانات&lt;/b&gt; (افتراضيًا لا)، و&lt;b&gt;نظام إحداثيات&lt;/b&gt; لسحابة بلا سجل نظام إحداثيات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط التحقق&lt;/b&gt;: طبقة نقطية (الارتفاعات من حقل أو من Z الهندسة) أو ملف CSV/TXT ‏(id, x, y, z) مع نظام إحداثياته؛ إعادة إسقاط x وy عند الطلب؛ اعتيان ثنائي الخطية (افتراضيًا) أو بأقرب خلية.&lt;/li&gt;&lt;li&gt;&lt;b&gt;النواتج&lt;/b&gt;: السحابة المصنّفة، والـ DTM ‏(GeoTIFF)، وبواقي نقاط التحقق، وتقرير دقة الـ DTM؛ واختياريًا تقرير مرشّح الأرض وتقرير الـ DTM.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>DTM cell size (m)</source>
+            <translation>حجم خلية نموذج التضاريس (م)</translation>
+        </message>
+        <message>
+            <source>IDW power</source>
+            <translation>أس IDW</translation>
+        </message>
+        <message>
+            <source>IDW neighbours</source>
+            <translation>عدد جيران IDW</translation>
+        </message>
+        <message>
+            <source>Fill data gaps in the DTM (interpolate far from ground points)</source>
+            <translation>ملء فجوات البيانات في نموذج التضاريس (الاستكمال بعيدًا عن نقاط الأرض)</translation>
+        </message>
+        <message>
+            <source>CRS override for a cloud without a CRS record</source>
+            <translation>نظام إحداثيات بديل لسحابة بلا سجل نظام إحداثيات</translation>
+        </message>
+        <message>
+            <source>Check points (point layer)</source>
+            <translation>نقاط التحقق (طبقة نقطية)</translation>
+        </message>
+        <message>
+            <source>Height field (empty = geometry Z)</source>
+            <translation>حقل الارتفاع (فارغ = قيمة Z من الهندسة)</translation>
+        </message>
+        <message>
+            <source>Id field</source>
+            <translation>حقل المعرِّف</translation>
+        </message>
+        <message>
+            <source>Check points (CSV/TXT file: id,x,y,z)</source>
+            <translation>نقاط التحقق (ملف CSV/TXT: ‏id,x,y,z)</translation>
+        </message>
+        <message>
+            <source>CRS of the check point file (default: DTM CRS)</source>
+            <translation>نظام إحداثيات ملف نقاط التحقق (الافتراضي: نظام إحداثيات DTM)</translation>
+        </message>
+        <message>
+            <source>Reproject check points to the DTM CRS</source>
+            <translation>إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM</translation>
+        </message>
+        <message>
+            <source>Sampling</source>
+            <translation>طريقة الاعتيان</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>ثنائي الخطية</translation>
+        </message>
+        <message>
+            <source>Nearest cell</source>
+            <translation>أقرب خلية</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>سحابة النقاط المصنَّفة</translation>
+        </message>
+        <message>
+            <source>DTM</source>
+            <translation>نموذج الارتفاعات الرقمي للأرض (DTM)</translation>
+        </message>
+        <message>
+            <source>Check-point residuals</source>
+            <translation>بواقي نقاط التحقق</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>DTM accuracy report</source>
+            <translation>تقرير دقة نموذج التضاريس الرقمي</translation>
+        </message>
+        <message>
+            <source>Ground filter report</source>
+            <translation>تقرير مرشّح الأرض</translation>
+        </message>
+        <message>
+            <source>DTM report</source>
+            <translation>تقرير نموذج التضاريس الرقمي</translation>
+        </message>
+        <message>
+            <source>Ground points</source>
+            <translation>نقاط الأرض</translation>
+        </message>
+        <message>
+            <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
+            <translation>سحابة النقاط لا تحوي سجل نظام إحداثيات ولم يُحدَّد نظام إحداثيات؛ اضبط المعامل CRS (مثلاً EPSG:32632). لم تُكتب أي مخرجات.</translation>
+        </message>
+        <message>
+            <source>None of the {n} check points lies within the point cloud's extent (x {x0:.1f}–{x1:.1f}, y {y0:.1f}–{y1:.1f}); are they in another CRS? No output was written.</source>
+            <translation>لا تقع أي من نقاط التحقق الـ {n} ضمن امتداد سحابة النقاط (x ‏{x0:.1f}–{x1:.1f}، y ‏{y0:.1f}–{y1:.1f})؛ هل هي في نظام إحداثيات آخر؟ لم يُكتب أي ناتج.</translation>
+        </message>
+        <message>
+            <source>Choose the point cloud (a .las or .laz file).</source>
+            <translation>اختر سحابة النقاط (ملف ‎.las‏ أو ‎.laz‏).</translation>
+        </message>
+        <message>
+            <source>Choose an output file for {}.</source>
+            <translation>اختر ملف ناتج لـ {}.</translation>
+        </message>
+        <message>
+            <source>Cell size must be &gt; 0 (metres); give e.g. 1.0.</source>
+            <translation>يجب أن يكون حجم الخلية &gt; 0 (أمتار)؛ أعطِ مثلًا 1.0.</translation>
+        </message>
+        <message>
+            <source>The ground filter found no ground point; no DTM can be interpolated. No output was written.</source>
+            <translation>لم يجد مرشّح الأرض أي نقطة أرض؛ لا يمكن استكمال نموذج تضاريس. لم يُكتب أي ناتج.</translation>
+        </message>
+    </context>
+    <context>
         <name>LsqGroundFilterAlgorithm</name>
         <message>
             <source>Ground filter (least-squares polynomial)</source>
@@ -1283,18 +1595,109 @@
         </message>
     </context>
     <context>
-        <name>RectifyGcpAlgorithm</name>
+        <name>RectifyBatchAlgorithm</name>
         <message>
-            <source>Rectify image with GCPs (polynomial)</source>
-            <translation>التصحيح الهندسي للصورة بنقاط الضبط الأرضي (متعدد حدود)</translation>
+            <source>Rectify a folder of images with GCPs (batch)</source>
+            <translation>تصحيح مجلد من المرئيات بنقاط الضبط (دفعة)</translation>
         </message>
+        <message>
+            <source>Warps every image of a folder with its .points file and summarises the accuracy in one table.</source>
+            <translation>يصحّح كل مرئية في المجلد بملف ‎.points‎ الخاص بها ويلخّص الدقة في جدول واحد.</translation>
+        </message>
+        <message>
+            <source>georeference,gcp,batch,folder,rectification,warp,rms</source>
+            <translation>georeference,gcp,batch,folder,rectification,warp,rms,إسناد جغرافي,دفعة,مجلد,تصحيح</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Rectifies every image of a folder that has its QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file next to it (scan.tif + scan.tif.points), with a fixed transformation or the one recommended for each image, and writes one summary table: image, transformation, RMS_T, check-point / leave-one-out RMS_T, verdict.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Input folder&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 8 = recommended per image; 0 polynomial of order ORDER, 1–3 polynomial 1–3, 4 linear, 5 Helmert, 6 projective, 7 thin-plate spline).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): drop GCPs over the C5 limit 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): for .points files without a '#CRS:' line.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output folder&lt;/b&gt; (OUTPUT_FOLDER): image_rectified.tif per image, each written all-or-nothing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Summary&lt;/b&gt; (OUTPUT_CSV, OUTPUT_HTML): one row per image; an image that cannot be rectified gets its error in the table and the others go on.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;يصحّح كل مرئية في المجلد يجاورها ملف &lt;i&gt;.points&lt;/i&gt; من Georeferencer في QGIS (scan.tif + scan.tif.points)، بتحويل ثابت أو بالتحويل الموصى به لكل مرئية، ويكتب جدول ملخص واحداً: المرئية، التحويل، RMS_T، RMS_T نقاط التحقق / ترك واحدة، الحكم.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;مجلد الإدخال&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التحويل&lt;/b&gt; (TRANSFORMATION، الافتراضي 8 = الموصى به لكل مرئية؛ 0 كثيرة حدود من الدرجة ORDER، 1–3 كثيرة حدود 1–3، 4 خطي، 5 هلمرت، 6 إسقاطي، 7 شريحة الصفيحة الرقيقة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجة كثيرة الحدود&lt;/b&gt; (ORDER، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تنقيح النقاط&lt;/b&gt; (REFINE، الافتراضي معطّل): حذف النقاط فوق حدّ C5 أي 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام إحداثيات النقاط&lt;/b&gt; (GCP_CRS): لملفات .points التي لا سطر '#CRS:' فيها.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إعادة المعاينة&lt;/b&gt; (RESAMPLING، الافتراضي 0 = الأقرب).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مجلد الإخراج&lt;/b&gt; (OUTPUT_FOLDER): ‏image_rectified.tif لكل مرئية، يُكتب كل منها كاملاً أو لا يُكتب.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الملخص&lt;/b&gt; (OUTPUT_CSV، OUTPUT_HTML): سطر لكل مرئية؛ المرئية التي يتعذر تصحيحها يُسجَّل خطؤها في الجدول وتستمر البقية.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Folder of images with .points files</source>
+            <translation>مجلد المرئيات مع ملفات .points</translation>
+        </message>
+        <message>
+            <source>Transformation</source>
+            <translation>التحويل</translation>
+        </message>
+        <message>
+            <source>polynomial of order ORDER</source>
+            <translation>كثيرة حدود من الدرجة ORDER</translation>
+        </message>
+        <message>
+            <source>polynomial order 1 (affine)</source>
+            <translation>كثيرة حدود من الدرجة 1 (تآلفي)</translation>
+        </message>
+        <message>
+            <source>polynomial order 2</source>
+            <translation>كثيرة حدود من الدرجة 2</translation>
+        </message>
+        <message>
+            <source>polynomial order 3</source>
+            <translation>كثيرة حدود من الدرجة 3</translation>
+        </message>
+        <message>
+            <source>linear (shift and scale per axis)</source>
+            <translation>خطي (إزاحة ومقياس لكل محور)</translation>
+        </message>
+        <message>
+            <source>Helmert (shift, scale, rotation)</source>
+            <translation>هلمرت (إزاحة، مقياس، دوران)</translation>
+        </message>
+        <message>
+            <source>projective (homography)</source>
+            <translation>إسقاطي (تحويل متجانس)</translation>
+        </message>
+        <message>
+            <source>thin-plate spline</source>
+            <translation>شريحة الصفيحة الرقيقة</translation>
+        </message>
+        <message>
+            <source>recommended (lowest check-point / leave-one-out error)</source>
+            <translation>الموصى به (أصغر خطأ على نقاط التحقق / ترك واحدة خارجاً)</translation>
+        </message>
+        <message>
+            <source>Polynomial order (1–3)</source>
+            <translation>درجة متعدد الحدود (1–3)</translation>
+        </message>
+        <message>
+            <source>Refine GCPs: drop the worst while over the tolerance</source>
+            <translation>تنقيح النقاط: حذف الأسوأ ما دام فوق التسامح</translation>
+        </message>
+        <message>
+            <source>CRS of the GCP map coordinates (if the file does not say)</source>
+            <translation>نظام الإحداثيات للإحداثيات الخرائطية لنقاط الضبط (إن لم يحدده الملف)</translation>
+        </message>
+        <message>
+            <source>Resampling</source>
+            <translation>إعادة الاعتيان</translation>
+        </message>
+        <message>
+            <source>Folder of rectified images</source>
+            <translation>مجلد المرئيات المصحّحة</translation>
+        </message>
+        <message>
+            <source>Summary table</source>
+            <translation>جدول الملخص</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>ملفات CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>Summary report</source>
+            <translation>تقرير الملخص</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
+        <name>RectifyGcpAlgorithm</name>
         <message>
             <source>georeference,georeferencer,gcp,ground control points,polynomial,rectification,warp,gdalwarp,rms,accuracy</source>
             <translation>إسناد جغرافي,georeferencer,gcp,نقاط الضبط الأرضي,متعدد الحدود,تصحيح هندسي,warp,gdalwarp,rms,الدقة</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Rectifies (warps) an image with ground control points and a 2-D polynomial of order 1, 2 or 3 through GDAL (same result as &lt;i&gt;gdalwarp -order N&lt;/i&gt;), and writes the accuracy report of the fit. The input image is never modified: the GCPs are attached to an in-memory copy.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;تصحِّح صورة هندسياً (warp) باستخدام نقاط الضبط الأرضي ومتعدد حدود ثنائي الأبعاد من الدرجة 1 أو 2 أو 3 عبر GDAL (النتيجة نفسها التي يعطيها &lt;i&gt;gdalwarp -order N&lt;/i&gt;)، وتكتب تقرير دقة المواءمة. لا تُعدَّل صورة الإدخال أبداً: تُرفق نقاط الضبط بنسخة منها في الذاكرة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT): الراستر المراد تصحيحه.&lt;/li&gt;</translation>
         </message>
         <message>
             <source>Target CRS [default: the GCP CRS]</source>
@@ -1331,6 +1734,14 @@
         <message>
             <source>&lt;li&gt;&lt;b&gt;Target CRS&lt;/b&gt; (TARGET_CRS, default the GCP CRS): output CRS; GDAL reprojects after the polynomial.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest neighbour as in the paper): 0 near, 1 bilinear, 2 cubic, 3 cubic spline, 4 Lanczos, 5 average, 6 mode.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output resolution&lt;/b&gt; (RESOLUTION, target-CRS units, default GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Nodata&lt;/b&gt; (NODATA, optional): value outside the image footprint (default: the input's nodata, else 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rectified image&lt;/b&gt; (OUTPUT): GeoTIFF (written under a temporary name, renamed on success; nothing is left behind on failure).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML accuracy report.&lt;/li&gt;&lt;/ul&gt;</source>
             <translation>&lt;li&gt;&lt;b&gt;نظام الإحداثيات الهدف&lt;/b&gt; (TARGET_CRS، الافتراضي نظام إحداثيات نقاط الضبط): نظام إحداثيات المخرج؛ يعيد GDAL الإسقاط بعد تطبيق متعدد الحدود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إعادة الاعتيان&lt;/b&gt; (RESAMPLING، الافتراضي 0 = أقرب جار كما في البحث): 0 أقرب جار، 1 ثنائي الخطية، 2 تكعيبي، 3 شريحة تكعيبية (cubic spline)، 4 Lanczos، 5 المتوسط، 6 المنوال.&lt;/li&gt;&lt;li&gt;&lt;b&gt;دقة تمييز المخرج&lt;/b&gt; (RESOLUTION، بوحدات نظام الإحداثيات الهدف، الافتراضي GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;قيمة nodata&lt;/b&gt; (NODATA، اختياري): القيمة خارج حدود الصورة (الافتراضي: قيمة nodata في الإدخال، وإلا 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الصورة المصحَّحة هندسياً&lt;/b&gt; (OUTPUT): GeoTIFF (يُكتب باسم مؤقت ثم يُعاد تسميته عند النجاح؛ ولا يبقى أي أثر عند الفشل).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): تقرير دقة بصيغة HTML.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Rectify image with GCPs</source>
+            <translation>تصحيح مرئية بنقاط الضبط الأرضي</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Rectifies (warps) an image with ground control points through GDAL: a polynomial of order 1–3, a linear, Helmert, projective or thin-plate-spline transformation, or the one with the lowest check-point / leave-one-out error (as &lt;i&gt;gdalwarp -order N&lt;/i&gt; / &lt;i&gt;-tps&lt;/i&gt;), and writes the accuracy report. The input image is never modified.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 REFINE=true OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;يصحّح (يعيد تشكيل) مرئية بنقاط الضبط الأرضي عبر GDAL: كثيرة حدود من الدرجة 1–3، أو تحويل خطي أو هلمرت أو إسقاطي أو شريحة الصفيحة الرقيقة، أو التحويل صاحب أصغر خطأ على نقاط التحقق / ترك واحدة (مثل &lt;i&gt;gdalwarp -order N&lt;/i&gt; / &lt;i&gt;-tps&lt;/i&gt;)، ويكتب تقرير الدقة. لا تُعدَّل المرئية المدخلة أبداً.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 REFINE=true OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;المرئية&lt;/b&gt; (INPUT): الراستر المراد تصحيحه.&lt;/li&gt;</translation>
         </message>
     </context>
     <context>
@@ -1536,6 +1947,41 @@
         </message>
     </context>
     <context>
+        <name>TinDtmAlgorithm</name>
+        <message>
+            <source>DTM by TIN (Delaunay linear interpolation)</source>
+            <translation>نموذج تضاريس رقمي بـ TIN (استيفاء خطي ديلوني)</translation>
+        </message>
+        <message>
+            <source>Terrain raster from the planes of the ground points' Delaunay triangles, gaps left empty.</source>
+            <translation>شبكة تضاريس من مستويات مثلثات ديلوني لنقاط الأرض، مع ترك الفجوات فارغة.</translation>
+        </message>
+        <message>
+            <source>dtm,dem,tin,delaunay,triangulation,linear,gdal_grid,blast2dem,lidar,ground,raster</source>
+            <translation>نموذج تضاريس,dem,tin,ديلوني,تثليث,خطي,gdal_grid,blast2dem,ليدار,أرض,شبكة</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Triangulates the ground points of a LAS/LAZ file (Delaunay, Qhull) and gives every cell centre the height of the plane of its triangle — the TIN DTM most practitioners default to, the method of &lt;code&gt;gdal_grid -a linear&lt;/code&gt;. Triangles with an edge longer than the maximum edge are dropped, so gaps under buildings or water stay nodata unless you fill them; cells outside the points' convex hull are always nodata.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=0.5 MAX_EDGE=0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</source>
+            <translation>&lt;p&gt;يثلّث نقاط الأرض في ملف LAS/LAZ (ديلوني، Qhull) ويعطي كل مركز خلية ارتفاع مستوى مثلثه — نموذج TIN للتضاريس الذي يعتمده معظم الممارسين، وهي طريقة &lt;code&gt;gdal_grid -a linear&lt;/code&gt;. تُحذف المثلثات التي يتجاوز أحد أضلاعها الطول الأقصى، فتبقى الفجوات تحت المباني أو فوق الماء بلا بيانات ما لم تطلب ملأها؛ والخلايا خارج الغلاف المحدّب للنقاط تبقى دائماً بلا بيانات.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground.laz CLASSES=2 CELL_SIZE=0.5 MAX_EDGE=0.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Maximum triangle edge&lt;/b&gt; (MAX_EDGE, m, default 0 = automatic: ten mean point spacings, at least four cells): longer triangles are nodata.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Fill gaps&lt;/b&gt; (FILL_GAPS, default no): keep every triangle, bridging gaps inside the hull with flat facets.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs also the numbers N_POINTS, N_TRIANGLES, VALID_CELLS, NODATA_CELLS.&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;أقصى طول لضلع المثلث&lt;/b&gt; (MAX_EDGE، م، الافتراضي 0 = تلقائي: عشرة أضعاف متوسط التباعد بين النقاط، وأربع خلايا على الأقل): المثلثات الأطول تُترك بلا بيانات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ملء الفجوات&lt;/b&gt; (FILL_GAPS، الافتراضي لا): إبقاء كل المثلثات وسدّ الفجوات داخل الغلاف بأوجه مستوية.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;يُخرج أيضاً الأعداد N_POINTS وN_TRIANGLES وVALID_CELLS وNODATA_CELLS.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Maximum triangle edge (m, 0 = auto)</source>
+            <translation>أقصى طول لضلع المثلث (م، 0 = تلقائي)</translation>
+        </message>
+        <message>
+            <source>Fill gaps (keep long triangles)</source>
+            <translation>ملء الفجوات (إبقاء المثلثات الطويلة)</translation>
+        </message>
+        <message>
+            <source>TIN DTM</source>
+            <translation>نموذج تضاريس TIN</translation>
+        </message>
+    </context>
+    <context>
         <name>_GcpBase</name>
         <message>
             <source>Image (raster) to rectify</source>
@@ -1636,6 +2082,58 @@
         <message>
             <source>The GCP CRS is geographic (degrees): the accuracy criteria need map units of length. Set TARGET_CRS (or GCP_CRS) to a projected CRS, e.g. the UTM zone of the image.</source>
             <translation>نظام إحداثيات نقاط الضبط جغرافي (بالدرجات): تتطلب معايير الدقة وحدات خريطة طولية. اضبط TARGET_CRS (أو GCP_CRS) على نظام إحداثيات مُسقَط، مثل نطاق UTM الذي تقع فيه الصورة.</translation>
+        </message>
+        <message>
+            <source>Transformation</source>
+            <translation>التحويل</translation>
+        </message>
+        <message>
+            <source>polynomial of order ORDER</source>
+            <translation>كثيرة حدود من الدرجة ORDER</translation>
+        </message>
+        <message>
+            <source>polynomial order 1 (affine)</source>
+            <translation>كثيرة حدود من الدرجة 1 (تآلفي)</translation>
+        </message>
+        <message>
+            <source>polynomial order 2</source>
+            <translation>كثيرة حدود من الدرجة 2</translation>
+        </message>
+        <message>
+            <source>polynomial order 3</source>
+            <translation>كثيرة حدود من الدرجة 3</translation>
+        </message>
+        <message>
+            <source>linear (shift and scale per axis)</source>
+            <translation>خطي (إزاحة ومقياس لكل محور)</translation>
+        </message>
+        <message>
+            <source>Helmert (shift, scale, rotation)</source>
+            <translation>هلمرت (إزاحة، مقياس، دوران)</translation>
+        </message>
+        <message>
+            <source>projective (homography)</source>
+            <translation>إسقاطي (تحويل متجانس)</translation>
+        </message>
+        <message>
+            <source>thin-plate spline</source>
+            <translation>شريحة الصفيحة الرقيقة</translation>
+        </message>
+        <message>
+            <source>recommended (lowest check-point / leave-one-out error)</source>
+            <translation>الموصى به (أصغر خطأ على نقاط التحقق / ترك واحدة خارجاً)</translation>
+        </message>
+        <message>
+            <source>Refine GCPs: drop the worst while over the tolerance</source>
+            <translation>تنقيح النقاط: حذف الأسوأ ما دام فوق التسامح</translation>
+        </message>
+        <message>
+            <source>Refinement tolerance (map units) [default: C5 limit 5·GR]</source>
+            <translation>تسامح التنقيح (وحدات الخريطة) [الافتراضي: حدّ C5 أي 5·GR]</translation>
+        </message>
+        <message>
+            <source>Minimum GCPs kept by the refinement [default: minimum + 2]</source>
+            <translation>أدنى عدد نقاط يبقيه التنقيح [الافتراضي: الحدّ الأدنى + 2]</translation>
         </message>
     </context>
     <context>
