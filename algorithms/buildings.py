@@ -102,7 +102,7 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
             self.OUTPUT_CLOUD, self.tr("Classified cloud (class 6 = building)"),
             LAS_FILTER, optional=True, createByDefault=False))
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("Building footprints report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
         self.add_report_language()
         for name, label in (("N_BUILDINGS", "Buildings"),

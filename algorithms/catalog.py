@@ -105,7 +105,7 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
         self.add(QgsProcessingParameterFolderDestination(
             self.OUTPUT_FOLDER, self.tr("Output folder")))
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("Tile catalog report"), self.tr("HTML files (*.html)"),
             optional=True))
         for name, label in ((self.N_TILES, self.tr("Tiles")),
                             (self.N_FAILED, self.tr("Failed tiles")),

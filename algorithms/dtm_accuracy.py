@@ -28,6 +28,7 @@ from ..core.reporting import translator
 from ..core.terrain import accuracy as core_acc
 from ..core.terrain import report as terrain_report
 from .base import GeomaticsAlgorithm
+from .helptext import build_help
 
 NUMBERS = (
     ("N", "n", "Check points used"),
@@ -100,38 +101,23 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
                        "validation").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
-            "<p>Compares a DTM with independent check points (e.g. GNSS heights). The "
-            "DTM is sampled at each point (bilinear by default) and the errors "
-            "e = z<sub>DTM</sub> − z<sub>check</sub> are summarised: N, mean error (bias), "
-            "MAE, RMSE, standard deviation, max |e|, Pearson r and R² (= r²) between DTM "
-            "and check heights, NMAD = 1.4826·median|e − median e| (Höhle &amp; Höhle "
-            "2009), and the vertical accuracy at 95 % confidence = 1.96·RMSE (ASPRS "
-            "Positional Accuracy Standards 2014, which assumes unbiased normal errors; the "
-            "95th percentile of |e| is reported too). Check points outside the DTM or on "
-            "nodata are counted and excluded — never read as 0.</p>"
-            "<p><b>Example</b>: DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv → RMSE, r and a "
-            "report with a scatter plot and an error histogram.</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>DTM</b> (DTM): raster layer; BAND (default 1).</li>"
-            "<li><b>Check points</b> (CHECKPOINTS, optional): point layer; heights from "
-            "<b>Z_FIELD</b> or, if empty, from the geometry Z. <b>ID_FIELD</b> optional.</li>"
-            "<li><b>Check point file</b> (CHECKPOINTS_CSV, optional): delimited text with a "
-            "header x/easting, y/northing, z/height (and id/name), or columns id x y z "
-            "without header. Give the layer or the file.</li>"
-            "<li><b>CSV CRS</b> (CSV_CRS, optional): CRS of the file's coordinates; "
-            "default = the DTM's CRS.</li>"
-            "<li><b>Reproject check points</b> (REPROJECT, default no): when the check "
-            "points are in another CRS than the DTM, transform them (x, y only — heights "
-            "are not converted between vertical datums). Without it such points are an "
-            "error.</li>"
-            "<li><b>Sampling</b> (METHOD, 0 bilinear (default), 1 nearest cell).</li>"
-            "<li><b>Residuals</b> (OUTPUT): point layer with id, z_check, z_dtm, error, "
-            "abs_error and status (used / outside DTM / DTM nodata).</li>"
-            "<li><b>Report</b> (OUTPUT_HTML): HTML with the statistics, a DTM vs check "
-            "scatter plot, an error histogram and the residual table.</li></ul>"
-            "<p>Every statistic is also an output number (N, N_OUTSIDE, N_NODATA, ME, "
-            "MAE, RMSE, STD, MAX_ABS_ERROR, R, R2, NMAD, ACCURACY_95).</p>")
+        return build_help(self, self.tr(
+            "Compares a DTM with independent check points (e.g. GNSS heights) and "
+            "summarises the errors e = z<sub>DTM</sub> − z<sub>check</sub> as bias, mean "
+            "absolute error, RMSE, NMAD, Pearson r and the vertical accuracy at 95 % = "
+            "1.96·RMSE (ASPRS 2014). Check points outside the DTM or on nodata are "
+            "counted and excluded, never read as 0."),
+            "DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv OUTPUT=residuals.gpkg "
+            "OUTPUT_HTML=dtm_accuracy.html",
+            {self.CHECKPOINTS: self.tr("Give the layer or the file."),
+             self.CHECKPOINTS_CSV: self.tr("A header x/easting, y/northing, z/height (and "
+                                           "id/name), or columns id x y z without a "
+                                           "header."),
+             self.REPROJECT: self.tr("x and y only: heights are not converted between "
+                                     "vertical datums. Without it, check points in another "
+                                     "CRS are an error."),
+             self.OUTPUT: self.tr("Point layer with the error and status of each check "
+                                  "point, styled by error.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add(QgsProcessingParameterRasterLayer(self.DTM, self.tr("DTM")))
@@ -163,7 +149,7 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
             self.OUTPUT, self.tr("Residuals"), QgsProcessing.TypeVectorPoint, optional=True,
             createByDefault=True))
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("DTM accuracy report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=True))
         self.add_report_language()
         for name, _, label in NUMBERS:

@@ -111,7 +111,7 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
             self.OUTPUT_POLYGONS, self.tr("Change polygons"), optional=True,
             createByDefault=True))
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("Elevation change report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
         self.add_report_language()
         for name, label in (("LOD", "Level of detection LoD95 (m)"),

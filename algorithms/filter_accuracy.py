@@ -98,7 +98,8 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
             self.REFERENCE_GROUND_CLASSES, self.tr("Reference ground classes"), "2"))
         self.add_report_language()
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("Ground filter accuracy report"),
+            self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
         self.add(QgsProcessingParameterFileDestination(
             self.ERROR_OUTPUT, self.tr("Per-point error layer (user_data: 0 correct, "

@@ -76,7 +76,8 @@ class LidarQaAlgorithm(GeomaticsAlgorithm):
         self.add(QgsProcessingParameterRasterDestination(
             self.OUTPUT, self.tr("Density rasters")))
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("Point density and quality report"),
+            self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
         self.add_report_language()
         for name, label in (("DENSITY", "Density of all returns (pts/m²)"),

@@ -183,7 +183,8 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
             self.GROUND_OUTPUT, self.tr("Ground points"), LAS_OUT_FILTER, optional=True,
             createByDefault=False))
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("Slope ground filter report"),
+            self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
         for name, label in (("N_POINTS", self.tr("Points read")),
                             ("N_GROUND", self.tr("Ground points (class 2)")),
@@ -308,7 +309,8 @@ class SlopeThresholdSweepAlgorithm(_SlopeCommon):
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_CSV, self.tr("Sweep table"), self.tr("CSV files (*.csv)")))
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("Slope threshold sweep report"),
+            self.tr("HTML files (*.html)"),
             optional=True))
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT, self.tr("Classified with the best setting"), LAS_OUT_FILTER,

@@ -36,32 +36,11 @@ from ..core.terrain import kriging as core_kriging
 from ..core.terrain import report as terrain_report
 from ..core.terrain.grid import grid_from_extent, grid_from_points, grid_like
 from .base import GeomaticsAlgorithm
+from .helptext import build_help
 
 NAN = float("nan")
 LAS_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
 
-_HELP_COMMON = QT_TRANSLATE_NOOP(
-    "GeomaticsAlgorithm",
-    "<li><b>Point cloud</b> (INPUT): a .las or .laz file (LAS 1.0–1.4), e.g. the output "
-    "of a ground filter.</li>"
-    "<li><b>Classes used</b> (CLASSES, default <code>2</code> = ground): comma-separated "
-    "LAS classes interpolated; empty = every point. No point of these classes → error "
-    "that lists the classes present.</li>"
-    "<li><b>Cell size</b> (CELL_SIZE, m, default 1.0, &gt; 0).</li>"
-    "<li><b>Extent</b> (EXTENT, optional): default = the selected points' extent. The "
-    "grid is snapped outward to multiples of the cell size so that tiles line up.</li>"
-    "<li><b>CRS</b> (CRS, optional): overrides the CRS of the LAS file. If the file has "
-    "no CRS and none is given the algorithm stops with an error (a DTM without a CRS "
-    "is a common source of misplaced data).</li>"
-    "<li><b>Maximum distance to data</b> (MAX_DISTANCE, m, default 0 = automatic: five "
-    "mean point spacings, at least two cells): cells whose nearest point is farther "
-    "are nodata, so no terrain is invented under water, removed buildings or missing "
-    "strips.</li>"
-    "<li><b>Fill data gaps</b> (FILL_GAPS, default no): interpolate every cell however "
-    "far from the data (ignores MAX_DISTANCE).</li>"
-    "<li><b>Output</b> (OUTPUT): GeoTIFF (float32, DEFLATE, nodata −9999) in the input "
-    "CRS; values belong to cell centres.</li>"
-    "<li><b>Report</b> (OUTPUT_HTML, optional): HTML report.</li>")
 
 
 #: ASPRS LAS 1.4 R15 classes 0–22 (index = class code), for the class pickers.
@@ -169,6 +148,19 @@ class _GridAlgorithm(GeomaticsAlgorithm):
     def report_label(self):
         return self.tr("Report")
 
+    def common_notes(self):
+        """Help notes of the shared grid parameters (see :func:`.helptext.build_help`)."""
+        return {
+            self.EXTENT: self.tr("Default: the extent of the selected points, snapped "
+                                 "outward to whole cells so that tiles line up."),
+            self.CRS: self.tr("Needed when the LAS file has no CRS."),
+            self.MAX_DISTANCE: self.tr("0 = five mean point spacings (at least two "
+                                       "cells); cells farther from any point are nodata."),
+            self.FILL_GAPS: self.tr("Interpolates every cell, ignoring the maximum "
+                                    "distance."),
+            self.OUTPUT: self.tr("GeoTIFF (float32, nodata −9999) in the cloud's CRS."),
+        }
+
     def tr_report(self, parameters, context):
         """Translator of the report language (for the figures' text)."""
         return translator(self.report_lang(parameters, context))
@@ -253,6 +245,9 @@ class IdwDtmAlgorithm(_GridAlgorithm):
     RADIUS = "RADIUS"
     MIN_POINTS = "MIN_POINTS"
 
+    def report_label(self):
+        return self.tr("IDW DTM report")
+
     def name(self):
         return "idwdtm"
 
@@ -264,26 +259,21 @@ class IdwDtmAlgorithm(_GridAlgorithm):
                        "invdistnn,raster").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return (self.tr(
-            "<p>Interpolates a terrain raster from the ground points of a LAS/LAZ file by "
-            "inverse distance weighting (Shepard 1968): ẑ = Σ w<sub>i</sub> z<sub>i</sub> / "
-            "Σ w<sub>i</sub>, w<sub>i</sub> = 1/d<sub>i</sub><sup>p</sup>, over the nearest "
-            "neighbours of each cell centre. Same semantics as <code>gdal_grid -a "
-            "invdistnn</code> (power, max_points, radius, min_points; a cell centre on a "
-            "point takes its height exactly), but KD-tree based and processed in blocks: "
-            "1 M points onto 1 M cells take seconds.</p>"
-            "<p><b>Example</b>: INPUT=ground.laz CLASSES=2 CELL_SIZE=1 POWER=3 NEIGHBOURS=12 "
-            "(the seed paper's best setting, RMSE 0.204 m at 62 GNSS points).</p>"
-            "<p><b>Parameters</b></p><ul>") + self.tr(_HELP_COMMON) + self.tr(
-            "<li><b>Power</b> (POWER, default 2; the paper found 3 best).</li>"
-            "<li><b>Neighbours</b> (NEIGHBOURS, default 12): nearest points used (gdal "
-            "max_points); 0 = all points within the radius (needs RADIUS). More "
-            "neighbours than points → error.</li>"
-            "<li><b>Search radius</b> (RADIUS, m, default 0 = unlimited): only points "
-            "within it are used (gdal radius).</li>"
-            "<li><b>Minimum points</b> (MIN_POINTS, default 0): cells with fewer "
-            "neighbours within the radius are nodata (gdal min_points).</li></ul>"
-            "<p>Outputs also the numbers N_POINTS, VALID_CELLS, NODATA_CELLS.</p>"))
+        return build_help(self, self.tr(
+            "Interpolates a terrain raster from the ground points of a LAS/LAZ file by "
+            "inverse distance weighting (Shepard 1968) over the nearest neighbours of each "
+            "cell centre. It follows <code>gdal_grid -a invdistnn</code> but works in "
+            "blocks on a KD-tree, so a million points take seconds."),
+            "INPUT=ground.laz CELL_SIZE=1 POWER=3 NEIGHBOURS=12 OUTPUT=dtm.tif "
+            "OUTPUT_HTML=idw.html",
+            {**self.common_notes(),
+             self.POWER: self.tr("The seed paper found 3 best (RMSE 0.204 m at 62 GNSS "
+                                 "points)."),
+             self.NEIGHBOURS: self.tr("Nearest points used per cell; 0 = every point "
+                                      "within the search radius."),
+             self.RADIUS: self.tr("Only points within this distance are used."),
+             self.MIN_POINTS: self.tr("Cells with fewer points within the search radius "
+                                      "are nodata.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input_params()
@@ -366,6 +356,9 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
 
     TYPES = ("ordinary", "universal")
 
+    def report_label(self):
+        return self.tr("Kriging DTM report")
+
     def name(self):
         return "krigingdtm"
 
@@ -377,57 +370,32 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
                        "variance,cross-validation").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return (self.tr(
-            "<p>Kriging (Matheron 1963; Cressie 1993) of the ground points of a LAS/LAZ "
-            "file onto a raster, with a kriging variance (or standard deviation) raster. "
-            "Ordinary kriging (unknown constant mean) or universal kriging with a linear "
-            "drift. The variogram is fitted with PyKrige's estimator on a random subsample "
-            "(or given by you); each cell is then kriged from its nearest points in "
-            "batched local systems, so 1 M points onto a 1 km² grid at 1 m take about a "
-            "minute instead of the n×n matrix that makes plain PyKrige run out of memory "
-            "past ~100 k points.</p>"
-            "<p><b>What is approximated</b>: the variogram is fitted on a sample of point "
-            "pairs (FIT_POINTS, reproducible with SEED), by default at the local scale. "
-            "Local-neighbourhood kriging is not global kriging: only the NEIGHBOURS nearest "
-            "points are weighted and the mean is re-estimated in every neighbourhood "
-            "(quasi-stationarity). On terrain this follows the relief better than one "
-            "global mean (it gave the lowest hold-out RMSE on all four ISPRS samples in "
-            "the benchmark), but the two differ — typically by centimetres, by decimetres "
-            "to metres at borders, gaps and steep slopes. With NEIGHBOURS equal to the "
-            "number of points (≤ 6000) the result is global kriging, identical to "
-            "PyKrige. With a linear drift the variogram is fitted on the residuals of a "
-            "least-squares plane; points with identical x, y are merged (mean height). "
-            "The kriging variance is model-based: check it with CV_POINTS (RMS "
-            "standardised error near 1 means realistic variances).</p>"
-            "<p><b>Example</b>: INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=spherical "
-            "NEIGHBOURS=16 CV_POINTS=1000.</p>"
-            "<p><b>Parameters</b></p><ul>") + self.tr(_HELP_COMMON) + self.tr(
-            "<li><b>Kriging type</b> (KRIGING_TYPE, 0 ordinary (default), 1 universal with "
-            "linear drift).</li>"
-            "<li><b>Variogram model</b> (VARIOGRAM, 0 linear, 1 power, 2 gaussian, 3 "
-            "spherical (default), 4 exponential).</li>"
-            "<li><b>Variogram</b> (VARIOGRAM_NUGGET m², VARIOGRAM_SILL m², "
-            "VARIOGRAM_RANGE m; linear: VARIOGRAM_SLOPE; power: VARIOGRAM_SCALE, "
-            "VARIOGRAM_EXPONENT; all optional numbers). Empty = fitted automatically. The "
-            "sill includes the nugget; the range is the practical range.</li>"
-            "<li><b>Neighbours</b> (NEIGHBOURS, default 16, ≥ 2).</li>"
-            "<li><b>Points for the variogram fit</b> (FIT_POINTS, default 3000).</li>"
-            "<li><b>Lag classes</b> (NLAGS, default 12) and <b>maximum lag</b> (MAX_LAG, m, "
-            "default 0 = automatic: three times the typical distance to the "
-            "NEIGHBOURS-th neighbour, the scale local kriging uses, so the nugget and the "
-            "short-range shape that set the weights and the variance are well sampled; the "
-            "fitted sill and range then describe that local scale). For a classical "
-            "field-scale fit give e.g. half the extent (Journel &amp; Huijbregts 1978). A "
-            "fitted nugget is raised to at least 1 % of the semivariance at the maximum "
-            "lag, for numerical stability (Gaussian and power models).</li>"
-            "<li><b>Cross-validation points</b> (CV_POINTS, default 0 = off): "
-            "leave-one-out on this many random points; reports ME, RMSE, mean standardised "
-            "error (ideal 0) and RMS standardised error (ideal 1).</li>"
-            "<li><b>Seed</b> (SEED, default 0).</li>"
-            "<li><b>Variance output</b> (OUTPUT_VARIANCE, optional GeoTIFF): kriging "
-            "variance (m²), or standard deviation (m) with VARIANCE_AS_STD.</li></ul>"
-            "<p>Output numbers: NUGGET, SILL, RANGE (NaN for linear/power), N_POINTS, "
-            "VALID_CELLS, CV_ME, CV_RMSE, CV_MSE (NaN without cross-validation).</p>"))
+        return build_help(self, self.tr(
+            "Kriges the ground points of a LAS/LAZ file onto a raster (ordinary kriging, "
+            "or universal kriging with a linear drift) and can also write the kriging "
+            "variance. The variogram is fitted on a random sample or given by you, and "
+            "each cell is kriged from its nearest points, so a million points take about "
+            "a minute."),
+            "INPUT=ground.laz CELL_SIZE=1 VARIOGRAM=3 NEIGHBOURS=16 CV_POINTS=1000 "
+            "OUTPUT=dtm.tif OUTPUT_VARIANCE=variance.tif",
+            {**self.common_notes(),
+             self.VARIOGRAM_SILL: self.tr("Give nugget, sill and range to skip the fit; "
+                                          "the sill includes the nugget."),
+             self.VARIOGRAM_SLOPE: self.tr("Linear model only."),
+             self.VARIOGRAM_SCALE: self.tr("Power model only."),
+             self.VARIOGRAM_EXPONENT: self.tr("Power model only."),
+             self.NEIGHBOURS: self.tr("Local kriging: the mean is re-estimated in every "
+                                      "neighbourhood; as many neighbours as points "
+                                      "(up to 6000) gives global kriging, identical to "
+                                      "PyKrige."),
+             self.MAX_LAG: self.tr("0 = three times the typical distance to the farthest "
+                                   "neighbour used; for a field-scale fit give about half "
+                                   "the extent."),
+             self.CV_POINTS: self.tr("Leave-one-out check on this many random points; an "
+                                     "RMS standardised error near 1 means realistic "
+                                     "variances."),
+             self.SEED: self.tr("Makes the sample of the variogram fit reproducible."),
+             self.OUTPUT_VARIANCE: self.tr("In m², or in m as a standard deviation.")})
 
     def variogram(self, parameters, context, model):
         """The user's variogram (numbers, or the old text form), or None to fit one."""
@@ -583,6 +551,9 @@ class DsmAlgorithm(_GridAlgorithm):
     CLAMP_NEGATIVE = "CLAMP_NEGATIVE"
     OUTPUT_NDSM = "OUTPUT_NDSM"
 
+    def report_label(self):
+        return self.tr("DSM report")
+
     def name(self):
         return "dsm"
 
@@ -594,31 +565,20 @@ class DsmAlgorithm(_GridAlgorithm):
                        "raster").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
-            "<p>Digital surface model from a LAS/LAZ file: every cell takes the highest "
-            "return falling in it (first returns only as an option, the usual canopy "
-            "surface). With a DTM, also the normalised DSM (nDSM; canopy height model in "
-            "forests) = DSM − DTM on the DTM's grid. Points are read in chunks, so large "
-            "files fit in memory.</p>"
-            "<p><b>Example</b>: INPUT=cloud.laz CELL_SIZE=1 FIRST_RETURNS=true "
-            "DTM=dtm.tif OUTPUT=dsm.tif OUTPUT_NDSM=chm.tif.</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Point cloud</b> (INPUT): .las/.laz.</li>"
-            "<li><b>Classes used</b> (CLASSES, default empty = all classes).</li>"
-            "<li><b>Excluded classes</b> (EXCLUDE_CLASSES, default <code>7,18</code>: "
-            "low and high noise).</li>"
-            "<li><b>First returns only</b> (FIRST_RETURNS, default no).</li>"
-            "<li><b>Cell size</b> (CELL_SIZE, m, default 1), <b>Extent</b> (EXTENT), "
-            "<b>CRS</b> (CRS): as for the DTM tools; ignored when a DTM is given (its grid "
-            "and CRS are used so that DSM and DTM align cell for cell).</li>"
-            "<li><b>Fill distance</b> (FILL_DISTANCE, m, default 0): empty cells take the "
-            "value of the nearest non-empty cell within this distance; 0 = leave them "
-            "nodata.</li>"
-            "<li><b>DTM</b> (DTM, optional raster): needed for the nDSM.</li>"
-            "<li><b>Clamp negative heights to 0</b> (CLAMP_NEGATIVE, default yes).</li>"
-            "<li><b>DSM</b> (OUTPUT) and <b>nDSM</b> (OUTPUT_NDSM, optional, needs DTM): "
-            "GeoTIFF, nodata −9999.</li>"
-            "<li><b>Report</b> (OUTPUT_HTML, optional).</li></ul>")
+        return build_help(self, self.tr(
+            "Builds a digital surface model from a LAS/LAZ file: each cell takes the "
+            "highest return falling in it. With a DTM it also writes the normalised DSM "
+            "(canopy height model in forests) = DSM − DTM on the DTM's grid."),
+            "INPUT=cloud.laz CELL_SIZE=1 FIRST_RETURNS=true DTM=dtm.tif OUTPUT=dsm.tif "
+            "OUTPUT_NDSM=chm.tif",
+            {**self.common_notes(),
+             self.EXCLUDE_CLASSES: self.tr("By default low and high noise."),
+             self.FIRST_RETURNS: self.tr("The usual canopy surface."),
+             self.FILL_DISTANCE: self.tr("Empty cells take the nearest value within this "
+                                         "distance; 0 = leave them nodata."),
+             self.DTM: self.tr("Its grid and CRS replace the cell size, extent and CRS, so "
+                               "that DSM and DTM align cell for cell."),
+             self.OUTPUT_NDSM: self.tr("Needs a DTM.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input_params(classes_default=())

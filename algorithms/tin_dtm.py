@@ -15,7 +15,8 @@ from ..core.lidar.qa import check_projected
 from ..core.reporting import Figure, KeyValues, Paragraph, Report, T
 from ..core.reporting.svg import svg_raster
 from ..core.terrain import tin as core_tin
-from .terrain import _HELP_COMMON, _check_tif, _GridAlgorithm
+from .helptext import build_help
+from .terrain import _check_tif, _GridAlgorithm
 
 
 class TinDtmAlgorithm(_GridAlgorithm):
@@ -37,22 +38,21 @@ class TinDtmAlgorithm(_GridAlgorithm):
         return self.tr("dtm,dem,tin,delaunay,triangulation,linear,gdal_grid,blast2dem,"
                        "lidar,ground,raster").split(",")
 
+    def report_label(self):
+        return self.tr("TIN DTM report")
+
     def shortHelpString(self):  # noqa: N802
-        return (self.tr(
-            "<p>Triangulates the ground points of a LAS/LAZ file (Delaunay, Qhull) and "
-            "gives every cell centre the height of the plane of its triangle — the TIN "
-            "DTM most practitioners default to, the method of <code>gdal_grid -a "
-            "linear</code>. Triangles with an edge longer than the maximum edge are "
-            "dropped, so gaps under buildings or water stay nodata unless you fill "
-            "them; cells outside the points' convex hull are always nodata.</p>"
-            "<p><b>Example</b>: INPUT=ground.laz CLASSES=2 CELL_SIZE=0.5 MAX_EDGE=0.</p>"
-            "<p><b>Parameters</b></p><ul>") + self.tr(_HELP_COMMON) + self.tr(
-            "<li><b>Maximum triangle edge</b> (MAX_EDGE, m, default 0 = automatic: ten "
-            "mean point spacings, at least four cells): longer triangles are nodata.</li>"
-            "<li><b>Fill gaps</b> (FILL_GAPS, default no): keep every triangle, bridging "
-            "gaps inside the hull with flat facets.</li></ul>"
-            "<p>Outputs also the numbers N_POINTS, N_TRIANGLES, VALID_CELLS, "
-            "NODATA_CELLS.</p>"))
+        return build_help(self, self.tr(
+            "Triangulates the ground points of a LAS/LAZ file (Delaunay) and gives every "
+            "cell centre the height of the plane of its triangle, as <code>gdal_grid -a "
+            "linear</code> does. Triangles with an edge longer than the maximum are "
+            "dropped, so gaps under buildings or water stay nodata unless you fill them."),
+            "INPUT=ground.laz CELL_SIZE=0.5 MAX_EDGE=0 OUTPUT=dtm.tif OUTPUT_HTML=tin.html",
+            {**self.common_notes(),
+             self.MAX_EDGE: self.tr("0 = ten mean point spacings (at least four cells); "
+                                    "cells in longer triangles are nodata."),
+             self.FILL_GAPS: self.tr("Keeps every triangle, bridging gaps inside the "
+                                     "convex hull with flat facets.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input_params()
