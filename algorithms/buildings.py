@@ -18,6 +18,7 @@ from ..core.io.vector import write_label_polygons
 from ..core.lidar import buildings as core_b
 from ..core.lidar.qa import check_projected
 from .base import GeomaticsAlgorithm
+from .helptext import build_help
 from .terrain import LAS_FILTER
 
 FIELDS = [("id", "int"), ("height_m", "float"), ("area_m2", "float"),
@@ -55,32 +56,19 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
                        "class 6,lidar").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
-            "<p>Extracts buildings from a ground-classified LAS/LAZ cloud: points more "
-            "than the minimum height above a TIN of the ground points are fitted with "
-            "local planes; neighbours whose normals agree within the maximum angle grow "
-            "into roof patches; patches of at least the minimum patch area become "
-            "footprints with height (top of roof − ground at the outline), area, volume, "
-            "storeys (height / 3 m) and roof type (flat / pitched). Trees are rejected "
-            "because their points are not planar.</p>"
-            "<p><b>Example</b>: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 "
-            "OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Point cloud</b> (INPUT): .las/.laz with ground in class 2 (run a ground "
-            "filter first), projected CRS in metres.</li>"
-            "<li><b>Ground classes</b> (GROUND_CLASSES, default <code>2</code>).</li>"
-            "<li><b>Minimum height</b> (MIN_HEIGHT, m, default 2; the spec gives "
-            "1.5–2).</li>"
-            "<li><b>Maximum normal angle</b> (MAX_ANGLE, degrees, default 20).</li>"
-            "<li><b>Minimum roof patch area</b> (MIN_PATCH_AREA, m², default 15).</li>"
-            "<li><b>Minimum building area</b> (MIN_AREA, m², default 15).</li>"
-            "<li><b>Cell size</b> (CELL_SIZE, m, default 0.5): footprint raster.</li>"
-            "<li><b>Footprints</b> (OUTPUT, GeoPackage polygons): id, height_m, area_m2, "
-            "volume_m3, storeys, roof_type, ground_z, roof_z.</li>"
-            "<li><b>Classified cloud</b> (OUTPUT_CLOUD, optional LAS/LAZ): the input with "
-            "roof points set to class 6, every other attribute kept.</li>"
-            "<li><b>Report</b> (OUTPUT_HTML, optional).</li></ul>"
-            "<p>Output numbers: N_BUILDINGS, TOTAL_AREA (m²), TOTAL_VOLUME (m³).</p>")
+        return build_help(self, self.tr(
+            "Extracts buildings from a ground-classified LAS/LAZ cloud: points above the "
+            "ground TIN are fitted with local planes, and neighbours with agreeing normals "
+            "grow into roof patches. Patches large enough become footprints with height, "
+            "area, volume, storeys and roof type; trees are rejected because their points "
+            "are not planar."),
+            "INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg "
+            "OUTPUT_CLOUD=classified.laz",
+            {self.INPUT: self.tr("Ground in class 2 (run a ground filter first), in a "
+                                 "projected CRS (metres)."),
+             self.MIN_HEIGHT: self.tr("The specification gives 1.5–2 m."),
+             self.OUTPUT: self.tr("GeoPackage polygons with height, area, volume, storeys, "
+                                  "roof type, ground and roof heights.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))

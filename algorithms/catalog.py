@@ -13,6 +13,7 @@ from qgis.core import (
 from ..core.lidar import catalog as core_cat
 from ..core.lidar.catalog_report import catalog_report
 from .base import GeomaticsAlgorithm
+from .helptext import build_help
 
 
 class CatalogAlgorithm(GeomaticsAlgorithm):
@@ -55,27 +56,24 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
         return {"idw": self.tr("IDW"), "kriging": self.tr("Kriging"), "tin": self.tr("TIN")}
 
     def shortHelpString(self) -> str:  # noqa: N802
-        return self.tr(
-            "<p>Classifies ground and builds a DTM for every tile of a LiDAR project, each "
-            "tile read with a buffer of points from its neighbours so that results have no "
-            "seams at tile edges; tiles run in parallel on Dask, locally or on a cluster. "
-            "Example: INPUT = a folder of 1 km LAZ tiles, BUFFER = 100 m, CELL_SIZE = 1 m "
-            "gives classified tiles, one DTM GeoTIFF per tile and a VRT mosaic.</p><ul>"
-            "<li><b>Tiles</b> (INPUT): a folder of .las/.laz files, a .vpc virtual point "
-            "cloud, or files separated by ';'. All tiles must share one CRS.</li>"
-            "<li><b>Ground filter</b> (GROUND_FILTER, default the recommended one): 0 keeps "
-            "the classes already in the files.</li>"
-            "<li><b>DTM method</b> (DTM_METHOD, default IDW) and <b>cell size</b> "
-            "(CELL_SIZE, m, default 1).</li>"
-            "<li><b>Buffer</b> (BUFFER, m, default 100): must exceed the filter's reach "
-            "(LSQ tile size × 2, slope radius) and the DTM search distance.</li>"
-            "<li><b>Workers</b> (WORKERS, default 0 = one per core) and <b>Dask scheduler"
-            "</b> (SCHEDULER, e.g. tcp://host:8786; empty = a local cluster).</li>"
-            "<li><b>Output folder</b> (OUTPUT_FOLDER; must not hold the input tiles): "
-            "&lt;tile&gt;_classified, &lt;tile&gt;_dtm.tif, dtm.vrt, optionally one "
-            "Cloud-Optimized GeoTIFF (COG), and the HTML report (OUTPUT_HTML) with a map "
-            "of the tiles by status and time and points per second per worker. A rerun "
-            "skips finished tiles; cancel keeps finished tiles.</li></ul>")
+        return build_help(self, self.tr(
+            "Classifies ground and builds a DTM for every tile of a LiDAR project, each "
+            "tile read with a buffer of its neighbours' points so that results have no "
+            "seams. Tiles run in parallel on Dask, locally or on a cluster; a rerun skips "
+            "finished tiles."),
+            "INPUT=/data/tiles GROUND_FILTER=2 BUFFER=100 CELL_SIZE=1 "
+            "OUTPUT_FOLDER=/data/out OUTPUT_HTML=catalog.html",
+            {self.INPUT: self.tr("All tiles must share one CRS."),
+             self.GROUND_FILTER: self.tr("The first choice keeps the classes already in "
+                                         "the files."),
+             self.BUFFER: self.tr("Must exceed the filter's reach (twice the LSQ tile size, "
+                                  "the slope radius) and the DTM search distance."),
+             self.SCHEDULER: self.tr("e.g. tcp://host:8786."),
+             self.OUTPUT_FOLDER: self.tr("Must not hold the input tiles; receives the "
+                                         "classified tiles, one DTM per tile and a VRT "
+                                         "mosaic."),
+             self.OUTPUT_HTML: self.tr("A map of the tiles by status, and time and points "
+                                       "per second per worker.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add(QgsProcessingParameterString(

@@ -23,6 +23,7 @@ from ..core.terrain import change as core_change
 from ..core.terrain.grid import grid_from_extent, grid_like
 from ..core.terrain.tin import tin_grid
 from .base import GeomaticsAlgorithm
+from .helptext import build_help
 
 EPOCH_FILTER = ("Point clouds or rasters (*.las *.laz *.LAS *.LAZ *.tif *.tiff *.TIF "
                 "*.TIFF)")
@@ -64,29 +65,22 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
                        "lidar,dtm,dsm").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
-            "<p>Subtracts an earlier surface from a later one (two DTM/DSM rasters on one "
-            "grid, or two LAS/LAZ clouds gridded by TIN on a common grid) and keeps the "
-            "change beyond the level of detection LoD95 = 1.96·√(σ₁² + σ₂²), σ being "
-            "each epoch's vertical accuracy (e.g. the RMSE of the DTM accuracy tool). "
-            "Significant cells form cut and fill polygons with area, mean change and "
-            "volume.</p>"
-            "<p><b>Example</b>: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 "
-            "SIGMA2=0.06.</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Before</b> (INPUT) and <b>After</b> (INPUT_AFTER): two GeoTIFFs on "
-            "the same grid, or two LAS/LAZ clouds in one CRS.</li>"
-            "<li><b>σ₁, σ₂</b> (SIGMA1, SIGMA2, m, default 0.1): vertical accuracy of "
-            "each epoch.</li>"
-            "<li><b>Classes</b> (CLASSES, clouds only, default <code>2</code>).</li>"
-            "<li><b>Cell size</b> (CELL_SIZE, m, clouds only, default 1).</li>"
-            "<li><b>Minimum area</b> (MIN_AREA, m², default 0 = eight cells): smaller "
-            "regions are dropped (noise alone exceeds the LoD in 5 % of cells).</li>"
-            "<li><b>Difference</b> (OUTPUT): GeoTIFF after − before (m).</li>"
-            "<li><b>Change polygons</b> (OUTPUT_POLYGONS, GeoPackage): id, kind (cut / "
-            "fill), area_m2, mean_change_m, volume_m3.</li>"
-            "<li><b>Report</b> (OUTPUT_HTML, optional).</li></ul>"
-            "<p>Output numbers: LOD, FILL_VOLUME, CUT_VOLUME (m³), N_REGIONS.</p>")
+        return build_help(self, self.tr(
+            "Subtracts an earlier surface from a later one (two rasters on one grid, or two "
+            "LAS/LAZ clouds gridded by TIN) and keeps the change beyond the level of "
+            "detection LoD95 = 1.96·√(σ₁² + σ₂²). Significant cells form cut and fill "
+            "polygons with area, mean change and volume."),
+            "INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06 "
+            "OUTPUT=change.tif OUTPUT_POLYGONS=change.gpkg",
+            {self.INPUT: self.tr("A GeoTIFF, or a LAS/LAZ cloud in the same CRS as the "
+                                 "other epoch."),
+             self.SIGMA1: self.tr("The vertical accuracy of the epoch, e.g. the RMSE of "
+                                  "the DTM accuracy tool."),
+             self.MIN_AREA: self.tr("Smaller regions are dropped: noise alone exceeds the "
+                                    "LoD in 5 % of cells."),
+             self.OUTPUT: self.tr("GeoTIFF of after − before (m)."),
+             self.OUTPUT_POLYGONS: self.tr("GeoPackage with kind (cut / fill), area, mean "
+                                           "change and volume.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         for name, label in ((self.INPUT, self.tr("Before (raster or point cloud)")),

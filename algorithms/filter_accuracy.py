@@ -11,6 +11,7 @@ from ..core.io.las import write_las_like
 from ..core.lidar import accuracy as core_fa
 from ..core.progress import Cancelled
 from .base import GeomaticsAlgorithm
+from .helptext import build_help
 
 LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
 LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
@@ -53,34 +54,22 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
                        "isprs,reference,confusion matrix").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
-            "<p>Compares a filtered point cloud with reference labels, with the measures of "
-            "the ISPRS filter test (Sithole &amp; Vosselman 2004): the cross matrix a "
-            "(ground kept), b (ground rejected), c (object accepted), d (object rejected), "
-            "Type I = b/(a+b), Type II = c/(c+d), total = (b+c)/n and Cohen's kappa.</p>"
-            "<p><b>Example</b>: INPUT=classified.laz REFERENCE=samp54.laz (the ISPRS "
-            "reference sample, class 2 = ground) OUTPUT_HTML=accuracy.html.</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Filtered point cloud</b> (INPUT, LAS/LAZ).</li>"
-            "<li><b>Class dimension of the filtered cloud</b> (FIELD, default "
-            "classification) and its <b>ground classes</b> (GROUND_CLASSES, default 2; a "
-            "list such as 2,8 is accepted). Every other class (1, 7 noise, 0...) counts as "
-            "object.</li>"
-            "<li><b>Reference point cloud</b> (REFERENCE, optional): the same points in the "
-            "same order (checked: equal count and coordinates). When empty, the reference "
-            "labels are read from another dimension of INPUT.</li>"
-            "<li><b>Reference class dimension</b> (REFERENCE_FIELD, default "
-            "classification; e.g. user_data or an extra dimension when there is no "
-            "reference cloud) and its <b>ground classes</b> (REFERENCE_GROUND_CLASSES, "
-            "default 2).</li>"
-            "<li><b>Report</b> (OUTPUT_HTML, optional): the matrix, the errors, and the "
-            "reference labels of every filtered class.</li>"
-            "<li><b>Per-point error layer</b> (ERROR_OUTPUT, optional LAS/LAZ): a copy of "
-            "INPUT, every attribute unchanged except <i>user_data</i> = 0 correct, 1 Type I "
-            "(ground rejected), 2 Type II (object accepted); style the point cloud layer "
-            "by user_data to map where the filter fails.</li></ul>"
-            "<p>Outputs A, B, C, D, N, TYPE1, TYPE2, TOTAL and KAPPA are numbers for the "
-            "graphical modeler.</p>")
+        return build_help(self, self.tr(
+            "Compares a filtered point cloud with reference labels using the measures of "
+            "the ISPRS filter test (Sithole &amp; Vosselman 2004): the cross matrix, "
+            "Type I = b/(a+b), Type II = c/(c+d), total error and Cohen's kappa. An "
+            "optional per-point error cloud shows where the filter fails."),
+            "INPUT=classified.laz REFERENCE=samp54.laz OUTPUT_HTML=accuracy.html "
+            "ERROR_OUTPUT=errors.laz",
+            {self.GROUND_CLASSES: self.tr("A list such as 2,8 is accepted; every other "
+                                          "class counts as an object."),
+             self.REFERENCE: self.tr("Checked: equal count and coordinates. When empty, "
+                                     "the reference labels are read from another dimension "
+                                     "of the filtered cloud."),
+             self.REFERENCE_FIELD: self.tr("E.g. user_data or an extra dimension when "
+                                           "there is no reference cloud."),
+             self.ERROR_OUTPUT: self.tr("A copy of the filtered cloud; style it by "
+                                        "user_data to map the errors.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_las_input(self.INPUT, self.tr("Filtered point cloud (LAS/LAZ)"))

@@ -15,6 +15,7 @@ from ..core.io.points import parse_classes
 from ..core.io.raster import write_geotiff
 from ..core.lidar import qa as core_qa
 from .base import GeomaticsAlgorithm
+from .helptext import build_help
 
 BANDS = ("density of all returns (pts/m²)", "density of last returns (pts/m²)",
          "density of ground points (pts/m²)", "gap (1 = returns but no ground)")
@@ -45,28 +46,18 @@ class LidarQaAlgorithm(GeomaticsAlgorithm):
                        "returns,advice,lidar").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
-            "<p>Checks a LAS/LAZ cloud before processing: density rasters of all returns, "
-            "last returns and ground points, cells with returns but no ground (gaps), "
-            "histograms of returns and classes, duplicate points, the share of noise "
-            "(classes 7, 18) and the scan-angle range. It then states which settings the "
-            "density supports: the ground filter window (1–2 pts/m² → 2 m), the DTM cell "
-            "size, LOD1 only below 1 pt/m² (about 0.6 pts/m² in the ELiT study), and the "
-            "radius and tile of our slope-based and LSQ filters.</p>"
-            "<p><b>Example</b>: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif "
-            "OUTPUT_HTML=qa.html.</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Point cloud</b> (INPUT): .las/.laz in a projected CRS (metres); a "
-            "cloud in degrees is refused.</li>"
-            "<li><b>Cell size</b> (CELL_SIZE, m, default 5, &gt; 0): cell of the density "
-            "rasters.</li>"
-            "<li><b>Ground classes</b> (GROUND_CLASSES, default <code>2</code>).</li>"
-            "<li><b>Density rasters</b> (OUTPUT): GeoTIFF with four bands: all returns, "
-            "last returns, ground (pts/m²), gap (1/0).</li>"
-            "<li><b>Report</b> (OUTPUT_HTML, optional): HTML report with maps and "
-            "advice.</li></ul>"
-            "<p>Output numbers: DENSITY, GROUND_DENSITY (pts/m²), GAP_SHARE, "
-            "DUPLICATES, NOISE_SHARE, GROUND_WINDOW (m), DTM_CELL (m).</p>")
+        return build_help(self, self.tr(
+            "Checks a LAS/LAZ cloud before processing: density of all, last and ground "
+            "returns, gaps without ground, duplicates, noise share and scan angles. It then "
+            "states which settings the density supports: ground filter window, DTM cell "
+            "size, LOD1 only below 1 pt/m², and the radius and tile of the slope-based and "
+            "LSQ filters."),
+            "INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html",
+            {self.INPUT: self.tr("In a projected CRS (metres); a cloud in degrees is "
+                                 "refused."),
+             self.OUTPUT: self.tr("GeoTIFF with four bands: all returns, last returns, "
+                                  "ground (pts/m²) and gap (1/0)."),
+             self.OUTPUT_HTML: self.tr("Maps, histograms and the advice.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))

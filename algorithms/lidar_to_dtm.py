@@ -48,6 +48,7 @@ from ..core.terrain import report as terrain_report
 from ..core.terrain.grid import grid_from_points
 from .base import GeomaticsAlgorithm
 from .dtm_accuracy import NUMBERS, DtmAccuracyAlgorithm
+from .helptext import build_help
 from .terrain import _check_tif, _crs_string, _GridAlgorithm
 
 LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
@@ -107,34 +108,22 @@ class LidarToDtmAlgorithm(GeomaticsAlgorithm):
                        "chain,all-or-nothing").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
-            "<p>Classifies the ground of a LiDAR point cloud, interpolates a DTM from the "
-            "ground points and measures its accuracy against check points, in one step. "
-            "It writes all its outputs or none: when any step fails or is cancelled, no "
-            "classified cloud, DTM or report is left behind.</p>"
-            "<p><b>Example</b>: INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 "
-            "OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html → the "
-            "classified cloud, the DTM and the RMSE.</p>"
-            "<p>The steps are the recommended ground filter (the improved least-squares "
-            "filter where the recommended one is not installed), the IDW DTM (power 3, 12 "
-            "neighbours by default: the seed paper's best setting) and the DTM accuracy; "
-            "the results equal those of the three algorithms run one after another. "
-            "Before anything is written the CRS, the check points (no duplicates, inside "
-            "the cloud's extent) and every output path are checked. The graphical model "
-            "of the same name is its editable counterpart, without this guarantee.</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Point cloud</b>: .las or .laz in a projected CRS (metres).</li>"
-            "<li><b>Remove low outliers first</b> (default yes), with its search cell "
-            "(m, default 5) and depth (m, default 1).</li>"
-            "<li><b>DTM cell size</b> (m, default 1), <b>IDW power</b> (default 3), "
-            "<b>neighbours</b> (default 12), <b>fill data gaps</b> (default no) and a "
-            "<b>CRS</b> for a cloud without a CRS record.</li>"
-            "<li><b>Check points</b>: a point layer (heights from a field or the geometry "
-            "Z) or a CSV/TXT file (id, x, y, z) with its CRS; reprojection of x, y on "
-            "request; bilinear (default) or nearest-cell sampling.</li>"
-            "<li><b>Outputs</b>: classified cloud, DTM (GeoTIFF), check-point residuals "
-            "and the DTM accuracy report; optional ground filter report and DTM "
-            "report.</li></ul>")
+        return build_help(self, self.tr(
+            "Classifies the ground of a LiDAR point cloud, interpolates an IDW DTM from "
+            "the ground points and measures its accuracy against check points, in one "
+            "step. It writes all its outputs or none, and its results equal those of the "
+            "three algorithms run one after another."),
+            "INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz "
+            "OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html",
+            {self.INPUT: self.tr("In a projected CRS (metres)."),
+             self.POWER: self.tr("Power 3 with 12 neighbours is the seed paper's best "
+                                 "setting."),
+             self.CHECKPOINTS: self.tr("Give the layer or the file; duplicates and points "
+                                       "outside the cloud's extent are refused before "
+                                       "anything is written."),
+             self.OUTPUT: self.tr("Classified by the recommended ground filter (the "
+                                  "improved least-squares filter where it is not "
+                                  "installed).")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_las_input(self.INPUT)

@@ -11,6 +11,7 @@ from ..core.errors import InputError
 from ..core.lidar import lsq as core_lsq
 from ..core.lidar.pipeline import SelectionOptions, classify_file
 from ..core.progress import Monitor
+from .helptext import build_help
 from .lidar_common import LidarFilterMixin
 
 LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
@@ -62,62 +63,37 @@ class LsqGroundFilterAlgorithm(LidarFilterMixin):
                        "polynomial,tiles,las,laz,isprs").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
-            "<p>Separates bare-earth points from buildings and vegetation in an airborne "
+        return build_help(self, self.tr(
+            "Separates bare-earth points from buildings and vegetation in an airborne "
             "LiDAR cloud by fitting least-squares polynomial surfaces per square tile "
-            "(Damascus Univ. J. Eng. Sci. 29(2), 2013). In every tile the surface is "
-            "fitted, points more than THRESHOLD above it are dropped, and the fit is "
-            "repeated until the minimum, maximum, mean and standard deviation of the kept "
-            "heights stop changing (TOLERANCE) or MAX_ITERATIONS; then every point with "
-            "z ≤ ẑ + THRESHOLD is ground. Any classification already in the file is "
-            "ignored and replaced.</p>"
-            "<p><b>Output classes</b> (ASPRS): 2 ground, 1 other (buildings, vegetation), "
-            "7 low noise (pre-filter), 0 never classified (only with SPARSE_TILES = leave "
-            "unclassified). Every other attribute of every point, the point format, "
-            "scales, offsets, VLRs and CRS are copied unchanged.</p>"
-            "<p><b>Example</b>: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 "
-            "OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Point cloud</b> (INPUT): .las or .laz file, projected CRS in metres.</li>"
-            "<li><b>Order</b> (ORDER, default 2): 1 = plane z = b0 + b1·x + b2·y; 2 = "
-            "quadratic z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (better on every "
-            "sample of the paper).</li>"
-            "<li><b>Tile size</b> (TILE_SIZE, m, default 50): larger than the largest "
-            "building, so that every tile holds ground (paper: 100 m for large buildings, "
-            "50 m for small ones). Tiles are square, anchored at the minimum x, y.</li>"
-            "<li><b>Threshold</b> (THRESHOLD, m, default 0.5): 0.5–1.0 m, larger on "
-            "steeper terrain.</li>"
-            "<li><b>Mode</b> (MODE, default Faithful): Faithful = the paper. Improved = "
-            "ours, beyond the paper: coarse-to-fine tiles (2, 1, ½, ¼ × TILE_SIZE) fitted "
-            "on overlapping windows, each level started from the previous level's ground, "
-            "and a threshold that grows with the surface slope (by 2.5 m per unit gradient, "
-            "at most 1 m). On the ISPRS samples it lowers the mean total error from 8.9 % "
-            "(paper) to about 4.9 % with one parameter set; it costs about 15 times the "
-            "time and twice the memory of the faithful mode (about 2 M points/s and "
-            "100 bytes per point in faithful mode).</li>"
-            "<li><b>Remove low outliers first</b> (NOISE, default yes): points far below "
-            "their neighbours become class 7 and take no part in the fit "
-            "(NOISE_RADIUS, m, default 5: neighbourhood cell; NOISE_THRESHOLD, m, "
-            "default 1: depth below the neighbours).</li>"
-            "<li><b>Maximum iterations</b> (MAX_ITERATIONS, default 5, the paper's "
-            "tables) and <b>stop tolerance</b> (TOLERANCE, m, default 0.01).</li>"
-            "<li><b>Random fitting subset per tile</b> (SUBSET_SIZE, points, default 0 = "
-            "all; the paper used 5000) and its <b>seed</b> (SEED). All points are "
-            "classified.</li>"
-            "<li><b>Minimum points per tile</b> (MIN_POINTS, default 0 = 3 × the number of "
-            "coefficients) and <b>under-populated tiles</b> (SPARSE_TILES): borrow the "
-            "nearest fitted tile's surface (default) or leave their points unclassified "
-            "(class 0).</li>"
-            "<li><b>Rejection</b> (REJECTION): re-weighted (default; a point dropped earlier "
-            "may return when the surface moves) or cumulative (dropped for good).</li>"
-            "<li><b>Outputs</b>: classified cloud (OUTPUT, .laz or .las), optional "
-            "ground-only cloud (GROUND_OUTPUT), optional HTML report (OUTPUT_HTML) with the "
-            "parameters, class counts, the per-iteration statistics of the paper's "
-            "Tables 1–2, per-tile statistics, time and points per second; optional CSV "
-            "of every tile's iterations and coefficients (TILE_STATS); numbers "
-            "N_GROUND, N_OTHER, N_NOISE, N_UNCLASSIFIED, N_TILES, POINTS_PER_SECOND.</li>"
-            "</ul><p>Measure the result against reference labels with <i>Ground filter "
-            "accuracy</i>. Nothing is written when the run fails or is cancelled.</p>")
+            "(Damascus Univ. J. Eng. Sci. 29(2), 2013). Points more than the threshold "
+            "above the surface are dropped and the fit repeated until the height "
+            "statistics settle; the rest become ground (class 2), the others class 1."),
+            "INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz "
+            "GROUND_OUTPUT=ground.laz OUTPUT_HTML=lsq.html",
+            {self.ORDER: self.tr("1 = plane, 2 = quadratic surface (better on every sample "
+                                 "of the paper)."),
+             self.TILE_SIZE: self.tr("Larger than the largest building, so that every tile "
+                                     "holds ground (the paper: 100 m for large buildings, "
+                                     "50 m for small ones)."),
+             self.THRESHOLD: self.tr("0.5–1.0 m, larger on steeper terrain."),
+             self.MODE: self.tr("Faithful follows the paper. Improved (this toolbox's "
+                                "extension) fits coarse-to-fine overlapping tiles with a "
+                                "slope-dependent threshold: mean total error on the ISPRS "
+                                "samples 8.9 % → about 4.9 %, at about 15 times the time."),
+             self.NOISE: self.tr("Points far below their neighbours (multipath) get class "
+                                 "7 and take no part in the fit."),
+             self.SUBSET_SIZE: self.tr("The paper used 5000; every point is still "
+                                       "classified."),
+             self.SPARSE_TILES: self.tr("Tiles with too few points borrow the nearest "
+                                        "fitted surface, or their points stay class 0."),
+             self.REJECTION: self.tr("Re-weighted: a dropped point may come back when the "
+                                     "surface moves; cumulative: dropped for good."),
+             self.OUTPUT: self.tr("Every attribute, point format, scales, offsets, VLRs "
+                                  "and CRS are copied unchanged; any earlier "
+                                  "classification is replaced."),
+             self.OUTPUT_HTML: self.tr("Class counts, the per-iteration statistics of the "
+                                       "paper's tables, a tile map and the speed.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))

@@ -9,13 +9,13 @@ from qgis.core import (
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterString,
 )
-from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.lidar import pipeline as core_sp
 from ..core.lidar import slope as core_sf
 from ..core.lidar.pipeline import SelectionOptions, classify_file
 from ..core.lidar.sweep import sweep_file
 from ..core.progress import Monitor
+from .helptext import build_help
 from .lidar_common import LidarFilterMixin
 
 LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
@@ -40,6 +40,23 @@ class _SlopeCommon(LidarFilterMixin):
 
     def add_input(self):
         self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))
+
+    def common_notes(self):
+        """Help notes of the shared parameters (see :func:`.helptext.build_help`)."""
+        return {
+            self.RETURNS: self.tr("All returns: every return is classified and is a "
+                                  "neighbour (the forest study). Last returns only: first "
+                                  "and intermediate returns get class 1; files without "
+                                  "return numbers count every point as a last return."),
+            self.NOISE: self.tr("Points far below their neighbours (multipath) get class 7 "
+                                "and take no part: one stray low point would reject every "
+                                "ground point around it."),
+            self.MODE: self.tr("Terrain-adaptive (this toolbox's extension) applies the "
+                               "rule to heights above a smooth low terrain trend, so "
+                               "natural slopes steeper than θ are kept (ISPRS samp11: "
+                               "total error 21.0 % → 16.4 %); use a lower θ, about "
+                               "30–35°, in this mode."),
+        }
 
     def add_selection_params(self):
         self.add(QgsProcessingParameterEnum(
@@ -85,26 +102,6 @@ class _SlopeCommon(LidarFilterMixin):
                     trend_cell=cell, trend_window=window)
 
 
-_SELECTION_HELP = QT_TRANSLATE_NOOP(
-    "GeomaticsAlgorithm",
-    "<li><b>Returns filtered</b> (RETURNS, default 0 = all): 0 all returns are "
-    "classified and serve as neighbours (the forest study); 1 last returns only: only "
-    "last (or single) returns are classified and only they may reject others; first "
-    "and intermediate returns of multi-return pulses get class 1. Files without return "
-    "numbers (e.g. the ISPRS samples) count every point as a last return.</li>"
-    "<li><b>Remove low outliers first</b> (NOISE, default yes): points far below their "
-    "neighbours (multipath) get class 7 and take no part in the filter — one stray low "
-    "point would reject every ground point within r. Advanced: NOISE_RADIUS (m, "
-    "default 5) and NOISE_THRESHOLD (m, default 1).</li>"
-    "<li><b>Mode</b> (MODE, default 0): 0 exact Vosselman rule; 1 terrain-adaptive "
-    "(<i>this toolbox's extension</i>): the rule is applied to heights above a smooth "
-    "low terrain trend (minimum grid of TREND_CELL m, opening and mean filter of "
-    "TREND_WINDOW m, defaults 10 and 60), so natural slopes steeper than θ are not "
-    "rejected (ISPRS samp11, steep: total error 21.0 % → 16.4 % at the defaults). "
-    "Because the terrain slope is removed first, lower θ (about 30–35°) usually works "
-    "best in this mode.</li>")
-
-
 class SlopeGroundFilterAlgorithm(_SlopeCommon):
     """Vosselman (2000) slope-based ground filter, exact."""
 
@@ -127,42 +124,26 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
                        "slope,point cloud").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return (self.tr(
-            "<p>Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground "
-            "(class 1) with Vosselman's (2000) slope-based filter: a point is non-ground "
-            "when some neighbour at horizontal distance 0 &lt; d ≤ r lies more than "
-            "d·tan θ + h below it. Single pass, neighbours from the whole cloud, exact "
-            "(labels identical to a brute-force check of every pair) and fast (about a "
-            "million points per second on one core at r = 3 m). Low outliers get class 7; "
-            "every other attribute is copied unchanged. The input classification is "
-            "ignored.</p>"
-            "<p><b>Example</b>: the forest study's setting RADIUS=3 SLOPE=44 "
-            "HEIGHT_TOLERANCE=0 allows a rise of 2.90 m at 3 m. Tune r and θ to your data "
-            "with <i>Slope filter threshold sweep</i>.</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Point cloud</b> (INPUT): .las or .laz file in a projected CRS "
-            "(metres).</li>"
-            "<li><b>Radius r</b> (RADIUS, m, default 10, &gt; 0): neighbourhood radius. "
-            "An object is removed only within r of its edge, so r must exceed half the "
-            "width of the largest building to remove; larger r costs more time.</li>"
-            "<li><b>Slope threshold θ</b> (SLOPE, degrees, default 40, strictly between 0 "
-            "and 90): the steepest terrain kept. Allowed rise at 3 m: 2.52 m (40°), "
-            "2.90 m (44°), 3.33 m (48°), 3.84 m (52°), 4.45 m (56°), 5.20 m (60°).</li>"
-            "<li><b>Height tolerance h</b> (HEIGHT_TOLERANCE, m, default 0.2, ≥ 0): extra "
-            "rise allowed for every pair, absorbs ranging noise between close points; 0 "
-            "is the rule as published.</li>"
-           ) + self.tr(_SELECTION_HELP) + self.tr(
-            "<li><b>Keep existing noise classes</b> (KEEP_NOISE, default yes, advanced): "
-            "points already classified 7 or 18 keep their class and take no part.</li>"
-            "<li><b>Classified point cloud</b> (OUTPUT, .laz/.las): every point, classes "
-            "2/1/7.</li>"
-            "<li><b>Ground points</b> (GROUND_OUTPUT, optional): only the ground points.</li>"
-            "<li><b>Report</b> (OUTPUT_HTML, optional): counts, settings, allowed-rise "
-            "table, speed.</li></ul>"
-            "<p>Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE, "
-            "POINTS_PER_SECOND (filter step only).</p>"
-            "<p>Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry "
-            "data. IAPRS XXXIII-B3, 935–942.</p>"))
+        return build_help(self, self.tr(
+            "Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class "
+            "1) with Vosselman's (2000) slope-based filter: a point is non-ground when a "
+            "neighbour within the radius r lies more than d·tan θ + h below it. The filter "
+            "is exact and fast (about a million points per second at r = 3 m); tune r and "
+            "θ to your data with the slope filter threshold sweep."),
+            "INPUT=cloud.laz RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 OUTPUT=classified.laz "
+            "OUTPUT_HTML=slope.html",
+            {**self.common_notes(),
+             self.RADIUS: self.tr("Must exceed half the width of the largest building to "
+                                  "remove; a larger radius costs more time."),
+             self.SLOPE: self.tr("The steepest terrain kept, between 0 and 90°; the allowed "
+                                 "rise at 3 m is 2.52 m at 40°, 2.90 m at 44° and 3.84 m at "
+                                 "52°."),
+             self.HEIGHT_TOLERANCE: self.tr("Extra rise allowed for every pair, absorbs "
+                                            "ranging noise; 0 is the published rule."),
+             self.KEEP_NOISE: self.tr("Points already in class 7 or 18 keep their class "
+                                      "and take no part."),
+             self.OUTPUT: self.tr("Every point with classes 2, 1 and 7; every other "
+                                  "attribute is copied unchanged.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input()
@@ -249,40 +230,23 @@ class SlopeThresholdSweepAlgorithm(_SlopeCommon):
                        "type I,type II,kappa,isprs").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return (self.tr(
-            "<p>Runs the slope-based ground filter for every combination of slope "
-            "thresholds θ, radii r and height tolerances h and reports, against reference "
-            "labels, Type I error (ground rejected), Type II error (objects accepted as "
-            "ground — the forest study's \"error\" column, which alone always favours low "
-            "θ), total error and Cohen's kappa (Sithole &amp; Vosselman 2004), then picks "
-            "the best setting. One exact neighbourhood pass per radius and tolerance: every "
-            "threshold then costs a single comparison per point.</p>"
-            "<p><b>Example</b>: the forest study: SLOPES=40:60:4 RADII=3 "
-            "HEIGHT_TOLERANCES=0. ISPRS reference samples: INPUT=samp31.laz (its own "
-            "classification is the reference).</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Point cloud</b> (INPUT): LAS/LAZ. Its classification is never used to "
-            "filter.</li>"
-            "<li><b>Reference cloud</b> (REFERENCE, optional): a labelled copy of the same "
-            "points in the same order; empty = the input's own classification (e.g. the "
-            "ISPRS samples).</li>"
-            "<li><b>Ground classes</b> (GROUND_CLASSES, default \"2\"): reference classes "
-            "counted as ground; all others are objects.</li>"
-            "<li><b>Slope thresholds</b> (SLOPES, degrees, default "
-            "\"30,35,40,44,48,52,56,60\"): a list or start:stop:step.</li>"
-            "<li><b>Radii</b> (RADII, m, default \"10\") and <b>height tolerances</b> "
-            "(HEIGHT_TOLERANCES, m, default \"0.2\"): lists; each value is one pass.</li>"
-            "<li><b>Best by</b> (METRIC, default 0): 0 lowest total error, 1 highest kappa, "
-            "2 lowest Type I, 3 lowest Type II.</li>"
-           ) + self.tr(_SELECTION_HELP) + self.tr(
-            "<li><b>Sweep table</b> (OUTPUT_CSV): one row per setting: radius_m, "
-            "slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, "
-            "type1_pct, type2_pct, total_pct, kappa_pct.</li>"
-            "<li><b>Report</b> (OUTPUT_HTML): the table, the best setting and a chart of "
-            "the errors against θ.</li>"
-            "<li><b>Classified with the best setting</b> (OUTPUT, optional LAS/LAZ).</li>"
-            "</ul><p>Output numbers: BEST_RADIUS, BEST_SLOPE, BEST_HEIGHT_TOLERANCE, "
-            "BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.</p>"))
+        return build_help(self, self.tr(
+            "Runs the slope-based ground filter for every combination of slope thresholds "
+            "θ, radii r and height tolerances h, and measures each against reference "
+            "labels: Type I and Type II errors, total error and Cohen's kappa (Sithole "
+            "&amp; Vosselman 2004). It then picks the best setting, at the cost of one "
+            "neighbourhood pass per radius and tolerance."),
+            "INPUT=samp31.laz SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0 "
+            "OUTPUT_CSV=sweep.csv OUTPUT_HTML=sweep.html",
+            {**self.common_notes(),
+             self.INPUT: self.tr("Its classification is never used to filter."),
+             self.REFERENCE: self.tr("A labelled copy of the same points in the same "
+                                     "order, e.g. the ISPRS reference samples."),
+             self.GROUND_CLASSES: self.tr("Every other class counts as an object."),
+             self.SLOPES: self.tr("A list such as 40, 44, 48 or start:stop:step."),
+             self.RADII: self.tr("Each value is one neighbourhood pass."),
+             self.OUTPUT_CSV: self.tr("One row per setting with the cross matrix and the "
+                                      "errors in percent.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input()

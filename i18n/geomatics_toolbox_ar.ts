@@ -123,10 +123,6 @@
             <translation>مبانٍ,مساقط,أسطح,lod1,استخراج,ارتفاع,حجم,طوابق,الصنف 6,ليدار</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Extracts buildings from a ground-classified LAS/LAZ cloud: points more than the minimum height above a TIN of the ground points are fitted with local planes; neighbours whose normals agree within the maximum angle grow into roof patches; patches of at least the minimum patch area become footprints with height (top of roof − ground at the outline), area, volume, storeys (height / 3 m) and roof type (flat / pitched). Trees are rejected because their points are not planar.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz with ground in class 2 (run a ground filter first), projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum height&lt;/b&gt; (MIN_HEIGHT, m, default 2; the spec gives 1.5–2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum normal angle&lt;/b&gt; (MAX_ANGLE, degrees, default 20).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum roof patch area&lt;/b&gt; (MIN_PATCH_AREA, m², default 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum building area&lt;/b&gt; (MIN_AREA, m², default 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 0.5): footprint raster.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Footprints&lt;/b&gt; (OUTPUT, GeoPackage polygons): id, height_m, area_m2, volume_m3, storeys, roof_type, ground_z, roof_z.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified cloud&lt;/b&gt; (OUTPUT_CLOUD, optional LAS/LAZ): the input with roof points set to class 6, every other attribute kept.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_BUILDINGS, TOTAL_AREA (m²), TOTAL_VOLUME (m³).&lt;/p&gt;</source>
-            <translation>&lt;p&gt;يستخرج المباني من سحابة LAS/LAZ مصنّفة الأرض: تُطابَق النقاط التي تعلو نموذج TIN لنقاط الأرض بأكثر من الارتفاع الأدنى بمستويات محلية؛ وتنمو النقاط المتجاورة التي تتفق نواظمها ضمن الزاوية القصوى إلى رقع أسطح؛ والرقع التي تبلغ المساحة الدنيا تصبح مساقط مع الارتفاع (أعلى السطح − الأرض عند المحيط) والمساحة والحجم والطوابق (الارتفاع / 3 م) ونوع السطح (مسطّح / مائل). تُستبعد الأشجار لأن نقاطها غير مستوية.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف ‎.las/.laz فيه الأرض في الصنف 2 (شغّل مرشّح أرض أولاً)، بنظام إسقاط مستوٍ بالأمتار.&lt;/li&gt;&lt;li&gt;&lt;b&gt;أصناف الأرض&lt;/b&gt; (GROUND_CLASSES، الافتراضي &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الارتفاع الأدنى&lt;/b&gt; (MIN_HEIGHT، م، الافتراضي 2؛ تعطي المواصفة 1.5–2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أقصى زاوية للنواظم&lt;/b&gt; (MAX_ANGLE، درجة، الافتراضي 20).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى مساحة لرقعة السطح&lt;/b&gt; (MIN_PATCH_AREA، م²، الافتراضي 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى مساحة للمبنى&lt;/b&gt; (MIN_AREA، م²، الافتراضي 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 0.5): شبكة المساقط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;المساقط&lt;/b&gt; (OUTPUT، مضلعات GeoPackage): id وheight_m وarea_m2 وvolume_m3 وstoreys وroof_type وground_z وroof_z.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المصنّفة&lt;/b&gt; (OUTPUT_CLOUD، LAS/LAZ اختياري): المدخل مع وضع نقاط الأسطح في الصنف 6 والحفاظ على كل السمات الأخرى.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;الأعداد الناتجة: N_BUILDINGS وTOTAL_AREA (م²) وTOTAL_VOLUME (م³).&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Point cloud (LAS/LAZ)</source>
             <translation>سحابة النقاط (LAS/LAZ)</translation>
         </message>
@@ -170,6 +166,22 @@
             <source>Building footprints report</source>
             <translation>تقرير مساقط المباني</translation>
         </message>
+        <message>
+            <source>Extracts buildings from a ground-classified LAS/LAZ cloud: points above the ground TIN are fitted with local planes, and neighbours with agreeing normals grow into roof patches. Patches large enough become footprints with height, area, volume, storeys and roof type; trees are rejected because their points are not planar.</source>
+            <translation>يستخرج المباني من سحابة LAS/LAZ مصنّفة الأرض: تُوفَّق مستويات محلية للنقاط الواقعة فوق TIN الأرض، وتنمو الجيران ذات المتجهات العمودية المتوافقة إلى رقع أسطح. تصبح الرقع الكبيرة بما يكفي مساقط مبانٍ بارتفاعها ومساحتها وحجمها وعدد طوابقها ونوع سقفها؛ وتُرفض الأشجار لأن نقاطها غير مستوية.</translation>
+        </message>
+        <message>
+            <source>Ground in class 2 (run a ground filter first), in a projected CRS (metres).</source>
+            <translation>الأرض في الفئة 2 (شغّل مرشّح أرض أولًا)، بنظام إحداثيات مُسقَط (بالأمتار).</translation>
+        </message>
+        <message>
+            <source>The specification gives 1.5–2 m.</source>
+            <translation>تحدّد المواصفة 1.5–2 m.</translation>
+        </message>
+        <message>
+            <source>GeoPackage polygons with height, area, volume, storeys, roof type, ground and roof heights.</source>
+            <translation>مضلعات GeoPackage بالارتفاع والمساحة والحجم وعدد الطوابق ونوع السقف وارتفاعَي الأرض والسقف.</translation>
+        </message>
     </context>
     <context>
         <name>CatalogAlgorithm</name>
@@ -212,10 +224,6 @@
         <message>
             <source>TIN</source>
             <translation>TIN</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Classifies ground and builds a DTM for every tile of a LiDAR project, each tile read with a buffer of points from its neighbours so that results have no seams at tile edges; tiles run in parallel on Dask, locally or on a cluster. Example: INPUT = a folder of 1 km LAZ tiles, BUFFER = 100 m, CELL_SIZE = 1 m gives classified tiles, one DTM GeoTIFF per tile and a VRT mosaic.&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Tiles&lt;/b&gt; (INPUT): a folder of .las/.laz files, a .vpc virtual point cloud, or files separated by ';'. All tiles must share one CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground filter&lt;/b&gt; (GROUND_FILTER, default the recommended one): 0 keeps the classes already in the files.&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM method&lt;/b&gt; (DTM_METHOD, default IDW) and &lt;b&gt;cell size&lt;/b&gt; (CELL_SIZE, m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Buffer&lt;/b&gt; (BUFFER, m, default 100): must exceed the filter's reach (LSQ tile size × 2, slope radius) and the DTM search distance.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Workers&lt;/b&gt; (WORKERS, default 0 = one per core) and &lt;b&gt;Dask scheduler&lt;/b&gt; (SCHEDULER, e.g. tcp://host:8786; empty = a local cluster).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output folder&lt;/b&gt; (OUTPUT_FOLDER; must not hold the input tiles): &amp;lt;tile&amp;gt;_classified, &amp;lt;tile&amp;gt;_dtm.tif, dtm.vrt, optionally one Cloud-Optimized GeoTIFF (COG), and the HTML report (OUTPUT_HTML) with a map of the tiles by status and time and points per second per worker. A rerun skips finished tiles; cancel keeps finished tiles.&lt;/li&gt;&lt;/ul&gt;</source>
-            <translation>&lt;p&gt;يصنّف نقاط الأرض وينشئ نموذج تضاريس رقمياً لكل بلاطة في مشروع ليدار، وتُقرأ كل بلاطة مع هامش من نقاط جيرانها كي لا تظهر فواصل عند حواف البلاطات؛ وتُعالَج البلاطات بالتوازي على Dask محلياً أو على عنقود حواسيب. مثال: INPUT = مجلد بلاطات LAZ بطول 1 كم، BUFFER = 100 م، CELL_SIZE = 1 م ينتج بلاطات مصنّفة وملف GeoTIFF للتضاريس لكل بلاطة وفسيفساء VRT.&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;البلاطات&lt;/b&gt; (INPUT): مجلد ملفات ‎.las/.laz أو سحابة نقاط افتراضية ‎.vpc أو ملفات تفصل بينها ';'. يجب أن تشترك كل البلاطات في نظام إحداثيات واحد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;مرشح الأرض&lt;/b&gt; (GROUND_FILTER، الافتراضي هو الموصى به): 0 يُبقي الأصناف الموجودة في الملفات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طريقة نموذج التضاريس&lt;/b&gt; (DTM_METHOD، الافتراضي IDW) و&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الهامش&lt;/b&gt; (BUFFER، م، الافتراضي 100): يجب أن يتجاوز مدى المرشح (ضعف حجم بلاطة المربعات الصغرى، نصف قطر الميل) ومسافة البحث في النموذج.&lt;/li&gt;&lt;li&gt;&lt;b&gt;العمليات العاملة&lt;/b&gt; (WORKERS، الافتراضي 0 = واحدة لكل نواة) و&lt;b&gt;مجدول Dask&lt;/b&gt; (SCHEDULER، مثل tcp://host:8786؛ فارغ = عنقود محلي).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مجلد النواتج&lt;/b&gt; (OUTPUT_FOLDER؛ يجب ألا يحوي بلاطات الإدخال): &amp;lt;tile&amp;gt;_classified و&amp;lt;tile&amp;gt;_dtm.tif وdtm.vrt واختيارياً ملف GeoTIFF واحد محسَّن للسحابة (COG) وتقرير HTML ‏(OUTPUT_HTML) فيه خريطة البلاطات حسب الحالة والزمن وعدد النقاط في الثانية لكل عامل. إعادة التشغيل تتخطى البلاطات المنتهية؛ والإلغاء يُبقي البلاطات المنتهية.&lt;/li&gt;&lt;/ul&gt;</translation>
         </message>
         <message>
             <source>Tiles: folder, .vpc or files separated by ';'</source>
@@ -276,6 +284,34 @@
         <message>
             <source>Tile catalog report</source>
             <translation>تقرير فهرس البلاطات</translation>
+        </message>
+        <message>
+            <source>Classifies ground and builds a DTM for every tile of a LiDAR project, each tile read with a buffer of its neighbours' points so that results have no seams. Tiles run in parallel on Dask, locally or on a cluster; a rerun skips finished tiles.</source>
+            <translation>يصنّف الأرض ويبني نموذج تضاريس رقميًا لكل بلاطة في مشروع LiDAR، وتُقرأ كل بلاطة مع نطاق عازل من نقاط جيرانها فلا تظهر خطوط التقاء في النتائج. تعمل البلاطات بالتوازي على Dask محليًا أو على عنقود؛ وإعادة التشغيل تتخطى البلاطات المنجزة.</translation>
+        </message>
+        <message>
+            <source>All tiles must share one CRS.</source>
+            <translation>يجب أن تشترك كل البلاطات في نظام إحداثيات واحد.</translation>
+        </message>
+        <message>
+            <source>The first choice keeps the classes already in the files.</source>
+            <translation>الخيار الأول يُبقي الفئات الموجودة في الملفات.</translation>
+        </message>
+        <message>
+            <source>Must exceed the filter's reach (twice the LSQ tile size, the slope radius) and the DTM search distance.</source>
+            <translation>يجب أن يتجاوز مدى المرشّح (ضعف حجم بلاطة LSQ، نصف قطر مرشّح الانحدار) ومسافة البحث في DTM.</translation>
+        </message>
+        <message>
+            <source>e.g. tcp://host:8786.</source>
+            <translation>مثل tcp://host:8786.</translation>
+        </message>
+        <message>
+            <source>Must not hold the input tiles; receives the classified tiles, one DTM per tile and a VRT mosaic.</source>
+            <translation>يجب ألا يحوي بلاطات الإدخال؛ ويستقبل البلاطات المصنّفة ونموذج تضاريس لكل بلاطة وفسيفساء VRT.</translation>
+        </message>
+        <message>
+            <source>A map of the tiles by status, and time and points per second per worker.</source>
+            <translation>خريطة البلاطات حسب حالتها، والزمن وعدد النقاط في الثانية لكل عامل.</translation>
         </message>
     </context>
     <context>
@@ -499,10 +535,6 @@
             <translation>تغيّر,فرق,dod,حفر,ردم,حجم,حقب,حد الكشف,مراقبة,ليدار,dtm,dsm</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Subtracts an earlier surface from a later one (two DTM/DSM rasters on one grid, or two LAS/LAZ clouds gridded by TIN on a common grid) and keeps the change beyond the level of detection LoD95 = 1.96·√(σ₁² + σ₂²), σ being each epoch's vertical accuracy (e.g. the RMSE of the DTM accuracy tool). Significant cells form cut and fill polygons with area, mean change and volume.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Before&lt;/b&gt; (INPUT) and &lt;b&gt;After&lt;/b&gt; (INPUT_AFTER): two GeoTIFFs on the same grid, or two LAS/LAZ clouds in one CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;σ₁, σ₂&lt;/b&gt; (SIGMA1, SIGMA2, m, default 0.1): vertical accuracy of each epoch.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes&lt;/b&gt; (CLASSES, clouds only, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, clouds only, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum area&lt;/b&gt; (MIN_AREA, m², default 0 = eight cells): smaller regions are dropped (noise alone exceeds the LoD in 5 % of cells).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Difference&lt;/b&gt; (OUTPUT): GeoTIFF after − before (m).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Change polygons&lt;/b&gt; (OUTPUT_POLYGONS, GeoPackage): id, kind (cut / fill), area_m2, mean_change_m, volume_m3.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: LOD, FILL_VOLUME, CUT_VOLUME (m³), N_REGIONS.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;يطرح سطحاً سابقاً من سطح لاحق (شبكتا DTM/DSM على شبكة واحدة، أو سحابتا LAS/LAZ تُشبَّكان بـ TIN على شبكة مشتركة) ويحتفظ بالتغيّر الذي يتجاوز حد الكشف LoD95 = 1.96·√(σ₁² + σ₂²)، حيث σ الدقة الرأسية لكل حقبة (مثلاً RMSE من أداة دقة نموذج التضاريس). تكوّن الخلايا المعنوية مضلعات حفر وردم مع المساحة ومتوسط التغيّر والحجم.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;قبل&lt;/b&gt; (INPUT) و&lt;b&gt;بعد&lt;/b&gt; (INPUT_AFTER): ملفا GeoTIFF على الشبكة نفسها، أو سحابتا LAS/LAZ في نظام إحداثيات واحد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;σ₁ وσ₂&lt;/b&gt; (SIGMA1 وSIGMA2، م، الافتراضي 0.1): الدقة الرأسية لكل حقبة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الأصناف&lt;/b&gt; (CLASSES، للسحب فقط، الافتراضي &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، للسحب فقط، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى مساحة&lt;/b&gt; (MIN_AREA، م²، الافتراضي 0 = ثماني خلايا): تُحذف المناطق الأصغر (الضوضاء وحدها تتجاوز حد الكشف في 5 % من الخلايا).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الفرق&lt;/b&gt; (OUTPUT): GeoTIFF بعد − قبل (م).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مضلعات التغيّر&lt;/b&gt; (OUTPUT_POLYGONS، GeoPackage): id وkind (حفر / ردم) وarea_m2 وmean_change_m وvolume_m3.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;الأعداد الناتجة: LOD وFILL_VOLUME وCUT_VOLUME (م³) وN_REGIONS.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Before (raster or point cloud)</source>
             <translation>قبل (شبكة أو سحابة نقاط)</translation>
         </message>
@@ -545,6 +577,30 @@
         <message>
             <source>Elevation change report</source>
             <translation>تقرير تغيّر الارتفاع</translation>
+        </message>
+        <message>
+            <source>Subtracts an earlier surface from a later one (two rasters on one grid, or two LAS/LAZ clouds gridded by TIN) and keeps the change beyond the level of detection LoD95 = 1.96·√(σ₁² + σ₂²). Significant cells form cut and fill polygons with area, mean change and volume.</source>
+            <translation>يطرح سطحًا سابقًا من سطح لاحق (نموذجان نقطيان على شبكة واحدة، أو سحابتا LAS/LAZ محوّلتان إلى شبكة بطريقة TIN) ويحتفظ بالتغيّر الذي يتجاوز حدّ الكشف LoD95 = 1.96·√(σ₁² + σ₂²). تُشكّل الخلايا المعنوية مضلعات حفر وردم بمساحتها ومتوسط تغيّرها وحجمها.</translation>
+        </message>
+        <message>
+            <source>A GeoTIFF, or a LAS/LAZ cloud in the same CRS as the other epoch.</source>
+            <translation>ملف GeoTIFF، أو سحابة LAS/LAZ بنظام إحداثيات الحقبة الأخرى نفسه.</translation>
+        </message>
+        <message>
+            <source>The vertical accuracy of the epoch, e.g. the RMSE of the DTM accuracy tool.</source>
+            <translation>الدقة الرأسية للحقبة، مثل RMSE من أداة دقة نموذج التضاريس.</translation>
+        </message>
+        <message>
+            <source>Smaller regions are dropped: noise alone exceeds the LoD in 5 % of cells.</source>
+            <translation>تُحذف المناطق الأصغر: فالضجيج وحده يتجاوز حدّ الكشف في 5 % من الخلايا.</translation>
+        </message>
+        <message>
+            <source>GeoTIFF of after − before (m).</source>
+            <translation>ملف GeoTIFF للفرق اللاحق − السابق (m).</translation>
+        </message>
+        <message>
+            <source>GeoPackage with kind (cut / fill), area, mean change and volume.</source>
+            <translation>ملف GeoPackage بالنوع (حفر / ردم) والمساحة ومتوسط التغيّر والحجم.</translation>
         </message>
     </context>
     <context>
@@ -639,10 +695,6 @@
         <message>
             <source>&lt;p&gt;&lt;b&gt;Criteria&lt;/b&gt; (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band 4·GR … 6·GR for RMS_T; per-point limit 0.25 mm·S = 5·GR; ≥ 68 % (strict 90 %) of points within RMS_T; no directional bias (quadrant sign balance, inner vs edge radial residuals, residual-vector plot). Also: independent check points (role 'check', never fitted), leave-one-out residuals, orders 1–3 side by side with a recommended order (never one whose redundancy n − N is below max(2, ⌈N/2⌉)) and suggested points to drop. Residuals are predicted − given, in map units and pixels.&lt;/p&gt;</source>
             <translation>&lt;p&gt;&lt;b&gt;المعايير&lt;/b&gt; (مجلة جامعة تشرين للعلوم الهندسية 38(2)، 2016): RMS_i لكل نقطة ومساهمتها C_i = RMS_i/RMS_T؛ وRMS_x وRMS_y وRMS_T بالقسمة على n (وكذلك، مع الإشارة إلى ذلك، على n − N كما في أداة Georeferencer في QGIS)؛ ومقياس الخريطة S = 20000·GR ونطاق السماحية 4·GR … 6·GR لقيمة RMS_T؛ والحد لكل نقطة 0.25 mm·S = 5·GR؛ وأن تقع ≥ 68 % من النقاط (90 % في الصيغة الصارمة) ضمن RMS_T؛ وانعدام الانحياز الاتجاهي (توازن الإشارات بين الأرباع، والبواقي الشعاعية للنقاط الداخلية مقابل نقاط الحواف، ومخطط متجهات البواقي). وأيضاً: نقاط تحقق مستقلة (الدور 'check'، لا تدخل في المواءمة أبداً)، وبواقي الاستبعاد الفردي، والدرجات 1–3 جنباً إلى جنب مع درجة موصى بها (لا تكون أبداً درجةً فائضها n − N أقل من max(2, ⌈N/2⌉)) ونقاط مقترحة للحذف. البواقي = القيمة المتنبأ بها − القيمة المعطاة، بوحدات الخريطة وبالبكسل.&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;li&gt;&lt;b&gt;Returns filtered&lt;/b&gt; (RETURNS, default 0 = all): 0 all returns are classified and serve as neighbours (the forest study); 1 last returns only: only last (or single) returns are classified and only they may reject others; first and intermediate returns of multi-return pulses get class 1. Files without return numbers (e.g. the ISPRS samples) count every point as a last return.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours (multipath) get class 7 and take no part in the filter — one stray low point would reject every ground point within r. Advanced: NOISE_RADIUS (m, default 5) and NOISE_THRESHOLD (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default 0): 0 exact Vosselman rule; 1 terrain-adaptive (&lt;i&gt;this toolbox's extension&lt;/i&gt;): the rule is applied to heights above a smooth low terrain trend (minimum grid of TREND_CELL m, opening and mean filter of TREND_WINDOW m, defaults 10 and 60), so natural slopes steeper than θ are not rejected (ISPRS samp11, steep: total error 21.0 % → 16.4 % at the defaults). Because the terrain slope is removed first, lower θ (about 30–35°) usually works best in this mode.&lt;/li&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;الارتدادات المفلترة&lt;/b&gt; (RETURNS، الافتراضي 0 = الكل): 0 تُصنَّف جميع الارتدادات وتُستخدم كلها نقاطاً مجاورة (دراسة الغابات)؛ 1 الارتدادات الأخيرة فقط: لا تُصنَّف إلا الارتدادات الأخيرة (أو المنفردة) ولا يستبعد النقاطَ الأخرى إلا هي؛ وتأخذ الارتدادات الأولى والوسيطة للنبضات متعددة الارتدادات الصنف 1. في الملفات الخالية من أرقام الارتدادات (مثل عيّنات ISPRS) تُعَدّ كل نقطة ارتداداً أخيراً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة القيم الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي: نعم): النقاط الواقعة أسفل جيرانها بكثير (بسبب تعدد المسارات) تأخذ الصنف 7 ولا تشارك في الفلترة — فنقطة منخفضة شاردة واحدة كانت ستستبعد كل نقاط الأرض ضمن r. خيارات متقدمة: NOISE_RADIUS (م، الافتراضي 5) وNOISE_THRESHOLD (م، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;النمط&lt;/b&gt; (MODE، الافتراضي 0): 0 قاعدة Vosselman كما هي؛ 1 متكيِّف مع التضاريس (&lt;i&gt;إضافة من صندوق الأدوات هذا&lt;/i&gt;): تُطبَّق القاعدة على الارتفاعات فوق اتجاه عام منخفض وأملس للتضاريس (شبكة القيم الدنيا بخلية TREND_CELL م، ثم فتح مورفولوجي (opening) وفلتر متوسط بنافذة TREND_WINDOW م، والقيمتان الافتراضيتان 10 و60)، فلا تُستبعد المنحدرات الطبيعية الأشد انحداراً من θ (عيّنة ISPRS samp11 شديدة الانحدار: الخطأ الكلي 21.0 % → 16.4 % بالقيم الافتراضية). ولأن ميل التضاريس يُزال أولاً، فإن قيم θ الأدنى (نحو 30–35°) تعطي عادةً أفضل النتائج في هذا النمط.&lt;/li&gt;</translation>
         </message>
         <message>
             <source>Remove low outliers first (class 7)</source>
@@ -831,10 +883,6 @@
             <translation>ليدار,أرض,فلتر,الدقة,النوع الأول,النوع الثاني,الخطأ الكلي,كابا,isprs,مرجع,مصفوفة الالتباس</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Compares a filtered point cloud with reference labels, with the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix a (ground kept), b (ground rejected), c (object accepted), d (object rejected), Type I = b/(a+b), Type II = c/(c+d), total = (b+c)/n and Cohen's kappa.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (the ISPRS reference sample, class 2 = ground) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Filtered point cloud&lt;/b&gt; (INPUT, LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Class dimension of the filtered cloud&lt;/b&gt; (FIELD, default classification) and its &lt;b&gt;ground classes&lt;/b&gt; (GROUND_CLASSES, default 2; a list such as 2,8 is accepted). Every other class (1, 7 noise, 0...) counts as object.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference point cloud&lt;/b&gt; (REFERENCE, optional): the same points in the same order (checked: equal count and coordinates). When empty, the reference labels are read from another dimension of INPUT.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference class dimension&lt;/b&gt; (REFERENCE_FIELD, default classification; e.g. user_data or an extra dimension when there is no reference cloud) and its &lt;b&gt;ground classes&lt;/b&gt; (REFERENCE_GROUND_CLASSES, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): the matrix, the errors, and the reference labels of every filtered class.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Per-point error layer&lt;/b&gt; (ERROR_OUTPUT, optional LAS/LAZ): a copy of INPUT, every attribute unchanged except &lt;i&gt;user_data&lt;/i&gt; = 0 correct, 1 Type I (ground rejected), 2 Type II (object accepted); style the point cloud layer by user_data to map where the filter fails.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs A, B, C, D, N, TYPE1, TYPE2, TOTAL and KAPPA are numbers for the graphical modeler.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;تقارن سحابة نقاط مفلترة بتصنيفات مرجعية، بمقاييس اختبار فلاتر ISPRS (Sithole &amp; Vosselman 2004): مصفوفة التقاطع a (أرض مُبقاة)، b (أرض مرفوضة)، c (أجسام مقبولة)، d (أجسام مرفوضة)، والنوع الأول = b/(a+b)، والنوع الثاني = c/(c+d)، والخطأ الكلي = (b+c)/n، ومعامل كابا لكوهين.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (عيّنة ISPRS المرجعية، الصنف 2 = أرض) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المفلترة&lt;/b&gt; (INPUT، LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد الصنف في السحابة المفلترة&lt;/b&gt; (FIELD، الافتراضي classification) و&lt;b&gt;أصناف الأرض&lt;/b&gt; فيها (GROUND_CLASSES، الافتراضي 2؛ تُقبل قائمة مثل 2,8). أي صنف آخر (1، 7 ضوضاء، 0...) يُعَدّ جسماً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المرجعية&lt;/b&gt; (REFERENCE، اختياري): النقاط نفسها وبالترتيب نفسه (يُتحقَّق من تساوي العدد والإحداثيات). إذا تُركت فارغة تُقرأ التصنيفات المرجعية من بُعد آخر في INPUT.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد الصنف في المرجع&lt;/b&gt; (REFERENCE_FIELD، الافتراضي classification؛ مثلاً user_data أو بُعد إضافي عند عدم وجود سحابة مرجعية) و&lt;b&gt;أصناف الأرض&lt;/b&gt; فيه (REFERENCE_GROUND_CLASSES، الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): المصفوفة والأخطاء والتصنيفات المرجعية لكل صنف بعد الفلترة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقة الخطأ لكل نقطة&lt;/b&gt; (ERROR_OUTPUT، ملف LAS/LAZ اختياري): نسخة من INPUT بكل خصائصها دون تغيير عدا &lt;i&gt;user_data&lt;/i&gt; = 0 صحيح، 1 النوع الأول (أرض مرفوضة)، 2 النوع الثاني (جسم مقبول)؛ نسِّق طبقة سحابة النقاط حسب user_data لترى على الخريطة أين يخفق الفلتر.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;المخرجات A وB وC وD وN وTYPE1 وTYPE2 وTOTAL وKAPPA أرقام تُستخدم في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Filtered point cloud (LAS/LAZ)</source>
             <translation>سحابة النقاط المفلترة (LAS/LAZ)</translation>
         </message>
@@ -873,6 +921,26 @@
         <message>
             <source>Ground filter accuracy report</source>
             <translation>تقرير دقة مرشّح الأرض</translation>
+        </message>
+        <message>
+            <source>Compares a filtered point cloud with reference labels using the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix, Type I = b/(a+b), Type II = c/(c+d), total error and Cohen's kappa. An optional per-point error cloud shows where the filter fails.</source>
+            <translation>يقارن سحابة نقاط مرشَّحة بتصنيفات مرجعية وفق مقاييس اختبار المرشّحات لـ ISPRS ‏(Sithole &amp;amp; Vosselman 2004): المصفوفة المتقاطعة، والنوع الأول = b/(a+b)، والنوع الثاني = c/(c+d)، والخطأ الكلي، ومعامل كابا لكوهين. وتُظهر سحابة أخطاء اختيارية لكل نقطة أين يخفق المرشّح.</translation>
+        </message>
+        <message>
+            <source>A list such as 2,8 is accepted; every other class counts as an object.</source>
+            <translation>تُقبل قائمة مثل 2,8؛ وتُعدّ كل فئة أخرى جسمًا.</translation>
+        </message>
+        <message>
+            <source>Checked: equal count and coordinates. When empty, the reference labels are read from another dimension of the filtered cloud.</source>
+            <translation>يُتحقَّق من تساوي العدد والإحداثيات. وإن تُرك فارغًا تُقرأ التصنيفات المرجعية من بُعد آخر في السحابة المرشَّحة.</translation>
+        </message>
+        <message>
+            <source>E.g. user_data or an extra dimension when there is no reference cloud.</source>
+            <translation>مثل user_data أو بُعد إضافي عند غياب سحابة مرجعية.</translation>
+        </message>
+        <message>
+            <source>A copy of the filtered cloud; style it by user_data to map the errors.</source>
+            <translation>نسخة من السحابة المرشَّحة؛ رمّزها حسب user_data لترى الأخطاء على الخريطة.</translation>
         </message>
     </context>
     <context>
@@ -1270,10 +1338,6 @@
             <translation>كثافة,جودة,qa,lasinfo,فجوات,مكررات,ضوضاء,زاوية المسح,انعكاسات,توصيات,ليدار</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Checks a LAS/LAZ cloud before processing: density rasters of all returns, last returns and ground points, cells with returns but no ground (gaps), histograms of returns and classes, duplicate points, the share of noise (classes 7, 18) and the scan-angle range. It then states which settings the density supports: the ground filter window (1–2 pts/m² → 2 m), the DTM cell size, LOD1 only below 1 pt/m² (about 0.6 pts/m² in the ELiT study), and the radius and tile of our slope-based and LSQ filters.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz in a projected CRS (metres); a cloud in degrees is refused.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 5, &amp;gt; 0): cell of the density rasters.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Density rasters&lt;/b&gt; (OUTPUT): GeoTIFF with four bands: all returns, last returns, ground (pts/m²), gap (1/0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML report with maps and advice.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: DENSITY, GROUND_DENSITY (pts/m²), GAP_SHARE, DUPLICATES, NOISE_SHARE, GROUND_WINDOW (m), DTM_CELL (m).&lt;/p&gt;</source>
-            <translation>&lt;p&gt;يفحص سحابة LAS/LAZ قبل المعالجة: شبكات كثافة كل الانعكاسات والانعكاسات الأخيرة ونقاط الأرض، والخلايا التي فيها انعكاسات بلا أرض (فجوات)، ومدرّجات الانعكاسات والأصناف، والنقاط المكررة، ونسبة الضوضاء (الصنفان 7 و18) ومدى زاوية المسح. ثم يبيّن الإعدادات التي تسمح بها الكثافة: نافذة مرشّح الأرض (1–2 نقطة/م² ← 2 م)، وحجم خلية نموذج التضاريس، وLOD1 فقط تحت نقطة واحدة/م² (نحو 0.6 نقطة/م² في دراسة ELiT)، ونصف قطر وبلاطة مرشّحينا المعتمدين على الميل وLSQ.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف ‎.las/.laz في نظام إسقاط مستوٍ (بالأمتار)؛ تُرفض السحابة بالدرجات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم الخلية&lt;/b&gt; (CELL_SIZE، م، الافتراضي 5، &amp;gt; 0): خلية شبكات الكثافة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;أصناف الأرض&lt;/b&gt; (GROUND_CLASSES، الافتراضي &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شبكات الكثافة&lt;/b&gt; (OUTPUT): ملف GeoTIFF بأربع طبقات: كل الانعكاسات، الأخيرة، الأرض (نقطة/م²)، الفجوة (1/0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): تقرير HTML بالخرائط والتوصيات.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;الأعداد الناتجة: DENSITY وGROUND_DENSITY (نقطة/م²) وGAP_SHARE وDUPLICATES وNOISE_SHARE وGROUND_WINDOW (م) وDTM_CELL (م).&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Point cloud (LAS/LAZ)</source>
             <translation>سحابة النقاط (LAS/LAZ)</translation>
         </message>
@@ -1297,6 +1361,22 @@
             <source>Point density and quality report</source>
             <translation>تقرير كثافة النقاط وجودتها</translation>
         </message>
+        <message>
+            <source>Checks a LAS/LAZ cloud before processing: density of all, last and ground returns, gaps without ground, duplicates, noise share and scan angles. It then states which settings the density supports: ground filter window, DTM cell size, LOD1 only below 1 pt/m², and the radius and tile of the slope-based and LSQ filters.</source>
+            <translation>يفحص سحابة LAS/LAZ قبل المعالجة: كثافة كل الانعكاسات والأخيرة منها وانعكاسات الأرض، والفجوات الخالية من الأرض، والنقاط المكررة، ونسبة الضجيج، وزوايا المسح. ثم يبيّن الإعدادات التي تدعمها الكثافة: نافذة مرشّح الأرض، وحجم خلية DTM، وLOD1 فقط دون 1 pt/m²، ونصف قطر مرشّح الانحدار وبلاطة مرشّح LSQ.</translation>
+        </message>
+        <message>
+            <source>In a projected CRS (metres); a cloud in degrees is refused.</source>
+            <translation>بنظام إحداثيات مُسقَط (بالأمتار)؛ وتُرفض السحابة بالدرجات.</translation>
+        </message>
+        <message>
+            <source>GeoTIFF with four bands: all returns, last returns, ground (pts/m²) and gap (1/0).</source>
+            <translation>ملف GeoTIFF بأربع حزم: كل الانعكاسات، والانعكاسات الأخيرة، والأرض (pts/m²)، والفجوة (1/0).</translation>
+        </message>
+        <message>
+            <source>Maps, histograms and the advice.</source>
+            <translation>خرائط ومدرّجات تكرارية والتوصيات.</translation>
+        </message>
     </context>
     <context>
         <name>LidarToDtmAlgorithm</name>
@@ -1307,10 +1387,6 @@
         <message>
             <source>lidar,ground,filter,dtm,dem,idw,accuracy,rmse,check points,chain,all-or-nothing</source>
             <translation>ليدار,أرض,مرشح,نموذج تضاريس,dem,idw,دقة,rmse,نقاط تحقق,سلسلة,الكل أو لا شيء</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Classifies the ground of a LiDAR point cloud, interpolates a DTM from the ground points and measures its accuracy against check points, in one step. It writes all its outputs or none: when any step fails or is cancelled, no classified cloud, DTM or report is left behind.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html → the classified cloud, the DTM and the RMSE.&lt;/p&gt;&lt;p&gt;The steps are the recommended ground filter (the improved least-squares filter where the recommended one is not installed), the IDW DTM (power 3, 12 neighbours by default: the seed paper's best setting) and the DTM accuracy; the results equal those of the three algorithms run one after another. Before anything is written the CRS, the check points (no duplicates, inside the cloud's extent) and every output path are checked. The graphical model of the same name is its editable counterpart, without this guarantee.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt;: .las or .laz in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (default yes), with its search cell (m, default 5) and depth (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM cell size&lt;/b&gt; (m, default 1), &lt;b&gt;IDW power&lt;/b&gt; (default 3), &lt;b&gt;neighbours&lt;/b&gt; (default 12), &lt;b&gt;fill data gaps&lt;/b&gt; (default no) and a &lt;b&gt;CRS&lt;/b&gt; for a cloud without a CRS record.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check points&lt;/b&gt;: a point layer (heights from a field or the geometry Z) or a CSV/TXT file (id, x, y, z) with its CRS; reprojection of x, y on request; bilinear (default) or nearest-cell sampling.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud, DTM (GeoTIFF), check-point residuals and the DTM accuracy report; optional ground filter report and DTM report.&lt;/li&gt;&lt;/ul&gt;</source>
-            <translation>&lt;p&gt;يصنّف أرض سحابة نقاط LiDAR، ويستكمل منها نموذج تضاريس رقميًا (DTM) من نقاط الأرض، ويقيس دقته مقابل نقاط التحقق، في خطوة واحدة. يكتب كل نواتجه أو لا شيء منها: إذا فشلت أي خطوة أو أُلغيت لا تبقى سحابة مصنّفة ولا DTM ولا تقرير.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: &lt;span dir="ltr"&gt;INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html&lt;/span&gt; ← السحابة المصنّفة والـ DTM وقيمة RMSE.&lt;/p&gt;&lt;p&gt;الخطوات هي مرشّح الأرض الموصى به (أو مرشّح المربعات الصغرى المحسّن حيث لا يتوفر الموصى به)، ثم DTM بطريقة IDW (الأس 3 و12 جارًا افتراضيًا: أفضل إعداد في البحث المرجعي)، ثم دقة الـ DTM؛ والنتائج مطابقة لتشغيل الخوارزميات الثلاث واحدة تلو الأخرى. قبل كتابة أي شيء يُتحقَّق من نظام الإحداثيات ومن نقاط التحقق (بلا تكرار وضمن امتداد السحابة) ومن كل مسار ناتج. النموذج الرسومي الذي يحمل الاسم نفسه هو نظيره القابل للتعديل، ولكن دون هذا الضمان.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt;: ملف ‎.las‏ أو ‎.laz‏ في نظام إحداثيات مسقط (أمتار).&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة النقاط الشاذة المنخفضة أولًا&lt;/b&gt; (افتراضيًا نعم)، مع خلية البحث (م، افتراضيًا 5) والعمق (م، افتراضيًا 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم خلية الـ DTM&lt;/b&gt; (م، افتراضيًا 1)، و&lt;b&gt;أس IDW&lt;/b&gt; (افتراضيًا 3)، و&lt;b&gt;عدد الجيران&lt;/b&gt; (افتراضيًا 12)، و&lt;b&gt;ملء فجوات البيانات&lt;/b&gt; (افتراضيًا لا)، و&lt;b&gt;نظام إحداثيات&lt;/b&gt; لسحابة بلا سجل نظام إحداثيات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط التحقق&lt;/b&gt;: طبقة نقطية (الارتفاعات من حقل أو من Z الهندسة) أو ملف CSV/TXT ‏(id, x, y, z) مع نظام إحداثياته؛ إعادة إسقاط x وy عند الطلب؛ اعتيان ثنائي الخطية (افتراضيًا) أو بأقرب خلية.&lt;/li&gt;&lt;li&gt;&lt;b&gt;النواتج&lt;/b&gt;: السحابة المصنّفة، والـ DTM ‏(GeoTIFF)، وبواقي نقاط التحقق، وتقرير دقة الـ DTM؛ واختياريًا تقرير مرشّح الأرض وتقرير الـ DTM.&lt;/li&gt;&lt;/ul&gt;</translation>
         </message>
         <message>
             <source>DTM cell size (m)</source>
@@ -1423,6 +1499,26 @@
         <message>
             <source>The ground filter found no ground point; no DTM can be interpolated. No output was written.</source>
             <translation>لم يجد مرشّح الأرض أي نقطة أرض؛ لا يمكن استكمال نموذج تضاريس. لم يُكتب أي ناتج.</translation>
+        </message>
+        <message>
+            <source>Classifies the ground of a LiDAR point cloud, interpolates an IDW DTM from the ground points and measures its accuracy against check points, in one step. It writes all its outputs or none, and its results equal those of the three algorithms run one after another.</source>
+            <translation>يصنّف أرض سحابة نقاط LiDAR، ويستكمل نموذج تضاريس رقميًا بطريقة IDW من نقاط الأرض، ويقيس دقته مقابل نقاط تحقق، في خطوة واحدة. يكتب كل مخرجاته أو لا شيء، ونتائجه تطابق نتائج الخوارزميات الثلاث مشغّلةً الواحدة تلو الأخرى.</translation>
+        </message>
+        <message>
+            <source>In a projected CRS (metres).</source>
+            <translation>بنظام إحداثيات مُسقَط (بالأمتار).</translation>
+        </message>
+        <message>
+            <source>Power 3 with 12 neighbours is the seed paper's best setting.</source>
+            <translation>الأس 3 مع 12 جارًا هو أفضل إعداد في الورقة المرجعية.</translation>
+        </message>
+        <message>
+            <source>Give the layer or the file; duplicates and points outside the cloud's extent are refused before anything is written.</source>
+            <translation>أدخل الطبقة أو الملف؛ وتُرفض النقاط المكررة والواقعة خارج امتداد السحابة قبل كتابة أي شيء.</translation>
+        </message>
+        <message>
+            <source>Classified by the recommended ground filter (the improved least-squares filter where it is not installed).</source>
+            <translation>مصنّفة بمرشّح الأرض الموصى به (أو بمرشّح المربعات الصغرى المحسَّن حيث لا يكون مثبّتًا).</translation>
         </message>
     </context>
     <context>
@@ -1560,10 +1656,6 @@
             <translation>أرض {g}، أخرى {o}، ضوضاء منخفضة {z}، غير مصنَّفة {u}؛ {t} بلاطة؛ {s:.1f} ث</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). In every tile the surface is fitted, points more than THRESHOLD above it are dropped, and the fit is repeated until the minimum, maximum, mean and standard deviation of the kept heights stop changing (TOLERANCE) or MAX_ITERATIONS; then every point with z ≤ ẑ + THRESHOLD is ground. Any classification already in the file is ignored and replaced.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output classes&lt;/b&gt; (ASPRS): 2 ground, 1 other (buildings, vegetation), 7 low noise (pre-filter), 0 never classified (only with SPARSE_TILES = leave unclassified). Every other attribute of every point, the point format, scales, offsets, VLRs and CRS are copied unchanged.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file, projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Order&lt;/b&gt; (ORDER, default 2): 1 = plane z = b0 + b1·x + b2·y; 2 = quadratic z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (better on every sample of the paper).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Tile size&lt;/b&gt; (TILE_SIZE, m, default 50): larger than the largest building, so that every tile holds ground (paper: 100 m for large buildings, 50 m for small ones). Tiles are square, anchored at the minimum x, y.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Threshold&lt;/b&gt; (THRESHOLD, m, default 0.5): 0.5–1.0 m, larger on steeper terrain.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default Faithful): Faithful = the paper. Improved = ours, beyond the paper: coarse-to-fine tiles (2, 1, ½, ¼ × TILE_SIZE) fitted on overlapping windows, each level started from the previous level's ground, and a threshold that grows with the surface slope (by 2.5 m per unit gradient, at most 1 m). On the ISPRS samples it lowers the mean total error from 8.9 % (paper) to about 4.9 % with one parameter set; it costs about 15 times the time and twice the memory of the faithful mode (about 2 M points/s and 100 bytes per point in faithful mode).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours become class 7 and take no part in the fit (NOISE_RADIUS, m, default 5: neighbourhood cell; NOISE_THRESHOLD, m, default 1: depth below the neighbours).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum iterations&lt;/b&gt; (MAX_ITERATIONS, default 5, the paper's tables) and &lt;b&gt;stop tolerance&lt;/b&gt; (TOLERANCE, m, default 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Random fitting subset per tile&lt;/b&gt; (SUBSET_SIZE, points, default 0 = all; the paper used 5000) and its &lt;b&gt;seed&lt;/b&gt; (SEED). All points are classified.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points per tile&lt;/b&gt; (MIN_POINTS, default 0 = 3 × the number of coefficients) and &lt;b&gt;under-populated tiles&lt;/b&gt; (SPARSE_TILES): borrow the nearest fitted tile's surface (default) or leave their points unclassified (class 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rejection&lt;/b&gt; (REJECTION): re-weighted (default; a point dropped earlier may return when the surface moves) or cumulative (dropped for good).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud (OUTPUT, .laz or .las), optional ground-only cloud (GROUND_OUTPUT), optional HTML report (OUTPUT_HTML) with the parameters, class counts, the per-iteration statistics of the paper's Tables 1–2, per-tile statistics, time and points per second; optional CSV of every tile's iterations and coefficients (TILE_STATS); numbers N_GROUND, N_OTHER, N_NOISE, N_UNCLASSIFIED, N_TILES, POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Measure the result against reference labels with &lt;i&gt;Ground filter accuracy&lt;/i&gt;. Nothing is written when the run fails or is cancelled.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;تفصل نقاط سطح الأرض العارية عن المباني والغطاء النباتي في سحابة ليدار جوية بمواءمة سطوح متعددة حدود بالمربعات الصغرى في كل بلاطة مربعة (مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013). في كل بلاطة يُوائَم السطح، وتُستبعد النقاط التي تعلوه بأكثر من THRESHOLD، وتُكرَّر المواءمة حتى تتوقف القيمة الدنيا والعليا والمتوسط والانحراف المعياري للارتفاعات المُبقاة عن التغيُّر (TOLERANCE) أو يُبلغ MAX_ITERATIONS؛ ثم تُعَدّ أرضاً كل نقطة تحقق z ≤ ẑ + THRESHOLD. يُتجاهَل أي تصنيف موجود في الملف ويُستبدل.&lt;/p&gt;&lt;p&gt;&lt;b&gt;أصناف المخرج&lt;/b&gt; (ASPRS): 2 أرض، 1 أخرى (مبانٍ، غطاء نباتي)، 7 ضوضاء منخفضة (الفلترة المسبقة)، 0 لم تُصنَّف قط (فقط مع SPARSE_TILES = ترك النقاط دون تصنيف). تُنسخ دون تغيير جميع الخصائص الأخرى لكل نقطة، وصيغة النقاط، ومعاملات المقياس والإزاحة، وسجلات VLR، ونظام الإحداثيات.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz بنظام إحداثيات مُسقَط بالأمتار.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الدرجة&lt;/b&gt; (ORDER، الافتراضي 2): 1 = مستوٍ z = b0 + b1·x + b2·y؛ 2 = سطح تربيعي z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (أفضل في جميع عيّنات البحث).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم البلاطة&lt;/b&gt; (TILE_SIZE، م، الافتراضي 50): أكبر من أكبر مبنى، كي تحوي كل بلاطة نقاطاً من الأرض (البحث: 100 م للمباني الكبيرة، 50 م للصغيرة). البلاطات مربعة، ومبدؤها عند أصغر x وy.&lt;/li&gt;&lt;li&gt;&lt;b&gt;العتبة&lt;/b&gt; (THRESHOLD، م، الافتراضي 0.5): 0.5–1.0 م، وأكبر في التضاريس الأشد انحداراً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;النمط&lt;/b&gt; (MODE، الافتراضي: مطابق): مطابق = طريقة البحث. محسَّن = من إضافتنا، يتجاوز البحث: بلاطات من الخشن إلى الدقيق (2، 1، ½، ¼ × TILE_SIZE) تُوائَم على نوافذ متداخلة، ويبدأ كل مستوى من نقاط الأرض في المستوى السابق، مع عتبة تزداد بازدياد ميل السطح (بمقدار 2.5 م لكل وحدة تدرّج، وبحد أقصى 1 م). على عيّنات ISPRS يخفض متوسط الخطأ الكلي من 8.9 % (البحث) إلى نحو 4.9 % بمجموعة معاملات واحدة؛ ويستغرق نحو 15 ضعف زمن النمط المطابق وضعف ذاكرته (نحو 2 مليون نقطة/ث و100 بايت لكل نقطة في النمط المطابق).&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة القيم الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي: نعم): النقاط الواقعة أسفل جيرانها بكثير تصبح من الصنف 7 ولا تشارك في المواءمة (NOISE_RADIUS، م، الافتراضي 5: خلية الجوار؛ NOISE_THRESHOLD، م، الافتراضي 1: العمق تحت الجيران).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأقصى للتكرارات&lt;/b&gt; (MAX_ITERATIONS، الافتراضي 5، كما في جداول البحث) و&lt;b&gt;سماحية التوقف&lt;/b&gt; (TOLERANCE، م، الافتراضي 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مجموعة جزئية عشوائية للمواءمة في كل بلاطة&lt;/b&gt; (SUBSET_SIZE، نقاط، الافتراضي 0 = الكل؛ استخدم البحث 5000) و&lt;b&gt;بذرتها العشوائية&lt;/b&gt; (SEED). تُصنَّف جميع النقاط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الحد الأدنى للنقاط في البلاطة&lt;/b&gt; (MIN_POINTS، الافتراضي 0 = 3 × عدد معاملات متعدد الحدود) و&lt;b&gt;البلاطات قليلة النقاط&lt;/b&gt; (SPARSE_TILES): استعارة سطح أقرب بلاطة مُوائَمة (الافتراضي) أو ترك نقاطها دون تصنيف (الصنف 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الاستبعاد&lt;/b&gt; (REJECTION): إعادة الترجيح (الافتراضي؛ قد تعود نقطة استُبعدت سابقاً عندما يتحرك السطح) أو تراكمي (تُستبعد النقطة نهائياً).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المخرجات&lt;/b&gt;: السحابة المصنَّفة (OUTPUT، بالامتداد .laz أو .las)، وسحابة نقاط الأرض فقط اختيارياً (GROUND_OUTPUT)، وتقرير HTML اختياري (OUTPUT_HTML) فيه المعاملات وأعداد النقاط في كل صنف وإحصاءات كل تكرار كما في الجدولين 1–2 من البحث وإحصاءات كل بلاطة والزمن وعدد النقاط في الثانية؛ وملف CSV اختياري بتكرارات كل بلاطة ومعاملاتها (TILE_STATS)؛ والأرقام N_GROUND وN_OTHER وN_NOISE وN_UNCLASSIFIED وN_TILES وPOINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;قِس النتيجة مقارنةً بالتصنيفات المرجعية باستخدام &lt;i&gt;دقة فلتر نقاط الأرض&lt;/i&gt;. لا يُكتب أي شيء إذا فشل التشغيل أو أُلغي.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Per-tile iteration statistics (CSV)</source>
             <translation>إحصاءات التكرارات لكل بلاطة (CSV)</translation>
         </message>
@@ -1574,6 +1666,50 @@
         <message>
             <source>LSQ ground filter report</source>
             <translation>تقرير مرشّح الأرض بالمربعات الصغرى (LSQ)</translation>
+        </message>
+        <message>
+            <source>Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). Points more than the threshold above the surface are dropped and the fit repeated until the height statistics settle; the rest become ground (class 2), the others class 1.</source>
+            <translation>يفصل نقاط سطح الأرض العاري عن المباني والنباتات في سحابة LiDAR جوية بتوفيق سطوح متعددة الحدود بالمربعات الصغرى لكل بلاطة مربعة (مجلة جامعة دمشق للعلوم الهندسية 29(2)، 2013). تُستبعد النقاط التي تعلو السطح بأكثر من العتبة ويُعاد التوفيق حتى تستقر إحصاءات الارتفاع؛ فتصبح البقية أرضًا (الفئة 2) والأخرى الفئة 1.</translation>
+        </message>
+        <message>
+            <source>1 = plane, 2 = quadratic surface (better on every sample of the paper).</source>
+            <translation>1 = مستوٍ، 2 = سطح تربيعي (أفضل في كل عيّنات الورقة).</translation>
+        </message>
+        <message>
+            <source>Larger than the largest building, so that every tile holds ground (the paper: 100 m for large buildings, 50 m for small ones).</source>
+            <translation>أكبر من أكبر مبنى، كي تحوي كل بلاطة أرضًا (الورقة: 100 m للمباني الكبيرة، و50 m للصغيرة).</translation>
+        </message>
+        <message>
+            <source>0.5–1.0 m, larger on steeper terrain.</source>
+            <translation>من 0.5 إلى 1.0 m، وأكبر في التضاريس الأشد انحدارًا.</translation>
+        </message>
+        <message>
+            <source>Faithful follows the paper. Improved (this toolbox's extension) fits coarse-to-fine overlapping tiles with a slope-dependent threshold: mean total error on the ISPRS samples 8.9 % → about 4.9 %, at about 15 times the time.</source>
+            <translation>الوفيّ يتبع الورقة. المحسَّن (امتداد من هذه الأداة) يوفّق بلاطات متداخلة من الخشن إلى الدقيق بعتبة تتبع الانحدار: متوسط الخطأ الكلي على عيّنات ISPRS ‏8.9 % ← نحو 4.9 %، بنحو 15 ضعف الوقت.</translation>
+        </message>
+        <message>
+            <source>Points far below their neighbours (multipath) get class 7 and take no part in the fit.</source>
+            <translation>النقاط الواقعة أدنى بكثير من جيرانها (تعدد المسارات) تأخذ الفئة 7 ولا تشارك في التوفيق.</translation>
+        </message>
+        <message>
+            <source>The paper used 5000; every point is still classified.</source>
+            <translation>استخدمت الورقة 5000؛ وتُصنَّف كل النقاط مع ذلك.</translation>
+        </message>
+        <message>
+            <source>Tiles with too few points borrow the nearest fitted surface, or their points stay class 0.</source>
+            <translation>البلاطات القليلة النقاط تستعير أقرب سطح موفَّق، أو تبقى نقاطها في الفئة 0.</translation>
+        </message>
+        <message>
+            <source>Re-weighted: a dropped point may come back when the surface moves; cumulative: dropped for good.</source>
+            <translation>إعادة الترجيح: قد تعود نقطة مستبعدة حين يتحرك السطح؛ تراكمي: تُستبعد نهائيًا.</translation>
+        </message>
+        <message>
+            <source>Every attribute, point format, scales, offsets, VLRs and CRS are copied unchanged; any earlier classification is replaced.</source>
+            <translation>تُنسخ كل الخصائص وصيغة النقاط والمقاييس والإزاحات وسجلات VLR ونظام الإحداثيات دون تغيير؛ ويُستبدل أي تصنيف سابق.</translation>
+        </message>
+        <message>
+            <source>Class counts, the per-iteration statistics of the paper's tables, a tile map and the speed.</source>
+            <translation>أعداد الفئات، وإحصاءات كل تكرار كما في جداول الورقة، وخريطة البلاطات، والسرعة.</translation>
         </message>
     </context>
     <context>
@@ -1638,10 +1774,6 @@
             <translation>ليدار,las,laz,أرض,فلتر,تصنيف,dtm,الأرض العارية,vosselman,الميل,سحابة النقاط</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when some neighbour at horizontal distance 0 &amp;lt; d ≤ r lies more than d·tan θ + h below it. Single pass, neighbours from the whole cloud, exact (labels identical to a brute-force check of every pair) and fast (about a million points per second on one core at r = 3 m). Low outliers get class 7; every other attribute is copied unchanged. The input classification is ignored.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study's setting RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 allows a rise of 2.90 m at 3 m. Tune r and θ to your data with &lt;i&gt;Slope filter threshold sweep&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radius r&lt;/b&gt; (RADIUS, m, default 10, &amp;gt; 0): neighbourhood radius. An object is removed only within r of its edge, so r must exceed half the width of the largest building to remove; larger r costs more time.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope threshold θ&lt;/b&gt; (SLOPE, degrees, default 40, strictly between 0 and 90): the steepest terrain kept. Allowed rise at 3 m: 2.52 m (40°), 2.90 m (44°), 3.33 m (48°), 3.84 m (52°), 4.45 m (56°), 5.20 m (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Height tolerance h&lt;/b&gt; (HEIGHT_TOLERANCE, m, default 0.2, ≥ 0): extra rise allowed for every pair, absorbs ranging noise between close points; 0 is the rule as published.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;تصنِّف سحابة نقاط LAS/LAZ إلى أرض (الصنف 2) وغير أرض (الصنف 1) بفلتر الميل الذي اقترحه Vosselman (2000): تُعَدّ النقطة غير أرضية إذا وُجدت نقطة مجاورة على مسافة أفقية 0 &lt; d ≤ r تقع أسفلها بأكثر من d·tan θ + h. مرور واحد، والجيران من السحابة كلها، ودقيق (التصنيفات مطابقة لفحص شامل لكل الأزواج) وسريع (نحو مليون نقطة في الثانية على نواة معالج واحدة عند r = 3 م). تأخذ القيم الشاذة المنخفضة الصنف 7؛ وتُنسخ سائر الخصائص دون تغيير. يُتجاهَل تصنيف الإدخال.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: إعداد دراسة الغابات RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 يسمح بفرق ارتفاع 2.90 م على مسافة 3 م. اضبط r وθ لبياناتك باستخدام &lt;i&gt;مسح عتبات فلتر الميل&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف .las أو .laz بنظام إحداثيات مُسقَط (بالأمتار).&lt;/li&gt;&lt;li&gt;&lt;b&gt;نصف القطر r&lt;/b&gt; (RADIUS، م، الافتراضي 10، &gt; 0): نصف قطر الجوار. لا يُزال الجسم إلا ضمن مسافة r من حافته، لذا يجب أن يتجاوز r نصف عرض أكبر مبنى يُراد إزالته؛ وكلما كبر r زاد الزمن.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عتبة الميل θ&lt;/b&gt; (SLOPE، درجات، الافتراضي 40، بين 0 و90 حصراً): أشد انحدار للتضاريس يُحتفظ به. فرق الارتفاع المسموح على مسافة 3 م: 2.52 م (40°)، 2.90 م (44°)، 3.33 م (48°)، 3.84 م (52°)، 4.45 م (56°)، 5.20 م (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;سماحية الارتفاع h&lt;/b&gt; (HEIGHT_TOLERANCE، م، الافتراضي 0.2، ≥ 0): فرق ارتفاع إضافي مسموح لكل زوج، يمتص ضوضاء قياس المسافة بين النقاط المتقاربة؛ والقيمة 0 هي القاعدة كما نُشرت.&lt;/li&gt;</translation>
-        </message>
-        <message>
             <source>Radius r (m)</source>
             <translation>نصف القطر r (م)</translation>
         </message>
@@ -1698,12 +1830,32 @@
             <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الفلترة {:.1f} ث</translation>
         </message>
         <message>
-            <source>&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, default yes, advanced): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point, classes 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): counts, settings, allowed-rise table, speed.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE, POINTS_PER_SECOND (filter step only).&lt;/p&gt;&lt;p&gt;Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;الإبقاء على أصناف الضوضاء الموجودة&lt;/b&gt; (KEEP_NOISE، الافتراضي: نعم، خيار متقدم): النقاط المصنَّفة مسبقاً 7 أو 18 تحتفظ بصنفها ولا تشارك في الفلترة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط المصنَّفة&lt;/b&gt; (OUTPUT، .laz/.las): كل النقاط، بالأصناف 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط الأرض&lt;/b&gt; (GROUND_OUTPUT، اختياري): نقاط الأرض فقط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): الأعداد والإعدادات وجدول فرق الارتفاع المسموح والسرعة.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: N_POINTS وN_GROUND وN_NONGROUND وN_NOISE وPOINTS_PER_SECOND (لخطوة الفلترة وحدها).&lt;/p&gt;&lt;p&gt;المرجع: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Slope ground filter report</source>
             <translation>تقرير مرشّح الأرض القائم على الانحدار</translation>
+        </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when a neighbour within the radius r lies more than d·tan θ + h below it. The filter is exact and fast (about a million points per second at r = 3 m); tune r and θ to your data with the slope filter threshold sweep.</source>
+            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) وغير أرض (الفئة 1) بمرشّح الانحدار لـ Vosselman ‏(2000): تكون النقطة غير أرضية إذا وُجد جار ضمن نصف القطر r أدنى منها بأكثر من d·tan θ + h. المرشّح دقيق وسريع (نحو مليون نقطة في الثانية عند r = 3 m)؛ اضبط r وθ على بياناتك بأداة مسح عتبات مرشّح الانحدار.</translation>
+        </message>
+        <message>
+            <source>Must exceed half the width of the largest building to remove; a larger radius costs more time.</source>
+            <translation>يجب أن يتجاوز نصف عرض أكبر مبنى يُراد حذفه؛ ونصف القطر الأكبر يستغرق وقتًا أطول.</translation>
+        </message>
+        <message>
+            <source>The steepest terrain kept, between 0 and 90°; the allowed rise at 3 m is 2.52 m at 40°, 2.90 m at 44° and 3.84 m at 52°.</source>
+            <translation>أشد تضاريس تُحفظ، بين 0 و90°؛ الارتفاع المسموح على بُعد 3 m هو 2.52 m عند 40°، و2.90 m عند 44°، و3.84 m عند 52°.</translation>
+        </message>
+        <message>
+            <source>Extra rise allowed for every pair, absorbs ranging noise; 0 is the published rule.</source>
+            <translation>ارتفاع إضافي مسموح لكل زوج من النقاط يمتص ضجيج القياس؛ 0 هي القاعدة المنشورة.</translation>
+        </message>
+        <message>
+            <source>Points already in class 7 or 18 keep their class and take no part.</source>
+            <translation>النقاط المصنّفة مسبقًا في الفئة 7 أو 18 تحتفظ بفئتها ولا تشارك.</translation>
+        </message>
+        <message>
+            <source>Every point with classes 2, 1 and 7; every other attribute is copied unchanged.</source>
+            <translation>كل النقاط بالفئات 2 و1 و7؛ وتُنسخ كل الخصائص الأخرى دون تغيير.</translation>
         </message>
     </context>
     <context>
@@ -1715,10 +1867,6 @@
         <message>
             <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
             <translation>ليدار,أرض,فلتر,vosselman,الميل,العتبة,المعايرة,الدقة,النوع الأول,النوع الثاني,كابا,isprs</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h and reports, against reference labels, Type I error (ground rejected), Type II error (objects accepted as ground — the forest study's "error" column, which alone always favours low θ), total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004), then picks the best setting. One exact neighbourhood pass per radius and tolerance: every threshold then costs a single comparison per point.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. ISPRS reference samples: INPUT=samp31.laz (its own classification is the reference).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): LAS/LAZ. Its classification is never used to filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference cloud&lt;/b&gt; (REFERENCE, optional): a labelled copy of the same points in the same order; empty = the input's own classification (e.g. the ISPRS samples).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default "2"): reference classes counted as ground; all others are objects.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope thresholds&lt;/b&gt; (SLOPES, degrees, default "30,35,40,44,48,52,56,60"): a list or start:stop:step.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radii&lt;/b&gt; (RADII, m, default "10") and &lt;b&gt;height tolerances&lt;/b&gt; (HEIGHT_TOLERANCES, m, default "0.2"): lists; each value is one pass.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Best by&lt;/b&gt; (METRIC, default 0): 0 lowest total error, 1 highest kappa, 2 lowest Type I, 3 lowest Type II.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;تشغِّل فلتر الأرض القائم على الميل لكل توليفة من عتبات الميل θ وأنصاف الأقطار r وسماحيات الارتفاع h، وتحسب مقارنةً بالتصنيفات المرجعية خطأ النوع الأول (رفض نقاط الأرض)، وخطأ النوع الثاني (قبول الأجسام كأرض — وهو عمود "الخطأ" في دراسة الغابات، الذي يرجِّح وحده دائماً قيم θ المنخفضة)، والخطأ الكلي، ومعامل كابا لكوهين (Sithole &amp; Vosselman 2004)، ثم تختار أفضل إعداد. مرور دقيق واحد على الجوار لكل نصف قطر وسماحية: بعدها لا تكلِّف كل عتبة سوى مقارنة واحدة لكل نقطة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: دراسة الغابات: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. عيّنات ISPRS المرجعية: INPUT=samp31.laz (تصنيفها نفسه هو المرجع).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): LAS/LAZ. لا يُستخدم تصنيفها في الفلترة أبداً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المرجعية&lt;/b&gt; (REFERENCE، اختياري): نسخة مصنَّفة من النقاط نفسها وبالترتيب نفسه؛ فارغ = تصنيف سحابة الإدخال نفسها (مثل عيّنات ISPRS).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أصناف الأرض&lt;/b&gt; (GROUND_CLASSES، الافتراضي "2"): الأصناف المرجعية التي تُعَدّ أرضاً؛ وكل ما عداها أجسام.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عتبات الميل&lt;/b&gt; (SLOPES، درجات، الافتراضي "30,35,40,44,48,52,56,60"): قائمة أو start:stop:step (بداية:نهاية:خطوة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أنصاف الأقطار&lt;/b&gt; (RADII، م، الافتراضي "10") و&lt;b&gt;سماحيات الارتفاع&lt;/b&gt; (HEIGHT_TOLERANCES، م، الافتراضي "0.2"): قوائم؛ كل قيمة تعني مروراً واحداً.&lt;/li&gt;&lt;li&gt;&lt;b&gt;معيار الأفضلية&lt;/b&gt; (METRIC، الافتراضي 0): 0 أدنى خطأ كلي، 1 أعلى كابا، 2 أدنى خطأ من النوع الأول، 3 أدنى خطأ من النوع الثاني.&lt;/li&gt;</translation>
         </message>
         <message>
             <source>Reference cloud (empty = the input's classification)</source>
@@ -1821,12 +1969,36 @@
             <translation>الأفضل ({}): {} — الخطأ الكلي {:.2f} %</translation>
         </message>
         <message>
-            <source>&lt;li&gt;&lt;b&gt;Sweep table&lt;/b&gt; (OUTPUT_CSV): one row per setting: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): the table, the best setting and a chart of the errors against θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified with the best setting&lt;/b&gt; (OUTPUT, optional LAS/LAZ).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: BEST_RADIUS, BEST_SLOPE, BEST_HEIGHT_TOLERANCE, BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.&lt;/p&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;جدول المسح&lt;/b&gt; (OUTPUT_CSV): صف لكل إعداد: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML): الجدول وأفضل إعداد ومخطط للأخطاء مقابل θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;السحابة المصنَّفة بأفضل إعداد&lt;/b&gt; (OUTPUT، LAS/LAZ اختياري).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;أرقام المخرجات: BEST_RADIUS وBEST_SLOPE وBEST_HEIGHT_TOLERANCE وBEST_TYPE1 وBEST_TYPE2 وBEST_TOTAL وBEST_KAPPA (بالنسبة المئوية) وN_SETTINGS.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Slope threshold sweep report</source>
             <translation>تقرير مسح عتبات مرشّح الانحدار</translation>
+        </message>
+        <message>
+            <source>Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h, and measures each against reference labels: Type I and Type II errors, total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004). It then picks the best setting, at the cost of one neighbourhood pass per radius and tolerance.</source>
+            <translation>يشغّل مرشّح الأرض القائم على الانحدار لكل توليفة من عتبات الانحدار θ وأنصاف الأقطار r وسماحيات الارتفاع h، ويقيس كلًّا منها مقابل التصنيفات المرجعية: خطأ النوع الأول والثاني، والخطأ الكلي، ومعامل كابا لكوهين (Sithole &amp;amp; Vosselman 2004). ثم يختار أفضل إعداد، بكلفة مرور جواري واحد لكل نصف قطر وسماحية.</translation>
+        </message>
+        <message>
+            <source>Its classification is never used to filter.</source>
+            <translation>لا يُستخدم تصنيفها في الترشيح أبدًا.</translation>
+        </message>
+        <message>
+            <source>A labelled copy of the same points in the same order, e.g. the ISPRS reference samples.</source>
+            <translation>نسخة مصنّفة من النقاط نفسها بالترتيب نفسه، مثل عيّنات ISPRS المرجعية.</translation>
+        </message>
+        <message>
+            <source>Every other class counts as an object.</source>
+            <translation>تُعدّ كل فئة أخرى جسمًا.</translation>
+        </message>
+        <message>
+            <source>A list such as 40, 44, 48 or start:stop:step.</source>
+            <translation>قائمة مثل 40, 44, 48 أو start:stop:step.</translation>
+        </message>
+        <message>
+            <source>Each value is one neighbourhood pass.</source>
+            <translation>كل قيمة تعني مرور جوار واحد.</translation>
+        </message>
+        <message>
+            <source>One row per setting with the cross matrix and the errors in percent.</source>
+            <translation>صف لكل إعداد يضم المصفوفة المتقاطعة والأخطاء بالنسبة المئوية.</translation>
         </message>
     </context>
     <context>
@@ -2095,6 +2267,18 @@
         <message>
             <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
             <translation>يجب أن تكون قيمتا NOISE_RADIUS وNOISE_THRESHOLD &gt; 0 م (مثلاً 5 و1)، أو أوقف الفلترة المسبقة NOISE.</translation>
+        </message>
+        <message>
+            <source>All returns: every return is classified and is a neighbour (the forest study). Last returns only: first and intermediate returns get class 1; files without return numbers count every point as a last return.</source>
+            <translation>كل الانعكاسات: يُصنَّف كل انعكاس ويُعدّ جارًا (دراسة الغابة). الانعكاسات الأخيرة فقط: تأخذ الانعكاسات الأولى والوسيطة الفئة 1، والملفات التي لا تحمل أرقام انعكاس تَعدّ كل نقطة انعكاسًا أخيرًا.</translation>
+        </message>
+        <message>
+            <source>Points far below their neighbours (multipath) get class 7 and take no part: one stray low point would reject every ground point around it.</source>
+            <translation>النقاط الواقعة أدنى بكثير من جيرانها (تعدد المسارات) تأخذ الفئة 7 ولا تشارك: فنقطة منخفضة شاردة واحدة كانت سترفض كل نقاط الأرض حولها.</translation>
+        </message>
+        <message>
+            <source>Terrain-adaptive (this toolbox's extension) applies the rule to heights above a smooth low terrain trend, so natural slopes steeper than θ are kept (ISPRS samp11: total error 21.0 % → 16.4 %); use a lower θ, about 30–35°, in this mode.</source>
+            <translation>النمط المتكيّف مع التضاريس (امتداد من هذه الأداة) يطبّق القاعدة على الارتفاعات فوق اتجاه تضاريسي منخفض وأملس، فتُحفظ المنحدرات الطبيعية الأشد من θ ‏(ISPRS samp11: الخطأ الكلي 21.0 % ← 16.4 %)؛ استخدم θ أصغر، نحو 30–35°، في هذا النمط.</translation>
         </message>
     </context>
 </TS>

@@ -123,10 +123,6 @@
             <translation>ساختمان‌ها,ردپا,بام‌ها,lod1,استخراج,ارتفاع,حجم,طبقه‌ها,کلاس ۶,لیدار</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Extracts buildings from a ground-classified LAS/LAZ cloud: points more than the minimum height above a TIN of the ground points are fitted with local planes; neighbours whose normals agree within the maximum angle grow into roof patches; patches of at least the minimum patch area become footprints with height (top of roof − ground at the outline), area, volume, storeys (height / 3 m) and roof type (flat / pitched). Trees are rejected because their points are not planar.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz with ground in class 2 (run a ground filter first), projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum height&lt;/b&gt; (MIN_HEIGHT, m, default 2; the spec gives 1.5–2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum normal angle&lt;/b&gt; (MAX_ANGLE, degrees, default 20).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum roof patch area&lt;/b&gt; (MIN_PATCH_AREA, m², default 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum building area&lt;/b&gt; (MIN_AREA, m², default 15).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 0.5): footprint raster.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Footprints&lt;/b&gt; (OUTPUT, GeoPackage polygons): id, height_m, area_m2, volume_m3, storeys, roof_type, ground_z, roof_z.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified cloud&lt;/b&gt; (OUTPUT_CLOUD, optional LAS/LAZ): the input with roof points set to class 6, every other attribute kept.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_BUILDINGS, TOTAL_AREA (m²), TOTAL_VOLUME (m³).&lt;/p&gt;</source>
-            <translation>&lt;p&gt;ساختمان‌ها را از ابر LAS/LAZ با زمین طبقه‌بندی‌شده استخراج می‌کند: به نقاطی که بیش از کمینهٔ ارتفاع بالای TIN نقاط زمین‌اند صفحه‌های محلی برازش داده می‌شود؛ نقاط همسایه‌ای که بردار عمودشان در حد بیشینهٔ زاویه هم‌جهت است به وصله‌های بام رشد می‌کنند؛ وصله‌هایی که دست‌کم کمینهٔ مساحت را دارند ردپا می‌شوند با ارتفاع (بالای بام − زمین کنار دیوار)، مساحت، حجم، طبقه‌ها (ارتفاع / ۳ متر) و نوع بام (تخت / شیب‌دار). درختان کنار گذاشته می‌شوند چون نقاطشان صفحه‌ای نیست.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg OUTPUT_CLOUD=classified.laz.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): فایل ‎.las/.laz با زمین در کلاس ۲ (نخست یک فیلتر زمین اجرا کنید)، در سیستم تصویر مسطح بر حسب متر.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های زمین&lt;/b&gt; (GROUND_CLASSES، پیش‌فرض &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کمینهٔ ارتفاع&lt;/b&gt; (MIN_HEIGHT، متر، پیش‌فرض ۲؛ مشخصات ۱٫۵ تا ۲ را می‌دهد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بیشینهٔ زاویهٔ بردار عمود&lt;/b&gt; (MAX_ANGLE، درجه، پیش‌فرض ۲۰).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کمینهٔ مساحت وصلهٔ بام&lt;/b&gt; (MIN_PATCH_AREA، مترمربع، پیش‌فرض ۱۵).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کمینهٔ مساحت ساختمان&lt;/b&gt; (MIN_AREA، مترمربع، پیش‌فرض ۱۵).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض ۰٫۵): رستر ردپا.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ردپاها&lt;/b&gt; (OUTPUT، چندضلعی GeoPackage): id، height_m، area_m2، volume_m3، storeys، roof_type، ground_z، roof_z.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر طبقه‌بندی‌شده&lt;/b&gt; (OUTPUT_CLOUD، LAS/LAZ اختیاری): ورودی با نقاط بام در کلاس ۶ و همهٔ ویژگی‌های دیگر دست‌نخورده.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: N_BUILDINGS، TOTAL_AREA (مترمربع)، TOTAL_VOLUME (مترمکعب).&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Point cloud (LAS/LAZ)</source>
             <translation>ابر نقاط (LAS/LAZ)</translation>
         </message>
@@ -170,6 +166,22 @@
             <source>Building footprints report</source>
             <translation>گزارش ردپای ساختمان‌ها</translation>
         </message>
+        <message>
+            <source>Extracts buildings from a ground-classified LAS/LAZ cloud: points above the ground TIN are fitted with local planes, and neighbours with agreeing normals grow into roof patches. Patches large enough become footprints with height, area, volume, storeys and roof type; trees are rejected because their points are not planar.</source>
+            <translation>ساختمان‌ها را از یک ابر LAS/LAZ با زمینِ کلاس‌بندی‌شده استخراج می‌کند: بر نقاطِ بالای TIN زمین صفحه‌های محلی برازش می‌شود و همسایه‌هایی با بردارهای قائم هم‌سو به وصله‌های بام رشد می‌کنند. وصله‌های به‌اندازهٔ کافی بزرگ به ردپای ساختمان با ارتفاع، مساحت، حجم، تعداد طبقه و نوع بام تبدیل می‌شوند؛ درختان رد می‌شوند چون نقاطشان صفحه‌ای نیست.</translation>
+        </message>
+        <message>
+            <source>Ground in class 2 (run a ground filter first), in a projected CRS (metres).</source>
+            <translation>زمین در کلاس 2 (نخست یک فیلتر زمین اجرا کنید)، در سامانهٔ مختصات تصویری (متر).</translation>
+        </message>
+        <message>
+            <source>The specification gives 1.5–2 m.</source>
+            <translation>مشخصات فنی 1.5–2 m را می‌دهد.</translation>
+        </message>
+        <message>
+            <source>GeoPackage polygons with height, area, volume, storeys, roof type, ground and roof heights.</source>
+            <translation>چندضلعی‌های GeoPackage با ارتفاع، مساحت، حجم، تعداد طبقه، نوع بام و ارتفاع زمین و بام.</translation>
+        </message>
     </context>
     <context>
         <name>CatalogAlgorithm</name>
@@ -212,10 +224,6 @@
         <message>
             <source>TIN</source>
             <translation>TIN</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Classifies ground and builds a DTM for every tile of a LiDAR project, each tile read with a buffer of points from its neighbours so that results have no seams at tile edges; tiles run in parallel on Dask, locally or on a cluster. Example: INPUT = a folder of 1 km LAZ tiles, BUFFER = 100 m, CELL_SIZE = 1 m gives classified tiles, one DTM GeoTIFF per tile and a VRT mosaic.&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Tiles&lt;/b&gt; (INPUT): a folder of .las/.laz files, a .vpc virtual point cloud, or files separated by ';'. All tiles must share one CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground filter&lt;/b&gt; (GROUND_FILTER, default the recommended one): 0 keeps the classes already in the files.&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM method&lt;/b&gt; (DTM_METHOD, default IDW) and &lt;b&gt;cell size&lt;/b&gt; (CELL_SIZE, m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Buffer&lt;/b&gt; (BUFFER, m, default 100): must exceed the filter's reach (LSQ tile size × 2, slope radius) and the DTM search distance.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Workers&lt;/b&gt; (WORKERS, default 0 = one per core) and &lt;b&gt;Dask scheduler&lt;/b&gt; (SCHEDULER, e.g. tcp://host:8786; empty = a local cluster).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output folder&lt;/b&gt; (OUTPUT_FOLDER; must not hold the input tiles): &amp;lt;tile&amp;gt;_classified, &amp;lt;tile&amp;gt;_dtm.tif, dtm.vrt, optionally one Cloud-Optimized GeoTIFF (COG), and the HTML report (OUTPUT_HTML) with a map of the tiles by status and time and points per second per worker. A rerun skips finished tiles; cancel keeps finished tiles.&lt;/li&gt;&lt;/ul&gt;</source>
-            <translation>&lt;p&gt;نقاط زمین را طبقه‌بندی می‌کند و برای هر کاشی یک پروژهٔ لیدار مدل رقومی زمین می‌سازد؛ هر کاشی همراه با حاشیه‌ای از نقاط همسایگانش خوانده می‌شود تا در لبهٔ کاشی‌ها درزی نماند؛ کاشی‌ها به‌صورت موازی روی Dask، محلی یا روی یک خوشه، پردازش می‌شوند. مثال: INPUT = پوشه‌ای از کاشی‌های LAZ یک‌کیلومتری، BUFFER = ۱۰۰ متر، CELL_SIZE = ۱ متر، کاشی‌های طبقه‌بندی‌شده، یک GeoTIFF مدل زمین برای هر کاشی و یک موزاییک VRT می‌دهد.&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;کاشی‌ها&lt;/b&gt; (INPUT): پوشه‌ای از فایل‌های ‎.las/.laz، یک ابر نقاط مجازی ‎.vpc یا فایل‌هایی جداشده با ';'. همهٔ کاشی‌ها باید یک سیستم مختصات داشته باشند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;فیلتر زمین&lt;/b&gt; (GROUND_FILTER، پیش‌فرض: فیلتر توصیه‌شده): 0 کلاس‌های موجود در فایل‌ها را نگه می‌دارد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;روش مدل زمین&lt;/b&gt; (DTM_METHOD، پیش‌فرض IDW) و &lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض ۱).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حاشیه&lt;/b&gt; (BUFFER، متر، پیش‌فرض ۱۰۰): باید از برد فیلتر (دو برابر اندازهٔ کاشی کمترین مربعات، شعاع شیب) و فاصلهٔ جست‌وجوی مدل بیشتر باشد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;پردازه‌های کارگر&lt;/b&gt; (WORKERS، پیش‌فرض 0 = یکی برای هر هسته) و &lt;b&gt;زمان‌بند Dask&lt;/b&gt; (SCHEDULER، مثلاً tcp://host:8786؛ خالی = خوشهٔ محلی).&lt;/li&gt;&lt;li&gt;&lt;b&gt;پوشهٔ خروجی&lt;/b&gt; (OUTPUT_FOLDER؛ نباید کاشی‌های ورودی را در خود داشته باشد): &amp;lt;tile&amp;gt;_classified، &amp;lt;tile&amp;gt;_dtm.tif، dtm.vrt، در صورت نیاز یک GeoTIFF بهینه برای ابر (COG) و گزارش HTML ‏(OUTPUT_HTML) با نقشهٔ کاشی‌ها بر پایهٔ وضعیت و زمان و تعداد نقطه در ثانیه برای هر کارگر. اجرای دوباره کاشی‌های تمام‌شده را رد می‌کند؛ لغو، کاشی‌های تمام‌شده را نگه می‌دارد.&lt;/li&gt;&lt;/ul&gt;</translation>
         </message>
         <message>
             <source>Tiles: folder, .vpc or files separated by ';'</source>
@@ -276,6 +284,34 @@
         <message>
             <source>Tile catalog report</source>
             <translation>گزارش فهرست کاشی‌ها</translation>
+        </message>
+        <message>
+            <source>Classifies ground and builds a DTM for every tile of a LiDAR project, each tile read with a buffer of its neighbours' points so that results have no seams. Tiles run in parallel on Dask, locally or on a cluster; a rerun skips finished tiles.</source>
+            <translation>برای هر کاشی یک پروژهٔ LiDAR زمین را کلاس‌بندی و DTM می‌سازد؛ هر کاشی با حائلی از نقاط همسایه‌هایش خوانده می‌شود تا نتیجه درز نداشته باشد. کاشی‌ها به‌صورت موازی روی Dask، محلی یا روی خوشه، اجرا می‌شوند؛ اجرای دوباره کاشی‌های تمام‌شده را رد می‌کند.</translation>
+        </message>
+        <message>
+            <source>All tiles must share one CRS.</source>
+            <translation>همهٔ کاشی‌ها باید یک سامانهٔ مختصات داشته باشند.</translation>
+        </message>
+        <message>
+            <source>The first choice keeps the classes already in the files.</source>
+            <translation>گزینهٔ نخست کلاس‌های موجود در فایل‌ها را نگه می‌دارد.</translation>
+        </message>
+        <message>
+            <source>Must exceed the filter's reach (twice the LSQ tile size, the slope radius) and the DTM search distance.</source>
+            <translation>باید از بُرد فیلتر (دو برابر اندازهٔ کاشی LSQ، شعاع فیلتر شیب) و فاصلهٔ جست‌وجوی DTM بیشتر باشد.</translation>
+        </message>
+        <message>
+            <source>e.g. tcp://host:8786.</source>
+            <translation>مانند tcp://host:8786.</translation>
+        </message>
+        <message>
+            <source>Must not hold the input tiles; receives the classified tiles, one DTM per tile and a VRT mosaic.</source>
+            <translation>نباید کاشی‌های ورودی را در خود داشته باشد؛ کاشی‌های کلاس‌بندی‌شده، یک DTM برای هر کاشی و یک موزاییک VRT در آن نوشته می‌شود.</translation>
+        </message>
+        <message>
+            <source>A map of the tiles by status, and time and points per second per worker.</source>
+            <translation>نقشهٔ کاشی‌ها بر اساس وضعیت، و زمان و نقطه در ثانیه برای هر کارگر.</translation>
         </message>
     </context>
     <context>
@@ -499,10 +535,6 @@
             <translation>تغییر,تفاضل,dod,خاک‌برداری,خاک‌ریزی,حجم,دوره‌ها,حد آشکارسازی,پایش,لیدار,dtm,dsm</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Subtracts an earlier surface from a later one (two DTM/DSM rasters on one grid, or two LAS/LAZ clouds gridded by TIN on a common grid) and keeps the change beyond the level of detection LoD95 = 1.96·√(σ₁² + σ₂²), σ being each epoch's vertical accuracy (e.g. the RMSE of the DTM accuracy tool). Significant cells form cut and fill polygons with area, mean change and volume.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Before&lt;/b&gt; (INPUT) and &lt;b&gt;After&lt;/b&gt; (INPUT_AFTER): two GeoTIFFs on the same grid, or two LAS/LAZ clouds in one CRS.&lt;/li&gt;&lt;li&gt;&lt;b&gt;σ₁, σ₂&lt;/b&gt; (SIGMA1, SIGMA2, m, default 0.1): vertical accuracy of each epoch.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classes&lt;/b&gt; (CLASSES, clouds only, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, clouds only, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum area&lt;/b&gt; (MIN_AREA, m², default 0 = eight cells): smaller regions are dropped (noise alone exceeds the LoD in 5 % of cells).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Difference&lt;/b&gt; (OUTPUT): GeoTIFF after − before (m).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Change polygons&lt;/b&gt; (OUTPUT_POLYGONS, GeoPackage): id, kind (cut / fill), area_m2, mean_change_m, volume_m3.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: LOD, FILL_VOLUME, CUT_VOLUME (m³), N_REGIONS.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;سطح پیشین را از سطح پسین کم می‌کند (دو رستر DTM/DSM روی یک شبکه، یا دو ابر LAS/LAZ که با TIN روی شبکه‌ای مشترک شبکه‌بندی می‌شوند) و تغییری را نگه می‌دارد که از حد آشکارسازی LoD95 = 1.96·√(σ₁² + σ₂²) بیشتر است؛ σ دقت ارتفاعی هر دوره است (مثلاً RMSE ابزار دقت مدل رقومی زمین). سلول‌های معنادار چندضلعی‌های خاک‌برداری و خاک‌ریزی با مساحت، میانگین تغییر و حجم می‌سازند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=dtm_2021.tif INPUT_AFTER=dtm_2024.tif SIGMA1=0.08 SIGMA2=0.06.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;پیش از&lt;/b&gt; (INPUT) و &lt;b&gt;پس از&lt;/b&gt; (INPUT_AFTER): دو GeoTIFF روی یک شبکه، یا دو ابر LAS/LAZ در یک سیستم مختصات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;σ₁ و σ₂&lt;/b&gt; (SIGMA1، SIGMA2، متر، پیش‌فرض 0.1): دقت ارتفاعی هر دوره.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌ها&lt;/b&gt; (CLASSES، فقط برای ابرها، پیش‌فرض &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، فقط برای ابرها، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کمینهٔ مساحت&lt;/b&gt; (MIN_AREA، مترمربع، پیش‌فرض 0 = هشت سلول): نواحی کوچک‌تر حذف می‌شوند (نویز به‌تنهایی در ۵ درصد سلول‌ها از حد آشکارسازی می‌گذرد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تفاضل&lt;/b&gt; (OUTPUT): GeoTIFF پس از − پیش از (متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;چندضلعی‌های تغییر&lt;/b&gt; (OUTPUT_POLYGONS، GeoPackage): id، kind (خاک‌برداری / خاک‌ریزی)، area_m2، mean_change_m، volume_m3.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: LOD، FILL_VOLUME، CUT_VOLUME (مترمکعب)، N_REGIONS.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Before (raster or point cloud)</source>
             <translation>پیش از (رستر یا ابر نقاط)</translation>
         </message>
@@ -545,6 +577,30 @@
         <message>
             <source>Elevation change report</source>
             <translation>گزارش تغییر ارتفاع</translation>
+        </message>
+        <message>
+            <source>Subtracts an earlier surface from a later one (two rasters on one grid, or two LAS/LAZ clouds gridded by TIN) and keeps the change beyond the level of detection LoD95 = 1.96·√(σ₁² + σ₂²). Significant cells form cut and fill polygons with area, mean change and volume.</source>
+            <translation>سطح پیشین را از سطح پسین کم می‌کند (دو رستر روی یک شبکه، یا دو ابر LAS/LAZ که با TIN شبکه‌بندی شده‌اند) و تغییرِ فراتر از حد آشکارسازی LoD95 = 1.96·√(σ₁² + σ₂²) را نگه می‌دارد. سلول‌های معنادار چندضلعی‌های خاک‌برداری و خاک‌ریزی با مساحت، میانگین تغییر و حجم می‌سازند.</translation>
+        </message>
+        <message>
+            <source>A GeoTIFF, or a LAS/LAZ cloud in the same CRS as the other epoch.</source>
+            <translation>یک GeoTIFF، یا یک ابر LAS/LAZ در همان سامانهٔ مختصاتِ دورهٔ دیگر.</translation>
+        </message>
+        <message>
+            <source>The vertical accuracy of the epoch, e.g. the RMSE of the DTM accuracy tool.</source>
+            <translation>دقت ارتفاعی دوره، مانند RMSE ابزار دقت DTM.</translation>
+        </message>
+        <message>
+            <source>Smaller regions are dropped: noise alone exceeds the LoD in 5 % of cells.</source>
+            <translation>ناحیه‌های کوچک‌تر حذف می‌شوند: نوفه به‌تنهایی در 5 % سلول‌ها از حد آشکارسازی فراتر می‌رود.</translation>
+        </message>
+        <message>
+            <source>GeoTIFF of after − before (m).</source>
+            <translation>فایل GeoTIFF پسین − پیشین (m).</translation>
+        </message>
+        <message>
+            <source>GeoPackage with kind (cut / fill), area, mean change and volume.</source>
+            <translation>فایل GeoPackage با نوع (خاک‌برداری / خاک‌ریزی)، مساحت، میانگین تغییر و حجم.</translation>
         </message>
     </context>
     <context>
@@ -639,10 +695,6 @@
         <message>
             <source>&lt;p&gt;&lt;b&gt;Criteria&lt;/b&gt; (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band 4·GR … 6·GR for RMS_T; per-point limit 0.25 mm·S = 5·GR; ≥ 68 % (strict 90 %) of points within RMS_T; no directional bias (quadrant sign balance, inner vs edge radial residuals, residual-vector plot). Also: independent check points (role 'check', never fitted), leave-one-out residuals, orders 1–3 side by side with a recommended order (never one whose redundancy n − N is below max(2, ⌈N/2⌉)) and suggested points to drop. Residuals are predicted − given, in map units and pixels.&lt;/p&gt;</source>
             <translation>&lt;p&gt;&lt;b&gt;معیارها&lt;/b&gt; (مجلهٔ علوم مهندسی دانشگاه تشرین 38(2)، 2016): RMS_i هر نقطه و سهم آن C_i = RMS_i/RMS_T؛ RMS_x، RMS_y و RMS_T با مقسوم‌علیه n (و، با برچسب جداگانه، n − N مانند Georeferencer در QGIS)؛ مقیاس نقشه S = 20000·GR و بازهٔ تلورانس 4·GR … 6·GR برای RMS_T؛ حد مجاز هر نقطه 0.25 mm·S = 5·GR؛ ≥ 68 % (در حالت سخت‌گیرانه 90 %) نقاط در محدودهٔ RMS_T؛ نبودِ سوگیری جهت‌دار (توازن علامت‌ها در ربع‌ها، باقی‌مانده‌های شعاعی نقاط درونی در برابر نقاط لبه، نمودار بردارهای باقی‌مانده). همچنین: نقاط چک مستقل (نقش 'check'، هرگز در برازش وارد نمی‌شوند)، باقی‌مانده‌های حذف‌یکی، درجه‌های 1–3 در کنار هم با یک درجهٔ پیشنهادی (هرگز درجه‌ای که افزونگی n − N آن کمتر از max(2, ⌈N/2⌉) باشد) و نقاط پیشنهادی برای حذف. باقی‌مانده‌ها برابر مقدار پیش‌بینی‌شده − مقدار داده‌شده‌اند، به واحد نقشه و پیکسل.&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;li&gt;&lt;b&gt;Returns filtered&lt;/b&gt; (RETURNS, default 0 = all): 0 all returns are classified and serve as neighbours (the forest study); 1 last returns only: only last (or single) returns are classified and only they may reject others; first and intermediate returns of multi-return pulses get class 1. Files without return numbers (e.g. the ISPRS samples) count every point as a last return.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours (multipath) get class 7 and take no part in the filter — one stray low point would reject every ground point within r. Advanced: NOISE_RADIUS (m, default 5) and NOISE_THRESHOLD (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default 0): 0 exact Vosselman rule; 1 terrain-adaptive (&lt;i&gt;this toolbox's extension&lt;/i&gt;): the rule is applied to heights above a smooth low terrain trend (minimum grid of TREND_CELL m, opening and mean filter of TREND_WINDOW m, defaults 10 and 60), so natural slopes steeper than θ are not rejected (ISPRS samp11, steep: total error 21.0 % → 16.4 % at the defaults). Because the terrain slope is removed first, lower θ (about 30–35°) usually works best in this mode.&lt;/li&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;بازگشت‌های فیلترشونده&lt;/b&gt; (RETURNS، پیش‌فرض 0 = همه): 0 همهٔ بازگشت‌ها طبقه‌بندی می‌شوند و به‌عنوان همسایه به کار می‌روند (مطالعهٔ جنگل)؛ 1 فقط بازگشت‌های آخر: فقط بازگشت‌های آخر (یا تکی) طبقه‌بندی می‌شوند و فقط آن‌ها می‌توانند نقاط دیگر را رد کنند؛ بازگشت‌های اول و میانیِ پالس‌های چندبازگشتی کلاس 1 می‌گیرند. در پرونده‌های بدون شمارهٔ بازگشت (مثلاً نمونه‌های ISPRS) هر نقطه بازگشت آخر به شمار می‌آید.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حذف نقاط پرت پایین در آغاز&lt;/b&gt; (NOISE، پیش‌فرض: بله): نقاطی که بسیار پایین‌تر از همسایه‌های خود هستند (چندمسیری) کلاس 7 می‌گیرند و در فیلتر شرکت نمی‌کنند — یک نقطهٔ پایینِ سرگردان به‌تنهایی همهٔ نقاط زمینی درون r را رد می‌کرد. پیشرفته: NOISE_RADIUS (متر، پیش‌فرض 5) و NOISE_THRESHOLD (متر، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حالت&lt;/b&gt; (MODE، پیش‌فرض 0): 0 قاعدهٔ دقیق Vosselman؛ 1 سازگار با ناهمواری زمین (&lt;i&gt;افزودهٔ این جعبه‌ابزار&lt;/i&gt;): قاعده روی ارتفاع‌ها نسبت به یک روند هموار و پایینِ زمین اعمال می‌شود (شبکهٔ کمینه با سلول TREND_CELL متر، بازشایی (opening) و فیلتر میانگین با پنجرهٔ TREND_WINDOW متر، پیش‌فرض‌ها 10 و 60)، پس شیب‌های طبیعیِ تندتر از θ رد نمی‌شوند (ISPRS samp11، پرشیب: خطای کل 21.0 % → 16.4 % با پیش‌فرض‌ها). چون شیب زمین از پیش حذف می‌شود، در این حالت θ کمتر (حدود 30–35°) معمولاً بهترین نتیجه را می‌دهد.&lt;/li&gt;</translation>
         </message>
         <message>
             <source>Remove low outliers first (class 7)</source>
@@ -831,10 +883,6 @@
             <translation>لایدار,زمین,فیلتر,دقت,نوع اول,نوع دوم,خطای کل,کاپا,isprs,مرجع,ماتریس درهم‌ریختگی</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Compares a filtered point cloud with reference labels, with the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix a (ground kept), b (ground rejected), c (object accepted), d (object rejected), Type I = b/(a+b), Type II = c/(c+d), total = (b+c)/n and Cohen's kappa.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (the ISPRS reference sample, class 2 = ground) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Filtered point cloud&lt;/b&gt; (INPUT, LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Class dimension of the filtered cloud&lt;/b&gt; (FIELD, default classification) and its &lt;b&gt;ground classes&lt;/b&gt; (GROUND_CLASSES, default 2; a list such as 2,8 is accepted). Every other class (1, 7 noise, 0...) counts as object.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference point cloud&lt;/b&gt; (REFERENCE, optional): the same points in the same order (checked: equal count and coordinates). When empty, the reference labels are read from another dimension of INPUT.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference class dimension&lt;/b&gt; (REFERENCE_FIELD, default classification; e.g. user_data or an extra dimension when there is no reference cloud) and its &lt;b&gt;ground classes&lt;/b&gt; (REFERENCE_GROUND_CLASSES, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): the matrix, the errors, and the reference labels of every filtered class.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Per-point error layer&lt;/b&gt; (ERROR_OUTPUT, optional LAS/LAZ): a copy of INPUT, every attribute unchanged except &lt;i&gt;user_data&lt;/i&gt; = 0 correct, 1 Type I (ground rejected), 2 Type II (object accepted); style the point cloud layer by user_data to map where the filter fails.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Outputs A, B, C, D, N, TYPE1, TYPE2, TOTAL and KAPPA are numbers for the graphical modeler.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;یک ابر نقاط فیلترشده را با برچسب‌های مرجع مقایسه می‌کند، با سنجه‌های آزمون فیلترهای ISPRS (Sithole &amp; Vosselman 2004): ماتریس متقاطع a (زمینیِ نگه‌داشته)، b (زمینیِ ردشده)، c (عارضهٔ پذیرفته‌شده)، d (عارضهٔ ردشده)، نوع اول = b/(a+b)، نوع دوم = c/(c+d)، کل = (b+c)/n و ضریب کاپای کوهن.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=classified.laz REFERENCE=samp54.laz (نمونهٔ مرجع ISPRS، کلاس 2 = زمین) OUTPUT_HTML=accuracy.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط فیلترشده&lt;/b&gt; (INPUT، LAS/LAZ).&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد کلاس ابر فیلترشده&lt;/b&gt; (FIELD، پیش‌فرض classification) و &lt;b&gt;کلاس‌های زمینی&lt;/b&gt; آن (GROUND_CLASSES، پیش‌فرض 2؛ فهرستی مانند 2,8 هم پذیرفته می‌شود). هر کلاس دیگر (1، 7 نویز، 0...) عارضه به شمار می‌آید.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر نقاط مرجع&lt;/b&gt; (REFERENCE، اختیاری): همان نقاط با همان ترتیب (بررسی می‌شود: تعداد و مختصات برابر). اگر خالی باشد، برچسب‌های مرجع از بُعد دیگری از INPUT خوانده می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بُعد کلاس مرجع&lt;/b&gt; (REFERENCE_FIELD، پیش‌فرض classification؛ مثلاً user_data یا یک بُعد اضافی وقتی ابر مرجعی در کار نیست) و &lt;b&gt;کلاس‌های زمینی&lt;/b&gt; آن (REFERENCE_GROUND_CLASSES، پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): ماتریس، خطاها و برچسب‌های مرجعِ هر کلاس فیلترشده.&lt;/li&gt;&lt;li&gt;&lt;b&gt;لایهٔ خطای نقطه‌به‌نقطه&lt;/b&gt; (ERROR_OUTPUT، LAS/LAZ اختیاری): رونوشتی از INPUT که همهٔ ویژگی‌ها در آن بدون تغییر است جز &lt;i&gt;user_data&lt;/i&gt; = 0 درست، 1 نوع اول (زمینیِ ردشده)، 2 نوع دوم (عارضهٔ پذیرفته‌شده)؛ لایهٔ ابر نقاط را بر پایهٔ user_data نمادپردازی کنید تا ببینید فیلتر کجا خطا می‌کند.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;خروجی‌های A، B، C، D، N، TYPE1، TYPE2، TOTAL و KAPPA اعدادی برای طراح گرافیکی مدل هستند.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Filtered point cloud (LAS/LAZ)</source>
             <translation>ابر نقاط فیلترشده (LAS/LAZ)</translation>
         </message>
@@ -873,6 +921,26 @@
         <message>
             <source>Ground filter accuracy report</source>
             <translation>گزارش دقت فیلتر زمین</translation>
+        </message>
+        <message>
+            <source>Compares a filtered point cloud with reference labels using the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix, Type I = b/(a+b), Type II = c/(c+d), total error and Cohen's kappa. An optional per-point error cloud shows where the filter fails.</source>
+            <translation>ابر نقاط فیلترشده را با برچسب‌های مرجع و با سنجه‌های آزمون فیلتر ISPRS ‏(Sithole &amp;amp; Vosselman 2004) مقایسه می‌کند: ماتریس متقاطع، نوع اول = b/(a+b)، نوع دوم = c/(c+d)، خطای کل و ضریب کاپای کوهن. ابر خطای اختیاریِ نقطه‌به‌نقطه نشان می‌دهد فیلتر کجا شکست می‌خورد.</translation>
+        </message>
+        <message>
+            <source>A list such as 2,8 is accepted; every other class counts as an object.</source>
+            <translation>فهرستی مانند 2,8 پذیرفته است؛ هر کلاس دیگر عارضه به شمار می‌آید.</translation>
+        </message>
+        <message>
+            <source>Checked: equal count and coordinates. When empty, the reference labels are read from another dimension of the filtered cloud.</source>
+            <translation>برابری شمار و مختصات بررسی می‌شود. اگر خالی باشد، برچسب‌های مرجع از بُعد دیگری از ابر فیلترشده خوانده می‌شوند.</translation>
+        </message>
+        <message>
+            <source>E.g. user_data or an extra dimension when there is no reference cloud.</source>
+            <translation>مانند user_data یا یک بُعد اضافی وقتی ابر مرجع نیست.</translation>
+        </message>
+        <message>
+            <source>A copy of the filtered cloud; style it by user_data to map the errors.</source>
+            <translation>رونوشتی از ابر فیلترشده؛ آن را بر اساس user_data نمادپردازی کنید تا خطاها روی نقشه دیده شوند.</translation>
         </message>
     </context>
     <context>
@@ -1270,10 +1338,6 @@
             <translation>تراکم,کیفیت,qa,lasinfo,شکاف‌ها,تکراری‌ها,نویز,زاویهٔ اسکن,بازتاب‌ها,توصیه,لیدار</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Checks a LAS/LAZ cloud before processing: density rasters of all returns, last returns and ground points, cells with returns but no ground (gaps), histograms of returns and classes, duplicate points, the share of noise (classes 7, 18) and the scan-angle range. It then states which settings the density supports: the ground filter window (1–2 pts/m² → 2 m), the DTM cell size, LOD1 only below 1 pt/m² (about 0.6 pts/m² in the ELiT study), and the radius and tile of our slope-based and LSQ filters.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las/.laz in a projected CRS (metres); a cloud in degrees is refused.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell size&lt;/b&gt; (CELL_SIZE, m, default 5, &amp;gt; 0): cell of the density rasters.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Density rasters&lt;/b&gt; (OUTPUT): GeoTIFF with four bands: all returns, last returns, ground (pts/m²), gap (1/0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML report with maps and advice.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: DENSITY, GROUND_DENSITY (pts/m²), GAP_SHARE, DUPLICATES, NOISE_SHARE, GROUND_WINDOW (m), DTM_CELL (m).&lt;/p&gt;</source>
-            <translation>&lt;p&gt;یک ابر LAS/LAZ را پیش از پردازش بررسی می‌کند: رسترهای تراکم همهٔ بازتاب‌ها، آخرین بازتاب‌ها و نقاط زمین، سلول‌های دارای بازتاب ولی بدون زمین (شکاف‌ها)، هیستوگرام بازتاب‌ها و کلاس‌ها، نقاط تکراری، سهم نویز (کلاس‌های ۷ و ۱۸) و بازهٔ زاویهٔ اسکن. سپس می‌گوید تراکم داده چه تنظیماتی را پشتیبانی می‌کند: پنجرهٔ فیلتر زمین (۱ تا ۲ نقطه بر مترمربع ← ۲ متر)، اندازهٔ سلول مدل رقومی زمین، فقط LOD1 زیر ۱ نقطه بر مترمربع (حدود ۰٫۶ در مطالعهٔ ELiT)، و شعاع و کاشی فیلترهای شیب‌مبنا و LSQ ما.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz CELL_SIZE=5 OUTPUT=density.tif OUTPUT_HTML=qa.html.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): فایل ‎.las/.laz در سیستم تصویر مسطح (متر)؛ ابر بر حسب درجه پذیرفته نمی‌شود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول&lt;/b&gt; (CELL_SIZE، متر، پیش‌فرض ۵، &amp;gt; 0): سلول رسترهای تراکم.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های زمین&lt;/b&gt; (GROUND_CLASSES، پیش‌فرض &lt;code&gt;2&lt;/code&gt;).&lt;/li&gt;&lt;li&gt;&lt;b&gt;رسترهای تراکم&lt;/b&gt; (OUTPUT): GeoTIFF با چهار باند: همهٔ بازتاب‌ها، آخرین بازتاب‌ها، زمین (نقطه بر مترمربع)، شکاف (1/0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): گزارش HTML با نقشه‌ها و توصیه‌ها.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: DENSITY، GROUND_DENSITY (نقطه بر مترمربع)، GAP_SHARE، DUPLICATES، NOISE_SHARE، GROUND_WINDOW (متر)، DTM_CELL (متر).&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Point cloud (LAS/LAZ)</source>
             <translation>ابر نقاط (LAS/LAZ)</translation>
         </message>
@@ -1297,6 +1361,22 @@
             <source>Point density and quality report</source>
             <translation>گزارش تراکم و کیفیت نقاط</translation>
         </message>
+        <message>
+            <source>Checks a LAS/LAZ cloud before processing: density of all, last and ground returns, gaps without ground, duplicates, noise share and scan angles. It then states which settings the density supports: ground filter window, DTM cell size, LOD1 only below 1 pt/m², and the radius and tile of the slope-based and LSQ filters.</source>
+            <translation>یک ابر LAS/LAZ را پیش از پردازش بررسی می‌کند: تراکم همهٔ بازگشت‌ها، بازگشت‌های آخر و بازگشت‌های زمین، شکاف‌های بی‌زمین، نقاط تکراری، سهم نوفه و زاویه‌های اسکن. سپس می‌گوید تراکم از چه تنظیم‌هایی پشتیبانی می‌کند: پنجرهٔ فیلتر زمین، اندازهٔ سلول DTM، LOD1 فقط زیر 1 pt/m²، و شعاع فیلتر شیب و کاشی فیلتر LSQ.</translation>
+        </message>
+        <message>
+            <source>In a projected CRS (metres); a cloud in degrees is refused.</source>
+            <translation>در سامانهٔ مختصات تصویری (متر)؛ ابر بر حسب درجه پذیرفته نمی‌شود.</translation>
+        </message>
+        <message>
+            <source>GeoTIFF with four bands: all returns, last returns, ground (pts/m²) and gap (1/0).</source>
+            <translation>فایل GeoTIFF با چهار باند: همهٔ بازگشت‌ها، بازگشت‌های آخر، زمین (pts/m²) و شکاف (1/0).</translation>
+        </message>
+        <message>
+            <source>Maps, histograms and the advice.</source>
+            <translation>نقشه‌ها، بافت‌نگارها و توصیه‌ها.</translation>
+        </message>
     </context>
     <context>
         <name>LidarToDtmAlgorithm</name>
@@ -1307,10 +1387,6 @@
         <message>
             <source>lidar,ground,filter,dtm,dem,idw,accuracy,rmse,check points,chain,all-or-nothing</source>
             <translation>لیدار,زمین,فیلتر,مدل رقومی زمین,dem,idw,دقت,rmse,نقاط کنترل,زنجیره,همه یا هیچ</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Classifies the ground of a LiDAR point cloud, interpolates a DTM from the ground points and measures its accuracy against check points, in one step. It writes all its outputs or none: when any step fails or is cancelled, no classified cloud, DTM or report is left behind.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html → the classified cloud, the DTM and the RMSE.&lt;/p&gt;&lt;p&gt;The steps are the recommended ground filter (the improved least-squares filter where the recommended one is not installed), the IDW DTM (power 3, 12 neighbours by default: the seed paper's best setting) and the DTM accuracy; the results equal those of the three algorithms run one after another. Before anything is written the CRS, the check points (no duplicates, inside the cloud's extent) and every output path are checked. The graphical model of the same name is its editable counterpart, without this guarantee.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt;: .las or .laz in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (default yes), with its search cell (m, default 5) and depth (m, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;DTM cell size&lt;/b&gt; (m, default 1), &lt;b&gt;IDW power&lt;/b&gt; (default 3), &lt;b&gt;neighbours&lt;/b&gt; (default 12), &lt;b&gt;fill data gaps&lt;/b&gt; (default no) and a &lt;b&gt;CRS&lt;/b&gt; for a cloud without a CRS record.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check points&lt;/b&gt;: a point layer (heights from a field or the geometry Z) or a CSV/TXT file (id, x, y, z) with its CRS; reprojection of x, y on request; bilinear (default) or nearest-cell sampling.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud, DTM (GeoTIFF), check-point residuals and the DTM accuracy report; optional ground filter report and DTM report.&lt;/li&gt;&lt;/ul&gt;</source>
-            <translation>&lt;p&gt;زمین یک ابر نقاط LiDAR را طبقه‌بندی می‌کند، از نقاط زمین یک مدل رقومی زمین (DTM) درون‌یابی می‌کند و دقت آن را با نقاط کنترل می‌سنجد، همه در یک گام. همهٔ خروجی‌هایش را می‌نویسد یا هیچ‌کدام را: اگر هر گامی شکست بخورد یا لغو شود، هیچ ابر طبقه‌بندی‌شده، DTM یا گزارشی باقی نمی‌ماند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: &lt;span dir="ltr"&gt;INPUT=tile.laz CHECKPOINTS_CSV=gnss.csv CELL_SIZE=1 OUTPUT=classified.laz OUTPUT_DTM=dtm.tif OUTPUT_HTML=accuracy.html&lt;/span&gt; ← ابر طبقه‌بندی‌شده، DTM و RMSE.&lt;/p&gt;&lt;p&gt;گام‌ها عبارت‌اند از فیلتر زمین پیشنهادی (یا فیلتر کمترین مربعات بهبودیافته در جایی که پیشنهادی نصب نیست)، DTM به روش IDW (توان 3 و 12 همسایه به‌طور پیش‌فرض: بهترین تنظیم مقالهٔ مرجع) و دقت DTM؛ نتایج با اجرای پشت‌سرهم سه الگوریتم برابرند. پیش از نوشتن هر چیز، سیستم مختصات، نقاط کنترل (بدون تکرار و درون گسترهٔ ابر) و همهٔ مسیرهای خروجی بررسی می‌شوند. مدل گرافیکی هم‌نام، همتای ویرایش‌پذیر آن است، اما بدون این تضمین.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt;: فایل ‎.las‏ یا ‎.laz‏ در سیستم مختصات تصویری (متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابتدا نقاط پرت پایین حذف شوند&lt;/b&gt; (پیش‌فرض بله)، با سلول جست‌وجو (متر، پیش‌فرض 5) و عمق (متر، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ سلول DTM&lt;/b&gt; (متر، پیش‌فرض 1)، &lt;b&gt;توان IDW&lt;/b&gt; (پیش‌فرض 3)، &lt;b&gt;تعداد همسایه‌ها&lt;/b&gt; (پیش‌فرض 12)، &lt;b&gt;پر کردن شکاف‌های داده&lt;/b&gt; (پیش‌فرض خیر) و یک &lt;b&gt;سیستم مختصات&lt;/b&gt; برای ابری بدون رکورد سیستم مختصات.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط کنترل&lt;/b&gt;: یک لایهٔ نقطه‌ای (ارتفاع از یک فیلد یا Z هندسه) یا یک فایل CSV/TXT ‏(id, x, y, z) با سیستم مختصاتش؛ تبدیل x و y در صورت درخواست؛ نمونه‌برداری دوخطی (پیش‌فرض) یا نزدیک‌ترین سلول.&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی‌ها&lt;/b&gt;: ابر طبقه‌بندی‌شده، DTM ‏(GeoTIFF)، باقیمانده‌های نقاط کنترل و گزارش دقت DTM؛ و به‌طور اختیاری گزارش فیلتر زمین و گزارش DTM.&lt;/li&gt;&lt;/ul&gt;</translation>
         </message>
         <message>
             <source>DTM cell size (m)</source>
@@ -1423,6 +1499,26 @@
         <message>
             <source>The ground filter found no ground point; no DTM can be interpolated. No output was written.</source>
             <translation>فیلتر زمین هیچ نقطهٔ زمینی نیافت؛ DTM قابل درون‌یابی نیست. هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>Classifies the ground of a LiDAR point cloud, interpolates an IDW DTM from the ground points and measures its accuracy against check points, in one step. It writes all its outputs or none, and its results equal those of the three algorithms run one after another.</source>
+            <translation>زمینِ یک ابر نقاط LiDAR را کلاس‌بندی می‌کند، از نقاط زمین یک DTM به روش IDW درون‌یابی می‌کند و دقت آن را با نقاط کنترل می‌سنجد، در یک گام. همهٔ خروجی‌ها را می‌نویسد یا هیچ‌کدام را، و نتایجش با اجرای پی‌درپی سه الگوریتم یکسان است.</translation>
+        </message>
+        <message>
+            <source>In a projected CRS (metres).</source>
+            <translation>در سامانهٔ مختصات تصویری (متر).</translation>
+        </message>
+        <message>
+            <source>Power 3 with 12 neighbours is the seed paper's best setting.</source>
+            <translation>توان 3 با 12 همسایه بهترین تنظیم مقالهٔ مرجع است.</translation>
+        </message>
+        <message>
+            <source>Give the layer or the file; duplicates and points outside the cloud's extent are refused before anything is written.</source>
+            <translation>لایه یا فایل را بدهید؛ نقاط تکراری و نقاطِ بیرون از گسترهٔ ابر پیش از نوشتن هر چیزی رد می‌شوند.</translation>
+        </message>
+        <message>
+            <source>Classified by the recommended ground filter (the improved least-squares filter where it is not installed).</source>
+            <translation>کلاس‌بندی‌شده با فیلتر زمین توصیه‌شده (یا فیلتر کمترین مربعات بهبودیافته هرجا نصب نباشد).</translation>
         </message>
     </context>
     <context>
@@ -1560,10 +1656,6 @@
             <translation>زمینی {g}، سایر {o}، نویز پایین {z}، طبقه‌بندی‌نشده {u}؛ {t} کاشی؛ {s:.1f} ثانیه</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). In every tile the surface is fitted, points more than THRESHOLD above it are dropped, and the fit is repeated until the minimum, maximum, mean and standard deviation of the kept heights stop changing (TOLERANCE) or MAX_ITERATIONS; then every point with z ≤ ẑ + THRESHOLD is ground. Any classification already in the file is ignored and replaced.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output classes&lt;/b&gt; (ASPRS): 2 ground, 1 other (buildings, vegetation), 7 low noise (pre-filter), 0 never classified (only with SPARSE_TILES = leave unclassified). Every other attribute of every point, the point format, scales, offsets, VLRs and CRS are copied unchanged.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file, projected CRS in metres.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Order&lt;/b&gt; (ORDER, default 2): 1 = plane z = b0 + b1·x + b2·y; 2 = quadratic z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (better on every sample of the paper).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Tile size&lt;/b&gt; (TILE_SIZE, m, default 50): larger than the largest building, so that every tile holds ground (paper: 100 m for large buildings, 50 m for small ones). Tiles are square, anchored at the minimum x, y.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Threshold&lt;/b&gt; (THRESHOLD, m, default 0.5): 0.5–1.0 m, larger on steeper terrain.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Mode&lt;/b&gt; (MODE, default Faithful): Faithful = the paper. Improved = ours, beyond the paper: coarse-to-fine tiles (2, 1, ½, ¼ × TILE_SIZE) fitted on overlapping windows, each level started from the previous level's ground, and a threshold that grows with the surface slope (by 2.5 m per unit gradient, at most 1 m). On the ISPRS samples it lowers the mean total error from 8.9 % (paper) to about 4.9 % with one parameter set; it costs about 15 times the time and twice the memory of the faithful mode (about 2 M points/s and 100 bytes per point in faithful mode).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes): points far below their neighbours become class 7 and take no part in the fit (NOISE_RADIUS, m, default 5: neighbourhood cell; NOISE_THRESHOLD, m, default 1: depth below the neighbours).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Maximum iterations&lt;/b&gt; (MAX_ITERATIONS, default 5, the paper's tables) and &lt;b&gt;stop tolerance&lt;/b&gt; (TOLERANCE, m, default 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Random fitting subset per tile&lt;/b&gt; (SUBSET_SIZE, points, default 0 = all; the paper used 5000) and its &lt;b&gt;seed&lt;/b&gt; (SEED). All points are classified.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum points per tile&lt;/b&gt; (MIN_POINTS, default 0 = 3 × the number of coefficients) and &lt;b&gt;under-populated tiles&lt;/b&gt; (SPARSE_TILES): borrow the nearest fitted tile's surface (default) or leave their points unclassified (class 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rejection&lt;/b&gt; (REJECTION): re-weighted (default; a point dropped earlier may return when the surface moves) or cumulative (dropped for good).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified cloud (OUTPUT, .laz or .las), optional ground-only cloud (GROUND_OUTPUT), optional HTML report (OUTPUT_HTML) with the parameters, class counts, the per-iteration statistics of the paper's Tables 1–2, per-tile statistics, time and points per second; optional CSV of every tile's iterations and coefficients (TILE_STATS); numbers N_GROUND, N_OTHER, N_NOISE, N_UNCLASSIFIED, N_TILES, POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Measure the result against reference labels with &lt;i&gt;Ground filter accuracy&lt;/i&gt;. Nothing is written when the run fails or is cancelled.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;نقاط زمین لخت را از ساختمان‌ها و پوشش گیاهی در ابر نقاط لایدار هوایی جدا می‌کند، با برازش سطوح چندجمله‌ای کمترین مربعات در هر کاشی مربعی (مجلهٔ علوم مهندسی دانشگاه دمشق 29(2)، 2013). در هر کاشی سطح برازش داده می‌شود، نقاطی که بیش از THRESHOLD بالاتر از آن‌اند کنار گذاشته می‌شوند، و برازش تکرار می‌شود تا کمینه، بیشینه، میانگین و انحراف معیار ارتفاع‌های نگه‌داشته‌شده دیگر تغییر نکنند (TOLERANCE) یا به MAX_ITERATIONS برسد؛ سپس هر نقطه با z ≤ ẑ + THRESHOLD زمینی است. هر طبقه‌بندی موجود در پرونده نادیده گرفته و جایگزین می‌شود.&lt;/p&gt;&lt;p&gt;&lt;b&gt;کلاس‌های خروجی&lt;/b&gt; (ASPRS): 2 زمینی، 1 سایر (ساختمان، پوشش گیاهی)، 7 نویز پایین (پیش‌فیلتر)، 0 هرگز طبقه‌بندی‌نشده (فقط با SPARSE_TILES = طبقه‌بندی‌نشده ماندن). همهٔ ویژگی‌های دیگر هر نقطه، قالب نقطه، ضرایب مقیاس، آفست‌ها، VLRها و سیستم مختصات بدون تغییر کپی می‌شوند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz TILE_SIZE=50 THRESHOLD=0.5 ORDER=2 OUTPUT=classified.laz GROUND_OUTPUT=ground.laz OUTPUT_HTML=report.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las یا .laz، با سیستم مختصات تصویرشده به متر.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجه&lt;/b&gt; (ORDER، پیش‌فرض 2): 1 = صفحه z = b0 + b1·x + b2·y؛ 2 = درجه‌دوم z = b0 + b1·x² + b2·y² + b3·xy + b4·x + b5·y (در همهٔ نمونه‌های مقاله بهتر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ کاشی&lt;/b&gt; (TILE_SIZE، متر، پیش‌فرض 50): بزرگ‌تر از بزرگ‌ترین ساختمان، تا هر کاشی نقاط زمینی داشته باشد (مقاله: 100 متر برای ساختمان‌های بزرگ، 50 متر برای ساختمان‌های کوچک). کاشی‌ها مربعی‌اند و از کمینهٔ x و y آغاز می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;آستانه&lt;/b&gt; (THRESHOLD، متر، پیش‌فرض 0.5): 0.5–1.0 متر، و در زمین‌های پرشیب‌تر بیشتر.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حالت&lt;/b&gt; (MODE، پیش‌فرض: مطابق): مطابق = روش مقاله. بهبودیافته = افزودهٔ ما، فراتر از مقاله: کاشی‌های درشت به ریز (2، 1، ½، ¼ × TILE_SIZE) که روی پنجره‌های همپوشان برازش می‌شوند، هر سطح از نقاط زمینی سطح قبلی آغاز می‌شود، و آستانه‌ای که با شیب سطح افزایش می‌یابد (2.5 متر به ازای هر واحد گرادیان، حداکثر 1 متر). روی نمونه‌های ISPRS میانگین خطای کل را با یک مجموعه پارامتر از 8.9 % (مقاله) به حدود 4.9 % کاهش می‌دهد؛ حدود 15 برابر زمان و دو برابر حافظهٔ حالت مطابق را می‌گیرد (در حالت مطابق حدود 2 میلیون نقطه در ثانیه و 100 بایت برای هر نقطه).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حذف نقاط پرت پایین در آغاز&lt;/b&gt; (NOISE، پیش‌فرض: بله): نقاطی که بسیار پایین‌تر از همسایه‌های خود هستند کلاس 7 می‌گیرند و در برازش شرکت نمی‌کنند (NOISE_RADIUS، متر، پیش‌فرض 5: سلول همسایگی؛ NOISE_THRESHOLD، متر، پیش‌فرض 1: عمق زیر همسایه‌ها).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداکثر تکرار&lt;/b&gt; (MAX_ITERATIONS، پیش‌فرض 5، مطابق جدول‌های مقاله) و &lt;b&gt;تلورانس توقف&lt;/b&gt; (TOLERANCE، متر، پیش‌فرض 0.01).&lt;/li&gt;&lt;li&gt;&lt;b&gt;زیرمجموعهٔ تصادفی برازش در هر کاشی&lt;/b&gt; (SUBSET_SIZE، نقطه، پیش‌فرض 0 = همه؛ مقاله 5000 به کار برده است) و &lt;b&gt;بذر تصادفی&lt;/b&gt; آن (SEED). همهٔ نقاط طبقه‌بندی می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداقل نقاط هر کاشی&lt;/b&gt; (MIN_POINTS، پیش‌فرض 0 = 3 × تعداد ضرایب) و &lt;b&gt;کاشی‌های کم‌نقطه&lt;/b&gt; (SPARSE_TILES): استفاده از سطح نزدیک‌ترین کاشی برازش‌شده (پیش‌فرض) یا طبقه‌بندی‌نشده ماندن نقاط آن‌ها (کلاس 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شیوهٔ رد نقاط&lt;/b&gt; (REJECTION): وزن‌دهی دوباره (پیش‌فرض؛ نقطه‌ای که پیش‌تر رد شده ممکن است با جابه‌جایی سطح بازگردد) یا تجمعی (برای همیشه رد می‌شود).&lt;/li&gt;&lt;li&gt;&lt;b&gt;خروجی‌ها&lt;/b&gt;: ابر طبقه‌بندی‌شده (OUTPUT، .laz یا .las)، ابر فقط نقاط زمینی به‌اختیار (GROUND_OUTPUT)، گزارش HTML اختیاری (OUTPUT_HTML) با پارامترها، تعداد نقاط هر کلاس، آماره‌های هر تکرار مطابق جدول‌های 1–2 مقاله، آماره‌های هر کاشی، زمان و تعداد نقطه در ثانیه؛ پروندهٔ CSV اختیاری از تکرارها و ضرایب هر کاشی (TILE_STATS)؛ اعداد N_GROUND، N_OTHER، N_NOISE، N_UNCLASSIFIED، N_TILES، POINTS_PER_SECOND.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;نتیجه را با &lt;i&gt;دقت فیلتر نقاط زمینی&lt;/i&gt; در برابر برچسب‌های مرجع بسنجید. اگر اجرا شکست بخورد یا لغو شود، چیزی نوشته نمی‌شود.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Per-tile iteration statistics (CSV)</source>
             <translation>آماره‌های تکرار هر کاشی (CSV)</translation>
         </message>
@@ -1574,6 +1666,50 @@
         <message>
             <source>LSQ ground filter report</source>
             <translation>گزارش فیلتر زمین کمترین مربعات (LSQ)</translation>
+        </message>
+        <message>
+            <source>Separates bare-earth points from buildings and vegetation in an airborne LiDAR cloud by fitting least-squares polynomial surfaces per square tile (Damascus Univ. J. Eng. Sci. 29(2), 2013). Points more than the threshold above the surface are dropped and the fit repeated until the height statistics settle; the rest become ground (class 2), the others class 1.</source>
+            <translation>نقاط زمین لخت را از ساختمان‌ها و پوشش گیاهی در ابر نقاط LiDAR هوایی جدا می‌کند؛ با برازش سطوح چندجمله‌ای کمترین مربعات در هر کاشی مربعی (مجلهٔ علوم مهندسی دانشگاه دمشق 29(2)، 2013). نقاطی که بیش از آستانه بالای سطح‌اند کنار گذاشته می‌شوند و برازش تا پایدار شدن آمار ارتفاع تکرار می‌شود؛ باقی زمین (کلاس 2) و دیگران کلاس 1 می‌شوند.</translation>
+        </message>
+        <message>
+            <source>1 = plane, 2 = quadratic surface (better on every sample of the paper).</source>
+            <translation>1 = صفحه، 2 = سطح درجه‌دو (در همهٔ نمونه‌های مقاله بهتر).</translation>
+        </message>
+        <message>
+            <source>Larger than the largest building, so that every tile holds ground (the paper: 100 m for large buildings, 50 m for small ones).</source>
+            <translation>بزرگ‌تر از بزرگ‌ترین ساختمان، تا هر کاشی زمین داشته باشد (مقاله: 100 m برای ساختمان‌های بزرگ و 50 m برای کوچک).</translation>
+        </message>
+        <message>
+            <source>0.5–1.0 m, larger on steeper terrain.</source>
+            <translation>0.5 تا 1.0 m، در زمین‌های پرشیب‌تر بزرگ‌تر.</translation>
+        </message>
+        <message>
+            <source>Faithful follows the paper. Improved (this toolbox's extension) fits coarse-to-fine overlapping tiles with a slope-dependent threshold: mean total error on the ISPRS samples 8.9 % → about 4.9 %, at about 15 times the time.</source>
+            <translation>حالت وفادار از مقاله پیروی می‌کند. حالت بهبودیافته (افزودهٔ این جعبه‌ابزار) کاشی‌های هم‌پوشان را از درشت به ریز با آستانهٔ وابسته به شیب برازش می‌کند: میانگین خطای کل روی نمونه‌های ISPRS ‏8.9 % ← حدود 4.9 %، با حدود 15 برابر زمان.</translation>
+        </message>
+        <message>
+            <source>Points far below their neighbours (multipath) get class 7 and take no part in the fit.</source>
+            <translation>نقاطی که بسیار پایین‌تر از همسایه‌هایشان‌اند (چندمسیری) کلاس 7 می‌گیرند و در برازش شرکت نمی‌کنند.</translation>
+        </message>
+        <message>
+            <source>The paper used 5000; every point is still classified.</source>
+            <translation>مقاله 5000 به کار برد؛ با این حال همهٔ نقاط کلاس‌بندی می‌شوند.</translation>
+        </message>
+        <message>
+            <source>Tiles with too few points borrow the nearest fitted surface, or their points stay class 0.</source>
+            <translation>کاشی‌های کم‌نقطه نزدیک‌ترین سطح برازش‌شده را وام می‌گیرند، یا نقاطشان در کلاس 0 می‌مانند.</translation>
+        </message>
+        <message>
+            <source>Re-weighted: a dropped point may come back when the surface moves; cumulative: dropped for good.</source>
+            <translation>وزن‌دهی دوباره: نقطهٔ کنارگذاشته ممکن است با جابه‌جایی سطح بازگردد؛ تجمعی: برای همیشه کنار گذاشته می‌شود.</translation>
+        </message>
+        <message>
+            <source>Every attribute, point format, scales, offsets, VLRs and CRS are copied unchanged; any earlier classification is replaced.</source>
+            <translation>همهٔ ویژگی‌ها، قالب نقطه، مقیاس‌ها، آفست‌ها، VLRها و سامانهٔ مختصات بدون تغییر رونوشت می‌شوند؛ هر کلاس‌بندی پیشین جایگزین می‌شود.</translation>
+        </message>
+        <message>
+            <source>Class counts, the per-iteration statistics of the paper's tables, a tile map and the speed.</source>
+            <translation>شمار کلاس‌ها، آمار هر تکرار مانند جدول‌های مقاله، نقشهٔ کاشی‌ها و سرعت.</translation>
         </message>
     </context>
     <context>
@@ -1638,10 +1774,6 @@
             <translation>لایدار,las,laz,زمین,فیلتر,طبقه‌بندی,dtm,زمین لخت,vosselman,شیب,ابر نقاط</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when some neighbour at horizontal distance 0 &amp;lt; d ≤ r lies more than d·tan θ + h below it. Single pass, neighbours from the whole cloud, exact (labels identical to a brute-force check of every pair) and fast (about a million points per second on one core at r = 3 m). Low outliers get class 7; every other attribute is copied unchanged. The input classification is ignored.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study's setting RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 allows a rise of 2.90 m at 3 m. Tune r and θ to your data with &lt;i&gt;Slope filter threshold sweep&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz file in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radius r&lt;/b&gt; (RADIUS, m, default 10, &amp;gt; 0): neighbourhood radius. An object is removed only within r of its edge, so r must exceed half the width of the largest building to remove; larger r costs more time.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope threshold θ&lt;/b&gt; (SLOPE, degrees, default 40, strictly between 0 and 90): the steepest terrain kept. Allowed rise at 3 m: 2.52 m (40°), 2.90 m (44°), 3.33 m (48°), 3.84 m (52°), 4.45 m (56°), 5.20 m (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Height tolerance h&lt;/b&gt; (HEIGHT_TOLERANCE, m, default 0.2, ≥ 0): extra rise allowed for every pair, absorbs ranging noise between close points; 0 is the rule as published.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;یک ابر نقاط LAS/LAZ را با فیلتر مبتنی بر شیب Vosselman (2000) به زمینی (کلاس 2) و غیرزمینی (کلاس 1) طبقه‌بندی می‌کند: نقطه‌ای غیرزمینی است که همسایه‌ای در فاصلهٔ افقی 0 &lt; d ≤ r بیش از d·tan θ + h پایین‌تر از آن باشد. یک‌گذره، با همسایه‌ها از کل ابر، دقیق (برچسب‌ها با بررسی کامل همهٔ زوج‌ها یکسان‌اند) و سریع (حدود یک میلیون نقطه در ثانیه روی یک هستهٔ پردازنده با r = 3 متر). نقاط پرت پایین کلاس 7 می‌گیرند؛ همهٔ ویژگی‌های دیگر بدون تغییر کپی می‌شوند. طبقه‌بندی ورودی نادیده گرفته می‌شود.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: تنظیم مطالعهٔ جنگل RADIUS=3 SLOPE=44 HEIGHT_TOLERANCE=0 در فاصلهٔ 3 متر اختلاف ارتفاع 2.90 متر را مجاز می‌داند. r و θ را با &lt;i&gt;پیمایش آستانه‌های فیلتر شیب&lt;/i&gt; برای داده‌های خود تنظیم کنید.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): پروندهٔ .las یا .laz در سیستم مختصات تصویرشده (متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شعاع r&lt;/b&gt; (RADIUS، متر، پیش‌فرض 10، &gt; 0): شعاع همسایگی. یک عارضه فقط تا فاصلهٔ r از لبه‌اش حذف می‌شود، پس r باید از نصف عرض بزرگ‌ترین ساختمانی که باید حذف شود بیشتر باشد؛ r بزرگ‌تر زمان بیشتری می‌برد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;آستانهٔ شیب θ&lt;/b&gt; (SLOPE، درجه، پیش‌فرض 40، اکیداً بین 0 و 90): تندترین شیب زمینی که نگه داشته می‌شود. اختلاف ارتفاع مجاز در 3 متر: 2.52 متر (40°)، 2.90 متر (44°)، 3.33 متر (48°)، 3.84 متر (52°)، 4.45 متر (56°)، 5.20 متر (60°).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تلورانس ارتفاعی h&lt;/b&gt; (HEIGHT_TOLERANCE، متر، پیش‌فرض 0.2، ≥ 0): اختلاف ارتفاع اضافی مجاز برای هر زوج، که نویز فاصله‌یابی میان نقاط نزدیک را جذب می‌کند؛ 0 همان قاعدهٔ منتشرشده است.&lt;/li&gt;</translation>
-        </message>
-        <message>
             <source>Radius r (m)</source>
             <translation>شعاع r (متر)</translation>
         </message>
@@ -1698,12 +1830,32 @@
             <translation>{} نقطه: {} زمینی، {} غیرزمینی، {} پرت پایین؛ فیلتر {:.1f} ثانیه</translation>
         </message>
         <message>
-            <source>&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, default yes, advanced): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point, classes 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): counts, settings, allowed-rise table, speed.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE, POINTS_PER_SECOND (filter step only).&lt;/p&gt;&lt;p&gt;Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;حفظ کلاس‌های نویز موجود&lt;/b&gt; (KEEP_NOISE، پیش‌فرض: بله، پیشرفته): نقاطی که از پیش کلاس 7 یا 18 دارند کلاس خود را نگه می‌دارند و در فیلتر شرکت نمی‌کنند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر نقاط طبقه‌بندی‌شده&lt;/b&gt; (OUTPUT، .laz/.las): همهٔ نقاط، با کلاس‌های 2/1/7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط زمینی&lt;/b&gt; (GROUND_OUTPUT، اختیاری): فقط نقاط زمینی.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): تعدادها، تنظیمات، جدول اختلاف ارتفاع مجاز، سرعت.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: N_POINTS، N_GROUND، N_NONGROUND، N_NOISE، POINTS_PER_SECOND (فقط مرحلهٔ فیلتر).&lt;/p&gt;&lt;p&gt;مرجع: Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS XXXIII-B3, 935–942.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Slope ground filter report</source>
             <translation>گزارش فیلتر زمین مبتنی بر شیب</translation>
+        </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when a neighbour within the radius r lies more than d·tan θ + h below it. The filter is exact and fast (about a million points per second at r = 3 m); tune r and θ to your data with the slope filter threshold sweep.</source>
+            <translation>ابر نقاط LAS/LAZ را با فیلتر مبتنی بر شیب Vosselman ‏(2000) به زمین (کلاس 2) و غیرزمین (کلاس 1) کلاس‌بندی می‌کند: نقطه‌ای غیرزمینی است که همسایه‌ای درون شعاع r بیش از d·tan θ + h پایین‌تر از آن باشد. فیلتر دقیق و سریع است (حدود یک میلیون نقطه در ثانیه در r = 3 m)؛ r و θ را با ابزار پیمایش آستانه‌های فیلتر شیب برای دادهٔ خود تنظیم کنید.</translation>
+        </message>
+        <message>
+            <source>Must exceed half the width of the largest building to remove; a larger radius costs more time.</source>
+            <translation>باید از نصف عرض بزرگ‌ترین ساختمانی که باید حذف شود بیشتر باشد؛ شعاع بزرگ‌تر زمان بیشتری می‌برد.</translation>
+        </message>
+        <message>
+            <source>The steepest terrain kept, between 0 and 90°; the allowed rise at 3 m is 2.52 m at 40°, 2.90 m at 44° and 3.84 m at 52°.</source>
+            <translation>تندترین زمینی که حفظ می‌شود، بین 0 و 90°؛ افزایش ارتفاع مجاز در 3 m برابر 2.52 m در 40°، 2.90 m در 44° و 3.84 m در 52° است.</translation>
+        </message>
+        <message>
+            <source>Extra rise allowed for every pair, absorbs ranging noise; 0 is the published rule.</source>
+            <translation>افزایش ارتفاع اضافیِ مجاز برای هر جفت نقطه که نوفهٔ فاصله‌یابی را جذب می‌کند؛ 0 همان قاعدهٔ منتشرشده است.</translation>
+        </message>
+        <message>
+            <source>Points already in class 7 or 18 keep their class and take no part.</source>
+            <translation>نقاطی که از پیش در کلاس 7 یا 18 هستند کلاس خود را نگه می‌دارند و شرکت نمی‌کنند.</translation>
+        </message>
+        <message>
+            <source>Every point with classes 2, 1 and 7; every other attribute is copied unchanged.</source>
+            <translation>همهٔ نقاط با کلاس‌های 2، 1 و 7؛ همهٔ ویژگی‌های دیگر بدون تغییر رونوشت می‌شوند.</translation>
         </message>
     </context>
     <context>
@@ -1715,10 +1867,6 @@
         <message>
             <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
             <translation>لایدار,زمین,فیلتر,vosselman,شیب,آستانه,تنظیم,دقت,نوع اول,نوع دوم,کاپا,isprs</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h and reports, against reference labels, Type I error (ground rejected), Type II error (objects accepted as ground — the forest study's "error" column, which alone always favours low θ), total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004), then picks the best setting. One exact neighbourhood pass per radius and tolerance: every threshold then costs a single comparison per point.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the forest study: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. ISPRS reference samples: INPUT=samp31.laz (its own classification is the reference).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): LAS/LAZ. Its classification is never used to filter.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Reference cloud&lt;/b&gt; (REFERENCE, optional): a labelled copy of the same points in the same order; empty = the input's own classification (e.g. the ISPRS samples).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground classes&lt;/b&gt; (GROUND_CLASSES, default "2"): reference classes counted as ground; all others are objects.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Slope thresholds&lt;/b&gt; (SLOPES, degrees, default "30,35,40,44,48,52,56,60"): a list or start:stop:step.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Radii&lt;/b&gt; (RADII, m, default "10") and &lt;b&gt;height tolerances&lt;/b&gt; (HEIGHT_TOLERANCES, m, default "0.2"): lists; each value is one pass.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Best by&lt;/b&gt; (METRIC, default 0): 0 lowest total error, 1 highest kappa, 2 lowest Type I, 3 lowest Type II.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;فیلتر زمینی مبتنی بر شیب را برای هر ترکیب از آستانه‌های شیب θ، شعاع‌های r و تلورانس‌های ارتفاعی h اجرا می‌کند و در برابر برچسب‌های مرجع، خطای نوع اول (رد نقاط زمینی)، خطای نوع دوم (پذیرش عوارض به‌عنوان زمین — ستون «خطا» در مطالعهٔ جنگل، که به‌تنهایی همیشه θ پایین را ترجیح می‌دهد)، خطای کل و ضریب کاپای کوهن (Sithole &amp; Vosselman 2004) را گزارش می‌کند و سپس بهترین تنظیم را برمی‌گزیند. برای هر شعاع و تلورانس یک گذر دقیق همسایگی انجام می‌شود: پس از آن هر آستانه فقط یک مقایسه به ازای هر نقطه هزینه دارد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: مطالعهٔ جنگل: SLOPES=40:60:4 RADII=3 HEIGHT_TOLERANCES=0. نمونه‌های مرجع ISPRS: INPUT=samp31.laz (طبقه‌بندی خودش مرجع است).&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): LAS/LAZ. طبقه‌بندی آن هرگز برای فیلتر کردن به کار نمی‌رود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ابر مرجع&lt;/b&gt; (REFERENCE، اختیاری): رونوشتی برچسب‌دار از همان نقاط با همان ترتیب؛ خالی = طبقه‌بندی خود ورودی (مثلاً نمونه‌های ISPRS).&lt;/li&gt;&lt;li&gt;&lt;b&gt;کلاس‌های زمینی&lt;/b&gt; (GROUND_CLASSES، پیش‌فرض "2"): کلاس‌های مرجعی که زمینی به شمار می‌آیند؛ بقیه عارضه‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;آستانه‌های شیب&lt;/b&gt; (SLOPES، درجه، پیش‌فرض "30,35,40,44,48,52,56,60"): فهرست یا start:stop:step (شروع:پایان:گام).&lt;/li&gt;&lt;li&gt;&lt;b&gt;شعاع‌ها&lt;/b&gt; (RADII، متر، پیش‌فرض "10") و &lt;b&gt;تلورانس‌های ارتفاعی&lt;/b&gt; (HEIGHT_TOLERANCES، متر، پیش‌فرض "0.2"): فهرست؛ هر مقدار یک گذر است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;معیار انتخاب بهترین&lt;/b&gt; (METRIC، پیش‌فرض 0): 0 کمترین خطای کل، 1 بیشترین کاپا، 2 کمترین نوع اول، 3 کمترین نوع دوم.&lt;/li&gt;</translation>
         </message>
         <message>
             <source>Reference cloud (empty = the input's classification)</source>
@@ -1821,12 +1969,36 @@
             <translation>بهترین ({}): {} — خطای کل {:.2f} %</translation>
         </message>
         <message>
-            <source>&lt;li&gt;&lt;b&gt;Sweep table&lt;/b&gt; (OUTPUT_CSV): one row per setting: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML): the table, the best setting and a chart of the errors against θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Classified with the best setting&lt;/b&gt; (OUTPUT, optional LAS/LAZ).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: BEST_RADIUS, BEST_SLOPE, BEST_HEIGHT_TOLERANCE, BEST_TYPE1, BEST_TYPE2, BEST_TOTAL, BEST_KAPPA (percent), N_SETTINGS.&lt;/p&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;جدول پیمایش&lt;/b&gt; (OUTPUT_CSV): یک سطر برای هر تنظیم: radius_m, slope_deg, height_tolerance_m, allowed_rise_at_r_m, n_ground, a, b, c, d, type1_pct, type2_pct, total_pct, kappa_pct.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML): جدول، بهترین تنظیم و نمودار خطاها بر حسب θ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقه‌بندی‌شده با بهترین تنظیم&lt;/b&gt; (OUTPUT، LAS/LAZ اختیاری).&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: BEST_RADIUS، BEST_SLOPE، BEST_HEIGHT_TOLERANCE، BEST_TYPE1، BEST_TYPE2، BEST_TOTAL، BEST_KAPPA (درصد)، N_SETTINGS.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Slope threshold sweep report</source>
             <translation>گزارش پیمایش آستانه‌های فیلتر شیب</translation>
+        </message>
+        <message>
+            <source>Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h, and measures each against reference labels: Type I and Type II errors, total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004). It then picks the best setting, at the cost of one neighbourhood pass per radius and tolerance.</source>
+            <translation>فیلتر زمینِ مبتنی بر شیب را برای هر ترکیب از آستانه‌های شیب θ، شعاع‌های r و رواداری‌های ارتفاعی h اجرا می‌کند و هر یک را با برچسب‌های مرجع می‌سنجد: خطای نوع اول و دوم، خطای کل و ضریب کاپای کوهن (Sithole &amp;amp; Vosselman 2004). سپس بهترین تنظیم را برمی‌گزیند، با هزینهٔ یک گذر همسایگی برای هر شعاع و رواداری.</translation>
+        </message>
+        <message>
+            <source>Its classification is never used to filter.</source>
+            <translation>کلاس‌بندی آن هرگز در فیلتر به کار نمی‌رود.</translation>
+        </message>
+        <message>
+            <source>A labelled copy of the same points in the same order, e.g. the ISPRS reference samples.</source>
+            <translation>رونوشتی برچسب‌دار از همان نقاط با همان ترتیب، مانند نمونه‌های مرجع ISPRS.</translation>
+        </message>
+        <message>
+            <source>Every other class counts as an object.</source>
+            <translation>هر کلاس دیگر عارضه به شمار می‌آید.</translation>
+        </message>
+        <message>
+            <source>A list such as 40, 44, 48 or start:stop:step.</source>
+            <translation>فهرستی مانند 40, 44, 48 یا start:stop:step.</translation>
+        </message>
+        <message>
+            <source>Each value is one neighbourhood pass.</source>
+            <translation>هر مقدار یک گذر همسایگی است.</translation>
+        </message>
+        <message>
+            <source>One row per setting with the cross matrix and the errors in percent.</source>
+            <translation>یک سطر برای هر تنظیم با ماتریس متقاطع و خطاها به درصد.</translation>
         </message>
     </context>
     <context>
@@ -2095,6 +2267,18 @@
         <message>
             <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
             <translation>NOISE_RADIUS و NOISE_THRESHOLD باید &gt; 0 متر باشند (مثلاً 5 و 1)، یا پیش‌فیلتر NOISE را خاموش کنید.</translation>
+        </message>
+        <message>
+            <source>All returns: every return is classified and is a neighbour (the forest study). Last returns only: first and intermediate returns get class 1; files without return numbers count every point as a last return.</source>
+            <translation>همهٔ بازگشت‌ها: هر بازگشت کلاس‌بندی می‌شود و همسایه به شمار می‌آید (مطالعهٔ جنگل). فقط بازگشت‌های آخر: بازگشت‌های اول و میانی کلاس 1 می‌گیرند؛ در فایل‌های بدون شمارهٔ بازگشت، هر نقطه بازگشت آخر به شمار می‌آید.</translation>
+        </message>
+        <message>
+            <source>Points far below their neighbours (multipath) get class 7 and take no part: one stray low point would reject every ground point around it.</source>
+            <translation>نقاطی که بسیار پایین‌تر از همسایه‌هایشان‌اند (چندمسیری) کلاس 7 می‌گیرند و در فیلتر شرکت نمی‌کنند: یک نقطهٔ پایینِ سرگردان همهٔ نقاط زمینیِ اطرافش را رد می‌کرد.</translation>
+        </message>
+        <message>
+            <source>Terrain-adaptive (this toolbox's extension) applies the rule to heights above a smooth low terrain trend, so natural slopes steeper than θ are kept (ISPRS samp11: total error 21.0 % → 16.4 %); use a lower θ, about 30–35°, in this mode.</source>
+            <translation>حالت سازگار با زمین (افزودهٔ این جعبه‌ابزار) قاعده را روی ارتفاع‌های بالای یک روند هموار و پایینِ زمین اعمال می‌کند، پس شیب‌های طبیعیِ تندتر از θ حفظ می‌شوند (ISPRS samp11: خطای کل 21.0 % ← 16.4 %)؛ در این حالت θ کوچک‌تر، حدود 30–35°، به کار ببرید.</translation>
         </message>
     </context>
 </TS>

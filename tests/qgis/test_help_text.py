@@ -16,15 +16,6 @@ PENDING = {
     "gsdbatch": "next group",
     "rectifygcp": "owned by branch rect2, not on main yet",
     "gcpaccuracyreport": "owned by branch rect2, not on main yet",
-    "lidartodtm": "next group",
-    "slopegroundfilter": "next group",
-    "slopethresholdsweep": "next group",
-    "lsqgroundfilter": "next group",
-    "groundfilteraccuracy": "next group",
-    "catalog": "next group",
-    "lidarqa": "next group",
-    "elevationchange": "next group",
-    "buildings": "next group",
 }
 
 _CODE = re.compile(r"<(code|pre)\b[^>]*>.*?</\1>", re.S)
