@@ -107,6 +107,18 @@
             <source>failed</source>
             <translation>فشلت</translation>
         </message>
+        <message>
+            <source>check-point RMS_T</source>
+            <translation>RMS_T نقاط التحقق</translation>
+        </message>
+        <message>
+            <source>map X</source>
+            <translation>X الخريطة</translation>
+        </message>
+        <message>
+            <source>map Y</source>
+            <translation>Y الخريطة</translation>
+        </message>
     </context>
     <context>
         <name>BuildingsAlgorithm</name>
@@ -614,10 +626,6 @@
             <translation>إسناد جغرافي,gcp,نقاط الضبط الأرضي,rms,البواقي,الدقة,نقاط التحقق,الاستبعاد الفردي,متعدد الحدود,georeferencer</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Judges a set of ground control points without warping: fits polynomials of order 1, 2 and 3, reports the residuals and the paper's criteria for the chosen order, compares the three orders and recommends one.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;تقيِّم مجموعة من نقاط الضبط الأرضي دون تحويل الصورة هندسياً: تُوائم متعددات حدود من الدرجات 1 و2 و3، وتعرض البواقي ومعايير البحث للدرجة المختارة، وتقارن الدرجات الثلاث وتوصي بإحداها.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT، اختياري): تعطي أبعاد الصورة (نقاط الضبط الواقعة خارجها خطأ؛ وتعتمد الأرباع والمخطط على حدودها). ودونها حدِّد IMAGE_WIDTH وIMAGE_HEIGHT (بالبكسل) وإلا استُخدم مركز ثقل نقاط الضبط.&lt;/li&gt;</translation>
-        </message>
-        <message>
             <source>Image width (px) if no image is given</source>
             <translation>عرض الصورة (بكسل) إن لم تُحدَّد صورة</translation>
         </message>
@@ -656,6 +664,10 @@
         <message>
             <source>&lt;p&gt;Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, …) for the graphical modeler.&lt;/p&gt;</source>
             <translation>&lt;p&gt;كل رقم في الملخص هو أيضاً مخرج رقمي (RMS_T وRMS_T_QGIS وGR وSCALE وLOO_RMS_T وCHECK_RMS_T وRECOMMENDED_ORDER وACCEPTED وRMS_T_ORDER1…3 و…) لاستخدامه في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Judges a set of ground control points without warping: every transformation (polynomial 1–3, linear, Helmert, projective, thin-plate spline) side by side by the paper's criteria on check points and leave-one-out residuals, with the recommended one and why.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif TRANSFORMATION=8 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;تقيِّم مجموعة من نقاط الضبط الأرضي دون تحويل الصورة هندسياً: كل التحويلات (كثيرة الحدود 1–3، الخطي، هلمرت، الإسقاطي، شريحة الصفيحة الرقيقة) جنباً إلى جنب وفق معايير البحث على نقاط التحقق وبواقي ترك واحدة، مع التحويل الموصى به وسبب التوصية.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif TRANSFORMATION=8 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT، اختياري): تعطي أبعاد الصورة (نقاط الضبط الواقعة خارجها خطأ؛ وتعتمد الأرباع والمخطط على حدودها). ودونها حدِّد IMAGE_WIDTH وIMAGE_HEIGHT (بالبكسل) وإلا استُخدم مركز ثقل نقاط الضبط.&lt;/li&gt;</translation>
         </message>
     </context>
     <context>
@@ -859,6 +871,10 @@
         <message>
             <source>no</source>
             <translation>لا</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 0): 0 polynomial of order ORDER; 1–3 polynomial of order 1, 2, 3; 4 linear (shift and scale per axis, ≥ 2 GCPs); 5 Helmert (shift, one scale, one rotation, ≥ 2); 6 projective (homography, ≥ 4); 7 thin-plate spline (through every GCP, ≥ 3, as gdalwarp -tps); 8 recommended: every transformation is compared and the one with the lowest check-point (else leave-one-out) error is used, the simplest within 10 % of the best.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): as gdalwarp -refine_gcps, drop the GCP with the largest residual while it exceeds the tolerance, then refit; the dropped points are listed in the report.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refinement tolerance&lt;/b&gt; (REFINE_TOLERANCE, map units, default the C5 per-point limit 0.25 mm·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum GCPs&lt;/b&gt; (MIN_GCPS, default the transformation's minimum + 2): the refinement never goes below this count.&lt;/li&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;التحويل&lt;/b&gt; (TRANSFORMATION، الافتراضي 0): 0 كثيرة حدود من الدرجة ORDER؛ 1–3 كثيرة حدود من الدرجة 1 أو 2 أو 3؛ 4 خطي (إزاحة ومقياس لكل محور، ≥ 2 نقطة)؛ 5 هلمرت (إزاحة ومقياس واحد ودوران واحد، ≥ 2)؛ 6 إسقاطي (تحويل متجانس، ≥ 4)؛ 7 شريحة الصفيحة الرقيقة (تمر بكل نقطة، ≥ 3، مثل gdalwarp -tps)؛ 8 الموصى به: تُقارَن جميع التحويلات ويُستخدم صاحب أصغر خطأ على نقاط التحقق (وإلا على ترك واحدة خارجاً)، والأبسط ضمن 10 % من الأفضل.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تنقيح النقاط&lt;/b&gt; (REFINE، الافتراضي معطّل): كما في gdalwarp -refine_gcps، تُحذف النقطة ذات أكبر باقٍ ما دام يتجاوز التسامح ثم يُعاد الملاءمة؛ وتُسرد النقاط المحذوفة في التقرير.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تسامح التنقيح&lt;/b&gt; (REFINE_TOLERANCE، بوحدات الخريطة، الافتراضي حدّ النقطة C5 أي 0.25 مم·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى عدد للنقاط&lt;/b&gt; (MIN_GCPS، الافتراضي الحدّ الأدنى للتحويل + 2): لا ينزل التنقيح تحت هذا العدد.&lt;/li&gt;</translation>
         </message>
     </context>
     <context>
@@ -1713,18 +1729,109 @@
         </message>
     </context>
     <context>
-        <name>RectifyGcpAlgorithm</name>
+        <name>RectifyBatchAlgorithm</name>
         <message>
-            <source>Rectify image with GCPs (polynomial)</source>
-            <translation>التصحيح الهندسي للصورة بنقاط الضبط الأرضي (متعدد حدود)</translation>
+            <source>Rectify a folder of images with GCPs (batch)</source>
+            <translation>تصحيح مجلد من المرئيات بنقاط الضبط (دفعة)</translation>
         </message>
+        <message>
+            <source>Warps every image of a folder with its .points file and summarises the accuracy in one table.</source>
+            <translation>يصحّح كل مرئية في المجلد بملف ‎.points‎ الخاص بها ويلخّص الدقة في جدول واحد.</translation>
+        </message>
+        <message>
+            <source>georeference,gcp,batch,folder,rectification,warp,rms</source>
+            <translation>georeference,gcp,batch,folder,rectification,warp,rms,إسناد جغرافي,دفعة,مجلد,تصحيح</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Rectifies every image of a folder that has its QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file next to it (scan.tif + scan.tif.points), with a fixed transformation or the one recommended for each image, and writes one summary table: image, transformation, RMS_T, check-point / leave-one-out RMS_T, verdict.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Input folder&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 8 = recommended per image; 0 polynomial of order ORDER, 1–3 polynomial 1–3, 4 linear, 5 Helmert, 6 projective, 7 thin-plate spline).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): drop GCPs over the C5 limit 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): for .points files without a '#CRS:' line.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output folder&lt;/b&gt; (OUTPUT_FOLDER): image_rectified.tif per image, each written all-or-nothing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Summary&lt;/b&gt; (OUTPUT_CSV, OUTPUT_HTML): one row per image; an image that cannot be rectified gets its error in the table and the others go on.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;يصحّح كل مرئية في المجلد يجاورها ملف &lt;i&gt;.points&lt;/i&gt; من Georeferencer في QGIS (scan.tif + scan.tif.points)، بتحويل ثابت أو بالتحويل الموصى به لكل مرئية، ويكتب جدول ملخص واحداً: المرئية، التحويل، RMS_T، RMS_T نقاط التحقق / ترك واحدة، الحكم.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;مجلد الإدخال&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التحويل&lt;/b&gt; (TRANSFORMATION، الافتراضي 8 = الموصى به لكل مرئية؛ 0 كثيرة حدود من الدرجة ORDER، 1–3 كثيرة حدود 1–3، 4 خطي، 5 هلمرت، 6 إسقاطي، 7 شريحة الصفيحة الرقيقة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجة كثيرة الحدود&lt;/b&gt; (ORDER، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تنقيح النقاط&lt;/b&gt; (REFINE، الافتراضي معطّل): حذف النقاط فوق حدّ C5 أي 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام إحداثيات النقاط&lt;/b&gt; (GCP_CRS): لملفات .points التي لا سطر '#CRS:' فيها.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إعادة المعاينة&lt;/b&gt; (RESAMPLING، الافتراضي 0 = الأقرب).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مجلد الإخراج&lt;/b&gt; (OUTPUT_FOLDER): ‏image_rectified.tif لكل مرئية، يُكتب كل منها كاملاً أو لا يُكتب.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الملخص&lt;/b&gt; (OUTPUT_CSV، OUTPUT_HTML): سطر لكل مرئية؛ المرئية التي يتعذر تصحيحها يُسجَّل خطؤها في الجدول وتستمر البقية.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Folder of images with .points files</source>
+            <translation>مجلد المرئيات مع ملفات .points</translation>
+        </message>
+        <message>
+            <source>Transformation</source>
+            <translation>التحويل</translation>
+        </message>
+        <message>
+            <source>polynomial of order ORDER</source>
+            <translation>كثيرة حدود من الدرجة ORDER</translation>
+        </message>
+        <message>
+            <source>polynomial order 1 (affine)</source>
+            <translation>كثيرة حدود من الدرجة 1 (تآلفي)</translation>
+        </message>
+        <message>
+            <source>polynomial order 2</source>
+            <translation>كثيرة حدود من الدرجة 2</translation>
+        </message>
+        <message>
+            <source>polynomial order 3</source>
+            <translation>كثيرة حدود من الدرجة 3</translation>
+        </message>
+        <message>
+            <source>linear (shift and scale per axis)</source>
+            <translation>خطي (إزاحة ومقياس لكل محور)</translation>
+        </message>
+        <message>
+            <source>Helmert (shift, scale, rotation)</source>
+            <translation>هلمرت (إزاحة، مقياس، دوران)</translation>
+        </message>
+        <message>
+            <source>projective (homography)</source>
+            <translation>إسقاطي (تحويل متجانس)</translation>
+        </message>
+        <message>
+            <source>thin-plate spline</source>
+            <translation>شريحة الصفيحة الرقيقة</translation>
+        </message>
+        <message>
+            <source>recommended (lowest check-point / leave-one-out error)</source>
+            <translation>الموصى به (أصغر خطأ على نقاط التحقق / ترك واحدة خارجاً)</translation>
+        </message>
+        <message>
+            <source>Polynomial order (1–3)</source>
+            <translation>درجة متعدد الحدود (1–3)</translation>
+        </message>
+        <message>
+            <source>Refine GCPs: drop the worst while over the tolerance</source>
+            <translation>تنقيح النقاط: حذف الأسوأ ما دام فوق التسامح</translation>
+        </message>
+        <message>
+            <source>CRS of the GCP map coordinates (if the file does not say)</source>
+            <translation>نظام الإحداثيات للإحداثيات الخرائطية لنقاط الضبط (إن لم يحدده الملف)</translation>
+        </message>
+        <message>
+            <source>Resampling</source>
+            <translation>إعادة الاعتيان</translation>
+        </message>
+        <message>
+            <source>Folder of rectified images</source>
+            <translation>مجلد المرئيات المصحّحة</translation>
+        </message>
+        <message>
+            <source>Summary table</source>
+            <translation>جدول الملخص</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>ملفات CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>Summary report</source>
+            <translation>تقرير الملخص</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
+        <name>RectifyGcpAlgorithm</name>
         <message>
             <source>georeference,georeferencer,gcp,ground control points,polynomial,rectification,warp,gdalwarp,rms,accuracy</source>
             <translation>إسناد جغرافي,georeferencer,gcp,نقاط الضبط الأرضي,متعدد الحدود,تصحيح هندسي,warp,gdalwarp,rms,الدقة</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Rectifies (warps) an image with ground control points and a 2-D polynomial of order 1, 2 or 3 through GDAL (same result as &lt;i&gt;gdalwarp -order N&lt;/i&gt;), and writes the accuracy report of the fit. The input image is never modified: the GCPs are attached to an in-memory copy.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;تصحِّح صورة هندسياً (warp) باستخدام نقاط الضبط الأرضي ومتعدد حدود ثنائي الأبعاد من الدرجة 1 أو 2 أو 3 عبر GDAL (النتيجة نفسها التي يعطيها &lt;i&gt;gdalwarp -order N&lt;/i&gt;)، وتكتب تقرير دقة المواءمة. لا تُعدَّل صورة الإدخال أبداً: تُرفق نقاط الضبط بنسخة منها في الذاكرة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT): الراستر المراد تصحيحه.&lt;/li&gt;</translation>
         </message>
         <message>
             <source>Target CRS [default: the GCP CRS]</source>
@@ -1761,6 +1868,14 @@
         <message>
             <source>&lt;li&gt;&lt;b&gt;Target CRS&lt;/b&gt; (TARGET_CRS, default the GCP CRS): output CRS; GDAL reprojects after the polynomial.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest neighbour as in the paper): 0 near, 1 bilinear, 2 cubic, 3 cubic spline, 4 Lanczos, 5 average, 6 mode.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output resolution&lt;/b&gt; (RESOLUTION, target-CRS units, default GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Nodata&lt;/b&gt; (NODATA, optional): value outside the image footprint (default: the input's nodata, else 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rectified image&lt;/b&gt; (OUTPUT): GeoTIFF (written under a temporary name, renamed on success; nothing is left behind on failure).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML accuracy report.&lt;/li&gt;&lt;/ul&gt;</source>
             <translation>&lt;li&gt;&lt;b&gt;نظام الإحداثيات الهدف&lt;/b&gt; (TARGET_CRS، الافتراضي نظام إحداثيات نقاط الضبط): نظام إحداثيات المخرج؛ يعيد GDAL الإسقاط بعد تطبيق متعدد الحدود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إعادة الاعتيان&lt;/b&gt; (RESAMPLING، الافتراضي 0 = أقرب جار كما في البحث): 0 أقرب جار، 1 ثنائي الخطية، 2 تكعيبي، 3 شريحة تكعيبية (cubic spline)، 4 Lanczos، 5 المتوسط، 6 المنوال.&lt;/li&gt;&lt;li&gt;&lt;b&gt;دقة تمييز المخرج&lt;/b&gt; (RESOLUTION، بوحدات نظام الإحداثيات الهدف، الافتراضي GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;قيمة nodata&lt;/b&gt; (NODATA، اختياري): القيمة خارج حدود الصورة (الافتراضي: قيمة nodata في الإدخال، وإلا 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الصورة المصحَّحة هندسياً&lt;/b&gt; (OUTPUT): GeoTIFF (يُكتب باسم مؤقت ثم يُعاد تسميته عند النجاح؛ ولا يبقى أي أثر عند الفشل).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): تقرير دقة بصيغة HTML.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Rectify image with GCPs</source>
+            <translation>تصحيح مرئية بنقاط الضبط الأرضي</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Rectifies (warps) an image with ground control points through GDAL: a polynomial of order 1–3, a linear, Helmert, projective or thin-plate-spline transformation, or the one with the lowest check-point / leave-one-out error (as &lt;i&gt;gdalwarp -order N&lt;/i&gt; / &lt;i&gt;-tps&lt;/i&gt;), and writes the accuracy report. The input image is never modified.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 REFINE=true OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;يصحّح (يعيد تشكيل) مرئية بنقاط الضبط الأرضي عبر GDAL: كثيرة حدود من الدرجة 1–3، أو تحويل خطي أو هلمرت أو إسقاطي أو شريحة الصفيحة الرقيقة، أو التحويل صاحب أصغر خطأ على نقاط التحقق / ترك واحدة (مثل &lt;i&gt;gdalwarp -order N&lt;/i&gt; / &lt;i&gt;-tps&lt;/i&gt;)، ويكتب تقرير الدقة. لا تُعدَّل المرئية المدخلة أبداً.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 REFINE=true OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;المرئية&lt;/b&gt; (INPUT): الراستر المراد تصحيحه.&lt;/li&gt;</translation>
         </message>
     </context>
     <context>
@@ -2145,6 +2260,58 @@
         <message>
             <source>The GCP CRS is geographic (degrees): the accuracy criteria need map units of length. Set TARGET_CRS (or GCP_CRS) to a projected CRS, e.g. the UTM zone of the image.</source>
             <translation>نظام إحداثيات نقاط الضبط جغرافي (بالدرجات): تتطلب معايير الدقة وحدات خريطة طولية. اضبط TARGET_CRS (أو GCP_CRS) على نظام إحداثيات مُسقَط، مثل نطاق UTM الذي تقع فيه الصورة.</translation>
+        </message>
+        <message>
+            <source>Transformation</source>
+            <translation>التحويل</translation>
+        </message>
+        <message>
+            <source>polynomial of order ORDER</source>
+            <translation>كثيرة حدود من الدرجة ORDER</translation>
+        </message>
+        <message>
+            <source>polynomial order 1 (affine)</source>
+            <translation>كثيرة حدود من الدرجة 1 (تآلفي)</translation>
+        </message>
+        <message>
+            <source>polynomial order 2</source>
+            <translation>كثيرة حدود من الدرجة 2</translation>
+        </message>
+        <message>
+            <source>polynomial order 3</source>
+            <translation>كثيرة حدود من الدرجة 3</translation>
+        </message>
+        <message>
+            <source>linear (shift and scale per axis)</source>
+            <translation>خطي (إزاحة ومقياس لكل محور)</translation>
+        </message>
+        <message>
+            <source>Helmert (shift, scale, rotation)</source>
+            <translation>هلمرت (إزاحة، مقياس، دوران)</translation>
+        </message>
+        <message>
+            <source>projective (homography)</source>
+            <translation>إسقاطي (تحويل متجانس)</translation>
+        </message>
+        <message>
+            <source>thin-plate spline</source>
+            <translation>شريحة الصفيحة الرقيقة</translation>
+        </message>
+        <message>
+            <source>recommended (lowest check-point / leave-one-out error)</source>
+            <translation>الموصى به (أصغر خطأ على نقاط التحقق / ترك واحدة خارجاً)</translation>
+        </message>
+        <message>
+            <source>Refine GCPs: drop the worst while over the tolerance</source>
+            <translation>تنقيح النقاط: حذف الأسوأ ما دام فوق التسامح</translation>
+        </message>
+        <message>
+            <source>Refinement tolerance (map units) [default: C5 limit 5·GR]</source>
+            <translation>تسامح التنقيح (وحدات الخريطة) [الافتراضي: حدّ C5 أي 5·GR]</translation>
+        </message>
+        <message>
+            <source>Minimum GCPs kept by the refinement [default: minimum + 2]</source>
+            <translation>أدنى عدد نقاط يبقيه التنقيح [الافتراضي: الحدّ الأدنى + 2]</translation>
         </message>
     </context>
     <context>

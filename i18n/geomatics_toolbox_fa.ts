@@ -107,6 +107,18 @@
             <source>failed</source>
             <translation>ناموفق</translation>
         </message>
+        <message>
+            <source>check-point RMS_T</source>
+            <translation>RMS_T نقاط چک</translation>
+        </message>
+        <message>
+            <source>map X</source>
+            <translation>X نقشه</translation>
+        </message>
+        <message>
+            <source>map Y</source>
+            <translation>Y نقشه</translation>
+        </message>
     </context>
     <context>
         <name>BuildingsAlgorithm</name>
@@ -614,10 +626,6 @@
             <translation>زمین‌مرجع‌سازی,gcp,نقاط کنترل زمینی,rms,باقی‌مانده‌ها,دقت,نقاط چک,حذف‌یکی,چندجمله‌ای,georeferencer</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Judges a set of ground control points without warping: fits polynomials of order 1, 2 and 3, reports the residuals and the paper's criteria for the chosen order, compares the three orders and recommends one.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;مجموعه‌ای از نقاط کنترل زمینی را بدون تبدیل هندسی تصویر ارزیابی می‌کند: چندجمله‌ای‌های درجهٔ 1، 2 و 3 را برازش می‌دهد، باقی‌مانده‌ها و معیارهای مقاله را برای درجهٔ انتخاب‌شده گزارش می‌کند، سه درجه را با هم مقایسه می‌کند و یکی را پیشنهاد می‌دهد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif ORDER=2 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;تصویر&lt;/b&gt; (INPUT، اختیاری): ابعاد تصویر را می‌دهد (نقاط کنترل بیرون از آن خطا به شمار می‌آیند؛ ربع‌ها و نمودار از محدودهٔ آن استفاده می‌کنند). بدون آن، IMAGE_WIDTH و IMAGE_HEIGHT (پیکسل) را بدهید، وگرنه مرکز ثقل نقاط کنترل به کار می‌رود.&lt;/li&gt;</translation>
-        </message>
-        <message>
             <source>Image width (px) if no image is given</source>
             <translation>عرض تصویر (پیکسل) اگر تصویری داده نشود</translation>
         </message>
@@ -656,6 +664,10 @@
         <message>
             <source>&lt;p&gt;Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, …) for the graphical modeler.&lt;/p&gt;</source>
             <translation>&lt;p&gt;هر رقم خلاصهٔ نتایج یک خروجی عددی نیز هست (RMS_T، RMS_T_QGIS، GR، SCALE، LOO_RMS_T، CHECK_RMS_T، RECOMMENDED_ORDER، ACCEPTED، RMS_T_ORDER1…3، …) برای طراح گرافیکی مدل.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Judges a set of ground control points without warping: every transformation (polynomial 1–3, linear, Helmert, projective, thin-plate spline) side by side by the paper's criteria on check points and leave-one-out residuals, with the recommended one and why.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif TRANSFORMATION=8 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;مجموعه‌ای از نقاط کنترل زمینی را بدون تصحیح تصویر داوری می‌کند: همهٔ تبدیل‌ها (چندجمله‌ای 1–3، خطی، هلمرت، تصویری، اسپلاین صفحهٔ نازک) در کنار هم با معیارهای مقاله روی نقاط چک و باقیمانده‌های حذف‌یکی، همراه با تبدیل پیشنهادی و دلیل آن.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif TRANSFORMATION=8 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;تصویر&lt;/b&gt; (INPUT، اختیاری): ابعاد تصویر را می‌دهد (نقاط کنترل بیرون از آن خطا به شمار می‌آیند؛ ربع‌ها و نمودار از محدودهٔ آن استفاده می‌کنند). بدون آن، IMAGE_WIDTH و IMAGE_HEIGHT (پیکسل) را بدهید، وگرنه مرکز ثقل نقاط کنترل به کار می‌رود.&lt;/li&gt;</translation>
         </message>
     </context>
     <context>
@@ -859,6 +871,10 @@
         <message>
             <source>no</source>
             <translation>خیر</translation>
+        </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 0): 0 polynomial of order ORDER; 1–3 polynomial of order 1, 2, 3; 4 linear (shift and scale per axis, ≥ 2 GCPs); 5 Helmert (shift, one scale, one rotation, ≥ 2); 6 projective (homography, ≥ 4); 7 thin-plate spline (through every GCP, ≥ 3, as gdalwarp -tps); 8 recommended: every transformation is compared and the one with the lowest check-point (else leave-one-out) error is used, the simplest within 10 % of the best.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): as gdalwarp -refine_gcps, drop the GCP with the largest residual while it exceeds the tolerance, then refit; the dropped points are listed in the report.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refinement tolerance&lt;/b&gt; (REFINE_TOLERANCE, map units, default the C5 per-point limit 0.25 mm·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum GCPs&lt;/b&gt; (MIN_GCPS, default the transformation's minimum + 2): the refinement never goes below this count.&lt;/li&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;تبدیل&lt;/b&gt; (TRANSFORMATION، پیش‌فرض 0): 0 چندجمله‌ای درجهٔ ORDER؛ 1–3 چندجمله‌ای درجهٔ 1، 2، 3؛ 4 خطی (انتقال و مقیاس برای هر محور، ≥ 2 نقطه)؛ 5 هلمرت (انتقال، یک مقیاس، یک دوران، ≥ 2)؛ 6 تصویری (هموگرافی، ≥ 4)؛ 7 اسپلاین صفحهٔ نازک (از همهٔ نقاط می‌گذرد، ≥ 3، مانند gdalwarp -tps)؛ 8 پیشنهادی: همهٔ تبدیل‌ها مقایسه می‌شوند و تبدیلی با کمترین خطای نقاط چک (وگرنه حذف‌یکی) به کار می‌رود، ساده‌ترین در محدودهٔ 10 % بهترین.&lt;/li&gt;&lt;li&gt;&lt;b&gt;پالایش نقاط&lt;/b&gt; (REFINE، پیش‌فرض خاموش): مانند gdalwarp -refine_gcps، نقطهٔ با بزرگ‌ترین باقیمانده تا وقتی از تلورانس بیشتر است حذف و برازش تکرار می‌شود؛ نقاط حذف‌شده در گزارش فهرست می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تلورانس پالایش&lt;/b&gt; (REFINE_TOLERANCE، واحد نقشه، پیش‌فرض حد نقطه‌ای C5 یعنی 0.25 mm·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداقل نقاط&lt;/b&gt; (MIN_GCPS، پیش‌فرض حداقل تبدیل + 2): پالایش هرگز به کمتر از این تعداد نمی‌رسد.&lt;/li&gt;</translation>
         </message>
     </context>
     <context>
@@ -1713,18 +1729,109 @@
         </message>
     </context>
     <context>
-        <name>RectifyGcpAlgorithm</name>
+        <name>RectifyBatchAlgorithm</name>
         <message>
-            <source>Rectify image with GCPs (polynomial)</source>
-            <translation>تصحیح هندسی تصویر با نقاط کنترل زمینی (چندجمله‌ای)</translation>
+            <source>Rectify a folder of images with GCPs (batch)</source>
+            <translation>تصحیح پوشه‌ای از تصاویر با نقاط کنترل (دسته‌ای)</translation>
         </message>
+        <message>
+            <source>Warps every image of a folder with its .points file and summarises the accuracy in one table.</source>
+            <translation>هر تصویر پوشه را با فایل ‎.points‎ آن تصحیح و دقت را در یک جدول خلاصه می‌کند.</translation>
+        </message>
+        <message>
+            <source>georeference,gcp,batch,folder,rectification,warp,rms</source>
+            <translation>georeference,gcp,batch,folder,rectification,warp,rms,زمین‌مرجع,دسته‌ای,پوشه,تصحیح</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Rectifies every image of a folder that has its QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file next to it (scan.tif + scan.tif.points), with a fixed transformation or the one recommended for each image, and writes one summary table: image, transformation, RMS_T, check-point / leave-one-out RMS_T, verdict.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Input folder&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 8 = recommended per image; 0 polynomial of order ORDER, 1–3 polynomial 1–3, 4 linear, 5 Helmert, 6 projective, 7 thin-plate spline).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): drop GCPs over the C5 limit 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): for .points files without a '#CRS:' line.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output folder&lt;/b&gt; (OUTPUT_FOLDER): image_rectified.tif per image, each written all-or-nothing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Summary&lt;/b&gt; (OUTPUT_CSV, OUTPUT_HTML): one row per image; an image that cannot be rectified gets its error in the table and the others go on.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;هر تصویر پوشه را که فایل &lt;i&gt;.points&lt;/i&gt; مربوط به Georeferencer در QGIS کنارش است (scan.tif + scan.tif.points)، با یک تبدیل ثابت یا تبدیل پیشنهادی برای هر تصویر تصحیح می‌کند و یک جدول خلاصه می‌نویسد: تصویر، تبدیل، RMS_T، RMS_T نقاط چک / حذف‌یکی، رأی.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;پوشهٔ ورودی&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تبدیل&lt;/b&gt; (TRANSFORMATION، پیش‌فرض 8 = پیشنهادی برای هر تصویر؛ 0 چندجمله‌ای درجهٔ ORDER، 1–3 چندجمله‌ای 1–3، 4 خطی، 5 هلمرت، 6 تصویری، 7 اسپلاین صفحهٔ نازک).&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجهٔ چندجمله‌ای&lt;/b&gt; (ORDER، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;پالایش نقاط&lt;/b&gt; (REFINE، پیش‌فرض خاموش): حذف نقاط بالای حد C5 یعنی 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات نقاط&lt;/b&gt; (GCP_CRS): برای فایل‌های .points بدون سطر '#CRS:'.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بازنمونه‌گیری&lt;/b&gt; (RESAMPLING، پیش‌فرض 0 = نزدیک‌ترین).&lt;/li&gt;&lt;li&gt;&lt;b&gt;پوشهٔ خروجی&lt;/b&gt; (OUTPUT_FOLDER): ‏image_rectified.tif برای هر تصویر، هر کدام همه‌یا‌هیچ نوشته می‌شود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;خلاصه&lt;/b&gt; (OUTPUT_CSV، OUTPUT_HTML): یک سطر برای هر تصویر؛ خطای تصویری که تصحیح نشود در جدول می‌آید و بقیه ادامه می‌یابند.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Folder of images with .points files</source>
+            <translation>پوشهٔ تصاویر با فایل‌های .points</translation>
+        </message>
+        <message>
+            <source>Transformation</source>
+            <translation>تبدیل</translation>
+        </message>
+        <message>
+            <source>polynomial of order ORDER</source>
+            <translation>چندجمله‌ای درجهٔ ORDER</translation>
+        </message>
+        <message>
+            <source>polynomial order 1 (affine)</source>
+            <translation>چندجمله‌ای درجهٔ 1 (آفین)</translation>
+        </message>
+        <message>
+            <source>polynomial order 2</source>
+            <translation>چندجمله‌ای درجهٔ 2</translation>
+        </message>
+        <message>
+            <source>polynomial order 3</source>
+            <translation>چندجمله‌ای درجهٔ 3</translation>
+        </message>
+        <message>
+            <source>linear (shift and scale per axis)</source>
+            <translation>خطی (انتقال و مقیاس برای هر محور)</translation>
+        </message>
+        <message>
+            <source>Helmert (shift, scale, rotation)</source>
+            <translation>هلمرت (انتقال، مقیاس، دوران)</translation>
+        </message>
+        <message>
+            <source>projective (homography)</source>
+            <translation>تصویری (هموگرافی)</translation>
+        </message>
+        <message>
+            <source>thin-plate spline</source>
+            <translation>اسپلاین صفحهٔ نازک</translation>
+        </message>
+        <message>
+            <source>recommended (lowest check-point / leave-one-out error)</source>
+            <translation>پیشنهادی (کمترین خطای نقاط چک / حذف‌یکی)</translation>
+        </message>
+        <message>
+            <source>Polynomial order (1–3)</source>
+            <translation>درجهٔ چندجمله‌ای (1–3)</translation>
+        </message>
+        <message>
+            <source>Refine GCPs: drop the worst while over the tolerance</source>
+            <translation>پالایش نقاط: حذف بدترین تا وقتی بالای تلورانس است</translation>
+        </message>
+        <message>
+            <source>CRS of the GCP map coordinates (if the file does not say)</source>
+            <translation>سیستم مختصاتِ مختصات نقشه‌ای نقاط کنترل (اگر پرونده آن را مشخص نکند)</translation>
+        </message>
+        <message>
+            <source>Resampling</source>
+            <translation>بازنمونه‌برداری</translation>
+        </message>
+        <message>
+            <source>Folder of rectified images</source>
+            <translation>پوشهٔ تصاویر تصحیح‌شده</translation>
+        </message>
+        <message>
+            <source>Summary table</source>
+            <translation>جدول خلاصه</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>پرونده‌های CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>Summary report</source>
+            <translation>گزارش خلاصه</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+    </context>
+    <context>
+        <name>RectifyGcpAlgorithm</name>
         <message>
             <source>georeference,georeferencer,gcp,ground control points,polynomial,rectification,warp,gdalwarp,rms,accuracy</source>
             <translation>زمین‌مرجع‌سازی,georeferencer,gcp,نقاط کنترل زمینی,چندجمله‌ای,تصحیح هندسی,warp,gdalwarp,rms,دقت</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Rectifies (warps) an image with ground control points and a 2-D polynomial of order 1, 2 or 3 through GDAL (same result as &lt;i&gt;gdalwarp -order N&lt;/i&gt;), and writes the accuracy report of the fit. The input image is never modified: the GCPs are attached to an in-memory copy.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;یک تصویر را با نقاط کنترل زمینی و یک چندجمله‌ای دوبعدی درجهٔ 1، 2 یا 3 از طریق GDAL تصحیح هندسی (warp) می‌کند (همان نتیجهٔ &lt;i&gt;gdalwarp -order N&lt;/i&gt;) و گزارش دقت برازش را می‌نویسد. تصویر ورودی هرگز تغییر نمی‌کند: نقاط کنترل به یک رونوشت در حافظه پیوست می‌شوند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points ORDER=2 RESAMPLING=0 OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;تصویر&lt;/b&gt; (INPUT): رستری که باید تصحیح شود.&lt;/li&gt;</translation>
         </message>
         <message>
             <source>Target CRS [default: the GCP CRS]</source>
@@ -1761,6 +1868,14 @@
         <message>
             <source>&lt;li&gt;&lt;b&gt;Target CRS&lt;/b&gt; (TARGET_CRS, default the GCP CRS): output CRS; GDAL reprojects after the polynomial.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest neighbour as in the paper): 0 near, 1 bilinear, 2 cubic, 3 cubic spline, 4 Lanczos, 5 average, 6 mode.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output resolution&lt;/b&gt; (RESOLUTION, target-CRS units, default GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Nodata&lt;/b&gt; (NODATA, optional): value outside the image footprint (default: the input's nodata, else 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rectified image&lt;/b&gt; (OUTPUT): GeoTIFF (written under a temporary name, renamed on success; nothing is left behind on failure).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML accuracy report.&lt;/li&gt;&lt;/ul&gt;</source>
             <translation>&lt;li&gt;&lt;b&gt;سیستم مختصات مقصد&lt;/b&gt; (TARGET_CRS، پیش‌فرض سیستم مختصات نقاط کنترل): سیستم مختصات خروجی؛ GDAL پس از اعمال چندجمله‌ای بازتصویر می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بازنمونه‌برداری&lt;/b&gt; (RESAMPLING، پیش‌فرض 0 = نزدیک‌ترین همسایه مانند مقاله): 0 نزدیک‌ترین همسایه، 1 دوخطی، 2 مکعبی، 3 اسپلاین مکعبی، 4 Lanczos، 5 میانگین، 6 مُد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;قدرت تفکیک خروجی&lt;/b&gt; (RESOLUTION، به واحد سیستم مختصات مقصد، پیش‌فرض GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مقدار nodata&lt;/b&gt; (NODATA، اختیاری): مقدار بیرون از محدودهٔ تصویر (پیش‌فرض: nodata ورودی، وگرنه 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تصویر تصحیح‌شده&lt;/b&gt; (OUTPUT): GeoTIFF (با نامی موقت نوشته می‌شود و پس از موفقیت تغییر نام می‌یابد؛ در صورت شکست چیزی باقی نمی‌ماند).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): گزارش دقت HTML.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Rectify image with GCPs</source>
+            <translation>تصحیح تصویر با نقاط کنترل زمینی</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Rectifies (warps) an image with ground control points through GDAL: a polynomial of order 1–3, a linear, Helmert, projective or thin-plate-spline transformation, or the one with the lowest check-point / leave-one-out error (as &lt;i&gt;gdalwarp -order N&lt;/i&gt; / &lt;i&gt;-tps&lt;/i&gt;), and writes the accuracy report. The input image is never modified.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 REFINE=true OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
+            <translation>&lt;p&gt;تصویری را با نقاط کنترل زمینی از طریق GDAL تصحیح (بازنمونه) می‌کند: چندجمله‌ای درجهٔ 1–3، تبدیل خطی، هلمرت، تصویری یا اسپلاین صفحهٔ نازک، یا تبدیلی با کمترین خطای نقاط چک / حذف‌یکی (مانند &lt;i&gt;gdalwarp -order N&lt;/i&gt; / &lt;i&gt;-tps&lt;/i&gt;)، و گزارش دقت را می‌نویسد. تصویر ورودی هرگز تغییر نمی‌کند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 REFINE=true OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;تصویر&lt;/b&gt; (INPUT): رستری که باید تصحیح شود.&lt;/li&gt;</translation>
         </message>
     </context>
     <context>
@@ -2145,6 +2260,58 @@
         <message>
             <source>The GCP CRS is geographic (degrees): the accuracy criteria need map units of length. Set TARGET_CRS (or GCP_CRS) to a projected CRS, e.g. the UTM zone of the image.</source>
             <translation>سیستم مختصات نقاط کنترل جغرافیایی (درجه) است: معیارهای دقت به واحدهای طولی نقشه نیاز دارند. TARGET_CRS (یا GCP_CRS) را روی یک سیستم مختصات تصویرشده تنظیم کنید، مثلاً زون UTM تصویر.</translation>
+        </message>
+        <message>
+            <source>Transformation</source>
+            <translation>تبدیل</translation>
+        </message>
+        <message>
+            <source>polynomial of order ORDER</source>
+            <translation>چندجمله‌ای درجهٔ ORDER</translation>
+        </message>
+        <message>
+            <source>polynomial order 1 (affine)</source>
+            <translation>چندجمله‌ای درجهٔ 1 (آفین)</translation>
+        </message>
+        <message>
+            <source>polynomial order 2</source>
+            <translation>چندجمله‌ای درجهٔ 2</translation>
+        </message>
+        <message>
+            <source>polynomial order 3</source>
+            <translation>چندجمله‌ای درجهٔ 3</translation>
+        </message>
+        <message>
+            <source>linear (shift and scale per axis)</source>
+            <translation>خطی (انتقال و مقیاس برای هر محور)</translation>
+        </message>
+        <message>
+            <source>Helmert (shift, scale, rotation)</source>
+            <translation>هلمرت (انتقال، مقیاس، دوران)</translation>
+        </message>
+        <message>
+            <source>projective (homography)</source>
+            <translation>تصویری (هموگرافی)</translation>
+        </message>
+        <message>
+            <source>thin-plate spline</source>
+            <translation>اسپلاین صفحهٔ نازک</translation>
+        </message>
+        <message>
+            <source>recommended (lowest check-point / leave-one-out error)</source>
+            <translation>پیشنهادی (کمترین خطای نقاط چک / حذف‌یکی)</translation>
+        </message>
+        <message>
+            <source>Refine GCPs: drop the worst while over the tolerance</source>
+            <translation>پالایش نقاط: حذف بدترین تا وقتی بالای تلورانس است</translation>
+        </message>
+        <message>
+            <source>Refinement tolerance (map units) [default: C5 limit 5·GR]</source>
+            <translation>تلورانس پالایش (واحد نقشه) [پیش‌فرض: حد C5 یعنی 5·GR]</translation>
+        </message>
+        <message>
+            <source>Minimum GCPs kept by the refinement [default: minimum + 2]</source>
+            <translation>حداقل نقاط باقی‌مانده پس از پالایش [پیش‌فرض: حداقل + 2]</translation>
         </message>
     </context>
     <context>
