@@ -876,6 +876,10 @@
             <source>&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 0): 0 polynomial of order ORDER; 1–3 polynomial of order 1, 2, 3; 4 linear (shift and scale per axis, ≥ 2 GCPs); 5 Helmert (shift, one scale, one rotation, ≥ 2); 6 projective (homography, ≥ 4); 7 thin-plate spline (through every GCP, ≥ 3, as gdalwarp -tps); 8 recommended: every transformation is compared and the one with the lowest check-point (else leave-one-out) error is used, the simplest within 10 % of the best.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): as gdalwarp -refine_gcps, drop the GCP with the largest residual while it exceeds the tolerance, then refit; the dropped points are listed in the report.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refinement tolerance&lt;/b&gt; (REFINE_TOLERANCE, map units, default the C5 per-point limit 0.25 mm·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum GCPs&lt;/b&gt; (MIN_GCPS, default the transformation's minimum + 2): the refinement never goes below this count.&lt;/li&gt;</source>
             <translation>&lt;li&gt;&lt;b&gt;التحويل&lt;/b&gt; (TRANSFORMATION، الافتراضي 0): 0 كثيرة حدود من الدرجة ORDER؛ 1–3 كثيرة حدود من الدرجة 1 أو 2 أو 3؛ 4 خطي (إزاحة ومقياس لكل محور، ≥ 2 نقطة)؛ 5 هلمرت (إزاحة ومقياس واحد ودوران واحد، ≥ 2)؛ 6 إسقاطي (تحويل متجانس، ≥ 4)؛ 7 شريحة الصفيحة الرقيقة (تمر بكل نقطة، ≥ 3، مثل gdalwarp -tps)؛ 8 الموصى به: تُقارَن جميع التحويلات ويُستخدم صاحب أصغر خطأ على نقاط التحقق (وإلا على ترك واحدة خارجاً)، والأبسط ضمن 10 % من الأفضل.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تنقيح النقاط&lt;/b&gt; (REFINE، الافتراضي معطّل): كما في gdalwarp -refine_gcps، تُحذف النقطة ذات أكبر باقٍ ما دام يتجاوز التسامح ثم يُعاد الملاءمة؛ وتُسرد النقاط المحذوفة في التقرير.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تسامح التنقيح&lt;/b&gt; (REFINE_TOLERANCE، بوحدات الخريطة، الافتراضي حدّ النقطة C5 أي 0.25 مم·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى عدد للنقاط&lt;/b&gt; (MIN_GCPS، الافتراضي الحدّ الأدنى للتحويل + 2): لا ينزل التنقيح تحت هذا العدد.&lt;/li&gt;</translation>
         </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point with class 2 ground, 1 other or 7 low noise; every other attribute, VLR and the CRS copied unchanged.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional) in REPORT_LANGUAGE (advanced).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, advanced, default yes): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE (class 7), POINTS_PER_SECOND (filter step only).&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;سحابة النقاط المصنفة&lt;/b&gt; (OUTPUT، ‎.laz/.las): كل نقطة بالصنف 2 أرض أو 1 أخرى أو 7 ضجيج منخفض؛ وتُنسخ كل السمات الأخرى وسجلات VLR ونظام الإحداثيات دون تغيير.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط الأرض&lt;/b&gt; (GROUND_OUTPUT، اختياري): نقاط الأرض فقط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري) بلغة REPORT_LANGUAGE (متقدم).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الإبقاء على أصناف الضجيج الموجودة&lt;/b&gt; (KEEP_NOISE، متقدم، الافتراضي نعم): النقاط المصنفة مسبقاً 7 أو 18 تحتفظ بصنفها ولا تشارك.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;الأرقام المُخرَجة: N_POINTS، N_GROUND، N_NONGROUND، N_NOISE (الصنف 7)، POINTS_PER_SECOND (خطوة المرشح فقط).&lt;/p&gt;</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>
@@ -957,6 +961,61 @@
         <message>
             <source>A copy of the filtered cloud; style it by user_data to map the errors.</source>
             <translation>نسخة من السحابة المرشَّحة؛ رمّزها حسب user_data لترى الأخطاء على الخريطة.</translation>
+        </message>
+    </context>
+    <context>
+        <name>GroundFilterAlgorithm</name>
+        <message>
+            <source>Ground filter (recommended)</source>
+            <translation>مرشح الأرض (الموصى به)</translation>
+        </message>
+        <message>
+            <source>Classifies ground in a LAS/LAZ cloud with no parameter to set.</source>
+            <translation>يصنّف الأرض في سحابة LAS/LAZ دون أي معامل يجب ضبطه.</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013, after Zhang et al. 2003) whose raster cell and slope tolerance are derived from the cloud itself (point density, terrain slope), followed by three passes that rebuild the terrain from the points accepted and re-test every point against it.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz — nothing else.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Measured accuracy&lt;/b&gt; (total error, Sithole &amp;amp; Vosselman 2004) on the 8 ISPRS filter-test samples 11, 12, 22, 31, 41, 53, 54, 61: mean 4.06 % at these defaults; SMRF with PDAL's defaults 5.75 % in the same script. The defaults were chosen on these samples: the honest, cross-validated figure (leave one sample out) is 4.42 %; worst sample 9.82 % (samp11, steep terrain with buildings). Beats SMRF on 5 of the 8 samples.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz in a projected CRS (metres); 0.2 to 20+ points/m².&lt;/li&gt;&lt;li&gt;Advanced overrides (0 = derived from the cloud): &lt;b&gt;CELL&lt;/b&gt; (m, default 0 → 1 m), &lt;b&gt;MAX_WINDOW&lt;/b&gt; (m, default 18; must exceed the largest building), &lt;b&gt;SLOPE&lt;/b&gt; (rise/run, default 0 → 0.5 × local terrain slope, 0.10 to 0.60), &lt;b&gt;THRESHOLD&lt;/b&gt; (m, default 0.5; plus 1.25 m per unit of terrain slope), &lt;b&gt;REFINE&lt;/b&gt; (passes, default 3).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, advanced, default no): the filter finds low noise itself; yes runs the shared pre-filter first (NOISE_RADIUS m, default 5; NOISE_THRESHOLD m, default 1).&lt;/li&gt;</source>
+            <translation>&lt;p&gt;يصنّف سحابة نقاط LAS/LAZ إلى أرض (الصنف 2) ونقاط أخرى (الصنف 1) وضجيج منخفض (الصنف 7) دون أي معامل يجب ضبطه: مرشح مورفولوجي تدريجي (Pingel وآخرون 2013، بعد Zhang وآخرين 2003) تُشتق خلية شبكته النقطية وسماحية انحداره من السحابة نفسها (كثافة النقاط، انحدار التضاريس)، تليه ثلاث تمريرات تعيد بناء التضاريس من النقاط المقبولة وتعيد اختبار كل نقطة مقابلها.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz — لا شيء غير ذلك.&lt;/p&gt;&lt;p&gt;&lt;b&gt;الدقة المقيسة&lt;/b&gt; (الخطأ الكلي، Sithole &amp;amp; Vosselman 2004) على عينات اختبار المرشحات الثماني من ISPRS ‏11، 12، 22، 31، 41، 53، 54، 61: المتوسط 4.06 % بهذه القيم الافتراضية؛ وSMRF بقيم PDAL الافتراضية 5.75 % في البرنامج نفسه. اختيرت القيم الافتراضية على هذه العينات: الرقم الصادق بالتحقق المتقاطع (ترك عينة واحدة خارجاً) هو 4.42 %؛ أسوأ عينة 9.82 % (samp11، تضاريس شديدة الانحدار مع مبانٍ). يتفوق على SMRF في 5 من 8 عينات.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف ‎.las أو ‎.laz في نظام إحداثيات مسقط (أمتار)؛ من 0.2 إلى أكثر من 20 نقطة/م².&lt;/li&gt;&lt;li&gt;تجاوزات متقدمة (0 = مشتقة من السحابة): &lt;b&gt;CELL&lt;/b&gt; (م، الافتراضي 0 ← 1 م)، &lt;b&gt;MAX_WINDOW&lt;/b&gt; (م، الافتراضي 18؛ يجب أن يتجاوز أكبر مبنى)، &lt;b&gt;SLOPE&lt;/b&gt; (ارتفاع/مسافة، الافتراضي 0 ← 0.5 × انحدار التضاريس المحلي، من 0.10 إلى 0.60)، &lt;b&gt;THRESHOLD&lt;/b&gt; (م، الافتراضي 0.5؛ زائد 1.25 م لكل وحدة من انحدار التضاريس)، &lt;b&gt;REFINE&lt;/b&gt; (تمريرات، الافتراضي 3).&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة النقاط الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، متقدم، الافتراضي لا): يجد المرشح الضجيج المنخفض بنفسه؛ نعم تشغّل المرشح المسبق المشترك أولاً (NOISE_RADIUS م، الافتراضي 5؛ NOISE_THRESHOLD م، الافتراضي 1).&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;References: Pingel, T. J., Clarke, K. C. &amp;amp; McBride, W. A. (2013), ISPRS J. Photogramm. Remote Sens. 77, 21–30; Zhang, K. et al. (2003), IEEE TGRS 41(4), 872–882.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;المراجع: Pingel, T. J., Clarke, K. C. &amp;amp; McBride, W. A. (2013), ISPRS J. Photogramm. Remote Sens. 77, 21–30؛ Zhang, K. et al. (2003), IEEE TGRS 41(4), 872–882.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Raster cell, 0 = derived (m)</source>
+            <translation>خلية الشبكة النقطية، 0 = مشتقة (م)</translation>
+        </message>
+        <message>
+            <source>Largest window, &gt; largest building (m)</source>
+            <translation>أكبر نافذة، &gt; أكبر مبنى (م)</translation>
+        </message>
+        <message>
+            <source>Slope tolerance, 0 = derived (rise/run)</source>
+            <translation>سماحية الانحدار، 0 = مشتقة (ارتفاع/مسافة)</translation>
+        </message>
+        <message>
+            <source>Height tolerance (m)</source>
+            <translation>سماحية الارتفاع (م)</translation>
+        </message>
+        <message>
+            <source>Refinement passes</source>
+            <translation>تمريرات التحسين</translation>
+        </message>
+        <message>
+            <source>Remove low outliers first (class 7)</source>
+            <translation>إزالة القيم الشاذة المنخفضة أولاً (الصنف 7)</translation>
+        </message>
+        <message>
+            <source>Low-outlier search cell (m)</source>
+            <translation>خلية البحث عن القيم الشاذة المنخفضة (م)</translation>
+        </message>
+        <message>
+            <source>Low-outlier depth below neighbours (m)</source>
+            <translation>عمق القيمة الشاذة المنخفضة تحت الجيران (م)</translation>
+        </message>
+        <message>
+            <source>Recommended ground filter: window {} m, threshold {} m, {} refinement passes</source>
+            <translation>مرشح الأرض الموصى به: نافذة {} م، عتبة {} م، {} تمريرات تحسين</translation>
         </message>
     </context>
     <context>
@@ -1729,6 +1788,65 @@
         </message>
     </context>
     <context>
+        <name>PtdGroundFilterAlgorithm</name>
+        <message>
+            <source>Ground filter (progressive TIN densification)</source>
+            <translation>مرشح الأرض (التكثيف التدريجي لشبكة TIN)</translation>
+        </message>
+        <message>
+            <source>Axelsson's progressive TIN densification ground filter.</source>
+            <translation>مرشح الأرض بالتكثيف التدريجي لشبكة TIN (Axelsson).</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): seeds are the lowest points of overlapping parcels larger than the largest building; the TIN is densified with every point close enough to its facet and seen under a small enough angle from its vertices, until no point is added. Pits and spikes are removed first by a step filter.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz MAX_BUILDING=50 for a town with 50 m buildings. On the 8 ISPRS samples its mean total error is 8.05 % at the defaults; use &lt;i&gt;Ground filter (recommended)&lt;/i&gt; unless you need a TIN filter.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell&lt;/b&gt; (CELL, m, default 2): lowest point per cell for the step filter and the seeds.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Parcel size&lt;/b&gt; (MAX_BUILDING, m, default 30): larger than the largest building (30–50 m).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance to facet&lt;/b&gt; (MAX_DISTANCE, m, default 1.5) and &lt;b&gt;angle to vertices&lt;/b&gt; (MAX_ANGLE, degrees, default 18): densification limits.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Shortest facet edge&lt;/b&gt; (MIN_EDGE, m, default 1, advanced), &lt;b&gt;iteration cap&lt;/b&gt; (MAX_ITERATIONS, default 150, advanced).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Final distance&lt;/b&gt; (FINAL_DISTANCE, m, default 0.5): points this close to the final TIN are ground; &lt;b&gt;low-noise depth&lt;/b&gt; (LOW_NOISE_DEPTH, m, default 1.5): points deeper below it get class 7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Seed drop&lt;/b&gt; (SEED_DROP, %, default 0.3, advanced): lowest share of each parcel skipped before picking its seed.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes; NOISE_RADIUS m, 5; NOISE_THRESHOLD m, 1).&lt;/li&gt;</source>
+            <translation>&lt;p&gt;يصنّف سحابة نقاط LAS/LAZ إلى أرض (الصنف 2) ونقاط أخرى (الصنف 1) وضجيج منخفض (الصنف 7) بالتكثيف التدريجي لشبكة TIN ‏(Axelsson 2000): البذور هي أدنى نقاط قطع متداخلة أكبر من أكبر مبنى؛ وتُكثَّف الشبكة بكل نقطة قريبة بما يكفي من وجهها وتُرى بزاوية صغيرة بما يكفي من رؤوسه، حتى لا تُضاف أي نقطة. تُزال الحفر والنتوءات أولاً بمرشح الدرجات.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz MAX_BUILDING=50 لمدينة مبانيها 50 م. متوسط خطئه الكلي على عينات ISPRS الثماني 8.05 % بالقيم الافتراضية؛ استخدم &lt;i&gt;مرشح الأرض (الموصى به)&lt;/i&gt; ما لم تحتج إلى مرشح TIN.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ‎.las أو ‎.laz في نظام إحداثيات مسقط (أمتار).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الخلية&lt;/b&gt; (CELL، م، الافتراضي 2): أدنى نقطة لكل خلية لمرشح الدرجات والبذور.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم القطعة&lt;/b&gt; (MAX_BUILDING، م، الافتراضي 30): أكبر من أكبر مبنى (30–50 م).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المسافة إلى الوجه&lt;/b&gt; (MAX_DISTANCE، م، الافتراضي 1.5) و&lt;b&gt;الزاوية إلى الرؤوس&lt;/b&gt; (MAX_ANGLE، درجات، الافتراضي 18): حدود التكثيف.&lt;/li&gt;&lt;li&gt;&lt;b&gt;أقصر ضلع للوجه&lt;/b&gt; (MIN_EDGE، م، الافتراضي 1، متقدم)، &lt;b&gt;الحد الأقصى للتكرارات&lt;/b&gt; (MAX_ITERATIONS، الافتراضي 150، متقدم).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المسافة النهائية&lt;/b&gt; (FINAL_DISTANCE، م، الافتراضي 0.5): النقاط بهذا القرب من الشبكة النهائية أرض؛ &lt;b&gt;عمق الضجيج المنخفض&lt;/b&gt; (LOW_NOISE_DEPTH، م، الافتراضي 1.5): النقاط الأعمق تحتها تأخذ الصنف 7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نسبة البذور المُسقطة&lt;/b&gt; (SEED_DROP، %، الافتراضي 0.3، متقدم): أدنى نسبة من كل قطعة تُتخطى قبل اختيار بذرتها.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة النقاط الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي نعم؛ NOISE_RADIUS م، 5؛ NOISE_THRESHOLD م، 1).&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Reference: Axelsson, P. (2000). DEM generation from laser scanner data using adaptive TIN models. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;المرجع: Axelsson, P. (2000). DEM generation from laser scanner data using adaptive TIN models. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Cell (m)</source>
+            <translation>الخلية (م)</translation>
+        </message>
+        <message>
+            <source>Parcel size, &gt; largest building (m)</source>
+            <translation>حجم القطعة، &gt; أكبر مبنى (م)</translation>
+        </message>
+        <message>
+            <source>Distance to facet (m)</source>
+            <translation>المسافة إلى الوجه (م)</translation>
+        </message>
+        <message>
+            <source>Angle to vertices (degrees)</source>
+            <translation>الزاوية إلى الرؤوس (درجات)</translation>
+        </message>
+        <message>
+            <source>Final distance (m)</source>
+            <translation>المسافة النهائية (م)</translation>
+        </message>
+        <message>
+            <source>Low-noise depth (m)</source>
+            <translation>عمق الضجيج المنخفض (م)</translation>
+        </message>
+        <message>
+            <source>Shortest facet edge (m)</source>
+            <translation>أقصر ضلع للوجه (م)</translation>
+        </message>
+        <message>
+            <source>Iteration cap</source>
+            <translation>الحد الأقصى للتكرارات</translation>
+        </message>
+        <message>
+            <source>Seed drop (%)</source>
+            <translation>نسبة البذور المُسقطة (%)</translation>
+        </message>
+        <message>
+            <source>PTD: parcels {} m, distance {} m, angle {}°</source>
+            <translation>PTD: قطع {} م، مسافة {} م، زاوية {}°</translation>
+        </message>
+    </context>
+    <context>
         <name>RectifyBatchAlgorithm</name>
         <message>
             <source>Rectify a folder of images with GCPs (batch)</source>
@@ -2387,6 +2505,61 @@
         <message>
             <source>GeoTIFF (float32, nodata −9999) in the cloud's CRS.</source>
             <translation>ملف GeoTIFF (float32، قيمة انعدام البيانات ‎−9999‎) بنظام إحداثيات السحابة.</translation>
+        </message>
+    </context>
+    <context>
+        <name>_GroundCommon</name>
+        <message>
+            <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,point cloud</source>
+            <translation>ليدار,las,laz,أرض,مرشح,تصنيف,نموذج تضاريس رقمي,أرض عارية,سحابة نقاط</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>سحابة النقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Keep existing noise classes (7, 18)</source>
+            <translation>الإبقاء على أصناف الضوضاء الموجودة (7, 18)</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>سحابة النقاط المصنَّفة</translation>
+        </message>
+        <message>
+            <source>Ground points</source>
+            <translation>نقاط الأرض</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>التقرير</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Points read</source>
+            <translation>النقاط المقروءة</translation>
+        </message>
+        <message>
+            <source>Ground points (class 2)</source>
+            <translation>نقاط الأرض (الصنف 2)</translation>
+        </message>
+        <message>
+            <source>Non-ground points (class 1)</source>
+            <translation>النقاط غير الأرضية (الصنف 1)</translation>
+        </message>
+        <message>
+            <source>Low outliers (class 7)</source>
+            <translation>القيم الشاذة المنخفضة (الصنف 7)</translation>
+        </message>
+        <message>
+            <source>Filter speed (points/s)</source>
+            <translation>سرعة الفلترة (نقطة/ث)</translation>
+        </message>
+        <message>
+            <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
+            <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الفلترة {:.1f} ث</translation>
         </message>
     </context>
     <context>

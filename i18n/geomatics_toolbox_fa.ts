@@ -876,6 +876,10 @@
             <source>&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 0): 0 polynomial of order ORDER; 1–3 polynomial of order 1, 2, 3; 4 linear (shift and scale per axis, ≥ 2 GCPs); 5 Helmert (shift, one scale, one rotation, ≥ 2); 6 projective (homography, ≥ 4); 7 thin-plate spline (through every GCP, ≥ 3, as gdalwarp -tps); 8 recommended: every transformation is compared and the one with the lowest check-point (else leave-one-out) error is used, the simplest within 10 % of the best.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): as gdalwarp -refine_gcps, drop the GCP with the largest residual while it exceeds the tolerance, then refit; the dropped points are listed in the report.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refinement tolerance&lt;/b&gt; (REFINE_TOLERANCE, map units, default the C5 per-point limit 0.25 mm·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum GCPs&lt;/b&gt; (MIN_GCPS, default the transformation's minimum + 2): the refinement never goes below this count.&lt;/li&gt;</source>
             <translation>&lt;li&gt;&lt;b&gt;تبدیل&lt;/b&gt; (TRANSFORMATION، پیش‌فرض 0): 0 چندجمله‌ای درجهٔ ORDER؛ 1–3 چندجمله‌ای درجهٔ 1، 2، 3؛ 4 خطی (انتقال و مقیاس برای هر محور، ≥ 2 نقطه)؛ 5 هلمرت (انتقال، یک مقیاس، یک دوران، ≥ 2)؛ 6 تصویری (هموگرافی، ≥ 4)؛ 7 اسپلاین صفحهٔ نازک (از همهٔ نقاط می‌گذرد، ≥ 3، مانند gdalwarp -tps)؛ 8 پیشنهادی: همهٔ تبدیل‌ها مقایسه می‌شوند و تبدیلی با کمترین خطای نقاط چک (وگرنه حذف‌یکی) به کار می‌رود، ساده‌ترین در محدودهٔ 10 % بهترین.&lt;/li&gt;&lt;li&gt;&lt;b&gt;پالایش نقاط&lt;/b&gt; (REFINE، پیش‌فرض خاموش): مانند gdalwarp -refine_gcps، نقطهٔ با بزرگ‌ترین باقیمانده تا وقتی از تلورانس بیشتر است حذف و برازش تکرار می‌شود؛ نقاط حذف‌شده در گزارش فهرست می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تلورانس پالایش&lt;/b&gt; (REFINE_TOLERANCE، واحد نقشه، پیش‌فرض حد نقطه‌ای C5 یعنی 0.25 mm·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداقل نقاط&lt;/b&gt; (MIN_GCPS، پیش‌فرض حداقل تبدیل + 2): پالایش هرگز به کمتر از این تعداد نمی‌رسد.&lt;/li&gt;</translation>
         </message>
+        <message>
+            <source>&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point with class 2 ground, 1 other or 7 low noise; every other attribute, VLR and the CRS copied unchanged.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional) in REPORT_LANGUAGE (advanced).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, advanced, default yes): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE (class 7), POINTS_PER_SECOND (filter step only).&lt;/p&gt;</source>
+            <translation>&lt;li&gt;&lt;b&gt;ابر نقاط طبقه‌بندی‌شده&lt;/b&gt; (OUTPUT، ‎.laz/.las): هر نقطه با کلاس 2 زمین، 1 دیگر یا 7 نویز پایین؛ همهٔ ویژگی‌های دیگر، VLRها و سیستم مختصات بی‌تغییر کپی می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط زمین&lt;/b&gt; (GROUND_OUTPUT، اختیاری): فقط نقاط زمین.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری) به زبان REPORT_LANGUAGE (پیشرفته).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حفظ کلاس‌های نویز موجود&lt;/b&gt; (KEEP_NOISE، پیشرفته، پیش‌فرض بله): نقاطی که از پیش 7 یا 18 هستند کلاس خود را نگه می‌دارند و شرکت نمی‌کنند.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: N_POINTS، N_GROUND، N_NONGROUND، N_NOISE (کلاس 7)، POINTS_PER_SECOND (فقط گام فیلتر).&lt;/p&gt;</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>
@@ -957,6 +961,61 @@
         <message>
             <source>A copy of the filtered cloud; style it by user_data to map the errors.</source>
             <translation>رونوشتی از ابر فیلترشده؛ آن را بر اساس user_data نمادپردازی کنید تا خطاها روی نقشه دیده شوند.</translation>
+        </message>
+    </context>
+    <context>
+        <name>GroundFilterAlgorithm</name>
+        <message>
+            <source>Ground filter (recommended)</source>
+            <translation>فیلتر زمین (پیشنهادی)</translation>
+        </message>
+        <message>
+            <source>Classifies ground in a LAS/LAZ cloud with no parameter to set.</source>
+            <translation>زمین را در ابر LAS/LAZ بدون هیچ پارامتری که لازم به تنظیم باشد طبقه‌بندی می‌کند.</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013, after Zhang et al. 2003) whose raster cell and slope tolerance are derived from the cloud itself (point density, terrain slope), followed by three passes that rebuild the terrain from the points accepted and re-test every point against it.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz — nothing else.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Measured accuracy&lt;/b&gt; (total error, Sithole &amp;amp; Vosselman 2004) on the 8 ISPRS filter-test samples 11, 12, 22, 31, 41, 53, 54, 61: mean 4.06 % at these defaults; SMRF with PDAL's defaults 5.75 % in the same script. The defaults were chosen on these samples: the honest, cross-validated figure (leave one sample out) is 4.42 %; worst sample 9.82 % (samp11, steep terrain with buildings). Beats SMRF on 5 of the 8 samples.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz in a projected CRS (metres); 0.2 to 20+ points/m².&lt;/li&gt;&lt;li&gt;Advanced overrides (0 = derived from the cloud): &lt;b&gt;CELL&lt;/b&gt; (m, default 0 → 1 m), &lt;b&gt;MAX_WINDOW&lt;/b&gt; (m, default 18; must exceed the largest building), &lt;b&gt;SLOPE&lt;/b&gt; (rise/run, default 0 → 0.5 × local terrain slope, 0.10 to 0.60), &lt;b&gt;THRESHOLD&lt;/b&gt; (m, default 0.5; plus 1.25 m per unit of terrain slope), &lt;b&gt;REFINE&lt;/b&gt; (passes, default 3).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, advanced, default no): the filter finds low noise itself; yes runs the shared pre-filter first (NOISE_RADIUS m, default 5; NOISE_THRESHOLD m, default 1).&lt;/li&gt;</source>
+            <translation>&lt;p&gt;ابر نقاط LAS/LAZ را بدون هیچ پارامتری که لازم به تنظیم باشد به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) طبقه‌بندی می‌کند: یک فیلتر ریخت‌شناسی تدریجی (Pingel و همکاران 2013، برگرفته از Zhang و همکاران 2003) که سلول رستر و تلورانس شیب آن از خود ابر (تراکم نقاط، شیب زمین) به دست می‌آید، و سپس سه گذر که زمین را از نقاط پذیرفته‌شده دوباره می‌سازند و هر نقطه را دوباره با آن می‌آزمایند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz — نه چیز دیگر.&lt;/p&gt;&lt;p&gt;&lt;b&gt;دقت اندازه‌گیری‌شده&lt;/b&gt; (خطای کل، Sithole &amp;amp; Vosselman 2004) روی 8 نمونهٔ آزمون فیلتر ISPRS ‏11، 12، 22، 31، 41، 53، 54، 61: میانگین 4.06 % با این پیش‌فرض‌ها؛ SMRF با پیش‌فرض‌های PDAL در همان اسکریپت 5.75 %. پیش‌فرض‌ها روی همین نمونه‌ها انتخاب شده‌اند: عدد صادقانهٔ اعتبارسنجی متقابل (کنار گذاشتن یک نمونه) 4.42 % است؛ بدترین نمونه 9.82 % (samp11، زمین پرشیب با ساختمان). در 5 نمونه از 8 نمونه از SMRF بهتر است.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): فایل ‎.las یا ‎.laz در سیستم مختصات تصویری (متر)؛ از 0.2 تا بیش از 20 نقطه بر متر مربع.&lt;/li&gt;&lt;li&gt;جایگزین‌های پیشرفته (0 = برگرفته از ابر): &lt;b&gt;CELL&lt;/b&gt; (متر، پیش‌فرض 0 ← 1 متر)، &lt;b&gt;MAX_WINDOW&lt;/b&gt; (متر، پیش‌فرض 18؛ باید از بزرگ‌ترین ساختمان بزرگ‌تر باشد)، &lt;b&gt;SLOPE&lt;/b&gt; (ارتفاع/فاصله، پیش‌فرض 0 ← 0.5 × شیب محلی زمین، از 0.10 تا 0.60)، &lt;b&gt;THRESHOLD&lt;/b&gt; (متر، پیش‌فرض 0.5؛ به‌علاوهٔ 1.25 متر به ازای هر واحد شیب زمین)، &lt;b&gt;REFINE&lt;/b&gt; (گذرها، پیش‌فرض 3).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حذف نقاط پرت پایین در آغاز&lt;/b&gt; (NOISE، پیشرفته، پیش‌فرض خیر): فیلتر خودش نویز پایین را می‌یابد؛ بله پیش‌فیلتر مشترک را اول اجرا می‌کند (NOISE_RADIUS متر، پیش‌فرض 5؛ NOISE_THRESHOLD متر، پیش‌فرض 1).&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;References: Pingel, T. J., Clarke, K. C. &amp;amp; McBride, W. A. (2013), ISPRS J. Photogramm. Remote Sens. 77, 21–30; Zhang, K. et al. (2003), IEEE TGRS 41(4), 872–882.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;مراجع: Pingel, T. J., Clarke, K. C. &amp;amp; McBride, W. A. (2013), ISPRS J. Photogramm. Remote Sens. 77, 21–30؛ Zhang, K. et al. (2003), IEEE TGRS 41(4), 872–882.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Raster cell, 0 = derived (m)</source>
+            <translation>سلول رستر، 0 = برگرفته (متر)</translation>
+        </message>
+        <message>
+            <source>Largest window, &gt; largest building (m)</source>
+            <translation>بزرگ‌ترین پنجره، &gt; بزرگ‌ترین ساختمان (متر)</translation>
+        </message>
+        <message>
+            <source>Slope tolerance, 0 = derived (rise/run)</source>
+            <translation>تلورانس شیب، 0 = برگرفته (ارتفاع/فاصله)</translation>
+        </message>
+        <message>
+            <source>Height tolerance (m)</source>
+            <translation>تلورانس ارتفاع (متر)</translation>
+        </message>
+        <message>
+            <source>Refinement passes</source>
+            <translation>گذرهای پالایش</translation>
+        </message>
+        <message>
+            <source>Remove low outliers first (class 7)</source>
+            <translation>حذف نقاط پرت پایین در آغاز (کلاس 7)</translation>
+        </message>
+        <message>
+            <source>Low-outlier search cell (m)</source>
+            <translation>سلول جست‌وجوی نقاط پرت پایین (متر)</translation>
+        </message>
+        <message>
+            <source>Low-outlier depth below neighbours (m)</source>
+            <translation>عمق نقطهٔ پرت پایین نسبت به همسایه‌ها (متر)</translation>
+        </message>
+        <message>
+            <source>Recommended ground filter: window {} m, threshold {} m, {} refinement passes</source>
+            <translation>فیلتر زمین پیشنهادی: پنجره {} متر، آستانه {} متر، {} گذر پالایش</translation>
         </message>
     </context>
     <context>
@@ -1729,6 +1788,65 @@
         </message>
     </context>
     <context>
+        <name>PtdGroundFilterAlgorithm</name>
+        <message>
+            <source>Ground filter (progressive TIN densification)</source>
+            <translation>فیلتر زمین (متراکم‌سازی تدریجی TIN)</translation>
+        </message>
+        <message>
+            <source>Axelsson's progressive TIN densification ground filter.</source>
+            <translation>فیلتر زمین با متراکم‌سازی تدریجی TIN (Axelsson).</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): seeds are the lowest points of overlapping parcels larger than the largest building; the TIN is densified with every point close enough to its facet and seen under a small enough angle from its vertices, until no point is added. Pits and spikes are removed first by a step filter.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz MAX_BUILDING=50 for a town with 50 m buildings. On the 8 ISPRS samples its mean total error is 8.05 % at the defaults; use &lt;i&gt;Ground filter (recommended)&lt;/i&gt; unless you need a TIN filter.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell&lt;/b&gt; (CELL, m, default 2): lowest point per cell for the step filter and the seeds.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Parcel size&lt;/b&gt; (MAX_BUILDING, m, default 30): larger than the largest building (30–50 m).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance to facet&lt;/b&gt; (MAX_DISTANCE, m, default 1.5) and &lt;b&gt;angle to vertices&lt;/b&gt; (MAX_ANGLE, degrees, default 18): densification limits.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Shortest facet edge&lt;/b&gt; (MIN_EDGE, m, default 1, advanced), &lt;b&gt;iteration cap&lt;/b&gt; (MAX_ITERATIONS, default 150, advanced).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Final distance&lt;/b&gt; (FINAL_DISTANCE, m, default 0.5): points this close to the final TIN are ground; &lt;b&gt;low-noise depth&lt;/b&gt; (LOW_NOISE_DEPTH, m, default 1.5): points deeper below it get class 7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Seed drop&lt;/b&gt; (SEED_DROP, %, default 0.3, advanced): lowest share of each parcel skipped before picking its seed.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes; NOISE_RADIUS m, 5; NOISE_THRESHOLD m, 1).&lt;/li&gt;</source>
+            <translation>&lt;p&gt;ابر نقاط LAS/LAZ را با متراکم‌سازی تدریجی TIN ‏(Axelsson 2000) به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) طبقه‌بندی می‌کند: بذرها پایین‌ترین نقاط قطعه‌های هم‌پوشان بزرگ‌تر از بزرگ‌ترین ساختمان‌اند؛ TIN با هر نقطه‌ای که به اندازهٔ کافی به وجه خود نزدیک است و با زاویهٔ به اندازهٔ کافی کوچک از رأس‌های آن دیده می‌شود متراکم می‌شود تا وقتی که نقطه‌ای افزوده نشود. گودال‌ها و برآمدگی‌ها ابتدا با فیلتر پله حذف می‌شوند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz MAX_BUILDING=50 برای شهری با ساختمان‌های 50 متری. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 8.05 % است؛ مگر به فیلتر TIN نیاز دارید، از &lt;i&gt;فیلتر زمین (پیشنهادی)&lt;/i&gt; استفاده کنید.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): ‎.las یا ‎.laz در سیستم مختصات تصویری (متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;سلول&lt;/b&gt; (CELL، متر، پیش‌فرض 2): پایین‌ترین نقطهٔ هر سلول برای فیلتر پله و بذرها.&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ قطعه&lt;/b&gt; (MAX_BUILDING، متر، پیش‌فرض 30): بزرگ‌تر از بزرگ‌ترین ساختمان (30 تا 50 متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;فاصله تا وجه&lt;/b&gt; (MAX_DISTANCE، متر، پیش‌فرض 1.5) و &lt;b&gt;زاویه تا رأس‌ها&lt;/b&gt; (MAX_ANGLE، درجه، پیش‌فرض 18): حدود متراکم‌سازی.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کوتاه‌ترین ضلع وجه&lt;/b&gt; (MIN_EDGE، متر، پیش‌فرض 1، پیشرفته)، &lt;b&gt;سقف تکرار&lt;/b&gt; (MAX_ITERATIONS، پیش‌فرض 150، پیشرفته).&lt;/li&gt;&lt;li&gt;&lt;b&gt;فاصلهٔ نهایی&lt;/b&gt; (FINAL_DISTANCE، متر، پیش‌فرض 0.5): نقاطی که این اندازه به TIN نهایی نزدیک‌اند زمین‌اند؛ &lt;b&gt;عمق نویز پایین&lt;/b&gt; (LOW_NOISE_DEPTH، متر، پیش‌فرض 1.5): نقاط عمیق‌تر از آن زیر TIN کلاس 7 می‌گیرند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کنارگذاری بذر&lt;/b&gt; (SEED_DROP، %، پیش‌فرض 0.3، پیشرفته): سهم پایین‌ترین نقاط هر قطعه که پیش از انتخاب بذر کنار گذاشته می‌شود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حذف نقاط پرت پایین در آغاز&lt;/b&gt; (NOISE، پیش‌فرض بله؛ NOISE_RADIUS متر، 5؛ NOISE_THRESHOLD متر، 1).&lt;/li&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Reference: Axelsson, P. (2000). DEM generation from laser scanner data using adaptive TIN models. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;مرجع: Axelsson, P. (2000). DEM generation from laser scanner data using adaptive TIN models. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Cell (m)</source>
+            <translation>سلول (متر)</translation>
+        </message>
+        <message>
+            <source>Parcel size, &gt; largest building (m)</source>
+            <translation>اندازهٔ قطعه، &gt; بزرگ‌ترین ساختمان (متر)</translation>
+        </message>
+        <message>
+            <source>Distance to facet (m)</source>
+            <translation>فاصله تا وجه (متر)</translation>
+        </message>
+        <message>
+            <source>Angle to vertices (degrees)</source>
+            <translation>زاویه تا رأس‌ها (درجه)</translation>
+        </message>
+        <message>
+            <source>Final distance (m)</source>
+            <translation>فاصلهٔ نهایی (متر)</translation>
+        </message>
+        <message>
+            <source>Low-noise depth (m)</source>
+            <translation>عمق نویز پایین (متر)</translation>
+        </message>
+        <message>
+            <source>Shortest facet edge (m)</source>
+            <translation>کوتاه‌ترین ضلع وجه (متر)</translation>
+        </message>
+        <message>
+            <source>Iteration cap</source>
+            <translation>سقف تکرار</translation>
+        </message>
+        <message>
+            <source>Seed drop (%)</source>
+            <translation>کنارگذاری بذر (%)</translation>
+        </message>
+        <message>
+            <source>PTD: parcels {} m, distance {} m, angle {}°</source>
+            <translation>PTD: قطعه‌ها {} متر، فاصله {} متر، زاویه {}°</translation>
+        </message>
+    </context>
+    <context>
         <name>RectifyBatchAlgorithm</name>
         <message>
             <source>Rectify a folder of images with GCPs (batch)</source>
@@ -2387,6 +2505,61 @@
         <message>
             <source>GeoTIFF (float32, nodata −9999) in the cloud's CRS.</source>
             <translation>فایل GeoTIFF (float32، مقدار بدون داده ‎−9999‎) در سامانهٔ مختصات ابر نقاط.</translation>
+        </message>
+    </context>
+    <context>
+        <name>_GroundCommon</name>
+        <message>
+            <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,point cloud</source>
+            <translation>لیدار,las,laz,زمین,فیلتر,طبقه‌بندی,مدل رقومی زمین,زمین برهنه,ابر نقاط</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>ابر نقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Keep existing noise classes (7, 18)</source>
+            <translation>حفظ کلاس‌های نویز موجود (7, 18)</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>ابر نقاط طبقه‌بندی‌شده</translation>
+        </message>
+        <message>
+            <source>Ground points</source>
+            <translation>نقاط زمینی</translation>
+        </message>
+        <message>
+            <source>Report</source>
+            <translation>گزارش</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Points read</source>
+            <translation>نقاط خوانده‌شده</translation>
+        </message>
+        <message>
+            <source>Ground points (class 2)</source>
+            <translation>نقاط زمینی (کلاس 2)</translation>
+        </message>
+        <message>
+            <source>Non-ground points (class 1)</source>
+            <translation>نقاط غیرزمینی (کلاس 1)</translation>
+        </message>
+        <message>
+            <source>Low outliers (class 7)</source>
+            <translation>نقاط پرت پایین (کلاس 7)</translation>
+        </message>
+        <message>
+            <source>Filter speed (points/s)</source>
+            <translation>سرعت فیلتر (نقطه/ثانیه)</translation>
+        </message>
+        <message>
+            <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
+            <translation>{} نقطه: {} زمینی، {} غیرزمینی، {} پرت پایین؛ فیلتر {:.1f} ثانیه</translation>
         </message>
     </context>
     <context>
