@@ -17,6 +17,7 @@ from qgis.core import (
 from ..core.rectification import batch, warp
 from .base import GeomaticsAlgorithm
 from .gcp_rectification import TRANSFORMATIONS
+from .helptext import build_help
 
 
 class RectifyBatchAlgorithm(GeomaticsAlgorithm):
@@ -47,29 +48,19 @@ class RectifyBatchAlgorithm(GeomaticsAlgorithm):
         return self.tr("georeference,gcp,batch,folder,rectification,warp,rms").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
-            "<p>Rectifies every image of a folder that has its QGIS Georeferencer "
-            "<i>.points</i> file next to it (scan.tif + scan.tif.points), with a fixed "
-            "transformation or the one recommended for each image, and writes one summary "
-            "table: image, transformation, RMS_T, check-point / leave-one-out RMS_T, "
-            "verdict.</p>"
-            "<p><b>Example</b>: INPUT_FOLDER=scans TRANSFORMATION=8 "
-            "OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Input folder</b> (INPUT_FOLDER).</li>"
-            "<li><b>Transformation</b> (TRANSFORMATION, default 8 = recommended per image; "
-            "0 polynomial of order ORDER, 1–3 polynomial 1–3, 4 linear, 5 Helmert, "
-            "6 projective, 7 thin-plate spline).</li>"
-            "<li><b>Polynomial order</b> (ORDER, default 1).</li>"
-            "<li><b>Refine GCPs</b> (REFINE, default off): drop GCPs over the C5 limit "
-            "5·GR.</li>"
-            "<li><b>GCP CRS</b> (GCP_CRS): for .points files without a '#CRS:' line.</li>"
-            "<li><b>Resampling</b> (RESAMPLING, default 0 = nearest).</li>"
-            "<li><b>Output folder</b> (OUTPUT_FOLDER): image_rectified.tif per image, "
-            "each written all-or-nothing.</li>"
-            "<li><b>Summary</b> (OUTPUT_CSV, OUTPUT_HTML): one row per image; an image "
-            "that cannot be rectified gets its error in the table and the others go "
-            "on.</li></ul>")
+        return build_help(self, self.tr(
+            "Rectifies every image of a folder that has its QGIS Georeferencer .points "
+            "file next to it, with a fixed transformation or the one recommended for each "
+            "image. It writes one summary table with the transformation, RMS_T, the check "
+            "or leave-one-out error and the verdict of every image."),
+            "INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified "
+            "OUTPUT_CSV=summary.csv OUTPUT_HTML=batch.html",
+            {self.INPUT_FOLDER: self.tr("Each image with its .points file next to it "
+                                        "(scan.tif + scan.tif.points)."),
+             self.TRANSFORMATION: self.tr("The last choice picks the recommended "
+                                          "transformation for each image."),
+             self.OUTPUT_FOLDER: self.tr("One rectified GeoTIFF per image, each written "
+                                         "all or nothing.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add(QgsProcessingParameterFile(
@@ -77,7 +68,7 @@ class RectifyBatchAlgorithm(GeomaticsAlgorithm):
             QgsProcessingParameterFile.Folder))
         self.add(QgsProcessingParameterEnum(
             self.TRANSFORMATION, self.tr("Transformation"),
-            [self.tr("polynomial of order ORDER"), self.tr("polynomial order 1 (affine)"),
+            [self.tr("polynomial of the order set below"), self.tr("polynomial order 1 (affine)"),
              self.tr("polynomial order 2"), self.tr("polynomial order 3"),
              self.tr("linear (shift and scale per axis)"),
              self.tr("Helmert (shift, scale, rotation)"),
@@ -99,7 +90,7 @@ class RectifyBatchAlgorithm(GeomaticsAlgorithm):
             self.OUTPUT_CSV, self.tr("Summary table"), self.tr("CSV files (*.csv)"),
             optional=True, createByDefault=True))
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Summary report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("Batch rectification report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=True))
         self.add_report_language()
         self.addOutput(QgsProcessingOutputNumber("N_IMAGES", "Images found"))

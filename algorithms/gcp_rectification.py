@@ -25,11 +25,11 @@ from qgis.core import (
     QgsProcessingParameterRasterLayer,
     QgsWkbTypes,
 )
-from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.io import gcp as gcp_io
 from ..core.rectification import assess, export, report, warp
 from .base import GeomaticsAlgorithm
+from .helptext import build_help
 
 PIXEL_ORIGINS = ("corner", "center")
 
@@ -56,62 +56,6 @@ NUMBERS = (
 TRANSFORMATIONS = (None, "polynomial1", "polynomial2", "polynomial3", "linear", "helmert",
                    "projective", "tps", assess.RECOMMENDED)
 
-_HELP_TRANSFORM = QT_TRANSLATE_NOOP(
-    "GeomaticsAlgorithm",
-    "<li><b>Transformation</b> (TRANSFORMATION, default 0): 0 polynomial of order ORDER; "
-    "1–3 polynomial of order 1, 2, 3; 4 linear (shift and scale per axis, ≥ 2 GCPs); "
-    "5 Helmert (shift, one scale, one rotation, ≥ 2); 6 projective (homography, ≥ 4); "
-    "7 thin-plate spline (through every GCP, ≥ 3, as gdalwarp -tps); 8 recommended: "
-    "every transformation is compared and the one with the lowest check-point (else "
-    "leave-one-out) error is used, the simplest within 10 % of the best.</li>"
-    "<li><b>Refine GCPs</b> (REFINE, default off): as gdalwarp -refine_gcps, drop the GCP "
-    "with the largest residual while it exceeds the tolerance, then refit; the dropped "
-    "points are listed in the report.</li>"
-    "<li><b>Refinement tolerance</b> (REFINE_TOLERANCE, map units, default the C5 "
-    "per-point limit 0.25 mm·S = 5·GR).</li>"
-    "<li><b>Minimum GCPs</b> (MIN_GCPS, default the transformation's minimum + 2): the "
-    "refinement never goes below this count.</li>")
-
-_HELP_GCP = QT_TRANSLATE_NOOP(
-    "GeomaticsAlgorithm",
-    "<li><b>GCP file</b> (GCP_FILE): a QGIS Georeferencer <i>.points</i> file "
-    "(mapX,mapY,pixelX,pixelY,enable,…; pixelY is minus the row) or a CSV table with "
-    "columns id, col,row (or pixel,line; or image_x,image_y in the QGIS sign convention), "
-    "X,Y (or map_x,map_y / easting,northing) and optional enabled (1/0), role (gcp or "
-    "check) and weight. Give the file <i>or</i> a point layer; with neither, the "
-    "Georeferencer's <i>&lt;image&gt;.points</i> next to the image is used.</li>"
-    "<li><b>GCP point layer</b> (GCP_LAYER): points whose geometry holds the map "
-    "coordinates (in the layer CRS) with fields for the image column and row "
-    "(COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD, "
-    "WEIGHT_FIELD (least-squares weights, e.g. 1/σ²; the report uses them, GDAL's warp "
-    "fits unweighted).</li>"
-    "<li><b>Pixel origin</b> (PIXEL_ORIGIN, default 0 = corner): 0 — image coordinates "
-    "in the GDAL/QGIS convention, (0,0) is the top-left corner of the image and the "
-    "centre of the first pixel is (0.5, 0.5); 1 — integer values are pixel centres "
-    "(0-based array indices), 0.5 is added. Rows always grow downwards (a negative row "
-    "column is read as QGIS's −row). .points files are always corner-based.</li>"
-    "<li><b>GCP CRS</b> (GCP_CRS): CRS of the map coordinates when the file has no "
-    "'#CRS:' line (CSV files never have one). Missing CRS is an error.</li>"
-    "<li><b>Polynomial order</b> (ORDER, 1–3, default 1): 1 affine (≥ 3 GCPs), 2 "
-    "(≥ 6), 3 (≥ 10).</li>"
-    "<li><b>Ground resolution GR</b> (GR, map units per pixel, optional): pixel size on "
-    "the ground for the criteria; default sqrt|det J| of the affine fit of the "
-    "GCPs.</li>")
-
-_HELP_CRITERIA = QT_TRANSLATE_NOOP(
-    "GeomaticsAlgorithm",
-    "<p><b>Criteria</b> (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and "
-    "contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, "
-    "n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band "
-    "4·GR … 6·GR for RMS_T; per-point limit 0.25 mm·S = 5·GR; ≥ 68 % (strict 90 %) of "
-    "points within RMS_T; no directional bias (quadrant sign balance, inner vs edge "
-    "radial residuals, residual-vector plot). Also: independent check points (role "
-    "'check', never fitted), leave-one-out residuals, orders 1–3 side by side with a "
-    "recommended order (never one whose redundancy n − N is below max(2, ⌈N/2⌉)) and "
-    "suggested points to drop. Residuals are predicted − given, in map units and "
-    "pixels.</p>")
-
-
 class _GcpBase(GeomaticsAlgorithm):
     """Shared parameters and GCP loading."""
 
@@ -135,6 +79,24 @@ class _GcpBase(GeomaticsAlgorithm):
     MIN_GCPS = "MIN_GCPS"
     GR = "GR"
     OUTPUT_HTML = "OUTPUT_HTML"
+
+    def gcp_notes(self):
+        """Help notes of the shared GCP parameters (see :func:`.helptext.build_help`)."""
+        return {
+            self.GCP_FILE: self.tr("A QGIS Georeferencer .points file or a CSV table with "
+                                   "id, col, row, X, Y and optional enabled, role (gcp or "
+                                   "check) and weight. Give the file or a point layer."),
+            self.GCP_LAYER: self.tr("Its geometry gives the map coordinates; the fields "
+                                    "below give the image coordinates."),
+            self.GCP_CRS: self.tr("Needed when the file does not state its CRS."),
+            self.TRANSFORMATION: self.tr("The last choice picks the transformation with the "
+                                         "lowest check-point or leave-one-out error."),
+            self.REFINE: self.tr("Drops the worst point while a residual exceeds the "
+                                 "tolerance, keeping at least the minimum number of GCPs."),
+            self.GR: self.tr("Sets the map scale S = 20000·GR and the tolerance band 4·GR "
+                             "to 6·GR of the criteria (Tishreen Univ. J. Eng. Sci. 38(2), "
+                             "2016)."),
+        }
 
     def add_gcp_parameters(self, raster_optional: bool):
         self.add(QgsProcessingParameterRasterLayer(
@@ -168,7 +130,7 @@ class _GcpBase(GeomaticsAlgorithm):
                         maximum=3, integer=True)
         self.add(QgsProcessingParameterEnum(
             self.TRANSFORMATION, self.tr("Transformation"),
-            [self.tr("polynomial of order ORDER"), self.tr("polynomial order 1 (affine)"),
+            [self.tr("polynomial of the order set below"), self.tr("polynomial order 1 (affine)"),
              self.tr("polynomial order 2"), self.tr("polynomial order 3"),
              self.tr("linear (shift and scale per axis)"),
              self.tr("Helmert (shift, scale, rotation)"),
@@ -423,29 +385,17 @@ class RectifyGcpAlgorithm(_GcpBase):
                        "rectification,warp,gdalwarp,rms,accuracy").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return (self.tr(
-            "<p>Rectifies (warps) an image with ground control points through GDAL: a "
+        return build_help(self, self.tr(
+            "Rectifies (warps) an image with ground control points through GDAL: a "
             "polynomial of order 1–3, a linear, Helmert, projective or thin-plate-spline "
-            "transformation, or the one with the lowest check-point / leave-one-out error "
-            "(as <i>gdalwarp -order N</i> / <i>-tps</i>), and writes the accuracy report. "
-            "The input image is never modified.</p>"
-            "<p><b>Example</b>: INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 "
-            "REFINE=true OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Image</b> (INPUT): the raster to rectify.</li>")
-            + self.tr(_HELP_GCP) + self.tr(_HELP_TRANSFORM) + self.tr(
-            "<li><b>Target CRS</b> (TARGET_CRS, default the GCP CRS): output CRS; GDAL "
-            "reprojects after the polynomial.</li>"
-            "<li><b>Resampling</b> (RESAMPLING, default 0 = nearest neighbour as in the "
-            "paper): 0 near, 1 bilinear, 2 cubic, 3 cubic spline, 4 Lanczos, 5 average, "
-            "6 mode.</li>"
-            "<li><b>Output resolution</b> (RESOLUTION, target-CRS units, default GR).</li>"
-            "<li><b>Nodata</b> (NODATA, optional): value outside the image footprint "
-            "(default: the input's nodata, else 0).</li>"
-            "<li><b>Rectified image</b> (OUTPUT): GeoTIFF (written under a temporary name, "
-            "renamed on success; nothing is left behind on failure).</li>"
-            "<li><b>Report</b> (OUTPUT_HTML, optional): HTML accuracy report.</li></ul>")
-            + self.tr(_HELP_CRITERIA))
+            "transformation, or the one with the lowest check-point error. It writes the "
+            "accuracy report by the paper's criteria and never modifies the input image."),
+            "INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 REFINE=true "
+            "OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html",
+            {**self.gcp_notes(),
+             self.TARGET_CRS: self.tr("GDAL reprojects after the transformation."),
+             self.RESAMPLING: self.tr("Nearest neighbour, as in the paper."),
+             self.NODATA: self.tr("Default: the input's nodata, else 0.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_gcp_parameters(raster_optional=False)
@@ -460,7 +410,7 @@ class RectifyGcpAlgorithm(_GcpBase):
         self.add(QgsProcessingParameterRasterDestination(self.OUTPUT,
                                                          self.tr("Rectified image")))
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Accuracy report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("GCP rectification report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=True))
         self.add_report_language()
         self.add_numbers_outputs()
@@ -530,25 +480,18 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
                        "check points,leave-one-out,polynomial,georeferencer").split(",")
 
     def shortHelpString(self):  # noqa: N802
-        return (self.tr(
-            "<p>Judges a set of ground control points without warping: every "
-            "transformation (polynomial 1–3, linear, Helmert, projective, thin-plate "
-            "spline) side by side by the paper's criteria on check points and "
-            "leave-one-out residuals, with the recommended one and why.</p>"
-            "<p><b>Example</b>: GCP_FILE=scan.tif.points INPUT=scan.tif TRANSFORMATION=8 "
-            "GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Image</b> (INPUT, optional): gives the image size (GCPs outside it are "
-            "an error; quadrants and the plot use its footprint). Without it, give "
-            "IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.</li>"
-           ) + self.tr(_HELP_GCP) + self.tr(_HELP_TRANSFORM) + self.tr(
-            "<li><b>Report</b> (OUTPUT_HTML), <b>residual table</b> (OUTPUT_CSV: one row "
-            "per point with v_x, v_y, RMS_i, C_i, pixel residuals, leave-one-out "
-            "residuals) and <b>JSON</b> (OUTPUT_JSON: everything, all orders), each "
-            "optional.</li></ul>") + self.tr(_HELP_CRITERIA) + self.tr(
-            "<p>Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, "
-            "SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, "
-            "…) for the graphical modeler.</p>"))
+        return build_help(self, self.tr(
+            "Judges a set of ground control points without warping: every transformation "
+            "side by side by the paper's criteria on check points and leave-one-out "
+            "residuals. It recommends one transformation, says why, and suggests points "
+            "to drop."),
+            "INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 GR=0.91 "
+            "OUTPUT_HTML=gcp.html OUTPUT_CSV=residuals.csv",
+            {**self.gcp_notes(),
+             self.INPUT: self.tr("Gives the image size; without it give the image width "
+                                 "and height, or the GCP centroid is used."),
+             self.OUTPUT_CSV: self.tr("One row per point with its residuals in map units "
+                                      "and pixels.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_gcp_parameters(raster_optional=True)
@@ -558,13 +501,14 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
                                                    "given"),
                         minimum=0, integer=True, optional=True, advanced=True)
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Accuracy report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("GCP accuracy report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=True))
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_CSV, self.tr("Residuals table"), self.tr("CSV files (*.csv)"),
             optional=True, createByDefault=False))
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_JSON, self.tr("Report as JSON"), self.tr("JSON files (*.json)"),
+            self.OUTPUT_JSON, self.tr("GCP accuracy report as JSON"),
+            self.tr("JSON files (*.json)"),
             optional=True, createByDefault=False))
         self.add_report_language()
         self.add_numbers_outputs()

@@ -634,10 +634,6 @@
             <translation>ارتفاع الصورة (بكسل) إن لم تُحدَّد صورة</translation>
         </message>
         <message>
-            <source>Accuracy report</source>
-            <translation>تقرير الدقة</translation>
-        </message>
-        <message>
             <source>HTML files (*.html)</source>
             <translation>ملفات HTML (*.html)</translation>
         </message>
@@ -650,24 +646,24 @@
             <translation>ملفات CSV (*.csv)</translation>
         </message>
         <message>
-            <source>Report as JSON</source>
-            <translation>التقرير بصيغة JSON</translation>
-        </message>
-        <message>
             <source>JSON files (*.json)</source>
             <translation>ملفات JSON (*.json)</translation>
         </message>
         <message>
-            <source>&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML), &lt;b&gt;residual table&lt;/b&gt; (OUTPUT_CSV: one row per point with v_x, v_y, RMS_i, C_i, pixel residuals, leave-one-out residuals) and &lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: everything, all orders), each optional.&lt;/li&gt;&lt;/ul&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML)، و&lt;b&gt;جدول البواقي&lt;/b&gt; (OUTPUT_CSV: صف لكل نقطة فيه v_x وv_y وRMS_i وC_i والبواقي بالبكسل وبواقي الاستبعاد الفردي) و&lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: كل شيء، لجميع الدرجات)، وكلها اختيارية.&lt;/li&gt;&lt;/ul&gt;</translation>
+            <source>Judges a set of ground control points without warping: every transformation side by side by the paper's criteria on check points and leave-one-out residuals. It recommends one transformation, says why, and suggests points to drop.</source>
+            <translation>يقيّم مجموعة نقاط ضبط أرضي دون تطويع الصورة: كل التحويلات جنبًا إلى جنب وفق معايير الورقة على نقاط التحقق وبواقي الاستبعاد الفردي. ويوصي بتحويل واحد ويبيّن السبب ويقترح نقاطًا للحذف.</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, …) for the graphical modeler.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;كل رقم في الملخص هو أيضاً مخرج رقمي (RMS_T وRMS_T_QGIS وGR وSCALE وLOO_RMS_T وCHECK_RMS_T وRECOMMENDED_ORDER وACCEPTED وRMS_T_ORDER1…3 و…) لاستخدامه في المصمم الرسومي للنماذج.&lt;/p&gt;</translation>
+            <source>Gives the image size; without it give the image width and height, or the GCP centroid is used.</source>
+            <translation>تعطي حجم الصورة؛ ومن دونها أدخل عرض الصورة وارتفاعها، وإلا استُخدم مركز نقاط الضبط.</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Judges a set of ground control points without warping: every transformation (polynomial 1–3, linear, Helmert, projective, thin-plate spline) side by side by the paper's criteria on check points and leave-one-out residuals, with the recommended one and why.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif TRANSFORMATION=8 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;تقيِّم مجموعة من نقاط الضبط الأرضي دون تحويل الصورة هندسياً: كل التحويلات (كثيرة الحدود 1–3، الخطي، هلمرت، الإسقاطي، شريحة الصفيحة الرقيقة) جنباً إلى جنب وفق معايير البحث على نقاط التحقق وبواقي ترك واحدة، مع التحويل الموصى به وسبب التوصية.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif TRANSFORMATION=8 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الصورة&lt;/b&gt; (INPUT، اختياري): تعطي أبعاد الصورة (نقاط الضبط الواقعة خارجها خطأ؛ وتعتمد الأرباع والمخطط على حدودها). ودونها حدِّد IMAGE_WIDTH وIMAGE_HEIGHT (بالبكسل) وإلا استُخدم مركز ثقل نقاط الضبط.&lt;/li&gt;</translation>
+            <source>One row per point with its residuals in map units and pixels.</source>
+            <translation>صف لكل نقطة ببواقيها بوحدات الخريطة وبالبكسل.</translation>
+        </message>
+        <message>
+            <source>GCP accuracy report as JSON</source>
+            <translation>تقرير دقة نقاط الضبط الأرضي بصيغة JSON</translation>
         </message>
     </context>
     <context>
@@ -699,14 +695,6 @@
         <message>
             <source>Out of memory. Use a coarser cell size, a smaller extent or fewer points; no output was written.</source>
             <translation>نفدت الذاكرة. استخدم حجم خلية أكبر أو نطاقاً أصغر أو نقاطاً أقل؛ لم تُكتب أي مخرجات.</translation>
-        </message>
-        <message>
-            <source>&lt;li&gt;&lt;b&gt;GCP file&lt;/b&gt; (GCP_FILE): a QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file (mapX,mapY,pixelX,pixelY,enable,…; pixelY is minus the row) or a CSV table with columns id, col,row (or pixel,line; or image_x,image_y in the QGIS sign convention), X,Y (or map_x,map_y / easting,northing) and optional enabled (1/0), role (gcp or check) and weight. Give the file &lt;i&gt;or&lt;/i&gt; a point layer; with neither, the Georeferencer's &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; next to the image is used.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP point layer&lt;/b&gt; (GCP_LAYER): points whose geometry holds the map coordinates (in the layer CRS) with fields for the image column and row (COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD, WEIGHT_FIELD (least-squares weights, e.g. 1/σ²; the report uses them, GDAL's warp fits unweighted).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pixel origin&lt;/b&gt; (PIXEL_ORIGIN, default 0 = corner): 0 — image coordinates in the GDAL/QGIS convention, (0,0) is the top-left corner of the image and the centre of the first pixel is (0.5, 0.5); 1 — integer values are pixel centres (0-based array indices), 0.5 is added. Rows always grow downwards (a negative row column is read as QGIS's −row). .points files are always corner-based.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): CRS of the map coordinates when the file has no '#CRS:' line (CSV files never have one). Missing CRS is an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, 1–3, default 1): 1 affine (≥ 3 GCPs), 2 (≥ 6), 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground resolution GR&lt;/b&gt; (GR, map units per pixel, optional): pixel size on the ground for the criteria; default sqrt|det J| of the affine fit of the GCPs.&lt;/li&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;ملف نقاط الضبط الأرضي&lt;/b&gt; (GCP_FILE): ملف &lt;i&gt;.points&lt;/i&gt; من أداة Georeferencer في QGIS (mapX,mapY,pixelX,pixelY,enable,…؛ وpixelY هو سالب رقم الصف) أو جدول CSV بالأعمدة id وcol,row (أو pixel,line؛ أو image_x,image_y باصطلاح الإشارة في QGIS) وX,Y (أو map_x,map_y / easting,northing) والأعمدة الاختيارية enabled (1/0) وrole (gcp أو check) وweight. حدِّد الملف &lt;i&gt;أو&lt;/i&gt; طبقة نقطية؛ وإن لم يُحدَّد أيٌّ منهما يُستخدم ملف &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; الخاص بأداة Georeferencer المجاور للصورة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;طبقة نقطية لنقاط الضبط&lt;/b&gt; (GCP_LAYER): نقاط تحمل هندستُها الإحداثيات الخرائطية (بنظام إحداثيات الطبقة) مع حقلين لعمود الصورة وصفّها (COL_FIELD وROW_FIELD) والحقول الاختيارية ID_FIELD وENABLED_FIELD وROLE_FIELD وWEIGHT_FIELD (أوزان المربعات الصغرى، مثلاً 1/σ²؛ يستخدمها التقرير، أما التحويل الهندسي (warp) في GDAL فيُوائم دون أوزان).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مبدأ البكسل&lt;/b&gt; (PIXEL_ORIGIN، الافتراضي 0 = الركن): 0 — إحداثيات الصورة باصطلاح GDAL/QGIS، حيث (0,0) هو الركن العلوي الأيسر للصورة ومركز البكسل الأول هو (0.5, 0.5)؛ 1 — القيم الصحيحة هي مراكز البكسلات (فهارس مصفوفة تبدأ من 0)، وتُضاف إليها 0.5. تتزايد الصفوف دائماً نحو الأسفل (يُقرأ عمود الصفوف السالب على أنه −row بحسب اصطلاح QGIS). ملفات .points تعتمد دائماً على الأركان.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام إحداثيات نقاط الضبط&lt;/b&gt; (GCP_CRS): نظام الإحداثيات للإحداثيات الخرائطية حين لا يحوي الملف السطر '#CRS:' (ولا تحويه ملفات CSV أبداً). غياب نظام الإحداثيات خطأ.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجة متعدد الحدود&lt;/b&gt; (ORDER، 1–3، الافتراضي 1): 1 تحويل تآلفي (≥ 3 نقاط ضبط)، 2 (≥ 6)، 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الدقة الأرضية GR&lt;/b&gt; (GR، وحدة خريطة لكل بكسل، اختياري): حجم البكسل على الأرض المستخدم في المعايير؛ الافتراضي sqrt|det J| من المواءمة التآلفية لنقاط الضبط.&lt;/li&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;&lt;b&gt;Criteria&lt;/b&gt; (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band 4·GR … 6·GR for RMS_T; per-point limit 0.25 mm·S = 5·GR; ≥ 68 % (strict 90 %) of points within RMS_T; no directional bias (quadrant sign balance, inner vs edge radial residuals, residual-vector plot). Also: independent check points (role 'check', never fitted), leave-one-out residuals, orders 1–3 side by side with a recommended order (never one whose redundancy n − N is below max(2, ⌈N/2⌉)) and suggested points to drop. Residuals are predicted − given, in map units and pixels.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;&lt;b&gt;المعايير&lt;/b&gt; (مجلة جامعة تشرين للعلوم الهندسية 38(2)، 2016): RMS_i لكل نقطة ومساهمتها C_i = RMS_i/RMS_T؛ وRMS_x وRMS_y وRMS_T بالقسمة على n (وكذلك، مع الإشارة إلى ذلك، على n − N كما في أداة Georeferencer في QGIS)؛ ومقياس الخريطة S = 20000·GR ونطاق السماحية 4·GR … 6·GR لقيمة RMS_T؛ والحد لكل نقطة 0.25 mm·S = 5·GR؛ وأن تقع ≥ 68 % من النقاط (90 % في الصيغة الصارمة) ضمن RMS_T؛ وانعدام الانحياز الاتجاهي (توازن الإشارات بين الأرباع، والبواقي الشعاعية للنقاط الداخلية مقابل نقاط الحواف، ومخطط متجهات البواقي). وأيضاً: نقاط تحقق مستقلة (الدور 'check'، لا تدخل في المواءمة أبداً)، وبواقي الاستبعاد الفردي، والدرجات 1–3 جنباً إلى جنب مع درجة موصى بها (لا تكون أبداً درجةً فائضها n − N أقل من max(2, ⌈N/2⌉)) ونقاط مقترحة للحذف. البواقي = القيمة المتنبأ بها − القيمة المعطاة، بوحدات الخريطة وبالبكسل.&lt;/p&gt;</translation>
         </message>
         <message>
             <source>Remove low outliers first (class 7)</source>
@@ -871,10 +859,6 @@
         <message>
             <source>no</source>
             <translation>لا</translation>
-        </message>
-        <message>
-            <source>&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 0): 0 polynomial of order ORDER; 1–3 polynomial of order 1, 2, 3; 4 linear (shift and scale per axis, ≥ 2 GCPs); 5 Helmert (shift, one scale, one rotation, ≥ 2); 6 projective (homography, ≥ 4); 7 thin-plate spline (through every GCP, ≥ 3, as gdalwarp -tps); 8 recommended: every transformation is compared and the one with the lowest check-point (else leave-one-out) error is used, the simplest within 10 % of the best.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): as gdalwarp -refine_gcps, drop the GCP with the largest residual while it exceeds the tolerance, then refit; the dropped points are listed in the report.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refinement tolerance&lt;/b&gt; (REFINE_TOLERANCE, map units, default the C5 per-point limit 0.25 mm·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum GCPs&lt;/b&gt; (MIN_GCPS, default the transformation's minimum + 2): the refinement never goes below this count.&lt;/li&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;التحويل&lt;/b&gt; (TRANSFORMATION، الافتراضي 0): 0 كثيرة حدود من الدرجة ORDER؛ 1–3 كثيرة حدود من الدرجة 1 أو 2 أو 3؛ 4 خطي (إزاحة ومقياس لكل محور، ≥ 2 نقطة)؛ 5 هلمرت (إزاحة ومقياس واحد ودوران واحد، ≥ 2)؛ 6 إسقاطي (تحويل متجانس، ≥ 4)؛ 7 شريحة الصفيحة الرقيقة (تمر بكل نقطة، ≥ 3، مثل gdalwarp -tps)؛ 8 الموصى به: تُقارَن جميع التحويلات ويُستخدم صاحب أصغر خطأ على نقاط التحقق (وإلا على ترك واحدة خارجاً)، والأبسط ضمن 10 % من الأفضل.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تنقيح النقاط&lt;/b&gt; (REFINE، الافتراضي معطّل): كما في gdalwarp -refine_gcps، تُحذف النقطة ذات أكبر باقٍ ما دام يتجاوز التسامح ثم يُعاد الملاءمة؛ وتُسرد النقاط المحذوفة في التقرير.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تسامح التنقيح&lt;/b&gt; (REFINE_TOLERANCE، بوحدات الخريطة، الافتراضي حدّ النقطة C5 أي 0.25 مم·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;أدنى عدد للنقاط&lt;/b&gt; (MIN_GCPS، الافتراضي الحدّ الأدنى للتحويل + 2): لا ينزل التنقيح تحت هذا العدد.&lt;/li&gt;</translation>
         </message>
         <message>
             <source>&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point with class 2 ground, 1 other or 7 low noise; every other attribute, VLR and the CRS copied unchanged.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional) in REPORT_LANGUAGE (advanced).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, advanced, default yes): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE (class 7), POINTS_PER_SECOND (filter step only).&lt;/p&gt;</source>
@@ -1861,20 +1845,12 @@
             <translation>georeference,gcp,batch,folder,rectification,warp,rms,إسناد جغرافي,دفعة,مجلد,تصحيح</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Rectifies every image of a folder that has its QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file next to it (scan.tif + scan.tif.points), with a fixed transformation or the one recommended for each image, and writes one summary table: image, transformation, RMS_T, check-point / leave-one-out RMS_T, verdict.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Input folder&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 8 = recommended per image; 0 polynomial of order ORDER, 1–3 polynomial 1–3, 4 linear, 5 Helmert, 6 projective, 7 thin-plate spline).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): drop GCPs over the C5 limit 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): for .points files without a '#CRS:' line.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output folder&lt;/b&gt; (OUTPUT_FOLDER): image_rectified.tif per image, each written all-or-nothing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Summary&lt;/b&gt; (OUTPUT_CSV, OUTPUT_HTML): one row per image; an image that cannot be rectified gets its error in the table and the others go on.&lt;/li&gt;&lt;/ul&gt;</source>
-            <translation>&lt;p&gt;يصحّح كل مرئية في المجلد يجاورها ملف &lt;i&gt;.points&lt;/i&gt; من Georeferencer في QGIS (scan.tif + scan.tif.points)، بتحويل ثابت أو بالتحويل الموصى به لكل مرئية، ويكتب جدول ملخص واحداً: المرئية، التحويل، RMS_T، RMS_T نقاط التحقق / ترك واحدة، الحكم.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;مجلد الإدخال&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التحويل&lt;/b&gt; (TRANSFORMATION، الافتراضي 8 = الموصى به لكل مرئية؛ 0 كثيرة حدود من الدرجة ORDER، 1–3 كثيرة حدود 1–3، 4 خطي، 5 هلمرت، 6 إسقاطي، 7 شريحة الصفيحة الرقيقة).&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجة كثيرة الحدود&lt;/b&gt; (ORDER، الافتراضي 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تنقيح النقاط&lt;/b&gt; (REFINE، الافتراضي معطّل): حذف النقاط فوق حدّ C5 أي 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نظام إحداثيات النقاط&lt;/b&gt; (GCP_CRS): لملفات .points التي لا سطر '#CRS:' فيها.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إعادة المعاينة&lt;/b&gt; (RESAMPLING، الافتراضي 0 = الأقرب).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مجلد الإخراج&lt;/b&gt; (OUTPUT_FOLDER): ‏image_rectified.tif لكل مرئية، يُكتب كل منها كاملاً أو لا يُكتب.&lt;/li&gt;&lt;li&gt;&lt;b&gt;الملخص&lt;/b&gt; (OUTPUT_CSV، OUTPUT_HTML): سطر لكل مرئية؛ المرئية التي يتعذر تصحيحها يُسجَّل خطؤها في الجدول وتستمر البقية.&lt;/li&gt;&lt;/ul&gt;</translation>
-        </message>
-        <message>
             <source>Folder of images with .points files</source>
             <translation>مجلد المرئيات مع ملفات .points</translation>
         </message>
         <message>
             <source>Transformation</source>
             <translation>التحويل</translation>
-        </message>
-        <message>
-            <source>polynomial of order ORDER</source>
-            <translation>كثيرة حدود من الدرجة ORDER</translation>
         </message>
         <message>
             <source>polynomial order 1 (affine)</source>
@@ -1937,12 +1913,32 @@
             <translation>ملفات CSV (*.csv)</translation>
         </message>
         <message>
-            <source>Summary report</source>
-            <translation>تقرير الملخص</translation>
-        </message>
-        <message>
             <source>HTML files (*.html)</source>
             <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Rectifies every image of a folder that has its QGIS Georeferencer .points file next to it, with a fixed transformation or the one recommended for each image. It writes one summary table with the transformation, RMS_T, the check or leave-one-out error and the verdict of every image.</source>
+            <translation>يصحّح كل صورة في مجلد بجانبها ملف ‎.points‎ من المُرجِع الجغرافي في QGIS، بتحويل ثابت أو بالتحويل الموصى به لكل صورة. ويكتب جدول ملخص واحدًا فيه التحويل وRMS_T وخطأ التحقق أو الاستبعاد الفردي والحكم لكل صورة.</translation>
+        </message>
+        <message>
+            <source>Each image with its .points file next to it (scan.tif + scan.tif.points).</source>
+            <translation>كل صورة وبجانبها ملف ‎.points‎ الخاص بها (scan.tif + scan.tif.points).</translation>
+        </message>
+        <message>
+            <source>The last choice picks the recommended transformation for each image.</source>
+            <translation>الخيار الأخير يختار التحويل الموصى به لكل صورة.</translation>
+        </message>
+        <message>
+            <source>One rectified GeoTIFF per image, each written all or nothing.</source>
+            <translation>ملف GeoTIFF مصحّح لكل صورة، يُكتب كاملًا أو لا يُكتب.</translation>
+        </message>
+        <message>
+            <source>polynomial of the order set below</source>
+            <translation>كثير حدود بالدرجة المحدّدة أدناه</translation>
+        </message>
+        <message>
+            <source>Batch rectification report</source>
+            <translation>تقرير التصحيح الدفعي</translation>
         </message>
     </context>
     <context>
@@ -1972,10 +1968,6 @@
             <translation>الصورة المصحَّحة هندسياً</translation>
         </message>
         <message>
-            <source>Accuracy report</source>
-            <translation>تقرير الدقة</translation>
-        </message>
-        <message>
             <source>HTML files (*.html)</source>
             <translation>ملفات HTML (*.html)</translation>
         </message>
@@ -1984,16 +1976,28 @@
             <translation>يجب أن يكون OUTPUT ملف GeoTIFF (.tif)؛ القيمة المعطاة: {0}.</translation>
         </message>
         <message>
-            <source>&lt;li&gt;&lt;b&gt;Target CRS&lt;/b&gt; (TARGET_CRS, default the GCP CRS): output CRS; GDAL reprojects after the polynomial.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest neighbour as in the paper): 0 near, 1 bilinear, 2 cubic, 3 cubic spline, 4 Lanczos, 5 average, 6 mode.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output resolution&lt;/b&gt; (RESOLUTION, target-CRS units, default GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Nodata&lt;/b&gt; (NODATA, optional): value outside the image footprint (default: the input's nodata, else 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rectified image&lt;/b&gt; (OUTPUT): GeoTIFF (written under a temporary name, renamed on success; nothing is left behind on failure).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML accuracy report.&lt;/li&gt;&lt;/ul&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;نظام الإحداثيات الهدف&lt;/b&gt; (TARGET_CRS، الافتراضي نظام إحداثيات نقاط الضبط): نظام إحداثيات المخرج؛ يعيد GDAL الإسقاط بعد تطبيق متعدد الحدود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إعادة الاعتيان&lt;/b&gt; (RESAMPLING، الافتراضي 0 = أقرب جار كما في البحث): 0 أقرب جار، 1 ثنائي الخطية، 2 تكعيبي، 3 شريحة تكعيبية (cubic spline)، 4 Lanczos، 5 المتوسط، 6 المنوال.&lt;/li&gt;&lt;li&gt;&lt;b&gt;دقة تمييز المخرج&lt;/b&gt; (RESOLUTION، بوحدات نظام الإحداثيات الهدف، الافتراضي GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;قيمة nodata&lt;/b&gt; (NODATA، اختياري): القيمة خارج حدود الصورة (الافتراضي: قيمة nodata في الإدخال، وإلا 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الصورة المصحَّحة هندسياً&lt;/b&gt; (OUTPUT): GeoTIFF (يُكتب باسم مؤقت ثم يُعاد تسميته عند النجاح؛ ولا يبقى أي أثر عند الفشل).&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري): تقرير دقة بصيغة HTML.&lt;/li&gt;&lt;/ul&gt;</translation>
-        </message>
-        <message>
             <source>Rectify image with GCPs</source>
             <translation>تصحيح مرئية بنقاط الضبط الأرضي</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Rectifies (warps) an image with ground control points through GDAL: a polynomial of order 1–3, a linear, Helmert, projective or thin-plate-spline transformation, or the one with the lowest check-point / leave-one-out error (as &lt;i&gt;gdalwarp -order N&lt;/i&gt; / &lt;i&gt;-tps&lt;/i&gt;), and writes the accuracy report. The input image is never modified.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 REFINE=true OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;يصحّح (يعيد تشكيل) مرئية بنقاط الضبط الأرضي عبر GDAL: كثيرة حدود من الدرجة 1–3، أو تحويل خطي أو هلمرت أو إسقاطي أو شريحة الصفيحة الرقيقة، أو التحويل صاحب أصغر خطأ على نقاط التحقق / ترك واحدة (مثل &lt;i&gt;gdalwarp -order N&lt;/i&gt; / &lt;i&gt;-tps&lt;/i&gt;)، ويكتب تقرير الدقة. لا تُعدَّل المرئية المدخلة أبداً.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 REFINE=true OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;المرئية&lt;/b&gt; (INPUT): الراستر المراد تصحيحه.&lt;/li&gt;</translation>
+            <source>Rectifies (warps) an image with ground control points through GDAL: a polynomial of order 1–3, a linear, Helmert, projective or thin-plate-spline transformation, or the one with the lowest check-point error. It writes the accuracy report by the paper's criteria and never modifies the input image.</source>
+            <translation>يصحّح (يُطوّع) صورة بنقاط الضبط الأرضي عبر GDAL: بكثير حدود من الدرجة 1–3، أو بتحويل خطي أو هلمرت أو إسقاطي أو شرائح الصفائح الرقيقة، أو بالتحويل ذي أدنى خطأ على نقاط التحقق. يكتب تقرير الدقة وفق معايير الورقة ولا يعدّل صورة الإدخال أبدًا.</translation>
+        </message>
+        <message>
+            <source>GDAL reprojects after the transformation.</source>
+            <translation>يعيد GDAL الإسقاط بعد التحويل.</translation>
+        </message>
+        <message>
+            <source>Nearest neighbour, as in the paper.</source>
+            <translation>الجار الأقرب، كما في الورقة.</translation>
+        </message>
+        <message>
+            <source>Default: the input's nodata, else 0.</source>
+            <translation>الافتراضي: قيمة انعدام البيانات في الإدخال، وإلا 0.</translation>
+        </message>
+        <message>
+            <source>GCP rectification report</source>
+            <translation>تقرير التصحيح بنقاط الضبط الأرضي</translation>
         </message>
     </context>
     <context>
@@ -2384,10 +2388,6 @@
             <translation>التحويل</translation>
         </message>
         <message>
-            <source>polynomial of order ORDER</source>
-            <translation>كثيرة حدود من الدرجة ORDER</translation>
-        </message>
-        <message>
             <source>polynomial order 1 (affine)</source>
             <translation>كثيرة حدود من الدرجة 1 (تآلفي)</translation>
         </message>
@@ -2430,6 +2430,34 @@
         <message>
             <source>Minimum GCPs kept by the refinement [default: minimum + 2]</source>
             <translation>أدنى عدد نقاط يبقيه التنقيح [الافتراضي: الحدّ الأدنى + 2]</translation>
+        </message>
+        <message>
+            <source>A QGIS Georeferencer .points file or a CSV table with id, col, row, X, Y and optional enabled, role (gcp or check) and weight. Give the file or a point layer.</source>
+            <translation>ملف ‎.points‎ من المُرجِع الجغرافي في QGIS أو جدول CSV بالأعمدة id وcol وrow وX وY، واختياريًا enabled وrole ‏(gcp أو check) وweight. أدخل الملف أو طبقة نقطية.</translation>
+        </message>
+        <message>
+            <source>Its geometry gives the map coordinates; the fields below give the image coordinates.</source>
+            <translation>تعطي هندستها إحداثيات الخريطة؛ وتعطي الحقول التالية إحداثيات الصورة.</translation>
+        </message>
+        <message>
+            <source>Needed when the file does not state its CRS.</source>
+            <translation>مطلوب عندما لا يذكر الملف نظام إحداثياته.</translation>
+        </message>
+        <message>
+            <source>The last choice picks the transformation with the lowest check-point or leave-one-out error.</source>
+            <translation>الخيار الأخير يختار التحويل ذا أدنى خطأ على نقاط التحقق أو بالاستبعاد الفردي.</translation>
+        </message>
+        <message>
+            <source>Drops the worst point while a residual exceeds the tolerance, keeping at least the minimum number of GCPs.</source>
+            <translation>يحذف أسوأ نقطة ما دام أحد البواقي يتجاوز السماحية، مع الإبقاء على الحد الأدنى من نقاط الضبط.</translation>
+        </message>
+        <message>
+            <source>Sets the map scale S = 20000·GR and the tolerance band 4·GR to 6·GR of the criteria (Tishreen Univ. J. Eng. Sci. 38(2), 2016).</source>
+            <translation>يحدّد مقياس الخريطة S = 20000·GR ونطاق السماحية من 4·GR إلى 6·GR في المعايير (مجلة جامعة تشرين للعلوم الهندسية 38(2)، 2016).</translation>
+        </message>
+        <message>
+            <source>polynomial of the order set below</source>
+            <translation>كثير حدود بالدرجة المحدّدة أدناه</translation>
         </message>
     </context>
     <context>

@@ -634,10 +634,6 @@
             <translation>ارتفاع تصویر (پیکسل) اگر تصویری داده نشود</translation>
         </message>
         <message>
-            <source>Accuracy report</source>
-            <translation>گزارش دقت</translation>
-        </message>
-        <message>
             <source>HTML files (*.html)</source>
             <translation>پرونده‌های HTML (*.html)</translation>
         </message>
@@ -650,24 +646,24 @@
             <translation>پرونده‌های CSV (*.csv)</translation>
         </message>
         <message>
-            <source>Report as JSON</source>
-            <translation>گزارش به قالب JSON</translation>
-        </message>
-        <message>
             <source>JSON files (*.json)</source>
             <translation>پرونده‌های JSON (*.json)</translation>
         </message>
         <message>
-            <source>&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML), &lt;b&gt;residual table&lt;/b&gt; (OUTPUT_CSV: one row per point with v_x, v_y, RMS_i, C_i, pixel residuals, leave-one-out residuals) and &lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: everything, all orders), each optional.&lt;/li&gt;&lt;/ul&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML)، &lt;b&gt;جدول باقی‌مانده‌ها&lt;/b&gt; (OUTPUT_CSV: یک سطر برای هر نقطه با v_x، v_y، RMS_i، C_i، باقی‌مانده‌ها به پیکسل و باقی‌مانده‌های حذف‌یکی) و &lt;b&gt;JSON&lt;/b&gt; (OUTPUT_JSON: همه‌چیز، برای همهٔ درجه‌ها)، همه اختیاری.&lt;/li&gt;&lt;/ul&gt;</translation>
+            <source>Judges a set of ground control points without warping: every transformation side by side by the paper's criteria on check points and leave-one-out residuals. It recommends one transformation, says why, and suggests points to drop.</source>
+            <translation>مجموعه‌ای از نقاط کنترل زمینی را بدون تصحیح تصویر ارزیابی می‌کند: همهٔ تبدیل‌ها کنار هم بر پایهٔ معیارهای مقاله روی نقاط چک و باقیمانده‌های حذف‌یکی. یک تبدیل را توصیه می‌کند، دلیلش را می‌گوید و نقاطی را برای حذف پیشنهاد می‌دهد.</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Every summary figure is also an output number (RMS_T, RMS_T_QGIS, GR, SCALE, LOO_RMS_T, CHECK_RMS_T, RECOMMENDED_ORDER, ACCEPTED, RMS_T_ORDER1…3, …) for the graphical modeler.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;هر رقم خلاصهٔ نتایج یک خروجی عددی نیز هست (RMS_T، RMS_T_QGIS، GR، SCALE، LOO_RMS_T، CHECK_RMS_T، RECOMMENDED_ORDER، ACCEPTED، RMS_T_ORDER1…3، …) برای طراح گرافیکی مدل.&lt;/p&gt;</translation>
+            <source>Gives the image size; without it give the image width and height, or the GCP centroid is used.</source>
+            <translation>اندازهٔ تصویر را می‌دهد؛ بدون آن عرض و ارتفاع تصویر را بدهید، وگرنه مرکز نقاط کنترل به کار می‌رود.</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Judges a set of ground control points without warping: every transformation (polynomial 1–3, linear, Helmert, projective, thin-plate spline) side by side by the paper's criteria on check points and leave-one-out residuals, with the recommended one and why.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif TRANSFORMATION=8 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT, optional): gives the image size (GCPs outside it are an error; quadrants and the plot use its footprint). Without it, give IMAGE_WIDTH and IMAGE_HEIGHT (pixels) or the GCP centroid is used.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;مجموعه‌ای از نقاط کنترل زمینی را بدون تصحیح تصویر داوری می‌کند: همهٔ تبدیل‌ها (چندجمله‌ای 1–3، خطی، هلمرت، تصویری، اسپلاین صفحهٔ نازک) در کنار هم با معیارهای مقاله روی نقاط چک و باقیمانده‌های حذف‌یکی، همراه با تبدیل پیشنهادی و دلیل آن.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: GCP_FILE=scan.tif.points INPUT=scan.tif TRANSFORMATION=8 GR=0.91 OUTPUT_HTML=report.html OUTPUT_CSV=residuals.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;تصویر&lt;/b&gt; (INPUT، اختیاری): ابعاد تصویر را می‌دهد (نقاط کنترل بیرون از آن خطا به شمار می‌آیند؛ ربع‌ها و نمودار از محدودهٔ آن استفاده می‌کنند). بدون آن، IMAGE_WIDTH و IMAGE_HEIGHT (پیکسل) را بدهید، وگرنه مرکز ثقل نقاط کنترل به کار می‌رود.&lt;/li&gt;</translation>
+            <source>One row per point with its residuals in map units and pixels.</source>
+            <translation>یک سطر برای هر نقطه با باقیمانده‌هایش بر حسب واحد نقشه و پیکسل.</translation>
+        </message>
+        <message>
+            <source>GCP accuracy report as JSON</source>
+            <translation>گزارش دقت نقاط کنترل زمینی در قالب JSON</translation>
         </message>
     </context>
     <context>
@@ -699,14 +695,6 @@
         <message>
             <source>Out of memory. Use a coarser cell size, a smaller extent or fewer points; no output was written.</source>
             <translation>حافظه کافی نیست. اندازهٔ سلول بزرگ‌تر، محدودهٔ کوچک‌تر یا نقاط کمتری به کار ببرید؛ هیچ خروجی‌ای نوشته نشد.</translation>
-        </message>
-        <message>
-            <source>&lt;li&gt;&lt;b&gt;GCP file&lt;/b&gt; (GCP_FILE): a QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file (mapX,mapY,pixelX,pixelY,enable,…; pixelY is minus the row) or a CSV table with columns id, col,row (or pixel,line; or image_x,image_y in the QGIS sign convention), X,Y (or map_x,map_y / easting,northing) and optional enabled (1/0), role (gcp or check) and weight. Give the file &lt;i&gt;or&lt;/i&gt; a point layer; with neither, the Georeferencer's &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; next to the image is used.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP point layer&lt;/b&gt; (GCP_LAYER): points whose geometry holds the map coordinates (in the layer CRS) with fields for the image column and row (COL_FIELD, ROW_FIELD) and optional ID_FIELD, ENABLED_FIELD, ROLE_FIELD, WEIGHT_FIELD (least-squares weights, e.g. 1/σ²; the report uses them, GDAL's warp fits unweighted).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pixel origin&lt;/b&gt; (PIXEL_ORIGIN, default 0 = corner): 0 — image coordinates in the GDAL/QGIS convention, (0,0) is the top-left corner of the image and the centre of the first pixel is (0.5, 0.5); 1 — integer values are pixel centres (0-based array indices), 0.5 is added. Rows always grow downwards (a negative row column is read as QGIS's −row). .points files are always corner-based.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): CRS of the map coordinates when the file has no '#CRS:' line (CSV files never have one). Missing CRS is an error.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, 1–3, default 1): 1 affine (≥ 3 GCPs), 2 (≥ 6), 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground resolution GR&lt;/b&gt; (GR, map units per pixel, optional): pixel size on the ground for the criteria; default sqrt|det J| of the affine fit of the GCPs.&lt;/li&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;پروندهٔ نقاط کنترل زمینی&lt;/b&gt; (GCP_FILE): پروندهٔ &lt;i&gt;.points&lt;/i&gt; ابزار Georeferencer در QGIS (mapX,mapY,pixelX,pixelY,enable,…؛ pixelY منفیِ شمارهٔ سطر است) یا جدول CSV با ستون‌های id، col,row (یا pixel,line؛ یا image_x,image_y با قرارداد علامت QGIS)، X,Y (یا map_x,map_y / easting,northing) و ستون‌های اختیاری enabled (1/0)، role (gcp یا check) و weight. پرونده &lt;i&gt;یا&lt;/i&gt; یک لایهٔ نقطه‌ای را بدهید؛ اگر هیچ‌کدام داده نشود، پروندهٔ &lt;i&gt;&amp;lt;image&amp;gt;.points&lt;/i&gt; ابزار Georeferencer در کنار تصویر به کار می‌رود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;لایهٔ نقطه‌ای نقاط کنترل&lt;/b&gt; (GCP_LAYER): نقاطی که هندسه‌شان مختصات نقشه‌ای را (در سیستم مختصات لایه) در خود دارد، با فیلدهایی برای ستون و سطر تصویر (COL_FIELD، ROW_FIELD) و فیلدهای اختیاری ID_FIELD، ENABLED_FIELD، ROLE_FIELD، WEIGHT_FIELD (وزن‌های کمترین مربعات، مثلاً 1/σ²؛ گزارش از آن‌ها استفاده می‌کند، اما warp در GDAL بدون وزن برازش می‌دهد).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مبدأ پیکسل&lt;/b&gt; (PIXEL_ORIGIN، پیش‌فرض 0 = گوشه): 0 — مختصات تصویر با قرارداد GDAL/QGIS، که در آن (0,0) گوشهٔ بالا-چپ تصویر و مرکز نخستین پیکسل (0.5, 0.5) است؛ 1 — مقادیر صحیح مراکز پیکسل‌اند (اندیس‌های آرایه از 0)، و 0.5 به آن‌ها افزوده می‌شود. سطرها همیشه رو به پایین افزایش می‌یابند (ستون سطرِ منفی به‌صورت −row در قرارداد QGIS خوانده می‌شود). پرونده‌های .points همیشه بر پایهٔ گوشه‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات نقاط کنترل&lt;/b&gt; (GCP_CRS): سیستم مختصاتِ مختصات نقشه‌ای وقتی پرونده خط '#CRS:' ندارد (پرونده‌های CSV هرگز آن را ندارند). نبودِ سیستم مختصات خطا است.&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجهٔ چندجمله‌ای&lt;/b&gt; (ORDER، 1–3، پیش‌فرض 1): 1 آفین (≥ 3 نقطهٔ کنترل)، 2 (≥ 6)، 3 (≥ 10).&lt;/li&gt;&lt;li&gt;&lt;b&gt;قدرت تفکیک زمینی GR&lt;/b&gt; (GR، واحد نقشه بر پیکسل، اختیاری): اندازهٔ پیکسل روی زمین برای معیارها؛ پیش‌فرض sqrt|det J| برازش آفین نقاط کنترل.&lt;/li&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;&lt;b&gt;Criteria&lt;/b&gt; (Tishreen Univ. J. Eng. Sci. 38(2), 2016): per-point RMS_i and contribution C_i = RMS_i/RMS_T; RMS_x, RMS_y, RMS_T with divisor n (and, labelled, n − N as the QGIS Georeferencer); map scale S = 20000·GR and tolerance band 4·GR … 6·GR for RMS_T; per-point limit 0.25 mm·S = 5·GR; ≥ 68 % (strict 90 %) of points within RMS_T; no directional bias (quadrant sign balance, inner vs edge radial residuals, residual-vector plot). Also: independent check points (role 'check', never fitted), leave-one-out residuals, orders 1–3 side by side with a recommended order (never one whose redundancy n − N is below max(2, ⌈N/2⌉)) and suggested points to drop. Residuals are predicted − given, in map units and pixels.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;&lt;b&gt;معیارها&lt;/b&gt; (مجلهٔ علوم مهندسی دانشگاه تشرین 38(2)، 2016): RMS_i هر نقطه و سهم آن C_i = RMS_i/RMS_T؛ RMS_x، RMS_y و RMS_T با مقسوم‌علیه n (و، با برچسب جداگانه، n − N مانند Georeferencer در QGIS)؛ مقیاس نقشه S = 20000·GR و بازهٔ تلورانس 4·GR … 6·GR برای RMS_T؛ حد مجاز هر نقطه 0.25 mm·S = 5·GR؛ ≥ 68 % (در حالت سخت‌گیرانه 90 %) نقاط در محدودهٔ RMS_T؛ نبودِ سوگیری جهت‌دار (توازن علامت‌ها در ربع‌ها، باقی‌مانده‌های شعاعی نقاط درونی در برابر نقاط لبه، نمودار بردارهای باقی‌مانده). همچنین: نقاط چک مستقل (نقش 'check'، هرگز در برازش وارد نمی‌شوند)، باقی‌مانده‌های حذف‌یکی، درجه‌های 1–3 در کنار هم با یک درجهٔ پیشنهادی (هرگز درجه‌ای که افزونگی n − N آن کمتر از max(2, ⌈N/2⌉) باشد) و نقاط پیشنهادی برای حذف. باقی‌مانده‌ها برابر مقدار پیش‌بینی‌شده − مقدار داده‌شده‌اند، به واحد نقشه و پیکسل.&lt;/p&gt;</translation>
         </message>
         <message>
             <source>Remove low outliers first (class 7)</source>
@@ -871,10 +859,6 @@
         <message>
             <source>no</source>
             <translation>خیر</translation>
-        </message>
-        <message>
-            <source>&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 0): 0 polynomial of order ORDER; 1–3 polynomial of order 1, 2, 3; 4 linear (shift and scale per axis, ≥ 2 GCPs); 5 Helmert (shift, one scale, one rotation, ≥ 2); 6 projective (homography, ≥ 4); 7 thin-plate spline (through every GCP, ≥ 3, as gdalwarp -tps); 8 recommended: every transformation is compared and the one with the lowest check-point (else leave-one-out) error is used, the simplest within 10 % of the best.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): as gdalwarp -refine_gcps, drop the GCP with the largest residual while it exceeds the tolerance, then refit; the dropped points are listed in the report.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refinement tolerance&lt;/b&gt; (REFINE_TOLERANCE, map units, default the C5 per-point limit 0.25 mm·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Minimum GCPs&lt;/b&gt; (MIN_GCPS, default the transformation's minimum + 2): the refinement never goes below this count.&lt;/li&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;تبدیل&lt;/b&gt; (TRANSFORMATION، پیش‌فرض 0): 0 چندجمله‌ای درجهٔ ORDER؛ 1–3 چندجمله‌ای درجهٔ 1، 2، 3؛ 4 خطی (انتقال و مقیاس برای هر محور، ≥ 2 نقطه)؛ 5 هلمرت (انتقال، یک مقیاس، یک دوران، ≥ 2)؛ 6 تصویری (هموگرافی، ≥ 4)؛ 7 اسپلاین صفحهٔ نازک (از همهٔ نقاط می‌گذرد، ≥ 3، مانند gdalwarp -tps)؛ 8 پیشنهادی: همهٔ تبدیل‌ها مقایسه می‌شوند و تبدیلی با کمترین خطای نقاط چک (وگرنه حذف‌یکی) به کار می‌رود، ساده‌ترین در محدودهٔ 10 % بهترین.&lt;/li&gt;&lt;li&gt;&lt;b&gt;پالایش نقاط&lt;/b&gt; (REFINE، پیش‌فرض خاموش): مانند gdalwarp -refine_gcps، نقطهٔ با بزرگ‌ترین باقیمانده تا وقتی از تلورانس بیشتر است حذف و برازش تکرار می‌شود؛ نقاط حذف‌شده در گزارش فهرست می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تلورانس پالایش&lt;/b&gt; (REFINE_TOLERANCE، واحد نقشه، پیش‌فرض حد نقطه‌ای C5 یعنی 0.25 mm·S = 5·GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حداقل نقاط&lt;/b&gt; (MIN_GCPS، پیش‌فرض حداقل تبدیل + 2): پالایش هرگز به کمتر از این تعداد نمی‌رسد.&lt;/li&gt;</translation>
         </message>
         <message>
             <source>&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point with class 2 ground, 1 other or 7 low noise; every other attribute, VLR and the CRS copied unchanged.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional) in REPORT_LANGUAGE (advanced).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, advanced, default yes): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE (class 7), POINTS_PER_SECOND (filter step only).&lt;/p&gt;</source>
@@ -1861,20 +1845,12 @@
             <translation>georeference,gcp,batch,folder,rectification,warp,rms,زمین‌مرجع,دسته‌ای,پوشه,تصحیح</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Rectifies every image of a folder that has its QGIS Georeferencer &lt;i&gt;.points&lt;/i&gt; file next to it (scan.tif + scan.tif.points), with a fixed transformation or the one recommended for each image, and writes one summary table: image, transformation, RMS_T, check-point / leave-one-out RMS_T, verdict.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Input folder&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Transformation&lt;/b&gt; (TRANSFORMATION, default 8 = recommended per image; 0 polynomial of order ORDER, 1–3 polynomial 1–3, 4 linear, 5 Helmert, 6 projective, 7 thin-plate spline).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Polynomial order&lt;/b&gt; (ORDER, default 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Refine GCPs&lt;/b&gt; (REFINE, default off): drop GCPs over the C5 limit 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GCP CRS&lt;/b&gt; (GCP_CRS): for .points files without a '#CRS:' line.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output folder&lt;/b&gt; (OUTPUT_FOLDER): image_rectified.tif per image, each written all-or-nothing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Summary&lt;/b&gt; (OUTPUT_CSV, OUTPUT_HTML): one row per image; an image that cannot be rectified gets its error in the table and the others go on.&lt;/li&gt;&lt;/ul&gt;</source>
-            <translation>&lt;p&gt;هر تصویر پوشه را که فایل &lt;i&gt;.points&lt;/i&gt; مربوط به Georeferencer در QGIS کنارش است (scan.tif + scan.tif.points)، با یک تبدیل ثابت یا تبدیل پیشنهادی برای هر تصویر تصحیح می‌کند و یک جدول خلاصه می‌نویسد: تصویر، تبدیل، RMS_T، RMS_T نقاط چک / حذف‌یکی، رأی.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT_FOLDER=scans TRANSFORMATION=8 OUTPUT_FOLDER=rectified OUTPUT_CSV=summary.csv&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;پوشهٔ ورودی&lt;/b&gt; (INPUT_FOLDER).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تبدیل&lt;/b&gt; (TRANSFORMATION، پیش‌فرض 8 = پیشنهادی برای هر تصویر؛ 0 چندجمله‌ای درجهٔ ORDER، 1–3 چندجمله‌ای 1–3، 4 خطی، 5 هلمرت، 6 تصویری، 7 اسپلاین صفحهٔ نازک).&lt;/li&gt;&lt;li&gt;&lt;b&gt;درجهٔ چندجمله‌ای&lt;/b&gt; (ORDER، پیش‌فرض 1).&lt;/li&gt;&lt;li&gt;&lt;b&gt;پالایش نقاط&lt;/b&gt; (REFINE، پیش‌فرض خاموش): حذف نقاط بالای حد C5 یعنی 5·GR.&lt;/li&gt;&lt;li&gt;&lt;b&gt;سیستم مختصات نقاط&lt;/b&gt; (GCP_CRS): برای فایل‌های .points بدون سطر '#CRS:'.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بازنمونه‌گیری&lt;/b&gt; (RESAMPLING، پیش‌فرض 0 = نزدیک‌ترین).&lt;/li&gt;&lt;li&gt;&lt;b&gt;پوشهٔ خروجی&lt;/b&gt; (OUTPUT_FOLDER): ‏image_rectified.tif برای هر تصویر، هر کدام همه‌یا‌هیچ نوشته می‌شود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;خلاصه&lt;/b&gt; (OUTPUT_CSV، OUTPUT_HTML): یک سطر برای هر تصویر؛ خطای تصویری که تصحیح نشود در جدول می‌آید و بقیه ادامه می‌یابند.&lt;/li&gt;&lt;/ul&gt;</translation>
-        </message>
-        <message>
             <source>Folder of images with .points files</source>
             <translation>پوشهٔ تصاویر با فایل‌های .points</translation>
         </message>
         <message>
             <source>Transformation</source>
             <translation>تبدیل</translation>
-        </message>
-        <message>
-            <source>polynomial of order ORDER</source>
-            <translation>چندجمله‌ای درجهٔ ORDER</translation>
         </message>
         <message>
             <source>polynomial order 1 (affine)</source>
@@ -1937,12 +1913,32 @@
             <translation>پرونده‌های CSV (*.csv)</translation>
         </message>
         <message>
-            <source>Summary report</source>
-            <translation>گزارش خلاصه</translation>
-        </message>
-        <message>
             <source>HTML files (*.html)</source>
             <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Rectifies every image of a folder that has its QGIS Georeferencer .points file next to it, with a fixed transformation or the one recommended for each image. It writes one summary table with the transformation, RMS_T, the check or leave-one-out error and the verdict of every image.</source>
+            <translation>هر تصویرِ یک پوشه را که فایل ‎.points‎ زمین‌مرجع‌ساز QGIS کنارش است، با یک تبدیل ثابت یا تبدیل توصیه‌شده برای هر تصویر تصحیح می‌کند. یک جدول خلاصه با تبدیل، RMS_T، خطای چک یا حذف‌یکی و رأی نهایی هر تصویر می‌نویسد.</translation>
+        </message>
+        <message>
+            <source>Each image with its .points file next to it (scan.tif + scan.tif.points).</source>
+            <translation>هر تصویر با فایل ‎.points‎ کنارش (scan.tif + scan.tif.points).</translation>
+        </message>
+        <message>
+            <source>The last choice picks the recommended transformation for each image.</source>
+            <translation>گزینهٔ آخر تبدیل توصیه‌شده را برای هر تصویر برمی‌گزیند.</translation>
+        </message>
+        <message>
+            <source>One rectified GeoTIFF per image, each written all or nothing.</source>
+            <translation>یک GeoTIFF تصحیح‌شده برای هر تصویر که کامل نوشته می‌شود یا اصلاً نوشته نمی‌شود.</translation>
+        </message>
+        <message>
+            <source>polynomial of the order set below</source>
+            <translation>چندجمله‌ای با درجهٔ تعیین‌شده در پایین</translation>
+        </message>
+        <message>
+            <source>Batch rectification report</source>
+            <translation>گزارش تصحیح دسته‌ای</translation>
         </message>
     </context>
     <context>
@@ -1972,10 +1968,6 @@
             <translation>تصویر تصحیح‌شده</translation>
         </message>
         <message>
-            <source>Accuracy report</source>
-            <translation>گزارش دقت</translation>
-        </message>
-        <message>
             <source>HTML files (*.html)</source>
             <translation>پرونده‌های HTML (*.html)</translation>
         </message>
@@ -1984,16 +1976,28 @@
             <translation>OUTPUT باید پروندهٔ GeoTIFF (.tif) باشد؛ مقدار داده‌شده: {0}.</translation>
         </message>
         <message>
-            <source>&lt;li&gt;&lt;b&gt;Target CRS&lt;/b&gt; (TARGET_CRS, default the GCP CRS): output CRS; GDAL reprojects after the polynomial.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Resampling&lt;/b&gt; (RESAMPLING, default 0 = nearest neighbour as in the paper): 0 near, 1 bilinear, 2 cubic, 3 cubic spline, 4 Lanczos, 5 average, 6 mode.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Output resolution&lt;/b&gt; (RESOLUTION, target-CRS units, default GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Nodata&lt;/b&gt; (NODATA, optional): value outside the image footprint (default: the input's nodata, else 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Rectified image&lt;/b&gt; (OUTPUT): GeoTIFF (written under a temporary name, renamed on success; nothing is left behind on failure).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional): HTML accuracy report.&lt;/li&gt;&lt;/ul&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;سیستم مختصات مقصد&lt;/b&gt; (TARGET_CRS، پیش‌فرض سیستم مختصات نقاط کنترل): سیستم مختصات خروجی؛ GDAL پس از اعمال چندجمله‌ای بازتصویر می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;بازنمونه‌برداری&lt;/b&gt; (RESAMPLING، پیش‌فرض 0 = نزدیک‌ترین همسایه مانند مقاله): 0 نزدیک‌ترین همسایه، 1 دوخطی، 2 مکعبی، 3 اسپلاین مکعبی، 4 Lanczos، 5 میانگین، 6 مُد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;قدرت تفکیک خروجی&lt;/b&gt; (RESOLUTION، به واحد سیستم مختصات مقصد، پیش‌فرض GR).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مقدار nodata&lt;/b&gt; (NODATA، اختیاری): مقدار بیرون از محدودهٔ تصویر (پیش‌فرض: nodata ورودی، وگرنه 0).&lt;/li&gt;&lt;li&gt;&lt;b&gt;تصویر تصحیح‌شده&lt;/b&gt; (OUTPUT): GeoTIFF (با نامی موقت نوشته می‌شود و پس از موفقیت تغییر نام می‌یابد؛ در صورت شکست چیزی باقی نمی‌ماند).&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری): گزارش دقت HTML.&lt;/li&gt;&lt;/ul&gt;</translation>
-        </message>
-        <message>
             <source>Rectify image with GCPs</source>
             <translation>تصحیح تصویر با نقاط کنترل زمینی</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Rectifies (warps) an image with ground control points through GDAL: a polynomial of order 1–3, a linear, Helmert, projective or thin-plate-spline transformation, or the one with the lowest check-point / leave-one-out error (as &lt;i&gt;gdalwarp -order N&lt;/i&gt; / &lt;i&gt;-tps&lt;/i&gt;), and writes the accuracy report. The input image is never modified.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 REFINE=true OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Image&lt;/b&gt; (INPUT): the raster to rectify.&lt;/li&gt;</source>
-            <translation>&lt;p&gt;تصویری را با نقاط کنترل زمینی از طریق GDAL تصحیح (بازنمونه) می‌کند: چندجمله‌ای درجهٔ 1–3، تبدیل خطی، هلمرت، تصویری یا اسپلاین صفحهٔ نازک، یا تبدیلی با کمترین خطای نقاط چک / حذف‌یکی (مانند &lt;i&gt;gdalwarp -order N&lt;/i&gt; / &lt;i&gt;-tps&lt;/i&gt;)، و گزارش دقت را می‌نویسد. تصویر ورودی هرگز تغییر نمی‌کند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=scan.tif GCP_FILE=scan.tif.points TRANSFORMATION=8 REFINE=true OUTPUT=scan_rect.tif OUTPUT_HTML=scan_rect.html&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;تصویر&lt;/b&gt; (INPUT): رستری که باید تصحیح شود.&lt;/li&gt;</translation>
+            <source>Rectifies (warps) an image with ground control points through GDAL: a polynomial of order 1–3, a linear, Helmert, projective or thin-plate-spline transformation, or the one with the lowest check-point error. It writes the accuracy report by the paper's criteria and never modifies the input image.</source>
+            <translation>یک تصویر را با نقاط کنترل زمینی از راه GDAL تصحیح هندسی می‌کند: چندجمله‌ای درجهٔ 1–3، تبدیل خطی، هلمرت، تصویری یا اسپلاین صفحهٔ نازک، یا تبدیلی که کمترین خطای نقاط چک را دارد. گزارش دقت را بر پایهٔ معیارهای مقاله می‌نویسد و تصویر ورودی را هرگز تغییر نمی‌دهد.</translation>
+        </message>
+        <message>
+            <source>GDAL reprojects after the transformation.</source>
+            <translation>GDAL پس از تبدیل، تصویر را بازتصویر می‌کند.</translation>
+        </message>
+        <message>
+            <source>Nearest neighbour, as in the paper.</source>
+            <translation>نزدیک‌ترین همسایه، همانند مقاله.</translation>
+        </message>
+        <message>
+            <source>Default: the input's nodata, else 0.</source>
+            <translation>پیش‌فرض: مقدار بدون دادهٔ ورودی، وگرنه 0.</translation>
+        </message>
+        <message>
+            <source>GCP rectification report</source>
+            <translation>گزارش تصحیح با نقاط کنترل زمینی</translation>
         </message>
     </context>
     <context>
@@ -2384,10 +2388,6 @@
             <translation>تبدیل</translation>
         </message>
         <message>
-            <source>polynomial of order ORDER</source>
-            <translation>چندجمله‌ای درجهٔ ORDER</translation>
-        </message>
-        <message>
             <source>polynomial order 1 (affine)</source>
             <translation>چندجمله‌ای درجهٔ 1 (آفین)</translation>
         </message>
@@ -2430,6 +2430,34 @@
         <message>
             <source>Minimum GCPs kept by the refinement [default: minimum + 2]</source>
             <translation>حداقل نقاط باقی‌مانده پس از پالایش [پیش‌فرض: حداقل + 2]</translation>
+        </message>
+        <message>
+            <source>A QGIS Georeferencer .points file or a CSV table with id, col, row, X, Y and optional enabled, role (gcp or check) and weight. Give the file or a point layer.</source>
+            <translation>فایل ‎.points‎ زمین‌مرجع‌ساز QGIS یا جدول CSV با ستون‌های id، col، row، X، Y و به‌دلخواه enabled، role ‏(gcp یا check) و weight. فایل یا یک لایهٔ نقطه‌ای را بدهید.</translation>
+        </message>
+        <message>
+            <source>Its geometry gives the map coordinates; the fields below give the image coordinates.</source>
+            <translation>هندسهٔ آن مختصات نقشه را می‌دهد؛ فیلدهای زیر مختصات تصویر را می‌دهند.</translation>
+        </message>
+        <message>
+            <source>Needed when the file does not state its CRS.</source>
+            <translation>وقتی فایل سامانهٔ مختصات خود را نمی‌گوید لازم است.</translation>
+        </message>
+        <message>
+            <source>The last choice picks the transformation with the lowest check-point or leave-one-out error.</source>
+            <translation>گزینهٔ آخر تبدیلی را برمی‌گزیند که کمترین خطای نقاط چک یا حذف‌یکی را دارد.</translation>
+        </message>
+        <message>
+            <source>Drops the worst point while a residual exceeds the tolerance, keeping at least the minimum number of GCPs.</source>
+            <translation>تا وقتی باقیمانده‌ای از رواداری بیشتر است بدترین نقطه را حذف می‌کند و دست‌کم کمینهٔ نقاط کنترل را نگه می‌دارد.</translation>
+        </message>
+        <message>
+            <source>Sets the map scale S = 20000·GR and the tolerance band 4·GR to 6·GR of the criteria (Tishreen Univ. J. Eng. Sci. 38(2), 2016).</source>
+            <translation>مقیاس نقشه S = 20000·GR و بازهٔ رواداری 4·GR تا 6·GR معیارها را تعیین می‌کند (مجلهٔ علوم مهندسی دانشگاه تشرین 38(2)، 2016).</translation>
+        </message>
+        <message>
+            <source>polynomial of the order set below</source>
+            <translation>چندجمله‌ای با درجهٔ تعیین‌شده در پایین</translation>
         </message>
     </context>
     <context>
