@@ -84,7 +84,12 @@ test-qgis: venv qm
 test-cli: venv qm
 	$(PY) -m pytest tests/cli $(PYTEST_ARGS)
 
-bench: venv
+$(VENV)/.bench-stamp: requirements-bench.txt $(VENV)/.stamp
+	$(PY) -m pip install -q --disable-pip-version-check -c $(VENV)/constraints.txt \
+		-r requirements-bench.txt
+	touch $@
+
+bench: venv $(VENV)/.bench-stamp
 	$(PY) benchmarks/run_all.py $(BENCH_ARGS)
 
 lint: venv

@@ -50,7 +50,8 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                 "lsq_faithful": self.tr("LSQ surfaces, faithful (the paper)"),
                 "lsq_improved": self.tr("LSQ surfaces, improved (ours)"),
                 "slope_exact": self.tr("Slope filter, exact (Vosselman 2000)"),
-                "slope_adaptive": self.tr("Slope filter, terrain-adaptive")}
+                "slope_adaptive": self.tr("Slope filter, terrain-adaptive"),
+                "groundfilter": self.tr("Ground filter (recommended)")}
 
     def _dtm_labels(self) -> dict:
         return {"idw": self.tr("IDW"), "kriging": self.tr("Kriging"), "tin": self.tr("TIN")}

@@ -2,7 +2,8 @@
 # The main job on embedded (generated) demo data, entirely through qgis_process:
 #   1. generate the demo LiDAR tile and check points (deterministic, no downloads);
 #   2. GSD / photogrammetric accuracy for the paper's camera;
-#   3. LiDAR chain: ground filter → DTM → accuracy against the check points;
+#   3. LiDAR chain: ground filter (geomatics:groundfilter, the recommended one, inside the
+#      shipped model) → DTM → accuracy against the check points;
 #   4. a 4-tile catalog processed in buffered chunks on a local Dask cluster.
 # Outputs go to the folder given as $1 (default out/).
 set -euo pipefail

@@ -80,6 +80,11 @@ def _slope(mode):
     return run
 
 
+def _recommended(x, y, z, dims, origin):
+    from .recommended import classify
+    return classify(x, y, z)
+
+
 def _idw(x, y, z, grid, max_distance):
     from ..terrain.idw import idw_grid
     return idw_grid(x, y, z, grid, max_distance=max_distance, workers=1)
@@ -95,6 +100,7 @@ register_ground_filter("lsq_faithful", "LSQ surfaces (faithful)", _lsq("faithful
 register_ground_filter("lsq_improved", "LSQ surfaces (improved)", _lsq("improved"), tiling=True)
 register_ground_filter("slope_exact", "Slope filter (exact)", _slope("exact"))
 register_ground_filter("slope_adaptive", "Slope filter (terrain-adaptive)", _slope("adaptive"))
+register_ground_filter(RECOMMENDED_FILTER, "Ground filter (recommended)", _recommended)
 register_dtm_method("idw", "IDW", _idw)
 register_dtm_method("kriging", "Kriging", _kriging)
 

@@ -238,3 +238,11 @@ def test_recommended_one_cell_wide_strip():
     z[500] += 5.0
     cls = recommended.classify(x, y, z)
     assert np.flatnonzero(cls != 2).tolist() == [500]
+
+
+def test_catalog_default_is_the_recommended_filter():
+    from geomatics_toolbox.core.lidar._chunks import GROUND_FILTERS, default_ground_filter
+    assert default_ground_filter() == "groundfilter"
+    x, y, z, _ = scene(size=40.0)
+    cls = GROUND_FILTERS["groundfilter"].func(x, y, z, {}, (0.0, 0.0))
+    assert np.array_equal(cls, recommended.classify(x, y, z))
