@@ -104,10 +104,11 @@ model: venv
 help-pages: venv qm
 	$(PY) scripts/build_help.py
 
-# Every dialog and report in en/ar/fa as PNGs for review (Xvfb + QGIS, headless Chromium).
+# Every dialog and report in en/ar/fa as PNGs for review (Xvfb + QGIS, headless Chromium);
+# SCREENSHOTS_ARGS="--only idwdtm,lsqgroundfilter --langs ar,fa" limits the run.
 screenshots: venv qm
 	xvfb-run -a -s "-screen 0 1280x1024x24" env QT_QPA_PLATFORM=xcb \
-		$(PY) scripts/screenshots.py --out out/screenshots
+		$(PY) scripts/screenshots.py --out out/screenshots $(SCREENSHOTS_ARGS)
 
 # --------------------------------------------------------------------------- ship
 package: venv qm

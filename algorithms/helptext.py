@@ -114,8 +114,10 @@ def build_help(alg, summary: str, example: str, notes: dict | None = None) -> st
                for o in source.outputDefinitions() if isinstance(o, QgsProcessingOutputNumber)]
     parts = [f"<p>{summary}</p>",
              f"<p><b>{_tr('Example')}</b></p>",
-             f'<pre dir="ltr">qgis_process run geomatics:{alg.name()} -- '
-             f"{html.escape(example)}</pre>",
+             # a wrapping <code> paragraph, not <pre>: a long unbreakable line widens the
+             # dialog's help panel and, right-to-left, scrolls the prose out of view
+             f'<p dir="ltr"><code>qgis_process run geomatics:{alg.name()} -- '
+             f"{html.escape(example)}</code></p>",
              f"<p><b>{_tr('Parameters')}</b></p>",
              "<ul>" + "".join(lines) + "</ul>"]
     if numbers:

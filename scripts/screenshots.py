@@ -32,13 +32,15 @@ def _setup():
         spec.loader.exec_module(mod)
 
 
-def dialogs(out: Path, lang: str) -> int:
-    """Grab the dialog of every algorithm in ``lang``; returns the count."""
+def dialogs(out: Path, lang: str, only=()) -> int:
+    """Grab the dialog of every algorithm (or of those in ``only``) in ``lang``."""
     from processing.gui.AlgorithmDialog import AlgorithmDialog
     from qgis.core import QgsApplication
     provider = QgsApplication.processingRegistry().providerById("geomatics")
     n = 0
     for alg in provider.algorithms():
+        if only and alg.name() not in only:
+            continue
         dlg = AlgorithmDialog(alg.create(), False, None)
         dlg.resize(900, 700)
         dlg.show()
@@ -50,14 +52,17 @@ def dialogs(out: Path, lang: str) -> int:
     return n
 
 
-def reports(out: Path, lang: str) -> int:
-    """Run every checked report algorithm in ``lang`` and photograph the page."""
+def reports(out: Path, lang: str, only=()) -> int:
+    """Run every checked report algorithm (or those in ``only``) in ``lang`` and
+    photograph the page."""
     import browser
     import processing
     from test_reports_browser import CASES
     n = 0
     with tempfile.TemporaryDirectory() as tmp:
         for alg_id, case in CASES.items():
+            if only and alg_id.split(":")[1] not in only:
+                continue
             params, output, _ = case(Path(tmp))
             html = Path(tmp) / f"{alg_id.split(':')[1]}_{lang}.html"
             processing.run(alg_id, {**{k: str(v) for k, v in params.items()},
@@ -72,6 +77,8 @@ def main(argv=None) -> int:
     ap.add_argument("--out", default=str(ROOT / "out" / "screenshots"))
     ap.add_argument("--langs", default="en,ar,fa")
     ap.add_argument("--no-reports", action="store_true")
+    ap.add_argument("--only", default="",
+                    help="comma-separated algorithm names (default: all), e.g. idwdtm,dsm")
     args = ap.parse_args(argv)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -96,9 +103,10 @@ def main(argv=None) -> int:
         QgsApplication.setLayoutDirection(Qt.RightToLeft if lang in ("ar", "fa")
                                           else Qt.LeftToRight)
         try:
-            total += dialogs(out, lang)
+            only = tuple(filter(None, args.only.split(",")))
+            total += dialogs(out, lang, only)
             if not args.no_reports:
-                total += reports(out, lang)
+                total += reports(out, lang, only)
         finally:
             QgsApplication.removeTranslator(translator)
             QgsApplication.removeTranslator(qgis_translator)
