@@ -24,6 +24,7 @@ import numpy as np
 
 from ..progress import Monitor
 from .contract import atomic_output, check_not_input
+from .crs import spatial_reference
 
 DEFAULT_CHUNK = 2_000_000
 _SUPPORTED_VERSIONS = {(1, 0), (1, 1), (1, 2), (1, 3), (1, 4)}
@@ -391,10 +392,7 @@ def write_las(dst, x, y, z, *, dimensions: Optional[Mapping[str, np.ndarray]] = 
 
 def _add_crs(header, crs: str) -> None:
     laspy = _laspy()
-    from osgeo import osr
-    srs = osr.SpatialReference()
-    if srs.SetFromUserInput(crs) != 0:
-        raise ValueError(f"Unrecognised CRS {crs!r}; give e.g. 'EPSG:32632' or WKT.")
+    srs = spatial_reference(crs)
     if header.version.minor >= 4:
         header.vlrs.append(laspy.vlrs.known.WktCoordinateSystemVlr(srs.ExportToWkt()))
         header.global_encoding.wkt = True

@@ -32,6 +32,7 @@ from typing import Dict, List, Optional, Sequence
 import numpy as np
 
 from ..errors import InputError
+from ..io.crs import crs_label
 from ..io.gcp import GCPSet
 from ..progress import Monitor
 from .polynomial import (
@@ -704,15 +705,5 @@ def evaluate_gcps(gcps: GCPSet, *, order: int = 2, gr: Optional[float] = None,
 
 
 def _crs_name(crs: str) -> str:
-    if not crs:
-        return "unknown"
-    try:
-        from osgeo import osr
-        s = osr.SpatialReference()
-        s.SetFromUserInput(crs)
-        name = s.GetName() or ""
-        code = s.GetAuthorityCode(None)
-        auth = s.GetAuthorityName(None)
-        return f"{name} ({auth}:{code})" if code else (name or crs[:60])
-    except Exception:  # noqa: BLE001 - a name for display only
-        return crs[:60]
+    """Return a display label of the CRS (``'unknown'`` when none)."""
+    return crs_label(crs) or "unknown"

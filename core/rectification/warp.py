@@ -26,6 +26,7 @@ from typing import Optional, Sequence
 import numpy as np
 
 from ..io.contract import atomic_output, check_not_input
+from ..io.crs import linear_unit, same_crs, spatial_reference
 from ..io.gcp import GCPSet, check_in_image, make_gcps
 from ..progress import Cancelled, Monitor
 from .polynomial import MAX_CONDITION, fit_polynomial
@@ -42,23 +43,8 @@ def _gdal():
 
 
 def _srs(crs: str, what: str):
-    from osgeo import osr
-    s = osr.SpatialReference()
-    try:
-        ok = s.SetFromUserInput(str(crs)) == 0
-    except RuntimeError:
-        ok = False
-    if not ok:
-        raise ValueError(f"Unrecognised {what} {crs!r}; give e.g. 'EPSG:22780' or a WKT.")
-    s.SetAxisMappingStrategy(osr.OAMS_TRADITIONAL_GIS_ORDER)
-    return s
-
-
-def same_crs(a: str, b: str) -> bool:
-    """Return True when the two CRS definitions describe the same CRS."""
-    if not a or not b:
-        return a == b
-    return bool(_srs(a, "CRS").IsSame(_srs(b, "CRS")))
+    """Return the ``osr.SpatialReference`` of ``crs`` (one CRS helper: core/io/crs.py)."""
+    return spatial_reference(crs, what=what)
 
 
 def image_info(path):
@@ -98,10 +84,8 @@ def ground_resolution(gcps: GCPSet, crs: Optional[str] = None) -> float:
 
 def linear_units(crs: str) -> tuple:
     """``(is_projected, unit_name, metres_per_unit)`` of a CRS."""
-    s = _srs(crs, "CRS")
-    if s.IsGeographic():
-        return False, "degree", float("nan")
-    return True, s.GetLinearUnitsName() or "m", float(s.GetLinearUnits())
+    name, per_unit = linear_unit(crs)
+    return name != "degree", name, per_unit
 
 
 def gcps_vrt(src_path: str, gcps: GCPSet, crs: str):
