@@ -4,7 +4,6 @@ from __future__ import annotations
 from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
-    QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
 )
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
@@ -33,9 +32,7 @@ class _GroundCommon(LidarFilterMixin):
                        "point cloud").split(",")
 
     def add_input(self):
-        self.add(QgsProcessingParameterFile(
-            self.INPUT, self.tr("Point cloud (LAS/LAZ)"),
-            behavior=QgsProcessingParameterFile.File, fileFilter=LAS_IN_FILTER))
+        self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))
 
     def add_outputs(self):
         self.add(QgsProcessingParameterBoolean(
@@ -48,7 +45,7 @@ class _GroundCommon(LidarFilterMixin):
             self.GROUND_OUTPUT, self.tr("Ground points"), LAS_OUT_FILTER, optional=True,
             createByDefault=False))
         self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Report"), self.tr("HTML files (*.html)"),
+            self.OUTPUT_HTML, self.tr("Ground filter report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
         for name, label in (("N_POINTS", self.tr("Points read")),
                             ("N_GROUND", self.tr("Ground points (class 2)")),
@@ -69,7 +66,7 @@ class _GroundCommon(LidarFilterMixin):
 
     def run_filter(self, parameters, context, feedback, algorithm) -> dict:
         """Classify INPUT with ``algorithm`` through the pipeline; the output numbers."""
-        src = self.parameterAsFile(parameters, self.INPUT, context)
+        src = self.las_input_path(parameters, context, self.INPUT)
         selection = self.selection(parameters, context)
         outputs = self.filter_outputs(parameters, context, cloud=self.OUTPUT,
                                       ground=self.GROUND_OUTPUT, report=self.OUTPUT_HTML)
@@ -82,6 +79,8 @@ class _GroundCommon(LidarFilterMixin):
         result = {"N_POINTS": s.n_points, "N_GROUND": s.n_ground,
                   "N_NONGROUND": s.n_nonground, "N_NOISE": s.count(7),
                   "POINTS_PER_SECOND": s.n_points / filt if filt > 0 else None}
+        self.load_cloud_on_completion(context, outputs.cloud,
+                                      self.tr("Classified point cloud"), self.OUTPUT)
         return {**result, **self.filter_results(outputs)}
 
 

@@ -142,6 +142,16 @@ def _lidartodtm(tmp_path):
             ["residual-map", "error-vs-height"])
 
 
+def _groundfilter(tmp_path):
+    return (dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "gf.laz"), "OUTPUT_HTML",
+            ["class-map"])
+
+
+def _ptd(tmp_path):
+    return (dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "ptd.laz"), "OUTPUT_HTML",
+            ["class-map"])
+
+
 def _tin(tmp_path):
     return dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "tin.tif"), "OUTPUT_HTML", ["dtm-map"]
 
@@ -189,6 +199,8 @@ CASES = {
     "geomatics:catalog": _catalog,
     "geomatics:rectifybatch": _rectify_batch,
     "geomatics:tindtm": _tin,
+    "geomatics:groundfilter": _groundfilter,
+    "geomatics:ptdgroundfilter": _ptd,
     "geomatics:lidarqa": _lidarqa,
     "geomatics:buildings": _buildings,
     "geomatics:elevationchange": _change,
