@@ -260,8 +260,9 @@ def assess_clouds(classified, reference=None, *, field: str = "classification",
 
 
 # ----------------------------------------------------------------------------- report
-CITATION = ("Measures of the ISPRS filter test: Sithole, G. & Vosselman, G. (2004), "
-            "ISPRS J. Photogramm. Remote Sens. 59(1-2), 85-101.")
+CITATION = ("Measures of the ISPRS filter test: {ref}",
+            "Sithole, G. & Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. 59(1-2), "
+            "85-101.")
 
 
 @dataclass(frozen=True)
@@ -297,7 +298,7 @@ def accuracy_report(res: CloudAssessment, inputs: AssessmentInputs, *,
     """
     from ..reporting import KeyValues, Paragraph, Report, T, Table, translator
     a = res.accuracy
-    rep = Report("Ground filter accuracy", citation=CITATION)
+    rep = Report("Ground filter accuracy", citation=T(CITATION[0], ref=CITATION[1]))
     rep.summary.append(Paragraph(T(
         "Type I {t1} %, Type II {t2} %, total {tot} %, kappa {k} % over {n} points.",
         t1=_r2(a.type1), t2=_r2(a.type2), tot=_r2(a.total), k=_r2(a.kappa), n=a.n)))

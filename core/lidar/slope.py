@@ -1055,8 +1055,8 @@ class SlopeFilter(GroundFilter):
 
     name = "slope"
     title = "Ground filter (slope-based)"
-    citation = ("Reference: Vosselman, G. (2000). Slope based filtering of laser altimetry "
-                "data. IAPRS XXXIII-B3, 935–942.")
+    citation = T("Reference: {ref}", ref="Vosselman, G. (2000). Slope based filtering of "
+                 "laser altimetry data. IAPRS XXXIII-B3, 935–942.")
 
     def __init__(self, options: Optional[SlopeOptions] = None):
         super().__init__((options or SlopeOptions()).validate())

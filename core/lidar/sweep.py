@@ -211,10 +211,12 @@ def sweep_report(summary: SweepSummary, *, lang: str = "en") -> Report:
         The content, rendered by :func:`~..reporting.render_html`.
     """
     res, b = summary.result, summary.result.best
-    rep = Report("Slope filter threshold sweep", citation=(
-        "Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS "
-        "XXXIII-B3, 935–942. Error measures: Sithole, G. & Vosselman, G. (2004), ISPRS J. "
-        "Photogramm. Remote Sens. 59(1-2), 85-101."))
+    rep = Report("Slope filter threshold sweep", citation=T(
+        "Reference: {ref} Error measures: {ref2}",
+        ref="Vosselman, G. (2000). Slope based filtering of laser altimetry data. IAPRS "
+            "XXXIII-B3, 935–942.",
+        ref2="Sithole, G. & Vosselman, G. (2004), ISPRS J. Photogramm. Remote Sens. "
+             "59(1-2), 85-101."))
     rep.summary.append(Paragraph(T(
         "{n} points, {e} filtered (the others — low outliers, non-last returns — count as "
         "non-ground); {g} reference ground points.", n=summary.n_points,

@@ -35,20 +35,22 @@ def _tile(tmp_path):
 
 
 def _lsq(tmp_path):
-    return dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "lsq.laz"), "OUTPUT_HTML", []
+    return (dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "lsq.laz"), "OUTPUT_HTML",
+            ["class-map", "tile-map"])
 
 
 def _slope(tmp_path):
-    return dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "slope.laz"), "OUTPUT_HTML", []
+    return dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "slope.laz"), "OUTPUT_HTML", ["class-map"]
 
 
 def _sweep(tmp_path):
     return (dict(INPUT=_tile(tmp_path), SLOPES="40:60:10", RADII="3",
-                 HEIGHT_TOLERANCES="0", OUTPUT_CSV=tmp_path / "sweep.csv"), "OUTPUT_HTML", [])
+                 HEIGHT_TOLERANCES="0", OUTPUT_CSV=tmp_path / "sweep.csv"), "OUTPUT_HTML",
+            ["sweep-plot", "error-map"])
 
 
 def _filter_accuracy(tmp_path):
-    return dict(INPUT=_tile(tmp_path), REFERENCE=_tile(tmp_path)), "OUTPUT_HTML", []
+    return dict(INPUT=_tile(tmp_path), REFERENCE=_tile(tmp_path)), "OUTPUT_HTML", ["error-map"]
 
 
 def _gcp_case(tmp_path):
@@ -213,13 +215,6 @@ PENDING: dict = {}
 KNOWN_GAPS = {
     "geomatics:catalog": "the per-tile timing label 'tile' is English in ar/fa (measured: "
                          "'tile: 1.3 s') and the lidR/Dask references are prose — catalog",
-    "geomatics:groundfilteraccuracy": "report still English in ar/fa (title 'Ground filter "
-                                      "accuracy', 'Inputs', 'item', 'value'; input path "
-                                      "not isolated) — lidar",
-    "geomatics:slopegroundfilter": "the Vosselman (2000) reference title is prose, not "
-                                   "bidi-isolated data (lidar: render references as data)",
-    "geomatics:slopethresholdsweep": "the Vosselman (2000) / Sithole & Vosselman (2004) "
-                                     "reference titles are prose, not bidi-isolated data",
 }
 
 needs_chromium = pytest.mark.skipif(browser.chromium() is None,
