@@ -2562,10 +2562,6 @@
             <translation>نقاط الأرض</translation>
         </message>
         <message>
-            <source>Report</source>
-            <translation>التقرير</translation>
-        </message>
-        <message>
             <source>HTML files (*.html)</source>
             <translation>ملفات HTML (*.html)</translation>
         </message>
@@ -2592,6 +2588,10 @@
         <message>
             <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
             <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الفلترة {:.1f} ث</translation>
+        </message>
+        <message>
+            <source>Ground filter report</source>
+            <translation>تقرير مرشّح الأرض</translation>
         </message>
     </context>
     <context>

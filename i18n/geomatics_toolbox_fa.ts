@@ -2562,10 +2562,6 @@
             <translation>نقاط زمینی</translation>
         </message>
         <message>
-            <source>Report</source>
-            <translation>گزارش</translation>
-        </message>
-        <message>
             <source>HTML files (*.html)</source>
             <translation>پرونده‌های HTML (*.html)</translation>
         </message>
@@ -2592,6 +2588,10 @@
         <message>
             <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
             <translation>{} نقطه: {} زمینی، {} غیرزمینی، {} پرت پایین؛ فیلتر {:.1f} ثانیه</translation>
+        </message>
+        <message>
+            <source>Ground filter report</source>
+            <translation>گزارش فیلتر زمین</translation>
         </message>
     </context>
     <context>

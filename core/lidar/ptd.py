@@ -34,6 +34,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..progress import Cancelled, Monitor
+from ..reporting import T
 from . import _raster as R  # noqa: N812
 from . import _tin
 from .recommended import OptionsFilter, _options
@@ -45,8 +46,8 @@ GROUND = np.uint8(2)
 OBJECT = np.uint8(1)
 LOW_NOISE = np.uint8(7)
 TITLE = "Ground filter (progressive TIN densification)"
-CITATION = ("Reference: Axelsson, P. (2000). DEM generation from laser scanner data using "
-            "adaptive TIN models. IAPRS XXXIII-B4, 110–117.")
+CITATION = T("Reference: {ref}", ref="Axelsson, P. (2000). DEM generation from laser scanner "
+             "data using adaptive TIN models. IAPRS XXXIII-B4, 110–117.")
 
 
 @dataclass(frozen=True)

@@ -53,6 +53,7 @@ from scipy import ndimage
 
 from ..errors import InputError
 from ..progress import Cancelled, Monitor
+from ..reporting import T
 from . import _raster as R  # noqa: N812
 from .pipeline import FunctionFilter
 
@@ -63,11 +64,12 @@ GROUND = np.uint8(2)
 OBJECT = np.uint8(1)
 LOW_NOISE = np.uint8(7)
 TITLE = "Ground filter (recommended)"
-CITATION = ("References: Pingel, T. J., Clarke, K. C. & McBride, W. A. (2013). An improved "
-            "simple morphological filter for the terrain classification of airborne LIDAR "
-            "data. ISPRS J. Photogramm. Remote Sens. 77, 21–30. Zhang, K. et al. (2003). A "
-            "progressive morphological filter for removing nonground measurements from "
-            "airborne LIDAR data. IEEE TGRS 41(4), 872–882.")
+CITATION = T("References: {ref}", ref=(
+    "Pingel, T. J., Clarke, K. C. & McBride, W. A. (2013). An improved simple morphological "
+    "filter for the terrain classification of airborne LIDAR data. ISPRS J. Photogramm. "
+    "Remote Sens. 77, 21–30. Zhang, K. et al. (2003). A progressive morphological filter "
+    "for removing nonground measurements from airborne LIDAR data. IEEE TGRS 41(4), "
+    "872–882."))
 
 
 @dataclass(frozen=True)
