@@ -4,11 +4,18 @@ from __future__ import annotations
 import os
 
 from qgis.core import QgsApplication
-from qgis.PyQt.QtCore import QCoreApplication, QTranslator
+from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QTranslator
 
 from .algorithms.locale import user_locale
 
 PLUGIN_DIR = os.path.dirname(__file__)
+
+
+#: Messages of QGIS itself that this plugin's translator overrides because the
+#: translation shipped with QGIS 3.22 is broken: Debian's Arabic has "1% [اختياري]"
+#: (the placeholder reversed), so every optional parameter of every dialog lost its label.
+#: Our translator is installed after QGIS's, so Qt consults it first.
+QGIS_OVERRIDES = (QT_TRANSLATE_NOOP("QObject", "%1 [optional]"),)
 
 
 def install_translator(locale: str | None = None) -> QTranslator | None:

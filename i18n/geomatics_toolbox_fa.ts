@@ -1835,6 +1835,13 @@
         </message>
     </context>
     <context>
+        <name>QObject</name>
+        <message>
+            <source>%1 [optional]</source>
+            <translation>%1 [اختیاری]</translation>
+        </message>
+    </context>
+    <context>
         <name>RectifyBatchAlgorithm</name>
         <message>
             <source>Rectify a folder of images with GCPs (batch)</source>

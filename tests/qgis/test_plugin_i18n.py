@@ -146,3 +146,25 @@ def test_every_label_and_help_is_translated_at_run_time(qgis_app, lang, tmp_path
         assert not missing, "untranslated:\n" + "\n".join(missing)
     finally:
         QCoreApplication.removeTranslator(translator)
+
+
+@pytest.mark.parametrize("lang,expected", [("ar", "الفئات [اختياري]"),
+                                           ("fa", "الفئات [اختیاری]")])
+def test_broken_qgis_optional_label_is_overridden(qgis_app, lang, expected, tmp_path):
+    """Debian QGIS 3.22's Arabic '%1 [optional]' reads '1% [اختياري]' (the label is lost);
+    the plugin's translator, installed after QGIS's, restores the label."""
+    from qgis.PyQt.QtCore import QCoreApplication, QTranslator
+    qgis_own = QTranslator()
+    qgis_qm = Path("/usr/share/qgis/i18n") / f"qgis_{lang}.qm"
+    if qgis_qm.exists():
+        assert qgis_own.load(str(qgis_qm))
+        QCoreApplication.installTranslator(qgis_own)
+    ours = QTranslator()
+    assert ours.load(str(_qm(lang, tmp_path)))
+    QCoreApplication.installTranslator(ours)
+    try:
+        assert QCoreApplication.translate("QObject", "%1 [optional]").replace(
+            "%1", "الفئات") == expected
+    finally:
+        QCoreApplication.removeTranslator(ours)
+        QCoreApplication.removeTranslator(qgis_own)
