@@ -19,6 +19,7 @@ def all_algorithms():
     from .lidar_qa import LidarQaAlgorithm
     from .lidar_to_dtm import LidarToDtmAlgorithm
     from .lsq_filter import LsqGroundFilterAlgorithm
+    from .publish_outputs import PublishOutputsAlgorithm
     from .slope_filter import SlopeGroundFilterAlgorithm, SlopeThresholdSweepAlgorithm
     from .terrain import DsmAlgorithm, IdwDtmAlgorithm, KrigingDtmAlgorithm
     from .tin_dtm import TinDtmAlgorithm
@@ -35,6 +36,7 @@ def all_algorithms():
         TinDtmAlgorithm(),
         DtmAccuracyAlgorithm(),
         LidarToDtmAlgorithm(),
+        PublishOutputsAlgorithm(),
         SlopeGroundFilterAlgorithm(),
         SlopeThresholdSweepAlgorithm(),
         LsqGroundFilterAlgorithm(),

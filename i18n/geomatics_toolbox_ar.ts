@@ -1835,6 +1835,85 @@
         </message>
     </context>
     <context>
+        <name>PublishOutputsAlgorithm</name>
+        <message>
+            <source>Publish chain outputs</source>
+            <translation>نشر مخرجات السلسلة</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Copies the files written by the earlier steps of a model to their destinations, all of them or none. It is the last step of the model 'LiDAR to DTM with accuracy': when a destination cannot be written, no classified cloud, DTM or report is left at any destination.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: CLOUD=/tmp/ground.laz DTM=/tmp/dtm.tif OUTPUT=classified.laz OUTPUT_DTM=dtm.tif → both published together.&lt;/p&gt;&lt;p&gt;Every destination is checked against the model's inputs, the files to publish and the other destinations before anything is copied. A destination in another format than its temporary file (e.g. .las for a .laz cloud) is converted. Hidden from the toolbox: used by the shipped model.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Files to publish&lt;/b&gt;: classified cloud, ground filter report, DTM, DTM report, check-point residuals, DTM accuracy report (each optional; no default).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Inputs of the chain&lt;/b&gt;: point cloud and check points (never overwritten).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Destinations&lt;/b&gt;: one per file; an unset one is not published.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;ينسخ الملفات التي كتبتها الخطوات السابقة في النموذج إلى وجهاتها، كلها أو لا شيء منها. وهو الخطوة الأخيرة في النموذج «من الليدار إلى نموذج التضاريس الرقمي مع الدقة»: عندما يتعذر كتابة وجهة ما، لا تبقى أي سحابة مصنفة أو نموذج تضاريس رقمي أو تقرير في أي وجهة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: CLOUD=/tmp/ground.laz DTM=/tmp/dtm.tif OUTPUT=classified.laz OUTPUT_DTM=dtm.tif ← يُنشران معًا.&lt;/p&gt;&lt;p&gt;تُفحص كل وجهة مقابل مدخلات النموذج والملفات المراد نشرها والوجهات الأخرى قبل نسخ أي شيء. وتُحوَّل الوجهة التي تختلف صيغتها عن ملفها المؤقت (مثل ‎.las لسحابة ‎.laz). مخفية من صندوق الأدوات: يستخدمها النموذج المرفق.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الملفات المراد نشرها&lt;/b&gt;: السحابة المصنفة، وتقرير مرشح الأرض، ونموذج التضاريس الرقمي، وتقريره، وبواقي نقاط التحقق، وتقرير دقة نموذج التضاريس الرقمي (كل منها اختياري؛ بلا قيمة افتراضية).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مدخلات السلسلة&lt;/b&gt;: سحابة النقاط ونقاط التحقق (لا يُكتب فوقها أبدًا).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الوجهات&lt;/b&gt;: وجهة لكل ملف؛ الوجهة غير المحددة لا يُنشر ملفها.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Classified point cloud to publish</source>
+            <translation>سحابة النقاط المصنفة المراد نشرها</translation>
+        </message>
+        <message>
+            <source>Ground filter report to publish</source>
+            <translation>تقرير مرشح الأرض المراد نشره</translation>
+        </message>
+        <message>
+            <source>DTM to publish</source>
+            <translation>نموذج التضاريس الرقمي المراد نشره</translation>
+        </message>
+        <message>
+            <source>DTM report to publish</source>
+            <translation>تقرير نموذج التضاريس الرقمي المراد نشره</translation>
+        </message>
+        <message>
+            <source>Check-point residuals to publish</source>
+            <translation>بواقي نقاط التحقق المراد نشرها</translation>
+        </message>
+        <message>
+            <source>DTM accuracy report to publish</source>
+            <translation>تقرير دقة نموذج التضاريس الرقمي المراد نشره</translation>
+        </message>
+        <message>
+            <source>Point cloud of the chain (never overwritten)</source>
+            <translation>سحابة نقاط السلسلة (لا يُكتب فوقها أبدًا)</translation>
+        </message>
+        <message>
+            <source>Check point file of the chain (never overwritten)</source>
+            <translation>ملف نقاط التحقق للسلسلة (لا يُكتب فوقه أبدًا)</translation>
+        </message>
+        <message>
+            <source>Check point layer of the chain (never overwritten)</source>
+            <translation>طبقة نقاط التحقق للسلسلة (لا يُكتب فوقها أبدًا)</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>سحابة النقاط المصنَّفة</translation>
+        </message>
+        <message>
+            <source>Ground filter report</source>
+            <translation>تقرير مرشّح الأرض</translation>
+        </message>
+        <message>
+            <source>DTM</source>
+            <translation>نموذج الارتفاعات الرقمي للأرض (DTM)</translation>
+        </message>
+        <message>
+            <source>DTM report</source>
+            <translation>تقرير نموذج التضاريس الرقمي</translation>
+        </message>
+        <message>
+            <source>Check-point residuals</source>
+            <translation>بواقي نقاط التحقق</translation>
+        </message>
+        <message>
+            <source>DTM accuracy report</source>
+            <translation>تقرير دقة نموذج التضاريس الرقمي</translation>
+        </message>
+        <message>
+            <source>Published {path}</source>
+            <translation>نُشر {path}</translation>
+        </message>
+    </context>
+    <context>
         <name>QObject</name>
         <message>
             <source>%1 [optional]</source>

@@ -1835,6 +1835,85 @@
         </message>
     </context>
     <context>
+        <name>PublishOutputsAlgorithm</name>
+        <message>
+            <source>Publish chain outputs</source>
+            <translation>انتشار خروجی‌های زنجیره</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Copies the files written by the earlier steps of a model to their destinations, all of them or none. It is the last step of the model 'LiDAR to DTM with accuracy': when a destination cannot be written, no classified cloud, DTM or report is left at any destination.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: CLOUD=/tmp/ground.laz DTM=/tmp/dtm.tif OUTPUT=classified.laz OUTPUT_DTM=dtm.tif → both published together.&lt;/p&gt;&lt;p&gt;Every destination is checked against the model's inputs, the files to publish and the other destinations before anything is copied. A destination in another format than its temporary file (e.g. .las for a .laz cloud) is converted. Hidden from the toolbox: used by the shipped model.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Files to publish&lt;/b&gt;: classified cloud, ground filter report, DTM, DTM report, check-point residuals, DTM accuracy report (each optional; no default).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Inputs of the chain&lt;/b&gt;: point cloud and check points (never overwritten).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Destinations&lt;/b&gt;: one per file; an unset one is not published.&lt;/li&gt;&lt;/ul&gt;</source>
+            <translation>&lt;p&gt;فایل‌هایی را که گام‌های پیشین یک مدل نوشته‌اند به مقصدهایشان کپی می‌کند، همه یا هیچ‌کدام. این آخرین گام مدل «از لایدار تا مدل رقومی زمین با دقت» است: وقتی یک مقصد نوشتنی نباشد، هیچ ابر طبقه‌بندی‌شده، مدل رقومی زمین یا گزارشی در هیچ مقصدی باقی نمی‌ماند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: CLOUD=/tmp/ground.laz DTM=/tmp/dtm.tif OUTPUT=classified.laz OUTPUT_DTM=dtm.tif ← هر دو با هم منتشر می‌شوند.&lt;/p&gt;&lt;p&gt;هر مقصد پیش از کپی هر چیزی با ورودی‌های مدل، فایل‌های انتشار و مقصدهای دیگر مقایسه می‌شود. مقصدی که قالبش با فایل موقتش فرق دارد (مثلاً ‎.las برای ابر ‎.laz) تبدیل می‌شود. در جعبه‌ابزار پنهان است: مدل همراه افزونه از آن استفاده می‌کند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;فایل‌های انتشار&lt;/b&gt;: ابر طبقه‌بندی‌شده، گزارش فیلتر زمین، مدل رقومی زمین، گزارش آن، باقی‌مانده‌های نقاط کنترل، گزارش دقت مدل رقومی زمین (هر کدام اختیاری؛ بدون پیش‌فرض).&lt;/li&gt;&lt;li&gt;&lt;b&gt;ورودی‌های زنجیره&lt;/b&gt;: ابر نقاط و نقاط کنترل (هرگز بازنویسی نمی‌شوند).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مقصدها&lt;/b&gt;: یکی برای هر فایل؛ مقصد تعیین‌نشده منتشر نمی‌شود.&lt;/li&gt;&lt;/ul&gt;</translation>
+        </message>
+        <message>
+            <source>Classified point cloud to publish</source>
+            <translation>ابر نقاط طبقه‌بندی‌شده برای انتشار</translation>
+        </message>
+        <message>
+            <source>Ground filter report to publish</source>
+            <translation>گزارش فیلتر زمین برای انتشار</translation>
+        </message>
+        <message>
+            <source>DTM to publish</source>
+            <translation>مدل رقومی زمین برای انتشار</translation>
+        </message>
+        <message>
+            <source>DTM report to publish</source>
+            <translation>گزارش مدل رقومی زمین برای انتشار</translation>
+        </message>
+        <message>
+            <source>Check-point residuals to publish</source>
+            <translation>باقی‌مانده‌های نقاط کنترل برای انتشار</translation>
+        </message>
+        <message>
+            <source>DTM accuracy report to publish</source>
+            <translation>گزارش دقت مدل رقومی زمین برای انتشار</translation>
+        </message>
+        <message>
+            <source>Point cloud of the chain (never overwritten)</source>
+            <translation>ابر نقاط زنجیره (هرگز بازنویسی نمی‌شود)</translation>
+        </message>
+        <message>
+            <source>Check point file of the chain (never overwritten)</source>
+            <translation>فایل نقاط کنترل زنجیره (هرگز بازنویسی نمی‌شود)</translation>
+        </message>
+        <message>
+            <source>Check point layer of the chain (never overwritten)</source>
+            <translation>لایهٔ نقاط کنترل زنجیره (هرگز بازنویسی نمی‌شود)</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>ابر نقاط طبقه‌بندی‌شده</translation>
+        </message>
+        <message>
+            <source>Ground filter report</source>
+            <translation>گزارش فیلتر زمین</translation>
+        </message>
+        <message>
+            <source>DTM</source>
+            <translation>مدل رقومی زمین (DTM)</translation>
+        </message>
+        <message>
+            <source>DTM report</source>
+            <translation>گزارش مدل رقومی زمین</translation>
+        </message>
+        <message>
+            <source>Check-point residuals</source>
+            <translation>باقیمانده‌های نقاط کنترل</translation>
+        </message>
+        <message>
+            <source>DTM accuracy report</source>
+            <translation>گزارش دقت مدل رقومی زمین</translation>
+        </message>
+        <message>
+            <source>Published {path}</source>
+            <translation>منتشر شد: {path}</translation>
+        </message>
+    </context>
+    <context>
         <name>QObject</name>
         <message>
             <source>%1 [optional]</source>

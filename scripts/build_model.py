@@ -4,10 +4,12 @@
 LAS/LAZ → ground filter (the recommended ``geomatics:groundfilter`` when registered,
 else ``geomatics:lsqgroundfilter``) → IDW DTM (``geomatics:idwdtm``, p = 3, 12
 neighbours: the seed paper's best setting) → DTM accuracy against check points
-(``geomatics:dtmaccuracy``), with the classified cloud, the DTM, the residual layer and
-the reports as model outputs. Every child parameter is written into the model (the
-exposed ones as model inputs, the others as their defaults), so a parameter added to a
-child makes ``tests/cli/test_model_cli.py`` fail until ``make model`` is rerun.
+(``geomatics:dtmaccuracy``) → publish (``geomatics:publishoutputs``). The first three
+write temporaries; the publish step copies them to the classified cloud, DTM, residual
+layer and report destinations (the model outputs) through one output contract, so a
+failing last step leaves nothing at any destination. Every child parameter is written
+into the model (the exposed ones as model inputs, the others as their defaults), so a
+parameter added to a child makes ``tests/cli/test_model_cli.py`` fail until ``make model`` is rerun.
 
 The model is built with the QGIS API (``QgsProcessingModelAlgorithm``) so that it is
 reproducible and reviewable; rerun this script after changing a parameter.
@@ -20,8 +22,8 @@ Run the model (plugin enabled in the QGIS profile)::
 
     qgis_process.bin run models/lidar_to_dtm.model3 -- INPUT=out/demo/demo.laz \\
         CHECKPOINTS_CSV=out/demo/checkpoints.csv CELL_SIZE=1 \\
-        "groundfilter:Classified point cloud=out/model/ground.laz" \\
-        dtm:DTM=out/model/dtm.tif "accuracy:DTM accuracy report=out/model/accuracy.html"
+        "publish:Classified point cloud=out/model/ground.laz" \\
+        publish:DTM=out/model/dtm.tif "publish:DTM accuracy report=out/model/accuracy.html"
 """
 from __future__ import annotations
 
@@ -51,13 +53,23 @@ LABELS = {"CELL_SIZE": "DTM cell size (m)", "POWER": "IDW power",
           "CRS": "CRS override for a cloud without a CRS record",
           "CHECKPOINTS": "Check points (point layer)",
           "CHECKPOINTS_CSV": "Check points (CSV/TXT file: id,x,y,z)"}
-#: (model output name, child id, child output) — the names the user sees
-OUTPUTS = (("Classified point cloud", "groundfilter", "OUTPUT", True),
-           ("Ground filter report", "groundfilter", "OUTPUT_HTML", False),
-           ("DTM", "dtm", "OUTPUT", True),
-           ("DTM report", "dtm", "OUTPUT_HTML", False),
-           ("Check-point residuals", "accuracy", "OUTPUT", False),
-           ("DTM accuracy report", "accuracy", "OUTPUT_HTML", True))
+#: (model output name, publish step output, mandatory, (source child, its output)) — the
+#: names the user sees; every model output comes from the final publish step
+OUTPUTS = (("Classified point cloud", "OUTPUT", True, ("groundfilter", "OUTPUT")),
+           ("Ground filter report", "OUTPUT_FILTER_HTML", False,
+            ("groundfilter", "OUTPUT_HTML")),
+           ("DTM", "OUTPUT_DTM", True, ("dtm", "OUTPUT")),
+           ("DTM report", "OUTPUT_DTM_HTML", False, ("dtm", "OUTPUT_HTML")),
+           ("Check-point residuals", "OUTPUT_RESIDUALS", False, ("accuracy", "OUTPUT")),
+           ("DTM accuracy report", "OUTPUT_HTML", True, ("accuracy", "OUTPUT_HTML")))
+PUBLISH = "geomatics:publishoutputs"
+#: publish step input fed by each model output's source temporary
+PUBLISH_SOURCES = {"OUTPUT": "CLOUD", "OUTPUT_FILTER_HTML": "FILTER_HTML",
+                   "OUTPUT_DTM": "DTM", "OUTPUT_DTM_HTML": "DTM_HTML",
+                   "OUTPUT_RESIDUALS": "RESIDUALS", "OUTPUT_HTML": "HTML"}
+#: publish step inputs protected by its same-file checks (model inputs)
+PUBLISH_PROTECTED = {"INPUT_CLOUD": "INPUT", "INPUT_CHECKPOINTS_CSV": "CHECKPOINTS_CSV",
+                     "INPUT_CHECKPOINTS": "CHECKPOINTS"}
 
 
 def pick_filter(requested: str = "auto") -> str:
@@ -90,7 +102,8 @@ def build(filter_key: str = "auto"):
     filter_id = pick_filter(filter_key)
     algs = {"groundfilter": registry.algorithmById(filter_id),
             "dtm": registry.algorithmById("geomatics:idwdtm"),
-            "accuracy": registry.algorithmById("geomatics:dtmaccuracy")}
+            "accuracy": registry.algorithmById("geomatics:dtmaccuracy"),
+            "publish": registry.algorithmById(PUBLISH)}
     missing = [k for k, a in algs.items() if a is None]
     if missing:
         raise SystemExit(f"algorithms not registered: {missing}")
@@ -138,6 +151,12 @@ def build(filter_key: str = "auto"):
         sources["accuracy"][name] = Src.fromModelParameter(
             expose(acc.parameterDefinition(name)))
     sources["accuracy"]["DTM"] = Src.fromChildOutput("dtm", "OUTPUT")
+    # 5. the publish step: every child wrote a temporary; this one step moves them all
+    for _label, output, _mandatory, (child_id, child_output) in OUTPUTS:
+        sources["publish"][PUBLISH_SOURCES[output]] = Src.fromChildOutput(
+            child_id, child_output)
+    for name, model_param in PUBLISH_PROTECTED.items():
+        sources["publish"][name] = Src.fromModelParameter(model_param)
     # every other child parameter: its default, written into the model explicitly
     for child_id, alg in algs.items():
         for d in alg.parameterDefinitions():
@@ -150,11 +169,12 @@ def build(filter_key: str = "auto"):
             "Classifies the ground of a LiDAR point cloud, interpolates a DTM from it by "
             "IDW and measures the DTM's accuracy against check points. Example: a "
             "classified tile with 15 check points gives the classified cloud, a 1 m DTM "
-            "and a report with RMSE, NMAD and the 95 % vertical accuracy. This model is "
-            "the editable counterpart of the one-step algorithm 'LiDAR to DTM with "
-            "accuracy' (geomatics:lidartodtm), which is the all-or-nothing version: a "
-            "model has no transaction, so when its last step fails the classified cloud "
-            "and the DTM of the earlier steps are already written."),
+            "and a report with RMSE, NMAD and the 95 % vertical accuracy. Its steps write "
+            "temporary files and a last step publishes them all or none: when any step "
+            "fails (e.g. the report folder cannot be written) no classified cloud, DTM or "
+            "report is left at any destination. The one-step algorithm 'LiDAR to DTM with "
+            "accuracy' (geomatics:lidartodtm) also checks the CRS, the check points and "
+            "every output path before its first step writes."),
         "ALG_CREATOR": "Geomatics Toolbox",
         "ALG_HELP_CREATOR": "Geomatics Toolbox",
         "TITLE": TITLE,
@@ -164,11 +184,12 @@ def build(filter_key: str = "auto"):
 
 
 def _add_children(m, algs, sources) -> None:
-    """Add the three child algorithms with their parameter sources and outputs."""
+    """Add the four child algorithms with their parameter sources and outputs."""
     from qgis.core import QgsProcessingModelChildAlgorithm, QgsProcessingModelOutput
     from qgis.PyQt.QtCore import QPointF
     descriptions = {"groundfilter": f"Ground filter ({algs['groundfilter'].displayName()})",
-                    "dtm": "DTM by IDW", "accuracy": "DTM accuracy against check points"}
+                    "dtm": "DTM by IDW", "accuracy": "DTM accuracy against check points",
+                    "publish": "Publish all outputs (all or nothing)"}
     for i, (child_id, alg) in enumerate(algs.items()):
         c = QgsProcessingModelChildAlgorithm(alg.id())
         c.setChildId(child_id)
@@ -177,8 +198,8 @@ def _add_children(m, algs, sources) -> None:
         for pname, src in sources[child_id].items():
             c.addParameterSources(pname, [src])
         outs = {}
-        for out_name, cid, child_output, mandatory in OUTPUTS:
-            if cid != child_id:
+        for out_name, child_output, mandatory, _source in OUTPUTS:
+            if child_id != "publish":
                 continue
             o = QgsProcessingModelOutput(out_name, out_name)
             o.setChildId(child_id)

@@ -30,11 +30,11 @@ def run_model(qgis_process, model, d, **extra):
     out.mkdir(exist_ok=True)
     params = {"INPUT": d / "demo.laz", "CHECKPOINTS_CSV": d / "checkpoints.csv",
               "CELL_SIZE": 1, "POWER": 3,
-              "groundfilter:Classified point cloud": out / "ground.laz",
-              "groundfilter:Ground filter report": out / "filter.html",
-              "dtm:DTM": out / "dtm.tif", "dtm:DTM report": out / "dtm.html",
-              "accuracy:Check-point residuals": out / "residuals.gpkg",
-              "accuracy:DTM accuracy report": out / "accuracy.html", **extra}
+              "publish:Classified point cloud": out / "ground.laz",
+              "publish:Ground filter report": out / "filter.html",
+              "publish:DTM": out / "dtm.tif", "publish:DTM report": out / "dtm.html",
+              "publish:Check-point residuals": out / "residuals.gpkg",
+              "publish:DTM accuracy report": out / "accuracy.html", **extra}
     res = qgis_process.run(str(model), **{k: str(v) for k, v in params.items()})
     return res, out
 

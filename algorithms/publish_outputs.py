@@ -1,0 +1,126 @@
+"""Publish outputs: the all-or-nothing last step of the shipped model.
+
+Thin wrapper over :func:`geomatics_toolbox.core.io.publish.publish_files`.
+"""
+from __future__ import annotations
+
+from qgis.core import (
+    QgsProcessing,
+    QgsProcessingParameterFile,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterRasterDestination,
+    QgsProcessingParameterVectorDestination,
+    QgsProcessingParameterVectorLayer,
+)
+
+from ..core.io.publish import publish_files
+from .base import GeomaticsAlgorithm
+
+LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
+
+
+class PublishOutputsAlgorithm(GeomaticsAlgorithm):
+    """Copy the temporaries of a chain to their destinations through one contract."""
+
+    GROUP = "terrain"
+    # (temporary input, destination, kind) of each published file
+    FILES = (("CLOUD", "OUTPUT", "cloud"), ("FILTER_HTML", "OUTPUT_FILTER_HTML", "file"),
+             ("DTM", "OUTPUT_DTM", "raster"), ("DTM_HTML", "OUTPUT_DTM_HTML", "file"),
+             ("RESIDUALS", "OUTPUT_RESIDUALS", "vector"), ("HTML", "OUTPUT_HTML", "file"))
+    SOURCES = ("INPUT_CLOUD", "INPUT_CHECKPOINTS_CSV")
+    INPUT_CHECKPOINTS = "INPUT_CHECKPOINTS"
+
+    def name(self):
+        return "publishoutputs"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("Publish chain outputs")
+
+    def flags(self):
+        return super().flags() | self.FlagHideFromToolbox
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(
+            "<p>Copies the files written by the earlier steps of a model to their "
+            "destinations, all of them or none. It is the last step of the model "
+            "'LiDAR to DTM with accuracy': when a destination cannot be written, no "
+            "classified cloud, DTM or report is left at any destination.</p>"
+            "<p><b>Example</b>: CLOUD=/tmp/ground.laz DTM=/tmp/dtm.tif "
+            "OUTPUT=classified.laz OUTPUT_DTM=dtm.tif → both published together.</p>"
+            "<p>Every destination is checked against the model's inputs, the files to "
+            "publish and the other destinations before anything is copied. A destination "
+            "in another format than its temporary file (e.g. .las for a .laz cloud) is "
+            "converted. Hidden from the toolbox: used by the shipped model.</p>"
+            "<p><b>Parameters</b></p><ul>"
+            "<li><b>Files to publish</b>: classified cloud, ground filter report, DTM, "
+            "DTM report, check-point residuals, DTM accuracy report (each optional; no "
+            "default).</li>"
+            "<li><b>Inputs of the chain</b>: point cloud and check points (never "
+            "overwritten).</li>"
+            "<li><b>Destinations</b>: one per file; an unset one is not published.</li>"
+            "</ul>")
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        labels = {"CLOUD": self.tr("Classified point cloud to publish"),
+                  "FILTER_HTML": self.tr("Ground filter report to publish"),
+                  "DTM": self.tr("DTM to publish"),
+                  "DTM_HTML": self.tr("DTM report to publish"),
+                  "RESIDUALS": self.tr("Check-point residuals to publish"),
+                  "HTML": self.tr("DTM accuracy report to publish"),
+                  "INPUT_CLOUD": self.tr("Point cloud of the chain (never overwritten)"),
+                  "INPUT_CHECKPOINTS_CSV": self.tr(
+                      "Check point file of the chain (never overwritten)")}
+        for name in [f[0] for f in self.FILES] + list(self.SOURCES):
+            self.add(QgsProcessingParameterFile(
+                name, labels[name], behavior=QgsProcessingParameterFile.File,
+                optional=True))
+        self.add(QgsProcessingParameterVectorLayer(
+            self.INPUT_CHECKPOINTS, self.tr("Check point layer of the chain (never "
+                                            "overwritten)"),
+            [QgsProcessing.TypeVectorPoint], optional=True))
+        html = self.tr("HTML files (*.html)")
+        self.add(QgsProcessingParameterFileDestination(
+            "OUTPUT", self.tr("Classified point cloud"), LAS_OUT_FILTER, optional=True))
+        self.add(QgsProcessingParameterFileDestination(
+            "OUTPUT_FILTER_HTML", self.tr("Ground filter report"), html, optional=True,
+            createByDefault=False))
+        self.add(QgsProcessingParameterRasterDestination(
+            "OUTPUT_DTM", self.tr("DTM"), optional=True))
+        self.add(QgsProcessingParameterFileDestination(
+            "OUTPUT_DTM_HTML", self.tr("DTM report"), html, optional=True,
+            createByDefault=False))
+        self.add(QgsProcessingParameterVectorDestination(
+            "OUTPUT_RESIDUALS", self.tr("Check-point residuals"),
+            QgsProcessing.TypeVectorPoint, optional=True, createByDefault=True))
+        self.add(QgsProcessingParameterFileDestination(
+            "OUTPUT_HTML", self.tr("DTM accuracy report"), html, optional=True))
+
+    def _destination(self, parameters, context, name):
+        value = parameters.get(name) if parameters else None
+        if value is None or value == "":
+            return None
+        return self.parameterAsFileOutput(parameters, name, context) or None
+
+    def _inputs(self, parameters, context) -> dict:
+        inputs = {n: self.parameterAsFile(parameters, n, context) for n in self.SOURCES}
+        layer = self.parameterAsVectorLayer(parameters, self.INPUT_CHECKPOINTS, context)
+        if layer is not None:
+            inputs[self.INPUT_CHECKPOINTS] = layer.source().split("|", 1)[0]
+        return inputs
+
+    def process(self, parameters, context, feedback):
+        files = {}
+        for src_name, dst_name, kind in self.FILES:
+            src = (self.parameterAsFile(parameters, src_name, context) or "").split("|")[0]
+            dst = self._destination(parameters, context, dst_name)
+            if src and dst:
+                files[dst_name] = (src, dst, kind)
+        results = publish_files(files, inputs=self._inputs(parameters, context),
+                                cancel=feedback.isCanceled if feedback else None)
+        for path in results.values():
+            if feedback:
+                feedback.pushInfo(self.tr("Published {path}").format(path=path))
+        if "OUTPUT" in results:
+            self.load_cloud_on_completion(context, results["OUTPUT"],
+                                          self.tr("Classified point cloud"), "OUTPUT")
+        return {name: results.get(name) for _s, name, _k in self.FILES}
