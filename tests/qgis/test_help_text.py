@@ -16,6 +16,7 @@ PENDING = {
     "gsdbatch": "next group",
     "groundfilter": "branch ground landed while this change was landing; next",
     "ptdgroundfilter": "branch ground landed while this change was landing; next",
+    "publishoutputs": "hidden model step (branch publish) landed with the old help style",
 }
 
 _CODE = re.compile(r"<(code|pre)\b[^>]*>.*?</\1>", re.S)
