@@ -42,11 +42,11 @@ run geomatics:gsdcalculator gsd DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=364
 
 run geomatics:lidar_to_dtm lidar_to_dtm INPUT="$OUT/demo/demo.laz" \
   CHECKPOINTS_CSV="$OUT/demo/checkpoints.csv" CELL_SIZE=1 POWER=3 \
-  "groundfilter:Classified point cloud=$OUT/demo_classified.laz" \
-  "groundfilter:Ground filter report=$OUT/ground_filter_report.html" \
-  "dtm:DTM=$OUT/dtm_idw.tif" "dtm:DTM report=$OUT/dtm_report.html" \
-  "accuracy:Check-point residuals=$OUT/checkpoint_residuals.gpkg" \
-  "accuracy:DTM accuracy report=$OUT/dtm_accuracy_report.html"
+  "publish:Classified point cloud=$OUT/demo_classified.laz" \
+  "publish:Ground filter report=$OUT/ground_filter_report.html" \
+  "publish:DTM=$OUT/dtm_idw.tif" "publish:DTM report=$OUT/dtm_report.html" \
+  "publish:Check-point residuals=$OUT/checkpoint_residuals.gpkg" \
+  "publish:DTM accuracy report=$OUT/dtm_accuracy_report.html"
 
 # the accuracy numbers again as outputs (models in QGIS 3.22 expose only file outputs)
 run geomatics:dtmaccuracy dtm_accuracy DTM="$OUT/dtm_idw.tif" \
