@@ -60,9 +60,9 @@ def tile_status_svg(result, tiles_bounds, *, width: int = 520,
         w, h = (bb[2] - bb[0]) * scale, (bb[3] - bb[1]) * scale
         tip = f"{key}: {stats[key]['seconds']:.1f} s" if key in stats else key
         parts.append(f'<rect x="{px:.1f}" y="{py:.1f}" width="{w:.1f}" height="{h:.1f}" '
-                     f'fill="{colour}" stroke="#333"><title>{escape(tip)}</title></rect>'
+                     f'fill="{colour}" stroke="#333"><title dir="ltr">{escape(tip)}</title></rect>'
                      f'<text x="{px + w / 2:.1f}" y="{py + h / 2:.1f}" font-size="11" '
-                     f'text-anchor="middle">{escape(key)}</text>')
+                     f'text-anchor="middle" direction="ltr" dir="ltr">{escape(key)}</text>')
     parts.append(_legend(tr, height + 8))
     parts.append("</svg>")
     return "".join(parts)
@@ -71,10 +71,10 @@ def tile_status_svg(result, tiles_bounds, *, width: int = 520,
 def catalog_report(result, tiles_bounds, *, lang: str = "en") -> Report:
     """Build the :class:`Report` of a :class:`~.catalog.CatalogResult`."""
     s = result.settings
-    rep = Report(T("Tile catalog processing"),
-                 citation="Roussel et al. (2020) lidR: an R package for analysis of "
-                          "Airborne Laser Scanning data. Remote Sens. Environ. 251:112061; "
-                          "Rocklin (2015) Dask. Proc. 14th Python in Science Conf.")
+    rep = Report(T("Tile catalog processing"), citation=T("References: {ref}", ref=(
+        "Roussel et al. (2020) lidR: an R package for analysis of Airborne Laser Scanning "
+        "data. Remote Sens. Environ. 251:112061; Rocklin (2015) Dask. Proc. 14th Python in "
+        "Science Conf.")))
     n_done = len(result.chunks) - len(result.skipped)
     rep.summary.append(Paragraph(T("{done} tiles processed, {skipped} finished earlier, "
                                    "{failed} failed.", done=n_done,

@@ -216,8 +216,6 @@ PENDING: dict = {
 
 #: checked reports with a known, reported gap (xfail, not strict, so a fix just passes)
 KNOWN_GAPS = {
-    "geomatics:catalog": "the per-tile timing label 'tile' is English in ar/fa (measured: "
-                         "'tile: 1.3 s') and the lidR/Dask references are prose — catalog",
 }
 
 needs_chromium = pytest.mark.skipif(browser.chromium() is None,
