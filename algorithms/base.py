@@ -273,6 +273,21 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
         """HTML of a core :class:`~..core.reporting.Report` in the report language."""
         return render_html(report, lang=self.report_lang(parameters, context))
 
+    def checkpoint_files(self, parameters, context, *, csv="CHECKPOINTS_CSV",
+                         layer="CHECKPOINTS") -> dict:
+        """Files behind the check-point inputs (CSV file, OGR layer's file), by parameter.
+
+        For the output contract's same-file checks; an unset input or a non-file layer
+        maps to None.
+        """
+        files = {csv: self.parameterAsFile(parameters, csv, context) or None}
+        lyr = (self.parameterAsVectorLayer(parameters, layer, context)
+               if parameters.get(layer) not in (None, "") else None)
+        if lyr is not None and lyr.providerType() == "ogr":
+            path = lyr.source().split("|")[0]
+            files[layer] = path if os.path.exists(path) else None
+        return files
+
     # ---------------------------------------------------------------- outputs
     def output_contract(self, parameters, context, outputs, inputs=()) -> OutputContract:
         """The :class:`OutputContract` of this run.

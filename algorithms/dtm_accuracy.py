@@ -219,15 +219,7 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
     # ------------------------------------------------------------------ run
     def input_files(self, parameters, context, dtm_path):
         """Every file read: the DTM, the check point file and the layer's file."""
-        files = {self.DTM: dtm_path,
-                 self.CHECKPOINTS_CSV: self.parameterAsFile(parameters, self.CHECKPOINTS_CSV,
-                                                            context) or None}
-        lyr = (self.parameterAsVectorLayer(parameters, self.CHECKPOINTS, context)
-               if parameters.get(self.CHECKPOINTS) not in (None, "") else None)
-        if lyr is not None and lyr.providerType() == "ogr":
-            src = lyr.source().split("|")[0]
-            files[self.CHECKPOINTS] = src if os.path.exists(src) else None
-        return files
+        return {self.DTM: dtm_path, **self.checkpoint_files(parameters, context)}
 
     def process(self, parameters, context, feedback):
         layer = self.parameterAsRasterLayer(parameters, self.DTM, context)

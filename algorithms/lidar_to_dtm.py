@@ -211,15 +211,7 @@ class LidarToDtmAlgorithm(GeomaticsAlgorithm):
 
     def input_files(self, parameters, context, src) -> dict:
         """Every file read: the cloud, the check point file and the layer's file."""
-        files = {self.INPUT: src,
-                 self.CHECKPOINTS_CSV: self.parameterAsFile(parameters, self.CHECKPOINTS_CSV,
-                                                            context) or None}
-        lyr = (self.parameterAsVectorLayer(parameters, self.CHECKPOINTS, context)
-               if parameters.get(self.CHECKPOINTS) not in (None, "") else None)
-        if lyr is not None and lyr.providerType() == "ogr":
-            path = lyr.source().split("|")[0]
-            files[self.CHECKPOINTS] = path if os.path.exists(path) else None
-        return files
+        return {self.INPUT: src, **self.checkpoint_files(parameters, context)}
 
     # ------------------------------------------------------------------ run
     def process(self, parameters, context, feedback):
