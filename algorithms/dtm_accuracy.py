@@ -73,13 +73,12 @@ def residual_style(errors) -> str:
     return doc.toString()
 
 
-class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
-    """DTM accuracy against check points: statistics, residual layer, HTML report."""
+class CheckPointInputs:
+    """Check-point parameters and their reader, shared by every algorithm that measures
+    a DTM against check points (a point layer with height/id fields, or a CSV file with
+    its CRS). Mixed in before :class:`GeomaticsAlgorithm` so its strings keep one
+    translation context."""
 
-    GROUP = "accuracy"
-
-    DTM = "DTM"
-    BAND = "BAND"
     CHECKPOINTS = "CHECKPOINTS"
     Z_FIELD = "Z_FIELD"
     ID_FIELD = "ID_FIELD"
@@ -87,42 +86,10 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
     CSV_CRS = "CSV_CRS"
     REPROJECT = "REPROJECT"
     METHOD = "METHOD"
-    OUTPUT = "OUTPUT"
-    OUTPUT_HTML = "OUTPUT_HTML"
 
-    def name(self):
-        return "dtmaccuracy"
-
-    def displayName(self):  # noqa: N802
-        return self.tr("DTM accuracy against check points")
-
-    def tags(self):
-        return self.tr("dtm,dem,accuracy,rmse,check points,gnss,nmad,asprs,vertical accuracy,"
-                       "validation").split(",")
-
-    def shortHelpString(self):  # noqa: N802
-        return build_help(self, self.tr(
-            "Compares a DTM with independent check points (e.g. GNSS heights) and "
-            "summarises the errors e = z<sub>DTM</sub> − z<sub>check</sub> as bias, mean "
-            "absolute error, RMSE, NMAD, Pearson r and the vertical accuracy at 95 % = "
-            "1.96·RMSE (ASPRS 2014). Check points outside the DTM or on nodata are "
-            "counted and excluded, never read as 0."),
-            "DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv OUTPUT=residuals.gpkg "
-            "OUTPUT_HTML=dtm_accuracy.html",
-            {self.CHECKPOINTS: self.tr("Give the layer or the file."),
-             self.CHECKPOINTS_CSV: self.tr("A header x/easting, y/northing, z/height (and "
-                                           "id/name), or columns id x y z without a "
-                                           "header."),
-             self.REPROJECT: self.tr("x and y only: heights are not converted between "
-                                     "vertical datums. Without it, check points in another "
-                                     "CRS are an error."),
-             self.OUTPUT: self.tr("Point layer with the error and status of each check "
-                                  "point, styled by error.")})
-
-    def initAlgorithm(self, config=None):  # noqa: N802
-        self.add(QgsProcessingParameterRasterLayer(self.DTM, self.tr("DTM")))
-        self.add_number(self.BAND, self.tr("Band"), 1, minimum=1, integer=True,
-                        advanced=True)
+    def add_checkpoint_params(self, csv_label, *, advanced=False):
+        """The check-point parameters (layer with height and id fields, or a CSV file
+        with its CRS, reprojection and sampling); ``advanced`` flags the last three."""
         self.add(QgsProcessingParameterFeatureSource(
             self.CHECKPOINTS, self.tr("Check points (point layer)"),
             [QgsProcessing.TypeVectorPoint], optional=True))
@@ -134,26 +101,17 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
             self.ID_FIELD, self.tr("Id field"), parentLayerParameterName=self.CHECKPOINTS,
             optional=True))
         self.add(QgsProcessingParameterFile(
-            self.CHECKPOINTS_CSV, self.tr("Check point file (CSV/TXT)"),
-            behavior=QgsProcessingParameterFile.File,
+            self.CHECKPOINTS_CSV, csv_label, behavior=QgsProcessingParameterFile.File,
             fileFilter="Delimited text (*.csv *.txt *.xyz *.CSV *.TXT)", optional=True))
         self.add(QgsProcessingParameterCrs(
             self.CSV_CRS, self.tr("CRS of the check point file (default: DTM CRS)"),
-            optional=True))
+            optional=True), advanced=advanced)
         self.add(QgsProcessingParameterBoolean(
-            self.REPROJECT, self.tr("Reproject check points to the DTM CRS"), False))
+            self.REPROJECT, self.tr("Reproject check points to the DTM CRS"), False),
+            advanced=advanced)
         self.add(QgsProcessingParameterEnum(
             self.METHOD, self.tr("Sampling"), [self.tr("Bilinear"), self.tr("Nearest cell")],
-            defaultValue=0))
-        self.add(QgsProcessingParameterVectorDestination(
-            self.OUTPUT, self.tr("Residuals"), QgsProcessing.TypeVectorPoint, optional=True,
-            createByDefault=True))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("DTM accuracy report"), self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=True))
-        self.add_report_language()
-        for name, _, label in NUMBERS:
-            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+            defaultValue=0), advanced=advanced)
 
     # ------------------------------------------------------------------ inputs
     def read_points(self, parameters, context, dtm_crs, feedback):
@@ -215,6 +173,61 @@ class DtmAccuracyAlgorithm(GeomaticsAlgorithm):
         elif src_crs is None or not src_crs.isValid():
             feedback.pushInfo(self.tr("Check points assumed to be in the DTM's CRS."))
         return ids, x, y, z
+
+
+class DtmAccuracyAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
+    """DTM accuracy against check points: statistics, residual layer, HTML report."""
+
+    GROUP = "accuracy"
+
+    DTM = "DTM"
+    BAND = "BAND"
+    OUTPUT = "OUTPUT"
+    OUTPUT_HTML = "OUTPUT_HTML"
+
+    def name(self):
+        return "dtmaccuracy"
+
+    def displayName(self):  # noqa: N802
+        return self.tr("DTM accuracy against check points")
+
+    def tags(self):
+        return self.tr("dtm,dem,accuracy,rmse,check points,gnss,nmad,asprs,vertical accuracy,"
+                       "validation").split(",")
+
+    def shortHelpString(self):  # noqa: N802
+        return build_help(self, self.tr(
+            "Compares a DTM with independent check points (e.g. GNSS heights) and "
+            "summarises the errors e = z<sub>DTM</sub> − z<sub>check</sub> as bias, mean "
+            "absolute error, RMSE, NMAD, Pearson r and the vertical accuracy at 95 % = "
+            "1.96·RMSE (ASPRS 2014). Check points outside the DTM or on nodata are "
+            "counted and excluded, never read as 0."),
+            "DTM=dtm.tif CHECKPOINTS_CSV=gnss.csv OUTPUT=residuals.gpkg "
+            "OUTPUT_HTML=dtm_accuracy.html",
+            {self.CHECKPOINTS: self.tr("Give the layer or the file."),
+             self.CHECKPOINTS_CSV: self.tr("A header x/easting, y/northing, z/height (and "
+                                           "id/name), or columns id x y z without a "
+                                           "header."),
+             self.REPROJECT: self.tr("x and y only: heights are not converted between "
+                                     "vertical datums. Without it, check points in another "
+                                     "CRS are an error."),
+             self.OUTPUT: self.tr("Point layer with the error and status of each check "
+                                  "point, styled by error.")})
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add(QgsProcessingParameterRasterLayer(self.DTM, self.tr("DTM")))
+        self.add_number(self.BAND, self.tr("Band"), 1, minimum=1, integer=True,
+                        advanced=True)
+        self.add_checkpoint_params(self.tr("Check point file (CSV/TXT)"))
+        self.add(QgsProcessingParameterVectorDestination(
+            self.OUTPUT, self.tr("Residuals"), QgsProcessing.TypeVectorPoint, optional=True,
+            createByDefault=True))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_HTML, self.tr("DTM accuracy report"), self.tr("HTML files (*.html)"),
+            optional=True, createByDefault=True))
+        self.add_report_language()
+        for name, _, label in NUMBERS:
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
 
     # ------------------------------------------------------------------ run
     def input_files(self, parameters, context, dtm_path):

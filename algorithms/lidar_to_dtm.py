@@ -24,10 +24,6 @@ from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterCrs,
-    QgsProcessingParameterEnum,
-    QgsProcessingParameterFeatureSource,
-    QgsProcessingParameterField,
-    QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterRasterDestination,
     QgsProcessingParameterVectorDestination,
@@ -47,7 +43,7 @@ from ..core.terrain import idw as core_idw
 from ..core.terrain import report as terrain_report
 from ..core.terrain.grid import grid_from_points
 from .base import GeomaticsAlgorithm
-from .dtm_accuracy import NUMBERS, DtmAccuracyAlgorithm
+from .dtm_accuracy import NUMBERS, CheckPointInputs, DtmAccuracyAlgorithm
 from .helptext import build_help
 from .terrain import _check_tif, _crs_string, _GridAlgorithm
 
@@ -69,7 +65,7 @@ def ground_filter():
     return core_rec.recommended_filter(), dict(keep_noise_classes=True), "groundfilter"
 
 
-class LidarToDtmAlgorithm(GeomaticsAlgorithm):
+class LidarToDtmAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
     """Ground filter, IDW DTM and DTM accuracy through one output contract."""
 
     GROUP = "terrain"
@@ -80,14 +76,6 @@ class LidarToDtmAlgorithm(GeomaticsAlgorithm):
     NEIGHBOURS = "NEIGHBOURS"
     FILL_GAPS = "FILL_GAPS"
     CRS = "CRS"
-    # check points: the same names as dtmaccuracy (its reader is reused)
-    CHECKPOINTS = "CHECKPOINTS"
-    Z_FIELD = "Z_FIELD"
-    ID_FIELD = "ID_FIELD"
-    CHECKPOINTS_CSV = "CHECKPOINTS_CSV"
-    CSV_CRS = "CSV_CRS"
-    REPROJECT = "REPROJECT"
-    METHOD = "METHOD"
     OUTPUT = "OUTPUT"
     OUTPUT_DTM = "OUTPUT_DTM"
     OUTPUT_RESIDUALS = "OUTPUT_RESIDUALS"
@@ -139,29 +127,8 @@ class LidarToDtmAlgorithm(GeomaticsAlgorithm):
         self.add(QgsProcessingParameterCrs(
             self.CRS, self.tr("CRS override for a cloud without a CRS record"),
             optional=True), advanced=True)
-        self.add(QgsProcessingParameterFeatureSource(
-            self.CHECKPOINTS, self.tr("Check points (point layer)"),
-            [QgsProcessing.TypeVectorPoint], optional=True))
-        self.add(QgsProcessingParameterField(
-            self.Z_FIELD, self.tr("Height field (empty = geometry Z)"),
-            parentLayerParameterName=self.CHECKPOINTS,
-            type=QgsProcessingParameterField.Numeric, optional=True))
-        self.add(QgsProcessingParameterField(
-            self.ID_FIELD, self.tr("Id field"), parentLayerParameterName=self.CHECKPOINTS,
-            optional=True))
-        self.add(QgsProcessingParameterFile(
-            self.CHECKPOINTS_CSV, self.tr("Check points (CSV/TXT file: id,x,y,z)"),
-            behavior=QgsProcessingParameterFile.File,
-            fileFilter="Delimited text (*.csv *.txt *.xyz *.CSV *.TXT)", optional=True))
-        self.add(QgsProcessingParameterCrs(
-            self.CSV_CRS, self.tr("CRS of the check point file (default: DTM CRS)"),
-            optional=True), advanced=True)
-        self.add(QgsProcessingParameterBoolean(
-            self.REPROJECT, self.tr("Reproject check points to the DTM CRS"), False),
-            advanced=True)
-        self.add(QgsProcessingParameterEnum(
-            self.METHOD, self.tr("Sampling"), [self.tr("Bilinear"), self.tr("Nearest cell")],
-            defaultValue=0), advanced=True)
+        self.add_checkpoint_params(self.tr("Check points (CSV/TXT file: id,x,y,z)"),
+                                   advanced=True)
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT, self.tr("Classified point cloud"), LAS_OUT_FILTER))
         self.add(QgsProcessingParameterRasterDestination(self.OUTPUT_DTM, self.tr("DTM")))
@@ -184,9 +151,6 @@ class LidarToDtmAlgorithm(GeomaticsAlgorithm):
             self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
 
     # ------------------------------------------------------------------ checks
-    def read_points(self, parameters, context, dtm_crs, feedback):
-        """Check points ``(ids, x, y, z)`` in the DTM CRS (dtmaccuracy's reader)."""
-        return DtmAccuracyAlgorithm.read_points(self, parameters, context, dtm_crs, feedback)
 
     def resolve_crs(self, parameters, context, info) -> str:
         """The DTM's CRS: the CRS parameter, else the cloud's; refused if geographic."""

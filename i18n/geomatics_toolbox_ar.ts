@@ -331,6 +331,77 @@
         </message>
     </context>
     <context>
+        <name>CheckPointInputs</name>
+        <message>
+            <source>Check points (point layer)</source>
+            <translation>نقاط التحقق (طبقة نقطية)</translation>
+        </message>
+        <message>
+            <source>Height field (empty = geometry Z)</source>
+            <translation>حقل الارتفاع (فارغ = قيمة Z من الهندسة)</translation>
+        </message>
+        <message>
+            <source>Id field</source>
+            <translation>حقل المعرِّف</translation>
+        </message>
+        <message>
+            <source>CRS of the check point file (default: DTM CRS)</source>
+            <translation>نظام إحداثيات ملف نقاط التحقق (الافتراضي: نظام إحداثيات DTM)</translation>
+        </message>
+        <message>
+            <source>Reproject check points to the DTM CRS</source>
+            <translation>إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM</translation>
+        </message>
+        <message>
+            <source>Sampling</source>
+            <translation>طريقة الاعتيان</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>ثنائي الخطية</translation>
+        </message>
+        <message>
+            <source>Nearest cell</source>
+            <translation>أقرب خلية</translation>
+        </message>
+        <message>
+            <source>Give the check points as a point layer (CHECKPOINTS) or a file (CHECKPOINTS_CSV).</source>
+            <translation>حدِّد نقاط التحقق كطبقة نقطية (CHECKPOINTS) أو كملف (CHECKPOINTS_CSV).</translation>
+        </message>
+        <message>
+            <source>Give the check points either as a layer or as a file, not both.</source>
+            <translation>حدِّد نقاط التحقق إما كطبقة أو كملف، لا الاثنين معاً.</translation>
+        </message>
+        <message>
+            <source>The check point layer has no Z coordinate; choose the height field (Z_FIELD).</source>
+            <translation>طبقة نقاط التحقق لا تحوي الإحداثي Z؛ اختر حقل الارتفاع (Z_FIELD).</translation>
+        </message>
+        <message>
+            <source>The check point layer has no points.</source>
+            <translation>طبقة نقاط التحقق لا تحوي أي نقطة.</translation>
+        </message>
+        <message>
+            <source>check point layer</source>
+            <translation>طبقة نقاط التحقق</translation>
+        </message>
+        <message>
+            <source>check point file</source>
+            <translation>ملف نقاط التحقق</translation>
+        </message>
+        <message>
+            <source>The {} is in {} but the DTM is in {}. Reproject the check points first or tick 'Reproject check points to the DTM CRS' (REPROJECT=true; x, y only, heights are not converted). No output was written.</source>
+            <translation>{} بنظام الإحداثيات {} لكن نموذج الارتفاعات الرقمي بنظام {}. أعد إسقاط نقاط التحقق أولاً أو فعِّل الخيار 'إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM' (REPROJECT=true؛ x وy فقط، ولا تُحوَّل الارتفاعات). لم تُكتب أي مخرجات.</translation>
+        </message>
+        <message>
+            <source>Check points reprojected from {} to {}</source>
+            <translation>أُعيد إسقاط نقاط التحقق من {} إلى {}</translation>
+        </message>
+        <message>
+            <source>Check points assumed to be in the DTM's CRS.</source>
+            <translation>افتُرض أن نقاط التحقق بنظام إحداثيات نموذج الارتفاعات الرقمي.</translation>
+        </message>
+    </context>
+    <context>
         <name>DsmAlgorithm</name>
         <message>
             <source>DSM and nDSM / canopy height model</source>
@@ -424,40 +495,8 @@
             <translation>الحزمة</translation>
         </message>
         <message>
-            <source>Check points (point layer)</source>
-            <translation>نقاط التحقق (طبقة نقطية)</translation>
-        </message>
-        <message>
-            <source>Height field (empty = geometry Z)</source>
-            <translation>حقل الارتفاع (فارغ = قيمة Z من الهندسة)</translation>
-        </message>
-        <message>
-            <source>Id field</source>
-            <translation>حقل المعرِّف</translation>
-        </message>
-        <message>
             <source>Check point file (CSV/TXT)</source>
             <translation>ملف نقاط التحقق (CSV/TXT)</translation>
-        </message>
-        <message>
-            <source>CRS of the check point file (default: DTM CRS)</source>
-            <translation>نظام إحداثيات ملف نقاط التحقق (الافتراضي: نظام إحداثيات DTM)</translation>
-        </message>
-        <message>
-            <source>Reproject check points to the DTM CRS</source>
-            <translation>إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM</translation>
-        </message>
-        <message>
-            <source>Sampling</source>
-            <translation>طريقة الاعتيان</translation>
-        </message>
-        <message>
-            <source>Bilinear</source>
-            <translation>ثنائي الخطية</translation>
-        </message>
-        <message>
-            <source>Nearest cell</source>
-            <translation>أقرب خلية</translation>
         </message>
         <message>
             <source>Residuals</source>
@@ -466,42 +505,6 @@
         <message>
             <source>HTML files (*.html)</source>
             <translation>ملفات HTML (*.html)</translation>
-        </message>
-        <message>
-            <source>Give the check points as a point layer (CHECKPOINTS) or a file (CHECKPOINTS_CSV).</source>
-            <translation>حدِّد نقاط التحقق كطبقة نقطية (CHECKPOINTS) أو كملف (CHECKPOINTS_CSV).</translation>
-        </message>
-        <message>
-            <source>Give the check points either as a layer or as a file, not both.</source>
-            <translation>حدِّد نقاط التحقق إما كطبقة أو كملف، لا الاثنين معاً.</translation>
-        </message>
-        <message>
-            <source>The check point layer has no Z coordinate; choose the height field (Z_FIELD).</source>
-            <translation>طبقة نقاط التحقق لا تحوي الإحداثي Z؛ اختر حقل الارتفاع (Z_FIELD).</translation>
-        </message>
-        <message>
-            <source>The check point layer has no points.</source>
-            <translation>طبقة نقاط التحقق لا تحوي أي نقطة.</translation>
-        </message>
-        <message>
-            <source>check point layer</source>
-            <translation>طبقة نقاط التحقق</translation>
-        </message>
-        <message>
-            <source>check point file</source>
-            <translation>ملف نقاط التحقق</translation>
-        </message>
-        <message>
-            <source>The {} is in {} but the DTM is in {}. Reproject the check points first or tick 'Reproject check points to the DTM CRS' (REPROJECT=true; x, y only, heights are not converted). No output was written.</source>
-            <translation>{} بنظام الإحداثيات {} لكن نموذج الارتفاعات الرقمي بنظام {}. أعد إسقاط نقاط التحقق أولاً أو فعِّل الخيار 'إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM' (REPROJECT=true؛ x وy فقط، ولا تُحوَّل الارتفاعات). لم تُكتب أي مخرجات.</translation>
-        </message>
-        <message>
-            <source>Check points reprojected from {} to {}</source>
-            <translation>أُعيد إسقاط نقاط التحقق من {} إلى {}</translation>
-        </message>
-        <message>
-            <source>Check points assumed to be in the DTM's CRS.</source>
-            <translation>افتُرض أن نقاط التحقق بنظام إحداثيات نموذج الارتفاعات الرقمي.</translation>
         </message>
         <message>
             <source>Choose a DTM raster.</source>
@@ -1472,40 +1475,8 @@
             <translation>نظام إحداثيات بديل لسحابة بلا سجل نظام إحداثيات</translation>
         </message>
         <message>
-            <source>Check points (point layer)</source>
-            <translation>نقاط التحقق (طبقة نقطية)</translation>
-        </message>
-        <message>
-            <source>Height field (empty = geometry Z)</source>
-            <translation>حقل الارتفاع (فارغ = قيمة Z من الهندسة)</translation>
-        </message>
-        <message>
-            <source>Id field</source>
-            <translation>حقل المعرِّف</translation>
-        </message>
-        <message>
             <source>Check points (CSV/TXT file: id,x,y,z)</source>
             <translation>نقاط التحقق (ملف CSV/TXT: ‏id,x,y,z)</translation>
-        </message>
-        <message>
-            <source>CRS of the check point file (default: DTM CRS)</source>
-            <translation>نظام إحداثيات ملف نقاط التحقق (الافتراضي: نظام إحداثيات DTM)</translation>
-        </message>
-        <message>
-            <source>Reproject check points to the DTM CRS</source>
-            <translation>إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM</translation>
-        </message>
-        <message>
-            <source>Sampling</source>
-            <translation>طريقة الاعتيان</translation>
-        </message>
-        <message>
-            <source>Bilinear</source>
-            <translation>ثنائي الخطية</translation>
-        </message>
-        <message>
-            <source>Nearest cell</source>
-            <translation>أقرب خلية</translation>
         </message>
         <message>
             <source>Classified point cloud</source>

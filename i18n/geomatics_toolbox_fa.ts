@@ -331,6 +331,77 @@
         </message>
     </context>
     <context>
+        <name>CheckPointInputs</name>
+        <message>
+            <source>Check points (point layer)</source>
+            <translation>نقاط چک (لایهٔ نقطه‌ای)</translation>
+        </message>
+        <message>
+            <source>Height field (empty = geometry Z)</source>
+            <translation>فیلد ارتفاع (خالی = Z هندسه)</translation>
+        </message>
+        <message>
+            <source>Id field</source>
+            <translation>فیلد شناسه</translation>
+        </message>
+        <message>
+            <source>CRS of the check point file (default: DTM CRS)</source>
+            <translation>سیستم مختصات پروندهٔ نقاط چک (پیش‌فرض: سیستم مختصات DTM)</translation>
+        </message>
+        <message>
+            <source>Reproject check points to the DTM CRS</source>
+            <translation>بازتصویر نقاط چک به سیستم مختصات DTM</translation>
+        </message>
+        <message>
+            <source>Sampling</source>
+            <translation>روش نمونه‌برداری</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>دوخطی</translation>
+        </message>
+        <message>
+            <source>Nearest cell</source>
+            <translation>نزدیک‌ترین سلول</translation>
+        </message>
+        <message>
+            <source>Give the check points as a point layer (CHECKPOINTS) or a file (CHECKPOINTS_CSV).</source>
+            <translation>نقاط چک را به‌صورت لایهٔ نقطه‌ای (CHECKPOINTS) یا پرونده (CHECKPOINTS_CSV) بدهید.</translation>
+        </message>
+        <message>
+            <source>Give the check points either as a layer or as a file, not both.</source>
+            <translation>نقاط چک را یا به‌صورت لایه یا به‌صورت پرونده بدهید، نه هر دو.</translation>
+        </message>
+        <message>
+            <source>The check point layer has no Z coordinate; choose the height field (Z_FIELD).</source>
+            <translation>لایهٔ نقاط چک مختصات Z ندارد؛ فیلد ارتفاع (Z_FIELD) را انتخاب کنید.</translation>
+        </message>
+        <message>
+            <source>The check point layer has no points.</source>
+            <translation>لایهٔ نقاط چک هیچ نقطه‌ای ندارد.</translation>
+        </message>
+        <message>
+            <source>check point layer</source>
+            <translation>لایهٔ نقاط چک</translation>
+        </message>
+        <message>
+            <source>check point file</source>
+            <translation>پروندهٔ نقاط چک</translation>
+        </message>
+        <message>
+            <source>The {} is in {} but the DTM is in {}. Reproject the check points first or tick 'Reproject check points to the DTM CRS' (REPROJECT=true; x, y only, heights are not converted). No output was written.</source>
+            <translation>{} در سیستم مختصات {} است ولی مدل رقومی زمین در {} است. ابتدا نقاط چک را بازتصویر کنید یا گزینهٔ 'بازتصویر نقاط چک به سیستم مختصات DTM' را فعال کنید (REPROJECT=true؛ فقط x و y، ارتفاع‌ها تبدیل نمی‌شوند). هیچ خروجی‌ای نوشته نشد.</translation>
+        </message>
+        <message>
+            <source>Check points reprojected from {} to {}</source>
+            <translation>نقاط چک از {} به {} بازتصویر شدند</translation>
+        </message>
+        <message>
+            <source>Check points assumed to be in the DTM's CRS.</source>
+            <translation>فرض شد نقاط چک در سیستم مختصات مدل رقومی زمین هستند.</translation>
+        </message>
+    </context>
+    <context>
         <name>DsmAlgorithm</name>
         <message>
             <source>DSM and nDSM / canopy height model</source>
@@ -424,40 +495,8 @@
             <translation>باند</translation>
         </message>
         <message>
-            <source>Check points (point layer)</source>
-            <translation>نقاط چک (لایهٔ نقطه‌ای)</translation>
-        </message>
-        <message>
-            <source>Height field (empty = geometry Z)</source>
-            <translation>فیلد ارتفاع (خالی = Z هندسه)</translation>
-        </message>
-        <message>
-            <source>Id field</source>
-            <translation>فیلد شناسه</translation>
-        </message>
-        <message>
             <source>Check point file (CSV/TXT)</source>
             <translation>پروندهٔ نقاط چک (CSV/TXT)</translation>
-        </message>
-        <message>
-            <source>CRS of the check point file (default: DTM CRS)</source>
-            <translation>سیستم مختصات پروندهٔ نقاط چک (پیش‌فرض: سیستم مختصات DTM)</translation>
-        </message>
-        <message>
-            <source>Reproject check points to the DTM CRS</source>
-            <translation>بازتصویر نقاط چک به سیستم مختصات DTM</translation>
-        </message>
-        <message>
-            <source>Sampling</source>
-            <translation>روش نمونه‌برداری</translation>
-        </message>
-        <message>
-            <source>Bilinear</source>
-            <translation>دوخطی</translation>
-        </message>
-        <message>
-            <source>Nearest cell</source>
-            <translation>نزدیک‌ترین سلول</translation>
         </message>
         <message>
             <source>Residuals</source>
@@ -466,42 +505,6 @@
         <message>
             <source>HTML files (*.html)</source>
             <translation>پرونده‌های HTML (*.html)</translation>
-        </message>
-        <message>
-            <source>Give the check points as a point layer (CHECKPOINTS) or a file (CHECKPOINTS_CSV).</source>
-            <translation>نقاط چک را به‌صورت لایهٔ نقطه‌ای (CHECKPOINTS) یا پرونده (CHECKPOINTS_CSV) بدهید.</translation>
-        </message>
-        <message>
-            <source>Give the check points either as a layer or as a file, not both.</source>
-            <translation>نقاط چک را یا به‌صورت لایه یا به‌صورت پرونده بدهید، نه هر دو.</translation>
-        </message>
-        <message>
-            <source>The check point layer has no Z coordinate; choose the height field (Z_FIELD).</source>
-            <translation>لایهٔ نقاط چک مختصات Z ندارد؛ فیلد ارتفاع (Z_FIELD) را انتخاب کنید.</translation>
-        </message>
-        <message>
-            <source>The check point layer has no points.</source>
-            <translation>لایهٔ نقاط چک هیچ نقطه‌ای ندارد.</translation>
-        </message>
-        <message>
-            <source>check point layer</source>
-            <translation>لایهٔ نقاط چک</translation>
-        </message>
-        <message>
-            <source>check point file</source>
-            <translation>پروندهٔ نقاط چک</translation>
-        </message>
-        <message>
-            <source>The {} is in {} but the DTM is in {}. Reproject the check points first or tick 'Reproject check points to the DTM CRS' (REPROJECT=true; x, y only, heights are not converted). No output was written.</source>
-            <translation>{} در سیستم مختصات {} است ولی مدل رقومی زمین در {} است. ابتدا نقاط چک را بازتصویر کنید یا گزینهٔ 'بازتصویر نقاط چک به سیستم مختصات DTM' را فعال کنید (REPROJECT=true؛ فقط x و y، ارتفاع‌ها تبدیل نمی‌شوند). هیچ خروجی‌ای نوشته نشد.</translation>
-        </message>
-        <message>
-            <source>Check points reprojected from {} to {}</source>
-            <translation>نقاط چک از {} به {} بازتصویر شدند</translation>
-        </message>
-        <message>
-            <source>Check points assumed to be in the DTM's CRS.</source>
-            <translation>فرض شد نقاط چک در سیستم مختصات مدل رقومی زمین هستند.</translation>
         </message>
         <message>
             <source>Choose a DTM raster.</source>
@@ -1472,40 +1475,8 @@
             <translation>سیستم مختصات جایگزین برای ابری بدون رکورد سیستم مختصات</translation>
         </message>
         <message>
-            <source>Check points (point layer)</source>
-            <translation>نقاط چک (لایهٔ نقطه‌ای)</translation>
-        </message>
-        <message>
-            <source>Height field (empty = geometry Z)</source>
-            <translation>فیلد ارتفاع (خالی = Z هندسه)</translation>
-        </message>
-        <message>
-            <source>Id field</source>
-            <translation>فیلد شناسه</translation>
-        </message>
-        <message>
             <source>Check points (CSV/TXT file: id,x,y,z)</source>
             <translation>نقاط کنترل (فایل CSV/TXT: ‏id,x,y,z)</translation>
-        </message>
-        <message>
-            <source>CRS of the check point file (default: DTM CRS)</source>
-            <translation>سیستم مختصات پروندهٔ نقاط چک (پیش‌فرض: سیستم مختصات DTM)</translation>
-        </message>
-        <message>
-            <source>Reproject check points to the DTM CRS</source>
-            <translation>بازتصویر نقاط چک به سیستم مختصات DTM</translation>
-        </message>
-        <message>
-            <source>Sampling</source>
-            <translation>روش نمونه‌برداری</translation>
-        </message>
-        <message>
-            <source>Bilinear</source>
-            <translation>دوخطی</translation>
-        </message>
-        <message>
-            <source>Nearest cell</source>
-            <translation>نزدیک‌ترین سلول</translation>
         </message>
         <message>
             <source>Classified point cloud</source>
