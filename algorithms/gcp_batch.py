@@ -6,8 +6,6 @@ from __future__ import annotations
 
 from qgis.core import (
     QgsProcessingOutputNumber,
-    QgsProcessingParameterBoolean,
-    QgsProcessingParameterCrs,
     QgsProcessingParameterEnum,
     QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
@@ -16,19 +14,15 @@ from qgis.core import (
 
 from ..core.rectification import batch, warp
 from .base import GeomaticsAlgorithm
-from .gcp_rectification import TRANSFORMATIONS
+from .gcp_rectification import TRANSFORMATIONS, TransformationParams
 from .helptext import build_help
 
 
-class RectifyBatchAlgorithm(GeomaticsAlgorithm):
+class RectifyBatchAlgorithm(TransformationParams, GeomaticsAlgorithm):
     """Rectify every image of a folder that has a Georeferencer .points file."""
 
     GROUP = "rectification"
     INPUT_FOLDER = "INPUT_FOLDER"
-    TRANSFORMATION = "TRANSFORMATION"
-    ORDER = "ORDER"
-    REFINE = "REFINE"
-    GCP_CRS = "GCP_CRS"
     RESAMPLING = "RESAMPLING"
     OUTPUT_FOLDER = "OUTPUT_FOLDER"
     OUTPUT_CSV = "OUTPUT_CSV"
@@ -66,22 +60,8 @@ class RectifyBatchAlgorithm(GeomaticsAlgorithm):
         self.add(QgsProcessingParameterFile(
             self.INPUT_FOLDER, self.tr("Folder of images with .points files"),
             QgsProcessingParameterFile.Folder))
-        self.add(QgsProcessingParameterEnum(
-            self.TRANSFORMATION, self.tr("Transformation"),
-            [self.tr("polynomial of the order set below"), self.tr("polynomial order 1 (affine)"),
-             self.tr("polynomial order 2"), self.tr("polynomial order 3"),
-             self.tr("linear (shift and scale per axis)"),
-             self.tr("Helmert (shift, scale, rotation)"),
-             self.tr("projective (homography)"), self.tr("thin-plate spline"),
-             self.tr("recommended (lowest check-point / leave-one-out error)")],
-            defaultValue=8))
-        self.add_number(self.ORDER, self.tr("Polynomial order (1–3)"), 1, minimum=1,
-                        maximum=3, integer=True)
-        self.add(QgsProcessingParameterBoolean(
-            self.REFINE, self.tr("Refine GCPs: drop the worst while over the tolerance"),
-            defaultValue=False))
-        self.add(QgsProcessingParameterCrs(self.GCP_CRS, self.tr(
-            "CRS of the GCP map coordinates (if the file does not say)"), optional=True))
+        self.add_transformation_params(default=8)
+        self.add_gcp_crs_param()
         self.add(QgsProcessingParameterEnum(self.RESAMPLING, self.tr("Resampling"),
                                             list(warp.RESAMPLING), defaultValue=0))
         self.add(QgsProcessingParameterFolderDestination(

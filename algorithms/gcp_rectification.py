@@ -56,7 +56,40 @@ NUMBERS = (
 TRANSFORMATIONS = (None, "polynomial1", "polynomial2", "polynomial3", "linear", "helmert",
                    "projective", "tps", assess.RECOMMENDED)
 
-class _GcpBase(GeomaticsAlgorithm):
+class TransformationParams:
+    """The transformation choice shared by the single-image and the batch tools:
+    TRANSFORMATION (see :data:`TRANSFORMATIONS`), ORDER, REFINE and GCP_CRS. Mixed in
+    before :class:`GeomaticsAlgorithm` so its strings keep one translation context."""
+
+    TRANSFORMATION = "TRANSFORMATION"
+    ORDER = "ORDER"
+    REFINE = "REFINE"
+    GCP_CRS = "GCP_CRS"
+
+    def add_gcp_crs_param(self):
+        """GCP_CRS: the CRS of the map coordinates when the .points file has none."""
+        self.add(QgsProcessingParameterCrs(self.GCP_CRS, self.tr(
+            "CRS of the GCP map coordinates (if the file does not say)"), optional=True))
+
+    def add_transformation_params(self, *, default):
+        """TRANSFORMATION (option ``default`` preselected), ORDER and REFINE."""
+        self.add(QgsProcessingParameterEnum(
+            self.TRANSFORMATION, self.tr("Transformation"),
+            [self.tr("polynomial of the order set below"), self.tr("polynomial order 1 (affine)"),
+             self.tr("polynomial order 2"), self.tr("polynomial order 3"),
+             self.tr("linear (shift and scale per axis)"),
+             self.tr("Helmert (shift, scale, rotation)"),
+             self.tr("projective (homography)"), self.tr("thin-plate spline"),
+             self.tr("recommended (lowest check-point / leave-one-out error)")],
+            defaultValue=default))
+        self.add_number(self.ORDER, self.tr("Polynomial order (1–3)"), 1, minimum=1,
+                        maximum=3, integer=True)
+        self.add(QgsProcessingParameterBoolean(
+            self.REFINE, self.tr("Refine GCPs: drop the worst while over the tolerance"),
+            defaultValue=False))
+
+
+class _GcpBase(TransformationParams, GeomaticsAlgorithm):
     """Shared parameters and GCP loading."""
 
     GROUP = "rectification"
@@ -71,10 +104,6 @@ class _GcpBase(GeomaticsAlgorithm):
     ROLE_FIELD = "ROLE_FIELD"
     WEIGHT_FIELD = "WEIGHT_FIELD"
     PIXEL_ORIGIN = "PIXEL_ORIGIN"
-    GCP_CRS = "GCP_CRS"
-    ORDER = "ORDER"
-    TRANSFORMATION = "TRANSFORMATION"
-    REFINE = "REFINE"
     REFINE_TOLERANCE = "REFINE_TOLERANCE"
     MIN_GCPS = "MIN_GCPS"
     GR = "GR"
@@ -124,22 +153,8 @@ class _GcpBase(GeomaticsAlgorithm):
             [self.tr("pixel corners: (0,0) = top-left corner of the image (GDAL/QGIS)"),
              self.tr("pixel centres: integer = centre of a pixel (0-based indices)")],
             defaultValue=0), advanced=True)
-        self.add(QgsProcessingParameterCrs(self.GCP_CRS, self.tr(
-            "CRS of the GCP map coordinates (if the file does not say)"), optional=True))
-        self.add_number(self.ORDER, self.tr("Polynomial order (1–3)"), 1, minimum=1,
-                        maximum=3, integer=True)
-        self.add(QgsProcessingParameterEnum(
-            self.TRANSFORMATION, self.tr("Transformation"),
-            [self.tr("polynomial of the order set below"), self.tr("polynomial order 1 (affine)"),
-             self.tr("polynomial order 2"), self.tr("polynomial order 3"),
-             self.tr("linear (shift and scale per axis)"),
-             self.tr("Helmert (shift, scale, rotation)"),
-             self.tr("projective (homography)"), self.tr("thin-plate spline"),
-             self.tr("recommended (lowest check-point / leave-one-out error)")],
-            defaultValue=0))
-        self.add(QgsProcessingParameterBoolean(
-            self.REFINE, self.tr("Refine GCPs: drop the worst while over the tolerance"),
-            defaultValue=False))
+        self.add_gcp_crs_param()
+        self.add_transformation_params(default=0)
         self.add_number(self.REFINE_TOLERANCE, self.tr(
             "Refinement tolerance (map units) [default: C5 limit 5·GR]"), minimum=0.0,
             optional=True, advanced=True)

@@ -1910,54 +1910,6 @@
             <translation>مجلد المرئيات مع ملفات .points</translation>
         </message>
         <message>
-            <source>Transformation</source>
-            <translation>التحويل</translation>
-        </message>
-        <message>
-            <source>polynomial order 1 (affine)</source>
-            <translation>كثيرة حدود من الدرجة 1 (تآلفي)</translation>
-        </message>
-        <message>
-            <source>polynomial order 2</source>
-            <translation>كثيرة حدود من الدرجة 2</translation>
-        </message>
-        <message>
-            <source>polynomial order 3</source>
-            <translation>كثيرة حدود من الدرجة 3</translation>
-        </message>
-        <message>
-            <source>linear (shift and scale per axis)</source>
-            <translation>خطي (إزاحة ومقياس لكل محور)</translation>
-        </message>
-        <message>
-            <source>Helmert (shift, scale, rotation)</source>
-            <translation>هلمرت (إزاحة، مقياس، دوران)</translation>
-        </message>
-        <message>
-            <source>projective (homography)</source>
-            <translation>إسقاطي (تحويل متجانس)</translation>
-        </message>
-        <message>
-            <source>thin-plate spline</source>
-            <translation>شريحة الصفيحة الرقيقة</translation>
-        </message>
-        <message>
-            <source>recommended (lowest check-point / leave-one-out error)</source>
-            <translation>الموصى به (أصغر خطأ على نقاط التحقق / ترك واحدة خارجاً)</translation>
-        </message>
-        <message>
-            <source>Polynomial order (1–3)</source>
-            <translation>درجة متعدد الحدود (1–3)</translation>
-        </message>
-        <message>
-            <source>Refine GCPs: drop the worst while over the tolerance</source>
-            <translation>تنقيح النقاط: حذف الأسوأ ما دام فوق التسامح</translation>
-        </message>
-        <message>
-            <source>CRS of the GCP map coordinates (if the file does not say)</source>
-            <translation>نظام الإحداثيات للإحداثيات الخرائطية لنقاط الضبط (إن لم يحدده الملف)</translation>
-        </message>
-        <message>
             <source>Resampling</source>
             <translation>إعادة الاعتيان</translation>
         </message>
@@ -1992,10 +1944,6 @@
         <message>
             <source>One rectified GeoTIFF per image, each written all or nothing.</source>
             <translation>ملف GeoTIFF مصحّح لكل صورة، يُكتب كاملًا أو لا يُكتب.</translation>
-        </message>
-        <message>
-            <source>polynomial of the order set below</source>
-            <translation>كثير حدود بالدرجة المحدّدة أدناه</translation>
         </message>
         <message>
             <source>Batch rectification report</source>
@@ -2343,6 +2291,61 @@
         </message>
     </context>
     <context>
+        <name>TransformationParams</name>
+        <message>
+            <source>CRS of the GCP map coordinates (if the file does not say)</source>
+            <translation>نظام الإحداثيات للإحداثيات الخرائطية لنقاط الضبط (إن لم يحدده الملف)</translation>
+        </message>
+        <message>
+            <source>Transformation</source>
+            <translation>التحويل</translation>
+        </message>
+        <message>
+            <source>polynomial of the order set below</source>
+            <translation>كثير حدود بالدرجة المحدّدة أدناه</translation>
+        </message>
+        <message>
+            <source>polynomial order 1 (affine)</source>
+            <translation>كثيرة حدود من الدرجة 1 (تآلفي)</translation>
+        </message>
+        <message>
+            <source>polynomial order 2</source>
+            <translation>كثيرة حدود من الدرجة 2</translation>
+        </message>
+        <message>
+            <source>polynomial order 3</source>
+            <translation>كثيرة حدود من الدرجة 3</translation>
+        </message>
+        <message>
+            <source>linear (shift and scale per axis)</source>
+            <translation>خطي (إزاحة ومقياس لكل محور)</translation>
+        </message>
+        <message>
+            <source>Helmert (shift, scale, rotation)</source>
+            <translation>هلمرت (إزاحة، مقياس، دوران)</translation>
+        </message>
+        <message>
+            <source>projective (homography)</source>
+            <translation>إسقاطي (تحويل متجانس)</translation>
+        </message>
+        <message>
+            <source>thin-plate spline</source>
+            <translation>شريحة الصفيحة الرقيقة</translation>
+        </message>
+        <message>
+            <source>recommended (lowest check-point / leave-one-out error)</source>
+            <translation>الموصى به (أصغر خطأ على نقاط التحقق / ترك واحدة خارجاً)</translation>
+        </message>
+        <message>
+            <source>Polynomial order (1–3)</source>
+            <translation>درجة متعدد الحدود (1–3)</translation>
+        </message>
+        <message>
+            <source>Refine GCPs: drop the worst while over the tolerance</source>
+            <translation>تنقيح النقاط: حذف الأسوأ ما دام فوق التسامح</translation>
+        </message>
+    </context>
+    <context>
         <name>_GcpBase</name>
         <message>
             <source>Image (raster) to rectify</source>
@@ -2401,14 +2404,6 @@
             <translation>مراكز البكسلات: العدد الصحيح = مركز بكسل (فهارس تبدأ من 0)</translation>
         </message>
         <message>
-            <source>CRS of the GCP map coordinates (if the file does not say)</source>
-            <translation>نظام الإحداثيات للإحداثيات الخرائطية لنقاط الضبط (إن لم يحدده الملف)</translation>
-        </message>
-        <message>
-            <source>Polynomial order (1–3)</source>
-            <translation>درجة متعدد الحدود (1–3)</translation>
-        </message>
-        <message>
             <source>Ground resolution GR (map units/pixel) [default: from the GCPs]</source>
             <translation>الدقة الأرضية GR (وحدة خريطة/بكسل) [الافتراضي: من نقاط الضبط]</translation>
         </message>
@@ -2445,46 +2440,6 @@
             <translation>نظام إحداثيات نقاط الضبط جغرافي (بالدرجات): تتطلب معايير الدقة وحدات خريطة طولية. اضبط TARGET_CRS (أو GCP_CRS) على نظام إحداثيات مُسقَط، مثل نطاق UTM الذي تقع فيه الصورة.</translation>
         </message>
         <message>
-            <source>Transformation</source>
-            <translation>التحويل</translation>
-        </message>
-        <message>
-            <source>polynomial order 1 (affine)</source>
-            <translation>كثيرة حدود من الدرجة 1 (تآلفي)</translation>
-        </message>
-        <message>
-            <source>polynomial order 2</source>
-            <translation>كثيرة حدود من الدرجة 2</translation>
-        </message>
-        <message>
-            <source>polynomial order 3</source>
-            <translation>كثيرة حدود من الدرجة 3</translation>
-        </message>
-        <message>
-            <source>linear (shift and scale per axis)</source>
-            <translation>خطي (إزاحة ومقياس لكل محور)</translation>
-        </message>
-        <message>
-            <source>Helmert (shift, scale, rotation)</source>
-            <translation>هلمرت (إزاحة، مقياس، دوران)</translation>
-        </message>
-        <message>
-            <source>projective (homography)</source>
-            <translation>إسقاطي (تحويل متجانس)</translation>
-        </message>
-        <message>
-            <source>thin-plate spline</source>
-            <translation>شريحة الصفيحة الرقيقة</translation>
-        </message>
-        <message>
-            <source>recommended (lowest check-point / leave-one-out error)</source>
-            <translation>الموصى به (أصغر خطأ على نقاط التحقق / ترك واحدة خارجاً)</translation>
-        </message>
-        <message>
-            <source>Refine GCPs: drop the worst while over the tolerance</source>
-            <translation>تنقيح النقاط: حذف الأسوأ ما دام فوق التسامح</translation>
-        </message>
-        <message>
             <source>Refinement tolerance (map units) [default: C5 limit 5·GR]</source>
             <translation>تسامح التنقيح (وحدات الخريطة) [الافتراضي: حدّ C5 أي 5·GR]</translation>
         </message>
@@ -2515,10 +2470,6 @@
         <message>
             <source>Sets the map scale S = 20000·GR and the tolerance band 4·GR to 6·GR of the criteria (Tishreen Univ. J. Eng. Sci. 38(2), 2016).</source>
             <translation>يحدّد مقياس الخريطة S = 20000·GR ونطاق السماحية من 4·GR إلى 6·GR في المعايير (مجلة جامعة تشرين للعلوم الهندسية 38(2)، 2016).</translation>
-        </message>
-        <message>
-            <source>polynomial of the order set below</source>
-            <translation>كثير حدود بالدرجة المحدّدة أدناه</translation>
         </message>
     </context>
     <context>

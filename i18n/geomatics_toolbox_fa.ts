@@ -1910,54 +1910,6 @@
             <translation>پوشهٔ تصاویر با فایل‌های .points</translation>
         </message>
         <message>
-            <source>Transformation</source>
-            <translation>تبدیل</translation>
-        </message>
-        <message>
-            <source>polynomial order 1 (affine)</source>
-            <translation>چندجمله‌ای درجهٔ 1 (آفین)</translation>
-        </message>
-        <message>
-            <source>polynomial order 2</source>
-            <translation>چندجمله‌ای درجهٔ 2</translation>
-        </message>
-        <message>
-            <source>polynomial order 3</source>
-            <translation>چندجمله‌ای درجهٔ 3</translation>
-        </message>
-        <message>
-            <source>linear (shift and scale per axis)</source>
-            <translation>خطی (انتقال و مقیاس برای هر محور)</translation>
-        </message>
-        <message>
-            <source>Helmert (shift, scale, rotation)</source>
-            <translation>هلمرت (انتقال، مقیاس، دوران)</translation>
-        </message>
-        <message>
-            <source>projective (homography)</source>
-            <translation>تصویری (هموگرافی)</translation>
-        </message>
-        <message>
-            <source>thin-plate spline</source>
-            <translation>اسپلاین صفحهٔ نازک</translation>
-        </message>
-        <message>
-            <source>recommended (lowest check-point / leave-one-out error)</source>
-            <translation>پیشنهادی (کمترین خطای نقاط چک / حذف‌یکی)</translation>
-        </message>
-        <message>
-            <source>Polynomial order (1–3)</source>
-            <translation>درجهٔ چندجمله‌ای (1–3)</translation>
-        </message>
-        <message>
-            <source>Refine GCPs: drop the worst while over the tolerance</source>
-            <translation>پالایش نقاط: حذف بدترین تا وقتی بالای تلورانس است</translation>
-        </message>
-        <message>
-            <source>CRS of the GCP map coordinates (if the file does not say)</source>
-            <translation>سیستم مختصاتِ مختصات نقشه‌ای نقاط کنترل (اگر پرونده آن را مشخص نکند)</translation>
-        </message>
-        <message>
             <source>Resampling</source>
             <translation>بازنمونه‌برداری</translation>
         </message>
@@ -1992,10 +1944,6 @@
         <message>
             <source>One rectified GeoTIFF per image, each written all or nothing.</source>
             <translation>یک GeoTIFF تصحیح‌شده برای هر تصویر که کامل نوشته می‌شود یا اصلاً نوشته نمی‌شود.</translation>
-        </message>
-        <message>
-            <source>polynomial of the order set below</source>
-            <translation>چندجمله‌ای با درجهٔ تعیین‌شده در پایین</translation>
         </message>
         <message>
             <source>Batch rectification report</source>
@@ -2343,6 +2291,61 @@
         </message>
     </context>
     <context>
+        <name>TransformationParams</name>
+        <message>
+            <source>CRS of the GCP map coordinates (if the file does not say)</source>
+            <translation>سیستم مختصاتِ مختصات نقشه‌ای نقاط کنترل (اگر پرونده آن را مشخص نکند)</translation>
+        </message>
+        <message>
+            <source>Transformation</source>
+            <translation>تبدیل</translation>
+        </message>
+        <message>
+            <source>polynomial of the order set below</source>
+            <translation>چندجمله‌ای با درجهٔ تعیین‌شده در پایین</translation>
+        </message>
+        <message>
+            <source>polynomial order 1 (affine)</source>
+            <translation>چندجمله‌ای درجهٔ 1 (آفین)</translation>
+        </message>
+        <message>
+            <source>polynomial order 2</source>
+            <translation>چندجمله‌ای درجهٔ 2</translation>
+        </message>
+        <message>
+            <source>polynomial order 3</source>
+            <translation>چندجمله‌ای درجهٔ 3</translation>
+        </message>
+        <message>
+            <source>linear (shift and scale per axis)</source>
+            <translation>خطی (انتقال و مقیاس برای هر محور)</translation>
+        </message>
+        <message>
+            <source>Helmert (shift, scale, rotation)</source>
+            <translation>هلمرت (انتقال، مقیاس، دوران)</translation>
+        </message>
+        <message>
+            <source>projective (homography)</source>
+            <translation>تصویری (هموگرافی)</translation>
+        </message>
+        <message>
+            <source>thin-plate spline</source>
+            <translation>اسپلاین صفحهٔ نازک</translation>
+        </message>
+        <message>
+            <source>recommended (lowest check-point / leave-one-out error)</source>
+            <translation>پیشنهادی (کمترین خطای نقاط چک / حذف‌یکی)</translation>
+        </message>
+        <message>
+            <source>Polynomial order (1–3)</source>
+            <translation>درجهٔ چندجمله‌ای (1–3)</translation>
+        </message>
+        <message>
+            <source>Refine GCPs: drop the worst while over the tolerance</source>
+            <translation>پالایش نقاط: حذف بدترین تا وقتی بالای تلورانس است</translation>
+        </message>
+    </context>
+    <context>
         <name>_GcpBase</name>
         <message>
             <source>Image (raster) to rectify</source>
@@ -2401,14 +2404,6 @@
             <translation>مراکز پیکسل: عدد صحیح = مرکز یک پیکسل (اندیس‌ها از 0)</translation>
         </message>
         <message>
-            <source>CRS of the GCP map coordinates (if the file does not say)</source>
-            <translation>سیستم مختصاتِ مختصات نقشه‌ای نقاط کنترل (اگر پرونده آن را مشخص نکند)</translation>
-        </message>
-        <message>
-            <source>Polynomial order (1–3)</source>
-            <translation>درجهٔ چندجمله‌ای (1–3)</translation>
-        </message>
-        <message>
             <source>Ground resolution GR (map units/pixel) [default: from the GCPs]</source>
             <translation>قدرت تفکیک زمینی GR (واحد نقشه/پیکسل) [پیش‌فرض: از نقاط کنترل]</translation>
         </message>
@@ -2445,46 +2440,6 @@
             <translation>سیستم مختصات نقاط کنترل جغرافیایی (درجه) است: معیارهای دقت به واحدهای طولی نقشه نیاز دارند. TARGET_CRS (یا GCP_CRS) را روی یک سیستم مختصات تصویرشده تنظیم کنید، مثلاً زون UTM تصویر.</translation>
         </message>
         <message>
-            <source>Transformation</source>
-            <translation>تبدیل</translation>
-        </message>
-        <message>
-            <source>polynomial order 1 (affine)</source>
-            <translation>چندجمله‌ای درجهٔ 1 (آفین)</translation>
-        </message>
-        <message>
-            <source>polynomial order 2</source>
-            <translation>چندجمله‌ای درجهٔ 2</translation>
-        </message>
-        <message>
-            <source>polynomial order 3</source>
-            <translation>چندجمله‌ای درجهٔ 3</translation>
-        </message>
-        <message>
-            <source>linear (shift and scale per axis)</source>
-            <translation>خطی (انتقال و مقیاس برای هر محور)</translation>
-        </message>
-        <message>
-            <source>Helmert (shift, scale, rotation)</source>
-            <translation>هلمرت (انتقال، مقیاس، دوران)</translation>
-        </message>
-        <message>
-            <source>projective (homography)</source>
-            <translation>تصویری (هموگرافی)</translation>
-        </message>
-        <message>
-            <source>thin-plate spline</source>
-            <translation>اسپلاین صفحهٔ نازک</translation>
-        </message>
-        <message>
-            <source>recommended (lowest check-point / leave-one-out error)</source>
-            <translation>پیشنهادی (کمترین خطای نقاط چک / حذف‌یکی)</translation>
-        </message>
-        <message>
-            <source>Refine GCPs: drop the worst while over the tolerance</source>
-            <translation>پالایش نقاط: حذف بدترین تا وقتی بالای تلورانس است</translation>
-        </message>
-        <message>
             <source>Refinement tolerance (map units) [default: C5 limit 5·GR]</source>
             <translation>تلورانس پالایش (واحد نقشه) [پیش‌فرض: حد C5 یعنی 5·GR]</translation>
         </message>
@@ -2515,10 +2470,6 @@
         <message>
             <source>Sets the map scale S = 20000·GR and the tolerance band 4·GR to 6·GR of the criteria (Tishreen Univ. J. Eng. Sci. 38(2), 2016).</source>
             <translation>مقیاس نقشه S = 20000·GR و بازهٔ رواداری 4·GR تا 6·GR معیارها را تعیین می‌کند (مجلهٔ علوم مهندسی دانشگاه تشرین 38(2)، 2016).</translation>
-        </message>
-        <message>
-            <source>polynomial of the order set below</source>
-            <translation>چندجمله‌ای با درجهٔ تعیین‌شده در پایین</translation>
         </message>
     </context>
     <context>
