@@ -303,6 +303,16 @@ class CheckPoints:
     def __len__(self) -> int:
         return int(self.x.size)
 
+    def to_csv(self, path, *, xy_decimals: int = 3, z_decimals: int = 4, extra=()) -> str:
+        """Write ``id,x,y,z`` (header line, one point per line, ``extra`` rows of
+        ``(id, x, y, z)`` appended) and return the path as a string."""
+        rows = [(int(i), x, y, z) for i, x, y, z in zip(self.id, self.x, self.y, self.z)]
+        with open(path, "w", encoding="utf-8", newline="\n") as fh:
+            fh.write("id,x,y,z\n")
+            for i, x, y, z in [*rows, *extra]:
+                fh.write(f"{i},{x:.{xy_decimals}f},{y:.{xy_decimals}f},{z:.{z_decimals}f}\n")
+        return str(path)
+
 
 # --------------------------------------------------------------------------- tile
 @dataclass(eq=False)

@@ -19,9 +19,8 @@ def demo(tmp_path_factory):
     d = tmp_path_factory.mktemp("model")
     tile = generate_tile(extent=(120.0, 120.0), density=2.0, seed=6)
     write_tile(tile, d / "demo.laz", crs="EPSG:32632")
-    cp = tile.checkpoints(n=15, min_spacing=4.0)
-    (d / "checkpoints.csv").write_text("id,x,y,z\n" + "".join(
-        f"{i},{x:.2f},{y:.2f},{z:.3f}\n" for i, x, y, z in zip(cp.id, cp.x, cp.y, cp.z)))
+    tile.checkpoints(n=15, min_spacing=4.0).to_csv(d / "checkpoints.csv", xy_decimals=2,
+                                                   z_decimals=3)
     return d
 
 

@@ -13,11 +13,8 @@ def data(tmp_path_factory):
     tile = generate_tile(extent=(80.0, 80.0), density=2.0, seed=2, n_buildings=1, n_halls=0)
     laz = d / "t.laz"
     write_tile(tile, laz, crs="EPSG:32632")
-    cp = tile.checkpoints(n=8, min_spacing=3.0)
-    csv = d / "cp.csv"
-    csv.write_text("id,x,y,z\n" + "".join(f"{i},{x},{y},{z}\n" for i, x, y, z in
-                                         zip(cp.id, cp.x, cp.y, cp.z)))
-    return d, str(laz), str(csv)
+    csv = tile.checkpoints(n=8, min_spacing=3.0).to_csv(d / "cp.csv", z_decimals=6)
+    return d, str(laz), csv
 
 
 def test_idw_kriging_dsm_accuracy_cli(qgis_process, data):

@@ -31,10 +31,7 @@ def data(tmp_path_factory):
     laz = d / "tile.laz"
     write_tile(tile, laz, crs="EPSG:32632")
     cp = tile.checkpoints(n=10, min_spacing=3.0)
-    csv = d / "cp.csv"
-    csv.write_text("id,x,y,z\n" + "".join(f"{i},{x:.3f},{y:.3f},{z:.4f}\n" for i, x, y, z
-                                         in zip(cp.id, cp.x, cp.y, cp.z)))
-    return {"dir": d, "laz": str(laz), "csv": str(csv), "cp": cp}
+    return {"dir": d, "laz": str(laz), "csv": cp.to_csv(d / "cp.csv"), "cp": cp}
 
 
 def _params(data, folder, **extra):

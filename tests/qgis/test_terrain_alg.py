@@ -19,11 +19,7 @@ def scene(tmp_path_factory):
     nocrs = d / "nocrs.laz"
     write_tile(tile, nocrs, crs=None)
     cp = tile.checkpoints(n=12, min_spacing=3.0)
-    csv = d / "cp.csv"
-    lines = ["id,x,y,z"] + [f"{i},{x:.3f},{y:.3f},{z:.4f}"
-                            for i, x, y, z in zip(cp.id, cp.x, cp.y, cp.z)]
-    lines.append(f"far,{tile.bounds[2] + 500:.2f},{tile.bounds[3]:.2f},200.0")
-    csv.write_text("\n".join(lines) + "\n")
+    csv = cp.to_csv(d / "cp.csv", extra=[("far", tile.bounds[2] + 500, tile.bounds[3], 200.0)])
     return {"dir": d, "tile": tile, "laz": str(laz), "nocrs": str(nocrs), "csv": str(csv),
             "cp": cp}
 
