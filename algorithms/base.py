@@ -319,6 +319,20 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
         """Do the work; return the outputs dict. Subclasses implement this."""
         raise NotImplementedError
 
+    @staticmethod
+    def input_error_message(exc: InputError) -> str:
+        """An :class:`InputError` in the QGIS interface language (English if untranslated).
+
+        Core errors carry an English template and fields; the template is translated
+        from ``i18n/strings/*.json`` like report text.
+        """
+        try:
+            lang = user_locale()
+        except Exception:  # noqa: BLE001 - the message language is cosmetic
+            lang = "en"
+        message = getattr(exc, "message", None)
+        return message(lang) if callable(message) else str(exc)
+
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         try:
             return self.process(parameters, context, feedback)
@@ -331,7 +345,7 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
             raise QgsProcessingException(QCoreApplication.translate(
                 "GeomaticsAlgorithm", "Terminated; no output was written.")) from None
         except InputError as exc:
-            raise QgsProcessingException(str(exc)) from None
+            raise QgsProcessingException(self.input_error_message(exc)) from None
         except (ValueError, OSError) as exc:
             if feedback is not None:
                 feedback.pushDebugInfo(traceback.format_exc())

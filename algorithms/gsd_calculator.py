@@ -62,7 +62,7 @@ def _optional(parameters, name):
     try:
         value = float(value)
     except (TypeError, ValueError):
-        raise InputError(f"{name}: '{value}' is not a number.") from None
+        raise InputError("{name}: '{value}' is not a number.", name=name, value=value) from None
     return None if math.isnan(value) else value
 
 
@@ -222,7 +222,7 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
         try:
             self.camera_inputs(parameters, context)
         except InputError as exc:
-            return False, str(exc)
+            return False, self.input_error_message(exc)
         return True, ""
 
     def camera_inputs(self, parameters, context) -> dict:

@@ -123,10 +123,12 @@ def check_projected(x=None, y=None, z=None, *, crs: Optional[str] = None,
         When the CRS is geographic or the coordinates look like degrees.
     """
     if crs_is_geographic(crs):
-        raise InputError(f"{what} is in a geographic CRS (longitude/latitude in degrees); "
-                         f"distances, tiles and slopes need metres. {REPROJECT_HINT}")
+        raise InputError("{what} is in a geographic CRS (longitude/latitude in degrees); "
+                         "distances, tiles and slopes need metres. {hint}",
+                         what=what,
+                         hint=REPROJECT_HINT)
     if x is not None and looks_like_degrees(x, y, z):
-        raise InputError(f"{what} looks like longitude/latitude in degrees (x within ±180, "
+        raise InputError("{what} looks like longitude/latitude in degrees (x within ±180, "
                          "y within ±90, a horizontal extent of a few units and heights in "
-                         f"metres); distances, tiles and slopes need metres. "
-                         f"{REPROJECT_HINT}")
+                         "metres); distances, tiles and slopes need metres. "
+                         "{hint}", what=what, hint=REPROJECT_HINT)

@@ -9,7 +9,8 @@ truth, read directly (without Qt) by the report translator in
 Usage (``make ts`` runs it)::
 
     python scripts/i18n_sync.py            # pylupdate5 + fill + report missing
-    python scripts/i18n_sync.py --check    # exit 1 if a source string lacks a translation
+    python scripts/i18n_sync.py --check    # exit 1 if a source string or an InputError
+                                           # template lacks a translation
     python scripts/i18n_sync.py --export   # one-off: .ts translations -> strings/base.json
 
 Never edit the ``.ts`` files by hand: on a merge conflict take either side and re-run
@@ -18,6 +19,7 @@ Never edit the ``.ts`` files by hand: on a merge conflict take either side and r
 from __future__ import annotations
 
 import argparse
+import ast
 import json
 import subprocess
 import sys
@@ -58,6 +60,76 @@ def run_pylupdate() -> None:
     files = [str(ROOT / f) for f in sources()]
     subprocess.run(["pylupdate5", "-noobsolete", *files, "-ts",
                     *[str(ts_path(lang)) for lang in LANGS]], check=True, cwd=ROOT)
+
+
+def _literal(node):
+    """The text of a string-literal node (implicit concatenations included), else None."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return node.value
+    return None
+
+
+def input_error_templates() -> tuple:
+    """``InputError`` templates in core/ and algorithms/, and the calls that are no template.
+
+    Returns ``({template: "file:line"}, ["file:line: problem", ...])``. A template is the
+    literal first argument of ``InputError(...)``; an f-string or a concatenation there
+    is a problem (write ``InputError("... {name} ...", name=value)``). A variable
+    (``InputError(str(exc))``, an already translated ``self.tr(...)``) is allowed.
+    """
+    templates, problems = {}, []
+    for rel in sources():
+        if not rel.startswith(("core/", "algorithms/")):
+            continue
+        tree = ast.parse((ROOT / rel).read_text(encoding="utf-8"))
+        for node in ast.walk(tree):
+            func = getattr(node, "func", None)
+            if not (isinstance(node, ast.Call) and node.args and (
+                    getattr(func, "id", None) == "InputError"
+                    or getattr(func, "attr", None) == "InputError")):
+                continue
+            arg, where = node.args[0], f"{rel}:{node.lineno}"
+            text = _literal(arg)
+            if text is not None:
+                templates.setdefault(text, where)
+            elif isinstance(arg, (ast.JoinedStr, ast.BinOp)):
+                problems.append(f"{where}: InputError message built with an f-string or +; "
+                                "use a template with fields: InputError(\"... {name} ...\", "
+                                "name=value)")
+    return templates, problems
+
+
+def tr_call_problems() -> list:
+    """``tr``/``translate``/``QT_TRANSLATE_NOOP`` calls whose text is not a literal.
+
+    pylupdate5 cannot see ``self.tr(label)``: such a string stays English. A call may
+    pass a variable only when its line says ``# i18n: noop-list`` (the values are
+    ``QT_TRANSLATE_NOOP`` literals elsewhere, checked at run time by the tests).
+    """
+    problems = []
+    for rel in sources():
+        src = (ROOT / rel).read_text(encoding="utf-8")
+        lines = src.splitlines()
+        for node in ast.walk(ast.parse(src)):
+            if not isinstance(node, ast.Call):
+                continue
+            name = getattr(node.func, "attr", None) or getattr(node.func, "id", None)
+            if name == "tr" and node.args:
+                arg = node.args[0]
+            elif name in ("translate", "QT_TRANSLATE_NOOP") and len(node.args) >= 2:
+                arg = node.args[1]
+            else:
+                continue
+            if _literal(arg) is not None:
+                continue
+            if "i18n: noop-list" in lines[node.lineno - 1] or \
+                    "i18n: noop-list" in lines[getattr(node, "end_lineno", node.lineno) - 1]:
+                continue
+            problems.append(f"{rel}:{node.lineno}: {name}() of a non-literal is invisible "
+                            "to pylupdate5 (stays English); pass a literal, or wrap the "
+                            "values in QT_TRANSLATE_NOOP and mark the line "
+                            "'# i18n: noop-list'")
+    return problems
 
 
 def fill(dictionary: dict) -> dict:
@@ -110,8 +182,21 @@ def main() -> int:
         return 0
     if not args.check:
         run_pylupdate()
-    missing = fill(load_dictionary())
+    dictionary = load_dictionary()
+    missing = fill(dictionary)
     bad = False
+    templates, problems = input_error_templates()
+    for lang in LANGS:
+        miss = [t for t in templates if not dictionary.get(t, {}).get(lang)]
+        if miss:
+            bad = True
+            print(f"{lang}: {len(miss)} InputError messages without a translation "
+                  "(add them to a file in i18n/strings/):", file=sys.stderr)
+            for t in miss[:50]:
+                print(f"  {templates[t]}: {t!r}", file=sys.stderr)
+    for problem in problems:
+        bad = True
+        print(problem, file=sys.stderr)
     for lang, miss in missing.items():
         if miss:
             bad = True

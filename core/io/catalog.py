@@ -40,12 +40,14 @@ def _vpc_files(path: str) -> List[str]:
         with open(path, encoding="utf-8") as fh:
             doc = json.load(fh)
     except (OSError, ValueError) as exc:
-        raise InputError(f"Cannot read the virtual point cloud {path}: {exc}. Re-create it "
-                         "(e.g. pdal tindex create, or QGIS 'Build virtual point cloud').") from exc
+        raise InputError("Cannot read the virtual point cloud {path}: {exc}. Re-create it "
+                         "(e.g. pdal tindex create, or QGIS 'Build virtual point cloud').",
+                         path=path,
+                         exc=exc) from exc
     feats = doc.get("features") if isinstance(doc, dict) else None
     if doc.get("type") != "FeatureCollection" or not isinstance(feats, list):
-        raise InputError(f"{path} is not a virtual point cloud (a GeoJSON FeatureCollection "
-                         "with one Feature per LAS/LAZ file).")
+        raise InputError("{path} is not a virtual point cloud (a GeoJSON FeatureCollection "
+                         "with one Feature per LAS/LAZ file).", path=path)
     base = os.path.dirname(os.path.abspath(path))
     out = []
     for feat in feats:
@@ -54,7 +56,8 @@ def _vpc_files(path: str) -> List[str]:
             if _is_las(href):
                 out.append(os.path.normpath(os.path.join(base, href)))
     if not out:
-        raise InputError(f"{path} lists no LAS/LAZ file (no asset href ends in .las/.laz).")
+        raise InputError("{path} lists no LAS/LAZ file (no asset href ends in .las/.laz).",
+                         path=path)
     return out
 
 
@@ -82,15 +85,15 @@ def find_tiles(source: Union[str, os.PathLike, Sequence]) -> List[str]:
             files += sorted(p for p in glob.glob(item) if _is_las(p))
         elif _is_las(item):
             if not os.path.exists(item):
-                raise InputError(f"Tile not found: {item}. Check the path.")
+                raise InputError("Tile not found: {item}. Check the path.", item=item)
             files.append(item)
         else:
-            raise InputError(f"{item} is neither a folder, a LAS/LAZ file nor a .vpc "
-                             "virtual point cloud.")
+            raise InputError("{item} is neither a folder, a LAS/LAZ file nor a .vpc "
+                             "virtual point cloud.", item=item)
     unique = list(dict.fromkeys(os.path.abspath(f) for f in files))
     if not unique:
-        raise InputError(f"No LAS/LAZ tile found in {source}; give a folder of .las/.laz "
-                         "files, a list of files or a .vpc.")
+        raise InputError("No LAS/LAZ tile found in {source}; give a folder of .las/.laz "
+                         "files, a list of files or a .vpc.", source=source)
     return unique
 
 

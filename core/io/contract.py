@@ -145,15 +145,21 @@ def check_paths(outputs: Mapping[str, Optional[PathLike]],
         for in_name, src in ins:
             if src.resolve() == real or (ident is not None and _identity(src.resolve()) == ident):
                 raise InputError(
-                    f"The output {name} ({path}) is the same file as the input {in_name} "
-                    f"({src}); choose another output path — inputs are never overwritten.")
+                    "The output {name} ({path}) is the same file as the input {in_name} "
+                    "({src}); choose another output path — inputs are never overwritten.",
+                    name=name,
+                    path=path,
+                    in_name=in_name,
+                    src=src)
         if real in seen:
             raise InputError(
-                f"The outputs {seen[real]} and {name} are both {path}; give each output "
-                "its own file.")
+                "The outputs {other} and {name} are both {path}; give each output "
+                "its own file.", other=seen[real], name=name, path=path)
         seen[real] = name
         if real.is_dir():
-            raise InputError(f"The output {name} ({path}) is a folder; give a file name.")
+            raise InputError("The output {name} ({path}) is a folder; give a file name.",
+                             name=name,
+                             path=path)
         _check_writable(real.parent, name)
     return outs
 
@@ -173,8 +179,11 @@ def _check_writable(folder: Path, name: str) -> None:
             reason = exc.strerror or str(exc)
     if reason:
         raise InputError(
-            f"The folder {folder} of the output {name} cannot be written ({reason}); "
-            "choose a folder you can write to. Nothing was written.")
+            "The folder {folder} of the output {name} cannot be written ({reason}); "
+            "choose a folder you can write to. Nothing was written.",
+            folder=folder,
+            name=name,
+            reason=reason)
 
 
 class OutputContract:

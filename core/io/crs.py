@@ -32,7 +32,9 @@ def spatial_reference(crs: str, *, what: str = "CRS"):
     except RuntimeError:
         ok = False
     if not ok:
-        raise InputError(f"Unrecognised {what} {crs!r}; give e.g. 'EPSG:32632' or a WKT.")
+        raise InputError("Unrecognised {what} {crs!r}; give e.g. 'EPSG:32632' or a WKT.",
+                         what=what,
+                         crs=crs)
     srs.SetAxisMappingStrategy(osr.OAMS_TRADITIONAL_GIS_ORDER)
     return srs
 

@@ -207,9 +207,12 @@ def check_distinct_map(ids, map_xy, enabled, source: str = "") -> None:
                      f"Y = {map_xy[g[0], 1]:.10g}" for g in groups[:10])
     more = f" (and {len(groups) - 10} more groups)" if len(groups) > 10 else ""
     raise InputError(
-        f"GCPs with identical map coordinates in {source or 'the input'}: {text}{more}. "
+        "GCPs with identical map coordinates in {source}: {text}{more}. "
         "Each GCP must be a distinct ground point: fix the map coordinates of the "
-        "repeated points, or disable or remove the duplicates.")
+        "repeated points, or disable or remove the duplicates.",
+        source=source or 'the input',
+        text=text,
+        more=more)
 
 
 def check_in_image(gcps: GCPSet, width: int, height: int, *, tolerance: float = 0.0) -> None:

@@ -69,14 +69,16 @@ def parse_classes(text, *, name: str = "class filter",
         except ValueError:
             value = math.nan
         if not (math.isfinite(value) and value.is_integer()):
-            raise InputError(f"The {name} must list integer LAS classes such as '2' or "
-                             f"'2, 8'; {item!r} is not an integer class.")
+            raise InputError("The {name} must list integer LAS classes such as '2' or "
+                             "'2, 8'; {item!r} is not an integer class.", name=name, item=item)
         c = int(value)
         if not 0 <= c <= 255:
-            raise InputError(f"The {name} lists class {c}, outside the LAS range 0–255.")
+            raise InputError("The {name} lists class {c}, outside the LAS range 0–255.",
+                             name=name,
+                             c=c)
         out.append(c)
     if not out and not allow_empty:
-        raise InputError(f"The {name} must list at least one LAS class, e.g. '2'.")
+        raise InputError("The {name} must list at least one LAS class, e.g. '2'.", name=name)
     return tuple(sorted(set(out)))
 
 
@@ -177,11 +179,14 @@ def read_checkpoints_csv(path, *, x_field: str = "", y_field: str = "",
             ys.append(float(r[iy]))
             zs.append(float(r[iz]))
         except (ValueError, IndexError):
-            raise InputError(f"{path}: row {k + (header is not None)} is not numeric x, y, z: "
-                             f"{r}.") from None
+            raise InputError("{path}: row {row} is not numeric x, y, z: "
+                             "{r}.",
+                             path=path,
+                             row=k + (header is not None),
+                             r=r) from None
         ids.append(r[iid] if iid is not None and iid < len(r) else str(k))
     if not xs:
-        raise InputError(f"{path} holds no check points.")
+        raise InputError("{path} holds no check points.", path=path)
     return ids, np.array(xs), np.array(ys), np.array(zs)
 
 
@@ -196,12 +201,12 @@ def _is_number(text: str) -> bool:
 def _delimited_rows(path: str) -> List[List[str]]:
     """Return the non-comment rows of a delimited text file, delimiter detected."""
     if not os.path.exists(path):
-        raise InputError(f"Check point file not found: {path}.")
+        raise InputError("Check point file not found: {path}.", path=path)
     with open(path, encoding="utf-8-sig") as fh:
         text = fh.read()
     lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
     if not lines:
-        raise InputError(f"{path} holds no check points.")
+        raise InputError("{path} holds no check points.", path=path)
     try:
         delim = csv.Sniffer().sniff("\n".join(lines[:20]), delimiters=",;\t ").delimiter
     except csv.Error:
@@ -220,21 +225,29 @@ def _xyz_columns(path: str, header, rows, fields) -> tuple:
             return 0, 1, 2, 3
         if width == 3:
             return None, 0, 1, 2
-        raise InputError(f"{path}: expected at least 3 columns (x, y, z), got {width}.")
+        raise InputError("{path}: expected at least 3 columns (x, y, z), got {width}.",
+                         path=path,
+                         width=width)
 
     def find(names, given, what):
         if given:
             if given.lower() not in header:
-                raise InputError(f"Column {given!r} for {what} not found in {path} "
-                                 f"(columns: {header}).")
+                raise InputError("Column {given!r} for {what} not found in {path} "
+                                 "(columns: {header}).",
+                                 given=given,
+                                 what=what,
+                                 path=path,
+                                 header=header)
             return header.index(given.lower())
         return next((header.index(nm) for nm in names if nm in header), None)
 
     ix, iy, iz = (find(n, g, w) for n, g, w in zip((_X_NAMES, _Y_NAMES, _Z_NAMES), fields,
                                                     ("x", "y", "z")))
     if ix is None or iy is None or iz is None:
-        raise InputError(f"Cannot find x, y and z columns in {path}: header is {header}. "
-                         "Name them x, y, z (or easting, northing, height).")
+        raise InputError("Cannot find x, y and z columns in {path}: header is {header}. "
+                         "Name them x, y, z (or easting, northing, height).",
+                         path=path,
+                         header=header)
     return find(_ID_NAMES, "", "id"), ix, iy, iz
 
 
@@ -287,8 +300,9 @@ def write_points_layer(path, x, y, z, columns, *, crs: Optional[str] = None,
     path = os.fspath(path)
     ext = os.path.splitext(path)[1].lower()
     if ext not in VECTOR_DRIVERS:
-        raise InputError(f"Output {path}: the residual layer is written as a GeoPackage "
-                         "(.gpkg) or GeoJSON (.geojson); choose one of these extensions.")
+        raise InputError("Output {path}: the residual layer is written as a GeoPackage "
+                         "(.gpkg) or GeoJSON (.geojson); choose one of these extensions.",
+                         path=path)
     srs = None
     if crs:
         srs = osr.SpatialReference()

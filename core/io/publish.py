@@ -37,8 +37,11 @@ def _convert(kind: str, src: str, dst: str) -> None:
         _gdal().VectorTranslate(dst, src)
     else:
         raise InputError(
-            f"Cannot publish {src} as {dst}: the extensions differ; choose a "
-            f"destination ending in {Path(src).suffix}.")
+            "Cannot publish {src} as {dst}: the extensions differ; choose a "
+            "destination ending in {suffix}.",
+            src=src,
+            dst=dst,
+            suffix=Path(src).suffix)
 
 
 def publish_file(kind: str, src: str, dst: str) -> None:
@@ -46,8 +49,8 @@ def publish_file(kind: str, src: str, dst: str) -> None:
     if kind not in KINDS:
         raise ValueError(f"unknown kind {kind!r}; expected one of {KINDS}")
     if not Path(src).is_file():
-        raise InputError(f"The file to publish {src} does not exist; the step that "
-                         "should have written it failed or was skipped.")
+        raise InputError("The file to publish {src} does not exist; the step that "
+                         "should have written it failed or was skipped.", src=src)
     if Path(src).suffix.lower() == Path(dst).suffix.lower():
         shutil.copyfile(src, dst)
     else:

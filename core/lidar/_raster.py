@@ -257,8 +257,8 @@ def checked_xyz(x, y, z, min_points: int):
     from ..errors import InputError
     x, y, z = as_xyz(x, y, z, projected=True)
     if x.size < min_points:
-        raise InputError(f"A ground filter needs at least {min_points} points, got "
-                         f"{x.size}.")
+        raise InputError("A ground filter needs at least {min_points} points, got "
+                         "{n}.", min_points=min_points, n=x.size)
     if max(float(np.ptp(x)), float(np.ptp(y))) <= 0.0:
         raise InputError("All points share one x/y position; nothing to filter.")
     return x, y, z

@@ -85,14 +85,16 @@ class Catalog:
         infos = index_tiles(find_tiles(source))
         empty = [t.path for t in infos if t.count == 0]
         if empty:
-            raise InputError(f"Tile(s) without points: {', '.join(empty)}; remove them "
-                             "from the catalog.")
+            raise InputError("Tile(s) without points: {tiles}; remove them "
+                             "from the catalog.", tiles=', '.join(empty))
         crss = {t.crs for t in infos}
         if len(crss) > 1:
             listing = "; ".join(f"{os.path.basename(t.path)}: {t.crs or 'none'}"
                                 for t in infos[:6])
-            raise InputError(f"The tiles are in {len(crss)} different CRSs ({listing}); "
-                             "reproject them to one CRS (e.g. pdal translate) first.")
+            raise InputError("The tiles are in {n_crs} different CRSs ({listing}); "
+                             "reproject them to one CRS (e.g. pdal translate) first.",
+                             n_crs=len(crss),
+                             listing=listing)
         bounds = np.array([[t.mins[0], t.mins[1], t.maxs[0], t.maxs[1]] for t in infos])
         return cls(infos, bounds, crss.pop())
 
@@ -140,8 +142,10 @@ def _check_folder(cat: Catalog, folder: Path) -> None:
     root = folder.resolve()
     inside = [p for p in cat.paths if root in Path(p).resolve().parents]
     if inside:
-        raise InputError(f"The output folder {folder} contains input tiles "
-                         f"({os.path.basename(inside[0])}, ...); choose another folder.")
+        raise InputError("The output folder {folder} contains input tiles "
+                         "({tile}, ...); choose another folder.",
+                         folder=folder,
+                         tile=os.path.basename(inside[0]))
     stems = [Path(p).stem for p in cat.paths]
     if len(set(stems)) != len(stems):
         raise InputError("Two tiles have the same file name; their outputs would collide. "
@@ -153,15 +157,20 @@ def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
                max_distance: Optional[float] = None) -> List[ChunkTask]:
     """One :class:`ChunkTask` per tile (validated parameters, output paths checked)."""
     if ground_filter not in GROUND_FILTERS:
-        raise InputError(f"Unknown ground filter {ground_filter!r}; choose one of "
-                         f"{', '.join(GROUND_FILTERS)}.")
+        raise InputError("Unknown ground filter {ground_filter!r}; choose one of "
+                         "{choices}.",
+                         ground_filter=ground_filter,
+                         choices=', '.join(GROUND_FILTERS))
     if dtm_method not in DTM_METHODS:
-        raise InputError(f"Unknown DTM method {dtm_method!r}; choose one of "
-                         f"{', '.join(DTM_METHODS)}.")
+        raise InputError("Unknown DTM method {dtm_method!r}; choose one of "
+                         "{choices}.",
+                         dtm_method=dtm_method,
+                         choices=', '.join(DTM_METHODS))
     if not (cell_size > 0 and math.isfinite(cell_size)):
-        raise InputError(f"CELL_SIZE must be > 0 metres (e.g. 1), got {cell_size}.")
+        raise InputError("CELL_SIZE must be > 0 metres (e.g. 1), got {cell_size}.",
+                         cell_size=cell_size)
     if not (buffer >= 0 and math.isfinite(buffer)):
-        raise InputError(f"BUFFER must be >= 0 metres (e.g. 100), got {buffer}.")
+        raise InputError("BUFFER must be >= 0 metres (e.g. 100), got {buffer}.", buffer=buffer)
     folder = Path(folder)
     _check_folder(cat, folder)
     if origin is None:
@@ -255,8 +264,10 @@ def _client(workers: int, scheduler: str, memory_limit):
         try:
             return Client(scheduler, timeout="20s"), None
         except (OSError, TimeoutError) as exc:
-            raise InputError(f"Cannot reach the Dask scheduler {scheduler} ({exc}); start "
-                             "it with 'dask scheduler' or leave SCHEDULER empty.") from exc
+            raise InputError("Cannot reach the Dask scheduler {scheduler} ({exc}); start "
+                             "it with 'dask scheduler' or leave SCHEDULER empty.",
+                             scheduler=scheduler,
+                             exc=exc) from exc
     _worker_env()
     cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                            dashboard_address=None, memory_limit=memory_limit,

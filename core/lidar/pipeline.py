@@ -158,7 +158,8 @@ class SelectionOptions:
     def validate(self) -> SelectionOptions:
         """Raise :class:`InputError` on an invalid option; returns self."""
         if self.returns not in RETURNS:
-            raise InputError(f"returns must be 'all' or 'last', got {self.returns!r}.")
+            raise InputError("returns must be 'all' or 'last', got {returns!r}.",
+                             returns=self.returns)
         if self.noise and not (self.noise_radius > 0 and self.noise_threshold > 0):
             raise InputError("NOISE_RADIUS and NOISE_THRESHOLD must be > 0 metres (e.g. 5 "
                              "and 1), or switch the NOISE pre-filter off.")
@@ -218,10 +219,14 @@ def select_points(pd, *, returns: str = "all", noise: bool = True, noise_radius:
     cand = base & ~low
     if not cand.any():
         raise InputError("No point is left to filter after the return/noise selection "
-                         f"({n} points read, {int(np.count_nonzero(not_last))} not last "
-                         f"returns, {int(np.count_nonzero(in_noise))} already noise, "
-                         f"{int(np.count_nonzero(low))} low outliers). Use returns='all' "
-                         "or disable the noise pre-filter.")
+                         "({n} points read, {not_last} not last "
+                         "returns, {noise} already noise, "
+                         "{low} low outliers). Use returns='all' "
+                         "or disable the noise pre-filter.",
+                         n=n,
+                         not_last=int(np.count_nonzero(not_last)),
+                         noise=int(np.count_nonzero(in_noise)),
+                         low=int(np.count_nonzero(low)))
     return Selection(cand, low, not_last, in_noise, unknown)
 
 
@@ -455,8 +460,10 @@ def _check_request(outputs: FilterOutputs) -> Dict[str, str]:
                          "cloud or the report.")
     for role in ("cloud", "ground"):
         if role in roles and not roles[role].lower().endswith(LAS_SUFFIXES):
-            raise InputError(f"The output {outputs.name(role)} must end in .las or .laz "
-                             f"(got {roles[role]}).")
+            raise InputError("The output {name} must end in .las or .laz "
+                             "(got {path}).",
+                             name=outputs.name(role),
+                             path=roles[role])
     return roles
 
 

@@ -106,7 +106,7 @@ class PtdOptions:
         for name in ("cell", "max_building", "max_distance", "max_angle",
                      "final_distance", "low_noise_depth", "pit_step"):
             if not getattr(self, name) > 0:
-                raise InputError(f"PtdOptions.{name} must be positive")
+                raise InputError("PtdOptions.{name} must be positive", name=name)
         if self.final_distance > self.max_distance:
             raise InputError("final_distance must not exceed max_distance")
         if self.max_iterations < 1 or self.min_points < 4:

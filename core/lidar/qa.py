@@ -166,7 +166,8 @@ def lidar_qa(x, y, z, classification, return_number, number_of_returns, *,
     QaResult
     """
     if not cell_size > 0:
-        raise InputError(f"Cell size must be > 0 (m), got {cell_size}; give e.g. 5.")
+        raise InputError("Cell size must be > 0 (m), got {cell_size}; give e.g. 5.",
+                         cell_size=cell_size)
     check_projected(x, y)
     cls = np.asarray(classification).astype(np.int64)
     rn = np.asarray(return_number).astype(np.int64)

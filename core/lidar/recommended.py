@@ -127,12 +127,12 @@ class RecommendedOptions:
         for name in ("cell_factor", "cell_min", "cell_max", "max_window", "slope_factor",
                      "slope_min", "slope_max", "threshold", "low_step", "low_noise_depth"):
             if not getattr(self, name) > 0:
-                raise InputError(f"RecommendedOptions.{name} must be positive.")
+                raise InputError("RecommendedOptions.{name} must be positive.", name=name)
         for name in ("cell", "slope"):
             v = getattr(self, name)
             if v is not None and not v > 0:
-                raise InputError(f"RecommendedOptions.{name} must be positive or None "
-                                 "(derived from the cloud).")
+                raise InputError("RecommendedOptions.{name} must be positive or None "
+                                 "(derived from the cloud).", name=name)
         if self.cell_min > self.cell_max:
             raise InputError("RecommendedOptions.cell_min must not exceed cell_max.")
         if self.min_points < 4 or self.refine < 0:

@@ -65,15 +65,18 @@ def _load_reference(reference, ground_classes, pd, mon: Monitor) -> np.ndarray:
     check_las_file(reference)
     info = las_info(reference)
     if info.count != len(pd):
-        raise InputError(f"The reference cloud {reference} has {info.count} points but the "
-                         f"input has {len(pd)}; the reference must hold the same points in "
-                         "the same order (or use the input's own classification).")
+        raise InputError("The reference cloud {reference} has {n_ref} points but the "
+                         "input has {n_input}; the reference must hold the same points in "
+                         "the same order (or use the input's own classification).",
+                         reference=reference,
+                         n_ref=info.count,
+                         n_input=len(pd))
     ref = read_las(reference, ["classification"], progress=mon.update, cancel=mon.cancelled)
     tol = max(max(info.scales[:2]), max(pd.info.scales[:2]) if pd.info else 0.0, 1e-6)
     if (np.abs(ref.x - pd.x).max() > tol) or (np.abs(ref.y - pd.y).max() > tol):
-        raise InputError(f"The reference cloud {reference} has as many points as the input "
+        raise InputError("The reference cloud {reference} has as many points as the input "
                          "but not the same coordinates in the same order; give the labelled "
-                         "copy of the same cloud.")
+                         "copy of the same cloud.", reference=reference)
     return ground_mask(ref["classification"], ground_classes)
 
 
@@ -86,10 +89,14 @@ def _check_grid(slopes, radii, hs, metric, mode):
     if len(slopes) * len(radii) * len(hs) > 5000:
         raise InputError("More than 5000 settings requested; narrow the lists.")
     if metric not in sf.SLOPE_METRICS:
-        raise InputError(f"metric must be one of {', '.join(sf.SLOPE_METRICS)}, got "
-                         f"{metric!r}.")
+        raise InputError("metric must be one of {choices}, got "
+                         "{metric!r}.",
+                         choices=', '.join(sf.SLOPE_METRICS),
+                         metric=metric)
     if mode not in sf.MODES:
-        raise InputError(f"mode must be one of {', '.join(sf.MODES)}, got {mode!r}.")
+        raise InputError("mode must be one of {choices}, got {mode!r}.",
+                         choices=', '.join(sf.MODES),
+                         mode=mode)
     return slopes, radii, hs
 
 
@@ -140,8 +147,8 @@ def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_C
     names = {"csv": "OUTPUT_CSV", "report": "OUTPUT_HTML", "cloud": "OUTPUT", **(names or {})}
     sel_opt = (selection or SelectionOptions(keep_noise_classes=False)).validate()
     if output and not str(output).lower().endswith(LAS_SUFFIXES):
-        raise InputError(f"The output {names['cloud']} must end in .las or .laz "
-                         f"(got {output}).")
+        raise InputError("The output {name} must end in .las or .laz "
+                         "(got {output}).", name=names['cloud'], output=output)
     slopes, radii, hs = _check_grid(slopes, radii, height_tolerances, metric, mode)
     roles = {k: os.fspath(v) for k, v in (("csv", csv_output), ("report", html_output),
                                           ("cloud", output)) if v}
@@ -151,9 +158,10 @@ def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_C
         pd = read_cloud(src, monitor=mon.sub(0.0, 0.05))
         ref = _load_reference(ref_in, ground_classes, pd, mon.sub(0.05, 0.1))
         if not ref.any():
-            raise InputError(f"The reference marks no point as ground (classes "
-                             f"{', '.join(map(str, ground_classes))}); check the reference "
-                             "or the ground classes.")
+            raise InputError("The reference marks no point as ground (classes "
+                             "{classes}); check the reference "
+                             "or the ground classes.",
+                             classes=', '.join(map(str, ground_classes)))
         sel = select_points(pd, **vars(sel_opt), progress=mon.sub(0.1, 0.15).update,
                             cancel=mon.cancelled)
         res = sf.threshold_sweep(pd.x, pd.y, pd.z, ref, slopes=slopes, radii=radii,

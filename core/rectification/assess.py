@@ -120,8 +120,11 @@ def _refined(gcps: GCPSet, kind: str, tolerance: float, min_gcps: Optional[int])
     fit = gcps.fit_mask
     idx = np.flatnonzero(fit)
     if min_gcps is not None and min_gcps < MIN_POINTS[kind]:
-        raise InputError(f"MIN_GCPS = {min_gcps} is below the {MIN_POINTS[kind]} GCPs the "
-                         f"{kind} transformation needs; raise it or leave it empty.")
+        raise InputError("MIN_GCPS = {min_gcps} is below the {need} GCPs the "
+                         "{kind} transformation needs; raise it or leave it empty.",
+                         min_gcps=min_gcps,
+                         need=MIN_POINTS[kind],
+                         kind=kind)
     keep, dropped = refine_gcps(kind, gcps.pixel[fit], gcps.map[fit],
                                 [gcps.ids[i] for i in idx], tolerance=tolerance,
                                 min_count=min_gcps)
@@ -175,18 +178,23 @@ def assess_gcps(gcps: GCPSet, *, kind: str = "polynomial2", order: Optional[int]
     """
     mon = Monitor(progress, cancel)
     if kind != RECOMMENDED and kind not in KINDS:
-        raise InputError(f"Unknown transformation {kind!r}; use one of "
-                         f"{', '.join(KINDS)} or {RECOMMENDED}.")
+        raise InputError("Unknown transformation {kind!r}; use one of "
+                         "{choices} or {recommended}.",
+                         kind=kind,
+                         choices=', '.join(KINDS),
+                         recommended=RECOMMENDED)
     if int(gcps.fit_mask.sum()) < 2:
-        raise InputError(f"Only {int(gcps.fit_mask.sum())} enabled GCPs (role 'gcp'); every "
-                         "transformation needs at least 2 (linear, Helmert) or 3.")
+        raise InputError("Only {n} enabled GCPs (role 'gcp'); every "
+                         "transformation needs at least 2 (linear, Helmert) or 3.",
+                         n=int(gcps.fit_mask.sum()))
     gr = affine_gr(gcps) if gr is None else float(gr)
     kinds = tuple(dict.fromkeys(list(kinds) + ([kind] if kind in KINDS else [])))
     requested = kind
     if kind == RECOMMENDED:
         first = compare_transforms(gcps, kinds=kinds, gr=gr, image_size=image_size)
         if first.recommended is None:
-            raise InputError("No transformation can be recommended: " + first.reason)
+            raise InputError("No transformation can be recommended: {reason}",
+                             reason=first.reason)
         kind = first.recommended
     mon.step(0.2)
     dropped, tol = [], None

@@ -54,14 +54,14 @@ def find_images(folder) -> List[tuple]:
     """
     folder = os.fspath(folder)
     if not os.path.isdir(folder):
-        raise InputError(f"INPUT_FOLDER: {folder} is not a folder.")
+        raise InputError("INPUT_FOLDER: {folder} is not a folder.", folder=folder)
     pairs = [(os.path.join(folder, n), os.path.join(folder, n + ".points"))
              for n in sorted(os.listdir(folder))
              if n.lower().endswith(IMAGE_EXTENSIONS)
              and os.path.isfile(os.path.join(folder, n + ".points"))]
     if not pairs:
-        raise InputError(f"No image with its Georeferencer .points file (image.tif + "
-                         f"image.tif.points) in {folder}.")
+        raise InputError("No image with its Georeferencer .points file (image.tif + "
+                         "image.tif.points) in {folder}.", folder=folder)
     return pairs
 
 

@@ -157,7 +157,7 @@ def compare_transforms(gcps: GCPSet, *, kinds: Sequence[str] = KINDS, gr: float,
         ``basis`` is 'check' with at least 3 check points, else 'loo'.
     """
     if not (gr is not None and np.isfinite(gr) and gr > 0):
-        raise InputError(f"GR (ground resolution) must be a positive number, got {gr!r}.")
+        raise InputError("GR (ground resolution) must be a positive number, got {gr!r}.", gr=gr)
     results = {k: _evaluate(k, gcps, gr, image_size) for k in kinds}
     basis = "check" if int(gcps.check_mask.sum()) >= 3 else "loo"
     rec, why = _recommend(results, basis)
@@ -181,8 +181,8 @@ def refine_gcps(kind: str, pixel_xy, map_xy, ids, *, tolerance: float,
     """
     pix, mp = np.asarray(pixel_xy, float), np.asarray(map_xy, float)
     if not (np.isfinite(tolerance) and tolerance > 0):
-        raise InputError(f"The refine tolerance must be a positive distance, got "
-                         f"{tolerance!r}.")
+        raise InputError("The refine tolerance must be a positive distance, got "
+                         "{tolerance!r}.", tolerance=tolerance)
     floor = MIN_POINTS[kind] + 2 if min_count is None else int(min_count)
     keep = np.ones(len(pix), bool)
     dropped = []

@@ -44,7 +44,9 @@ DEGENERATE = 1e-6
 def check_kind(kind: str) -> str:
     """Return ``kind`` if it is one of :data:`KINDS`, else raise a clear error."""
     if kind not in KINDS:
-        raise InputError(f"Unknown transformation {kind!r}; use one of {', '.join(KINDS)}.")
+        raise InputError("Unknown transformation {kind!r}; use one of {choices}.",
+                         kind=kind,
+                         choices=', '.join(KINDS))
     return kind
 
 
@@ -163,9 +165,9 @@ def fit_linear(pixel_xy, map_xy) -> AffineTransform:
     span = max(_spread(pix[:, 0]), _spread(pix[:, 1]), 1e-300)
     for axis, name in ((0, "column"), (1, "row")):
         if _spread(pix[:, axis]) <= DEGENERATE * span:
-            raise InputError(f"Linear transformation: all GCPs lie in one image {name}, so "
-                             f"the scale along it is undetermined; add GCPs at other "
-                             f"{name}s.")
+            raise InputError("Linear transformation: all GCPs lie in one image {name}, so "
+                             "the scale along it is undetermined; add GCPs at other "
+                             "{name}s.", name=name)
     sx, tx = np.polyfit(pix[:, 0], mp[:, 0], 1)
     sy, ty = np.polyfit(pix[:, 1], mp[:, 1], 1)
     return AffineTransform("linear", len(pix), matrix=np.array([[sx, 0.0], [0.0, sy]]),
@@ -350,8 +352,8 @@ def fit_tps(pixel_xy, map_xy) -> TpsTransform:
     try:
         return TpsTransform("tps", len(pix), fwd=_tps(pix, mp), inv=_tps(mp, pix))
     except np.linalg.LinAlgError as exc:
-        raise InputError(f"Thin-plate spline: singular system ({exc}); check for repeated "
-                         "or collinear GCPs.") from None
+        raise InputError("Thin-plate spline: singular system ({exc}); check for repeated "
+                         "or collinear GCPs.", exc=exc) from None
 
 
 # ---------------------------------------------------------------------- dispatch
@@ -384,8 +386,11 @@ def fit_transform(kind: str, pixel_xy, map_xy, *, weights=None,
     pix, mp = np.asarray(pixel_xy, float), np.asarray(map_xy, float)
     need = MIN_POINTS[kind]
     if len(pix) < need:
-        raise InputError(f"The {kind} transformation needs at least {need} GCPs; only "
-                         f"{len(pix)} given. Add GCPs or choose a simpler transformation.")
+        raise InputError("The {kind} transformation needs at least {need} GCPs; only "
+                         "{n} given. Add GCPs or choose a simpler transformation.",
+                         kind=kind,
+                         need=need,
+                         n=len(pix))
     if kind.startswith("polynomial"):
         try:
             model = fit_polynomial(pix, mp, order=int(kind[-1]), weights=weights,

@@ -277,9 +277,9 @@ def check_duplicates(ids: Sequence, x, y, *, tolerance: float = 0.001,
              for kind, members in groups[:limit]]
     more = f" and {len(groups) - limit} more" if len(groups) > limit else ""
     raise InputError(
-        "Duplicated check points (" + "; ".join(parts) + more + "). Each check point "
-        "must be counted once: remove or rename the duplicates (keep the observation you "
-        "trust) and run again.")
+        "Duplicated check points ({groups}{more}). Each check point must be counted once: "
+        "remove or rename the duplicates (keep the observation you trust) and run again.",
+        groups="; ".join(parts), more=more)
 
 
 def _groups(keys: np.ndarray):

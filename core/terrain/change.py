@@ -39,8 +39,8 @@ def lod95(sigma1: float, sigma2: float) -> float:
     """Return the level of detection at 95 %: ``1.96·√(σ₁² + σ₂²)`` (m)."""
     for name, s in (("sigma1", sigma1), ("sigma2", sigma2)):
         if not (s >= 0 and math.isfinite(s)):
-            raise InputError(f"{name} (vertical accuracy of an epoch) must be ≥ 0 m, got "
-                             f"{s}; give e.g. the RMSE of a DTM accuracy run.")
+            raise InputError("{name} (vertical accuracy of an epoch) must be ≥ 0 m, got "
+                             "{s}; give e.g. the RMSE of a DTM accuracy run.", name=name, s=s)
     return 1.96 * math.sqrt(sigma1 ** 2 + sigma2 ** 2)
 
 
@@ -101,8 +101,10 @@ def elevation_change(before: np.ndarray, after: np.ndarray, cell: float, *,
     a = np.asarray(before, float)
     b = np.asarray(after, float)
     if a.shape != b.shape:
-        raise InputError(f"The two epochs are on different grids ({a.shape} and {b.shape} "
-                         "cells); resample one onto the other's grid first.")
+        raise InputError("The two epochs are on different grids ({a_shape} and {b_shape} "
+                         "cells); resample one onto the other's grid first.",
+                         a_shape=a.shape,
+                         b_shape=b.shape)
     lod = lod95(sigma1, sigma2)
     diff = b - a
     min_cells = max(1, int(math.ceil(min_area / (cell * cell)))) if min_area > 0 \

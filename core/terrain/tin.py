@@ -187,10 +187,10 @@ def tin_grid(x, y, z, grid: GridSpec, *, max_edge: Optional[float] = None,
     """
     x, y, z = as_xyz(x, y, z, empty_error="No points to triangulate.")
     if x.size < 3:
-        raise InputError(f"A TIN needs at least three points, got {x.size}.")
+        raise InputError("A TIN needs at least three points, got {n}.", n=x.size)
     if max_edge is not None and not max_edge > 0:
-        raise InputError(f"max_edge must be > 0 (m), got {max_edge}; leave it empty for "
-                         "the automatic value or fill the gaps instead.")
+        raise InputError("max_edge must be > 0 (m), got {max_edge}; leave it empty for "
+                         "the automatic value or fill the gaps instead.", max_edge=max_edge)
     check_memory(grid, arrays=2)
     mon = Monitor(progress, cancel)
     mon.step(0.0)

@@ -1,0 +1,52 @@
+"""Core InputError messages reach the user in the QGIS interface language."""
+from __future__ import annotations
+
+import pickle
+
+import pytest
+from qgis.core import QgsProcessingException
+
+from geomatics_toolbox.core.errors import FSI, PDI, InputError
+from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+
+
+@pytest.fixture
+def arabic_ui(qgis_app):
+    """QGIS interface language Arabic (the locale override the plugin reads)."""
+    from qgis.core import QgsSettings
+    settings = QgsSettings()
+    old = (settings.value("locale/overrideFlag", False, type=bool),
+           settings.value("locale/userLocale", ""))
+    settings.setValue("locale/overrideFlag", True)
+    settings.setValue("locale/userLocale", "ar")
+    yield
+    settings.setValue("locale/overrideFlag", old[0])
+    settings.setValue("locale/userLocale", old[1])
+
+
+def test_input_error_is_english_template_translated_on_demand():
+    e = InputError("{path} holds no check points.", path="/data/cp.csv")
+    assert isinstance(e, ValueError) and str(e) == "/data/cp.csv holds no check points."
+    assert e.message("en") == str(e)
+    ar = e.message("ar")
+    assert ar == f"لا يحتوي {FSI}/data/cp.csv{PDI} على أي نقاط تحقق."
+    assert e.message("fa") == f"{FSI}/data/cp.csv{PDI} هیچ نقطهٔ کنترلی ندارد."
+    # untranslated text stays English; pickling (Dask workers) keeps the template
+    assert InputError("no such template {x}", x=1).message("ar") == "no such template 1"
+    back = pickle.loads(pickle.dumps(e))
+    assert back.message("ar") == ar and str(back) == str(e)
+
+
+def test_core_error_in_arabic_through_processing_run(qgis_processing, arabic_ui, tmp_path):
+    tile = generate_tile(extent=(60.0, 60.0), density=2.0, seed=3, n_buildings=1, n_halls=0)
+    laz = tmp_path / "tile.laz"
+    write_tile(tile, laz, crs="EPSG:32632")
+    dtm = qgis_processing.run("geomatics:idwdtm", {
+        "INPUT": str(laz), "CELL_SIZE": 2.0, "OUTPUT": str(tmp_path / "dtm.tif")})["OUTPUT"]
+    missing = tmp_path / "nothere.csv"
+    report = tmp_path / "acc.html"
+    with pytest.raises(QgsProcessingException) as info:
+        qgis_processing.run("geomatics:dtmaccuracy", {
+            "DTM": dtm, "CHECKPOINTS_CSV": str(missing), "OUTPUT_HTML": str(report)})
+    assert str(info.value) == f"ملف نقاط التحقق غير موجود: {FSI}{missing}{PDI}."
+    assert not report.exists()
