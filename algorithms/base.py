@@ -101,11 +101,11 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
         for cls in type(self).__mro__:
             if cls is GeomaticsAlgorithm:
                 break
-            out = QCoreApplication.translate(cls.__name__, text)
+            out = QCoreApplication.translate(cls.__name__, text)  # i18n: noop-list
             if out != text:
                 return out
         for context in ("GeomaticsAlgorithm", "@default"):
-            out = QCoreApplication.translate(context, text)
+            out = QCoreApplication.translate(context, text)  # i18n: noop-list
             if out != text:
                 return out
         return text

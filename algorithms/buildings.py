@@ -93,10 +93,10 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
             self.OUTPUT_HTML, self.tr("Building footprints report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
         self.add_report_language()
-        for name, label in (("N_BUILDINGS", "Buildings"),
-                            ("TOTAL_AREA", "Total footprint area (m²)"),
-                            ("TOTAL_VOLUME", "Total volume (m³)")):
-            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+        for name, label in (("N_BUILDINGS", self.tr("Buildings")),
+                            ("TOTAL_AREA", self.tr("Total footprint area (m²)")),
+                            ("TOTAL_VOLUME", self.tr("Total volume (m³)"))):
+            self.addOutput(QgsProcessingOutputNumber(name, label))
 
     def params(self, parameters, context) -> dict:
         cell = self.parameterAsDouble(parameters, self.CELL_SIZE, context)

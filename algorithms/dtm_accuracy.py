@@ -20,6 +20,7 @@ from qgis.core import (
     QgsProcessingParameterVectorDestination,
     QgsWkbTypes,
 )
+from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.io.points import read_checkpoints_csv, write_points_layer
 from ..core.io.raster import read_raster
@@ -31,18 +32,21 @@ from .base import GeomaticsAlgorithm
 from .helptext import build_help
 
 NUMBERS = (
-    ("N", "n", "Check points used"),
-    ("N_OUTSIDE", "n_outside", "Check points outside the DTM"),
-    ("N_NODATA", "n_nodata", "Check points on DTM nodata"),
-    ("ME", "me", "Mean error (m)"),
-    ("MAE", "mae", "Mean absolute error (m)"),
-    ("RMSE", "rmse", "RMSE (m)"),
-    ("STD", "std", "Standard deviation of the errors (m)"),
-    ("MAX_ABS_ERROR", "max_abs_error", "Maximum absolute error (m)"),
-    ("R", "r", "Pearson r"),
-    ("R2", "r2", "R²"),
-    ("NMAD", "nmad", "NMAD (m)"),
-    ("ACCURACY_95", "accuracy_95", "Vertical accuracy at 95 % = 1.96·RMSE (m)"),
+    ("N", "n", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Check points used")),
+    ("N_OUTSIDE", "n_outside", QT_TRANSLATE_NOOP("GeomaticsAlgorithm",
+                                                 "Check points outside the DTM")),
+    ("N_NODATA", "n_nodata", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Check points on DTM nodata")),
+    ("ME", "me", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Mean error (m)")),
+    ("MAE", "mae", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Mean absolute error (m)")),
+    ("RMSE", "rmse", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "RMSE (m)")),
+    ("STD", "std", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Standard deviation of the errors (m)")),
+    ("MAX_ABS_ERROR", "max_abs_error", QT_TRANSLATE_NOOP("GeomaticsAlgorithm",
+                                                         "Maximum absolute error (m)")),
+    ("R", "r", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Pearson r")),
+    ("R2", "r2", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "R²")),
+    ("NMAD", "nmad", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "NMAD (m)")),
+    ("ACCURACY_95", "accuracy_95", QT_TRANSLATE_NOOP("GeomaticsAlgorithm",
+                                                     "Vertical accuracy at 95 % = 1.96·RMSE (m)")),
 )
 
 
@@ -227,7 +231,7 @@ class DtmAccuracyAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
             optional=True, createByDefault=True))
         self.add_report_language()
         for name, _, label in NUMBERS:
-            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))  # i18n: noop-list
 
     # ------------------------------------------------------------------ run
     def input_files(self, parameters, context, dtm_path):

@@ -108,11 +108,11 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
             self.OUTPUT_HTML, self.tr("Elevation change report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
         self.add_report_language()
-        for name, label in (("LOD", "Level of detection LoD95 (m)"),
-                            ("FILL_VOLUME", "Fill volume above the LoD (m³)"),
-                            ("CUT_VOLUME", "Cut volume above the LoD (m³)"),
-                            ("N_REGIONS", "Change regions")):
-            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+        for name, label in (("LOD", self.tr("Level of detection LoD95 (m)")),
+                            ("FILL_VOLUME", self.tr("Fill volume above the LoD (m³)")),
+                            ("CUT_VOLUME", self.tr("Cut volume above the LoD (m³)")),
+                            ("N_REGIONS", self.tr("Change regions"))):
+            self.addOutput(QgsProcessingOutputNumber(name, label))
 
     def epochs(self, before, after, parameters, context, feedback):
         """Both surfaces on one grid: rasters as they are, clouds by TIN."""

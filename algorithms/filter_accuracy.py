@@ -6,6 +6,7 @@ from qgis.core import (
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterString,
 )
+from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.io.las import write_las_like
 from ..core.lidar import accuracy as core_fa
@@ -33,15 +34,19 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
     OUTPUT_HTML = "OUTPUT_HTML"
     ERROR_OUTPUT = "ERROR_OUTPUT"
 
-    OUTPUTS = (("a", "A", "reference ground → filtered ground"),
-               ("b", "B", "reference ground → filtered object (Type I)"),
-               ("c", "C", "reference object → filtered ground (Type II)"),
-               ("d", "D", "reference object → filtered object"),
-               ("n", "N", "points"),
-               ("type1", "TYPE1", "Type I error (%)"),
-               ("type2", "TYPE2", "Type II error (%)"),
-               ("total", "TOTAL", "Total error (%)"),
-               ("kappa", "KAPPA", "Cohen's kappa (%)"))
+    OUTPUTS = (("a", "A", QT_TRANSLATE_NOOP(
+                   "GeomaticsAlgorithm", "reference ground → filtered ground")),
+               ("b", "B", QT_TRANSLATE_NOOP(
+                   "GeomaticsAlgorithm", "reference ground → filtered object (Type I)")),
+               ("c", "C", QT_TRANSLATE_NOOP(
+                   "GeomaticsAlgorithm", "reference object → filtered ground (Type II)")),
+               ("d", "D", QT_TRANSLATE_NOOP(
+                   "GeomaticsAlgorithm", "reference object → filtered object")),
+               ("n", "N", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "points")),
+               ("type1", "TYPE1", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Type I error (%)")),
+               ("type2", "TYPE2", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Type II error (%)")),
+               ("total", "TOTAL", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Total error (%)")),
+               ("kappa", "KAPPA", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Cohen's kappa (%)")))
 
     def name(self):
         return "groundfilteraccuracy"
@@ -95,7 +100,8 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
                                        "1 Type I, 2 Type II)"),
             LAS_OUT_FILTER, optional=True, createByDefault=False))
         for _, out, label in self.OUTPUTS:
-            self.addOutput(QgsProcessingOutputNumber(out, f"{out}: {label}"))
+            self.addOutput(QgsProcessingOutputNumber(
+                out, f"{out}: {self.tr(label)}"))  # i18n: noop-list
 
     def process(self, parameters, context, feedback):
         src = self.las_input_path(parameters, context, self.INPUT)
@@ -123,7 +129,7 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
             cancel=cb["cancel"])
         acc = res.accuracy.as_dict()
         for key, out, label in self.OUTPUTS:
-            feedback.pushInfo(f"{out} ({label}): {acc[key]:.6g}")
+            feedback.pushInfo(f"{out} ({self.tr(label)}): {acc[key]:.6g}")  # i18n: noop-list
         with contract as out:
             if err_out:
                 write_las_like(src, out.path(self.ERROR_OUTPUT),

@@ -14,7 +14,7 @@ from qgis.core import (
 
 from ..core.rectification import batch, warp
 from .base import GeomaticsAlgorithm
-from .gcp_rectification import TRANSFORMATIONS, TransformationParams
+from .gcp_rectification import TRANSFORMATIONS, TransformationParams, resampling_options
 from .helptext import build_help
 
 
@@ -63,7 +63,7 @@ class RectifyBatchAlgorithm(TransformationParams, GeomaticsAlgorithm):
         self.add_transformation_params(default=8)
         self.add_gcp_crs_param()
         self.add(QgsProcessingParameterEnum(self.RESAMPLING, self.tr("Resampling"),
-                                            list(warp.RESAMPLING), defaultValue=0))
+                                            resampling_options(self.tr), defaultValue=0))
         self.add(QgsProcessingParameterFolderDestination(
             self.OUTPUT_FOLDER, self.tr("Folder of rectified images")))
         self.add(QgsProcessingParameterFileDestination(
@@ -73,8 +73,8 @@ class RectifyBatchAlgorithm(TransformationParams, GeomaticsAlgorithm):
             self.OUTPUT_HTML, self.tr("Batch rectification report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=True))
         self.add_report_language()
-        self.addOutput(QgsProcessingOutputNumber("N_IMAGES", "Images found"))
-        self.addOutput(QgsProcessingOutputNumber("N_RECTIFIED", "Images rectified"))
+        self.addOutput(QgsProcessingOutputNumber("N_IMAGES", self.tr("Images found")))
+        self.addOutput(QgsProcessingOutputNumber("N_RECTIFIED", self.tr("Images rectified")))
 
     def process(self, parameters, context, feedback):
         folder = self.parameterAsFile(parameters, self.INPUT_FOLDER, context)

@@ -25,6 +25,7 @@ from qgis.core import (
     QgsProcessingParameterRasterLayer,
     QgsWkbTypes,
 )
+from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.io import gcp as gcp_io
 from ..core.rectification import assess, export, report, warp
@@ -33,23 +34,42 @@ from .helptext import build_help
 
 PIXEL_ORIGINS = ("corner", "center")
 
+#: RESAMPLING options: GDAL's method name after a translated label.
+RESAMPLING_LABELS = {
+    "near": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Nearest neighbour (near)"),
+    "bilinear": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Bilinear (bilinear)"),
+    "cubic": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Cubic convolution (cubic)"),
+    "cubicspline": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Cubic spline (cubicspline)"),
+    "lanczos": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Lanczos windowed sinc (lanczos)"),
+    "average": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Average (average)"),
+    "mode": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Most frequent value (mode)"),
+}
+
+
+def resampling_options(tr) -> list:
+    """RESAMPLING enum options in ``warp.RESAMPLING`` order, translated by ``tr``."""
+    return [tr(RESAMPLING_LABELS[k]) for k in warp.RESAMPLING]  # i18n: noop-list
+
 NUMBERS = (
-    ("RMS_X", "RMS_x (map units, divisor n)"),
-    ("RMS_Y", "RMS_y (map units, divisor n)"),
-    ("RMS_T", "RMS_T (map units, divisor n)"),
-    ("RMS_T_QGIS", "RMS_T with divisor n − N (QGIS Georeferencer)"),
-    ("GR", "Ground resolution GR (map units/pixel)"),
-    ("SCALE", "Map scale number S = 20000·GR"),
-    ("N_GCP", "GCPs used in the fit"),
-    ("REDUNDANCY", "Redundancy n − N"),
-    ("N_WITHIN", "Points with RMS_i ≤ RMS_T"),
-    ("LOO_RMS_T", "Leave-one-out RMS_T (map units)"),
-    ("CHECK_RMS_T", "Check-point RMS_T (map units)"),
-    ("N_CHECK", "Independent check points"),
-    ("RECOMMENDED_ORDER", "Recommended order (0 = none)"),
-    ("ACCEPTED", "Accepted by criteria C4–C6 (1/0)"),
-    ("N_DROPPED", "GCPs dropped by the refinement"),
-    ("HONEST_RMS_T", "Check-point (else leave-one-out) RMS_T of the transformation used"),
+    ("RMS_X", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "RMS_x (map units, divisor n)")),
+    ("RMS_Y", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "RMS_y (map units, divisor n)")),
+    ("RMS_T", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "RMS_T (map units, divisor n)")),
+    ("RMS_T_QGIS", QT_TRANSLATE_NOOP("GeomaticsAlgorithm",
+                                     "RMS_T with divisor n − N (QGIS Georeferencer)")),
+    ("GR", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Ground resolution GR (map units/pixel)")),
+    ("SCALE", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Map scale number S = 20000·GR")),
+    ("N_GCP", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "GCPs used in the fit")),
+    ("REDUNDANCY", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Redundancy n − N")),
+    ("N_WITHIN", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Points with RMS_i ≤ RMS_T")),
+    ("LOO_RMS_T", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Leave-one-out RMS_T (map units)")),
+    ("CHECK_RMS_T", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Check-point RMS_T (map units)")),
+    ("N_CHECK", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Independent check points")),
+    ("RECOMMENDED_ORDER", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Recommended order (0 = none)")),
+    ("ACCEPTED", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Accepted by criteria C4–C6 (1/0)")),
+    ("N_DROPPED", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "GCPs dropped by the refinement")),
+    ("HONEST_RMS_T", QT_TRANSLATE_NOOP(
+        "GeomaticsAlgorithm",
+        "Check-point (else leave-one-out) RMS_T of the transformation used")),
 )
 
 #: TRANSFORMATION options: index -> core kind (None: polynomial of order ORDER)
@@ -168,11 +188,11 @@ class _GcpBase(TransformationParams, GeomaticsAlgorithm):
     def add_numbers_outputs(self):
         """Declare the summary numbers and the transformation names as outputs."""
         for name, label in NUMBERS:
-            self.addOutput(QgsProcessingOutputNumber(name, label))
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))  # i18n: noop-list
         self.addOutput(QgsProcessingOutputString("TRANSFORMATION_USED",
-                                                 "Transformation used"))
+                                                 self.tr("Transformation used")))
         self.addOutput(QgsProcessingOutputString("RECOMMENDED_TRANSFORMATION",
-                                                 "Recommended transformation"))
+                                                 self.tr("Recommended transformation")))
 
     def kind(self, parameters, context) -> str:
         """Return the core transformation kind chosen by TRANSFORMATION and ORDER."""
@@ -417,7 +437,7 @@ class RectifyGcpAlgorithm(_GcpBase):
         self.add(QgsProcessingParameterCrs(self.TARGET_CRS, self.tr(
             "Target CRS [default: the GCP CRS]"), optional=True))
         self.add(QgsProcessingParameterEnum(self.RESAMPLING, self.tr("Resampling"),
-                                            list(warp.RESAMPLING), defaultValue=0))
+                                            resampling_options(self.tr), defaultValue=0))
         self.add_number(self.RESOLUTION, self.tr("Output resolution (target CRS units) "
                                                  "[default: GR]"), minimum=0.0, optional=True)
         self.add_number(self.NODATA, self.tr("Output nodata value"), optional=True,
@@ -528,10 +548,10 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
         self.add_report_language()
         self.add_numbers_outputs()
         for t in (1, 2, 3):
-            self.addOutput(QgsProcessingOutputNumber(f"RMS_T_ORDER{t}",
-                                                     f"RMS_T of order {t} (map units)"))
-            self.addOutput(QgsProcessingOutputNumber(f"LOO_RMS_T_ORDER{t}",
-                                                     f"Leave-one-out RMS_T of order {t}"))
+            self.addOutput(QgsProcessingOutputNumber(
+                f"RMS_T_ORDER{t}", self.tr("RMS_T of order {} (map units)").format(t)))
+            self.addOutput(QgsProcessingOutputNumber(
+                f"LOO_RMS_T_ORDER{t}", self.tr("Leave-one-out RMS_T of order {}").format(t)))
 
     def process(self, parameters, context, feedback):
         raster = self.raster_path(parameters, context, required=False)

@@ -141,7 +141,7 @@ class GroundFilterAlgorithm(_GroundCommon):
             "<li><b>Remove low outliers first</b> (NOISE, advanced, default no): the "
             "filter finds low noise itself; yes runs the shared pre-filter first "
             "(NOISE_RADIUS m, default 5; NOISE_THRESHOLD m, default 1).</li>")
-            + self.tr(_OUTPUT_HELP) + self.tr(
+            + self.tr(_OUTPUT_HELP) + self.tr(  # i18n: noop-list
             "<p>References: Pingel, T. J., Clarke, K. C. &amp; McBride, W. A. (2013), ISPRS "
             "J. Photogramm. Remote Sens. 77, 21–30; Zhang, K. et al. (2003), IEEE TGRS "
             "41(4), 872–882.</p>"))
@@ -240,7 +240,7 @@ class PtdGroundFilterAlgorithm(_GroundCommon):
             "each parcel skipped before picking its seed.</li>"
             "<li><b>Remove low outliers first</b> (NOISE, default yes; NOISE_RADIUS m, 5; "
             "NOISE_THRESHOLD m, 1).</li>")
-            + self.tr(_OUTPUT_HELP) + self.tr(
+            + self.tr(_OUTPUT_HELP) + self.tr(  # i18n: noop-list
             "<p>Reference: Axelsson, P. (2000). DEM generation from laser scanner data "
             "using adaptive TIN models. IAPRS XXXIII-B4, 110–117.</p>"))
 

@@ -35,7 +35,7 @@ _WORDS = (
 
 
 def _tr(text: str) -> str:
-    return QCoreApplication.translate("GeomaticsAlgorithm", text)
+    return QCoreApplication.translate("GeomaticsAlgorithm", text)  # i18n: noop-list
 
 
 def _ltr(text: str) -> str:

@@ -71,14 +71,14 @@ class LidarQaAlgorithm(GeomaticsAlgorithm):
             self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
         self.add_report_language()
-        for name, label in (("DENSITY", "Density of all returns (pts/m²)"),
-                            ("GROUND_DENSITY", "Ground density (pts/m²)"),
-                            ("GAP_SHARE", "Share of cells without ground"),
-                            ("DUPLICATES", "Duplicate points"),
-                            ("NOISE_SHARE", "Noise share"),
-                            ("GROUND_WINDOW", "Ground filter window (m)"),
-                            ("DTM_CELL", "Recommended DTM cell (m)")):
-            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+        for name, label in (("DENSITY", self.tr("Density of all returns (pts/m²)")),
+                            ("GROUND_DENSITY", self.tr("Ground density (pts/m²)")),
+                            ("GAP_SHARE", self.tr("Share of cells without ground")),
+                            ("DUPLICATES", self.tr("Duplicate points")),
+                            ("NOISE_SHARE", self.tr("Noise share")),
+                            ("GROUND_WINDOW", self.tr("Ground filter window (m)")),
+                            ("DTM_CELL", self.tr("Recommended DTM cell (m)"))):
+            self.addOutput(QgsProcessingOutputNumber(name, label))
 
     def process(self, parameters, context, feedback):
         path = self.las_input_path(parameters, context, self.INPUT)

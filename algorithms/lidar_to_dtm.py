@@ -148,7 +148,7 @@ class LidarToDtmAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
         self.add_report_language()
         self.addOutput(QgsProcessingOutputNumber("N_GROUND", self.tr("Ground points")))
         for name, _, label in NUMBERS:
-            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))  # i18n: noop-list
 
     # ------------------------------------------------------------------ checks
 

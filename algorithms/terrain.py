@@ -43,6 +43,15 @@ LAS_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
 
 
 
+#: VARIOGRAM options (PyKrige's model name after a translated label)
+VARIOGRAM_LABELS = {
+    "linear": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Linear (linear)"),
+    "power": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Power (power)"),
+    "gaussian": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Gaussian (gaussian)"),
+    "spherical": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Spherical (spherical)"),
+    "exponential": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Exponential (exponential)"),
+}
+
 #: ASPRS LAS 1.4 R15 classes 0–22 (index = class code), for the class pickers.
 ASPRS_CLASSES = (
     QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Created, never classified"),
@@ -115,8 +124,10 @@ class _GridAlgorithm(GeomaticsAlgorithm):
 
         Old comma text such as ``"2,8"`` is still accepted (``qgis_process``).
         """
+        options = [f"{c} — {self.tr(n)}"  # i18n: noop-list
+                   for c, n in enumerate(ASPRS_CLASSES)]
         return QgsProcessingParameterEnum(
-            name, label, [f"{c} — {self.tr(n)}" for c, n in enumerate(ASPRS_CLASSES)],
+            name, label, options,
             allowMultiple=True, defaultValue=list(default), optional=True)
 
     def classes(self, parameters, name, context):
@@ -287,10 +298,10 @@ class IdwDtmAlgorithm(_GridAlgorithm):
         self.add_gap_params()
         self.add(QgsProcessingParameterRasterDestination(self.OUTPUT, self.tr("IDW DTM")))
         self.add_html()
-        for name, label in (("N_POINTS", "Points interpolated"),
-                            ("VALID_CELLS", "Cells with a value"),
-                            ("NODATA_CELLS", "Nodata cells")):
-            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+        for name, label in (("N_POINTS", self.tr("Points interpolated")),
+                            ("VALID_CELLS", self.tr("Cells with a value")),
+                            ("NODATA_CELLS", self.tr("Nodata cells"))):
+            self.addOutput(QgsProcessingOutputNumber(name, label))
 
     def process(self, parameters, context, feedback):
         t0 = time.time()
@@ -418,7 +429,8 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
             self.KRIGING_TYPE, self.tr("Kriging type"),
             [self.tr("Ordinary"), self.tr("Universal (linear drift)")], defaultValue=0))
         self.add(QgsProcessingParameterEnum(
-            self.VARIOGRAM, self.tr("Variogram model"), list(core_kriging.MODELS),
+            self.VARIOGRAM, self.tr("Variogram model"),
+            [self.tr(VARIOGRAM_LABELS[m]) for m in core_kriging.MODELS],  # i18n: noop-list
             defaultValue=core_kriging.MODELS.index("spherical")))
         self.add_number(self.VARIOGRAM_NUGGET, self.tr("Variogram nugget (m², empty = fit)"),
                         None, minimum=0.0, optional=True)
@@ -460,12 +472,14 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
             self.OUTPUT_VARIANCE, self.tr("Kriging variance"), optional=True,
             createByDefault=True))
         self.add_html()
-        for name, label in (("NUGGET", "Nugget"), ("SILL", "Sill"), ("RANGE", "Range"),
-                            ("N_POINTS", "Points kriged"), ("VALID_CELLS", "Cells with a value"),
-                            ("CV_ME", "Cross-validation mean error"),
-                            ("CV_RMSE", "Cross-validation RMSE"),
-                            ("CV_MSE", "Cross-validation mean standardised error")):
-            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+        for name, label in (("NUGGET", self.tr("Nugget")), ("SILL", self.tr("Sill")),
+                            ("RANGE", self.tr("Range")),
+                            ("N_POINTS", self.tr("Points kriged")),
+                            ("VALID_CELLS", self.tr("Cells with a value")),
+                            ("CV_ME", self.tr("Cross-validation mean error")),
+                            ("CV_RMSE", self.tr("Cross-validation RMSE")),
+                            ("CV_MSE", self.tr("Cross-validation mean standardised error"))):
+            self.addOutput(QgsProcessingOutputNumber(name, label))
 
     def process(self, parameters, context, feedback):
         t0 = time.time()
@@ -597,9 +611,9 @@ class DsmAlgorithm(_GridAlgorithm):
             self.OUTPUT_NDSM, self.tr("nDSM / canopy height model"), optional=True,
             createByDefault=False))
         self.add_html()
-        for name, label in (("VALID_CELLS", "DSM cells with a value"),
-                            ("NDSM_MAX", "Maximum nDSM height")):
-            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+        for name, label in (("VALID_CELLS", self.tr("DSM cells with a value")),
+                            ("NDSM_MAX", self.tr("Maximum nDSM height"))):
+            self.addOutput(QgsProcessingOutputNumber(name, label))
 
     @staticmethod
     def check_cloud_projected(info, crs):

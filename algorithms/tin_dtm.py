@@ -64,11 +64,11 @@ class TinDtmAlgorithm(_GridAlgorithm):
         self.add(QgsProcessingParameterRasterDestination(self.OUTPUT, self.tr("TIN DTM")))
         self.add_html()
         self.add_report_language()
-        for name, label in (("N_POINTS", "Points triangulated"),
-                            ("N_TRIANGLES", "Triangles"),
-                            ("VALID_CELLS", "Cells with a value"),
-                            ("NODATA_CELLS", "Nodata cells")):
-            self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))
+        for name, label in (("N_POINTS", self.tr("Points triangulated")),
+                            ("N_TRIANGLES", self.tr("Triangles")),
+                            ("VALID_CELLS", self.tr("Cells with a value")),
+                            ("NODATA_CELLS", self.tr("Nodata cells"))):
+            self.addOutput(QgsProcessingOutputNumber(name, label))
 
     def process(self, parameters, context, feedback):
         path = self.parameterAsFile(parameters, self.INPUT, context)

@@ -194,6 +194,18 @@
             <source>Building footprints report</source>
             <translation>تقرير مساقط المباني</translation>
         </message>
+        <message>
+            <source>Buildings</source>
+            <translation>المباني</translation>
+        </message>
+        <message>
+            <source>Total footprint area (m²)</source>
+            <translation>إجمالي مساحة المساقط (م²)</translation>
+        </message>
+        <message>
+            <source>Total volume (m³)</source>
+            <translation>الحجم الإجمالي (م³)</translation>
+        </message>
     </context>
     <context>
         <name>CatalogAlgorithm</name>
@@ -475,6 +487,14 @@
             <source>Needs a DTM.</source>
             <translation>يتطلّب نموذج تضاريس رقميًا (DTM).</translation>
         </message>
+        <message>
+            <source>DSM cells with a value</source>
+            <translation>خلايا نموذج السطح ذات القيمة</translation>
+        </message>
+        <message>
+            <source>Maximum nDSM height</source>
+            <translation>أقصى ارتفاع في نموذج السطح المُطبَّع</translation>
+        </message>
     </context>
     <context>
         <name>DtmAccuracyAlgorithm</name>
@@ -621,6 +641,22 @@
             <source>Elevation change report</source>
             <translation>تقرير تغيّر الارتفاع</translation>
         </message>
+        <message>
+            <source>Level of detection LoD95 (m)</source>
+            <translation>حد الكشف LoD95 (م)</translation>
+        </message>
+        <message>
+            <source>Fill volume above the LoD (m³)</source>
+            <translation>حجم الردم فوق حد الكشف (م³)</translation>
+        </message>
+        <message>
+            <source>Cut volume above the LoD (m³)</source>
+            <translation>حجم الحفر فوق حد الكشف (م³)</translation>
+        </message>
+        <message>
+            <source>Change regions</source>
+            <translation>مناطق التغيّر</translation>
+        </message>
     </context>
     <context>
         <name>GcpAccuracyReportAlgorithm</name>
@@ -671,6 +707,14 @@
         <message>
             <source>GCP accuracy report as JSON</source>
             <translation>تقرير دقة نقاط الضبط الأرضي بصيغة JSON</translation>
+        </message>
+        <message>
+            <source>RMS_T of order {} (map units)</source>
+            <translation>RMS_T للرتبة {} (وحدات الخريطة)</translation>
+        </message>
+        <message>
+            <source>Leave-one-out RMS_T of order {}</source>
+            <translation>RMS_T بطريقة ترك واحدة للرتبة {}</translation>
         </message>
     </context>
     <context>
@@ -870,6 +914,202 @@
         <message>
             <source>no</source>
             <translation>لا</translation>
+        </message>
+        <message>
+            <source>Check points used</source>
+            <translation>نقاط التحقق المستخدمة</translation>
+        </message>
+        <message>
+            <source>Check points outside the DTM</source>
+            <translation>نقاط التحقق خارج نموذج التضاريس</translation>
+        </message>
+        <message>
+            <source>Check points on DTM nodata</source>
+            <translation>نقاط التحقق على خلايا بلا بيانات في نموذج التضاريس</translation>
+        </message>
+        <message>
+            <source>Mean error (m)</source>
+            <translation>متوسط الخطأ (م)</translation>
+        </message>
+        <message>
+            <source>Mean absolute error (m)</source>
+            <translation>متوسط الخطأ المطلق (م)</translation>
+        </message>
+        <message>
+            <source>RMSE (m)</source>
+            <translation>جذر متوسط مربع الخطأ RMSE (م)</translation>
+        </message>
+        <message>
+            <source>Standard deviation of the errors (m)</source>
+            <translation>الانحراف المعياري للأخطاء (م)</translation>
+        </message>
+        <message>
+            <source>Maximum absolute error (m)</source>
+            <translation>أقصى خطأ مطلق (م)</translation>
+        </message>
+        <message>
+            <source>Pearson r</source>
+            <translation>معامل ارتباط بيرسون r</translation>
+        </message>
+        <message>
+            <source>R²</source>
+            <translation>معامل التحديد R²</translation>
+        </message>
+        <message>
+            <source>NMAD (m)</source>
+            <translation>الانحراف المطلق الوسيط المُطبَّع NMAD (م)</translation>
+        </message>
+        <message>
+            <source>Vertical accuracy at 95 % = 1.96·RMSE (m)</source>
+            <translation>الدقة الرأسية عند 95 % = 1.96·RMSE (م)</translation>
+        </message>
+        <message>
+            <source>reference ground → filtered ground</source>
+            <translation>أرض في المرجع ← أرض بعد الترشيح</translation>
+        </message>
+        <message>
+            <source>reference ground → filtered object (Type I)</source>
+            <translation>أرض في المرجع ← جسم بعد الترشيح (النوع الأول)</translation>
+        </message>
+        <message>
+            <source>reference object → filtered ground (Type II)</source>
+            <translation>جسم في المرجع ← أرض بعد الترشيح (النوع الثاني)</translation>
+        </message>
+        <message>
+            <source>reference object → filtered object</source>
+            <translation>جسم في المرجع ← جسم بعد الترشيح</translation>
+        </message>
+        <message>
+            <source>points</source>
+            <translation>عدد النقاط</translation>
+        </message>
+        <message>
+            <source>Type I error (%)</source>
+            <translation>خطأ النوع الأول (٪)</translation>
+        </message>
+        <message>
+            <source>Type II error (%)</source>
+            <translation>خطأ النوع الثاني (٪)</translation>
+        </message>
+        <message>
+            <source>Total error (%)</source>
+            <translation>الخطأ الإجمالي (٪)</translation>
+        </message>
+        <message>
+            <source>Cohen's kappa (%)</source>
+            <translation>معامل كابا لكوهين (%)</translation>
+        </message>
+        <message>
+            <source>Nearest neighbour (near)</source>
+            <translation>أقرب جار (near)</translation>
+        </message>
+        <message>
+            <source>Bilinear (bilinear)</source>
+            <translation>ثنائي الخطية (bilinear)</translation>
+        </message>
+        <message>
+            <source>Cubic convolution (cubic)</source>
+            <translation>الالتفاف التكعيبي (cubic)</translation>
+        </message>
+        <message>
+            <source>Cubic spline (cubicspline)</source>
+            <translation>الشريحة التكعيبية (cubicspline)</translation>
+        </message>
+        <message>
+            <source>Lanczos windowed sinc (lanczos)</source>
+            <translation>دالة sinc المُنوفذة لـ Lanczos (lanczos)</translation>
+        </message>
+        <message>
+            <source>Average (average)</source>
+            <translation>المتوسط (average)</translation>
+        </message>
+        <message>
+            <source>Most frequent value (mode)</source>
+            <translation>القيمة الأكثر تكرارًا (mode)</translation>
+        </message>
+        <message>
+            <source>RMS_x (map units, divisor n)</source>
+            <translation>RMS_x (وحدات الخريطة، المقسوم عليه n)</translation>
+        </message>
+        <message>
+            <source>RMS_y (map units, divisor n)</source>
+            <translation>RMS_y (وحدات الخريطة، المقسوم عليه n)</translation>
+        </message>
+        <message>
+            <source>RMS_T (map units, divisor n)</source>
+            <translation>RMS_T (وحدات الخريطة، المقسوم عليه n)</translation>
+        </message>
+        <message>
+            <source>RMS_T with divisor n − N (QGIS Georeferencer)</source>
+            <translation>RMS_T بالمقسوم عليه n − N (مُرجِع QGIS الجغرافي)</translation>
+        </message>
+        <message>
+            <source>Ground resolution GR (map units/pixel)</source>
+            <translation>الدقة الأرضية GR (وحدات الخريطة/بكسل)</translation>
+        </message>
+        <message>
+            <source>Map scale number S = 20000·GR</source>
+            <translation>رقم مقياس الخريطة S = 20000·GR</translation>
+        </message>
+        <message>
+            <source>GCPs used in the fit</source>
+            <translation>نقاط الضبط المستخدمة في المواءمة</translation>
+        </message>
+        <message>
+            <source>Redundancy n − N</source>
+            <translation>درجة الفائض n − N</translation>
+        </message>
+        <message>
+            <source>Points with RMS_i ≤ RMS_T</source>
+            <translation>النقاط ذات RMS_i ≤ RMS_T</translation>
+        </message>
+        <message>
+            <source>Leave-one-out RMS_T (map units)</source>
+            <translation>RMS_T بطريقة ترك واحدة (وحدات الخريطة)</translation>
+        </message>
+        <message>
+            <source>Check-point RMS_T (map units)</source>
+            <translation>RMS_T لنقاط التحقق (وحدات الخريطة)</translation>
+        </message>
+        <message>
+            <source>Independent check points</source>
+            <translation>نقاط التحقق المستقلة</translation>
+        </message>
+        <message>
+            <source>Recommended order (0 = none)</source>
+            <translation>الرتبة المُوصى بها (0 = لا شيء)</translation>
+        </message>
+        <message>
+            <source>Accepted by criteria C4–C6 (1/0)</source>
+            <translation>مقبول وفق المعايير C4–C6 (1/0)</translation>
+        </message>
+        <message>
+            <source>GCPs dropped by the refinement</source>
+            <translation>النقاط المحذوفة بالتنقيح</translation>
+        </message>
+        <message>
+            <source>Check-point (else leave-one-out) RMS_T of the transformation used</source>
+            <translation>RMS_T لنقاط التحقق (وإلا فبطريقة ترك واحدة) للتحويل المستخدم</translation>
+        </message>
+        <message>
+            <source>Linear (linear)</source>
+            <translation>خطي (linear)</translation>
+        </message>
+        <message>
+            <source>Power (power)</source>
+            <translation>أُسّية القوة (power)</translation>
+        </message>
+        <message>
+            <source>Gaussian (gaussian)</source>
+            <translation>غاوسي (gaussian)</translation>
+        </message>
+        <message>
+            <source>Spherical (spherical)</source>
+            <translation>كروي (spherical)</translation>
+        </message>
+        <message>
+            <source>Exponential (exponential)</source>
+            <translation>أُسّي (exponential)</translation>
         </message>
     </context>
     <context>
@@ -1253,6 +1493,18 @@
             <source>Cells with fewer points within the search radius are nodata.</source>
             <translation>الخلايا التي تقل نقاطها ضمن نصف قطر البحث عن هذا العدد تُترك بلا بيانات.</translation>
         </message>
+        <message>
+            <source>Points interpolated</source>
+            <translation>النقاط المُستوفاة</translation>
+        </message>
+        <message>
+            <source>Cells with a value</source>
+            <translation>خلايا ذات قيمة</translation>
+        </message>
+        <message>
+            <source>Nodata cells</source>
+            <translation>خلايا بلا بيانات</translation>
+        </message>
     </context>
     <context>
         <name>KrigingDtmAlgorithm</name>
@@ -1388,6 +1640,38 @@
             <source>In m², or in m as a standard deviation.</source>
             <translation>بوحدة m²، أو بوحدة m كانحراف معياري.</translation>
         </message>
+        <message>
+            <source>Nugget</source>
+            <translation>الأثر الكتلي (Nugget)</translation>
+        </message>
+        <message>
+            <source>Sill</source>
+            <translation>العتبة (Sill)</translation>
+        </message>
+        <message>
+            <source>Range</source>
+            <translation>المدى</translation>
+        </message>
+        <message>
+            <source>Points kriged</source>
+            <translation>النقاط المستخدمة في الكريجينغ</translation>
+        </message>
+        <message>
+            <source>Cells with a value</source>
+            <translation>خلايا ذات قيمة</translation>
+        </message>
+        <message>
+            <source>Cross-validation mean error</source>
+            <translation>متوسط الخطأ في التحقق المتقاطع</translation>
+        </message>
+        <message>
+            <source>Cross-validation RMSE</source>
+            <translation>RMSE للتحقق المتقاطع</translation>
+        </message>
+        <message>
+            <source>Cross-validation mean standardised error</source>
+            <translation>متوسط الخطأ المعياري في التحقق المتقاطع</translation>
+        </message>
     </context>
     <context>
         <name>LidarQaAlgorithm</name>
@@ -1442,6 +1726,34 @@
         <message>
             <source>Point density and quality report</source>
             <translation>تقرير كثافة النقاط وجودتها</translation>
+        </message>
+        <message>
+            <source>Density of all returns (pts/m²)</source>
+            <translation>كثافة كل الانعكاسات (نقطة/م²)</translation>
+        </message>
+        <message>
+            <source>Ground density (pts/m²)</source>
+            <translation>كثافة نقاط الأرض (نقطة/م²)</translation>
+        </message>
+        <message>
+            <source>Share of cells without ground</source>
+            <translation>نسبة الخلايا بلا أرض</translation>
+        </message>
+        <message>
+            <source>Duplicate points</source>
+            <translation>النقاط المكررة</translation>
+        </message>
+        <message>
+            <source>Noise share</source>
+            <translation>نسبة الضوضاء</translation>
+        </message>
+        <message>
+            <source>Ground filter window (m)</source>
+            <translation>نافذة مرشّح الأرض (م)</translation>
+        </message>
+        <message>
+            <source>Recommended DTM cell (m)</source>
+            <translation>خلية نموذج التضاريس الموصى بها (م)</translation>
         </message>
     </context>
     <context>
@@ -1949,6 +2261,14 @@
             <source>Batch rectification report</source>
             <translation>تقرير التصحيح الدفعي</translation>
         </message>
+        <message>
+            <source>Images found</source>
+            <translation>الصور التي عُثر عليها</translation>
+        </message>
+        <message>
+            <source>Images rectified</source>
+            <translation>الصور المصحّحة</translation>
+        </message>
     </context>
     <context>
         <name>RectifyGcpAlgorithm</name>
@@ -2289,6 +2609,22 @@
             <source>Keeps every triangle, bridging gaps inside the convex hull with flat facets.</source>
             <translation>يُبقي كل المثلثات، فيجسر الفجوات داخل الغلاف المحدّب بأوجه مستوية.</translation>
         </message>
+        <message>
+            <source>Points triangulated</source>
+            <translation>النقاط المثلّثة</translation>
+        </message>
+        <message>
+            <source>Triangles</source>
+            <translation>المثلثات</translation>
+        </message>
+        <message>
+            <source>Cells with a value</source>
+            <translation>خلايا ذات قيمة</translation>
+        </message>
+        <message>
+            <source>Nodata cells</source>
+            <translation>خلايا بلا بيانات</translation>
+        </message>
     </context>
     <context>
         <name>TransformationParams</name>
@@ -2470,6 +2806,14 @@
         <message>
             <source>Sets the map scale S = 20000·GR and the tolerance band 4·GR to 6·GR of the criteria (Tishreen Univ. J. Eng. Sci. 38(2), 2016).</source>
             <translation>يحدّد مقياس الخريطة S = 20000·GR ونطاق السماحية من 4·GR إلى 6·GR في المعايير (مجلة جامعة تشرين للعلوم الهندسية 38(2)، 2016).</translation>
+        </message>
+        <message>
+            <source>Transformation used</source>
+            <translation>التحويل المستخدم</translation>
+        </message>
+        <message>
+            <source>Recommended transformation</source>
+            <translation>التحويل المُوصى به</translation>
         </message>
     </context>
     <context>

@@ -194,6 +194,18 @@
             <source>Building footprints report</source>
             <translation>گزارش ردپای ساختمان‌ها</translation>
         </message>
+        <message>
+            <source>Buildings</source>
+            <translation>ساختمان‌ها</translation>
+        </message>
+        <message>
+            <source>Total footprint area (m²)</source>
+            <translation>مساحت کل ردپاها (مترمربع)</translation>
+        </message>
+        <message>
+            <source>Total volume (m³)</source>
+            <translation>حجم کل (مترمکعب)</translation>
+        </message>
     </context>
     <context>
         <name>CatalogAlgorithm</name>
@@ -475,6 +487,14 @@
             <source>Needs a DTM.</source>
             <translation>به DTM نیاز دارد.</translation>
         </message>
+        <message>
+            <source>DSM cells with a value</source>
+            <translation>سلول‌های دارای مقدار در DSM</translation>
+        </message>
+        <message>
+            <source>Maximum nDSM height</source>
+            <translation>بیشینهٔ ارتفاع nDSM</translation>
+        </message>
     </context>
     <context>
         <name>DtmAccuracyAlgorithm</name>
@@ -621,6 +641,22 @@
             <source>Elevation change report</source>
             <translation>گزارش تغییر ارتفاع</translation>
         </message>
+        <message>
+            <source>Level of detection LoD95 (m)</source>
+            <translation>حد آشکارسازی LoD95 (متر)</translation>
+        </message>
+        <message>
+            <source>Fill volume above the LoD (m³)</source>
+            <translation>حجم خاک‌ریزی بالاتر از حد آشکارسازی (مترمکعب)</translation>
+        </message>
+        <message>
+            <source>Cut volume above the LoD (m³)</source>
+            <translation>حجم خاک‌برداری بالاتر از حد آشکارسازی (مترمکعب)</translation>
+        </message>
+        <message>
+            <source>Change regions</source>
+            <translation>نواحی تغییر</translation>
+        </message>
     </context>
     <context>
         <name>GcpAccuracyReportAlgorithm</name>
@@ -671,6 +707,14 @@
         <message>
             <source>GCP accuracy report as JSON</source>
             <translation>گزارش دقت نقاط کنترل زمینی در قالب JSON</translation>
+        </message>
+        <message>
+            <source>RMS_T of order {} (map units)</source>
+            <translation>RMS_T مرتبهٔ {} (واحد نقشه)</translation>
+        </message>
+        <message>
+            <source>Leave-one-out RMS_T of order {}</source>
+            <translation>RMS_T به روش یکی‌کنارگذاری برای مرتبهٔ {}</translation>
         </message>
     </context>
     <context>
@@ -870,6 +914,202 @@
         <message>
             <source>no</source>
             <translation>خیر</translation>
+        </message>
+        <message>
+            <source>Check points used</source>
+            <translation>نقاط کنترل به‌کاررفته</translation>
+        </message>
+        <message>
+            <source>Check points outside the DTM</source>
+            <translation>نقاط کنترل بیرون از DTM</translation>
+        </message>
+        <message>
+            <source>Check points on DTM nodata</source>
+            <translation>نقاط کنترل روی سلول‌های بدون داده در DTM</translation>
+        </message>
+        <message>
+            <source>Mean error (m)</source>
+            <translation>میانگین خطا (متر)</translation>
+        </message>
+        <message>
+            <source>Mean absolute error (m)</source>
+            <translation>میانگین خطای مطلق (متر)</translation>
+        </message>
+        <message>
+            <source>RMSE (m)</source>
+            <translation>ریشهٔ میانگین مربع خطا RMSE (متر)</translation>
+        </message>
+        <message>
+            <source>Standard deviation of the errors (m)</source>
+            <translation>انحراف معیار خطاها (متر)</translation>
+        </message>
+        <message>
+            <source>Maximum absolute error (m)</source>
+            <translation>بیشینهٔ خطای مطلق (متر)</translation>
+        </message>
+        <message>
+            <source>Pearson r</source>
+            <translation>ضریب همبستگی پیرسون r</translation>
+        </message>
+        <message>
+            <source>R²</source>
+            <translation>ضریب تعیین R²</translation>
+        </message>
+        <message>
+            <source>NMAD (m)</source>
+            <translation>انحراف مطلق میانه‌ای نرمال‌شده NMAD (متر)</translation>
+        </message>
+        <message>
+            <source>Vertical accuracy at 95 % = 1.96·RMSE (m)</source>
+            <translation>دقت قائم در 95 % = 1.96·RMSE (متر)</translation>
+        </message>
+        <message>
+            <source>reference ground → filtered ground</source>
+            <translation>زمین در مرجع ← زمین پس از پالایش</translation>
+        </message>
+        <message>
+            <source>reference ground → filtered object (Type I)</source>
+            <translation>زمین در مرجع ← عارضه پس از پالایش (نوع I)</translation>
+        </message>
+        <message>
+            <source>reference object → filtered ground (Type II)</source>
+            <translation>عارضه در مرجع ← زمین پس از پالایش (نوع II)</translation>
+        </message>
+        <message>
+            <source>reference object → filtered object</source>
+            <translation>عارضه در مرجع ← عارضه پس از پالایش</translation>
+        </message>
+        <message>
+            <source>points</source>
+            <translation>تعداد نقاط</translation>
+        </message>
+        <message>
+            <source>Type I error (%)</source>
+            <translation>خطای نوع اول (٪)</translation>
+        </message>
+        <message>
+            <source>Type II error (%)</source>
+            <translation>خطای نوع دوم (٪)</translation>
+        </message>
+        <message>
+            <source>Total error (%)</source>
+            <translation>خطای کل (٪)</translation>
+        </message>
+        <message>
+            <source>Cohen's kappa (%)</source>
+            <translation>ضریب کاپای کوهن (%)</translation>
+        </message>
+        <message>
+            <source>Nearest neighbour (near)</source>
+            <translation>نزدیک‌ترین همسایه (near)</translation>
+        </message>
+        <message>
+            <source>Bilinear (bilinear)</source>
+            <translation>دوخطی (bilinear)</translation>
+        </message>
+        <message>
+            <source>Cubic convolution (cubic)</source>
+            <translation>پیچش مکعبی (cubic)</translation>
+        </message>
+        <message>
+            <source>Cubic spline (cubicspline)</source>
+            <translation>اسپلاین مکعبی (cubicspline)</translation>
+        </message>
+        <message>
+            <source>Lanczos windowed sinc (lanczos)</source>
+            <translation>تابع sinc پنجره‌ای Lanczos (lanczos)</translation>
+        </message>
+        <message>
+            <source>Average (average)</source>
+            <translation>میانگین (average)</translation>
+        </message>
+        <message>
+            <source>Most frequent value (mode)</source>
+            <translation>پرتکرارترین مقدار (mode)</translation>
+        </message>
+        <message>
+            <source>RMS_x (map units, divisor n)</source>
+            <translation>RMS_x (واحد نقشه، مقسوم‌علیه n)</translation>
+        </message>
+        <message>
+            <source>RMS_y (map units, divisor n)</source>
+            <translation>RMS_y (واحد نقشه، مقسوم‌علیه n)</translation>
+        </message>
+        <message>
+            <source>RMS_T (map units, divisor n)</source>
+            <translation>RMS_T (واحد نقشه، مقسوم‌علیه n)</translation>
+        </message>
+        <message>
+            <source>RMS_T with divisor n − N (QGIS Georeferencer)</source>
+            <translation>RMS_T با مقسوم‌علیه n − N (زمین‌مرجع‌ساز QGIS)</translation>
+        </message>
+        <message>
+            <source>Ground resolution GR (map units/pixel)</source>
+            <translation>تفکیک زمینی GR (واحد نقشه/پیکسل)</translation>
+        </message>
+        <message>
+            <source>Map scale number S = 20000·GR</source>
+            <translation>عدد مقیاس نقشه S = 20000·GR</translation>
+        </message>
+        <message>
+            <source>GCPs used in the fit</source>
+            <translation>نقاط کنترل به‌کاررفته در برازش</translation>
+        </message>
+        <message>
+            <source>Redundancy n − N</source>
+            <translation>درجهٔ آزادی اضافی n − N</translation>
+        </message>
+        <message>
+            <source>Points with RMS_i ≤ RMS_T</source>
+            <translation>نقاط با RMS_i ≤ RMS_T</translation>
+        </message>
+        <message>
+            <source>Leave-one-out RMS_T (map units)</source>
+            <translation>RMS_T به روش یکی‌کنارگذاری (واحد نقشه)</translation>
+        </message>
+        <message>
+            <source>Check-point RMS_T (map units)</source>
+            <translation>RMS_T نقاط کنترل (واحد نقشه)</translation>
+        </message>
+        <message>
+            <source>Independent check points</source>
+            <translation>نقاط کنترل مستقل</translation>
+        </message>
+        <message>
+            <source>Recommended order (0 = none)</source>
+            <translation>مرتبهٔ پیشنهادی (0 = هیچ)</translation>
+        </message>
+        <message>
+            <source>Accepted by criteria C4–C6 (1/0)</source>
+            <translation>پذیرفته طبق معیارهای C4–C6 (1/0)</translation>
+        </message>
+        <message>
+            <source>GCPs dropped by the refinement</source>
+            <translation>نقاط حذف‌شده در پالایش</translation>
+        </message>
+        <message>
+            <source>Check-point (else leave-one-out) RMS_T of the transformation used</source>
+            <translation>RMS_T نقاط کنترل (وگرنه به روش یکی‌کنارگذاری) برای تبدیل به‌کاررفته</translation>
+        </message>
+        <message>
+            <source>Linear (linear)</source>
+            <translation>خطی (linear)</translation>
+        </message>
+        <message>
+            <source>Power (power)</source>
+            <translation>توانی (power)</translation>
+        </message>
+        <message>
+            <source>Gaussian (gaussian)</source>
+            <translation>گاوسی (gaussian)</translation>
+        </message>
+        <message>
+            <source>Spherical (spherical)</source>
+            <translation>کروی (spherical)</translation>
+        </message>
+        <message>
+            <source>Exponential (exponential)</source>
+            <translation>نمایی (exponential)</translation>
         </message>
     </context>
     <context>
@@ -1253,6 +1493,18 @@
             <source>Cells with fewer points within the search radius are nodata.</source>
             <translation>سلول‌هایی که نقاط کمتری درون شعاع جست‌وجو دارند بدون داده می‌مانند.</translation>
         </message>
+        <message>
+            <source>Points interpolated</source>
+            <translation>نقاط درون‌یابی‌شده</translation>
+        </message>
+        <message>
+            <source>Cells with a value</source>
+            <translation>سلول‌های دارای مقدار</translation>
+        </message>
+        <message>
+            <source>Nodata cells</source>
+            <translation>سلول‌های بدون داده</translation>
+        </message>
     </context>
     <context>
         <name>KrigingDtmAlgorithm</name>
@@ -1388,6 +1640,38 @@
             <source>In m², or in m as a standard deviation.</source>
             <translation>بر حسب m²، یا بر حسب m به‌صورت انحراف معیار.</translation>
         </message>
+        <message>
+            <source>Nugget</source>
+            <translation>اثر قطعه‌ای (Nugget)</translation>
+        </message>
+        <message>
+            <source>Sill</source>
+            <translation>آستانه (Sill)</translation>
+        </message>
+        <message>
+            <source>Range</source>
+            <translation>برد</translation>
+        </message>
+        <message>
+            <source>Points kriged</source>
+            <translation>نقاط کریجینگ‌شده</translation>
+        </message>
+        <message>
+            <source>Cells with a value</source>
+            <translation>سلول‌های دارای مقدار</translation>
+        </message>
+        <message>
+            <source>Cross-validation mean error</source>
+            <translation>میانگین خطای اعتبارسنجی متقابل</translation>
+        </message>
+        <message>
+            <source>Cross-validation RMSE</source>
+            <translation>RMSE اعتبارسنجی متقابل</translation>
+        </message>
+        <message>
+            <source>Cross-validation mean standardised error</source>
+            <translation>میانگین خطای استانداردشدهٔ اعتبارسنجی متقابل</translation>
+        </message>
     </context>
     <context>
         <name>LidarQaAlgorithm</name>
@@ -1442,6 +1726,34 @@
         <message>
             <source>Point density and quality report</source>
             <translation>گزارش تراکم و کیفیت نقاط</translation>
+        </message>
+        <message>
+            <source>Density of all returns (pts/m²)</source>
+            <translation>تراکم همهٔ بازتاب‌ها (نقطه بر مترمربع)</translation>
+        </message>
+        <message>
+            <source>Ground density (pts/m²)</source>
+            <translation>تراکم نقاط زمین (نقطه بر مترمربع)</translation>
+        </message>
+        <message>
+            <source>Share of cells without ground</source>
+            <translation>سهم سلول‌های بدون زمین</translation>
+        </message>
+        <message>
+            <source>Duplicate points</source>
+            <translation>نقاط تکراری</translation>
+        </message>
+        <message>
+            <source>Noise share</source>
+            <translation>سهم نویز</translation>
+        </message>
+        <message>
+            <source>Ground filter window (m)</source>
+            <translation>پنجرهٔ فیلتر زمین (متر)</translation>
+        </message>
+        <message>
+            <source>Recommended DTM cell (m)</source>
+            <translation>سلول پیشنهادی مدل رقومی زمین (متر)</translation>
         </message>
     </context>
     <context>
@@ -1949,6 +2261,14 @@
             <source>Batch rectification report</source>
             <translation>گزارش تصحیح دسته‌ای</translation>
         </message>
+        <message>
+            <source>Images found</source>
+            <translation>تصاویر یافت‌شده</translation>
+        </message>
+        <message>
+            <source>Images rectified</source>
+            <translation>تصاویر تصحیح‌شده</translation>
+        </message>
     </context>
     <context>
         <name>RectifyGcpAlgorithm</name>
@@ -2289,6 +2609,22 @@
             <source>Keeps every triangle, bridging gaps inside the convex hull with flat facets.</source>
             <translation>همهٔ مثلث‌ها را نگه می‌دارد و شکاف‌های درون پوش محدب را با وجه‌های تخت پر می‌کند.</translation>
         </message>
+        <message>
+            <source>Points triangulated</source>
+            <translation>نقاط مثلث‌بندی‌شده</translation>
+        </message>
+        <message>
+            <source>Triangles</source>
+            <translation>مثلث‌ها</translation>
+        </message>
+        <message>
+            <source>Cells with a value</source>
+            <translation>سلول‌های دارای مقدار</translation>
+        </message>
+        <message>
+            <source>Nodata cells</source>
+            <translation>سلول‌های بدون داده</translation>
+        </message>
     </context>
     <context>
         <name>TransformationParams</name>
@@ -2470,6 +2806,14 @@
         <message>
             <source>Sets the map scale S = 20000·GR and the tolerance band 4·GR to 6·GR of the criteria (Tishreen Univ. J. Eng. Sci. 38(2), 2016).</source>
             <translation>مقیاس نقشه S = 20000·GR و بازهٔ رواداری 4·GR تا 6·GR معیارها را تعیین می‌کند (مجلهٔ علوم مهندسی دانشگاه تشرین 38(2)، 2016).</translation>
+        </message>
+        <message>
+            <source>Transformation used</source>
+            <translation>تبدیل به‌کاررفته</translation>
+        </message>
+        <message>
+            <source>Recommended transformation</source>
+            <translation>تبدیل پیشنهادی</translation>
         </message>
     </context>
     <context>
