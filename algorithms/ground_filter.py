@@ -6,12 +6,12 @@ from qgis.core import (
     QgsProcessingParameterBoolean,
     QgsProcessingParameterFileDestination,
 )
-from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.lidar import ptd as core_ptd
 from ..core.lidar import recommended as core_rec
 from ..core.lidar.pipeline import SelectionOptions, classify_file
 from ..core.progress import Monitor
+from .helptext import build_help
 from .lidar_common import LidarFilterMixin
 
 LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
@@ -33,6 +33,24 @@ class _GroundCommon(LidarFilterMixin):
 
     def add_input(self):
         self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))
+
+    def common_notes(self) -> dict:
+        """Help notes of the input, outputs and noise options of both filters."""
+        return {
+            self.INPUT: self.tr("A .las or .laz file in a projected CRS (metres)."),
+            self.OUTPUT: self.tr("Every point with class 2 ground, 1 other or 7 low "
+                                 "noise; every other attribute, VLR and the CRS copied "
+                                 "unchanged."),
+            self.GROUND_OUTPUT: self.tr("Only the ground points."),
+            self.KEEP_NOISE: self.tr("Points already classified 7 or 18 keep their class "
+                                     "and take no part."),
+            self.NOISE: self.tr("Points far below their neighbours (multipath) get class 7 "
+                                "and take no part: one stray low point would reject every "
+                                "ground point around it."),
+            self.NOISE_RADIUS: self.tr("Side of the cells searched for lower neighbours."),
+            self.NOISE_THRESHOLD: self.tr("A point this far below the points around it is "
+                                          "a low outlier."),
+        }
 
     def add_outputs(self):
         self.add(QgsProcessingParameterBoolean(
@@ -84,19 +102,6 @@ class _GroundCommon(LidarFilterMixin):
         return {**result, **self.filter_results(outputs)}
 
 
-_OUTPUT_HELP = QT_TRANSLATE_NOOP(
-    "GeomaticsAlgorithm",
-    "<li><b>Classified point cloud</b> (OUTPUT, .laz/.las): every point with class 2 "
-    "ground, 1 other or 7 low noise; every other attribute, VLR and the CRS copied "
-    "unchanged.</li>"
-    "<li><b>Ground points</b> (GROUND_OUTPUT, optional): only the ground points.</li>"
-    "<li><b>Report</b> (OUTPUT_HTML, optional) in REPORT_LANGUAGE (advanced).</li>"
-    "<li><b>Keep existing noise classes</b> (KEEP_NOISE, advanced, default yes): points "
-    "already classified 7 or 18 keep their class and take no part.</li></ul>"
-    "<p>Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE (class 7), "
-    "POINTS_PER_SECOND (filter step only).</p>")
-
-
 class GroundFilterAlgorithm(_GroundCommon):
     """The recommended ground filter: no parameter to set."""
 
@@ -116,35 +121,24 @@ class GroundFilterAlgorithm(_GroundCommon):
         return self.tr("Classifies ground in a LAS/LAZ cloud with no parameter to set.")
 
     def shortHelpString(self):  # noqa: N802
-        return (self.tr(
-            "<p>Classifies a LAS/LAZ point cloud into ground (class 2), other points "
-            "(class 1) and low noise (class 7) with no parameter to set: a progressive "
-            "morphological filter (Pingel et al. 2013, after Zhang et al. 2003) whose "
-            "raster cell and slope tolerance are derived from the cloud itself (point "
-            "density, terrain slope), followed by three passes that rebuild the terrain "
-            "from the points accepted and re-test every point against it.</p>"
-            "<p><b>Example</b>: INPUT=tile.laz OUTPUT=classified.laz — nothing else.</p>"
-            "<p><b>Measured accuracy</b> (total error, Sithole &amp; Vosselman 2004) on the "
-            "8 ISPRS filter-test samples 11, 12, 22, 31, 41, 53, 54, 61: mean 4.06 % at "
-            "these defaults; SMRF with PDAL's defaults 5.75 % in the same script. The "
-            "defaults were chosen on these samples: the honest, cross-validated figure "
-            "(leave one sample out) is 4.42 %; worst sample 9.82 % (samp11, steep "
-            "terrain with buildings). Beats SMRF on 5 of the 8 samples.</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Point cloud</b> (INPUT): .las or .laz in a projected CRS (metres); "
-            "0.2 to 20+ points/m².</li>"
-            "<li>Advanced overrides (0 = derived from the cloud): <b>CELL</b> (m, default "
-            "0 → 1 m), <b>MAX_WINDOW</b> (m, default 18; must exceed the largest "
-            "building), <b>SLOPE</b> (rise/run, default 0 → 0.5 × local terrain slope, "
-            "0.10 to 0.60), <b>THRESHOLD</b> (m, default 0.5; plus 1.25 m per unit of "
-            "terrain slope), <b>REFINE</b> (passes, default 3).</li>"
-            "<li><b>Remove low outliers first</b> (NOISE, advanced, default no): the "
-            "filter finds low noise itself; yes runs the shared pre-filter first "
-            "(NOISE_RADIUS m, default 5; NOISE_THRESHOLD m, default 1).</li>")
-            + self.tr(_OUTPUT_HELP) + self.tr(  # i18n: noop-list
+        return build_help(self, self.tr(
+            "Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) "
+            "and low noise (class 7) with no parameter to set: a progressive morphological "
+            "filter (Pingel et al. 2013) whose cell and slope tolerance are derived from "
+            "the cloud, then passes that rebuild the terrain and re-test every point. On "
+            "the 8 ISPRS filter-test samples its cross-validated total error is 4.42 % "
+            "(SMRF with PDAL's defaults: 5.75 %)."),
+            "INPUT=tile.laz OUTPUT=classified.laz OUTPUT_HTML=groundfilter.html",
+            {**self.common_notes(),
+             self.CELL: self.tr("0 = derived from the point density (about 1 m)."),
+             self.MAX_WINDOW: self.tr("Must exceed the largest building."),
+             self.SLOPE: self.tr("0 = half the local terrain slope (0.10 to 0.60)."),
+             self.THRESHOLD: self.tr("Plus 1.25 m per unit of terrain slope."),
+             self.REFINE: self.tr("Passes that rebuild the terrain from the accepted "
+                                  "points.")}) + self.tr(
             "<p>References: Pingel, T. J., Clarke, K. C. &amp; McBride, W. A. (2013), ISPRS "
             "J. Photogramm. Remote Sens. 77, 21–30; Zhang, K. et al. (2003), IEEE TGRS "
-            "41(4), 872–882.</p>"))
+            "41(4), 872–882.</p>")
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input()
@@ -212,37 +206,27 @@ class PtdGroundFilterAlgorithm(_GroundCommon):
         return self.tr("Axelsson's progressive TIN densification ground filter.")
 
     def shortHelpString(self):  # noqa: N802
-        return (self.tr(
-            "<p>Classifies a LAS/LAZ point cloud into ground (class 2), other points "
-            "(class 1) and low noise (class 7) by progressive TIN densification (Axelsson "
-            "2000): seeds are the lowest points of overlapping parcels larger than the "
-            "largest building; the TIN is densified with every point close enough to its "
-            "facet and seen under a small enough angle from its vertices, until no point "
-            "is added. Pits and spikes are removed first by a step filter.</p>"
-            "<p><b>Example</b>: INPUT=tile.laz OUTPUT=classified.laz MAX_BUILDING=50 for "
-            "a town with 50 m buildings. On the 8 ISPRS samples its mean total error is "
-            "8.05 % at the defaults; use <i>Ground filter (recommended)</i> unless you need "
-            "a TIN filter.</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Point cloud</b> (INPUT): .las or .laz in a projected CRS (metres).</li>"
-            "<li><b>Cell</b> (CELL, m, default 2): lowest point per cell for the step "
-            "filter and the seeds.</li>"
-            "<li><b>Parcel size</b> (MAX_BUILDING, m, default 30): larger than the "
-            "largest building (30–50 m).</li>"
-            "<li><b>Distance to facet</b> (MAX_DISTANCE, m, default 1.5) and <b>angle to "
-            "vertices</b> (MAX_ANGLE, degrees, default 18): densification limits.</li>"
-            "<li><b>Shortest facet edge</b> (MIN_EDGE, m, default 1, advanced), "
-            "<b>iteration cap</b> (MAX_ITERATIONS, default 150, advanced).</li>"
-            "<li><b>Final distance</b> (FINAL_DISTANCE, m, default 0.5): points this close "
-            "to the final TIN are ground; <b>low-noise depth</b> (LOW_NOISE_DEPTH, m, "
-            "default 1.5): points deeper below it get class 7.</li>"
-            "<li><b>Seed drop</b> (SEED_DROP, %, default 0.3, advanced): lowest share of "
-            "each parcel skipped before picking its seed.</li>"
-            "<li><b>Remove low outliers first</b> (NOISE, default yes; NOISE_RADIUS m, 5; "
-            "NOISE_THRESHOLD m, 1).</li>")
-            + self.tr(_OUTPUT_HELP) + self.tr(  # i18n: noop-list
-            "<p>Reference: Axelsson, P. (2000). DEM generation from laser scanner data "
-            "using adaptive TIN models. IAPRS XXXIII-B4, 110–117.</p>"))
+        return build_help(self, self.tr(
+            "Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) "
+            "and low noise (class 7) by progressive TIN densification (Axelsson 2000): the "
+            "lowest points of parcels larger than the largest building seed a TIN, which "
+            "takes every point close enough to its facet until none is added. Its mean "
+            "total error on the 8 ISPRS samples is 8.05 % at the defaults: use the "
+            "recommended ground filter unless you need a TIN filter."),
+            "INPUT=tile.laz OUTPUT=classified.laz MAX_BUILDING=50",
+            {**self.common_notes(),
+             self.CELL: self.tr("Lowest point per cell for the step filter and the seeds."),
+             self.MAX_BUILDING: self.tr("Larger than the largest building (30–50 m)."),
+             self.MAX_DISTANCE: self.tr("Densification limit: distance of a point to its "
+                                        "facet."),
+             self.MAX_ANGLE: self.tr("Densification limit: angle under which a point is "
+                                     "seen from the facet's vertices."),
+             self.FINAL_DISTANCE: self.tr("Points this close to the final TIN are ground."),
+             self.LOW_NOISE_DEPTH: self.tr("Points deeper below the final TIN get class 7."),
+             self.SEED_DROP: self.tr("Lowest share of each parcel skipped before picking "
+                                     "its seed.")}) + self.tr(
+            "<p>Reference: Axelsson, P. (2000). <cite>DEM generation from laser scanner "
+            "data using adaptive TIN models</cite>. IAPRS XXXIII-B4, 110–117.</p>")
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input()

@@ -28,6 +28,7 @@ from ..core.photogrammetry.cameras import CAMERAS
 from ..core.photogrammetry.report import gsd_report
 from ..core.progress import Cancelled
 from .base import GeomaticsAlgorithm
+from .helptext import build_help
 
 CAMERA_KEYS = ["custom"] + list(CAMERAS)
 
@@ -112,49 +113,40 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
                        "photogrammetric accuracy of a camera at a distance.")
 
     def shortHelpString(self):  # noqa: N802
-        return (self.tr(
-            "<p>Computes the ground sampling distance (GSD) and footprint of a camera at a "
-            "given distance or flying height. It also gives the theoretical accuracy of "
-            "phototriangulation and of a dense-matching cloud, and compares observed "
-            "accuracies with it (Al Khalil 2019).</p>")
-            + self.tr(
-            "<p><b>Example</b>: the paper's Nikon Coolpix P100 at 5.88 m (sensor width "
-            "6.123 mm, image width 3648 px, focal length 4.6 mm) gives a GSD of 0.21455 "
-            "cm/px, σ<sub>xyz</sub> 1.287 mm (1.26 mm with the rounded GSD), a dense-cloud "
-            "resolution of 0.858 cm and a footprint 7.827 m wide.</p>")
-            + self.tr(
+        observed = self.tr("Optional: gives the ratio of the observed to the theoretical "
+                           "accuracy.")
+        extension = self.tr("Not in the paper: gives the exposure and line spacing.")
+        return build_help(self, self.tr(
+            "Computes the ground sampling distance (GSD) and footprint of a camera at a "
+            "given distance or flying height, and the theoretical accuracy of "
+            "phototriangulation and of a dense-matching cloud (Al Khalil 2019). The "
+            "paper's Nikon Coolpix P100 at 5.88 m (sensor width 6.123 mm, image width "
+            "3648 px, focal length 4.6 mm) gives a GSD of 0.21455 cm/px, σxyz 1.287 mm "
+            "and a footprint 7.827 m wide."),
+            "DISTANCE=5.88 SENSOR_WIDTH=6.123 IMAGE_WIDTH=3648 FOCAL_LENGTH=4.6 "
+            "OUTPUT_HTML=gsd.html",
+            {self.CAMERA: self.tr("Fills the sensor, image and focal length values; values "
+                                  "you enter override the preset."),
+             self.DISTANCE: self.tr("Camera–object distance, or flying height above "
+                                    "ground."),
+             self.FOCAL_LENGTH: self.tr("The true focal length, not the 35 mm equivalent."),
+             self.SENSOR_HEIGHT: self.tr("For the footprint height and the flight "
+                                         "spacing."),
+             self.IMAGE_HEIGHT: self.tr("For the footprint height and the flight spacing."),
+             self.TARGET_GSD: self.tr("Gives the distance that achieves it."),
+             self.ROUND_GSD: self.tr("Rounds the GSD before the derived quantities, as "
+                                     "the paper does."),
+             self.K_M: self.tr("0.13 for an expert operator."),
+             self.PYRAMID_LEVEL: self.tr("A fraction in (0, 1], or a percentage."),
+             self.OBSERVED_SX: observed, self.OBSERVED_SY: observed,
+             self.OBSERVED_SZ: observed, self.OBSERVED_SXYZ: observed,
+             self.OBSERVED_DENSE_STD: observed,
+             self.STEREO_BASE: self.tr("Not in the paper: gives the normal-case σZ."),
+             self.FORWARD_OVERLAP: extension, self.SIDE_OVERLAP: extension}) + self.tr(
             "<p><b>Formulas</b>: GSD [cm/px] = D·S<sub>W</sub>·100/(Im<sub>W</sub>·F<sub>R</sub>); "
             "footprint = D·S<sub>W</sub>/F<sub>R</sub>; σ<sub>meas</sub> = k<sub>m</sub>·GSD; "
             "σ<sub>xyz</sub> = k<sub>m</sub>·GSD·k<sub>s</sub>; matching step P = "
             "T<sub>s</sub>/N<sub>p</sub>; dense resolution R<sub>theo</sub> = P·GSD.</p>")
-            + self.tr(
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Camera preset</b> (default Custom): fills the sensor, image and focal "
-            "length values; values you enter override the preset.</li>"
-            "<li><b>Distance</b> (m, default 100): camera–object distance or flying height "
-            "above ground, &gt; 0.</li>"
-            "<li><b>Sensor width</b> (mm), <b>image width</b> (px) and <b>focal length</b> "
-            "(mm, the true focal length, not the 35 mm equivalent): required with the "
-            "Custom camera.</li>"
-            "<li><b>Sensor height</b> (mm) / <b>image height</b> (px): optional, for the "
-            "footprint height and the flight spacing.</li>"
-            "<li><b>Target GSD</b> (cm/px): optional; gives the distance that achieves "
-            "it.</li>"
-            "<li><b>Round GSD like the paper</b> (default no): round the GSD to 0.01 cm/px "
-            "before the derived quantities.</li>"
-            "<li><b>k<sub>m</sub></b> (px, default 0.3; 0.13 for an expert operator) and "
-            "<b>k<sub>s</sub></b> (default 2).</li>"
-            "<li><b>Pyramid level N<sub>p</sub></b> (default 0.5, a fraction in (0, 1], or "
-            "a percentage) and <b>subsampling step T<sub>s</sub></b> (px, ≥ 1, default "
-            "2).</li>"
-            "<li><b>Observed σx, σy, σz, σxyz</b> (mm) and <b>observed dense-cloud std</b> "
-            "(cm): optional; give the observed/theoretical ratios.</li>"
-            "<li><b>Extension</b> (not in the paper): stereo base (m) gives the "
-            "normal-case σ<sub>Z</sub>; forward/side overlap (%) give the exposure and "
-            "line spacing.</li>"
-            "<li><b>GSD calculator report</b>: optional HTML report.</li></ul>"
-            "<p>Every result is also an output number, so the graphical modeler can chain "
-            "it.</p>"))
 
     def initAlgorithm(self, config=None):  # noqa: N802
         names = [self.tr("Custom (enter the values below)")] + [c.name for c in CAMERAS.values()]
@@ -326,22 +318,26 @@ class GsdBatchAlgorithm(GeomaticsAlgorithm):
         return self.tr("GSD and photogrammetric accuracy calculator (batch table)")
 
     def shortHelpString(self):  # noqa: N802
-        return (self.tr(
-            "<p>Runs the GSD / accuracy calculator for every row of a table (CSV, "
+        return build_help(self, self.tr(
+            "Runs the GSD and accuracy calculator for every row of a table (CSV, "
             "spreadsheet or any layer) and writes a table with the inputs and all "
-            "results.</p><p><b>Input columns</b> (case-insensitive): <i>camera</i> "
-            "(optional preset key: nikon_p100, dji_p4rtk, dji_p1_35, phaseone_ixm100_80), "
-            "<i>distance</i> (m, required), <i>sensor_width</i> (mm), <i>image_width</i> "
-            "(px), <i>focal_length</i> (mm) — required unless a camera preset is given — "
-            "and optionally sensor_height, image_height, target_gsd, k_m, k_s, "
-            "pyramid_level, subsampling_step, observed_sx, observed_sy, observed_sz, "
-            "observed_sxyz, observed_dense_std, forward_overlap, side_overlap, "
-            "stereo_base (units as in the single calculator).</p>"
-            "<p><b>Output</b>: the input columns plus gsd_cm, footprint_width_m, "
-            "sigma_xyz_mm, dense_resolution_cm and every other result. A row with an "
-            "invalid value stops the run with an error naming the row and column.</p>")
-            + self.tr("<p><b>Round GSD like the paper</b> (ROUND_GSD, default no): round "
-                      "the GSD to 0.01 cm/px before the derived quantities.</p>"))
+            "results. A row with an invalid value stops the run with an error naming the "
+            "row and the column."),
+            "INPUT=cameras.csv OUTPUT=gsd_results.csv",
+            {self.INPUT: self.tr(
+                "Columns (any case): <i>camera</i> (optional preset key: nikon_p100, "
+                "dji_p4rtk, dji_p1_35, phaseone_ixm100_80), <i>distance</i> (m, required), "
+                "<i>sensor_width</i> (mm), <i>image_width</i> (px), <i>focal_length</i> "
+                "(mm) — required without a preset — and optionally sensor_height, "
+                "image_height, target_gsd, k_m, k_s, pyramid_level, subsampling_step, "
+                "observed_sx, observed_sy, observed_sz, observed_sxyz, observed_dense_std, "
+                "forward_overlap, side_overlap, stereo_base (units as in the single "
+                "calculator)."),
+             self.ROUND_GSD: self.tr("Rounds the GSD before the derived quantities, as "
+                                     "the paper does."),
+             self.OUTPUT: self.tr("The input columns plus gsd_cm, footprint_width_m, "
+                                  "sigma_xyz_mm, dense_resolution_cm and every other "
+                                  "result.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add(QgsProcessingParameterFeatureSource(

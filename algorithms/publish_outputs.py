@@ -15,6 +15,7 @@ from qgis.core import (
 
 from ..core.io.publish import publish_files
 from .base import GeomaticsAlgorithm
+from .helptext import build_help
 
 LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
 
@@ -40,25 +41,19 @@ class PublishOutputsAlgorithm(GeomaticsAlgorithm):
         return super().flags() | self.FlagHideFromToolbox
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(
-            "<p>Copies the files written by the earlier steps of a model to their "
-            "destinations, all of them or none. It is the last step of the model "
-            "'LiDAR to DTM with accuracy': when a destination cannot be written, no "
-            "classified cloud, DTM or report is left at any destination.</p>"
-            "<p><b>Example</b>: CLOUD=/tmp/ground.laz DTM=/tmp/dtm.tif "
-            "OUTPUT=classified.laz OUTPUT_DTM=dtm.tif → both published together.</p>"
-            "<p>Every destination is checked against the model's inputs, the files to "
-            "publish and the other destinations before anything is copied. A destination "
-            "in another format than its temporary file (e.g. .las for a .laz cloud) is "
-            "converted. Hidden from the toolbox: used by the shipped model.</p>"
-            "<p><b>Parameters</b></p><ul>"
-            "<li><b>Files to publish</b>: classified cloud, ground filter report, DTM, "
-            "DTM report, check-point residuals, DTM accuracy report (each optional; no "
-            "default).</li>"
-            "<li><b>Inputs of the chain</b>: point cloud and check points (never "
-            "overwritten).</li>"
-            "<li><b>Destinations</b>: one per file; an unset one is not published.</li>"
-            "</ul>")
+        return build_help(self, self.tr(
+            "Copies the files written by the earlier steps of a model to their "
+            "destinations, all of them or none: it is the last step of the model 'LiDAR "
+            "to DTM with accuracy', so a destination that cannot be written leaves no "
+            "classified cloud, DTM or report anywhere. Every destination is checked "
+            "against the model's inputs, the files to publish and the other destinations "
+            "first; one in another format than its file (.las for a .laz cloud) is "
+            "converted."),
+            "CLOUD=/tmp/ground.laz DTM=/tmp/dtm.tif OUTPUT=classified.laz OUTPUT_DTM=dtm.tif",
+            {**{dest: self.tr("Unset: this file is not published.")
+                for _, dest, _ in self.FILES},
+             **{src: self.tr("Never overwritten: checked against every destination.")
+                for src in self.SOURCES + (self.INPUT_CHECKPOINTS,)}})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         labels = {"CLOUD": self.tr("Classified point cloud to publish"),

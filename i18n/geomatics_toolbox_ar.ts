@@ -880,10 +880,6 @@
             <translation>استبعاد زمني</translation>
         </message>
         <message>
-            <source>&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point with class 2 ground, 1 other or 7 low noise; every other attribute, VLR and the CRS copied unchanged.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional) in REPORT_LANGUAGE (advanced).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, advanced, default yes): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE (class 7), POINTS_PER_SECOND (filter step only).&lt;/p&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;سحابة النقاط المصنفة&lt;/b&gt; (OUTPUT، ‎.laz/.las): كل نقطة بالصنف 2 أرض أو 1 أخرى أو 7 ضجيج منخفض؛ وتُنسخ كل السمات الأخرى وسجلات VLR ونظام الإحداثيات دون تغيير.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط الأرض&lt;/b&gt; (GROUND_OUTPUT، اختياري): نقاط الأرض فقط.&lt;/li&gt;&lt;li&gt;&lt;b&gt;التقرير&lt;/b&gt; (OUTPUT_HTML، اختياري) بلغة REPORT_LANGUAGE (متقدم).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الإبقاء على أصناف الضجيج الموجودة&lt;/b&gt; (KEEP_NOISE، متقدم، الافتراضي نعم): النقاط المصنفة مسبقاً 7 أو 18 تحتفظ بصنفها ولا تشارك.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;الأرقام المُخرَجة: N_POINTS، N_GROUND، N_NONGROUND، N_NOISE (الصنف 7)، POINTS_PER_SECOND (خطوة المرشح فقط).&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Example</source>
             <translation>مثال</translation>
         </message>
@@ -1205,10 +1201,6 @@
             <translation>يصنّف الأرض في سحابة LAS/LAZ دون أي معامل يجب ضبطه.</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013, after Zhang et al. 2003) whose raster cell and slope tolerance are derived from the cloud itself (point density, terrain slope), followed by three passes that rebuild the terrain from the points accepted and re-test every point against it.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz — nothing else.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Measured accuracy&lt;/b&gt; (total error, Sithole &amp;amp; Vosselman 2004) on the 8 ISPRS filter-test samples 11, 12, 22, 31, 41, 53, 54, 61: mean 4.06 % at these defaults; SMRF with PDAL's defaults 5.75 % in the same script. The defaults were chosen on these samples: the honest, cross-validated figure (leave one sample out) is 4.42 %; worst sample 9.82 % (samp11, steep terrain with buildings). Beats SMRF on 5 of the 8 samples.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz in a projected CRS (metres); 0.2 to 20+ points/m².&lt;/li&gt;&lt;li&gt;Advanced overrides (0 = derived from the cloud): &lt;b&gt;CELL&lt;/b&gt; (m, default 0 → 1 m), &lt;b&gt;MAX_WINDOW&lt;/b&gt; (m, default 18; must exceed the largest building), &lt;b&gt;SLOPE&lt;/b&gt; (rise/run, default 0 → 0.5 × local terrain slope, 0.10 to 0.60), &lt;b&gt;THRESHOLD&lt;/b&gt; (m, default 0.5; plus 1.25 m per unit of terrain slope), &lt;b&gt;REFINE&lt;/b&gt; (passes, default 3).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, advanced, default no): the filter finds low noise itself; yes runs the shared pre-filter first (NOISE_RADIUS m, default 5; NOISE_THRESHOLD m, default 1).&lt;/li&gt;</source>
-            <translation>&lt;p&gt;يصنّف سحابة نقاط LAS/LAZ إلى أرض (الصنف 2) ونقاط أخرى (الصنف 1) وضجيج منخفض (الصنف 7) دون أي معامل يجب ضبطه: مرشح مورفولوجي تدريجي (Pingel وآخرون 2013، بعد Zhang وآخرين 2003) تُشتق خلية شبكته النقطية وسماحية انحداره من السحابة نفسها (كثافة النقاط، انحدار التضاريس)، تليه ثلاث تمريرات تعيد بناء التضاريس من النقاط المقبولة وتعيد اختبار كل نقطة مقابلها.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz — لا شيء غير ذلك.&lt;/p&gt;&lt;p&gt;&lt;b&gt;الدقة المقيسة&lt;/b&gt; (الخطأ الكلي، Sithole &amp;amp; Vosselman 2004) على عينات اختبار المرشحات الثماني من ISPRS ‏11، 12، 22، 31، 41، 53، 54، 61: المتوسط 4.06 % بهذه القيم الافتراضية؛ وSMRF بقيم PDAL الافتراضية 5.75 % في البرنامج نفسه. اختيرت القيم الافتراضية على هذه العينات: الرقم الصادق بالتحقق المتقاطع (ترك عينة واحدة خارجاً) هو 4.42 %؛ أسوأ عينة 9.82 % (samp11، تضاريس شديدة الانحدار مع مبانٍ). يتفوق على SMRF في 5 من 8 عينات.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ملف ‎.las أو ‎.laz في نظام إحداثيات مسقط (أمتار)؛ من 0.2 إلى أكثر من 20 نقطة/م².&lt;/li&gt;&lt;li&gt;تجاوزات متقدمة (0 = مشتقة من السحابة): &lt;b&gt;CELL&lt;/b&gt; (م، الافتراضي 0 ← 1 م)، &lt;b&gt;MAX_WINDOW&lt;/b&gt; (م، الافتراضي 18؛ يجب أن يتجاوز أكبر مبنى)، &lt;b&gt;SLOPE&lt;/b&gt; (ارتفاع/مسافة، الافتراضي 0 ← 0.5 × انحدار التضاريس المحلي، من 0.10 إلى 0.60)، &lt;b&gt;THRESHOLD&lt;/b&gt; (م، الافتراضي 0.5؛ زائد 1.25 م لكل وحدة من انحدار التضاريس)، &lt;b&gt;REFINE&lt;/b&gt; (تمريرات، الافتراضي 3).&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة النقاط الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، متقدم، الافتراضي لا): يجد المرشح الضجيج المنخفض بنفسه؛ نعم تشغّل المرشح المسبق المشترك أولاً (NOISE_RADIUS م، الافتراضي 5؛ NOISE_THRESHOLD م، الافتراضي 1).&lt;/li&gt;</translation>
-        </message>
-        <message>
             <source>&lt;p&gt;References: Pingel, T. J., Clarke, K. C. &amp;amp; McBride, W. A. (2013), ISPRS J. Photogramm. Remote Sens. 77, 21–30; Zhang, K. et al. (2003), IEEE TGRS 41(4), 872–882.&lt;/p&gt;</source>
             <translation>&lt;p&gt;المراجع: Pingel, T. J., Clarke, K. C. &amp;amp; McBride, W. A. (2013), ISPRS J. Photogramm. Remote Sens. 77, 21–30؛ Zhang, K. et al. (2003), IEEE TGRS 41(4), 872–882.&lt;/p&gt;</translation>
         </message>
@@ -1248,16 +1240,36 @@
             <source>Recommended ground filter: window {} m, threshold {} m, {} refinement passes</source>
             <translation>مرشح الأرض الموصى به: نافذة {} م، عتبة {} م، {} تمريرات تحسين</translation>
         </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell and slope tolerance are derived from the cloud, then passes that rebuild the terrain and re-test every point. On the 8 ISPRS filter-test samples its cross-validated total error is 4.42 % (SMRF with PDAL's defaults: 5.75 %).</source>
+            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) دون أي معامل يُضبط: مرشح مورفولوجي تدريجي (Pingel et al. 2013) يُشتق حجم خليته وتفاوت انحداره من السحابة، ثم تمريرات تعيد بناء التضاريس وتختبر كل نقطة من جديد. على عينات اختبار المرشحات الثماني من ISPRS يبلغ خطؤه الكلي بالتحقق المتقاطع 4.42 % (SMRF بالقيم الافتراضية لـ PDAL: 5.75 %).</translation>
+        </message>
+        <message>
+            <source>0 = derived from the point density (about 1 m).</source>
+            <translation>0 = مشتق من كثافة النقاط (نحو 1 م).</translation>
+        </message>
+        <message>
+            <source>Must exceed the largest building.</source>
+            <translation>يجب أن يتجاوز أكبر مبنى.</translation>
+        </message>
+        <message>
+            <source>0 = half the local terrain slope (0.10 to 0.60).</source>
+            <translation>0 = نصف انحدار التضاريس المحلي (من 0.10 إلى 0.60).</translation>
+        </message>
+        <message>
+            <source>Plus 1.25 m per unit of terrain slope.</source>
+            <translation>مضافًا إليه 1.25 م لكل وحدة من انحدار التضاريس.</translation>
+        </message>
+        <message>
+            <source>Passes that rebuild the terrain from the accepted points.</source>
+            <translation>تمريرات تعيد بناء التضاريس من النقاط المقبولة.</translation>
+        </message>
     </context>
     <context>
         <name>GsdBatchAlgorithm</name>
         <message>
             <source>GSD and photogrammetric accuracy calculator (batch table)</source>
             <translation>حاسبة GSD والدقة التصويرية (جدول دفعي)</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Runs the GSD / accuracy calculator for every row of a table (CSV, spreadsheet or any layer) and writes a table with the inputs and all results.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Input columns&lt;/b&gt; (case-insensitive): &lt;i&gt;camera&lt;/i&gt; (optional preset key: nikon_p100, dji_p4rtk, dji_p1_35, phaseone_ixm100_80), &lt;i&gt;distance&lt;/i&gt; (m, required), &lt;i&gt;sensor_width&lt;/i&gt; (mm), &lt;i&gt;image_width&lt;/i&gt; (px), &lt;i&gt;focal_length&lt;/i&gt; (mm) — required unless a camera preset is given — and optionally sensor_height, image_height, target_gsd, k_m, k_s, pyramid_level, subsampling_step, observed_sx, observed_sy, observed_sz, observed_sxyz, observed_dense_std, forward_overlap, side_overlap, stereo_base (units as in the single calculator).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output&lt;/b&gt;: the input columns plus gsd_cm, footprint_width_m, sigma_xyz_mm, dense_resolution_cm and every other result. A row with an invalid value stops the run with an error naming the row and column.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;تشغّل حاسبة GSD والدقة لكل سطر من جدول (CSV أو جدول بيانات أو أي طبقة) وتكتب جدولاً بالمدخلات وجميع النتائج.&lt;/p&gt;&lt;p&gt;&lt;b&gt;أعمدة الإدخال&lt;/b&gt; (دون تمييز حالة الأحرف): &lt;i&gt;camera&lt;/i&gt; (اختياري، مفتاح كاميرا معرّفة: nikon_p100، dji_p4rtk، dji_p1_35، phaseone_ixm100_80)، &lt;i&gt;distance&lt;/i&gt; (م، إلزامي)، &lt;i&gt;sensor_width&lt;/i&gt; (مم)، &lt;i&gt;image_width&lt;/i&gt; (بكسل)، &lt;i&gt;focal_length&lt;/i&gt; (مم) — إلزامية ما لم تُحدَّد كاميرا — واختيارياً sensor_height وimage_height وtarget_gsd وk_m وk_s وpyramid_level وsubsampling_step وobserved_sx وobserved_sy وobserved_sz وobserved_sxyz وobserved_dense_std وforward_overlap وside_overlap وstereo_base (بالوحدات نفسها كما في الحاسبة المفردة).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المخرج&lt;/b&gt;: أعمدة الإدخال مضافاً إليها gsd_cm وfootprint_width_m وsigma_xyz_mm وdense_resolution_cm وسائر النتائج. السطر الذي يحوي قيمة غير صالحة يوقف التشغيل برسالة تذكر السطر والعمود.&lt;/p&gt;</translation>
         </message>
         <message>
             <source>Table of cameras and distances</source>
@@ -1292,12 +1304,24 @@
             <translation>السطر {row}: {err}</translation>
         </message>
         <message>
-            <source>&lt;p&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;&lt;b&gt;تقريب GSD كما في البحث&lt;/b&gt; (ROUND_GSD، الافتراضي: لا): يقرّب GSD إلى 0.01 سم/بكسل قبل حساب الكميات المشتقة.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Could not write the result table: {0}</source>
             <translation>تعذّرت كتابة جدول النتائج: {0}</translation>
+        </message>
+        <message>
+            <source>Runs the GSD and accuracy calculator for every row of a table (CSV, spreadsheet or any layer) and writes a table with the inputs and all results. A row with an invalid value stops the run with an error naming the row and the column.</source>
+            <translation>يشغّل حاسبة GSD والدقة لكل صف في جدول (CSV أو جدول بيانات أو أي طبقة) ويكتب جدولًا بالمدخلات وكل النتائج. الصف ذو القيمة غير الصالحة يوقف التشغيل برسالة خطأ تسمّي الصف والعمود.</translation>
+        </message>
+        <message>
+            <source>Columns (any case): &lt;i&gt;camera&lt;/i&gt; (optional preset key: nikon_p100, dji_p4rtk, dji_p1_35, phaseone_ixm100_80), &lt;i&gt;distance&lt;/i&gt; (m, required), &lt;i&gt;sensor_width&lt;/i&gt; (mm), &lt;i&gt;image_width&lt;/i&gt; (px), &lt;i&gt;focal_length&lt;/i&gt; (mm) — required without a preset — and optionally sensor_height, image_height, target_gsd, k_m, k_s, pyramid_level, subsampling_step, observed_sx, observed_sy, observed_sz, observed_sxyz, observed_dense_std, forward_overlap, side_overlap, stereo_base (units as in the single calculator).</source>
+            <translation>الأعمدة (بأي حالة أحرف): &lt;i&gt;camera&lt;/i&gt; (مفتاح إعداد مسبق اختياري: nikon_p100، dji_p4rtk، dji_p1_35، phaseone_ixm100_80)، و&lt;i&gt;distance&lt;/i&gt; (م، إلزامي)، و&lt;i&gt;sensor_width&lt;/i&gt; (مم)، و&lt;i&gt;image_width&lt;/i&gt; (بكسل)، و&lt;i&gt;focal_length&lt;/i&gt; (مم) — إلزامية دون إعداد مسبق — واختياريًا sensor_height، image_height، target_gsd، k_m، k_s، pyramid_level، subsampling_step، observed_sx، observed_sy، observed_sz، observed_sxyz، observed_dense_std، forward_overlap، side_overlap، stereo_base (بالوحدات نفسها كما في الحاسبة المفردة).</translation>
+        </message>
+        <message>
+            <source>Rounds the GSD before the derived quantities, as the paper does.</source>
+            <translation>يقرّب GSD قبل حساب الكميات المشتقة، كما يفعل البحث.</translation>
+        </message>
+        <message>
+            <source>The input columns plus gsd_cm, footprint_width_m, sigma_xyz_mm, dense_resolution_cm and every other result.</source>
+            <translation>أعمدة المدخلات مضافًا إليها gsd_cm وfootprint_width_m وsigma_xyz_mm وdense_resolution_cm وكل النتائج الأخرى.</translation>
         </message>
     </context>
     <context>
@@ -1403,20 +1427,8 @@
             <translation>المسافة الأرضية للعيّنة والتغطية الأرضية والدقة التصويرية النظرية لكاميرا على مسافة معيّنة.</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Computes the ground sampling distance (GSD) and footprint of a camera at a given distance or flying height. It also gives the theoretical accuracy of phototriangulation and of a dense-matching cloud, and compares observed accuracies with it (Al Khalil 2019).&lt;/p&gt;</source>
-            <translation>&lt;p&gt;يحسب المسافة الأرضية للعيّنة (GSD) والتغطية الأرضية لكاميرا على مسافة أو ارتفاع طيران معيّن. ويعطي أيضًا الدقة النظرية للتثليث الجوي ولسحابة المطابقة الكثيفة، ويقارن الدقة المرصودة بها (الخليل 2019).&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the paper's Nikon Coolpix P100 at 5.88 m (sensor width 6.123 mm, image width 3648 px, focal length 4.6 mm) gives a GSD of 0.21455 cm/px, σ&lt;sub&gt;xyz&lt;/sub&gt; 1.287 mm (1.26 mm with the rounded GSD), a dense-cloud resolution of 0.858 cm and a footprint 7.827 m wide.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: كاميرا Nikon Coolpix P100 في البحث على مسافة ‎5.88 m‏ (عرض المستشعر ‎6.123 mm‏، عرض الصورة ‎3648 px‏، البعد البؤري ‎4.6 mm‏) تعطي GSD مقدارها ‎0.21455 cm/px‏، و σ&lt;sub&gt;xyz&lt;/sub&gt; ‎1.287 mm‏ (‎1.26 mm‏ مع GSD المقرّبة)، ودقة سحابة كثيفة ‎0.858 cm‏، وتغطية أرضية بعرض ‎7.827 m‏.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>&lt;p&gt;&lt;b&gt;Formulas&lt;/b&gt;: GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;); footprint = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;; σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD; σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;; matching step P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;; dense resolution R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;</source>
             <translation>&lt;p&gt;&lt;b&gt;الصيغ&lt;/b&gt;: &lt;span dir="ltr"&gt;GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;)&lt;/span&gt;؛ التغطية = &lt;span dir="ltr"&gt;D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;&lt;/span&gt;؛ &lt;span dir="ltr"&gt;σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD&lt;/span&gt;؛ &lt;span dir="ltr"&gt;σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;&lt;/span&gt;؛ خطوة المطابقة &lt;span dir="ltr"&gt;P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;&lt;/span&gt;؛ دقة السحابة الكثيفة &lt;span dir="ltr"&gt;R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD&lt;/span&gt;.&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Camera preset&lt;/b&gt; (default Custom): fills the sensor, image and focal length values; values you enter override the preset.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance&lt;/b&gt; (m, default 100): camera–object distance or flying height above ground, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor width&lt;/b&gt; (mm), &lt;b&gt;image width&lt;/b&gt; (px) and &lt;b&gt;focal length&lt;/b&gt; (mm, the true focal length, not the 35 mm equivalent): required with the Custom camera.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor height&lt;/b&gt; (mm) / &lt;b&gt;image height&lt;/b&gt; (px): optional, for the footprint height and the flight spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Target GSD&lt;/b&gt; (cm/px): optional; gives the distance that achieves it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (px, default 0.3; 0.13 for an expert operator) and &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pyramid level N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (default 0.5, a fraction in (0, 1], or a percentage) and &lt;b&gt;subsampling step T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (px, ≥ 1, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Observed σx, σy, σz, σxyz&lt;/b&gt; (mm) and &lt;b&gt;observed dense-cloud std&lt;/b&gt; (cm): optional; give the observed/theoretical ratios.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extension&lt;/b&gt; (not in the paper): stereo base (m) gives the normal-case σ&lt;sub&gt;Z&lt;/sub&gt;; forward/side overlap (%) give the exposure and line spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD calculator report&lt;/b&gt;: optional HTML report.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every result is also an output number, so the graphical modeler can chain it.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الكاميرا المعرّفة مسبقًا&lt;/b&gt; (الافتراضي: مخصّص): تملأ قيم المستشعر والصورة والبعد البؤري؛ والقيم التي تُدخلها تتقدّم عليها.&lt;/li&gt;&lt;li&gt;&lt;b&gt;المسافة&lt;/b&gt; (m، الافتراضي 100): المسافة بين الكاميرا والجسم أو ارتفاع الطيران فوق الأرض، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عرض المستشعر&lt;/b&gt; (mm) و&lt;b&gt;عرض الصورة&lt;/b&gt; (px) و&lt;b&gt;البعد البؤري&lt;/b&gt; (mm، البعد البؤري الحقيقي لا المكافئ لـ 35 mm): مطلوبة مع الكاميرا «المخصّصة».&lt;/li&gt;&lt;li&gt;&lt;b&gt;ارتفاع المستشعر&lt;/b&gt; (mm) / &lt;b&gt;ارتفاع الصورة&lt;/b&gt; (px): اختياريان، لارتفاع التغطية ولتباعد الطيران.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD المستهدفة&lt;/b&gt; (cm/px): اختيارية؛ تعطي المسافة التي تحققها.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تقريب GSD كما في البحث&lt;/b&gt; (الافتراضي: لا): تقريب GSD إلى ‎0.01 cm/px‏ قبل حساب الكميات المشتقة.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (px، الافتراضي 0.3؛ و0.13 لمشغّل خبير) و&lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مستوى الهرم N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (الافتراضي 0.5، كسر في (0، 1]، أو نسبة مئوية) و&lt;b&gt;خطوة الاعتيان T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (px، ≥ 1، الافتراضي 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;σx وσy وσz وσxyz المرصودة&lt;/b&gt; (mm) و&lt;b&gt;الانحراف المعياري المرصود للسحابة الكثيفة&lt;/b&gt; (cm): اختيارية؛ تعطي نسب المرصود إلى النظري.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إضافة&lt;/b&gt; (ليست في البحث): قاعدة الاستريو (m) تعطي σ&lt;sub&gt;Z&lt;/sub&gt; للحالة العادية؛ والتداخل الأمامي/الجانبي (%) يعطي تباعد اللقطات وتباعد خطوط الطيران.&lt;/li&gt;&lt;li&gt;&lt;b&gt;تقرير حاسبة GSD&lt;/b&gt;: تقرير HTML اختياري.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;كل نتيجة هي أيضًا رقم ناتج، فيمكن ربطها في المُنمذج الرسومي.&lt;/p&gt;</translation>
         </message>
         <message>
             <source>Required with the Custom camera; overrides the preset.</source>
@@ -1437,6 +1449,54 @@
         <message>
             <source>GSD calculator report</source>
             <translation>تقرير حاسبة GSD</translation>
+        </message>
+        <message>
+            <source>Optional: gives the ratio of the observed to the theoretical accuracy.</source>
+            <translation>اختياري: يعطي نسبة الدقة المرصودة إلى الدقة النظرية.</translation>
+        </message>
+        <message>
+            <source>Not in the paper: gives the exposure and line spacing.</source>
+            <translation>ليس في البحث: يعطي التباعد بين اللقطات وبين خطوط الطيران.</translation>
+        </message>
+        <message>
+            <source>Computes the ground sampling distance (GSD) and footprint of a camera at a given distance or flying height, and the theoretical accuracy of phototriangulation and of a dense-matching cloud (Al Khalil 2019). The paper's Nikon Coolpix P100 at 5.88 m (sensor width 6.123 mm, image width 3648 px, focal length 4.6 mm) gives a GSD of 0.21455 cm/px, σxyz 1.287 mm and a footprint 7.827 m wide.</source>
+            <translation>يحسب دقة المسافة الأرضية للبكسل (GSD) والبصمة الأرضية لكاميرا عند مسافة أو ارتفاع طيران معيّن، والدقة النظرية للتثليث التصويري ولسحابة المطابقة الكثيفة (Al Khalil 2019). كاميرا Nikon Coolpix P100 في البحث على مسافة 5.88 م (عرض المستشعر 6.123 مم، عرض الصورة 3648 بكسل، البعد البؤري 4.6 مم) تعطي GSD قدرها 0.21455 سم/بكسل وσxyz قدرها 1.287 مم وبصمة بعرض 7.827 م.</translation>
+        </message>
+        <message>
+            <source>Fills the sensor, image and focal length values; values you enter override the preset.</source>
+            <translation>يملأ قيم المستشعر والصورة والبعد البؤري؛ والقيم التي تدخلها تتقدّم على الإعداد المسبق.</translation>
+        </message>
+        <message>
+            <source>Camera–object distance, or flying height above ground.</source>
+            <translation>المسافة بين الكاميرا والجسم، أو ارتفاع الطيران فوق الأرض.</translation>
+        </message>
+        <message>
+            <source>The true focal length, not the 35 mm equivalent.</source>
+            <translation>البعد البؤري الحقيقي، لا المكافئ لـ 35 مم.</translation>
+        </message>
+        <message>
+            <source>For the footprint height and the flight spacing.</source>
+            <translation>لارتفاع البصمة الأرضية والتباعد بين خطوط الطيران.</translation>
+        </message>
+        <message>
+            <source>Gives the distance that achieves it.</source>
+            <translation>يعطي المسافة التي تحققه.</translation>
+        </message>
+        <message>
+            <source>Rounds the GSD before the derived quantities, as the paper does.</source>
+            <translation>يقرّب GSD قبل حساب الكميات المشتقة، كما يفعل البحث.</translation>
+        </message>
+        <message>
+            <source>0.13 for an expert operator.</source>
+            <translation>0.13 لمشغّل خبير.</translation>
+        </message>
+        <message>
+            <source>A fraction in (0, 1], or a percentage.</source>
+            <translation>كسر ضمن (0، 1]، أو نسبة مئوية.</translation>
+        </message>
+        <message>
+            <source>Not in the paper: gives the normal-case σZ.</source>
+            <translation>ليس في البحث: يعطي σZ للحالة العادية.</translation>
         </message>
     </context>
     <context>
@@ -2069,14 +2129,6 @@
             <translation>مرشح الأرض بالتكثيف التدريجي لشبكة TIN (Axelsson).</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): seeds are the lowest points of overlapping parcels larger than the largest building; the TIN is densified with every point close enough to its facet and seen under a small enough angle from its vertices, until no point is added. Pits and spikes are removed first by a step filter.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz MAX_BUILDING=50 for a town with 50 m buildings. On the 8 ISPRS samples its mean total error is 8.05 % at the defaults; use &lt;i&gt;Ground filter (recommended)&lt;/i&gt; unless you need a TIN filter.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell&lt;/b&gt; (CELL, m, default 2): lowest point per cell for the step filter and the seeds.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Parcel size&lt;/b&gt; (MAX_BUILDING, m, default 30): larger than the largest building (30–50 m).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance to facet&lt;/b&gt; (MAX_DISTANCE, m, default 1.5) and &lt;b&gt;angle to vertices&lt;/b&gt; (MAX_ANGLE, degrees, default 18): densification limits.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Shortest facet edge&lt;/b&gt; (MIN_EDGE, m, default 1, advanced), &lt;b&gt;iteration cap&lt;/b&gt; (MAX_ITERATIONS, default 150, advanced).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Final distance&lt;/b&gt; (FINAL_DISTANCE, m, default 0.5): points this close to the final TIN are ground; &lt;b&gt;low-noise depth&lt;/b&gt; (LOW_NOISE_DEPTH, m, default 1.5): points deeper below it get class 7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Seed drop&lt;/b&gt; (SEED_DROP, %, default 0.3, advanced): lowest share of each parcel skipped before picking its seed.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes; NOISE_RADIUS m, 5; NOISE_THRESHOLD m, 1).&lt;/li&gt;</source>
-            <translation>&lt;p&gt;يصنّف سحابة نقاط LAS/LAZ إلى أرض (الصنف 2) ونقاط أخرى (الصنف 1) وضجيج منخفض (الصنف 7) بالتكثيف التدريجي لشبكة TIN ‏(Axelsson 2000): البذور هي أدنى نقاط قطع متداخلة أكبر من أكبر مبنى؛ وتُكثَّف الشبكة بكل نقطة قريبة بما يكفي من وجهها وتُرى بزاوية صغيرة بما يكفي من رؤوسه، حتى لا تُضاف أي نقطة. تُزال الحفر والنتوءات أولاً بمرشح الدرجات.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz MAX_BUILDING=50 لمدينة مبانيها 50 م. متوسط خطئه الكلي على عينات ISPRS الثماني 8.05 % بالقيم الافتراضية؛ استخدم &lt;i&gt;مرشح الأرض (الموصى به)&lt;/i&gt; ما لم تحتج إلى مرشح TIN.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;سحابة النقاط&lt;/b&gt; (INPUT): ‎.las أو ‎.laz في نظام إحداثيات مسقط (أمتار).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الخلية&lt;/b&gt; (CELL، م، الافتراضي 2): أدنى نقطة لكل خلية لمرشح الدرجات والبذور.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حجم القطعة&lt;/b&gt; (MAX_BUILDING، م، الافتراضي 30): أكبر من أكبر مبنى (30–50 م).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المسافة إلى الوجه&lt;/b&gt; (MAX_DISTANCE، م، الافتراضي 1.5) و&lt;b&gt;الزاوية إلى الرؤوس&lt;/b&gt; (MAX_ANGLE، درجات، الافتراضي 18): حدود التكثيف.&lt;/li&gt;&lt;li&gt;&lt;b&gt;أقصر ضلع للوجه&lt;/b&gt; (MIN_EDGE، م، الافتراضي 1، متقدم)، &lt;b&gt;الحد الأقصى للتكرارات&lt;/b&gt; (MAX_ITERATIONS، الافتراضي 150، متقدم).&lt;/li&gt;&lt;li&gt;&lt;b&gt;المسافة النهائية&lt;/b&gt; (FINAL_DISTANCE، م، الافتراضي 0.5): النقاط بهذا القرب من الشبكة النهائية أرض؛ &lt;b&gt;عمق الضجيج المنخفض&lt;/b&gt; (LOW_NOISE_DEPTH، م، الافتراضي 1.5): النقاط الأعمق تحتها تأخذ الصنف 7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نسبة البذور المُسقطة&lt;/b&gt; (SEED_DROP، %، الافتراضي 0.3، متقدم): أدنى نسبة من كل قطعة تُتخطى قبل اختيار بذرتها.&lt;/li&gt;&lt;li&gt;&lt;b&gt;إزالة النقاط الشاذة المنخفضة أولاً&lt;/b&gt; (NOISE، الافتراضي نعم؛ NOISE_RADIUS م، 5؛ NOISE_THRESHOLD م، 1).&lt;/li&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Reference: Axelsson, P. (2000). DEM generation from laser scanner data using adaptive TIN models. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;المرجع: Axelsson, P. (2000). DEM generation from laser scanner data using adaptive TIN models. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Cell (m)</source>
             <translation>الخلية (م)</translation>
         </message>
@@ -2116,16 +2168,48 @@
             <source>PTD: parcels {} m, distance {} m, angle {}°</source>
             <translation>PTD: قطع {} م، مسافة {} م، زاوية {}°</translation>
         </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest points of parcels larger than the largest building seed a TIN, which takes every point close enough to its facet until none is added. Its mean total error on the 8 ISPRS samples is 8.05 % at the defaults: use the recommended ground filter unless you need a TIN filter.</source>
+            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) بالتكثيف التدريجي لشبكة المثلثات TIN (Axelsson 2000): أدنى نقاط قطع أكبر من أكبر مبنى تكون بذور شبكة TIN، تضم كل نقطة قريبة بما يكفي من وجهها حتى لا تُضاف أي نقطة. متوسط خطئه الكلي على عينات ISPRS الثماني 8.05 % بالقيم الافتراضية: استخدم مرشح الأرض المُوصى به ما لم تحتج إلى مرشح TIN.</translation>
+        </message>
+        <message>
+            <source>Lowest point per cell for the step filter and the seeds.</source>
+            <translation>أدنى نقطة في كل خلية لمرشح الدرجات وللبذور.</translation>
+        </message>
+        <message>
+            <source>Larger than the largest building (30–50 m).</source>
+            <translation>أكبر من أكبر مبنى (30–50 م).</translation>
+        </message>
+        <message>
+            <source>Densification limit: distance of a point to its facet.</source>
+            <translation>حدّ التكثيف: بُعد النقطة عن وجه المثلث.</translation>
+        </message>
+        <message>
+            <source>Densification limit: angle under which a point is seen from the facet's vertices.</source>
+            <translation>حدّ التكثيف: الزاوية التي تُرى بها النقطة من رؤوس الوجه.</translation>
+        </message>
+        <message>
+            <source>Points this close to the final TIN are ground.</source>
+            <translation>النقاط القريبة إلى هذا الحد من شبكة TIN النهائية أرض.</translation>
+        </message>
+        <message>
+            <source>Points deeper below the final TIN get class 7.</source>
+            <translation>النقاط الأعمق من ذلك تحت شبكة TIN النهائية تأخذ الفئة 7.</translation>
+        </message>
+        <message>
+            <source>Lowest share of each parcel skipped before picking its seed.</source>
+            <translation>الحصة الأدنى من كل قطعة التي تُتخطّى قبل اختيار بذرتها.</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Reference: Axelsson, P. (2000). &lt;cite&gt;DEM generation from laser scanner data using adaptive TIN models&lt;/cite&gt;. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;المرجع: &lt;bdi dir="ltr"&gt;Axelsson, P. (2000). &lt;cite&gt;DEM generation from laser scanner data using adaptive TIN models&lt;/cite&gt;. IAPRS XXXIII-B4, 110–117.&lt;/bdi&gt;&lt;/p&gt;</translation>
+        </message>
     </context>
     <context>
         <name>PublishOutputsAlgorithm</name>
         <message>
             <source>Publish chain outputs</source>
             <translation>نشر مخرجات السلسلة</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Copies the files written by the earlier steps of a model to their destinations, all of them or none. It is the last step of the model 'LiDAR to DTM with accuracy': when a destination cannot be written, no classified cloud, DTM or report is left at any destination.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: CLOUD=/tmp/ground.laz DTM=/tmp/dtm.tif OUTPUT=classified.laz OUTPUT_DTM=dtm.tif → both published together.&lt;/p&gt;&lt;p&gt;Every destination is checked against the model's inputs, the files to publish and the other destinations before anything is copied. A destination in another format than its temporary file (e.g. .las for a .laz cloud) is converted. Hidden from the toolbox: used by the shipped model.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Files to publish&lt;/b&gt;: classified cloud, ground filter report, DTM, DTM report, check-point residuals, DTM accuracy report (each optional; no default).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Inputs of the chain&lt;/b&gt;: point cloud and check points (never overwritten).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Destinations&lt;/b&gt;: one per file; an unset one is not published.&lt;/li&gt;&lt;/ul&gt;</source>
-            <translation>&lt;p&gt;ينسخ الملفات التي كتبتها الخطوات السابقة في النموذج إلى وجهاتها، كلها أو لا شيء منها. وهو الخطوة الأخيرة في النموذج «من الليدار إلى نموذج التضاريس الرقمي مع الدقة»: عندما يتعذر كتابة وجهة ما، لا تبقى أي سحابة مصنفة أو نموذج تضاريس رقمي أو تقرير في أي وجهة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: CLOUD=/tmp/ground.laz DTM=/tmp/dtm.tif OUTPUT=classified.laz OUTPUT_DTM=dtm.tif ← يُنشران معًا.&lt;/p&gt;&lt;p&gt;تُفحص كل وجهة مقابل مدخلات النموذج والملفات المراد نشرها والوجهات الأخرى قبل نسخ أي شيء. وتُحوَّل الوجهة التي تختلف صيغتها عن ملفها المؤقت (مثل ‎.las لسحابة ‎.laz). مخفية من صندوق الأدوات: يستخدمها النموذج المرفق.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;الملفات المراد نشرها&lt;/b&gt;: السحابة المصنفة، وتقرير مرشح الأرض، ونموذج التضاريس الرقمي، وتقريره، وبواقي نقاط التحقق، وتقرير دقة نموذج التضاريس الرقمي (كل منها اختياري؛ بلا قيمة افتراضية).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مدخلات السلسلة&lt;/b&gt;: سحابة النقاط ونقاط التحقق (لا يُكتب فوقها أبدًا).&lt;/li&gt;&lt;li&gt;&lt;b&gt;الوجهات&lt;/b&gt;: وجهة لكل ملف؛ الوجهة غير المحددة لا يُنشر ملفها.&lt;/li&gt;&lt;/ul&gt;</translation>
         </message>
         <message>
             <source>Classified point cloud to publish</source>
@@ -2194,6 +2278,18 @@
         <message>
             <source>Published {path}</source>
             <translation>نُشر {path}</translation>
+        </message>
+        <message>
+            <source>Copies the files written by the earlier steps of a model to their destinations, all of them or none: it is the last step of the model 'LiDAR to DTM with accuracy', so a destination that cannot be written leaves no classified cloud, DTM or report anywhere. Every destination is checked against the model's inputs, the files to publish and the other destinations first; one in another format than its file (.las for a .laz cloud) is converted.</source>
+            <translation>ينسخ الملفات التي كتبتها الخطوات السابقة في النموذج إلى وجهاتها، جميعها أو لا شيء: إنها الخطوة الأخيرة في النموذج 'من LiDAR إلى نموذج تضاريس مع الدقة'، لذا فإن وجهة يتعذّر الكتابة فيها لا تترك سحابة مصنفة ولا نموذج تضاريس ولا تقريرًا في أي مكان. تُفحص كل وجهة أولًا مقابل مدخلات النموذج والملفات المراد نشرها والوجهات الأخرى؛ والوجهة بصيغة غير صيغة ملفها (.las لسحابة .laz) تُحوَّل.</translation>
+        </message>
+        <message>
+            <source>Unset: this file is not published.</source>
+            <translation>إن لم يُحدَّد: لا يُنشر هذا الملف.</translation>
+        </message>
+        <message>
+            <source>Never overwritten: checked against every destination.</source>
+            <translation>لا يُكتب فوقه أبدًا: يُفحص مقابل كل وجهة.</translation>
         </message>
     </context>
     <context>
@@ -2944,6 +3040,34 @@
         <message>
             <source>Ground filter report</source>
             <translation>تقرير مرشّح الأرض</translation>
+        </message>
+        <message>
+            <source>A .las or .laz file in a projected CRS (metres).</source>
+            <translation>ملف .las أو .laz في نظام إحداثيات مُسقط (بالأمتار).</translation>
+        </message>
+        <message>
+            <source>Every point with class 2 ground, 1 other or 7 low noise; every other attribute, VLR and the CRS copied unchanged.</source>
+            <translation>كل نقطة بالفئة 2 أرض أو 1 أخرى أو 7 ضوضاء منخفضة؛ وتُنسخ كل الخصائص الأخرى وسجلات VLR ونظام الإحداثيات دون تغيير.</translation>
+        </message>
+        <message>
+            <source>Only the ground points.</source>
+            <translation>النقاط الأرضية فقط.</translation>
+        </message>
+        <message>
+            <source>Points already classified 7 or 18 keep their class and take no part.</source>
+            <translation>النقاط المصنفة مسبقًا 7 أو 18 تحتفظ بفئتها ولا تشارك.</translation>
+        </message>
+        <message>
+            <source>Points far below their neighbours (multipath) get class 7 and take no part: one stray low point would reject every ground point around it.</source>
+            <translation>النقاط الواقعة أدنى بكثير من جيرانها (تعدد المسارات) تأخذ الفئة 7 ولا تشارك: فنقطة منخفضة شاردة واحدة كانت سترفض كل نقاط الأرض حولها.</translation>
+        </message>
+        <message>
+            <source>Side of the cells searched for lower neighbours.</source>
+            <translation>ضلع الخلايا التي يُبحث فيها عن جيران أدنى.</translation>
+        </message>
+        <message>
+            <source>A point this far below the points around it is a low outlier.</source>
+            <translation>النقطة التي تنخفض بهذا القدر عن النقاط المحيطة بها قيمة شاذة منخفضة.</translation>
         </message>
     </context>
     <context>

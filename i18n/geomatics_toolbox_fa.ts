@@ -880,10 +880,6 @@
             <translation>حذف زمانی</translation>
         </message>
         <message>
-            <source>&lt;li&gt;&lt;b&gt;Classified point cloud&lt;/b&gt; (OUTPUT, .laz/.las): every point with class 2 ground, 1 other or 7 low noise; every other attribute, VLR and the CRS copied unchanged.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Ground points&lt;/b&gt; (GROUND_OUTPUT, optional): only the ground points.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Report&lt;/b&gt; (OUTPUT_HTML, optional) in REPORT_LANGUAGE (advanced).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Keep existing noise classes&lt;/b&gt; (KEEP_NOISE, advanced, default yes): points already classified 7 or 18 keep their class and take no part.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Output numbers: N_POINTS, N_GROUND, N_NONGROUND, N_NOISE (class 7), POINTS_PER_SECOND (filter step only).&lt;/p&gt;</source>
-            <translation>&lt;li&gt;&lt;b&gt;ابر نقاط طبقه‌بندی‌شده&lt;/b&gt; (OUTPUT، ‎.laz/.las): هر نقطه با کلاس 2 زمین، 1 دیگر یا 7 نویز پایین؛ همهٔ ویژگی‌های دیگر، VLRها و سیستم مختصات بی‌تغییر کپی می‌شوند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;نقاط زمین&lt;/b&gt; (GROUND_OUTPUT، اختیاری): فقط نقاط زمین.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش&lt;/b&gt; (OUTPUT_HTML، اختیاری) به زبان REPORT_LANGUAGE (پیشرفته).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حفظ کلاس‌های نویز موجود&lt;/b&gt; (KEEP_NOISE، پیشرفته، پیش‌فرض بله): نقاطی که از پیش 7 یا 18 هستند کلاس خود را نگه می‌دارند و شرکت نمی‌کنند.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;اعداد خروجی: N_POINTS، N_GROUND، N_NONGROUND، N_NOISE (کلاس 7)، POINTS_PER_SECOND (فقط گام فیلتر).&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Example</source>
             <translation>مثال</translation>
         </message>
@@ -1205,10 +1201,6 @@
             <translation>زمین را در ابر LAS/LAZ بدون هیچ پارامتری که لازم به تنظیم باشد طبقه‌بندی می‌کند.</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013, after Zhang et al. 2003) whose raster cell and slope tolerance are derived from the cloud itself (point density, terrain slope), followed by three passes that rebuild the terrain from the points accepted and re-test every point against it.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz — nothing else.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Measured accuracy&lt;/b&gt; (total error, Sithole &amp;amp; Vosselman 2004) on the 8 ISPRS filter-test samples 11, 12, 22, 31, 41, 53, 54, 61: mean 4.06 % at these defaults; SMRF with PDAL's defaults 5.75 % in the same script. The defaults were chosen on these samples: the honest, cross-validated figure (leave one sample out) is 4.42 %; worst sample 9.82 % (samp11, steep terrain with buildings). Beats SMRF on 5 of the 8 samples.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz in a projected CRS (metres); 0.2 to 20+ points/m².&lt;/li&gt;&lt;li&gt;Advanced overrides (0 = derived from the cloud): &lt;b&gt;CELL&lt;/b&gt; (m, default 0 → 1 m), &lt;b&gt;MAX_WINDOW&lt;/b&gt; (m, default 18; must exceed the largest building), &lt;b&gt;SLOPE&lt;/b&gt; (rise/run, default 0 → 0.5 × local terrain slope, 0.10 to 0.60), &lt;b&gt;THRESHOLD&lt;/b&gt; (m, default 0.5; plus 1.25 m per unit of terrain slope), &lt;b&gt;REFINE&lt;/b&gt; (passes, default 3).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, advanced, default no): the filter finds low noise itself; yes runs the shared pre-filter first (NOISE_RADIUS m, default 5; NOISE_THRESHOLD m, default 1).&lt;/li&gt;</source>
-            <translation>&lt;p&gt;ابر نقاط LAS/LAZ را بدون هیچ پارامتری که لازم به تنظیم باشد به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) طبقه‌بندی می‌کند: یک فیلتر ریخت‌شناسی تدریجی (Pingel و همکاران 2013، برگرفته از Zhang و همکاران 2003) که سلول رستر و تلورانس شیب آن از خود ابر (تراکم نقاط، شیب زمین) به دست می‌آید، و سپس سه گذر که زمین را از نقاط پذیرفته‌شده دوباره می‌سازند و هر نقطه را دوباره با آن می‌آزمایند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz — نه چیز دیگر.&lt;/p&gt;&lt;p&gt;&lt;b&gt;دقت اندازه‌گیری‌شده&lt;/b&gt; (خطای کل، Sithole &amp;amp; Vosselman 2004) روی 8 نمونهٔ آزمون فیلتر ISPRS ‏11، 12، 22، 31، 41، 53، 54، 61: میانگین 4.06 % با این پیش‌فرض‌ها؛ SMRF با پیش‌فرض‌های PDAL در همان اسکریپت 5.75 %. پیش‌فرض‌ها روی همین نمونه‌ها انتخاب شده‌اند: عدد صادقانهٔ اعتبارسنجی متقابل (کنار گذاشتن یک نمونه) 4.42 % است؛ بدترین نمونه 9.82 % (samp11، زمین پرشیب با ساختمان). در 5 نمونه از 8 نمونه از SMRF بهتر است.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): فایل ‎.las یا ‎.laz در سیستم مختصات تصویری (متر)؛ از 0.2 تا بیش از 20 نقطه بر متر مربع.&lt;/li&gt;&lt;li&gt;جایگزین‌های پیشرفته (0 = برگرفته از ابر): &lt;b&gt;CELL&lt;/b&gt; (متر، پیش‌فرض 0 ← 1 متر)، &lt;b&gt;MAX_WINDOW&lt;/b&gt; (متر، پیش‌فرض 18؛ باید از بزرگ‌ترین ساختمان بزرگ‌تر باشد)، &lt;b&gt;SLOPE&lt;/b&gt; (ارتفاع/فاصله، پیش‌فرض 0 ← 0.5 × شیب محلی زمین، از 0.10 تا 0.60)، &lt;b&gt;THRESHOLD&lt;/b&gt; (متر، پیش‌فرض 0.5؛ به‌علاوهٔ 1.25 متر به ازای هر واحد شیب زمین)، &lt;b&gt;REFINE&lt;/b&gt; (گذرها، پیش‌فرض 3).&lt;/li&gt;&lt;li&gt;&lt;b&gt;حذف نقاط پرت پایین در آغاز&lt;/b&gt; (NOISE، پیشرفته، پیش‌فرض خیر): فیلتر خودش نویز پایین را می‌یابد؛ بله پیش‌فیلتر مشترک را اول اجرا می‌کند (NOISE_RADIUS متر، پیش‌فرض 5؛ NOISE_THRESHOLD متر، پیش‌فرض 1).&lt;/li&gt;</translation>
-        </message>
-        <message>
             <source>&lt;p&gt;References: Pingel, T. J., Clarke, K. C. &amp;amp; McBride, W. A. (2013), ISPRS J. Photogramm. Remote Sens. 77, 21–30; Zhang, K. et al. (2003), IEEE TGRS 41(4), 872–882.&lt;/p&gt;</source>
             <translation>&lt;p&gt;مراجع: Pingel, T. J., Clarke, K. C. &amp;amp; McBride, W. A. (2013), ISPRS J. Photogramm. Remote Sens. 77, 21–30؛ Zhang, K. et al. (2003), IEEE TGRS 41(4), 872–882.&lt;/p&gt;</translation>
         </message>
@@ -1248,16 +1240,36 @@
             <source>Recommended ground filter: window {} m, threshold {} m, {} refinement passes</source>
             <translation>فیلتر زمین پیشنهادی: پنجره {} متر، آستانه {} متر، {} گذر پالایش</translation>
         </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell and slope tolerance are derived from the cloud, then passes that rebuild the terrain and re-test every point. On the 8 ISPRS filter-test samples its cross-validated total error is 4.42 % (SMRF with PDAL's defaults: 5.75 %).</source>
+            <translation>ابر نقطهٔ LAS/LAZ را بدون هیچ پارامتری به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) طبقه‌بندی می‌کند: یک پالایهٔ ریخت‌شناسی تدریجی (Pingel et al. 2013) که اندازهٔ سلول و رواداری شیب آن از خود ابر به دست می‌آید، سپس گذرهایی که زمین را بازسازی و هر نقطه را دوباره آزمون می‌کنند. روی 8 نمونهٔ آزمون پالایه‌های ISPRS خطای کل آن با اعتبارسنجی متقابل 4.42 % است (SMRF با پیش‌فرض‌های PDAL: 5.75 %).</translation>
+        </message>
+        <message>
+            <source>0 = derived from the point density (about 1 m).</source>
+            <translation>0 = از تراکم نقاط به دست می‌آید (حدود 1 متر).</translation>
+        </message>
+        <message>
+            <source>Must exceed the largest building.</source>
+            <translation>باید از بزرگ‌ترین ساختمان بزرگ‌تر باشد.</translation>
+        </message>
+        <message>
+            <source>0 = half the local terrain slope (0.10 to 0.60).</source>
+            <translation>0 = نصف شیب محلی زمین (0.10 تا 0.60).</translation>
+        </message>
+        <message>
+            <source>Plus 1.25 m per unit of terrain slope.</source>
+            <translation>به‌علاوهٔ 1.25 متر برای هر واحد شیب زمین.</translation>
+        </message>
+        <message>
+            <source>Passes that rebuild the terrain from the accepted points.</source>
+            <translation>گذرهایی که زمین را از نقاط پذیرفته‌شده بازسازی می‌کنند.</translation>
+        </message>
     </context>
     <context>
         <name>GsdBatchAlgorithm</name>
         <message>
             <source>GSD and photogrammetric accuracy calculator (batch table)</source>
             <translation>محاسبه‌گر GSD و دقت فتوگرامتری (جدول دسته‌ای)</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Runs the GSD / accuracy calculator for every row of a table (CSV, spreadsheet or any layer) and writes a table with the inputs and all results.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Input columns&lt;/b&gt; (case-insensitive): &lt;i&gt;camera&lt;/i&gt; (optional preset key: nikon_p100, dji_p4rtk, dji_p1_35, phaseone_ixm100_80), &lt;i&gt;distance&lt;/i&gt; (m, required), &lt;i&gt;sensor_width&lt;/i&gt; (mm), &lt;i&gt;image_width&lt;/i&gt; (px), &lt;i&gt;focal_length&lt;/i&gt; (mm) — required unless a camera preset is given — and optionally sensor_height, image_height, target_gsd, k_m, k_s, pyramid_level, subsampling_step, observed_sx, observed_sy, observed_sz, observed_sxyz, observed_dense_std, forward_overlap, side_overlap, stereo_base (units as in the single calculator).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Output&lt;/b&gt;: the input columns plus gsd_cm, footprint_width_m, sigma_xyz_mm, dense_resolution_cm and every other result. A row with an invalid value stops the run with an error naming the row and column.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;محاسبه‌گر GSD و دقت را برای هر ردیف یک جدول (CSV، صفحه‌گسترده یا هر لایه) اجرا می‌کند و جدولی با ورودی‌ها و همهٔ نتایج می‌نویسد.&lt;/p&gt;&lt;p&gt;&lt;b&gt;ستون‌های ورودی&lt;/b&gt; (بدون حساسیت به حروف بزرگ و کوچک): &lt;i&gt;camera&lt;/i&gt; (اختیاری، کلید دوربین: nikon_p100، dji_p4rtk، dji_p1_35، phaseone_ixm100_80)، &lt;i&gt;distance&lt;/i&gt; (متر، الزامی)، &lt;i&gt;sensor_width&lt;/i&gt; (میلی‌متر)، &lt;i&gt;image_width&lt;/i&gt; (پیکسل)، &lt;i&gt;focal_length&lt;/i&gt; (میلی‌متر) — الزامی مگر آنکه دوربین داده شود — و به‌اختیار sensor_height، image_height، target_gsd، k_m، k_s، pyramid_level، subsampling_step، observed_sx، observed_sy، observed_sz، observed_sxyz، observed_dense_std، forward_overlap، side_overlap، stereo_base (با همان واحدهای محاسبه‌گر تکی).&lt;/p&gt;&lt;p&gt;&lt;b&gt;خروجی&lt;/b&gt;: ستون‌های ورودی به‌علاوهٔ gsd_cm، footprint_width_m، sigma_xyz_mm، dense_resolution_cm و دیگر نتایج. ردیفی با مقدار نامعتبر اجرا را با پیامی که ردیف و ستون را نام می‌برد متوقف می‌کند.&lt;/p&gt;</translation>
         </message>
         <message>
             <source>Table of cameras and distances</source>
@@ -1292,12 +1304,24 @@
             <translation>ردیف {row}: {err}</translation>
         </message>
         <message>
-            <source>&lt;p&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (ROUND_GSD, default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;&lt;b&gt;گرد کردن GSD مانند مقاله&lt;/b&gt; (ROUND_GSD، پیش‌فرض: خیر): GSD را پیش از محاسبهٔ کمیت‌های وابسته به ۰٫۰۱ سانتی‌متر/پیکسل گرد می‌کند.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Could not write the result table: {0}</source>
             <translation>نوشتن جدول نتایج ممکن نشد: {0}</translation>
+        </message>
+        <message>
+            <source>Runs the GSD and accuracy calculator for every row of a table (CSV, spreadsheet or any layer) and writes a table with the inputs and all results. A row with an invalid value stops the run with an error naming the row and the column.</source>
+            <translation>محاسبه‌گر GSD و دقت را برای هر سطر یک جدول (CSV، صفحه‌گسترده یا هر لایه) اجرا می‌کند و جدولی با ورودی‌ها و همهٔ نتایج می‌نویسد. سطری با مقدار نامعتبر اجرا را با خطایی که سطر و ستون را نام می‌برد متوقف می‌کند.</translation>
+        </message>
+        <message>
+            <source>Columns (any case): &lt;i&gt;camera&lt;/i&gt; (optional preset key: nikon_p100, dji_p4rtk, dji_p1_35, phaseone_ixm100_80), &lt;i&gt;distance&lt;/i&gt; (m, required), &lt;i&gt;sensor_width&lt;/i&gt; (mm), &lt;i&gt;image_width&lt;/i&gt; (px), &lt;i&gt;focal_length&lt;/i&gt; (mm) — required without a preset — and optionally sensor_height, image_height, target_gsd, k_m, k_s, pyramid_level, subsampling_step, observed_sx, observed_sy, observed_sz, observed_sxyz, observed_dense_std, forward_overlap, side_overlap, stereo_base (units as in the single calculator).</source>
+            <translation>ستون‌ها (با هر حالت حروف): &lt;i&gt;camera&lt;/i&gt; (کلید پیش‌تنظیم اختیاری: nikon_p100، dji_p4rtk، dji_p1_35، phaseone_ixm100_80)، &lt;i&gt;distance&lt;/i&gt; (متر، الزامی)، &lt;i&gt;sensor_width&lt;/i&gt; (میلی‌متر)، &lt;i&gt;image_width&lt;/i&gt; (پیکسل)، &lt;i&gt;focal_length&lt;/i&gt; (میلی‌متر) — بدون پیش‌تنظیم الزامی — و به‌طور اختیاری sensor_height، image_height، target_gsd، k_m، k_s، pyramid_level، subsampling_step، observed_sx، observed_sy، observed_sz، observed_sxyz، observed_dense_std، forward_overlap، side_overlap، stereo_base (با همان واحدهای محاسبه‌گر تکی).</translation>
+        </message>
+        <message>
+            <source>Rounds the GSD before the derived quantities, as the paper does.</source>
+            <translation>GSD را پیش از کمیت‌های مشتق گرد می‌کند، همان‌گونه که مقاله می‌کند.</translation>
+        </message>
+        <message>
+            <source>The input columns plus gsd_cm, footprint_width_m, sigma_xyz_mm, dense_resolution_cm and every other result.</source>
+            <translation>ستون‌های ورودی به‌علاوهٔ gsd_cm، footprint_width_m، sigma_xyz_mm، dense_resolution_cm و همهٔ نتایج دیگر.</translation>
         </message>
     </context>
     <context>
@@ -1403,20 +1427,8 @@
             <translation>فاصلهٔ نمونه‌برداری زمینی، پوشش زمینی و دقت نظری فتوگرامتری یک دوربین در یک فاصلهٔ معین.</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Computes the ground sampling distance (GSD) and footprint of a camera at a given distance or flying height. It also gives the theoretical accuracy of phototriangulation and of a dense-matching cloud, and compares observed accuracies with it (Al Khalil 2019).&lt;/p&gt;</source>
-            <translation>&lt;p&gt;فاصلهٔ نمونه‌برداری زمینی (GSD) و پوشش زمینی یک دوربین را در فاصله یا ارتفاع پرواز معین محاسبه می‌کند. همچنین دقت نظری مثلث‌بندی هوایی و ابر نقاط تناظریابی متراکم را می‌دهد و دقت مشاهده‌شده را با آن مقایسه می‌کند (الخلیل ۲۰۱۹).&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: the paper's Nikon Coolpix P100 at 5.88 m (sensor width 6.123 mm, image width 3648 px, focal length 4.6 mm) gives a GSD of 0.21455 cm/px, σ&lt;sub&gt;xyz&lt;/sub&gt; 1.287 mm (1.26 mm with the rounded GSD), a dense-cloud resolution of 0.858 cm and a footprint 7.827 m wide.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: دوربین Nikon Coolpix P100 مقاله در فاصلهٔ ‎5.88 m‏ (عرض حسگر ‎6.123 mm‏، عرض تصویر ‎3648 px‏، فاصلهٔ کانونی ‎4.6 mm‏) GSD برابر ‎0.21455 cm/px‏، σ&lt;sub&gt;xyz&lt;/sub&gt; برابر ‎1.287 mm‏ (‎1.26 mm‏ با GSD گردشده)، تفکیک ابر متراکم ‎0.858 cm‏ و پوشش زمینی به عرض ‎7.827 m‏ می‌دهد.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>&lt;p&gt;&lt;b&gt;Formulas&lt;/b&gt;: GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;); footprint = D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;; σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD; σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;; matching step P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;; dense resolution R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD.&lt;/p&gt;</source>
             <translation>&lt;p&gt;&lt;b&gt;فرمول‌ها&lt;/b&gt;: &lt;span dir="ltr"&gt;GSD [cm/px] = D·S&lt;sub&gt;W&lt;/sub&gt;·100/(Im&lt;sub&gt;W&lt;/sub&gt;·F&lt;sub&gt;R&lt;/sub&gt;)&lt;/span&gt;؛ پوشش زمینی = &lt;span dir="ltr"&gt;D·S&lt;sub&gt;W&lt;/sub&gt;/F&lt;sub&gt;R&lt;/sub&gt;&lt;/span&gt;؛ &lt;span dir="ltr"&gt;σ&lt;sub&gt;meas&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD&lt;/span&gt;؛ &lt;span dir="ltr"&gt;σ&lt;sub&gt;xyz&lt;/sub&gt; = k&lt;sub&gt;m&lt;/sub&gt;·GSD·k&lt;sub&gt;s&lt;/sub&gt;&lt;/span&gt;؛ گام تناظریابی &lt;span dir="ltr"&gt;P = T&lt;sub&gt;s&lt;/sub&gt;/N&lt;sub&gt;p&lt;/sub&gt;&lt;/span&gt;؛ تفکیک ابر متراکم &lt;span dir="ltr"&gt;R&lt;sub&gt;theo&lt;/sub&gt; = P·GSD&lt;/span&gt;.&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Camera preset&lt;/b&gt; (default Custom): fills the sensor, image and focal length values; values you enter override the preset.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance&lt;/b&gt; (m, default 100): camera–object distance or flying height above ground, &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor width&lt;/b&gt; (mm), &lt;b&gt;image width&lt;/b&gt; (px) and &lt;b&gt;focal length&lt;/b&gt; (mm, the true focal length, not the 35 mm equivalent): required with the Custom camera.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Sensor height&lt;/b&gt; (mm) / &lt;b&gt;image height&lt;/b&gt; (px): optional, for the footprint height and the flight spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Target GSD&lt;/b&gt; (cm/px): optional; gives the distance that achieves it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Round GSD like the paper&lt;/b&gt; (default no): round the GSD to 0.01 cm/px before the derived quantities.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (px, default 0.3; 0.13 for an expert operator) and &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pyramid level N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (default 0.5, a fraction in (0, 1], or a percentage) and &lt;b&gt;subsampling step T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (px, ≥ 1, default 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Observed σx, σy, σz, σxyz&lt;/b&gt; (mm) and &lt;b&gt;observed dense-cloud std&lt;/b&gt; (cm): optional; give the observed/theoretical ratios.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Extension&lt;/b&gt; (not in the paper): stereo base (m) gives the normal-case σ&lt;sub&gt;Z&lt;/sub&gt;; forward/side overlap (%) give the exposure and line spacing.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD calculator report&lt;/b&gt;: optional HTML report.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Every result is also an output number, so the graphical modeler can chain it.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;دوربین از پیش تعریف‌شده&lt;/b&gt; (پیش‌فرض: سفارشی): مقادیر حسگر، تصویر و فاصلهٔ کانونی را پر می‌کند؛ مقادیری که وارد کنید بر آن مقدم‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;فاصله&lt;/b&gt; (m، پیش‌فرض 100): فاصلهٔ دوربین تا شیء یا ارتفاع پرواز از زمین، &amp;gt; 0.&lt;/li&gt;&lt;li&gt;&lt;b&gt;عرض حسگر&lt;/b&gt; (mm)، &lt;b&gt;عرض تصویر&lt;/b&gt; (px) و &lt;b&gt;فاصلهٔ کانونی&lt;/b&gt; (mm، فاصلهٔ کانونی واقعی نه معادل 35 mm): با دوربین «سفارشی» الزامی‌اند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;ارتفاع حسگر&lt;/b&gt; (mm) / &lt;b&gt;ارتفاع تصویر&lt;/b&gt; (px): اختیاری، برای ارتفاع پوشش زمینی و فاصله‌گذاری پرواز.&lt;/li&gt;&lt;li&gt;&lt;b&gt;GSD هدف&lt;/b&gt; (cm/px): اختیاری؛ فاصله‌ای را می‌دهد که به آن می‌رسد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گرد کردن GSD مانند مقاله&lt;/b&gt; (پیش‌فرض: خیر): GSD را پیش از کمیت‌های مشتق به ‎0.01 cm/px‏ گرد می‌کند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;k&lt;sub&gt;m&lt;/sub&gt;&lt;/b&gt; (px، پیش‌فرض 0.3؛ 0.13 برای اپراتور خبره) و &lt;b&gt;k&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;سطح هرم N&lt;sub&gt;p&lt;/sub&gt;&lt;/b&gt; (پیش‌فرض 0.5، کسری در (0، 1]، یا درصد) و &lt;b&gt;گام زیرنمونه‌برداری T&lt;sub&gt;s&lt;/sub&gt;&lt;/b&gt; (px، ≥ 1، پیش‌فرض 2).&lt;/li&gt;&lt;li&gt;&lt;b&gt;σx، σy، σz، σxyz مشاهده‌شده&lt;/b&gt; (mm) و &lt;b&gt;انحراف معیار مشاهده‌شدهٔ ابر متراکم&lt;/b&gt; (cm): اختیاری؛ نسبت مشاهده‌شده به نظری را می‌دهند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;افزوده&lt;/b&gt; (در مقاله نیست): باز استریو (m) σ&lt;sub&gt;Z&lt;/sub&gt; حالت نرمال را می‌دهد؛ همپوشانی طولی/عرضی (%) فاصلهٔ عکس‌ها و فاصلهٔ خطوط پرواز را می‌دهد.&lt;/li&gt;&lt;li&gt;&lt;b&gt;گزارش محاسبه‌گر GSD&lt;/b&gt;: گزارش HTML اختیاری.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;هر نتیجه یک عدد خروجی نیز هست، پس در مدل‌ساز گرافیکی قابل زنجیره‌شدن است.&lt;/p&gt;</translation>
         </message>
         <message>
             <source>Required with the Custom camera; overrides the preset.</source>
@@ -1437,6 +1449,54 @@
         <message>
             <source>GSD calculator report</source>
             <translation>گزارش محاسبه‌گر GSD</translation>
+        </message>
+        <message>
+            <source>Optional: gives the ratio of the observed to the theoretical accuracy.</source>
+            <translation>اختیاری: نسبت دقت مشاهده‌شده به دقت نظری را می‌دهد.</translation>
+        </message>
+        <message>
+            <source>Not in the paper: gives the exposure and line spacing.</source>
+            <translation>در مقاله نیست: فاصلهٔ عکس‌ها و فاصلهٔ خطوط پرواز را می‌دهد.</translation>
+        </message>
+        <message>
+            <source>Computes the ground sampling distance (GSD) and footprint of a camera at a given distance or flying height, and the theoretical accuracy of phototriangulation and of a dense-matching cloud (Al Khalil 2019). The paper's Nikon Coolpix P100 at 5.88 m (sensor width 6.123 mm, image width 3648 px, focal length 4.6 mm) gives a GSD of 0.21455 cm/px, σxyz 1.287 mm and a footprint 7.827 m wide.</source>
+            <translation>فاصلهٔ نمونه‌برداری زمینی (GSD) و ردپای زمینی یک دوربین را در فاصله یا ارتفاع پرواز معین، و دقت نظری مثلث‌بندی هوایی و ابر تناظریابی متراکم را محاسبه می‌کند (Al Khalil 2019). دوربین Nikon Coolpix P100 مقاله در فاصلهٔ 5.88 متر (عرض حسگر 6.123 میلی‌متر، عرض تصویر 3648 پیکسل، فاصلهٔ کانونی 4.6 میلی‌متر) GSD برابر 0.21455 سانتی‌متر/پیکسل، σxyz برابر 1.287 میلی‌متر و ردپایی به عرض 7.827 متر می‌دهد.</translation>
+        </message>
+        <message>
+            <source>Fills the sensor, image and focal length values; values you enter override the preset.</source>
+            <translation>مقادیر حسگر، تصویر و فاصلهٔ کانونی را پر می‌کند؛ مقادیری که وارد می‌کنید بر پیش‌تنظیم مقدم‌اند.</translation>
+        </message>
+        <message>
+            <source>Camera–object distance, or flying height above ground.</source>
+            <translation>فاصلهٔ دوربین تا شیء، یا ارتفاع پرواز از سطح زمین.</translation>
+        </message>
+        <message>
+            <source>The true focal length, not the 35 mm equivalent.</source>
+            <translation>فاصلهٔ کانونی واقعی، نه معادل 35 میلی‌متری.</translation>
+        </message>
+        <message>
+            <source>For the footprint height and the flight spacing.</source>
+            <translation>برای ارتفاع ردپای زمینی و فاصلهٔ پروازها.</translation>
+        </message>
+        <message>
+            <source>Gives the distance that achieves it.</source>
+            <translation>فاصله‌ای را می‌دهد که به آن می‌رسد.</translation>
+        </message>
+        <message>
+            <source>Rounds the GSD before the derived quantities, as the paper does.</source>
+            <translation>GSD را پیش از کمیت‌های مشتق گرد می‌کند، همان‌گونه که مقاله می‌کند.</translation>
+        </message>
+        <message>
+            <source>0.13 for an expert operator.</source>
+            <translation>0.13 برای یک کاربر خبره.</translation>
+        </message>
+        <message>
+            <source>A fraction in (0, 1], or a percentage.</source>
+            <translation>کسری در بازهٔ (0، 1]، یا یک درصد.</translation>
+        </message>
+        <message>
+            <source>Not in the paper: gives the normal-case σZ.</source>
+            <translation>در مقاله نیست: σZ حالت نرمال را می‌دهد.</translation>
         </message>
     </context>
     <context>
@@ -2069,14 +2129,6 @@
             <translation>فیلتر زمین با متراکم‌سازی تدریجی TIN (Axelsson).</translation>
         </message>
         <message>
-            <source>&lt;p&gt;Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): seeds are the lowest points of overlapping parcels larger than the largest building; the TIN is densified with every point close enough to its facet and seen under a small enough angle from its vertices, until no point is added. Pits and spikes are removed first by a step filter.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz MAX_BUILDING=50 for a town with 50 m buildings. On the 8 ISPRS samples its mean total error is 8.05 % at the defaults; use &lt;i&gt;Ground filter (recommended)&lt;/i&gt; unless you need a TIN filter.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Point cloud&lt;/b&gt; (INPUT): .las or .laz in a projected CRS (metres).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Cell&lt;/b&gt; (CELL, m, default 2): lowest point per cell for the step filter and the seeds.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Parcel size&lt;/b&gt; (MAX_BUILDING, m, default 30): larger than the largest building (30–50 m).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Distance to facet&lt;/b&gt; (MAX_DISTANCE, m, default 1.5) and &lt;b&gt;angle to vertices&lt;/b&gt; (MAX_ANGLE, degrees, default 18): densification limits.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Shortest facet edge&lt;/b&gt; (MIN_EDGE, m, default 1, advanced), &lt;b&gt;iteration cap&lt;/b&gt; (MAX_ITERATIONS, default 150, advanced).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Final distance&lt;/b&gt; (FINAL_DISTANCE, m, default 0.5): points this close to the final TIN are ground; &lt;b&gt;low-noise depth&lt;/b&gt; (LOW_NOISE_DEPTH, m, default 1.5): points deeper below it get class 7.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Seed drop&lt;/b&gt; (SEED_DROP, %, default 0.3, advanced): lowest share of each parcel skipped before picking its seed.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Remove low outliers first&lt;/b&gt; (NOISE, default yes; NOISE_RADIUS m, 5; NOISE_THRESHOLD m, 1).&lt;/li&gt;</source>
-            <translation>&lt;p&gt;ابر نقاط LAS/LAZ را با متراکم‌سازی تدریجی TIN ‏(Axelsson 2000) به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) طبقه‌بندی می‌کند: بذرها پایین‌ترین نقاط قطعه‌های هم‌پوشان بزرگ‌تر از بزرگ‌ترین ساختمان‌اند؛ TIN با هر نقطه‌ای که به اندازهٔ کافی به وجه خود نزدیک است و با زاویهٔ به اندازهٔ کافی کوچک از رأس‌های آن دیده می‌شود متراکم می‌شود تا وقتی که نقطه‌ای افزوده نشود. گودال‌ها و برآمدگی‌ها ابتدا با فیلتر پله حذف می‌شوند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: INPUT=tile.laz OUTPUT=classified.laz MAX_BUILDING=50 برای شهری با ساختمان‌های 50 متری. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 8.05 % است؛ مگر به فیلتر TIN نیاز دارید، از &lt;i&gt;فیلتر زمین (پیشنهادی)&lt;/i&gt; استفاده کنید.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;ابر نقاط&lt;/b&gt; (INPUT): ‎.las یا ‎.laz در سیستم مختصات تصویری (متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;سلول&lt;/b&gt; (CELL، متر، پیش‌فرض 2): پایین‌ترین نقطهٔ هر سلول برای فیلتر پله و بذرها.&lt;/li&gt;&lt;li&gt;&lt;b&gt;اندازهٔ قطعه&lt;/b&gt; (MAX_BUILDING، متر، پیش‌فرض 30): بزرگ‌تر از بزرگ‌ترین ساختمان (30 تا 50 متر).&lt;/li&gt;&lt;li&gt;&lt;b&gt;فاصله تا وجه&lt;/b&gt; (MAX_DISTANCE، متر، پیش‌فرض 1.5) و &lt;b&gt;زاویه تا رأس‌ها&lt;/b&gt; (MAX_ANGLE، درجه، پیش‌فرض 18): حدود متراکم‌سازی.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کوتاه‌ترین ضلع وجه&lt;/b&gt; (MIN_EDGE، متر، پیش‌فرض 1، پیشرفته)، &lt;b&gt;سقف تکرار&lt;/b&gt; (MAX_ITERATIONS، پیش‌فرض 150، پیشرفته).&lt;/li&gt;&lt;li&gt;&lt;b&gt;فاصلهٔ نهایی&lt;/b&gt; (FINAL_DISTANCE، متر، پیش‌فرض 0.5): نقاطی که این اندازه به TIN نهایی نزدیک‌اند زمین‌اند؛ &lt;b&gt;عمق نویز پایین&lt;/b&gt; (LOW_NOISE_DEPTH، متر، پیش‌فرض 1.5): نقاط عمیق‌تر از آن زیر TIN کلاس 7 می‌گیرند.&lt;/li&gt;&lt;li&gt;&lt;b&gt;کنارگذاری بذر&lt;/b&gt; (SEED_DROP، %، پیش‌فرض 0.3، پیشرفته): سهم پایین‌ترین نقاط هر قطعه که پیش از انتخاب بذر کنار گذاشته می‌شود.&lt;/li&gt;&lt;li&gt;&lt;b&gt;حذف نقاط پرت پایین در آغاز&lt;/b&gt; (NOISE، پیش‌فرض بله؛ NOISE_RADIUS متر، 5؛ NOISE_THRESHOLD متر، 1).&lt;/li&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Reference: Axelsson, P. (2000). DEM generation from laser scanner data using adaptive TIN models. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;مرجع: Axelsson, P. (2000). DEM generation from laser scanner data using adaptive TIN models. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</translation>
-        </message>
-        <message>
             <source>Cell (m)</source>
             <translation>سلول (متر)</translation>
         </message>
@@ -2116,16 +2168,48 @@
             <source>PTD: parcels {} m, distance {} m, angle {}°</source>
             <translation>PTD: قطعه‌ها {} متر، فاصله {} متر، زاویه {}°</translation>
         </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest points of parcels larger than the largest building seed a TIN, which takes every point close enough to its facet until none is added. Its mean total error on the 8 ISPRS samples is 8.05 % at the defaults: use the recommended ground filter unless you need a TIN filter.</source>
+            <translation>ابر نقطهٔ LAS/LAZ را به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) با متراکم‌سازی تدریجی TIN (Axelsson 2000) طبقه‌بندی می‌کند: پایین‌ترین نقاط قطعه‌هایی بزرگ‌تر از بزرگ‌ترین ساختمان بذر یک TIN می‌شوند که هر نقطهٔ به‌قدر کافی نزدیک به وجه خود را می‌پذیرد تا جایی که نقطه‌ای افزوده نشود. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 8.05 % است: مگر به پالایهٔ TIN نیاز دارید، پالایهٔ زمین پیشنهادی را به کار ببرید.</translation>
+        </message>
+        <message>
+            <source>Lowest point per cell for the step filter and the seeds.</source>
+            <translation>پایین‌ترین نقطهٔ هر سلول برای پالایهٔ پله‌ای و بذرها.</translation>
+        </message>
+        <message>
+            <source>Larger than the largest building (30–50 m).</source>
+            <translation>بزرگ‌تر از بزرگ‌ترین ساختمان (30 تا 50 متر).</translation>
+        </message>
+        <message>
+            <source>Densification limit: distance of a point to its facet.</source>
+            <translation>حد متراکم‌سازی: فاصلهٔ نقطه تا وجه مثلث.</translation>
+        </message>
+        <message>
+            <source>Densification limit: angle under which a point is seen from the facet's vertices.</source>
+            <translation>حد متراکم‌سازی: زاویه‌ای که نقطه از رأس‌های وجه دیده می‌شود.</translation>
+        </message>
+        <message>
+            <source>Points this close to the final TIN are ground.</source>
+            <translation>نقاطی که تا این اندازه به TIN نهایی نزدیک‌اند زمین‌اند.</translation>
+        </message>
+        <message>
+            <source>Points deeper below the final TIN get class 7.</source>
+            <translation>نقاط عمیق‌تر از این زیر TIN نهایی کلاس 7 می‌گیرند.</translation>
+        </message>
+        <message>
+            <source>Lowest share of each parcel skipped before picking its seed.</source>
+            <translation>سهم پایین‌ترین بخش هر قطعه که پیش از برگزیدن بذرش کنار گذاشته می‌شود.</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Reference: Axelsson, P. (2000). &lt;cite&gt;DEM generation from laser scanner data using adaptive TIN models&lt;/cite&gt;. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;مرجع: &lt;bdi dir="ltr"&gt;Axelsson, P. (2000). &lt;cite&gt;DEM generation from laser scanner data using adaptive TIN models&lt;/cite&gt;. IAPRS XXXIII-B4, 110–117.&lt;/bdi&gt;&lt;/p&gt;</translation>
+        </message>
     </context>
     <context>
         <name>PublishOutputsAlgorithm</name>
         <message>
             <source>Publish chain outputs</source>
             <translation>انتشار خروجی‌های زنجیره</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Copies the files written by the earlier steps of a model to their destinations, all of them or none. It is the last step of the model 'LiDAR to DTM with accuracy': when a destination cannot be written, no classified cloud, DTM or report is left at any destination.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Example&lt;/b&gt;: CLOUD=/tmp/ground.laz DTM=/tmp/dtm.tif OUTPUT=classified.laz OUTPUT_DTM=dtm.tif → both published together.&lt;/p&gt;&lt;p&gt;Every destination is checked against the model's inputs, the files to publish and the other destinations before anything is copied. A destination in another format than its temporary file (e.g. .las for a .laz cloud) is converted. Hidden from the toolbox: used by the shipped model.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Files to publish&lt;/b&gt;: classified cloud, ground filter report, DTM, DTM report, check-point residuals, DTM accuracy report (each optional; no default).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Inputs of the chain&lt;/b&gt;: point cloud and check points (never overwritten).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Destinations&lt;/b&gt;: one per file; an unset one is not published.&lt;/li&gt;&lt;/ul&gt;</source>
-            <translation>&lt;p&gt;فایل‌هایی را که گام‌های پیشین یک مدل نوشته‌اند به مقصدهایشان کپی می‌کند، همه یا هیچ‌کدام. این آخرین گام مدل «از لایدار تا مدل رقومی زمین با دقت» است: وقتی یک مقصد نوشتنی نباشد، هیچ ابر طبقه‌بندی‌شده، مدل رقومی زمین یا گزارشی در هیچ مقصدی باقی نمی‌ماند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;مثال&lt;/b&gt;: CLOUD=/tmp/ground.laz DTM=/tmp/dtm.tif OUTPUT=classified.laz OUTPUT_DTM=dtm.tif ← هر دو با هم منتشر می‌شوند.&lt;/p&gt;&lt;p&gt;هر مقصد پیش از کپی هر چیزی با ورودی‌های مدل، فایل‌های انتشار و مقصدهای دیگر مقایسه می‌شود. مقصدی که قالبش با فایل موقتش فرق دارد (مثلاً ‎.las برای ابر ‎.laz) تبدیل می‌شود. در جعبه‌ابزار پنهان است: مدل همراه افزونه از آن استفاده می‌کند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;&lt;/p&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;فایل‌های انتشار&lt;/b&gt;: ابر طبقه‌بندی‌شده، گزارش فیلتر زمین، مدل رقومی زمین، گزارش آن، باقی‌مانده‌های نقاط کنترل، گزارش دقت مدل رقومی زمین (هر کدام اختیاری؛ بدون پیش‌فرض).&lt;/li&gt;&lt;li&gt;&lt;b&gt;ورودی‌های زنجیره&lt;/b&gt;: ابر نقاط و نقاط کنترل (هرگز بازنویسی نمی‌شوند).&lt;/li&gt;&lt;li&gt;&lt;b&gt;مقصدها&lt;/b&gt;: یکی برای هر فایل؛ مقصد تعیین‌نشده منتشر نمی‌شود.&lt;/li&gt;&lt;/ul&gt;</translation>
         </message>
         <message>
             <source>Classified point cloud to publish</source>
@@ -2194,6 +2278,18 @@
         <message>
             <source>Published {path}</source>
             <translation>منتشر شد: {path}</translation>
+        </message>
+        <message>
+            <source>Copies the files written by the earlier steps of a model to their destinations, all of them or none: it is the last step of the model 'LiDAR to DTM with accuracy', so a destination that cannot be written leaves no classified cloud, DTM or report anywhere. Every destination is checked against the model's inputs, the files to publish and the other destinations first; one in another format than its file (.las for a .laz cloud) is converted.</source>
+            <translation>فایل‌هایی را که گام‌های پیشین یک مدل نوشته‌اند به مقصدهایشان کپی می‌کند، همه یا هیچ‌کدام: این آخرین گام مدل «از LiDAR تا DTM همراه با دقت» است، پس مقصدی که نوشتن در آن ممکن نباشد هیچ ابر طبقه‌بندی‌شده، DTM یا گزارشی در هیچ جا باقی نمی‌گذارد. هر مقصد ابتدا با ورودی‌های مدل، فایل‌های انتشار و مقصدهای دیگر سنجیده می‌شود؛ مقصدی با قالبی جز قالب فایلش (.las برای ابر .laz) تبدیل می‌شود.</translation>
+        </message>
+        <message>
+            <source>Unset: this file is not published.</source>
+            <translation>اگر تعیین نشود: این فایل منتشر نمی‌شود.</translation>
+        </message>
+        <message>
+            <source>Never overwritten: checked against every destination.</source>
+            <translation>هرگز بازنویسی نمی‌شود: با هر مقصد سنجیده می‌شود.</translation>
         </message>
     </context>
     <context>
@@ -2944,6 +3040,34 @@
         <message>
             <source>Ground filter report</source>
             <translation>گزارش فیلتر زمین</translation>
+        </message>
+        <message>
+            <source>A .las or .laz file in a projected CRS (metres).</source>
+            <translation>فایل .las یا .laz در یک دستگاه مختصات تصویری (به متر).</translation>
+        </message>
+        <message>
+            <source>Every point with class 2 ground, 1 other or 7 low noise; every other attribute, VLR and the CRS copied unchanged.</source>
+            <translation>هر نقطه با کلاس 2 زمین، 1 دیگر یا 7 نویز پایین؛ همهٔ ویژگی‌های دیگر، VLRها و دستگاه مختصات بدون تغییر کپی می‌شوند.</translation>
+        </message>
+        <message>
+            <source>Only the ground points.</source>
+            <translation>فقط نقاط زمین.</translation>
+        </message>
+        <message>
+            <source>Points already classified 7 or 18 keep their class and take no part.</source>
+            <translation>نقاطی که از پیش 7 یا 18 طبقه‌بندی شده‌اند کلاس خود را نگه می‌دارند و شرکت نمی‌کنند.</translation>
+        </message>
+        <message>
+            <source>Points far below their neighbours (multipath) get class 7 and take no part: one stray low point would reject every ground point around it.</source>
+            <translation>نقاطی که بسیار پایین‌تر از همسایه‌هایشان‌اند (چندمسیری) کلاس 7 می‌گیرند و در فیلتر شرکت نمی‌کنند: یک نقطهٔ پایینِ سرگردان همهٔ نقاط زمینیِ اطرافش را رد می‌کرد.</translation>
+        </message>
+        <message>
+            <source>Side of the cells searched for lower neighbours.</source>
+            <translation>ضلع سلول‌هایی که برای همسایه‌های پایین‌تر جست‌وجو می‌شوند.</translation>
+        </message>
+        <message>
+            <source>A point this far below the points around it is a low outlier.</source>
+            <translation>نقطه‌ای که این اندازه پایین‌تر از نقاط اطرافش باشد، نقطهٔ پرت پایین است.</translation>
         </message>
     </context>
     <context>
