@@ -129,3 +129,71 @@ def english_leftovers(texts, allowed=ALLOWED) -> list:
         if words:
             out.append(text)
     return out
+
+
+#: Measures the laid-out page: value/unit order of every ``bdi.qty`` and the boxes of
+#: each figure's legend, north arrow and scale bar (appended to a copy of the page).
+_PROBE = """<script>(function () {
+  function box(e) { var r = e.getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; }
+  var out = {qty: [], figures: []};
+  document.querySelectorAll("bdi.qty").forEach(function (q) {
+    out.qty.push({text: q.textContent, value: box(q.querySelector(".v")),
+                  unit: box(q.querySelector(".u"))});
+  });
+  document.querySelectorAll("figure svg").forEach(function (s) {
+    var boxes = {};
+    ["legend", "north", "scale-bar"].forEach(function (c) {
+      var g = s.querySelector("g." + c);
+      if (g) { boxes[c] = box(g); }
+    });
+    out.figures.push({id: s.closest("figure").id || "", svg: box(s), boxes: boxes});
+  });
+  var pre = document.createElement("pre");
+  pre.id = "layout-probe";
+  pre.textContent = JSON.stringify(out);
+  document.body.appendChild(pre);
+})();</script>"""
+
+
+def layout(html_path, *, timeout: float = 120) -> dict:
+    """Boxes (left, top, right, bottom in CSS px) measured in Chromium's layout.
+
+    ``{"qty": [{"text", "value", "unit"}], "figures": [{"id", "svg", "boxes": {"legend",
+    "north", "scale-bar"}}]}``.
+    """
+    import json
+    html = Path(html_path).read_text(encoding="utf-8")
+    with tempfile.TemporaryDirectory(prefix="layout-") as tmp:
+        probe = Path(tmp) / "probe.html"
+        probe.write_text(html.replace("</body>", _PROBE + "</body>", 1), encoding="utf-8")
+        out = _run(["--window-size=1100,1400", "--dump-dom", probe.as_uri()], timeout)
+    match = re.search(r'<pre id="layout-probe">(.*?)</pre>', out.stdout, re.S)
+    if not match:
+        raise RuntimeError(f"no layout probe in the DOM ({out.returncode}): "
+                           f"{out.stderr[-2000:]}")
+    import html as html_lib
+    return json.loads(html_lib.unescape(match.group(1)))
+
+
+def overlap(a, b) -> bool:
+    """True when boxes ``a`` and ``b`` (left, top, right, bottom) intersect."""
+    if not a or not b:
+        return False
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def layout_problems(lay: dict) -> list:
+    """Units shown before their number, legends over north arrows / scale bars or
+    outside their figure."""
+    out = [f"unit before number: {q['text']!r}" for q in lay["qty"]
+           if not q["value"][2] <= q["unit"][0] + 0.5]
+    for f in lay["figures"]:
+        b = f["boxes"]
+        for other in ("north", "scale-bar"):
+            if overlap(b.get("legend"), b.get(other)):
+                out.append(f"figure {f['id']}: legend overlaps the {other}")
+        for name, r in b.items():
+            s = f["svg"]
+            if r[0] < s[0] - 1 or r[2] > s[2] + 1:
+                out.append(f"figure {f['id']}: {name} outside the figure ({r} vs {s})")
+    return out

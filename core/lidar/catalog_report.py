@@ -9,7 +9,7 @@ from __future__ import annotations
 from html import escape
 from typing import Callable, Optional
 
-from ..reporting import Figure, KeyValues, Paragraph, Report, T, Table, translator
+from ..reporting import Figure, KeyValues, Paragraph, Report, T, Table, svg, translator
 
 _DONE_LIGHT = (199, 233, 192)   # fast
 _DONE_DARK = (0, 109, 44)       # slow
@@ -30,7 +30,7 @@ def _legend(tr, y: int) -> str:
     for k, (colour, label) in enumerate(items):
         x = 10 + 130 * k
         out.append(f'<rect x="{x}" y="{y}" width="14" height="14" fill="{colour}"/>'
-                   f'<text x="{x + 20}" y="{y + 12}" font-size="12">{escape(label)}</text>')
+                   + svg.text(x + 20, y + 12, label, size=12))
     return "".join(out)
 
 

@@ -12,6 +12,7 @@ True
 from __future__ import annotations
 
 import math
+import re
 from typing import Any, Callable, Optional
 
 import jinja2
@@ -115,6 +116,26 @@ class _Renderer:
                 bdi(fmt_number(value, digits)))
         return markupsafe.Markup("<td>{}</td>").format(bdi(value))
 
+    def quantity(self, value, unit: str, digits) -> markupsafe.Markup:
+        """Render a value with its unit as one cell.
+
+        A unit symbol (m, s, m²) stays with its number in ONE left-to-right isolate, so
+        an RTL page shows "1.000 m", never "m 1.000"; a unit word with a translation
+        ("cells") follows the number in the page's own direction.
+        """
+        if isinstance(value, T):
+            return markupsafe.Markup("<td>{} {}</td>").format(self.message(value),
+                                                               bdi(unit))
+        shown = fmt_number(value, digits) if _is_number(value) else value
+        cls = ' class="num"' if _is_number(value) else ""
+        word = self.tr(unit)
+        if word != unit and re.search(r"[A-Za-z]{3}", unit):
+            return markupsafe.Markup("<td{}>{} {}</td>").format(
+                markupsafe.Markup(cls), bdi(shown), esc(word))
+        return markupsafe.Markup(
+            '<td{}><bdi dir="ltr" class="qty"><span class="v">{}</span> '
+            '<span class="u">{}</span></bdi></td>').format(markupsafe.Markup(cls), shown, unit)
+
     def table(self, b: Table) -> markupsafe.Markup:
         ncol = len(b.headers)
         digits = list(b.digits) if isinstance(b.digits, (list, tuple)) else [b.digits] * max(
@@ -138,10 +159,8 @@ class _Renderer:
         for row in b.rows:
             label, value = row[0], row[1]
             unit = row[2] if len(row) > 2 else ""
-            shown = self.cell(value, b.digits)
-            if unit:
-                shown = markupsafe.Markup(str(shown).replace(
-                    "</td>", str(markupsafe.Markup(" {}</td>").format(bdi(unit))), 1))
+            shown = self.quantity(value, unit, b.digits) if unit else self.cell(value,
+                                                                                b.digits)
             rows.append(markupsafe.Markup("<tr><th>{}</th>{}</tr>").format(
                 self.message(label), shown))
         cap = (markupsafe.Markup("<caption>{}</caption>").format(self.message(b.caption))

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import base64
 import math
+import re
 import struct
 import zlib
 from typing import Callable, Iterable, Optional, Sequence, Tuple
@@ -41,10 +42,24 @@ def figure(width: int, height: int, parts: Iterable[str], *, title: str = "") ->
     return head + label + "".join(parts) + "</svg>"
 
 
+#: Hebrew, Arabic, Syriac, Thaana, N'Ko … and the Arabic presentation forms
+_RTL_CHARS = re.compile("[\u0590-\u08ff\ufb1d-\ufdff\ufe70-\ufefc]")
+_FLIP = {"start": "end", "end": "start", "middle": "middle"}
+
+
 def text(x: float, y: float, value, *, anchor: str = "start", size: int = 11,
          ltr: bool = False, bold: bool = False) -> str:
-    """Return a ``<text>`` element; ``ltr`` for numbers, units and ids."""
-    extra = ' direction="ltr" unicode-bidi="embed"' if ltr else ""
+    """Return a ``<text>`` element; ``ltr`` for numbers, units and ids.
+
+    The direction is explicit, never inherited from the page: right-to-left text
+    (Arabic, Persian) gets ``direction="rtl"`` with the anchor mirrored, so that
+    ``anchor="start"`` always means "extends to the right of ``x``" and a layout
+    (legend beside a north arrow) is the same on an RTL and an LTR page.
+    """
+    rtl = not ltr and bool(_RTL_CHARS.search(str(value)))
+    if rtl:
+        anchor = _FLIP.get(anchor, anchor)
+    extra = f' direction="{"rtl" if rtl else "ltr"}" unicode-bidi="embed"'
     weight = ' font-weight="bold"' if bold else ""
     return (f'<text x="{x:.1f}" y="{y:.1f}" text-anchor="{anchor}" font-family="sans-serif" '
             f'font-size="{size}"{weight}{extra}>{esc(value)}</text>')
@@ -121,7 +136,7 @@ def legend(x: float, y: float, entries: Sequence[Tuple[str, str]], *, title: str
         else:
             parts.append(f'<rect x="{x:.1f}" y="{yy:.1f}" width="10" height="10" '
                          f'fill="{colour}" stroke="#333" stroke-width="0.6"/>')
-        parts.append(text(x + 15, yy + 9, label, ltr=True, size=10))
+        parts.append(text(x + 15, yy + 9, label, size=10))
     parts.append("</g>")
     return "".join(parts)
 
@@ -318,15 +333,14 @@ def svg_raster(values, *, title: str = "", unit: str = "", ramp: str = "viridis"
     width, height = iw + 110, ih + 40
     return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width:.0f}" '
             f'height="{height:.0f}" viewBox="0 0 {width:.0f} {height:.0f}">'
-            f'<text x="5" y="15" font-size="12">{esc(title)}</text>'
+            + text(5, 15, title, size=12) +
             f'<image x="5" y="25" width="{iw:.1f}" height="{ih:.1f}" '
             f'style="image-rendering:pixelated" preserveAspectRatio="none" '
             f'href="data:image/png;base64,{png}"/>'
             f'<image x="{iw + 15:.1f}" y="25" width="14" height="{ih:.1f}" '
             f'preserveAspectRatio="none" href="data:image/png;base64,{bar_png}"/>'
-            f'<text x="{iw + 33:.1f}" y="33" font-size="11">{_fmt(hi)} {esc(unit)}</text>'
-            f'<text x="{iw + 33:.1f}" y="{ih + 25:.1f}" font-size="11">{_fmt(lo)} '
-            f'{esc(unit)}</text></svg>')
+            + text(iw + 33, 33, f"{_fmt(hi)} {unit}", ltr=True)
+            + text(iw + 33, ih + 25, f"{_fmt(lo)} {unit}", ltr=True) + "</svg>")
 
 
 def svg_bars(labels: Sequence, values: Sequence[float], *, xlabel: str = "",
@@ -339,7 +353,7 @@ def svg_bars(labels: Sequence, values: Sequence[float], *, xlabel: str = "",
     top = float(vals.max()) if vals.size and vals.max() > 0 else 1.0
     parts = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
              f'viewBox="0 0 {width} {height}">',
-             f'<text x="{left}" y="14" font-size="12">{esc(title)}</text>']
+             text(left, 14, title, size=12)]
     every = max(1, n // 12)
     for i, (lab, v) in enumerate(zip(labels, vals)):
         h = (height - bottom - 25) * v / top
@@ -348,12 +362,10 @@ def svg_bars(labels: Sequence, values: Sequence[float], *, xlabel: str = "",
                      f'width="{max(bw - 1, 0.5):.1f}" height="{h:.1f}" fill="{colour}">'
                      f'<title>{esc(str(lab))}: {_fmt(v)}</title></rect>')
         if i % every == 0:
-            parts.append(f'<text x="{x + bw / 2:.1f}" y="{height - bottom + 14}" '
-                         f'font-size="10" text-anchor="middle">{esc(str(lab))}</text>')
-    parts += [f'<text x="{left}" y="{height - bottom + 20 + 12}" font-size="11">'
-              f'{esc(xlabel)}</text>',
-              f'<text x="5" y="30" font-size="11">{esc(ylabel)} (max {_fmt(top)})</text>',
-              "</svg>"]
+            parts.append(text(x + bw / 2, height - bottom + 14, lab, anchor="middle",
+                              size=10, ltr=True))
+    parts += [text(left, height - bottom + 20 + 12, xlabel),
+              text(5, 30, f"{ylabel} (max {_fmt(top)})"), "</svg>"]
     return "".join(parts)
 
 

@@ -1,7 +1,8 @@
 """Every report, run through qgis_process in Arabic and Persian, read in headless Chromium.
 
 Checks through the DOM: ``<html lang dir>`` right, every expected figure present (by
-``figure_id``) and no untranslated English outside data (``tests/browser.py``).
+``figure_id``), no untranslated English outside data, and in Chromium's layout every
+value before its unit and no legend over a north arrow or scale bar (``tests/browser.py``).
 An algorithm writing a report is either in ``CASES`` or listed in ``PENDING`` with the
 reason; a test fails when a report algorithm is in neither.
 """
@@ -254,6 +255,8 @@ def test_report_in_browser(qgis_process, tmp_path, alg, lang, request):
     assert page.texts, "no visible text"
     leftovers = browser.english_leftovers(page.texts)
     assert not leftovers, f"untranslated English in {alg} ({lang}): {leftovers[:10]}"
+    # numbers before their units, legends clear of north arrows and scale bars
+    assert browser.layout_problems(browser.layout(html)) == []
 
 
 def test_leftover_detector_catches_english_and_spares_data():
@@ -263,3 +266,28 @@ def test_leftover_detector_catches_english_and_spares_data():
     page = browser.parse(dom)
     assert page.figures == ["f1"] and page.dir == "rtl"
     assert browser.english_leftovers(page.texts) == ["Cross matrix", "converged"]
+
+
+@needs_chromium
+@pytest.mark.parametrize("lang", ["en", "ar", "fa"])
+def test_units_and_map_furniture_laid_out_in_every_direction(tmp_path, lang):
+    """Numbers before their units, legend clear of the north arrow: LTR and RTL pages."""
+    import numpy as np
+
+    from geomatics_toolbox.core.reporting import KeyValues, Report, render_html
+    from geomatics_toolbox.core.reporting.i18n import translator
+    from geomatics_toolbox.core.terrain.report import hillshade_figure
+    tr = translator(lang)
+    yy, xx = np.mgrid[0:60, 0:60]
+    dtm = 200 + 0.3 * xx + 5 * np.sin(yy / 7.0)
+    dtm[30, 30] = np.nan
+    report = Report("IDW DTM report")
+    report.section("Result").add(KeyValues([("Cell size", 1.0, "m"), ("Run time", 0.1, "s"),
+                                            ("Minimum height", 196.692, "m")]))
+    report.section("Result").add(hillshade_figure(dtm, (5e5, 1.0, 0, 4e6, 0, -1.0), tr=tr))
+    html = tmp_path / f"layout_{lang}.html"
+    html.write_text(render_html(report, lang=lang), encoding="utf-8")
+    lay = browser.layout(html)
+    assert len(lay["qty"]) == 3 and lay["figures"][0]["id"] == "hillshade"
+    assert {"legend", "north", "scale-bar"} <= set(lay["figures"][0]["boxes"])
+    assert browser.layout_problems(lay) == []
