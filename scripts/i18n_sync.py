@@ -79,24 +79,28 @@ def input_error_templates() -> tuple:
     """
     templates, problems = {}, []
     for rel in sources():
-        if not rel.startswith(("core/", "algorithms/")):
-            continue
-        tree = ast.parse((ROOT / rel).read_text(encoding="utf-8"))
-        for node in ast.walk(tree):
-            func = getattr(node, "func", None)
-            if not (isinstance(node, ast.Call) and node.args and (
-                    getattr(func, "id", None) == "InputError"
-                    or getattr(func, "attr", None) == "InputError")):
-                continue
-            arg, where = node.args[0], f"{rel}:{node.lineno}"
-            text = _literal(arg)
-            if text is not None:
-                templates.setdefault(text, where)
-            elif isinstance(arg, (ast.JoinedStr, ast.BinOp)):
-                problems.append(f"{where}: InputError message built with an f-string or +; "
-                                "use a template with fields: InputError(\"... {name} ...\", "
-                                "name=value)")
+        if rel.startswith(("core/", "algorithms/")):
+            scan_input_errors((ROOT / rel).read_text(encoding="utf-8"), rel, templates,
+                              problems)
     return templates, problems
+
+
+def scan_input_errors(src: str, rel: str, templates: dict, problems: list) -> None:
+    """Add the ``InputError`` templates and problems of one source file."""
+    for node in ast.walk(ast.parse(src)):
+        func = getattr(node, "func", None)
+        if not (isinstance(node, ast.Call) and node.args and (
+                getattr(func, "id", None) == "InputError"
+                or getattr(func, "attr", None) == "InputError")):
+            continue
+        arg, where = node.args[0], f"{rel}:{node.lineno}"
+        text = _literal(arg)
+        if text is not None:
+            templates.setdefault(text, where)
+        elif isinstance(arg, (ast.JoinedStr, ast.BinOp)):
+            problems.append(f"{where}: InputError message built with an f-string or +; "
+                            "use a template with fields: InputError(\"... {name} ...\", "
+                            "name=value)")
 
 
 def tr_call_problems() -> list:
@@ -108,29 +112,32 @@ def tr_call_problems() -> list:
     """
     problems = []
     for rel in sources():
-        if rel.startswith("core/"):   # core translates from the JSON at run time, not Qt
+        if not rel.startswith("core/"):   # core translates from the JSON, not through Qt
+            problems += scan_tr_calls((ROOT / rel).read_text(encoding="utf-8"), rel)
+    return problems
+
+
+def scan_tr_calls(src: str, rel: str) -> list:
+    """Problems of one source file: tr()/translate() of a non-literal, unmarked."""
+    problems, lines = [], src.splitlines()
+    for node in ast.walk(ast.parse(src)):
+        if not isinstance(node, ast.Call):
             continue
-        src = (ROOT / rel).read_text(encoding="utf-8")
-        lines = src.splitlines()
-        for node in ast.walk(ast.parse(src)):
-            if not isinstance(node, ast.Call):
-                continue
-            name = getattr(node.func, "attr", None) or getattr(node.func, "id", None)
-            if name == "tr" and node.args:
-                arg = node.args[0]
-            elif name in ("translate", "QT_TRANSLATE_NOOP") and len(node.args) >= 2:
-                arg = node.args[1]
-            else:
-                continue
-            if _literal(arg) is not None:
-                continue
-            if "i18n: noop-list" in lines[node.lineno - 1] or \
-                    "i18n: noop-list" in lines[getattr(node, "end_lineno", node.lineno) - 1]:
-                continue
-            problems.append(f"{rel}:{node.lineno}: {name}() of a non-literal is invisible "
-                            "to pylupdate5 (stays English); pass a literal, or wrap the "
-                            "values in QT_TRANSLATE_NOOP and mark the line "
-                            "'# i18n: noop-list'")
+        name = getattr(node.func, "attr", None) or getattr(node.func, "id", None)
+        if name == "tr" and node.args:
+            arg = node.args[0]
+        elif name in ("translate", "QT_TRANSLATE_NOOP") and len(node.args) >= 2:
+            arg = node.args[1]
+        else:
+            continue
+        if _literal(arg) is not None:
+            continue
+        if "i18n: noop-list" in lines[node.lineno - 1] or \
+                "i18n: noop-list" in lines[getattr(node, "end_lineno", node.lineno) - 1]:
+            continue
+        problems.append(f"{rel}:{node.lineno}: {name}() of a non-literal is invisible "
+                        "to pylupdate5 (stays English); pass a literal, or wrap the "
+                        "values in QT_TRANSLATE_NOOP and mark the line '# i18n: noop-list'")
     return problems
 
 
