@@ -98,8 +98,10 @@ def main(argv=None) -> int:
         if lang != "en":      # the plugin's strings and QGIS's own (Run, Log, optional …)
             translator.load(str(ROOT / "i18n" / f"geomatics_toolbox_{lang}.qm"))
             qgis_translator.load(f"/usr/share/qgis/i18n/qgis_{lang}.qm")
-            QgsApplication.installTranslator(translator)
+            # as in QGIS: QGIS's translator first, the plugin's last, so that Qt consults
+            # the plugin's first and its overrides (plugin.QGIS_OVERRIDES) win
             QgsApplication.installTranslator(qgis_translator)
+            QgsApplication.installTranslator(translator)
         QgsApplication.setLayoutDirection(Qt.RightToLeft if lang in ("ar", "fa")
                                           else Qt.LeftToRight)
         try:
