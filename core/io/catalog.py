@@ -103,6 +103,8 @@ def index_tiles(paths: Iterable[str]) -> List[LasInfo]:
     for p in paths:
         try:
             infos.append(las_info(p))
+        except InputError:
+            raise                       # keeps its template (translated for the user)
         except ValueError as exc:
             raise InputError(str(exc)) from exc
     return infos
