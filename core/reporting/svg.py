@@ -34,8 +34,24 @@ def esc(text) -> str:
     return escape(str(text), {'"': "&quot;"})
 
 
+#: estimated right edge of a legend, written by :func:`legend`, read by :func:`figure`
+_LEGEND_RIGHT = re.compile(r'<g class="legend" data-right="(\d+)">')
+
+
+def text_width(value, size: int = 11, bold: bool = False) -> float:
+    """Rough rendered width of ``value`` in pixels (sans-serif, Latin or Arabic script)."""
+    return len(str(value)) * size * (0.66 if bold else 0.6)
+
+
 def figure(width: int, height: int, parts: Iterable[str], *, title: str = "") -> str:
-    """Return a complete ``<svg>`` element of ``width`` × ``height`` pixels."""
+    """Return a complete ``<svg>`` element of ``width`` × ``height`` pixels.
+
+    The width grows to hold every legend (their labels are translated, so their length
+    depends on the language).
+    """
+    parts = list(parts)
+    rights = [int(m) for p in parts for m in _LEGEND_RIGHT.findall(p)]
+    width = max([int(width)] + [r + 8 for r in rights])
     head = (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
             f'viewBox="0 0 {width} {height}" role="img">')
     label = f"<title>{esc(title)}</title>" if title else ""
@@ -121,7 +137,9 @@ def north_arrow(x: float, y: float) -> str:
 def legend(x: float, y: float, entries: Sequence[Tuple[str, str]], *, title: str = "",
            shape: str = "rect") -> str:
     """Return a legend: ``entries`` are ``(colour, label)``; ``shape`` rect, circle or line."""
-    parts = ['<g class="legend">']
+    right = max([x + text_width(title, bold=True)] + [x + 15 + text_width(label, 10)
+                                                       for _, label in entries])
+    parts = [f'<g class="legend" data-right="{math.ceil(right)}">']
     if title:
         parts.append(text(x, y, title, bold=True))
         y += 6
