@@ -55,6 +55,7 @@ from ..errors import InputError
 from ..progress import Cancelled, Monitor
 from ..reporting import T
 from . import _raster as R  # noqa: N812
+from . import _surface as S  # noqa: N812
 from .pipeline import FunctionFilter
 
 __all__ = ["RecommendedOptions", "classify", "derive", "recommended_filter", "OptionsFilter",
@@ -104,6 +105,13 @@ class RecommendedOptions:
     refine : int
         Passes that rebuild the DTM from the minima of the points labelled ground
         and relabel (3 chosen by leave-one-sample-out on ISPRS).
+    fill_radius : float
+        Half-size (m) of the window of the least-squares planes whose tangent planes
+        fill the object holes of the provisional DTM (:mod:`._surface`).
+    fill_neighbours : int
+        Border cells whose tangent planes are averaged per hole cell.
+    fill_reach : float
+        Distance (m) beyond which a border's slope no longer extrapolates.
     """
 
     cell: Optional[float] = None
@@ -116,16 +124,20 @@ class RecommendedOptions:
     slope_min: float = 0.1
     slope_max: float = 0.6
     threshold: float = 0.5
-    scaler: float = 1.25
+    scaler: float = 0.9
     low_step: float = 5.0
     low_noise_depth: float = 1.0
     min_points: int = 10
     refine: int = 3
+    fill_radius: float = 3.0
+    fill_neighbours: int = 12
+    fill_reach: float = 10.0
 
     def __post_init__(self):
         """Refuse non-positive lengths and slopes."""
         for name in ("cell_factor", "cell_min", "cell_max", "max_window", "slope_factor",
-                     "slope_min", "slope_max", "threshold", "low_step", "low_noise_depth"):
+                     "slope_min", "slope_max", "threshold", "low_step", "low_noise_depth",
+                     "fill_radius", "fill_reach"):
             if not getattr(self, name) > 0:
                 raise InputError("RecommendedOptions.{name} must be positive.", name=name)
         for name in ("cell", "slope"):
@@ -135,8 +147,9 @@ class RecommendedOptions:
                                  "(derived from the cloud).", name=name)
         if self.cell_min > self.cell_max:
             raise InputError("RecommendedOptions.cell_min must not exceed cell_max.")
-        if self.min_points < 4 or self.refine < 0:
-            raise InputError("min_points must be at least 4 and refine at least 0.")
+        if self.min_points < 4 or self.refine < 0 or self.fill_neighbours < 1:
+            raise InputError("min_points must be at least 4, refine at least 0 and "
+                             "fill_neighbours at least 1.")
 
 
 def derive(x, y, opt: RecommendedOptions) -> RecommendedOptions:
@@ -210,7 +223,7 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     for k in range(int(opt.refine)):
         rep(0.8 + 0.2 * (k + 1) / (opt.refine + 1))
         zg = pc.cell_min(z, cls == GROUND)
-        cls = label_points(z, R.fill_tin(zg, ~np.isnan(zg)), pc, opt)
+        cls = label_points(z, fill_holes(zg, ~np.isnan(zg), pc.grid, opt), pc, opt)
     rep(1.0)
     return cls
 
@@ -253,7 +266,31 @@ def surface(zmin, grid, opt, rep):
     bad = obj | low | empty
     if bad.all():
         bad = low | empty
-    return R.fill_tin(zmin, ~bad)
+    return fill_holes(zmin, ~bad, grid, opt)
+
+
+def fill_holes(z, valid, grid, opt):
+    """Fill the non-ground cells of a DTM raster with border tangent planes.
+
+    Parameters
+    ----------
+    z : ndarray
+        Raster of ground heights (NaN or anything where not ``valid``).
+    valid : ndarray of bool
+        Ground cells.
+    grid : Grid
+        Its grid.
+    opt : RecommendedOptions
+        Options (``fill_radius``, ``fill_neighbours``, ``fill_reach``).
+
+    Returns
+    -------
+    ndarray
+        The filled raster (:func:`._surface.tangent_fill`).
+    """
+    return S.tangent_fill(z, valid, grid.cell,
+                          radius=max(1, int(round(opt.fill_radius / grid.cell))),
+                          neighbours=opt.fill_neighbours, reach=opt.fill_reach)
 
 
 def terrain_slope(zf, grid, opt):

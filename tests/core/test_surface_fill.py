@@ -1,0 +1,73 @@
+"""Tangent-plane hole filling of the recommended filter's provisional DTM (core/lidar/_surface)."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from geomatics_toolbox.core.lidar import _raster as R  # noqa: N812
+from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
+
+
+def _grid(rows=40, cols=50):
+    return np.mgrid[0:rows, 0:cols].astype(float)
+
+
+@pytest.mark.parametrize("cell", [0.5, 1.0, 2.0])
+def test_plane_gradient_exact_on_planes_even_next_to_holes(cell):
+    yy, xx = _grid()
+    z = 100.0 + 0.3 * xx * cell - 0.7 * yy * cell
+    valid = np.ones(z.shape, bool)
+    valid[10:20, 15:30] = False                   # one-sided windows along the hole
+    gx, gy = S.plane_gradient(z, valid, 3, cell)
+    ok = valid
+    assert np.allclose(gx[ok], 0.3, atol=1e-9) and np.allclose(gy[ok], -0.7, atol=1e-9)
+
+
+def test_plane_gradient_zero_where_the_window_is_collinear():
+    yy, xx = _grid(9, 9)
+    valid = np.zeros(xx.shape, bool)
+    valid[4, :] = True                            # one row: no plane
+    gx, gy = S.plane_gradient(2.0 * xx + yy, valid, 2, 1.0)
+    assert np.allclose(gy[4], 0.0) and np.allclose(gx[4], 0.0)
+
+
+def test_tangent_fill_reproduces_a_plane():
+    yy, xx = _grid()
+    z = 50.0 + 0.4 * xx + 0.25 * yy
+    valid = np.ones(z.shape, bool)
+    valid[12:20, 20:27] = False                   # every hole cell within reach
+    out = S.tangent_fill(np.where(valid, z, np.nan), valid, 1.0)
+    assert np.allclose(out, z, atol=1e-9)
+
+
+def test_tangent_fill_keeps_a_crest_the_tin_cuts():
+    """Roof-shaped ridge (slopes 0.4) with its 8 m crest band removed."""
+    yy, xx = _grid(40, 41)
+    z = 100.0 - 0.4 * np.abs(xx - 20.0)
+    valid = np.abs(xx - 20.0) > 4.0
+    zin = np.where(valid, z, np.nan)
+    tin = R.fill_tin(zin, valid)
+    tan = S.tangent_fill(zin, valid, 1.0)
+    crest = (xx == 20.0) & (yy > 5) & (yy < 35)
+    assert np.all(z[crest] - tin[crest] > 1.5)            # the TIN cuts 1.6 m off
+    assert np.all(np.abs(tan[crest] - z[crest]) < 0.5)    # tangent planes keep it
+    assert np.array_equal(tan[valid], z[valid])
+
+
+def test_tangent_fill_damps_far_extrapolation():
+    """A 40 m hole on a 0.5 slope: nothing beyond the border planes' reach of 10 m."""
+    yy, xx = _grid(60, 100)
+    z = 0.5 * xx
+    valid = xx < 30                                # only the west side is known
+    out = S.tangent_fill(np.where(valid, z, np.nan), valid, 1.0, reach=10.0)
+    far = out[:, 80]
+    assert np.all(far <= 29 * 0.5 + 10 * 0.5 + 1e-9)
+    assert np.allclose(out[10:50, 35], z[10:50, 35], atol=1e-9)   # within reach: the plane
+
+
+def test_tangent_fill_few_borders_falls_back():
+    z = np.full((5, 5), np.nan)
+    valid = np.zeros((5, 5), bool)
+    valid[2, 2] = True
+    z[2, 2] = 7.0
+    assert np.allclose(S.tangent_fill(z, valid, 1.0), 7.0)
