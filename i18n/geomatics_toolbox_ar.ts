@@ -1241,10 +1241,6 @@
             <translation>مرشح الأرض الموصى به: نافذة {} م، عتبة {} م، {} تمريرات تحسين</translation>
         </message>
         <message>
-            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell and slope tolerance are derived from the cloud, then passes that rebuild the terrain and re-test every point. On the 8 ISPRS filter-test samples its cross-validated total error is 4.42 % (SMRF with PDAL's defaults: 5.75 %).</source>
-            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) دون أي معامل يُضبط: مرشح مورفولوجي تدريجي (Pingel et al. 2013) يُشتق حجم خليته وتفاوت انحداره من السحابة، ثم تمريرات تعيد بناء التضاريس وتختبر كل نقطة من جديد. على عينات اختبار المرشحات الثماني من ISPRS يبلغ خطؤه الكلي بالتحقق المتقاطع 4.42 % (SMRF بالقيم الافتراضية لـ PDAL: 5.75 %).</translation>
-        </message>
-        <message>
             <source>0 = derived from the point density (about 1 m).</source>
             <translation>0 = مشتق من كثافة النقاط (نحو 1 م).</translation>
         </message>
@@ -1257,12 +1253,16 @@
             <translation>0 = نصف انحدار التضاريس المحلي (من 0.10 إلى 0.60).</translation>
         </message>
         <message>
-            <source>Plus 1.25 m per unit of terrain slope.</source>
-            <translation>مضافًا إليه 1.25 م لكل وحدة من انحدار التضاريس.</translation>
-        </message>
-        <message>
             <source>Passes that rebuild the terrain from the accepted points.</source>
             <translation>تمريرات تعيد بناء التضاريس من النقاط المقبولة.</translation>
+        </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell and slope tolerance are derived from the cloud, then passes that rebuild the terrain and re-test every point. On the 8 ISPRS filter-test samples its cross-validated total error is 3.70 % (SMRF with PDAL's defaults: 5.75 %).</source>
+            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) دون أي معامل يُضبط: مرشح مورفولوجي تدريجي (Pingel et al. 2013) يُشتق حجم خليته وتفاوت انحداره من السحابة، ثم تمريرات تعيد بناء التضاريس وتختبر كل نقطة من جديد. على عينات اختبار المرشحات الثماني من ISPRS يبلغ خطؤه الكلي بالتحقق المتقاطع 3.70 % (SMRF بالقيم الافتراضية لـ PDAL: 5.75 %).</translation>
+        </message>
+        <message>
+            <source>Plus 0.9 m per unit of terrain slope.</source>
+            <translation>مضافًا إليه 0.9 م لكل وحدة من انحدار التضاريس.</translation>
         </message>
     </context>
     <context>
