@@ -237,6 +237,9 @@ def write_md(isprs, msg, lo, speed, quick, keep_head=None, kept=()):
                      f"{r['base_mb']:.0f} | {r['peak_mb'] * 2**20 / r['n']:.0f} | "
                      f"{r['total']:.2f} |")
         L += list(kept)
+        if kept:
+            L += ["", "Rows marked (previous run) were not re-timed in this run "
+                  "(`--speed-only --speed-filters`); they come from the table it replaced."]
     RESULTS.parent.mkdir(exist_ok=True)
     text = "\n".join(L) + "\n"
     if keep_head is not None:        # --speed-only: keep the ISPRS and LOSO sections
