@@ -161,9 +161,10 @@ class RecommendedOptions:
                                  "(derived from the cloud).", name=name)
         if self.cell_min > self.cell_max:
             raise InputError("RecommendedOptions.cell_min must not exceed cell_max.")
-        if self.min_points < 4 or self.refine < 0 or self.fill_neighbours < 1:
-            raise InputError("min_points must be at least 4, refine at least 0 and "
-                             "fill_neighbours at least 1.")
+        if self.min_points < 4 or self.refine < 0:
+            raise InputError("min_points must be at least 4 and refine at least 0.")
+        if self.fill_neighbours < 1:
+            raise InputError("RecommendedOptions.fill_neighbours must be at least 1.")
 
 
 def derive(x, y, opt: RecommendedOptions) -> RecommendedOptions:

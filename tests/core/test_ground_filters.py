@@ -137,6 +137,10 @@ def test_bad_input(mod):
 def test_bad_options():
     with pytest.raises(InputError, match="max_window"):
         recommended.RecommendedOptions(max_window=0)
+    with pytest.raises(InputError, match="fill_neighbours"):
+        recommended.RecommendedOptions(fill_neighbours=0)
+    with pytest.raises(InputError, match="fill_reach"):
+        recommended.RecommendedOptions(fill_reach=0.0)
     with pytest.raises(InputError, match="final_distance"):
         ptd.PtdOptions(max_distance=1.0, final_distance=2.0)
 
