@@ -1,6 +1,7 @@
 """Process a LiDAR tile catalog with buffers on Dask (Processing algorithm)."""
 from __future__ import annotations
 
+import numpy as np
 from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
@@ -26,6 +27,7 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
     DTM_METHOD = "DTM_METHOD"
     CELL_SIZE = "CELL_SIZE"
     BUFFER = "BUFFER"
+    CHUNK_SIZE = "CHUNK_SIZE"
     WORKERS = "WORKERS"
     SCHEDULER = "SCHEDULER"
     COG = "COG"
@@ -67,8 +69,12 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
             {self.INPUT: self.tr("All tiles must share one CRS."),
              self.GROUND_FILTER: self.tr("The first choice keeps the classes already in "
                                          "the files."),
-             self.BUFFER: self.tr("Must exceed the filter's reach (twice the LSQ tile size, "
-                                  "the slope radius) and the DTM search distance."),
+             self.BUFFER: self.tr("Must exceed the filter's reach (about 240 m for the "
+                                  "improved LSQ, 120 m for the terrain-adaptive slope "
+                                  "filter) and the DTM search distance."),
+             self.CHUNK_SIZE: self.tr("0 processes whole tiles; a size (a multiple of "
+                                      "the cell size) cuts the catalog into squares "
+                                      "read from the tiles they overlap."),
              self.SCHEDULER: self.tr("e.g. tcp://host:8786."),
              self.OUTPUT_FOLDER: self.tr("Must not hold the input tiles; receives the "
                                          "classified tiles, one DTM per tile and a VRT "
@@ -92,6 +98,8 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
             defaultValue=0))
         self.add_number(self.CELL_SIZE, self.tr("DTM cell size (m)"), 1.0, minimum=0.0)
         self.add_number(self.BUFFER, self.tr("Buffer around each tile (m)"), 100.0,
+                        minimum=0.0)
+        self.add_number(self.CHUNK_SIZE, self.tr("Chunk size (m, 0 = the tiles)"), 0.0,
                         minimum=0.0)
         self.add_number(self.WORKERS, self.tr("Worker processes (0 = one per core)"), 0,
                         minimum=0, integer=True)
@@ -126,6 +134,7 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                 cat.paths, folder, ground_filter=fkey, dtm_method=dkey,
                 cell_size=self.parameterAsDouble(parameters, self.CELL_SIZE, context),
                 buffer=self.parameterAsDouble(parameters, self.BUFFER, context),
+                chunk_size=self.parameterAsDouble(parameters, self.CHUNK_SIZE, context),
                 workers=workers or None,
                 scheduler=self.parameterAsString(parameters, self.SCHEDULER, context).strip(),
                 cog=self.parameterAsBool(parameters, self.COG, context),
@@ -133,7 +142,7 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
             for key, msg in res.failed.items():
                 feedback.reportError(self.tr("Tile {0} failed: {1}").format(key, msg))
             if out.requested(self.OUTPUT_HTML):
-                report = catalog_report(res, cat.bounds,
+                report = catalog_report(res, np.asarray(res.settings["bounds"]),
                                         lang=self.report_lang(parameters, context))
                 out.write_text(self.OUTPUT_HTML, self.render_report(report, parameters,
                                                                     context))

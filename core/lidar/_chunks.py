@@ -19,7 +19,7 @@ import numpy as np
 
 from ..io.catalog import read_box
 from ..io.contract import OutputContract
-from ..io.las import read_las, write_las_like
+from ..io.las import read_las, write_las, write_las_like
 from ..io.raster import write_geotiff
 from ..terrain.grid import GridSpec
 
@@ -73,7 +73,8 @@ def _slope(mode):
         from .noise import flag_low_outliers
         from .slope import slope_filter
         low = flag_low_outliers(x, y, z)
-        res = slope_filter(x, y, z, classify=~low, neighbours=~low, mode=mode)
+        res = slope_filter(x, y, z, classify=~low, neighbours=~low, mode=mode,
+                           trend_origin=origin)
         cls = np.where(res.ground, GROUND, 1).astype(np.uint8)
         cls[low] = 7
         return cls
@@ -99,21 +100,38 @@ register_ground_filter("keep", "Keep the classes in the files", _keep)
 register_ground_filter("lsq_faithful", "LSQ surfaces (faithful)", _lsq("faithful"), tiling=True)
 register_ground_filter("lsq_improved", "LSQ surfaces (improved)", _lsq("improved"), tiling=True)
 register_ground_filter("slope_exact", "Slope filter (exact)", _slope("exact"))
-register_ground_filter("slope_adaptive", "Slope filter (terrain-adaptive)", _slope("adaptive"))
+register_ground_filter("slope_adaptive", "Slope filter (terrain-adaptive)", _slope("adaptive"),
+                       tiling=True)
 register_ground_filter(RECOMMENDED_FILTER, "Ground filter (recommended)", _recommended)
+def _tin(x, y, z, grid, max_distance):
+    """Delaunay TIN; the edge limit is the catalog-wide gap distance (not per chunk)."""
+    from ..terrain.tin import tin_grid
+    if x.size < 3:
+        return np.full(grid.shape, np.nan)
+    return tin_grid(x, y, z, grid, max_edge=max_distance).z
+
+
 register_dtm_method("idw", "IDW", _idw)
 register_dtm_method("kriging", "Kriging", _kriging)
+register_dtm_method("tin", "TIN", _tin)
 
 
 # ============================================================================ the task
 @dataclass
 class ChunkTask:
-    """Everything a worker needs to process one chunk (one tile)."""
+    """Everything a worker needs to process one chunk (a whole tile or a square box).
+
+    Tile mode (``tile`` set): the chunk is that tile, read whole, plus the points of
+    ``sources[1:]`` (its neighbours) inside the buffered box; the classified output is
+    a copy of the tile with new classes (every attribute kept). Box mode
+    (``tile=None``, a regular ``CHUNK_SIZE``): only the points of ``sources`` inside
+    the buffered box are read, the chunk owns the points in its half-open box
+    ``[xmin, xmax) x [ymin, ymax)`` and writes them as a new LAS/LAZ (``las_format``).
+    """
 
     key: str
-    tile: str
-    neighbours: List[str]
-    bounds: Tuple[float, float, float, float]       # xmin, ymin, xmax, ymax of the tile
+    sources: List[str]
+    bounds: Tuple[float, float, float, float]       # xmin, ymin, xmax, ymax of the chunk
     buffer: float
     origin: Tuple[float, float]
     cell_size: float
@@ -121,11 +139,19 @@ class ChunkTask:
     ground_filter: str
     dtm_method: str
     max_distance: float
+    tile: Optional[str] = None
+    las_format: dict = field(default_factory=dict)            # box mode: writer settings
+    cost: float = 0.0                                         # estimated points read
     outputs: Dict[str, str] = field(default_factory=dict)   # LAS, DTM, DONE
     fail_once: bool = False                                   # tests: first attempt fails
 
+    @property
+    def neighbours(self) -> List[str]:
+        """Tile mode: the tiles that lend buffer points (all but the chunk's own)."""
+        return self.sources[1:] if self.tile else list(self.sources)
+
     def buffered_box(self) -> Tuple[float, float, float, float]:
-        """Tile bounds grown by the buffer."""
+        """Chunk bounds grown by the buffer."""
         b = self.buffer
         return (self.bounds[0] - b, self.bounds[1] - b, self.bounds[2] + b, self.bounds[3] + b)
 
@@ -133,14 +159,18 @@ class ChunkTask:
 def is_done(task: ChunkTask) -> Optional[dict]:
     """Stats of a chunk finished by an earlier run (marker and outputs present), else None."""
     done = task.outputs["DONE"]
-    if not (os.path.exists(done) and all(os.path.exists(task.outputs[k])
-                                         for k in ("LAS", "DTM"))):
+    if not os.path.exists(done):
         return None
     try:
         with open(done, encoding="utf-8") as fh:
-            return json.load(fh)
+            stats = json.load(fh)
     except (OSError, ValueError):
         return None
+    if stats.get("status") == "empty":
+        return stats
+    if not all(os.path.exists(task.outputs[k]) for k in ("LAS", "DTM")):
+        return None
+    return stats
 
 
 def snap_grid(bounds, origin, cell: float, crs=None) -> GridSpec:
@@ -170,40 +200,111 @@ def _fail_first_attempt(task: ChunkTask) -> None:
         raise RuntimeError(f"injected failure of chunk {task.key} (test)")
 
 
-def classify_chunk(task: ChunkTask):
-    """Read the tile and its buffer, run the ground filter; classes of the tile's points."""
+def single_threaded() -> None:
+    """Pin this process's native thread pools to one thread (one worker = one core).
+
+    laspy's default LAZ backend decodes and encodes on a rayon pool as wide as the
+    machine, and BLAS/OpenMP pools do the same: with one worker per core they would
+    oversubscribe the cores (and make a 1-worker run use 2 cores). Effective when
+    called before the first LAZ/BLAS use of the process (a Dask worker's first task).
+    """
+    for name in ("RAYON_NUM_THREADS", "OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS",
+                 "MKL_NUM_THREADS"):
+        os.environ[name] = "1"
+
+
+class PhaseClock:
+    """Wall and CPU seconds (this process, all threads) per named phase."""
+
+    def __init__(self):
+        self.phases: Dict[str, List[float]] = {}
+        self._t = (time.perf_counter(), time.process_time())
+
+    def lap(self, name: str) -> None:
+        now = (time.perf_counter(), time.process_time())
+        self.phases[name] = [now[0] - self._t[0], now[1] - self._t[1]]
+        self._t = now
+
+
+def _read_tile_mode(task: ChunkTask):
     own = read_las(task.tile, ("classification",))
     nb, _ = read_box(task.neighbours, task.buffered_box(), ("classification",))
     x = np.concatenate([own.x, nb.x])
     y = np.concatenate([own.y, nb.y])
     z = np.concatenate([own.z, nb.z])
-    dims = {"classification": np.concatenate([own["classification"],
-                                              nb.dims.get("classification",
-                                                          np.empty(0, np.uint8))])}
-    cls = GROUND_FILTERS[task.ground_filter].func(x, y, z, dims, task.origin)
-    return (x, y, z), np.asarray(cls, dtype=np.uint8), len(own)
+    cls = np.concatenate([own["classification"],
+                          nb.dims.get("classification", np.empty(0, np.uint8))])
+    core = np.zeros(x.size, bool)
+    core[:len(own)] = True
+    return (x, y, z), {"classification": cls}, core
+
+
+def _read_box_mode(task: ChunkTask):
+    pd, _ = read_box(task.sources, task.buffered_box(), task.las_format["dimensions"])
+    x0, y0, x1, y1 = task.bounds
+    core = (pd.x >= x0) & (pd.x < x1) & (pd.y >= y0) & (pd.y < y1)
+    dims = dict(pd.dims)
+    dims.setdefault("classification", np.zeros(len(pd), np.uint8))
+    return (pd.x, pd.y, pd.z), dims, core
+
+
+def read_chunk(task: ChunkTask):
+    """Read the chunk and its buffer: ``(x, y, z), dims, core`` (core = points owned)."""
+    return _read_tile_mode(task) if task.tile else _read_box_mode(task)
+
+
+def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
+    """Classes from the chunk's ground filter for every point read (chunk and buffer)."""
+    if not core.any():
+        return np.zeros(core.size, np.uint8)
+    cls = GROUND_FILTERS[task.ground_filter].func(*xyz, dims, task.origin)
+    return np.asarray(cls, dtype=np.uint8)
+
+
+def _write_outputs(task: ChunkTask, xyz, dims, core, cls, dtm, grid) -> None:
+    outputs = {k: task.outputs[k] for k in ("LAS", "DTM")}
+    with OutputContract(outputs, inputs={"TILES": list(task.sources)}) as out:
+        if task.tile:
+            write_las_like(task.tile, out.path("LAS"), dimensions={"classification": cls[core]})
+        else:
+            fmt = task.las_format
+            new = {n: v[core] for n, v in dims.items()}
+            new["classification"] = cls[core]
+            write_las(out.path("LAS"), *(v[core] for v in xyz), dimensions=new,
+                      crs=task.crs, point_format=fmt["point_format"], version=fmt["version"],
+                      scale=fmt["scale"], extra_dims=fmt.get("extra_dims"))
+        write_geotiff(out.path("DTM"), dtm, geotransform=grid.geotransform, crs=task.crs)
 
 
 def process_chunk(task: ChunkTask) -> dict:
-    """Process one chunk end to end; returns its stats (also stored in the done marker)."""
-    t0 = time.perf_counter()
+    """Process one chunk end to end; returns its stats (also stored in the done marker).
+
+    The stats carry wall and CPU seconds per phase (read, filter, dtm, write) so the
+    benchmark can separate the parallel work from the serial part of a run.
+    """
+    single_threaded()
+    clock = PhaseClock()
     if task.fail_once:
         _fail_first_attempt(task)
-    (x, y, z), cls, n_own = classify_chunk(task)
-    t1 = time.perf_counter()
-    grid = snap_grid(task.bounds, task.origin, task.cell_size, task.crs)
-    g = cls == GROUND
-    dtm = DTM_METHODS[task.dtm_method].func(x[g], y[g], z[g], grid, task.max_distance)
-    t2 = time.perf_counter()
-    outputs = {k: task.outputs[k] for k in ("LAS", "DTM")}
-    with OutputContract(outputs, inputs={"TILES": [task.tile] + list(task.neighbours)}) as out:
-        write_las_like(task.tile, out.path("LAS"), dimensions={"classification": cls[:n_own]})
-        write_geotiff(out.path("DTM"), dtm, geotransform=grid.geotransform, crs=task.crs)
-    t3 = time.perf_counter()
-    stats = dict(key=task.key, status="done", points=int(n_own), buffer_points=int(x.size - n_own),
-                 ground=int(np.count_nonzero(cls[:n_own] == GROUND)), seconds=t3 - t0,
-                 filter_seconds=t1 - t0, dtm_seconds=t2 - t1, worker=_worker_name(),
-                 bounds=list(task.bounds),
+    xyz, dims, core = read_chunk(task)
+    clock.lap("read")
+    n_own = int(core.sum())
+    stats = dict(key=task.key, points=n_own, buffer_points=int(core.size - n_own),
+                 bounds=list(task.bounds), status="empty", ground=0)
+    if n_own:
+        cls = filter_chunk(task, xyz, dims, core)
+        clock.lap("filter")
+        grid = snap_grid(task.bounds, task.origin, task.cell_size, task.crs)
+        g = cls == GROUND
+        dtm = DTM_METHODS[task.dtm_method].func(xyz[0][g], xyz[1][g], xyz[2][g], grid,
+                                                task.max_distance)
+        clock.lap("dtm")
+        _write_outputs(task, xyz, dims, core, cls, dtm, grid)
+        clock.lap("write")
+        stats.update(status="done", ground=int(np.count_nonzero(cls[core] == GROUND)))
+    ph = clock.phases
+    stats.update(phases=ph, seconds=sum(v[0] for v in ph.values()),
+                 cpu_seconds=sum(v[1] for v in ph.values()), worker=_worker_name(),
                  peak_rss_mb=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0)
     with open(task.outputs["DONE"], "w", encoding="utf-8") as fh:
         json.dump(stats, fh)

@@ -39,6 +39,7 @@ from ._chunks import (
     DTM_METHODS,
     GROUND_FILTERS,
     ChunkTask,
+    PhaseClock,
     default_ground_filter,
     is_done,
     neighbour_paths,
@@ -152,10 +153,7 @@ def _check_folder(cat: Catalog, folder: Path) -> None:
                          "Rename them.")
 
 
-def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
-               cell_size: float, buffer: float, origin=None,
-               max_distance: Optional[float] = None) -> List[ChunkTask]:
-    """One :class:`ChunkTask` per tile (validated parameters, output paths checked)."""
+def _check_params(ground_filter, dtm_method, cell_size, buffer, chunk_size) -> None:
     if ground_filter not in GROUND_FILTERS:
         raise InputError("Unknown ground filter {ground_filter!r}; choose one of "
                          "{choices}.",
@@ -171,23 +169,95 @@ def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
                          cell_size=cell_size)
     if not (buffer >= 0 and math.isfinite(buffer)):
         raise InputError("BUFFER must be >= 0 metres (e.g. 100), got {buffer}.", buffer=buffer)
+    if not (chunk_size >= 0 and math.isfinite(chunk_size)):
+        raise InputError("CHUNK_SIZE must be >= 0 metres (0 = the tiles), got {chunk_size}.",
+                         chunk_size=chunk_size)
+    ratio = chunk_size / cell_size
+    if chunk_size and (ratio < 1 or abs(ratio - round(ratio)) > 1e-6):
+        raise InputError("CHUNK_SIZE ({chunk_size} m) must be a whole multiple of CELL_SIZE "
+                         "({cell_size} m) so the chunk DTMs tile the mosaic exactly; e.g. "
+                         "{example}.", chunk_size=f"{chunk_size:g}",
+                         cell_size=f"{cell_size:g}",
+                         example=f"{max(round(ratio), 1) * cell_size:g}")
+
+
+def _overlap_points(cat: Catalog, box) -> float:
+    """Points of the catalog expected in ``box`` (header counts x area share)."""
+    b = cat.bounds
+    w = np.clip(np.minimum(b[:, 2], box[2]) - np.maximum(b[:, 0], box[0]), 0, None)
+    h = np.clip(np.minimum(b[:, 3], box[3]) - np.maximum(b[:, 1], box[1]), 0, None)
+    area = np.maximum((b[:, 2] - b[:, 0]) * (b[:, 3] - b[:, 1]), 1e-9)
+    counts = np.array([t.count for t in cat.tiles], float)
+    return float(np.sum(counts * np.minimum(w * h / area, 1.0)))
+
+
+def _las_format(cat: Catalog) -> dict:
+    """Writer settings of box-mode chunks: the first tile's format, the finest scale."""
+    from laspy import PointFormat
+    first = cat.tiles[0]
+    standard = set(PointFormat(first.point_format).standard_dimension_names)
+    common = set.intersection(*(set(t.dimensions) for t in cat.tiles))
+    dims = [d for d in first.dimensions
+            if d in common and d in standard and d not in ("X", "Y", "Z")]
+    return dict(point_format=first.point_format, version=first.version,
+                scale=float(min(min(t.scales[:2]) for t in cat.tiles)), dimensions=dims)
+
+
+def _tile_tasks(cat: Catalog, folder: Path, common: dict) -> List[ChunkTask]:
+    tasks = []
+    for i, t in enumerate(cat.tiles):
+        box = tuple(float(v) for v in cat.bounds[i])
+        task = ChunkTask(key=Path(t.path).stem, tile=t.path, bounds=box,
+                         sources=[t.path] + neighbour_paths(cat.bounds, cat.paths, i,
+                                                            common["buffer"]),
+                         outputs=_output_names(folder, t.path), **common)
+        task.cost = _overlap_points(cat, task.buffered_box())
+        tasks.append(task)
+    return tasks
+
+
+def _box_tasks(cat: Catalog, folder: Path, size: float, common: dict) -> List[ChunkTask]:
+    """Square chunks of ``size`` on the global lattice that own at least one tile's area."""
+    ox, oy = common["origin"]
+    e = cat.extent
+    fmt = _las_format(cat)
+    suffix = Path(cat.paths[0]).suffix.lower()
+    tasks = []
+    for iy in range(math.floor((e[1] - oy) / size), math.floor((e[3] - oy) / size) + 1):
+        for ix in range(math.floor((e[0] - ox) / size), math.floor((e[2] - ox) / size) + 1):
+            box = (ox + ix * size, oy + iy * size, ox + (ix + 1) * size, oy + (iy + 1) * size)
+            if not cat.query(box):
+                continue
+            key = f"chunk_{box[0]:.0f}_{box[1]:.0f}"
+            task = ChunkTask(key=key, bounds=box, las_format=fmt, sources=[],
+                             outputs=_output_names(folder, key + suffix), **common)
+            task.sources = [cat.paths[j] for j in cat.query(task.buffered_box())]
+            task.cost = _overlap_points(cat, task.buffered_box())
+            tasks.append(task)
+    return tasks
+
+
+def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
+               cell_size: float, buffer: float, origin=None, chunk_size: float = 0.0,
+               max_distance: Optional[float] = None) -> List[ChunkTask]:
+    """One :class:`ChunkTask` per tile, or per square of ``chunk_size`` metres (> 0).
+
+    Validates the parameters and checks every output path against the inputs.
+    """
+    _check_params(ground_filter, dtm_method, cell_size, buffer, chunk_size)
     folder = Path(folder)
     _check_folder(cat, folder)
     if origin is None:
         e = cat.extent
         origin = (math.floor(e[0] / 1000.0) * 1000.0, math.floor(e[1] / 1000.0) * 1000.0)
     md = cat.default_max_distance() if max_distance is None else float(max_distance)
-    tasks, outs = [], {}
-    for i, t in enumerate(cat.tiles):
-        names = _output_names(folder, t.path)
-        outs.update({f"{k}:{i}": v for k, v in names.items() if k != "DONE"})
-        tasks.append(ChunkTask(
-            key=Path(t.path).stem, tile=t.path,
-            neighbours=neighbour_paths(cat.bounds, cat.paths, i, buffer),
-            bounds=tuple(float(v) for v in cat.bounds[i]), buffer=float(buffer),
-            origin=(float(origin[0]), float(origin[1])), cell_size=float(cell_size),
-            crs=cat.crs, ground_filter=ground_filter, dtm_method=dtm_method,
-            max_distance=md, outputs=names))
+    common = dict(buffer=float(buffer), origin=(float(origin[0]), float(origin[1])),
+                  cell_size=float(cell_size), crs=cat.crs, ground_filter=ground_filter,
+                  dtm_method=dtm_method, max_distance=md)
+    tasks = (_box_tasks(cat, folder, float(chunk_size), common) if chunk_size
+             else _tile_tasks(cat, folder, common))
+    outs = {f"{k}:{i}": v for i, t in enumerate(tasks) for k, v in t.outputs.items()
+            if k != "DONE"}
     check_paths(outs, {"TILES": cat.paths})
     return tasks
 
@@ -206,6 +276,7 @@ class CatalogResult:
     workers: int
     scheduler: str
     settings: dict = field(default_factory=dict)
+    timings: Dict[str, list] = field(default_factory=dict)
 
     @property
     def points(self) -> int:
@@ -269,9 +340,14 @@ def _client(workers: int, scheduler: str, memory_limit):
                              scheduler=scheduler,
                              exc=exc) from exc
     _worker_env()
-    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                           dashboard_address=None, memory_limit=memory_limit,
-                           silence_logs=40)
+    import dask
+    environ = dict(dask.config.get("distributed.nanny.pre-spawn-environ", {}) or {})
+    environ.update(RAYON_NUM_THREADS=1, OMP_NUM_THREADS=1, OPENBLAS_NUM_THREADS=1,
+                   MKL_NUM_THREADS=1)    # one worker = one core (see single_threaded)
+    with dask.config.set({"distributed.nanny.pre-spawn-environ": environ}):
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                               dashboard_address=None, memory_limit=memory_limit,
+                               silence_logs=40)
     return Client(cluster), cluster
 
 
@@ -323,7 +399,8 @@ def _sweep_temps(folder: Path, tasks: Sequence[ChunkTask]) -> None:
 
 def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
                 dtm_method: str = "idw", cell_size: float = 1.0, buffer: float = 100.0,
-                workers: Optional[int] = None, scheduler: str = "", cog: bool = False,
+                chunk_size: float = 0.0, workers: Optional[int] = None,
+                scheduler: str = "", cog: bool = False,
                 origin=None, max_distance: Optional[float] = None,
                 memory_limit="auto", fail_once: Sequence[str] = (),
                 progress=None, cancel=None) -> CatalogResult:
@@ -344,7 +421,11 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
         Key of :data:`DTM_METHODS` (``idw``, ``kriging``).
     cell_size, buffer : float
         DTM cell (m) and chunk buffer (m; wider than the filter's reach: LSQ tiles,
-        slope radius, IDW search).
+        slope radius and terrain trend, IDW search, TIN edge limit).
+    chunk_size : float
+        0: one chunk per tile. > 0: square chunks of this side (m, a multiple of
+        ``cell_size``) on the global lattice, each read from the tiles it overlaps
+        (only the points in its buffered box) and written as ``chunk_<x>_<y>``.
     workers : int, optional
         Local worker processes (default: CPU count). Ignored with ``scheduler``.
     scheduler : str
@@ -359,15 +440,20 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     Returns
     -------
     CatalogResult
+        ``timings`` holds wall and CPU seconds of this (client) process per phase
+        (index, plan, cluster start, compute, cluster close, mosaic); each chunk's
+        stats hold those of its worker (read, filter, dtm, write).
     """
     t0 = time.perf_counter()
+    clock = PhaseClock()
     mon = Monitor(progress, cancel)
     cat = Catalog.open(source)
+    clock.lap("index")
     folder = Path(out_folder)
     gf = ground_filter or default_ground_filter()
     tasks = plan_tasks(cat, folder, ground_filter=gf, dtm_method=dtm_method,
                        cell_size=cell_size, buffer=buffer, origin=origin,
-                       max_distance=max_distance)
+                       chunk_size=chunk_size, max_distance=max_distance)
     (folder / STATE_DIR).mkdir(parents=True, exist_ok=True)
     previous = {t.key: is_done(t) for t in tasks}
     todo = [t for t in tasks if previous[t.key] is None]
@@ -377,34 +463,49 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     chunks = [s for s in previous.values() if s is not None]
     failed: Dict[str, str] = {}
     mon.update(len(chunks) / len(tasks))
+    clock.lap("plan")
     if todo:
         chunks += _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon,
-                            len(chunks), failed)
-    done_tasks = [t for t in tasks if t.key not in failed]
-    vrt = str(folder / "dtm.vrt")
-    cog_path = str(folder / "dtm_cog.tif") if cog else None
-    outs = {"VRT": vrt, "COG": cog_path}
-    with OutputContract(outs, inputs={"TILES": cat.paths}) as out:
-        build_vrt(out.path("VRT"), [t.outputs["DTM"] for t in done_tasks],
-                  cog_path=out.path("COG") if cog else None)
+                            len(chunks), failed, clock)
+    vrt, cog_path = _mosaic(cat, folder, tasks, failed, chunks, cog)
+    clock.lap("mosaic")
     order = {t.key: i for i, t in enumerate(tasks)}
     chunks.sort(key=lambda c: order[c["key"]])
     settings = dict(ground_filter=gf, dtm_method=dtm_method, cell_size=float(cell_size),
-                    buffer=float(buffer), tiles=len(tasks), points_total=cat.n_points,
-                    crs=cat.crs or "", origin=tasks[0].origin,
-                    keys=[t.key for t in tasks], bounds=cat.bounds.tolist())
+                    buffer=float(buffer), chunk_size=float(chunk_size), tiles=len(tasks),
+                    points_total=cat.n_points, crs=cat.crs or "", origin=tasks[0].origin,
+                    keys=[t.key for t in tasks], bounds=[list(t.bounds) for t in tasks])
     return CatalogResult(chunks=chunks, failed=failed,
                          skipped=[k for k, v in previous.items() if v is not None],
                          vrt=vrt, cog=cog_path, seconds=time.perf_counter() - t0,
-                         workers=nw, scheduler=scheduler or "local", settings=settings)
+                         workers=nw, scheduler=scheduler or "local", settings=settings,
+                         timings=clock.phases)
 
 
-def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, failed):
+def _mosaic(cat, folder: Path, tasks, failed, chunks, cog: bool):
+    """VRT (and COG) of the chunk DTMs that exist (failed and empty chunks left out)."""
+    empty = {c["key"] for c in chunks if c.get("status") == "empty"}
+    rasters = [t.outputs["DTM"] for t in tasks if t.key not in failed and t.key not in empty]
+    vrt = str(folder / "dtm.vrt")
+    cog_path = str(folder / "dtm_cog.tif") if cog else None
+    with OutputContract({"VRT": vrt, "COG": cog_path}, inputs={"TILES": cat.paths}) as out:
+        build_vrt(out.path("VRT"), rasters, cog_path=out.path("COG") if cog else None)
+    return vrt, cog_path
+
+
+def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, failed,
+              clock):
     client, cluster = _client(nw, scheduler, memory_limit)
+    clock.lap("cluster start")
     try:
+        # largest chunks first (longest-processing-time order): the last chunk to
+        # finish is a small one, so workers idle less at the end of the run
         futures = {client.submit(process_chunk, t, key=f"chunk-{t.key}-{time.time_ns()}",
-                                 retries=1, pure=False): t.key for t in todo}
-        return _collect(futures, mon, len(tasks), n_before, failed)
+                                 retries=1, pure=False, priority=int(t.cost)): t.key
+                   for t in todo}
+        results = _collect(futures, mon, len(tasks), n_before, failed)
+        clock.lap("compute")
+        return results
     except BaseException:
         client.close()
         if cluster is not None:
@@ -417,6 +518,7 @@ def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, f
             client.close()
         if cluster is not None:
             cluster.close()
+        clock.lap("cluster close")
         for t in todo:
             flag = Path(t.outputs["DONE"] + ".attempted")
             if flag.exists():

@@ -1045,6 +1045,8 @@ def _blend(x, y, x0, y0, size, ny, ukeys, coef, solved, order, bilinear=True,
         acc = np.zeros(xs.size)
         gacc = np.zeros(xs.size)
         wsum = np.zeros(xs.size)
+        own_z = np.full(xs.size, np.nan)
+        own_g = np.zeros(xs.size)
         if bilinear:
             corners = ((0, 0, (1 - tx) * (1 - ty)), (1, 0, tx * (1 - ty)),
                        (0, 1, (1 - tx) * ty), (1, 1, tx * ty))
@@ -1065,14 +1067,25 @@ def _blend(x, y, x0, y0, size, ny, ukeys, coef, solved, order, bilinear=True,
             u = (xs[hit] - (x0 + (ti[hit] + 0.5) * size)) / h
             v = (ys[hit] - (y0 + (tj[hit] + 0.5) * size)) / h
             ww = w[hit]
-            acc[hit] += ww * _eval(coef, k, u, v, order)
-            gacc[hit] += ww * _grad(coef, k, u, v, order, h)
+            val, grd = _eval(coef, k, u, v, order), _grad(coef, k, u, v, order, h)
+            acc[hit] += ww * val
+            gacc[hit] += ww * grd
             wsum[hit] += ww
+            if not bilinear:        # the own tile alone where it is solved (see below)
+                mine = ww == 1.0
+                own_z[np.flatnonzero(hit)[mine]] = val[mine]
+                own_g[np.flatnonzero(hit)[mine]] = grd[mine]
         good = wsum > 0
         zz = np.full(xs.size, np.nan)
         zz[good] = acc[good] / wsum[good]
         gg = np.zeros(xs.size)
         gg[good] = gacc[good] / wsum[good]
+        if not bilinear:
+            # no 1e-6 leak of the neighbours into a solved tile: a tile's surface then
+            # depends on its own window only, so a catalog chunk equals the merged run
+            # away from its buffer edge (the leak grew across levels into class flips)
+            mine = np.isfinite(own_z)
+            zz[mine], gg[mine] = own_z[mine], own_g[mine]
         zhat[s:s + chunk] = zz
         slope[s:s + chunk] = gg
     return zhat, slope

@@ -642,7 +642,7 @@ def max_slope(x, y, z, *, radius: float = DEFAULT_RADIUS,
 
 
 def terrain_trend(x, y, z, *, cell: float = 10.0, window: float = 60.0,
-                  neighbours=None, progress=None, cancel=None) -> np.ndarray:
+                  neighbours=None, origin=None, progress=None, cancel=None) -> np.ndarray:
     """Smooth low terrain trend surface at every point (for ``mode="adaptive"``).
 
     The lowest point per ``cell`` (a minimum grid), a morphological opening with
@@ -652,6 +652,11 @@ def terrain_trend(x, y, z, *, cell: float = 10.0, window: float = 60.0,
     leaves the terrain's steep natural slopes out of the height differences the
     slope rule tests (the "slope normalisation" of Sithole 2001 and of
     WhiteboxTools' LidarGroundPointFilter, here as an explicit surface).
+
+    ``origin`` (x, y) anchors the minimum grid on a global cell lattice (cells at
+    ``origin + k * cell``): tiles of a catalog then share cells with a run on the
+    merged cloud, and the trend equals the merged one farther than about
+    ``1.5 * window + cell`` from a tile's edge. Default: the points' lower-left corner.
     """
     from scipy import ndimage
 
@@ -662,6 +667,9 @@ def terrain_trend(x, y, z, *, cell: float = 10.0, window: float = 60.0,
     mon = Monitor(progress, cancel)
     xn, yn, zn = x[nm], y[nm], z[nm]
     x0, y0 = float(xn.min()), float(yn.min())
+    if origin is not None:
+        x0 = origin[0] + np.floor((x0 - origin[0]) / cell) * cell
+        y0 = origin[1] + np.floor((y0 - origin[1]) / cell) * cell
     nx = int((xn.max() - x0) // cell) + 1
     ny = int((yn.max() - y0) // cell) + 1
     ix = np.clip(((xn - x0) // cell).astype(np.int64), 0, nx - 1)
@@ -706,7 +714,7 @@ MODES = ("exact", "adaptive")
 def slope_filter(x, y, z, *, radius: float = DEFAULT_RADIUS, slope: float = DEFAULT_SLOPE,
                  height_tolerance: float = DEFAULT_HEIGHT_TOLERANCE, classify=None, neighbours=None,
                  mode: str = "exact", trend_cell: float = 10.0, trend_window: float = 60.0,
-                 cell: Optional[float] = None, progress=None,
+                 trend_origin=None, cell: Optional[float] = None, progress=None,
                  cancel=None) -> SlopeFilterResult:
     """Classify points as ground / non-ground with Vosselman's slope rule.
 
@@ -744,6 +752,9 @@ def slope_filter(x, y, z, *, radius: float = DEFAULT_RADIUS, slope: float = DEFA
     trend_cell, trend_window : float
         Metres; the trend's minimum-grid cell and opening/smoothing window
         (adaptive mode only). The window should exceed the largest building.
+    trend_origin : (float, float), optional
+        Global anchor of the trend's cell lattice (see :func:`terrain_trend`);
+        tile catalogs pass their origin so tiles equal the merged cloud.
     cell : float, optional
         Internal grid cell (metres); affects speed only, never the labels.
     progress, cancel : callable, optional
@@ -783,7 +794,7 @@ def slope_filter(x, y, z, *, radius: float = DEFAULT_RADIUS, slope: float = DEFA
     zz = z
     if mode == "adaptive":
         trend = terrain_trend(x, y, z, cell=trend_cell, window=trend_window, neighbours=nm,
-                              progress=None, cancel=cancel)
+                              origin=trend_origin, progress=None, cancel=cancel)
         zz = z - trend
         mon = mon.sub(0.1, 1.0)
     t = _tan(theta)

@@ -255,3 +255,132 @@ def test_chunk_failing_twice_is_reported_and_others_finish(tiles, tmp_path):
     assert not (out / "t11_classified.laz").exists()
     assert not [p for p in out.iterdir() if ".part-" in p.name]
     assert read_raster(out / "dtm.vrt").data.shape == (250, 250)
+
+
+# ---------------------------------------------------------------- regular chunk sizes
+CHUNK = 200.0    # cuts across the 250 m tiles: chunk edges at 200 and 400 m
+
+
+def _sorted_classes(x, y, z, cls):
+    """Classes ordered by coordinates (cm integers): matches points across files."""
+    order = np.lexsort((np.round(z * 100), np.round(y * 100), np.round(x * 100)))
+    return cls[order], order
+
+
+def _chunk_outputs(out: Path):
+    parts = [read_las(p, ("classification",)) for p in sorted(out.glob("chunk_*.laz"))]
+    return (np.concatenate([p.x for p in parts]), np.concatenate([p.y for p in parts]),
+            np.concatenate([p.z for p in parts]),
+            np.concatenate([p["classification"] for p in parts]), len(parts))
+
+
+@pytest.fixture(scope="module")
+def big_tiles(tmp_path_factory) -> Path:
+    """Four adjacent 400 m tiles (2 x 2, 80 000 points each): room for a 240 m buffer."""
+    d = tmp_path_factory.mktemp("big_tiles")
+    for i in range(2):
+        for j in range(2):
+            t = generate_tile(extent=(400.0, 400.0), origin=(ORIGIN[0] + 400.0 * i,
+                                                             ORIGIN[1] + 400.0 * j),
+                              density=0.5, seed=20 + 10 * i + j)
+            write_tile(t, d / f"b{i}{j}.laz")
+    return d
+
+
+# the improved LSQ's reach: each of its 4 levels (100, 50, 25, 12.5 m tiles, windows
+# grown by 25 %) seeds the next, so 1.25 x 187.5 m = 234 m of data shape a point's class
+LSQ_IMPROVED_REACH = 240.0
+
+
+@pytest.fixture(scope="module")
+def chunk_run(big_tiles, tmp_path_factory):
+    out = tmp_path_factory.mktemp("out_chunks")
+    res = cc.run_catalog(str(big_tiles), out, ground_filter="lsq_improved", cell_size=CELL,
+                         buffer=LSQ_IMPROVED_REACH, chunk_size=300.0, workers=2)
+    return out, res
+
+
+def test_chunk_size_plans_squares_and_reads_only_their_boxes(tiles, tmp_path):
+    cat = cc.Catalog.open(str(tiles))
+    tasks = cc.plan_tasks(cat, tmp_path, ground_filter="keep", dtm_method="idw",
+                          cell_size=CELL, buffer=30.0, chunk_size=CHUNK)
+    assert [t.key for t in tasks] == [f"chunk_{500000 + 200 * i}_{4000000 + 200 * j}"
+                                      for j in range(3) for i in range(3)]
+    centre = next(t for t in tasks if t.key == "chunk_500200_4000200")
+    assert centre.tile is None and len(centre.sources) == 4      # crosses all four tiles
+    corner = next(t for t in tasks if t.key == "chunk_500000_4000000")
+    assert [Path(p).stem for p in corner.sources] == ["t00"]     # 200 + 30 < 250
+    with pytest.raises(InputError, match="multiple of CELL_SIZE"):
+        cc.plan_tasks(cat, tmp_path, ground_filter="keep", dtm_method="idw",
+                      cell_size=CELL, buffer=30.0, chunk_size=201.0)
+
+
+def test_chunk_size_run_equals_merged_run(big_tiles, chunk_run):
+    """Chunks of 300 m cut across the 400 m tiles; the run equals the merged cloud's."""
+    out, res = chunk_run
+    assert not res.failed and len(res.chunks) == 9
+    assert all(set(c["phases"]) == {"read", "filter", "dtm", "write"} for c in res.chunks)
+    _, x, y, z, cls0 = _merged(big_tiles)
+    cat = cc.Catalog.open(str(big_tiles))
+    merged = GROUND_FILTERS["lsq_improved"].func(x, y, z, {"classification": cls0},
+                                                 res.settings["origin"])
+    cx, cy, cz, got, n_files = _chunk_outputs(out)
+    assert n_files == 9 and got.size == x.size     # every point in exactly one chunk
+    got_sorted, corder = _sorted_classes(cx, cy, cz, got)
+    ref_sorted, rorder = _sorted_classes(x, y, z, merged)
+    assert np.allclose(cx[corder], x[rorder], atol=0.006)
+    inner = _outer_distance(x[rorder], y[rorder], cat.extent) > LSQ_IMPROVED_REACH
+    assert inner.sum() > 40_000
+    assert np.array_equal(got_sorted[inner], ref_sorted[inner])
+    assert np.mean(got_sorted == ref_sorted) >= 0.999
+    g = merged == 2
+    grid = snap_grid(cat.extent, res.settings["origin"], CELL)
+    ref = idw_grid(x[g], y[g], z[g], grid, max_distance=cat.default_max_distance(), workers=1)
+    mosaic = _dtm(out / "dtm.vrt")
+    assert mosaic.shape == (grid.nrows + 50, grid.ncols + 50)    # 900 m of chunks
+    mosaic = mosaic[50:, :grid.ncols]                           # rows from the top
+    gx, gy = grid.block_centers(0, grid.nrows)
+    away = (_outer_distance(gx, gy, cat.extent) > LSQ_IMPROVED_REACH).reshape(grid.shape)
+    away &= np.isfinite(ref) & np.isfinite(mosaic)
+    assert away.sum() > 20_000
+    assert np.max(np.abs(mosaic[away] - ref[away])) <= 1e-3
+
+
+def test_tin_dtm_equals_merged_tin_along_internal_edges(tiles, tmp_path):
+    from geomatics_toolbox.core.terrain.tin import tin_grid
+    out = tmp_path / "tin"
+    res = cc.run_catalog(str(tiles), out, ground_filter="keep", dtm_method="tin",
+                         cell_size=CELL, buffer=40.0, chunk_size=CHUNK, workers=2)
+    assert not res.failed
+    _, x, y, z, cls0 = _merged(tiles)
+    cat = cc.Catalog.open(str(tiles))
+    g = cls0 == 2
+    grid = snap_grid(cat.extent, res.settings["origin"], CELL)
+    ref = tin_grid(x[g], y[g], z[g], grid, max_edge=cat.default_max_distance()).z
+    mosaic = _dtm(out / "dtm.vrt")[50:, :grid.ncols]
+    gx, gy = (v.reshape(grid.shape) for v in grid.block_centers(0, grid.nrows))
+    e = cat.extent
+    edges = [e[0] + 200, e[0] + 250, e[0] + 400]                # chunk and tile edges
+    band = np.zeros(grid.shape, bool)
+    for k in edges:
+        band |= np.abs(gx - k) <= 2 * CELL
+        band |= np.abs(gy - (e[1] + k - e[0])) <= 2 * CELL
+    sel = band & (_outer_distance(gx, gy, e) > 40.0) & np.isfinite(ref)
+    assert sel.sum() > 1_000
+    assert np.array_equal(np.isfinite(mosaic[sel]), np.isfinite(ref[sel]))
+    assert np.nanmax(np.abs(mosaic[sel] - ref[sel])) <= 1e-3
+
+
+def test_adaptive_slope_is_anchored_on_the_global_origin(tiles, tmp_path):
+    out = tmp_path / "slope"
+    res = cc.run_catalog(str(tiles), out, ground_filter="slope_adaptive", cell_size=CELL,
+                         buffer=BUFFER, workers=2)
+    assert not res.failed and GROUND_FILTERS["slope_adaptive"].tiling
+    paths, x, y, z, cls0 = _merged(tiles)
+    cat = cc.Catalog.open(str(tiles))
+    merged = GROUND_FILTERS["slope_adaptive"].func(x, y, z, {"classification": cls0},
+                                                   res.settings["origin"])
+    got = _catalog_classes(paths, out)
+    inner = _outer_distance(x, y, cat.extent) > BUFFER
+    assert np.array_equal(got[inner], merged[inner])
+    assert np.mean(got == merged) >= 0.999

@@ -45,3 +45,21 @@ def test_output_folder_holding_the_tiles_is_refused(qgis_processing, tiles):
         qgis_processing.run(ALG, {"INPUT": str(tiles), "GROUND_FILTER": 0,
                                   "OUTPUT_FOLDER": str(tiles)})
     assert not list(tiles.glob("*_dtm.tif"))
+
+
+def test_chunk_size_and_tin(qgis_processing, tiles, tmp_path):
+    """CHUNK_SIZE=100 cuts the two 120 m tiles into 3 x 2 chunks; TIN is a DTM_METHOD option."""
+    out = tmp_path / "out"
+    from qgis.core import QgsApplication
+    alg = QgsApplication.processingRegistry().algorithmById(ALG)
+    options = alg.parameterDefinition("DTM_METHOD").options()
+    res = qgis_processing.run(ALG, {"INPUT": str(tiles), "GROUND_FILTER": 0,
+                                    "DTM_METHOD": options.index("TIN"), "CELL_SIZE": 2.0,
+                                    "BUFFER": 30.0, "CHUNK_SIZE": 100.0, "WORKERS": 1,
+                                    "OUTPUT_FOLDER": str(out)})
+    assert res["N_TILES"] == 6 and res["N_FAILED"] == 0
+    names = sorted(p.name for p in out.glob("chunk_*.laz"))
+    assert names == [f"chunk_{500000 + 100 * i}_{4000000 + 100 * j}_classified.laz"
+                     for i in range(3) for j in range(2)]
+    n_src = sum(len(read_las(p)) for p in tiles.glob("t*.laz"))
+    assert sum(len(read_las(out / n)) for n in names) == n_src
