@@ -264,7 +264,8 @@ def main(argv=None):
             print(f"{w} worker(s): {res.seconds:.1f} s, failed {len(res.failed)}",
                   json.dumps({k: v for k, v in runs[w][1].items() if k != "chunk_cpu"}),
                   flush=True)
-            shutil.rmtree(tmp / f"out{w}" / ".catalog", ignore_errors=True)
+            Path(args.out).write_text(report(args, cat, side, gen_s, runs, None, None),
+                                      encoding="utf-8")      # partial results survive
         last = tmp / f"out{max(runs)}" / "dtm.vrt"
         origin = next(iter(runs.values()))[0].settings["origin"]
         seam = None if args.no_seam else band_seam_check(cat, last, args, origin, n_side,
@@ -313,30 +314,41 @@ def _phase_rows(runs):
     return lines
 
 
+def predicted_times(a, n_workers: int) -> dict:
+    """Serial part and predicted idle-machine times for 1 and 2 workers, from CPU seconds.
+
+    ``a`` is the analysis of one run with ``n_workers`` workers. Serial: the client
+    process's CPU plus one worker's CPU outside its chunks (start-up imports, Dask
+    bookkeeping: every worker pays it, in parallel). Parallel: the chunks' CPU seconds,
+    scheduled longest-first on 1 or 2 workers.
+    """
+    par = sum(a["chunk_cpu"])
+    startup = max(a["worker_cpu"] - par, 0.0) / n_workers
+    serial = a["client_cpu"] + startup
+    return dict(par=par, startup=startup, serial=serial,
+                t1=serial + par, t2=serial + lpt_makespan(a["chunk_cpu"], 2))
+
+
 def _amdahl(runs):
     """Serial part and predicted speed-up from CPU seconds (load-independent)."""
-    if 1 not in runs:
-        return ["(no 1-worker run: serial fraction not computed)"]
-    _, a, _ = runs[1]
-    par = sum(a["chunk_cpu"])
-    startup = max(a["worker_cpu"] - par, 0.0)       # one worker: imports, Dask bookkeeping
-    serial = a["client_cpu"] + startup
-    f = serial / (serial + par)
-    pred = (serial + par) / (serial + lpt_makespan(a["chunk_cpu"], 2))
+    w = min(runs)
+    a = runs[w][1]
+    p = predicted_times(a, w)
+    f = p["serial"] / p["t1"]
     amdahl = 1.0 / (f + (1.0 - f) / 2.0)
-    thr = max(a["chunk"][p][1] / max(a["chunk"][p][0], 1e-9) for p in CHUNK_PHASES)
-    lines = [f"1-worker run, CPU seconds: chunks {par:.1f} (the parallel work); client "
-             f"process {a['client_cpu']:.1f} (index, plan, scheduler, mosaic, report data) "
-             f"and worker start-up/bookkeeping {startup:.1f} (the worker's CPU outside its "
-             f"chunks; each worker pays it once, in parallel) — the serial part, "
-             f"{serial:.1f} s → **serial fraction {f:.3f}**. Wall time outside the chunks "
-             f"(load-dependent): {max(a['wall'] - a['chunk_wall'], 0.0):.1f} s. Largest "
-             f"CPU/wall ratio of a chunk phase: {thr:.2f} (≤ 1: one thread per worker).",
+    thr = max(a["chunk"][k][1] / max(a["chunk"][k][0], 1e-9) for k in CHUNK_PHASES)
+    lines = [f"From the {w}-worker run, CPU seconds: chunks {p['par']:.1f} (the parallel "
+             f"work); client process {a['client_cpu']:.1f} (index, plan, scheduler, "
+             f"mosaic) and worker start-up/bookkeeping {p['startup']:.1f} per worker (its "
+             f"CPU outside the chunks; each worker pays it once, in parallel) — the serial "
+             f"part, {p['serial']:.1f} s → **serial fraction {f:.3f}**. Largest CPU/wall "
+             f"ratio of a chunk phase: {thr:.2f} (≤ 1: one thread per worker).",
              "",
-             f"Predicted 2-worker speed-up on two idle cores from these CPU seconds (serial "
-             f"part + longest-first schedule of the chunk CPU times on 2 workers): "
-             f"**{pred:.2f}×** (Amdahl with perfect balance: {amdahl:.2f}×)."]
-    if 2 in runs:
+             f"Predicted on two idle cores from these CPU seconds (serial part + "
+             f"longest-first schedule of the chunk CPU times): 1 worker {p['t1']:.0f} s, "
+             f"2 workers {p['t2']:.0f} s → **{p['t1'] / p['t2']:.2f}×** (Amdahl with "
+             f"perfect balance: {amdahl:.2f}×)."]
+    if 1 in runs and 2 in runs:
         meas = runs[1][1]["wall"] / runs[2][1]["wall"]
         lines += ["", f"Measured wall-clock speed-up 2 workers vs 1: **{meas:.2f}×** "
                   "(depends on the machine load shown above)."]
@@ -347,6 +359,12 @@ def report(args, cat, side, gen_s, runs, seam, merged) -> str:
     cmd = "python benchmarks/bench_catalog.py " + " ".join(sys.argv[1:])
     lines = [
         "# Tile catalog on Dask",
+        "",
+        "Re-run (self-contained: generates the tiles into a temporary folder and removes "
+        "it; about 1 GB of LAZ per 100 M points): `python benchmarks/bench_catalog.py "
+        "--points 100e6` (25 tiles × 4 M points, 1 then 2 local workers). Wall-clock "
+        "figures need an otherwise idle machine; the CPU seconds per phase, the serial "
+        "fraction and the predicted speed-up do not.",
         "",
         f"{datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC, "
         f"{platform.node()} ({platform.machine()}, {os.cpu_count()} cores, Python "

@@ -191,6 +191,17 @@ def _overlap_points(cat: Catalog, box) -> float:
     return float(np.sum(counts * np.minimum(w * h / area, 1.0)))
 
 
+def _cost(cat: Catalog, task: ChunkTask) -> float:
+    """Relative work of a chunk (points).
+
+    LAZ decoding of every source file it reads (whole files, streamed) plus
+    filtering, gridding and writing the points of its buffered box.
+    """
+    counts = {t.path: t.count for t in cat.tiles}
+    return float(sum(counts[p] for p in task.sources)) + _overlap_points(
+        cat, task.buffered_box())
+
+
 def _las_format(cat: Catalog) -> dict:
     """Writer settings of box-mode chunks: the first tile's format, the finest scale."""
     from laspy import PointFormat
@@ -211,7 +222,7 @@ def _tile_tasks(cat: Catalog, folder: Path, common: dict) -> List[ChunkTask]:
                          sources=[t.path] + neighbour_paths(cat.bounds, cat.paths, i,
                                                             common["buffer"]),
                          outputs=_output_names(folder, t.path), **common)
-        task.cost = _overlap_points(cat, task.buffered_box())
+        task.cost = _cost(cat, task)
         tasks.append(task)
     return tasks
 
@@ -232,7 +243,7 @@ def _box_tasks(cat: Catalog, folder: Path, size: float, common: dict) -> List[Ch
             task = ChunkTask(key=key, bounds=box, las_format=fmt, sources=[],
                              outputs=_output_names(folder, key + suffix), **common)
             task.sources = [cat.paths[j] for j in cat.query(task.buffered_box())]
-            task.cost = _overlap_points(cat, task.buffered_box())
+            task.cost = _cost(cat, task)
             tasks.append(task)
     return tasks
 
@@ -499,10 +510,12 @@ def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, f
     clock.lap("cluster start")
     try:
         # largest chunks first (longest-processing-time order): the last chunk to
-        # finish is a small one, so workers idle less at the end of the run
+        # finish is a small one, so workers idle less at the end of the run. Submitted
+        # in that order too: idle workers take the first tasks as they arrive.
+        order = sorted(todo, key=lambda t: -t.cost)
         futures = {client.submit(process_chunk, t, key=f"chunk-{t.key}-{time.time_ns()}",
                                  retries=1, pure=False, priority=int(t.cost)): t.key
-                   for t in todo}
+                   for t in order}
         results = _collect(futures, mon, len(tasks), n_before, failed)
         clock.lap("compute")
         return results

@@ -310,6 +310,10 @@ def test_chunk_size_plans_squares_and_reads_only_their_boxes(tiles, tmp_path):
     assert centre.tile is None and len(centre.sources) == 4      # crosses all four tiles
     corner = next(t for t in tasks if t.key == "chunk_500000_4000000")
     assert [Path(p).stem for p in corner.sources] == ["t00"]     # 200 + 30 < 250
+    # work estimate (largest first): decoding 4 files + 260^2 m2 vs 1 file + 230^2 m2
+    n = cat.n_points / 4
+    assert centre.cost == pytest.approx(4 * n + n * 260 ** 2 / SIDE ** 2, rel=0.02)
+    assert corner.cost == pytest.approx(n + n * 230 ** 2 / SIDE ** 2, rel=0.02)
     with pytest.raises(InputError, match="multiple of CELL_SIZE"):
         cc.plan_tasks(cat, tmp_path, ground_filter="keep", dtm_method="idw",
                       cell_size=CELL, buffer=30.0, chunk_size=201.0)
