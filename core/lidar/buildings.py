@@ -6,12 +6,18 @@ each candidate's normal and planarity come from a principal-component fit to its
 ``k`` nearest neighbours (vectorised: one batched 3×3 eigen-decomposition); planar
 points whose normals agree within ``max_angle`` (20°) with a neighbour within
 ``radius`` are joined by region growing (connected components of the agreement
-graph); patches under ``min_patch_area`` (15 m²) or steeper than a wall are
-dropped. The kept roof points are rasterised, small holes closed, and each
-connected region is one building: footprint, height (top of roof − mean ground
-along the outside of its outline, where the walls meet the terrain), area, volume
-(Σ (roof − ground) × cell area), storeys (height / 3 m) and roof type (flat when
-the mean roof normal is within ``flat_angle`` of vertical).
+graph). Patches are then joined into roofs: coplanar fragments and the two planes
+of a ridge, across the band of rough points along the ridge (its width follows the
+k-NN radius, hence the point spacing). A roof is kept when its plan area is at
+least ``min_patch_area`` (15 m²), the area being the sum of ``1 / density`` over
+its points (k-NN plan density), so it does not shrink at low densities. Roof
+points are rasterised as discs of their equal-area radius, closed, and each region
+where most candidate points lie on roof planes (not a tree crown) is one building;
+a region that fills the smallest rectangle of its roof points is replaced by that
+rectangle. Per building: footprint, height (99th percentile of the points over
+it − mean ground along the outside of its outline, where the walls meet the
+terrain), area, volume (Σ (roof − ground) × cell area), storeys (height / 3 m) and
+roof type (flat when the mean roof normal is within ``flat_angle`` of vertical).
 
 References
 ----------
@@ -19,6 +25,12 @@ Kostrikov, S. et al. (2020). ELiT, multifunctional web-software for feature extr
 from 3D LiDAR point clouds. ISPRS IJGI 9(11), 650.
 Rabbani, T., van den Heuvel, F., Vosselman, G. (2006). Segmentation of point clouds
 using smoothness constraint. IAPRS 36(5), 248–253.
+Vosselman, G., Dijkman, S. (2001). 3D building model reconstruction from point clouds
+and ground plans. IAPRS 34(3/W4), 37–43.
+Sampath, A., Shan, J. (2007). Building boundary tracing and regularization from
+airborne lidar point clouds. PE&RS 73(7), 805–812.
+Loftsgaarden, D. O., Quesenberry, C. P. (1965). A nonparametric estimate of a
+multivariate density function. Ann. Math. Statist. 36(3), 1049–1051.
 """
 from __future__ import annotations
 
@@ -74,7 +86,7 @@ def normals(xyz: np.ndarray, k: int = 10):
 
 def roof_patches(xyz: np.ndarray, *, k: int = 10, radius: float = 1.5,
                  max_angle: float = 20.0, max_residual: float = 0.15,
-                 max_slope: float = 60.0) -> np.ndarray:
+                 max_slope: float = 60.0, fit=None) -> np.ndarray:
     """Label planar patches by region growing on normal agreement (-1 = none).
 
     Parameters
@@ -91,11 +103,13 @@ def roof_patches(xyz: np.ndarray, *, k: int = 10, radius: float = 1.5,
         Largest plane-fit residual of a planar point (m).
     max_slope : float
         Points whose normal is further than this from vertical (walls) are left out.
+    fit : (normals, residuals), optional
+        The result of :func:`normals` when already computed.
     """
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
-    n, resid = normals(xyz, k)
+    n, resid = normals(xyz, k) if fit is None else fit
     planar = (resid <= max_residual) & (n[:, 2] >= math.cos(math.radians(max_slope)))
     ids = np.flatnonzero(planar)
     labels = np.full(len(xyz), -1)
@@ -111,54 +125,239 @@ def roof_patches(xyz: np.ndarray, *, k: int = 10, radius: float = 1.5,
     return labels
 
 
-def _patch_filter(xy, labels, min_area: float, cell: float) -> np.ndarray:
-    """Keep patches whose occupied area (cells of ``cell`` m) is at least ``min_area``."""
+def plan_density(xy: np.ndarray, *, k: int = 8) -> np.ndarray:
+    """Plan density (points/m²) around each point of ``xy`` from its k-NN disc.
+
+    The unbiased k-nearest-neighbour estimate ``(k - 1) / (π r_k²)``
+    (Loftsgaarden & Quesenberry 1965). Where several returns stack in plan
+    (canopy) it is high, so each such point stands for a small area.
+    """
+    from scipy.spatial import cKDTree
+    if len(xy) <= k:
+        return np.full(len(xy), np.nan)
+    d, _ = cKDTree(xy).query(xy, k=k + 1, workers=-1)
+    r = np.maximum(d[:, -1], 1e-6)
+    return (k - 1) / (np.pi * r * r)
+
+
+def roof_groups(xyz, labels, normal, *, reach: float, max_angle: float,
+                min_points: int, max_offset: float = 0.3) -> np.ndarray:
+    """Join patches into roofs: coplanar fragments, and the two planes of a ridge.
+
+    Patches of at least ``min_points`` points with points within ``reach`` m of
+    each other are joined when their mean planes are the same plane (normals
+    within ``max_angle``, centroids within ``max_offset`` m of each other's plane:
+    a plane cut in two by a band of rough points), or mirror each other across a
+    vertical plane (equal tilt, opposite horizontal directions, each within
+    ``max_angle``), as the two halves of a gabled roof do (Vosselman & Dijkman 2001,
+    adjacency of roof planes). ``reach`` must span the band along the ridge where
+    the k-NN fits straddle both planes and no point is planar. Returns one group id
+    per patch label (index = patch label).
+    """
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    from scipy.spatial import cKDTree
+    npatch = int(labels.max()) + 1 if labels.size and labels.max() >= 0 else 0
+    if npatch == 0:
+        return np.zeros(0, np.int64)
+    on = np.flatnonzero(labels >= 0)
+    count = np.bincount(labels[on], minlength=npatch)
+    on = on[count[labels[on]] >= min_points]
+    lab = labels[on]
+    mean_n = np.zeros((npatch, 3))
+    np.add.at(mean_n, lab, normal[on])
+    mean_n /= np.maximum(np.linalg.norm(mean_n, axis=1), 1e-12)[:, None]
+    centre = np.zeros((npatch, 3))
+    np.add.at(centre, lab, xyz[on])
+    centre /= np.maximum(count, 1)[:, None]
+    pairs = cKDTree(xyz[on]).query_pairs(reach, output_type="ndarray")
+    pl = np.unique(np.sort(lab[pairs], axis=1), axis=0) if len(pairs) else \
+        np.zeros((0, 2), np.int64)
+    pl = pl[pl[:, 0] != pl[:, 1]]
+    a, b = mean_n[pl[:, 0]], mean_n[pl[:, 1]]
+    tol = math.radians(max_angle)
+    same = (np.einsum("ij,ij->i", a, b) >= math.cos(tol)) & (np.maximum(
+        np.abs(np.einsum("ij,ij->i", a, centre[pl[:, 1]] - centre[pl[:, 0]])),
+        np.abs(np.einsum("ij,ij->i", b, centre[pl[:, 1]] - centre[pl[:, 0]])))
+        <= max_offset)
+    tilt_a, tilt_b = np.arccos(np.clip(a[:, 2], -1, 1)), np.arccos(np.clip(b[:, 2], -1, 1))
+    cos_h = np.einsum("ij,ij->i", a[:, :2], b[:, :2]) / np.maximum(
+        np.linalg.norm(a[:, :2], axis=1) * np.linalg.norm(b[:, :2], axis=1), 1e-12)
+    mirror = (np.abs(tilt_a - tilt_b) <= tol) & (cos_h <= -math.cos(tol)) & \
+        (np.minimum(tilt_a, tilt_b) >= tol / 2)
+    p = pl[same | mirror]
+    graph = coo_matrix((np.ones(len(p)), (p[:, 0], p[:, 1])), shape=(npatch, npatch))
+    return connected_components(graph, directed=False)[1]
+
+
+def patch_area(labels, density, npatch: int) -> np.ndarray:
+    """Plan area of each patch: the sum of ``1 / density`` over its points (m²).
+
+    Each point of a surface sampled at ``density`` points/m² stands for
+    ``1 / density`` m² of it, so the measured area does not shrink with the point
+    spacing as a count of occupied cells does.
+    """
     ok = labels >= 0
-    if not ok.any():
-        return np.zeros(len(labels), bool)
-    key = np.floor(xy[ok] / cell).astype(np.int64)
-    cells = np.unique(np.column_stack([labels[ok], key]), axis=0)
-    area = np.bincount(cells[:, 0], minlength=labels.max() + 1) * cell * cell
+    return np.bincount(labels[ok], weights=1.0 / density[ok], minlength=npatch)
+
+
+def _patch_filter(labels, groups, min_area: float, density: np.ndarray,
+                  min_points: int) -> np.ndarray:
+    """Keep roofs (ridge groups) of at least ``min_area`` m² and patches of ``min_points``.
+
+    The plan area of a patch is the sum over its points of ``1 / density`` (each
+    point stands for that much roof), which does not shrink with the point spacing
+    as an area of occupied cells does.
+    """
+    ok = labels >= 0
     keep = np.zeros(len(labels), bool)
-    keep[ok] = area[labels[ok]] >= min_area
+    if not ok.any():
+        return keep
+    count = np.bincount(labels[ok], minlength=groups.size)
+    area = patch_area(labels, density, groups.size)
+    big_patch = count >= min_points
+    garea = np.bincount(groups, weights=area * big_patch)
+    keep[ok] = big_patch[labels[ok]] & (garea[groups[labels[ok]]] >= min_area)
     return keep
 
 
-def _footprints(grid, x, y, z, dtm, keep, min_area, flat_angle, nz):
-    """Rasterise roof points into footprints and measure each building."""
+def roof_support(grid: GridSpec, x, y, occupied: np.ndarray, r: float) -> np.ndarray:
+    """Cells whose centre lies within ``r`` m of a roof point (``occupied``: cells holding one).
+
+    Each point of a surface sampled at density ρ stands for ``1/ρ`` m² of it; a disc of
+    that area has radius ``1/√(πρ)``, so the union of such discs covers the roof up to
+    its edge at any point spacing, where the occupied cells alone fall short by about
+    half a spacing all round.
+    """
     from scipy import ndimage
+    from scipy.spatial import cKDTree
+    reach = int(math.ceil(r / grid.cell))
+    if reach < 1 or not occupied.any():
+        return occupied.copy()
+    near = ndimage.binary_dilation(occupied, np.ones((3, 3)), iterations=reach) & ~occupied
+    rr, cc = np.nonzero(near)
+    cx = grid.x_centers()[cc]
+    cy = grid.y_centers()[rr]
+    d, _ = cKDTree(np.column_stack([x, y])).query(np.column_stack([cx, cy]),
+                                                   distance_upper_bound=r, workers=-1)
+    mask = occupied.copy()
+    mask[rr[d <= r], cc[d <= r]] = True
+    return mask
+
+
+def min_area_rectangle(xy: np.ndarray):
+    """Smallest-area enclosing rectangle of plan points (rotating calipers).
+
+    One side of the optimal rectangle lies on a convex-hull edge (Freeman &
+    Shapira 1975), so every hull-edge direction is tried at once. Returns the
+    centre (2,), the unit axes (2, 2: rows u, v) and the half sizes (2,).
+    """
+    from scipy.spatial import ConvexHull
+    hull = xy[ConvexHull(xy).vertices]
+    edge = np.roll(hull, -1, axis=0) - hull
+    ang = np.arctan2(edge[:, 1], edge[:, 0])
+    u = np.column_stack([np.cos(ang), np.sin(ang)])
+    v = np.column_stack([-u[:, 1], u[:, 0]])
+    pu, pv = u @ hull.T, v @ hull.T
+    size_u, size_v = np.ptp(pu, axis=1), np.ptp(pv, axis=1)
+    i = int(np.argmin(size_u * size_v))
+    mid_u, mid_v = (pu[i].max() + pu[i].min()) / 2, (pv[i].max() + pv[i].min()) / 2
+    return mid_u * u[i] + mid_v * v[i], np.vstack([u[i], v[i]]), \
+        np.array([size_u[i], size_v[i]]) / 2
+
+
+def _regularise(lab, k, grid, xy, rho, min_fill):
+    """Replace region ``k`` of ``lab`` by the rectangle of its roof points if it fills it.
+
+    Most footprints are rectangles; a raster of roof points at a spacing near
+    the cell size frays their outline (Sampath & Shan 2007 regularise outlines
+    to dominant directions). When the raster region covers at least ``min_fill``
+    of the points' smallest rectangle, the rectangle is the footprint, each side
+    pushed out by the mean gap between the outermost points and the edge of a
+    side of length ``L`` sampled at density ``rho`` (``1 / (rho L)``).
+    """
+    if len(xy) < 4:
+        return
+    centre, axes, half = min_area_rectangle(xy)
+    half = half + 1.0 / (rho * 2.0 * half[::-1].clip(min=grid.cell))
+    cells = lab == k
+    if cells.sum() * grid.cell ** 2 < min_fill * 4.0 * half[0] * half[1]:
+        return
+    reach = float(np.hypot(*half)) + grid.cell
+    r, c, _ = grid.cell_index(np.array([centre[0] - reach, centre[0] + reach]),
+                              np.array([centre[1] + reach, centre[1] - reach]))
+    r0, r1 = max(int(r.min()), 0), min(int(r.max()) + 1, grid.shape[0])
+    c0, c1 = max(int(c.min()), 0), min(int(c.max()) + 1, grid.shape[1])
+    xs, ys = np.meshgrid(grid.x_centers()[c0:c1], grid.y_centers()[r0:r1])
+    d = np.stack([xs - centre[0], ys - centre[1]], axis=-1) @ axes.T
+    inside = (np.abs(d[..., 0]) <= half[0]) & (np.abs(d[..., 1]) <= half[1])
+    win = lab[r0:r1, c0:c1]
+    win[(win == k) & ~inside] = 0
+    win[inside & (win == 0)] = k
+
+
+def _footprint_labels(grid, x, y, keep, rho, min_area, min_roof_share):
+    """Label footprints: roof-point discs, closed, big enough, mostly roof, regularised.
+
+    A region is a building when its area is at least ``min_area`` and at least
+    ``min_roof_share`` of the candidate points over it lie on its roof planes (a
+    tree crown yields planar fragments among mostly rough points).
+    """
+    from scipy import ndimage
+    row, col, inside = grid.cell_index(x[keep], y[keep])
+    occupied = np.zeros(grid.shape, bool)
+    occupied[row[inside], col[inside]] = True
+    mask = roof_support(grid, x[keep][inside], y[keep][inside], occupied,
+                        1.0 / math.sqrt(math.pi * rho))
+    mask = ndimage.binary_fill_holes(
+        ndimage.binary_closing(mask, np.ones((3, 3)), iterations=2))
+    lab, nlab = ndimage.label(mask)
+    ra, ca, all_in = grid.cell_index(x, y)
+    a_lab = lab[ra[all_in], ca[all_in]]
+    share = np.bincount(a_lab, weights=keep[all_in], minlength=nlab + 1) / np.maximum(
+        np.bincount(a_lab, minlength=nlab + 1), 1)
+    ncell = np.bincount(lab.ravel(), minlength=nlab + 1)
+    drop = (ncell * grid.cell ** 2 < min_area) | (share < min_roof_share)
+    drop[0] = True
+    lab[drop[lab]] = 0
+    b_lab = lab[row[inside], col[inside]]
+    kxy = np.column_stack([x[keep][inside], y[keep][inside]])
+    for k in np.flatnonzero(~drop):
+        _regularise(lab, k, grid, kxy[b_lab == k], rho, 0.8)
+    relabel = np.zeros(nlab + 1, np.int32)
+    relabel[~drop] = np.arange(1, int((~drop).sum()) + 1)
+    return relabel[lab], int((~drop).sum())
+
+
+def _footprints(grid, x, y, z, dtm, keep, min_area, flat_angle, nz, rho):
+    """Rasterise roof points (density ``rho``) into footprints; measure each one."""
+    from scipy import ndimage
+    lab, nlab = _footprint_labels(grid, x, y, keep, rho, min_area, 0.5)
+    # roof heights of the cells, closed cells from the nearest roof point (volume)
     row, col, inside = grid.cell_index(x[keep], y[keep])
     roof = np.full(grid.shape, -np.inf)
     np.maximum.at(roof, (row[inside], col[inside]), z[keep][inside])
-    mask = ndimage.binary_closing(np.isfinite(roof), np.ones((3, 3)), iterations=2)
-    mask = ndimage.binary_fill_holes(mask)
-    lab, nlab = ndimage.label(mask)
-    ncell = np.bincount(lab.ravel(), minlength=nlab + 1)
-    small = ncell * grid.cell ** 2 < min_area
-    small[0] = True
-    lab[small[lab]] = 0
-    # fill closed cells with the nearest roof height (for the volume)
-    hole = ~np.isfinite(roof)
-    near = ndimage.distance_transform_edt(hole, return_distances=False,
+    near = ndimage.distance_transform_edt(~np.isfinite(roof), return_distances=False,
                                           return_indices=True)
     roof_f = roof[near[0], near[1]]
+    mask = lab > 0
     b_lab = lab[row[inside], col[inside]]
-    out, relabel = [], np.zeros(nlab + 1, np.int32)
-    for k in np.flatnonzero(~small):
+    ra, ca, all_in = grid.cell_index(x, y)
+    a_lab = lab[ra[all_in], ca[all_in]]
+    out = []
+    for k in range(1, nlab + 1):
         cells = lab == k
         ring = ndimage.binary_dilation(cells, np.ones((3, 3)), iterations=2) & ~mask
         g = np.nanmean(dtm[ring]) if np.isfinite(dtm[ring]).any() else np.nanmean(dtm[cells])
-        top = float(np.percentile(z[keep][inside][b_lab == k], 99))
+        top = float(np.percentile(z[all_in][a_lab == k], 99))
         h = top - g
         mean_nz = float(np.mean(nz[keep][inside][b_lab == k]))
-        relabel[k] = len(out) + 1
-        out.append({"id": len(out) + 1, "height": h, "area": float(cells.sum()
-                                                                  * grid.cell ** 2),
+        out.append({"id": k, "height": h, "area": float(cells.sum() * grid.cell ** 2),
                     "volume": float(np.nansum(roof_f[cells] - dtm[cells]) * grid.cell ** 2),
                     "storeys": max(1, int(h // 3.0)), "ground": float(g), "roof": top,
                     "roof_type": "flat" if mean_nz >= math.cos(math.radians(flat_angle))
                     else "pitched"})
-    return relabel[lab], out
+    return lab, out
 
 
 def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
@@ -208,13 +407,23 @@ def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
     if cand.size < k:
         return BuildingResult(grid, np.zeros(grid.shape, np.int32), [], flag, dtm)
     xyz = np.column_stack([x[cand] - x.mean(), y[cand] - y.mean(), z[cand]])
-    lab = roof_patches(xyz, k=k, radius=radius, max_angle=max_angle)
+    fit = normals(xyz, k)
+    lab = roof_patches(xyz, k=k, radius=radius, max_angle=max_angle, fit=fit)
     mon.step(0.7)
-    keep = _patch_filter(xyz[:, :2], lab, min_patch_area, cell)
-    nz = np.zeros(cand.size)
-    nz[:] = normals(xyz, k)[0][:, 2] if keep.any() else 1.0
+    density = plan_density(xyz[:, :2])
+    planar_rho = float(np.median(density[lab >= 0])) if (lab >= 0).any() else 1.0
+    # the k-NN disc of an edge point is half empty: no roof point stands for more
+    # than the tile's typical roof spacing (density is uniform along a scan)
+    density = np.maximum(density, planar_rho)
+    reach = max(radius, 2.0 * math.sqrt(k / (math.pi * planar_rho)))
+    groups = roof_groups(xyz, lab, fit[0], reach=reach, max_angle=max_angle,
+                         min_points=k)
+    keep = _patch_filter(lab, groups, min_patch_area, density, k)
+    if not keep.any():
+        return BuildingResult(grid, np.zeros(grid.shape, np.int32), [], flag, dtm)
+    rho = float(np.median(density[keep]))
     labels, blds = _footprints(grid, x[cand], y[cand], z[cand], dtm, keep, min_area,
-                               flat_angle, nz)
+                               flat_angle, fit[0][:, 2], rho)
     r, c, inside = grid.cell_index(x[cand], y[cand])
     on = np.zeros(cand.size, bool)
     on[inside] = labels[r[inside], c[inside]] > 0
