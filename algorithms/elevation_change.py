@@ -5,21 +5,26 @@ import os
 
 import numpy as np
 from qgis.core import (
+    QgsProcessing,
     QgsProcessingOutputNumber,
     QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterRasterDestination,
     QgsProcessingParameterString,
     QgsProcessingParameterVectorDestination,
+    QgsProcessingParameterVectorLayer,
 )
 
 from ..core.errors import InputError
+from ..core.io.crs import same_crs
 from ..core.io.las import las_info
 from ..core.io.points import parse_classes, read_class_points, write_grid
-from ..core.io.raster import read_raster
+from ..core.io.raster import read_raster, read_raster_on_grid
 from ..core.io.vector import write_label_polygons
 from ..core.lidar.qa import check_projected
 from ..core.terrain import change as core_change
+from ..core.terrain.accuracy import OK as USED
+from ..core.terrain.accuracy import STATUS_NAMES
 from ..core.terrain.grid import grid_from_extent, grid_like
 from ..core.terrain.tin import tin_grid
 from .base import GeomaticsAlgorithm
@@ -43,6 +48,8 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
     INPUT_AFTER = "INPUT_AFTER"
     SIGMA1 = "SIGMA1"
     SIGMA2 = "SIGMA2"
+    RESIDUALS1 = "RESIDUALS1"
+    RESIDUALS2 = "RESIDUALS2"
     CLASSES = "CLASSES"
     CELL_SIZE = "CELL_SIZE"
     MIN_AREA = "MIN_AREA"
@@ -76,6 +83,11 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
                                  "other epoch."),
              self.SIGMA1: self.tr("The vertical accuracy of the epoch, e.g. the RMSE of "
                                   "the DTM accuracy tool."),
+             self.RESIDUALS1: self.tr("The residual layer of a DTM accuracy run on this "
+                                      "epoch: σ becomes the RMSE of its residuals (status "
+                                      "used) and the typed σ is ignored."),
+             self.INPUT_AFTER: self.tr("A raster on another grid in the same CRS is "
+                                       "resampled (bilinear) onto the first one's grid."),
              self.MIN_AREA: self.tr("Smaller regions are dropped: noise alone exceeds the "
                                     "LoD in 5 % of cells."),
              self.OUTPUT: self.tr("GeoTIFF of after − before (m)."),
@@ -92,6 +104,12 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
                         minimum=0.0)
         self.add_number(self.SIGMA2, self.tr("Vertical accuracy after σ₂ (m)"), 0.1,
                         minimum=0.0)
+        for name, label in ((self.RESIDUALS1, self.tr("σ₁ from a DTM accuracy run "
+                                                       "(residual layer, optional)")),
+                            (self.RESIDUALS2, self.tr("σ₂ from a DTM accuracy run "
+                                                       "(residual layer, optional)"))):
+            self.add(QgsProcessingParameterVectorLayer(
+                name, label, [QgsProcessing.TypeVectorPoint], optional=True))
         self.add(QgsProcessingParameterString(
             self.CLASSES, self.tr("Classes used (clouds)"), defaultValue="2", optional=True),
             advanced=True)
@@ -119,14 +137,7 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
         if _is_las(before) != _is_las(after):
             raise InputError("Give two rasters or two point clouds, not one of each.")
         if not _is_las(before):
-            ra, rb = read_raster(before), read_raster(after)
-            if ra.shape != rb.shape or np.abs(np.subtract(ra.geotransform,
-                                                          rb.geotransform)).max() > 1e-6:
-                raise InputError(
-                    "The two rasters are not on the same grid (origin, cell size, size); "
-                    "resample one onto the other's grid first (e.g. gdalwarp -te -tr).")
-            return ra.masked(), rb.masked(), grid_like(ra.geotransform, ra.shape,
-                                                       crs=ra.crs)
+            return self.raster_epochs(before, after, feedback)
         classes = parse_classes(self.parameterAsString(parameters, self.CLASSES, context))
         cell = self.parameterAsDouble(parameters, self.CELL_SIZE, context)
         if not cell > 0:
@@ -145,16 +156,61 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
             out.append(tin_grid(pts.x, pts.y, pts.z, grid, cancel=cb["cancel"]).z)
         return out[0], out[1], grid
 
+    def raster_epochs(self, before, after, feedback):
+        """Both rasters on the first one's grid; the second resampled when it differs."""
+        ra, rb = read_raster(before), read_raster(after)
+        if abs(ra.geotransform[2]) > 0 or abs(ra.geotransform[4]) > 0:
+            raise InputError("The first raster is rotated; warp it north-up first.")
+        grid = grid_like(ra.geotransform, ra.shape, crs=ra.crs)
+        if ra.shape == rb.shape and np.abs(np.subtract(ra.geotransform,
+                                                       rb.geotransform)).max() <= 1e-6:
+            return ra.masked(), rb.masked(), grid
+        if ra.crs and rb.crs and not same_crs(ra.crs, rb.crs):
+            raise InputError("The two rasters are in different CRSs; reproject the second "
+                             "one into the first one's CRS first.")
+        feedback.pushInfo(self.tr(
+            "The second raster ({0} × {1} cells of {2:g} m) is resampled (bilinear) onto "
+            "the first one's grid ({3} × {4} cells of {5:g} m).").format(
+                rb.shape[1], rb.shape[0], abs(rb.geotransform[1]), ra.shape[1],
+                ra.shape[0], abs(ra.geotransform[1])))
+        rb = read_raster_on_grid(after, ra.geotransform, ra.shape, crs=ra.crs or None)
+        if not np.isfinite(rb.data).any():
+            raise InputError("The two rasters do not overlap; check their extents and CRS.")
+        return ra.masked(), rb.data, grid
+
+    def sigmas(self, parameters, context, feedback):
+        """σ₁, σ₂ typed, or the RMSE of a DTM accuracy run's residual layer; its path."""
+        out, paths = [], {}
+        for sig, res in ((self.SIGMA1, self.RESIDUALS1), (self.SIGMA2, self.RESIDUALS2)):
+            layer = self.parameterAsVectorLayer(parameters, res, context)
+            if layer is None:
+                out.append(self.parameterAsDouble(parameters, sig, context))
+                continue
+            names = layer.fields().names()
+            if "error" not in names:
+                raise InputError(f"{layer.name()} has no 'error' field: give the residual "
+                                 "layer written by the DTM accuracy tool.")
+            ok = "status" in names
+            errors = [f["error"] for f in layer.getFeatures()
+                      if not ok or str(f["status"]) == STATUS_NAMES[USED]]
+            errors = [e for e in errors if isinstance(e, (int, float))]
+            value = core_change.sigma_from_residuals(errors, layer.name())
+            feedback.pushInfo(self.tr("{0} = {1:.4f} m: RMSE of {2} check-point residuals "
+                                      "of {3}").format(sig, value, len(errors),
+                                                       layer.name()))
+            out.append(value)
+            paths[res] = layer.source().split("|")[0]
+        return out[0], out[1], paths
+
     def process(self, parameters, context, feedback):
         before = self.parameterAsFile(parameters, self.INPUT, context)
         after = self.parameterAsFile(parameters, self.INPUT_AFTER, context)
-        s1 = self.parameterAsDouble(parameters, self.SIGMA1, context)
-        s2 = self.parameterAsDouble(parameters, self.SIGMA2, context)
+        s1, s2, res_paths = self.sigmas(parameters, context, feedback)
         min_area = self.parameterAsDouble(parameters, self.MIN_AREA, context)
         names = [self.OUTPUT, self.OUTPUT_POLYGONS, self.OUTPUT_HTML]
         with self.output_contract(parameters, context, names,
-                                  inputs={self.INPUT: before,
-                                          self.INPUT_AFTER: after}) as out:
+                                  inputs={self.INPUT: before, self.INPUT_AFTER: after,
+                                          **res_paths}) as out:
             a, b, grid = self.epochs(before, after, parameters, context, feedback)
             res = core_change.elevation_change(a, b, grid.cell, sigma1=s1, sigma2=s2,
                                                min_area=min_area,

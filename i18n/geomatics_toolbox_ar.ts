@@ -650,6 +650,30 @@
             <translation>تقرير تغيّر الارتفاع</translation>
         </message>
         <message>
+            <source>The residual layer of a DTM accuracy run on this epoch: σ becomes the RMSE of its residuals (status used) and the typed σ is ignored.</source>
+            <translation>طبقة البواقي الناتجة عن تشغيل أداة دقة نموذج التضاريس الرقمي على هذه الحقبة: تصبح σ جذر متوسط مربعات بواقيها (الحالة used) وتُتجاهل قيمة σ المكتوبة.</translation>
+        </message>
+        <message>
+            <source>A raster on another grid in the same CRS is resampled (bilinear) onto the first one's grid.</source>
+            <translation>تُعاد معاينة النقطية ذات الشبكة المختلفة في نظام الإحداثيات نفسه (ثنائي خطي) على شبكة النقطية الأولى.</translation>
+        </message>
+        <message>
+            <source>σ₁ from a DTM accuracy run (residual layer, optional)</source>
+            <translation>σ₁ من تشغيل أداة دقة نموذج التضاريس الرقمي (طبقة البواقي، اختياري)</translation>
+        </message>
+        <message>
+            <source>σ₂ from a DTM accuracy run (residual layer, optional)</source>
+            <translation>σ₂ من تشغيل أداة دقة نموذج التضاريس الرقمي (طبقة البواقي، اختياري)</translation>
+        </message>
+        <message>
+            <source>The second raster ({0} × {1} cells of {2:g} m) is resampled (bilinear) onto the first one's grid ({3} × {4} cells of {5:g} m).</source>
+            <translation>تُعاد معاينة النقطية الثانية ({0} × {1} خلية بحجم {2:g} م) بطريقة ثنائية خطية على شبكة النقطية الأولى ({3} × {4} خلية بحجم {5:g} م).</translation>
+        </message>
+        <message>
+            <source>{0} = {1:.4f} m: RMSE of {2} check-point residuals of {3}</source>
+            <translation>{0} = {1:.4f} م: جذر متوسط مربعات {2} من بواقي نقاط التحقق في {3}</translation>
+        </message>
+        <message>
             <source>Level of detection LoD95 (m)</source>
             <translation>حد الكشف LoD95 (م)</translation>
         </message>

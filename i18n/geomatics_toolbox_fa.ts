@@ -650,6 +650,30 @@
             <translation>گزارش تغییر ارتفاع</translation>
         </message>
         <message>
+            <source>The residual layer of a DTM accuracy run on this epoch: σ becomes the RMSE of its residuals (status used) and the typed σ is ignored.</source>
+            <translation>لایهٔ باقیمانده‌های اجرای ابزار دقت DTM روی این دوره: σ برابر RMSE باقیمانده‌های آن (وضعیت used) می‌شود و σ واردشده نادیده گرفته می‌شود.</translation>
+        </message>
+        <message>
+            <source>A raster on another grid in the same CRS is resampled (bilinear) onto the first one's grid.</source>
+            <translation>رستری با شبکه‌ای دیگر در همان سیستم مختصات (دوخطی) روی شبکهٔ رستر اول بازنمونه‌برداری می‌شود.</translation>
+        </message>
+        <message>
+            <source>σ₁ from a DTM accuracy run (residual layer, optional)</source>
+            <translation>σ₁ از اجرای ابزار دقت DTM (لایهٔ باقیمانده‌ها، اختیاری)</translation>
+        </message>
+        <message>
+            <source>σ₂ from a DTM accuracy run (residual layer, optional)</source>
+            <translation>σ₂ از اجرای ابزار دقت DTM (لایهٔ باقیمانده‌ها، اختیاری)</translation>
+        </message>
+        <message>
+            <source>The second raster ({0} × {1} cells of {2:g} m) is resampled (bilinear) onto the first one's grid ({3} × {4} cells of {5:g} m).</source>
+            <translation>رستر دوم ({0} × {1} سلول {2:g} متری) به روش دوخطی روی شبکهٔ رستر اول ({3} × {4} سلول {5:g} متری) بازنمونه‌برداری می‌شود.</translation>
+        </message>
+        <message>
+            <source>{0} = {1:.4f} m: RMSE of {2} check-point residuals of {3}</source>
+            <translation>{0} = {1:.4f} متر: RMSE {2} باقیماندهٔ نقاط کنترل در {3}</translation>
+        </message>
+        <message>
             <source>Level of detection LoD95 (m)</source>
             <translation>حد آشکارسازی LoD95 (متر)</translation>
         </message>

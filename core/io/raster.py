@@ -134,3 +134,32 @@ def read_raster(path, band: int = 1) -> Raster:
     b = ds.GetRasterBand(band)
     return Raster(b.ReadAsArray(), tuple(ds.GetGeoTransform()), ds.GetProjection(),
                   b.GetNoDataValue())
+
+
+def read_raster_on_grid(path, geotransform: Sequence[float], shape: Tuple[int, int], *,
+                        crs: Optional[str] = None, band: int = 1,
+                        resampling: str = "bilinear") -> Raster:
+    """Read one band of a raster resampled onto a north-up grid (GDAL warp, in memory).
+
+    Cells of the target grid outside the source or on its nodata become NaN
+    (``nodata`` of the result is NaN). ``crs`` is the target CRS (default: the
+    source's, no reprojection).
+    """
+    gdal = _gdal()
+    path = os.fspath(path)
+    src = read_raster(path, band)     # checks existence, readability, band
+    if band != 1:
+        raise ValueError("Only band 1 can be resampled onto another grid.")
+    rows, cols = int(shape[0]), int(shape[1])
+    x0, dx, _, y0, _, dy = geotransform
+    bounds = (x0, y0 + rows * dy, x0 + cols * dx, y0)
+    opts = gdal.WarpOptions(format="MEM", outputBounds=bounds, width=cols, height=rows,
+                            resampleAlg=resampling,
+                            dstSRS=crs or src.crs or None, outputType=gdal.GDT_Float64,
+                            srcNodata=src.nodata, dstNodata=float("nan"))
+    try:
+        ds = gdal.Warp("", path, options=opts)
+    except RuntimeError as exc:
+        raise ValueError(f"{path} could not be resampled onto the grid: {exc}") from exc
+    return Raster(ds.GetRasterBand(1).ReadAsArray(), tuple(ds.GetGeoTransform()),
+                  ds.GetProjection(), float("nan"))

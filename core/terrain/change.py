@@ -44,6 +44,22 @@ def lod95(sigma1: float, sigma2: float) -> float:
     return 1.96 * math.sqrt(sigma1 ** 2 + sigma2 ** 2)
 
 
+def sigma_from_residuals(errors, name: str = "the residual layer") -> float:
+    """Vertical accuracy of an epoch from DTM-accuracy residuals: their RMSE (m).
+
+    ``errors``: the ``error`` (DTM − check) of the check points a DTM-accuracy run
+    used (status 'used'); non-finite values are ignored. The RMSE, not the standard
+    deviation, so that a bias of the epoch counts in its level of detection.
+    """
+    e = np.asarray(errors, dtype=np.float64).ravel()
+    e = e[np.isfinite(e)]
+    if e.size < 3:
+        raise InputError(f"{name} holds {e.size} usable check-point residuals (field "
+                         "'error', status 'used'); give the residual layer of a DTM accuracy "
+                         "run with at least 3, or type σ instead.")
+    return float(np.sqrt(np.mean(e * e)))
+
+
 @dataclass
 class ChangeResult:
     """Difference raster, significant regions and volumes (see :func:`elevation_change`)."""

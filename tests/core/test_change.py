@@ -89,3 +89,27 @@ def test_bad_inputs_and_report():
     assert not missing, missing
     html = render_html(rep, lang="ar")
     assert 'id="change-map"' in html and 'id="change-histogram"' in html
+
+
+def test_sigma_from_residuals_is_their_rmse():
+    e = np.array([0.1, -0.2, 0.05, np.nan, 0.3])
+    assert change.sigma_from_residuals(e) == pytest.approx(
+        np.sqrt(np.mean(np.array([0.1, -0.2, 0.05, 0.3]) ** 2)))
+    with pytest.raises(InputError, match="2 usable check-point residuals"):
+        change.sigma_from_residuals([0.1, np.nan, 0.2])
+
+
+def test_resampling_onto_another_grid_is_bilinear(tmp_path):
+    """A plane written on a 1 m grid reads back exactly on a shifted 0.5 m grid."""
+    from geomatics_toolbox.core.io.raster import read_raster_on_grid, write_geotiff
+    yy, xx = np.mgrid[0:100, 0:100]
+    x, y = 1000 + xx + 0.5, 2100 - yy - 0.5
+    write_geotiff(tmp_path / "a.tif", 2 * (x - 1000) + 3 * (y - 2000),
+                  geotransform=(1000, 1, 0, 2100, 0, -1), crs="EPSG:32632")
+    r = read_raster_on_grid(tmp_path / "a.tif", (1010.25, 0.5, 0, 2090.25, 0, -0.5), (60, 70))
+    xs, ys = np.meshgrid(1010.25 + 0.5 * (np.arange(70) + 0.5),
+                         2090.25 - 0.5 * (np.arange(60) + 0.5))
+    assert r.data.shape == (60, 70)
+    assert np.abs(r.data - (2 * (xs - 1000) + 3 * (ys - 2000))).max() < 1e-4
+    out = read_raster_on_grid(tmp_path / "a.tif", (950, 1, 0, 2090, 0, -1), (10, 100))
+    assert np.isnan(out.data[:, :50]).all() and np.isfinite(out.data[:, 50:]).all()
