@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import os
 
-import numpy as np
 from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
@@ -12,9 +11,8 @@ from qgis.core import (
 
 from ..core.io.points import write_grid
 from ..core.lidar.qa import check_projected
-from ..core.reporting import Figure, KeyValues, Paragraph, Report, T
-from ..core.reporting.svg import svg_raster
 from ..core.terrain import tin as core_tin
+from ..core.terrain.report import tin_report
 from .helptext import build_help
 from .terrain import _check_tif, _GridAlgorithm
 
@@ -90,34 +88,11 @@ class TinDtmAlgorithm(_GridAlgorithm):
             stats = self.grid_stats(res.z)
             if out.requested(self.OUTPUT_HTML):
                 out.write_text(self.OUTPUT_HTML, self.render_report(
-                    self.report(res, path, pts, grid, stats), parameters, context))
+                    tin_report(res, os.path.basename(path), pts.n_total, grid), parameters,
+                    context))
         results = {self.OUTPUT: out.final(self.OUTPUT), "N_POINTS": res.n_points,
                    "N_TRIANGLES": res.n_triangles, "VALID_CELLS": stats["valid_cells"],
                    "NODATA_CELLS": stats["nodata_cells"]}
         if out.requested(self.OUTPUT_HTML):
             results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         return results
-
-    @staticmethod
-    def report(res, path, pts, grid, stats) -> Report:
-        rep = Report("TIN DTM report", citation=T(
-            "Delaunay (1934); Barber et al. (1996), {library}; same method as {command}.",
-            library="Qhull", command="gdal_grid -a linear"))
-        rep.section("Input and grid").add(KeyValues([
-            ("Input", os.path.basename(path)),
-            ("Points in file", pts.n_total),
-            ("Points triangulated", res.n_points),
-            ("Grid (columns × rows)", f"{grid.ncols} × {grid.nrows}"),
-            ("Cell size (m)", grid.cell)]))
-        rep.section("Result").add(KeyValues([
-            ("Triangles", res.n_triangles),
-            ("Triangles dropped (edge too long)", res.n_long),
-            ("Maximum triangle edge (m)", res.max_edge if res.max_edge else np.nan),
-            ("Cells with a value", stats["valid_cells"]),
-            ("Nodata cells", stats["nodata_cells"]),
-            ("Minimum height (m)", stats["min"]), ("Maximum height (m)", stats["max"])])
-        ).add(Figure(svg_raster(res.z, unit="m"), "TIN DTM heights", "dtm-map"))
-        if res.max_edge is None:
-            rep.sections[-1].add(Paragraph("Gaps were filled: long triangles were kept.",
-                                           "note"))
-        return rep

@@ -1,4 +1,4 @@
-"""Report content of the terrain tools: IDW, kriging, DSM/nDSM and DTM accuracy.
+"""Report content of the terrain tools: IDW, kriging, TIN, DSM/nDSM and DTM accuracy.
 
 Each ``*_report`` function returns a :class:`~..reporting.Report` (rendered once by
 :func:`~..reporting.render_html` in the user's language) with SVG figures: a hillshade
@@ -270,4 +270,36 @@ def accuracy_report(res: acc.AccuracyResult, ids: Sequence, dtm: np.ndarray,
     rep.section("Residuals (largest |error| first)").add(Table(
         ["id", "x (m)", "y (m)", "z check (m)", "z DTM (m)", "error (m)", "status"], rows,
         digits=3))
+    return rep
+
+
+def tin_report(res, name: str, n_in_file: int, grid) -> Report:
+    """Report of a TIN DTM run: input and grid, triangles, cells and a height map.
+
+    ``res`` is a :class:`~.tin.TinResult` (Delaunay 1934; Barber et al. 1996, Qhull),
+    ``name`` the input's file name and ``n_in_file`` its number of points.
+    """
+    from ..reporting.svg import svg_raster
+    ok = np.isfinite(res.z)
+    rep = Report("TIN DTM report", citation=T(
+        "Delaunay (1934); Barber et al. (1996), {library}; same method as {command}.",
+        library="Qhull", command="gdal_grid -a linear"))
+    rep.section("Input and grid").add(KeyValues([
+        ("Input", name),
+        ("Points in file", n_in_file),
+        ("Points triangulated", res.n_points),
+        ("Grid (columns × rows)", f"{grid.ncols} × {grid.nrows}"),
+        ("Cell size (m)", grid.cell)]))
+    rep.section("Result").add(KeyValues([
+        ("Triangles", res.n_triangles),
+        ("Triangles dropped (edge too long)", res.n_long),
+        ("Maximum triangle edge (m)", res.max_edge if res.max_edge else np.nan),
+        ("Cells with a value", int(ok.sum())),
+        ("Nodata cells", int((~ok).sum())),
+        ("Minimum height (m)", float(res.z[ok].min()) if ok.any() else np.nan),
+        ("Maximum height (m)", float(res.z[ok].max()) if ok.any() else np.nan)])
+    ).add(Figure(svg_raster(res.z, unit="m"), "TIN DTM heights", "dtm-map"))
+    if res.max_edge is None:
+        rep.sections[-1].add(Paragraph("Gaps were filled: long triangles were kept.",
+                                       "note"))
     return rep

@@ -106,3 +106,28 @@ def test_cancel_and_progress(cloud):
     assert seen[-1] == 1.0 and seen == sorted(seen)
     with pytest.raises(Cancelled):
         tin_grid(x, y, z, grid, cancel=lambda: True)
+
+
+def test_report_content_is_built_in_core(cloud):
+    """The TIN report (core/terrain/report.tin_report) states the run's own figures."""
+    from geomatics_toolbox.core.reporting import KeyValues, render_html
+    from geomatics_toolbox.core.reporting.i18n import has_translation
+    from geomatics_toolbox.core.terrain.report import tin_report
+    x, y, z = cloud
+    grid = grid_from_extent((600000, 600120, 3900000, 3900090), 1.0)
+    res = tin_grid(x, y, z, grid, max_edge=6.0)
+    rep = tin_report(res, "ground.laz", len(x) + 7, grid)
+    rows = {str(r[0]): r[1] for s in rep.sections for b in s.blocks
+            if isinstance(b, KeyValues) for r in b.rows}
+    ok = np.isfinite(res.z)
+    assert rows["Points in file"] == len(x) + 7 and rows["Points triangulated"] == len(x)
+    assert rows["Triangles"] == res.n_triangles and rows["Triangles dropped (edge too long)"] \
+        == res.n_long > 0
+    assert rows["Cells with a value"] == ok.sum() and rows["Nodata cells"] == (~ok).sum()
+    assert rows["Minimum height (m)"] == pytest.approx(np.nanmin(res.z))
+    assert rows["Grid (columns × rows)"] == "120 × 90"
+    assert not [m for m in rep.messages() for lang in ("ar", "fa")
+                if not has_translation(m, lang)]
+    assert 'id="dtm-map"' in render_html(rep, lang="ar")
+    filled = tin_report(tin_grid(x, y, z, grid, fill=True), "g.laz", len(x), grid)
+    assert "Gaps were filled: long triangles were kept." in filled.messages()
