@@ -10,6 +10,7 @@ from qgis.core import (
     QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterRasterDestination,
+    QgsProcessingParameterRasterLayer,
     QgsProcessingParameterString,
     QgsProcessingParameterVectorDestination,
     QgsProcessingParameterVectorLayer,
@@ -46,6 +47,8 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
     GROUP = "terrain"
     INPUT = "INPUT"
     INPUT_AFTER = "INPUT_AFTER"
+    RASTER = "RASTER"
+    RASTER_AFTER = "RASTER_AFTER"
     SIGMA1 = "SIGMA1"
     SIGMA2 = "SIGMA2"
     RESIDUALS1 = "RESIDUALS1"
@@ -88,6 +91,8 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
                                       "used) and the typed σ is ignored."),
              self.INPUT_AFTER: self.tr("A raster on another grid in the same CRS is "
                                        "resampled (bilinear) onto the first one's grid."),
+             self.RASTER: self.tr("A raster layer of the project or a raster file; give "
+                                  "each epoch once, as a file or as a raster layer."),
              self.MIN_AREA: self.tr("Smaller regions are dropped: noise alone exceeds the "
                                     "LoD in 5 % of cells."),
              self.OUTPUT: self.tr("GeoTIFF of after − before (m)."),
@@ -99,7 +104,12 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
                             (self.INPUT_AFTER, self.tr("After (raster or point cloud)"))):
             self.add(QgsProcessingParameterFile(
                 name, label, behavior=QgsProcessingParameterFile.File,
-                fileFilter=EPOCH_FILTER))
+                fileFilter=EPOCH_FILTER, optional=True))
+        for name, label in ((self.RASTER, self.tr("Before as a raster layer (instead of a "
+                                                  "file)")),
+                            (self.RASTER_AFTER, self.tr("After as a raster layer (instead "
+                                                        "of a file)"))):
+            self.add(QgsProcessingParameterRasterLayer(name, label, optional=True))
         self.add_number(self.SIGMA1, self.tr("Vertical accuracy before σ₁ (m)"), 0.1,
                         minimum=0.0)
         self.add_number(self.SIGMA2, self.tr("Vertical accuracy after σ₂ (m)"), 0.1,
@@ -202,9 +212,29 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
             paths[res] = layer.source().split("|")[0]
         return out[0], out[1], paths
 
+    def epoch_paths(self, parameters, context):
+        """The two epochs' paths: each from its file parameter or its raster layer."""
+        out = []
+        for fname, rname, which in ((self.INPUT, self.RASTER, "before"),
+                                    (self.INPUT_AFTER, self.RASTER_AFTER, "after")):
+            path = self.parameterAsFile(parameters, fname, context)
+            layer = self.parameterAsRasterLayer(parameters, rname, context)
+            if path and layer is not None:
+                raise InputError(f"The {which} epoch is given twice ({fname} and {rname}); "
+                                 "give it once, as a file or as a raster layer.")
+            if layer is not None:
+                path = layer.source()
+                if not os.path.isfile(path):
+                    raise InputError(f"The {which} raster layer is not a local file "
+                                     f"({path}); save it as a GeoTIFF first.")
+            if not path:
+                raise InputError(f"No {which} epoch: give {fname} (a raster or a point "
+                                 f"cloud file) or {rname} (a raster layer).")
+            out.append(path)
+        return out
+
     def process(self, parameters, context, feedback):
-        before = self.parameterAsFile(parameters, self.INPUT, context)
-        after = self.parameterAsFile(parameters, self.INPUT_AFTER, context)
+        before, after = self.epoch_paths(parameters, context)
         s1, s2, res_paths = self.sigmas(parameters, context, feedback)
         min_area = self.parameterAsDouble(parameters, self.MIN_AREA, context)
         names = [self.OUTPUT, self.OUTPUT_POLYGONS, self.OUTPUT_HTML]

@@ -674,6 +674,18 @@
             <translation>{0} = {1:.4f} م: جذر متوسط مربعات {2} من بواقي نقاط التحقق في {3}</translation>
         </message>
         <message>
+            <source>A raster layer of the project or a raster file; give each epoch once, as a file or as a raster layer.</source>
+            <translation>طبقة نقطية من المشروع أو ملف نقطي؛ أعطِ كل حقبة مرة واحدة، كملف أو كطبقة نقطية.</translation>
+        </message>
+        <message>
+            <source>Before as a raster layer (instead of a file)</source>
+            <translation>قبل، كطبقة نقطية (بدلًا من ملف)</translation>
+        </message>
+        <message>
+            <source>After as a raster layer (instead of a file)</source>
+            <translation>بعد، كطبقة نقطية (بدلًا من ملف)</translation>
+        </message>
+        <message>
             <source>Level of detection LoD95 (m)</source>
             <translation>حد الكشف LoD95 (م)</translation>
         </message>

@@ -674,6 +674,18 @@
             <translation>{0} = {1:.4f} متر: RMSE {2} باقیماندهٔ نقاط کنترل در {3}</translation>
         </message>
         <message>
+            <source>A raster layer of the project or a raster file; give each epoch once, as a file or as a raster layer.</source>
+            <translation>یک لایهٔ رستری پروژه یا یک فایل رستری؛ هر دوره را یک بار بدهید، به‌صورت فایل یا لایهٔ رستری.</translation>
+        </message>
+        <message>
+            <source>Before as a raster layer (instead of a file)</source>
+            <translation>قبل، به‌صورت لایهٔ رستری (به‌جای فایل)</translation>
+        </message>
+        <message>
+            <source>After as a raster layer (instead of a file)</source>
+            <translation>بعد، به‌صورت لایهٔ رستری (به‌جای فایل)</translation>
+        </message>
+        <message>
             <source>Level of detection LoD95 (m)</source>
             <translation>حد آشکارسازی LoD95 (متر)</translation>
         </message>

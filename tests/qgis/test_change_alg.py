@@ -102,3 +102,27 @@ def test_residual_layer_without_error_field_is_refused(qgis_processing, epochs, 
         qgis_processing.run("geomatics:elevationchange", {
             "INPUT": before, "INPUT_AFTER": after, "RESIDUALS1": str(bad),
             "OUTPUT": str(tmp_path / "x.tif")})
+
+
+def test_epochs_as_raster_layers(qgis_processing, epochs):
+    """RASTER / RASTER_AFTER (layers or paths) give the same result as INPUT / INPUT_AFTER."""
+    from qgis.core import QgsRasterLayer
+    d, before, after = epochs
+    lyr = QgsRasterLayer(after, "after")
+    assert lyr.isValid()
+    by_layer = qgis_processing.run("geomatics:elevationchange", {
+        "RASTER": before, "RASTER_AFTER": lyr, "SIGMA1": 0.05, "SIGMA2": 0.05,
+        "OUTPUT": str(d / "diff_l.tif")})
+    by_file = qgis_processing.run("geomatics:elevationchange", {
+        "INPUT": before, "INPUT_AFTER": after, "SIGMA1": 0.05, "SIGMA2": 0.05,
+        "OUTPUT": str(d / "diff_f.tif")})
+    assert by_layer["FILL_VOLUME"] == by_file["FILL_VOLUME"] > 0
+    assert np.array_equal(read_raster(by_layer["OUTPUT"]).data,
+                          read_raster(by_file["OUTPUT"]).data)
+    with pytest.raises(QgsProcessingException, match="given twice"):
+        qgis_processing.run("geomatics:elevationchange", {
+            "INPUT": before, "RASTER": before, "INPUT_AFTER": after,
+            "OUTPUT": str(d / "x.tif")})
+    with pytest.raises(QgsProcessingException, match="No after epoch"):
+        qgis_processing.run("geomatics:elevationchange", {
+            "INPUT": before, "OUTPUT": str(d / "x.tif")})
