@@ -4,21 +4,25 @@ Rows (each peer run in the same script, so machine load cancels out):
 
 1. TIN DTM vs ``gdal_grid -a linear`` (``gdal.Grid``, ``radius=0`` = nodata outside the
    hull, GDAL_NUM_THREADS=ALL_CPUS) on 1 M synthetic ground points (1 cm coordinates)
-   → 1 km² at 1 m (1 M cells): time ratio ours/GDAL (target ≤ 1.0), max |difference|
-   over every cell (target ≤ 1e-3 m). GDAL gets the points twice: in grid-local
+   → 1 km² at 1 m (1 M cells): time ratio ours/GDAL (target ≤ 1.0; medians of
+   ``--runs`` alternating runs, wall and CPU time), max |difference| over every cell
+   (target ≤ 1e-3 m). GDAL gets the points twice: in grid-local
    coordinates (an exact translation; the like-for-like oracle) and in raw UTM
    coordinates, where its barycentric arithmetic loses millimetres (shown, not hidden).
-2. Building footprints on a synthetic tile: completeness, correctness (buildings
-   ≥ 50 m²), mean footprint IoU, height RMSE; Whitebox Workflows'
-   ``classify_buildings_in_lidar`` on the same tile when the package runs offline.
+2. Building footprints on synthetic tiles (5 seeds × 2 and 5 pts/m², plus 1 and
+   10 pts/m²): completeness, correctness (buildings ≥ 50 m²), mean footprint IoU,
+   height RMSE; Whitebox Workflows' ``classify_lidar`` (its class 6 as footprints) on
+   the same tiles (its ``classify_buildings_in_lidar`` needs footprints as input).
 
-Usage: ``.venv/bin/python benchmarks/bench_products.py [--quick]``; writes
-``benchmarks/results/products.md``.
+Usage: ``.venv/bin/python benchmarks/bench_products.py [--quick] [--only tin|buildings]
+[--runs N] [--no-whitebox]``; writes ``benchmarks/results/products.md`` (``--only``
+replaces one section and keeps the other).
 """
 from __future__ import annotations
 
 import argparse
 import datetime
+import os
 import platform
 import sys
 import time
@@ -36,47 +40,91 @@ from geomatics_toolbox.core.terrain.grid import grid_from_extent  # noqa: E402
 from geomatics_toolbox.core.terrain.tin import tin_grid  # noqa: E402
 
 
-def tin_rows(n: int, side: float, decimals: int, raw: bool) -> list:
-    """Ours vs gdal_grid -a linear at one coordinate resolution; Markdown rows."""
+def _timed(fn):
+    """Run ``fn()``; return (result, wall seconds, CPU seconds of the whole process).
+
+    CPU time counts every thread (GDAL's grid workers too), so on a machine shared
+    with other jobs it measures the work done where wall time measures the queue.
+    """
+    w, c = time.perf_counter(), time.process_time()
+    out = fn()
+    return out, time.perf_counter() - w, time.process_time() - c
+
+
+def tin_rows(n: int, side: float, decimals: int, raw: bool, runs: int = 3) -> list:
+    """Ours vs gdal_grid -a linear at one coordinate resolution; Markdown rows.
+
+    ``runs`` alternating pairs (ours first, then GDAL first, ...); medians of wall and
+    CPU time, and the per-pair wall ratios.
+    """
     x, y, z, ext = synthetic_ground(n, side, seed=3, decimals=decimals)
     # duplicate x, y (1 cm coordinates) leave the TIN undefined: Qhull keeps one of them
     _, first = np.unique(np.column_stack([x, y]), axis=0, return_index=True)
     x, y, z = x[np.sort(first)], y[np.sort(first)], z[np.sort(first)]
     grid = grid_from_extent(ext, 1.0)
-    t = time.perf_counter()
-    ours = tin_grid(x, y, z, grid, fill=True).z
-    t_ours = time.perf_counter() - t
     local = grid_from_extent((0.0, side, 0.0, side), 1.0)
-    ref, t_gdal = gdal_grid(gdal_points(x - grid.xmin, y - grid.ymin, z), local,
-                            "linear:radius=0:nodata=-9999")
-    runs = [("grid-local", ref, t_gdal)]
+    ds_local = gdal_points(x - grid.xmin, y - grid.ymin, z)
+
+    def ours_run():
+        return tin_grid(x, y, z, grid, fill=True).z
+
+    def gdal_run():
+        return gdal_grid(ds_local, local, "linear:radius=0:nodata=-9999")[0]
+
+    t_ours, t_gdal = [], []
+    for k in range(runs):
+        pair = [("ours", ours_run), ("gdal", gdal_run)]
+        for name, fn in (pair if k % 2 == 0 else pair[::-1]):
+            res, wall, cpu = _timed(fn)
+            if name == "ours":
+                ours = res
+                t_ours.append((wall, cpu))
+            else:
+                ref = res
+                t_gdal.append((wall, cpu))
+    med_o, med_g = np.median(t_ours, axis=0), np.median(t_gdal, axis=0)
+    ratios = [o[0] / g[0] for o, g in zip(t_ours, t_gdal)]
+    runs_out = [("grid-local", ref, runs, med_g, ratios)]
     if raw:
-        runs.append(("raw UTM", *gdal_grid(gdal_points(x, y, z), grid,
-                                           "linear:radius=0:nodata=-9999")))
+        other, wall, cpu = _timed(lambda: gdal_grid(gdal_points(x, y, z), grid,
+                                                    "linear:radius=0:nodata=-9999")[0])
+        runs_out.append(("raw UTM", other, 1, np.array([wall, cpu]), [med_o[0] / wall]))
     rows = []
-    for label, other, t_other in runs:
+    for label, other, nrun, med, rat in runs_out:
         both = np.isfinite(ours) & np.isfinite(other)
         d = np.abs(ours - other)[both]
         mism = int((np.isfinite(ours) != np.isfinite(other)).sum())
         rows.append(f"| {n:,} | {10.0 ** -decimals:g} m | {n - x.size} | {label} | "
-                    f"{grid.size:,} | {t_ours:.2f} | {t_other:.2f} | {t_ours / t_other:.2f} | "
+                    f"{grid.size:,} | {nrun} | {med_o[0]:.2f} | {med[0]:.2f} | "
+                    f"**{med_o[0] / med[0]:.2f}** | {med_o[1]:.2f} | {med[1]:.2f} | "
+                    f"**{med_o[1] / med[1]:.2f}** | "
+                    f"{' / '.join(f'{r:.2f}' for r in rat)} | "
                     f"{d.max():.2e} | {int((d > 1e-3).sum())} | {mism} |")
+        print(rows[-1], flush=True)
     return rows
 
 
-def bench_tin(n: int, side: float) -> list:
+def bench_tin(n: int, side: float, runs: int = 3) -> list:
     """Row 1: ours vs gdal_grid -a linear; returns Markdown lines."""
-    rows = tin_rows(n, side, 2, True) + tin_rows(n, side, 6, False)
+    rows = tin_rows(n, side, 2, True, runs) + tin_rows(n, side, 6, False, runs)
+    load = " / ".join(f"{v:.1f}" for v in os.getloadavg())
     return ["## 1. TIN DTM vs `gdal_grid -a linear`", "",
             "Duplicate x, y are dropped before both runs (Qhull keeps one of them, "
             "either may win). On a 1 cm lattice four or more points can also lie on one "
             "circle, where the Delaunay triangulation is not unique and the two Qhull "
             "runs may pick different diagonals (the cells > 1 mm of the 1 cm rows); with "
             "1 µm coordinates the points are in general position.", "",
+            f"Times are medians of {runs} alternating runs (ours first, then GDAL first, "
+            "…), wall and CPU (process time, every thread: GDAL grids with "
+            "GDAL_NUM_THREADS=ALL_CPUS, ours is single-threaded). On a machine shared "
+            "with other jobs the wall time swings with the queue; the CPU ratio measures "
+            "the work. The raw-UTM row is one GDAL run (shown for its accuracy). "
+            f"Load average at the end (1/5/15 min): {load}.", "",
             "| points | coordinate step | duplicates dropped | GDAL coordinates | cells | "
-            "ours (s) | gdal_grid (s) | time ratio ours/GDAL | max abs diff (m) | "
-            "cells > 1 mm | nodata mismatches |",
-            "|---|---|---|---|---|---|---|---|---|---|---|", *rows, ""]
+            "runs | ours wall (s) | gdal_grid wall (s) | wall ratio ours/GDAL | "
+            "ours CPU (s) | gdal_grid CPU (s) | CPU ratio ours/GDAL | wall ratio per run | "
+            "max abs diff (m) | cells > 1 mm | nodata mismatches |",
+            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|", *rows, ""]
 
 
 def class6_footprints(x, y, z, cls, cell: float = 0.5, min_area: float = 15.0):
@@ -219,6 +267,7 @@ def main(argv=None) -> int:
     ap.add_argument("--only", choices=("tin", "buildings"),
                     help="run one section and keep the other from the results file")
     ap.add_argument("--no-whitebox", action="store_true")
+    ap.add_argument("--runs", type=int, default=3, help="alternating TIN runs (≥ 3)")
     args = ap.parse_args(argv)
     n, side = (100_000, 316.0) if args.quick else (1_000_000, 1000.0)
     stamp = (f"_{datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC on "
@@ -226,7 +275,7 @@ def main(argv=None) -> int:
              f"arguments: {' '.join(argv or sys.argv[1:]) or '(none)'}._")
     sections = {}
     if args.only in (None, "tin"):
-        lines = bench_tin(n, side)
+        lines = bench_tin(n, side, max(args.runs, 1))
         sections["1"] = "\n".join(lines[:1] + ["", stamp] + lines[1:]) + "\n"
     if args.only in (None, "buildings"):
         cases = [(4, 220.0, 5.0), (11, 220.0, 2.0)] if args.quick else BUILDING_CASES
