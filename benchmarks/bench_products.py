@@ -200,7 +200,7 @@ def _row(method, seed, side, density, tile, acc, dt):
             f"{acc['height_rmse']:.3f} | {dt:.1f} |")
 
 
-def bench_buildings(cases, whitebox: bool = True) -> list:
+def bench_buildings(cases, whitebox: bool = True, whitebox_max: int = 99) -> list:
     """Row 2: building footprints on synthetic tiles, ours and Whitebox; Markdown lines."""
     from geomatics_toolbox.core.lidar.buildings import extract_buildings
     from geomatics_toolbox.synthetic.buildings_eval import building_accuracy
@@ -217,7 +217,7 @@ def bench_buildings(cases, whitebox: bool = True) -> list:
                                 [b["height"] for b in res.buildings])
         rows.append(_row("ours", seed, side, density, tile, acc, dt))
         print(rows[-1], flush=True)
-        if whitebox and not wb_note:
+        if whitebox and not wb_note and len(wb_rows) < whitebox_max:
             wcls, info = run_whitebox(tile)
             if wcls is None:
                 wb_note = f"Whitebox Workflows `classify_lidar`: {info}; no figures."
@@ -267,6 +267,8 @@ def main(argv=None) -> int:
     ap.add_argument("--only", choices=("tin", "buildings"),
                     help="run one section and keep the other from the results file")
     ap.add_argument("--no-whitebox", action="store_true")
+    ap.add_argument("--whitebox-max", type=int, default=99,
+                    help="run Whitebox on the first N tiles only (it takes minutes each)")
     ap.add_argument("--runs", type=int, default=3, help="alternating TIN runs (≥ 3)")
     args = ap.parse_args(argv)
     n, side = (100_000, 316.0) if args.quick else (1_000_000, 1000.0)
@@ -279,7 +281,8 @@ def main(argv=None) -> int:
         sections["1"] = "\n".join(lines[:1] + ["", stamp] + lines[1:]) + "\n"
     if args.only in (None, "buildings"):
         cases = [(4, 220.0, 5.0), (11, 220.0, 2.0)] if args.quick else BUILDING_CASES
-        lines = bench_buildings(cases, whitebox=not args.no_whitebox)
+        lines = bench_buildings(cases, whitebox=not args.no_whitebox,
+                                whitebox_max=args.whitebox_max)
         sections["2"] = "\n".join(lines[:1] + ["", stamp] + lines[1:]) + "\n"
     old = RESULTS.read_text(encoding="utf-8") if RESULTS.exists() and args.only else \
         "# LiDAR products benchmark\n\n"
