@@ -198,8 +198,8 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
                 continue
             names = layer.fields().names()
             if "error" not in names:
-                raise InputError(f"{layer.name()} has no 'error' field: give the residual "
-                                 "layer written by the DTM accuracy tool.")
+                raise InputError("{layer} has no 'error' field: give the residual layer "
+                                 "written by the DTM accuracy tool.", layer=layer.name())
             ok = "status" in names
             errors = [f["error"] for f in layer.getFeatures()
                       if not ok or str(f["status"]) == STATUS_NAMES[USED]]
@@ -215,21 +215,24 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
     def epoch_paths(self, parameters, context):
         """The two epochs' paths: each from its file parameter or its raster layer."""
         out = []
-        for fname, rname, which in ((self.INPUT, self.RASTER, "before"),
-                                    (self.INPUT_AFTER, self.RASTER_AFTER, "after")):
+        for fname, rname in ((self.INPUT, self.RASTER),
+                             (self.INPUT_AFTER, self.RASTER_AFTER)):
             path = self.parameterAsFile(parameters, fname, context)
             layer = self.parameterAsRasterLayer(parameters, rname, context)
             if path and layer is not None:
-                raise InputError(f"The {which} epoch is given twice ({fname} and {rname}); "
-                                 "give it once, as a file or as a raster layer.")
+                raise InputError("An epoch is given twice ({file} and {layer}); give it "
+                                 "once, as a file or as a raster layer.", file=fname,
+                                 layer=rname)
             if layer is not None:
                 path = layer.source()
                 if not os.path.isfile(path):
-                    raise InputError(f"The {which} raster layer is not a local file "
-                                     f"({path}); save it as a GeoTIFF first.")
+                    raise InputError("The raster layer {layer} is not a local file "
+                                     "({path}); save it as a GeoTIFF first.", layer=rname,
+                                     path=path)
             if not path:
-                raise InputError(f"No {which} epoch: give {fname} (a raster or a point "
-                                 f"cloud file) or {rname} (a raster layer).")
+                raise InputError("An epoch is missing: give {file} (a raster or a point "
+                                 "cloud file) or {layer} (a raster layer).", file=fname,
+                                 layer=rname)
             out.append(path)
         return out
 

@@ -54,9 +54,9 @@ def sigma_from_residuals(errors, name: str = "the residual layer") -> float:
     e = np.asarray(errors, dtype=np.float64).ravel()
     e = e[np.isfinite(e)]
     if e.size < 3:
-        raise InputError(f"{name} holds {e.size} usable check-point residuals (field "
-                         "'error', status 'used'); give the residual layer of a DTM accuracy "
-                         "run with at least 3, or type σ instead.")
+        raise InputError("{name} holds {n} usable check-point residuals (field 'error', "
+                         "status 'used'); give the residual layer of a DTM accuracy run "
+                         "with at least 3, or type σ instead.", name=name, n=int(e.size))
     return float(np.sqrt(np.mean(e * e)))
 
 

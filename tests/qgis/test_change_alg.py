@@ -123,6 +123,6 @@ def test_epochs_as_raster_layers(qgis_processing, epochs):
         qgis_processing.run("geomatics:elevationchange", {
             "INPUT": before, "RASTER": before, "INPUT_AFTER": after,
             "OUTPUT": str(d / "x.tif")})
-    with pytest.raises(QgsProcessingException, match="No after epoch"):
+    with pytest.raises(QgsProcessingException, match="An epoch is missing"):
         qgis_processing.run("geomatics:elevationchange", {
             "INPUT": before, "OUTPUT": str(d / "x.tif")})
