@@ -2213,8 +2213,12 @@
             <translation>PTD: قطع {} م، مسافة {} م، زاوية {}°</translation>
         </message>
         <message>
-            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest points of parcels larger than the largest building seed a TIN, which takes every point close enough to its facet until none is added. Its mean total error on the 8 ISPRS samples is 8.05 % at the defaults: use the recommended ground filter unless you need a TIN filter.</source>
-            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) بالتكثيف التدريجي لشبكة المثلثات TIN (Axelsson 2000): أدنى نقاط قطع أكبر من أكبر مبنى تكون بذور شبكة TIN، تضم كل نقطة قريبة بما يكفي من وجهها حتى لا تُضاف أي نقطة. متوسط خطئه الكلي على عينات ISPRS الثماني 8.05 % بالقيم الافتراضية: استخدم مرشح الأرض المُوصى به ما لم تحتج إلى مرشح TIN.</translation>
+            <source>Cliff-aware mirroring</source>
+            <translation>انعكاس مراعٍ للجروف</translation>
+        </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest points of parcels larger than the largest building seed a TIN, which takes every point close enough to its facet until none is added. Its mean total error on the 8 ISPRS samples is 8.07 % at the defaults: use the recommended ground filter unless you need a TIN filter.</source>
+            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) بالتكثيف التدريجي لشبكة المثلثات TIN (Axelsson 2000): أدنى نقاط قطع أكبر من أكبر مبنى تكون بذور شبكة TIN، تضم كل نقطة قريبة بما يكفي من وجهها حتى لا تُضاف أي نقطة. متوسط خطئه الكلي على عينات ISPRS الثماني 8.07 % بالقيم الافتراضية: استخدم مرشح الأرض المُوصى به ما لم تحتج إلى مرشح TIN.</translation>
         </message>
         <message>
             <source>Lowest point per cell for the step filter and the seeds.</source>
@@ -2243,6 +2247,10 @@
         <message>
             <source>Lowest share of each parcel skipped before picking its seed.</source>
             <translation>الحصة الأدنى من كل قطعة التي تُتخطّى قبل اختيار بذرتها.</translation>
+        </message>
+        <message>
+            <source>Points in a TIN facet that spans a cliff (steeper than 45° and higher than the distance to facet) are mirrored through nearby TIN vertices and accepted when the mirror lies on the cliff foot or top within the final distance, so the ground right at the cliff edge is kept.</source>
+            <translation>النقاط الواقعة في وجه من شبكة TIN يمتد عبر جرف (أشد انحداراً من 45° وأعلى من المسافة إلى الوجه) تُعكس عبر رؤوس الشبكة القريبة وتُقبل إذا وقع انعكاسها على قاعدة الجرف أو قمته ضمن المسافة النهائية، فتُحفظ الأرض عند حافة الجرف تماماً.</translation>
         </message>
         <message>
             <source>&lt;p&gt;Reference: Axelsson, P. (2000). &lt;cite&gt;DEM generation from laser scanner data using adaptive TIN models&lt;/cite&gt;. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</source>

@@ -2213,8 +2213,12 @@
             <translation>PTD: قطعه‌ها {} متر، فاصله {} متر، زاویه {}°</translation>
         </message>
         <message>
-            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest points of parcels larger than the largest building seed a TIN, which takes every point close enough to its facet until none is added. Its mean total error on the 8 ISPRS samples is 8.05 % at the defaults: use the recommended ground filter unless you need a TIN filter.</source>
-            <translation>ابر نقطهٔ LAS/LAZ را به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) با متراکم‌سازی تدریجی TIN (Axelsson 2000) طبقه‌بندی می‌کند: پایین‌ترین نقاط قطعه‌هایی بزرگ‌تر از بزرگ‌ترین ساختمان بذر یک TIN می‌شوند که هر نقطهٔ به‌قدر کافی نزدیک به وجه خود را می‌پذیرد تا جایی که نقطه‌ای افزوده نشود. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 8.05 % است: مگر به پالایهٔ TIN نیاز دارید، پالایهٔ زمین پیشنهادی را به کار ببرید.</translation>
+            <source>Cliff-aware mirroring</source>
+            <translation>قرینه‌سازی با درنظرگرفتن پرتگاه</translation>
+        </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest points of parcels larger than the largest building seed a TIN, which takes every point close enough to its facet until none is added. Its mean total error on the 8 ISPRS samples is 8.07 % at the defaults: use the recommended ground filter unless you need a TIN filter.</source>
+            <translation>ابر نقطهٔ LAS/LAZ را به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) با متراکم‌سازی تدریجی TIN (Axelsson 2000) طبقه‌بندی می‌کند: پایین‌ترین نقاط قطعه‌هایی بزرگ‌تر از بزرگ‌ترین ساختمان بذر یک TIN می‌شوند که هر نقطهٔ به‌قدر کافی نزدیک به وجه خود را می‌پذیرد تا جایی که نقطه‌ای افزوده نشود. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 8.07 % است: مگر به پالایهٔ TIN نیاز دارید، پالایهٔ زمین پیشنهادی را به کار ببرید.</translation>
         </message>
         <message>
             <source>Lowest point per cell for the step filter and the seeds.</source>
@@ -2243,6 +2247,10 @@
         <message>
             <source>Lowest share of each parcel skipped before picking its seed.</source>
             <translation>سهم پایین‌ترین بخش هر قطعه که پیش از برگزیدن بذرش کنار گذاشته می‌شود.</translation>
+        </message>
+        <message>
+            <source>Points in a TIN facet that spans a cliff (steeper than 45° and higher than the distance to facet) are mirrored through nearby TIN vertices and accepted when the mirror lies on the cliff foot or top within the final distance, so the ground right at the cliff edge is kept.</source>
+            <translation>نقاطی که در وجهی از TIN قرار دارند که از روی یک پرتگاه می‌گذرد (تندتر از 45° و بلندتر از فاصله تا وجه) نسبت به رأس‌های نزدیک TIN قرینه می‌شوند و اگر قرینه در فاصلهٔ نهایی روی پای پرتگاه یا بالای آن بیفتد پذیرفته می‌شوند، تا زمینِ درست لبهٔ پرتگاه حفظ شود.</translation>
         </message>
         <message>
             <source>&lt;p&gt;Reference: Axelsson, P. (2000). &lt;cite&gt;DEM generation from laser scanner data using adaptive TIN models&lt;/cite&gt;. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</source>

@@ -5,15 +5,18 @@ lowest point per cell -> step filter on the TIN of the cell minima (pits and spi
 out) -> seeds = lowest points of overlapping parcels larger than the largest
 building -> densify the TIN (distance-to-facet and angle-to-vertex limits, one point
 per facet per iteration, iteration cap; Axelsson's mirroring for candidates below
-their facet) -> final pass against the last TIN: points within the final distance
-become ground, points far below it low noise (class 7).
+their facet, and a cliff-aware mirroring for candidates in facets that span a
+breakline, so the ground at a cliff foot and top is kept) -> final pass against the
+last TIN: points within the final distance become ground, points far below it low
+noise (class 7).
 
 The densification is vectorised: the Delaunay TIN (Qhull) is rebuilt once per
 iteration with every point accepted in that iteration, and all candidates are
 located with one ``find_simplex`` call.
 
 Measured on the 8 ISPRS filter-test samples at the defaults: mean total error
-8.05 % (see ``benchmarks/results/ground.md``).
+8.07 % (8.05 % without the cliff-aware mirroring; see
+``benchmarks/results/ground.md``).
 
 References
 ----------
@@ -50,6 +53,11 @@ CITATION = T("Reference: {ref}", ref="Axelsson, P. (2000). DEM generation from l
              "data using adaptive TIN models. IAPRS XXXIII-B4, 110–117.")
 
 
+#: Facets steeper than this (degrees) and rising more than ``max_distance`` span a
+#: breakline (cliff foot to cliff top) for :func:`breakline_test`.
+BREAKLINE_SLOPE = 45.0
+
+
 @dataclass(frozen=True)
 class PtdOptions:
     """Parameters of :func:`classify` (lengths in metres, angles in degrees).
@@ -83,6 +91,10 @@ class PtdOptions:
     mirror : {'none', 'below', 'all'}
         Which rejected candidates get Axelsson's mirror test (through the nearest
         facet vertex): none, only those below their facet, or all.
+    breakline : bool
+        Cliff-aware mirroring (:func:`breakline_test`) for candidates in facets that
+        span a breakline (steeper than 45 degrees and rising more than
+        ``max_distance``); needs ``mirror`` other than 'none'.
     """
 
     cell: float = 2.0
@@ -98,6 +110,7 @@ class PtdOptions:
     seed_drop: float = 0.003
     min_points: int = 10
     mirror: str = "below"
+    breakline: bool = True
 
     def __post_init__(self):
         """Refuse invalid parameters."""
@@ -258,8 +271,10 @@ def densify(x, y, z, seeds, pool, opt, rep):
         d, _, ang, s = _tin.distances(tri, gz, x[cand], y[cand], z[cand], geom=geom)
         ok = (np.abs(d) <= opt.max_distance) & (ang <= opt.max_angle)
         d = np.abs(d)
-        mirror_test(tri, gz, geom, x[cand], y[cand], z[cand], s, d, ok, opt)
-        ok &= geom[2][s] >= opt.min_edge
+        steep = breakline_facets(geom, gz, tri, opt) if opt.breakline else None
+        mirror_test(tri, gz, geom, x[cand], y[cand], z[cand], s, d, ok, opt, steep)
+        ok &= geom[2][s] >= opt.min_edge if steep is None else \
+            (geom[2][s] >= opt.min_edge) | steep[s]
         if not ok.any():
             break
         sel = np.flatnonzero(ok)
@@ -270,16 +285,20 @@ def densify(x, y, z, seeds, pool, opt, rep):
     return np.flatnonzero(is_ground)
 
 
-def mirror_test(tri, gz, geom, cx, cy, cz, s, d, ok, opt):
+def mirror_test(tri, gz, geom, cx, cy, cz, s, d, ok, opt, steep=None):
     """Axelsson's mirroring for candidates near breaklines (in place).
 
     A rejected candidate is mirrored through the nearest vertex of
     the facet (M = 2 V - P); when M passes the distance and angle tests the
-    candidate is accepted and its distance set to M's.
+    candidate is accepted and its distance set to M's. Candidates in a steep facet
+    (a facet spanning a cliff) get :func:`breakline_test` as well.
     """
     test = np.flatnonzero(~ok)
     if test.size == 0 or opt.mirror == "none":
         return
+    if steep is not None:
+        breakline_test(tri, gz, geom, cx, cy, cz, s, d, ok, opt, steep)
+        test = np.flatnonzero(~ok)
     v = geom[1][s[test]]
     p = np.column_stack((cx[test], cy[test], cz[test]))
     if opt.mirror == "below":
@@ -293,6 +312,41 @@ def mirror_test(tri, gz, geom, cx, cy, cz, s, d, ok, opt):
     good = (np.abs(dm) <= opt.max_distance) & (am <= opt.max_angle)
     ok[test[good]] = True
     d[test[good]] = np.abs(dm[good])
+
+
+def breakline_facets(geom, gz, tri, opt):
+    """Flag facets steeper than ``BREAKLINE_SLOPE`` that rise more than ``max_distance``."""
+    rise = np.ptp(gz[tri.simplices], axis=1)
+    return (geom[0][:, 2] < np.cos(np.radians(BREAKLINE_SLOPE))) & (rise > opt.max_distance)
+
+
+def breakline_test(tri, gz, geom, cx, cy, cz, s, d, ok, opt, steep):
+    """Mirroring at cliffs: accept a candidate that continues the terrain beyond a vertex.
+
+    A facet that spans a breakline (:func:`breakline_facets`: cliff foot to cliff
+    top) says nothing about the candidates inside it. Such a rejected candidate P
+    is mirrored (M = 2 V - P, Axelsson 2000, who uses the nearest facet vertex only)
+    through each of the facet's three vertices and through the three TIN vertices
+    nearest to it in 3D, which at a cliff are often not vertices of its facet; only
+    vertices within two cells of P count. P is accepted when some M falls in a
+    facet that does not span a breakline and lies within ``final_distance`` of it
+    vertically, i.e. P continues the cliff foot or cliff top surface through V.
+    In place, like :func:`mirror_test`.
+    """
+    test = np.flatnonzero(~ok & steep[s])
+    if test.size == 0:
+        return
+    p = np.column_stack((cx[test], cy[test], cz[test]))
+    vert = np.column_stack((tri.points, gz))
+    near = vert[_tin.cKDTree(vert).query(p, k=min(3, gz.size))[1]].reshape(test.size, -1, 3)
+    v = np.concatenate((geom[1][s[test]], near), axis=1)
+    far = (np.linalg.norm(v - p[:, None, :], axis=2) > 2.0 * opt.cell).ravel()
+    m = (2.0 * v - p[:, None, :]).reshape(-1, 3)
+    _, dz, _, sm = _tin.distances(tri, gz, m[:, 0], m[:, 1], m[:, 2], geom=geom)
+    off = np.where(steep[sm] | far, np.inf, np.abs(dz)).reshape(test.size, -1).min(axis=1)
+    good = off <= opt.final_distance
+    ok[test[good]] = True
+    d[test[good]] = off[good]
 
 
 def final_pass(x, y, z, ground, opt):
