@@ -20,6 +20,9 @@ Writes ``benchmarks/results/ground.md``:
    after a reset, so it includes the resident baseline (coordinates, Python, numpy).
    PTD runs on a 1 M point window of the tile (its Qhull rebuilds make the full tile
    take too long for a benchmark run); the table says so.
+
+``--ptd`` re-measures only PTD (its ISPRS rows and its speed row) and merges them into
+the existing ``ground.md``, leaving every other row as it was and noting when.
 """
 from __future__ import annotations
 
@@ -249,6 +252,56 @@ def write_md(isprs, msg, lo, speed, quick, keep_head=None, kept=()):
     print(RESULTS.read_text())
 
 
+def _ptd_isprs_rows():
+    """PTD's total and Type I / II / kappa rows on the ISPRS samples."""
+    from geomatics_toolbox.core.lidar.accuracy import assess
+    rows = {}
+    for s in SAMPLES:
+        x, y, z, ref = load(s)
+        rows[s] = assess(ground_mask("ptd", x, y, z), ref).as_dict()
+        print(s, round(rows[s]["total"], 2), flush=True)
+    return rows
+
+
+def merge_ptd(text, rows, speed, quick):
+    """Replace PTD's column, rows and speed row of ``ground.md`` ``text``; add a note."""
+    col = FILTERS.index("ptd") + 1
+    out = []
+    for line in text.splitlines():
+        cells = line.split(" | ")
+        if rows and cells[0][2:] in rows and len(cells) == len(FILTERS) + 1:
+            cells[col] = _f(rows[cells[0][2:]]["total"])
+            line = " | ".join(cells)
+        elif rows and line.startswith("| **mean** |") and len(cells) == len(FILTERS) + 1:
+            cells[col] = _f(np.mean([rows[s]["total"] for s in SAMPLES]))
+            line = " | ".join(cells)
+        elif rows and cells[0][2:] in rows and cells[1] == "ptd":
+            a = rows[cells[0][2:]]
+            line = (f"{cells[0]} | ptd | {_f(a['type1'])} | {_f(a['type2'])} | "
+                    f"{_f(a['total'])} | {_f(a['kappa'], 1)} |")
+        elif speed and line.startswith("| ptd"):
+            continue
+        elif line.startswith("PTD speed row:") or line.startswith("PTD rows re-measured"):
+            continue
+        out.append(line)
+    text = "\n".join(out).rstrip("\n") + "\n"
+    now = datetime.datetime.now().isoformat(timespec="minutes")
+    if speed:
+        r = speed[0]
+        row = ("| ptd" + (" (1 M window)" if r["n"] < 5_000_000 else "")
+               + f" | {r['n']:,} | {r['wall']:.1f} | {r['cpu']:.1f} | "
+               f"{r['n'] / max(r['cpu'], 1e-9):,.0f} | {r['peak_mb']:.0f} | "
+               f"{r['base_mb']:.0f} | {r['peak_mb'] * 2**20 / r['n']:.0f} | "
+               f"{r['total']:.2f} |") if "error" not in r \
+            else f"| ptd | error: {r['error'][-120:]!r} |"
+        text += row + "\n"
+    what = " and ".join(w for w, on in (("ISPRS rows", rows), ("speed row", speed)) if on)
+    text += (f"\nPTD rows re-measured on {now} with `bench_ground.py --ptd"
+             f"{' --quick' if quick else ''}` ({what}; {platform.node()}, other rows "
+             "from the run above).\n")
+    return text
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="1 M point tile")
@@ -258,8 +311,23 @@ def main(argv=None):
     ap.add_argument("--speed-filters", default=",".join(SPEED_FILTERS),
                     help="comma-separated filters to time with --speed-only; the other "
                          "rows of the existing speed table are kept and marked")
+    ap.add_argument("--ptd", action="store_true",
+                    help="re-measure PTD only (ISPRS rows and speed row) and merge them")
     args = ap.parse_args(argv)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
+    if args.ptd:
+        rows = _ptd_isprs_rows() if (ISPRS / "samp11.laz").exists() else None
+        if rows:
+            RESULTS.write_text(merge_ptd(RESULTS.read_text(encoding="utf-8"), rows, None,
+                                         args.quick), encoding="utf-8")
+        speed = None
+        if not args.no_speed:
+            with tempfile.TemporaryDirectory() as tmp:
+                speed = speed_section(args.quick, tmp, only=["ptd"])
+        RESULTS.write_text(merge_ptd(RESULTS.read_text(encoding="utf-8"), rows, speed,
+                                     args.quick), encoding="utf-8")
+        print(RESULTS.read_text(encoding="utf-8"))
+        return 0
     if args.speed_only:
         old = RESULTS.read_text(encoding="utf-8")
         head = old[:old.index("## Throughput")] if "## Throughput" in old else old
