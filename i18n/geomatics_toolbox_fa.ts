@@ -540,7 +540,7 @@
         </message>
         <message>
             <source>N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; {} outside, {} on nodata</source>
-            <translation>N = {}، RMSE = {:.4f} متر، ME = {:.4f} متر، r = {:.5f}؛ {} بیرون از مدل، {} روی nodata</translation>
+            <translation>⁦N = {}⁩، ⁦RMSE = {:.4f}⁩ متر، ⁦ME = {:.4f}⁩ متر، ⁦r = {:.5f}⁩؛ {} بیرون از مدل، {} روی nodata</translation>
         </message>
         <message>
             <source>Compares a DTM with independent check points (e.g. GNSS heights) and summarises the errors e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt; as bias, mean absolute error, RMSE, NMAD, Pearson r and the vertical accuracy at 95 % = 1.96·RMSE (ASPRS 2014). Check points outside the DTM or on nodata are counted and excluded, never read as 0.</source>
@@ -2537,7 +2537,7 @@
         </message>
         <message>
             <source>Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, mode {}</source>
-            <translation>فیلتر شیب: r = {} متر، θ = {}°، h = {} متر، بازگشت‌ها: {}، حالت: {}</translation>
+            <translation>فیلتر شیب: ⁦r = {}⁩ متر، ⁦θ = {}°⁩، ⁦h = {}⁩ متر، بازگشت‌ها: {}، حالت: {}</translation>
         </message>
         <message>
             <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
