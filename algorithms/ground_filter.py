@@ -9,8 +9,7 @@ from qgis.core import (
 
 from ..core.lidar import ptd as core_ptd
 from ..core.lidar import recommended as core_rec
-from ..core.lidar.pipeline import SelectionOptions, classify_file
-from ..core.progress import Monitor
+from ..core.lidar.pipeline import SelectionOptions
 from .helptext import build_help
 from .lidar_common import LidarFilterMixin
 
@@ -88,18 +87,8 @@ class _GroundCommon(LidarFilterMixin):
         selection = self.selection(parameters, context)
         outputs = self.filter_outputs(parameters, context, cloud=self.OUTPUT,
                                       ground=self.GROUND_OUTPUT, report=self.OUTPUT_HTML)
-        s = classify_file(src, algorithm, outputs, Monitor(**self.core_callbacks(feedback)),
-                          selection=selection)
-        filt = s.seconds.get("filter") or 0.0
-        feedback.pushInfo(self.tr("{} points: {} ground, {} non-ground, {} low outliers; "
-                                  "filter {:.1f} s").format(
-            s.n_points, s.n_ground, s.n_nonground, s.count(7), filt))
-        result = {"N_POINTS": s.n_points, "N_GROUND": s.n_ground,
-                  "N_NONGROUND": s.n_nonground, "N_NOISE": s.count(7),
-                  "POINTS_PER_SECOND": s.n_points / filt if filt > 0 else None}
-        self.load_cloud_on_completion(context, outputs.cloud,
-                                      self.tr("Classified point cloud"), self.OUTPUT)
-        return {**result, **self.filter_results(outputs)}
+        return self.classify_and_publish(src, algorithm, outputs, selection, context,
+                                         feedback)
 
 
 class GroundFilterAlgorithm(_GroundCommon):

@@ -12,9 +12,8 @@ from qgis.core import (
 
 from ..core.lidar import pipeline as core_sp
 from ..core.lidar import slope as core_sf
-from ..core.lidar.pipeline import SelectionOptions, classify_file
+from ..core.lidar.pipeline import SelectionOptions
 from ..core.lidar.sweep import sweep_file
-from ..core.progress import Monitor
 from .helptext import build_help
 from .lidar_common import LidarFilterMixin
 
@@ -192,18 +191,8 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
                                                     opts.height_tolerance, kw["returns"],
                                                     kw["mode"]))
         algorithm = core_sf.SlopeFilter(opts)
-        s = classify_file(src, algorithm, outputs, Monitor(**self.core_callbacks(feedback)),
-                          selection=selection)
-        filt = s.seconds.get("filter") or 0.0
-        feedback.pushInfo(self.tr("{} points: {} ground, {} non-ground, {} low outliers; "
-                                  "filter {:.1f} s").format(
-            s.n_points, s.n_ground, s.n_nonground, s.n_noise, filt))
-        result = {"N_POINTS": s.n_points, "N_GROUND": s.n_ground,
-                  "N_NONGROUND": s.n_nonground, "N_NOISE": s.n_noise,
-                  "POINTS_PER_SECOND": s.n_points / filt if filt > 0 else None}
-        self.load_cloud_on_completion(context, outputs.cloud,
-                                      self.tr("Classified point cloud"), self.OUTPUT)
-        return {**result, **self.filter_results(outputs)}
+        return self.classify_and_publish(src, algorithm, outputs, selection, context,
+                                         feedback, noise=lambda s: s.n_noise)
 
 
 class SlopeThresholdSweepAlgorithm(_SlopeCommon):

@@ -1778,6 +1778,17 @@
         </message>
     </context>
     <context>
+        <name>LidarFilterMixin</name>
+        <message>
+            <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
+            <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الفلترة {:.1f} ث</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>سحابة النقاط المصنَّفة</translation>
+        </message>
+    </context>
+    <context>
         <name>LidarQaAlgorithm</name>
         <message>
             <source>Point density and quality (with parameter advice)</source>
@@ -2540,10 +2551,6 @@
             <translation>فلتر الميل: ⁦r = {}⁩ م، ⁦θ = {}°⁩، ⁦h = {}⁩ م، الارتدادات: {}، النمط: {}</translation>
         </message>
         <message>
-            <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
-            <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الفلترة {:.1f} ث</translation>
-        </message>
-        <message>
             <source>Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when a neighbour within the radius r lies more than d·tan θ + h below it. The filter is exact and fast (about a million points per second at r = 3 m); tune r and θ to your data with the slope filter threshold sweep.</source>
             <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) وغير أرض (الفئة 1) بمرشّح الانحدار لـ Vosselman ‏(2000): تكون النقطة غير أرضية إذا وُجد جار ضمن نصف القطر r أدنى منها بأكثر من d·tan θ + h. المرشّح دقيق وسريع (نحو مليون نقطة في الثانية عند r = 3 m)؛ اضبط r وθ على بياناتك بأداة مسح عتبات مرشّح الانحدار.</translation>
         </message>
@@ -3084,10 +3091,6 @@
         <message>
             <source>Filter speed (points/s)</source>
             <translation>سرعة الفلترة (نقطة/ث)</translation>
-        </message>
-        <message>
-            <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
-            <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الفلترة {:.1f} ث</translation>
         </message>
         <message>
             <source>Ground filter report</source>

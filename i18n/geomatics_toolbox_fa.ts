@@ -1778,6 +1778,17 @@
         </message>
     </context>
     <context>
+        <name>LidarFilterMixin</name>
+        <message>
+            <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
+            <translation>{} نقطه: {} زمینی، {} غیرزمینی، {} پرت پایین؛ فیلتر {:.1f} ثانیه</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>ابر نقاط طبقه‌بندی‌شده</translation>
+        </message>
+    </context>
+    <context>
         <name>LidarQaAlgorithm</name>
         <message>
             <source>Point density and quality (with parameter advice)</source>
@@ -2540,10 +2551,6 @@
             <translation>فیلتر شیب: ⁦r = {}⁩ متر، ⁦θ = {}°⁩، ⁦h = {}⁩ متر، بازگشت‌ها: {}، حالت: {}</translation>
         </message>
         <message>
-            <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
-            <translation>{} نقطه: {} زمینی، {} غیرزمینی، {} پرت پایین؛ فیلتر {:.1f} ثانیه</translation>
-        </message>
-        <message>
             <source>Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when a neighbour within the radius r lies more than d·tan θ + h below it. The filter is exact and fast (about a million points per second at r = 3 m); tune r and θ to your data with the slope filter threshold sweep.</source>
             <translation>ابر نقاط LAS/LAZ را با فیلتر مبتنی بر شیب Vosselman ‏(2000) به زمین (کلاس 2) و غیرزمین (کلاس 1) کلاس‌بندی می‌کند: نقطه‌ای غیرزمینی است که همسایه‌ای درون شعاع r بیش از d·tan θ + h پایین‌تر از آن باشد. فیلتر دقیق و سریع است (حدود یک میلیون نقطه در ثانیه در r = 3 m)؛ r و θ را با ابزار پیمایش آستانه‌های فیلتر شیب برای دادهٔ خود تنظیم کنید.</translation>
         </message>
@@ -3084,10 +3091,6 @@
         <message>
             <source>Filter speed (points/s)</source>
             <translation>سرعت فیلتر (نقطه/ثانیه)</translation>
-        </message>
-        <message>
-            <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
-            <translation>{} نقطه: {} زمینی، {} غیرزمینی، {} پرت پایین؛ فیلتر {:.1f} ثانیه</translation>
         </message>
         <message>
             <source>Ground filter report</source>
