@@ -37,19 +37,19 @@ class LidarFilterMixin(GeomaticsAlgorithm):
         """``{parameter name: path}`` of every written output."""
         return {outputs.name(role): path for role, path in outputs.by_role().items()}
 
-    def classify_and_publish(self, src, algorithm, outputs, selection, context, feedback, *,
-                             noise=lambda s: s.count(7)) -> dict:
+    def classify_and_publish(self, src, algorithm, outputs, selection, context,
+                             feedback) -> dict:
         """Run ``algorithm`` on ``src`` through the pipeline, log the counts, load the
-        classified cloud into the project on completion; the output numbers and paths.
-        ``noise(stats)`` gives N_NOISE (default: class-7 points in the output)."""
+        classified cloud into the project on completion; the output numbers and paths
+        (N_NOISE: every class-7 point of the output)."""
         s = classify_file(src, algorithm, outputs, Monitor(**self.core_callbacks(feedback)),
                           selection=selection)
         filt = s.seconds.get("filter") or 0.0
         feedback.pushInfo(self.tr("{} points: {} ground, {} non-ground, {} low outliers; "
                                   "filter {:.1f} s").format(
-            s.n_points, s.n_ground, s.n_nonground, noise(s), filt))
+            s.n_points, s.n_ground, s.n_nonground, s.n_noise, filt))
         result = {"N_POINTS": s.n_points, "N_GROUND": s.n_ground,
-                  "N_NONGROUND": s.n_nonground, "N_NOISE": noise(s),
+                  "N_NONGROUND": s.n_nonground, "N_NOISE": s.n_noise,
                   "POINTS_PER_SECOND": s.n_points / filt if filt > 0 else None}
         self.load_cloud_on_completion(context, outputs.cloud,
                                       self.tr("Classified point cloud"), self.OUTPUT)

@@ -192,7 +192,7 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
                                                     kw["mode"]))
         algorithm = core_sf.SlopeFilter(opts)
         return self.classify_and_publish(src, algorithm, outputs, selection, context,
-                                         feedback, noise=lambda s: s.n_noise)
+                                         feedback)
 
 
 class SlopeThresholdSweepAlgorithm(_SlopeCommon):

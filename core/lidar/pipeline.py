@@ -434,7 +434,12 @@ class ClassifyRun:
 
     @property
     def n_noise(self) -> int:
-        """Low outliers flagged by the pre-filter."""
+        """Class-7 points in the output (pre-filter, filter and kept input noise)."""
+        return self.count(NOISE_CLASS)
+
+    @property
+    def n_prefiltered(self) -> int:
+        """Low outliers flagged by the pre-filter (a part of :attr:`n_noise`)."""
         return int(np.count_nonzero(self.selection.low_outliers))
 
     @property
@@ -652,7 +657,7 @@ def _selection_rows(run: ClassifyRun) -> list:
     if opt.noise:
         rows += [("Low-outlier search cell (m)", opt.noise_radius),
                  ("Low-outlier depth below neighbours (m)", opt.noise_threshold)]
-    rows += [("Low outliers (class 7)", run.n_noise),
+    rows += [("Low outliers flagged by the pre-filter", run.n_prefiltered),
              ("Keep existing noise classes (7, 18)", opt.keep_noise_classes),
              ("Input noise points kept", run.n_input_noise)]
     if opt.returns == "last":

@@ -30,6 +30,7 @@ def test_filter_through_processing(qgis_processing, tile_path, tmp_path):
     assert res["N_GROUND"] == np.count_nonzero(cls == 2) > 0
     assert res["N_POINTS"] == len(pd)
     assert res["N_NONGROUND"] == np.count_nonzero(cls == 1)
+    assert res["N_NOISE"] == np.count_nonzero(cls == 7) > 0     # same meaning as groundfilter
     assert len(read_las(gout)) == res["N_GROUND"]
     assert "Allowed rise" in html.read_text(encoding="utf-8")
     # identical to the core filter with the same selection
@@ -44,7 +45,10 @@ def test_filter_last_returns_adaptive(qgis_processing, tile_path, tmp_path):
     out = tmp_path / "c.las"
     res = qgis_processing.run("geomatics:slopegroundfilter", {
         "INPUT": tile_path, "RETURNS": 1, "MODE": 1, "NOISE": False, "OUTPUT": str(out)})
-    assert res["N_NOISE"] == 0
+    # no pre-filter: the only class-7 points are the input's own noise, kept
+    kept = np.count_nonzero(read_las(tile_path, ["classification"])["classification"] == 7)
+    assert res["N_NOISE"] == kept == np.count_nonzero(read_las(out, ["classification"])
+                                                      ["classification"] == 7)
     assert out.exists() and res["N_GROUND"] > 0
 
 
