@@ -60,6 +60,8 @@ class LasInfo:
     crs: Optional[str]
     dimensions: Tuple[str, ...]
     n_vlrs: int
+    #: Scalar extra-bytes dimensions as ``(name, numpy type string)``, e.g. ``("hag", "<f4")``.
+    extra_dims: Tuple[Tuple[str, str], ...] = ()
 
 
 @dataclass
@@ -149,6 +151,8 @@ def _info_from_header(path: str, header) -> LasInfo:
         crs=crs_of_header(header),
         dimensions=tuple(header.point_format.dimension_names),
         n_vlrs=len(header.vlrs),
+        extra_dims=tuple((d.name, d.dtype.str) for d in header.point_format.extra_dimensions
+                         if d.num_elements == 1),
     )
 
 

@@ -203,15 +203,22 @@ def _cost(cat: Catalog, task: ChunkTask) -> float:
 
 
 def _las_format(cat: Catalog) -> dict:
-    """Writer settings of box-mode chunks: the first tile's format, the finest scale."""
+    """Writer settings of box-mode chunks (first tile's format, finest scale).
+
+    Dimensions: the standard ones every tile has and the extra-bytes ones (same name and
+    type) every tile has.
+    """
     from laspy import PointFormat
     first = cat.tiles[0]
     standard = set(PointFormat(first.point_format).standard_dimension_names)
     common = set.intersection(*(set(t.dimensions) for t in cat.tiles))
     dims = [d for d in first.dimensions
             if d in common and d in standard and d not in ("X", "Y", "Z")]
+    extra = dict(set.intersection(*(set(t.extra_dims) for t in cat.tiles)))
+    extra = {n: extra[n] for n, _ in first.extra_dims if n in extra}      # file order
     return dict(point_format=first.point_format, version=first.version,
-                scale=float(min(min(t.scales[:2]) for t in cat.tiles)), dimensions=dims)
+                scale=float(min(min(t.scales[:2]) for t in cat.tiles)),
+                dimensions=dims + list(extra), extra_dims=extra)
 
 
 def _tile_tasks(cat: Catalog, folder: Path, common: dict) -> List[ChunkTask]:

@@ -388,3 +388,41 @@ def test_adaptive_slope_is_anchored_on_the_global_origin(tiles, tmp_path):
     inner = _outer_distance(x, y, cat.extent) > BUFFER
     assert np.array_equal(got[inner], merged[inner])
     assert np.mean(got == merged) >= 0.999
+
+
+def test_chunks_keep_the_extra_bytes_dimensions_every_tile_has(tiles, tmp_path):
+    """Box-mode chunks mix tiles: extra-bytes dimensions common to all are carried over."""
+    from geomatics_toolbox.core.io.las import las_info, write_las
+    src = tmp_path / "src"
+    src.mkdir()
+    for k, p in enumerate(find_tiles(str(tiles))):
+        pd = read_las(p, ("classification", "intensity"))
+        extra = {"hag": "f4", "pulse": "u2"} if k else {"pulse": "u2", "hag": "f4", "only0": "i1"}
+        dims = {"classification": pd["classification"], "intensity": pd["intensity"],
+                "hag": (pd.z - 90.0).astype("f4"),
+                "pulse": (np.arange(len(pd)) % 60000 + k).astype("u2")}
+        if not k:
+            dims["only0"] = np.ones(len(pd), "i1")
+        write_las(src / Path(p).name, pd.x, pd.y, pd.z, dimensions=dims, crs="EPSG:32632",
+                  extra_dims=extra)
+    out = tmp_path / "out"
+    res = cc.run_catalog(str(src), out, ground_filter="keep", cell_size=CELL, buffer=10.0,
+                         chunk_size=CHUNK, workers=1)
+    assert not res.failed
+    files = sorted(out.glob("chunk_*.laz"))
+    assert len(files) == 9
+    info = las_info(str(files[4]))
+    assert dict(info.extra_dims) == {"pulse": "<u2", "hag": "<f4"}    # not only0
+    got = [read_las(f, ("hag", "pulse", "intensity")) for f in files]
+    x, y, z = (np.concatenate([getattr(p, a) for p in got]) for a in "xyz")
+    hag = np.concatenate([p["hag"] for p in got])
+    np.testing.assert_allclose(hag, z - 90.0, atol=0.006)             # z rounded to 1 cm
+    pulse = np.concatenate([p["pulse"] for p in got])
+    ref = [read_las(src / Path(p).name, ("pulse", "intensity")) for p in find_tiles(str(src))]
+    want = np.concatenate([p["pulse"] for p in ref])
+    rx, ry, rz = (np.concatenate([getattr(p, a) for p in ref]) for a in "xyz")
+    _, o1 = _sorted_classes(x, y, z, pulse)
+    _, o2 = _sorted_classes(rx, ry, rz, want)
+    assert np.array_equal(pulse[o1], want[o2])
+    assert np.array_equal(np.concatenate([p["intensity"] for p in got])[o1],
+                          np.concatenate([p["intensity"] for p in ref])[o2])
