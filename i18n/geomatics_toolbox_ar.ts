@@ -1301,12 +1301,12 @@
             <translation>تمريرات تعيد بناء التضاريس من النقاط المقبولة.</translation>
         </message>
         <message>
-            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell and slope tolerance are derived from the cloud, then passes that rebuild the terrain and re-test every point. On the 8 ISPRS filter-test samples its cross-validated total error is 3.70 % (SMRF with PDAL's defaults: 5.75 %).</source>
-            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) دون أي معامل يُضبط: مرشح مورفولوجي تدريجي (Pingel et al. 2013) يُشتق حجم خليته وتفاوت انحداره من السحابة، ثم تمريرات تعيد بناء التضاريس وتختبر كل نقطة من جديد. على عينات اختبار المرشحات الثماني من ISPRS يبلغ خطؤه الكلي بالتحقق المتقاطع 3.70 % (SMRF بالقيم الافتراضية لـ PDAL: 5.75 %).</translation>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell and slope tolerance are derived from the cloud, applied to the terrain with its regional slope removed; terrain crests it removed are grown back, then passes rebuild the terrain and re-test every point. On the 8 ISPRS filter-test samples its cross-validated total error is 3.50 % (SMRF with PDAL's defaults: 5.75 %).</source>
+            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) دون أي معامل يُضبط: مرشح مورفولوجي تدريجي (Pingel et al. 2013) يُشتق حجم خليته وتفاوت انحداره من السحابة، ويُطبَّق على التضاريس بعد إزالة انحدارها الإقليمي؛ وتُستعاد قمم التضاريس التي أزالها، ثم تمريرات تعيد بناء التضاريس وتختبر كل نقطة من جديد. على عينات اختبار المرشحات الثماني من ISPRS يبلغ خطؤه الكلي بالتحقق المتقاطع 3.50 % (SMRF بالقيم الافتراضية لـ PDAL: 5.75 %).</translation>
         </message>
         <message>
-            <source>Plus 0.9 m per unit of terrain slope.</source>
-            <translation>مضافًا إليه 0.9 م لكل وحدة من انحدار التضاريس.</translation>
+            <source>Plus 1.0 m per unit of terrain slope.</source>
+            <translation>مضافًا إليه 1.0 م لكل وحدة من انحدار التضاريس.</translation>
         </message>
     </context>
     <context>

@@ -1301,12 +1301,12 @@
             <translation>گذرهایی که زمین را از نقاط پذیرفته‌شده بازسازی می‌کنند.</translation>
         </message>
         <message>
-            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell and slope tolerance are derived from the cloud, then passes that rebuild the terrain and re-test every point. On the 8 ISPRS filter-test samples its cross-validated total error is 3.70 % (SMRF with PDAL's defaults: 5.75 %).</source>
-            <translation>ابر نقطهٔ LAS/LAZ را بدون هیچ پارامتری به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) طبقه‌بندی می‌کند: یک پالایهٔ ریخت‌شناسی تدریجی (Pingel et al. 2013) که اندازهٔ سلول و رواداری شیب آن از خود ابر به دست می‌آید، سپس گذرهایی که زمین را بازسازی و هر نقطه را دوباره آزمون می‌کنند. روی 8 نمونهٔ آزمون پالایه‌های ISPRS خطای کل آن با اعتبارسنجی متقابل 3.70 % است (SMRF با پیش‌فرض‌های PDAL: 5.75 %).</translation>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell and slope tolerance are derived from the cloud, applied to the terrain with its regional slope removed; terrain crests it removed are grown back, then passes rebuild the terrain and re-test every point. On the 8 ISPRS filter-test samples its cross-validated total error is 3.50 % (SMRF with PDAL's defaults: 5.75 %).</source>
+            <translation>ابر نقطهٔ LAS/LAZ را بدون هیچ پارامتری به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) طبقه‌بندی می‌کند: یک پالایهٔ ریخت‌شناسی تدریجی (Pingel et al. 2013) که اندازهٔ سلول و رواداری شیب آن از خود ابر به دست می‌آید و روی زمینِ بدون شیب منطقه‌ای اعمال می‌شود؛ تیغه‌های زمین را که حذف کرده است باز می‌گرداند، سپس گذرهایی زمین را بازسازی و هر نقطه را دوباره آزمون می‌کنند. روی 8 نمونهٔ آزمون پالایه‌های ISPRS خطای کل آن با اعتبارسنجی متقابل 3.50 % است (SMRF با پیش‌فرض‌های PDAL: 5.75 %).</translation>
         </message>
         <message>
-            <source>Plus 0.9 m per unit of terrain slope.</source>
-            <translation>به‌علاوهٔ 0.9 متر برای هر واحد شیب زمین.</translation>
+            <source>Plus 1.0 m per unit of terrain slope.</source>
+            <translation>به‌علاوهٔ 1.0 متر برای هر واحد شیب زمین.</translation>
         </message>
     </context>
     <context>

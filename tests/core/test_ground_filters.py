@@ -17,25 +17,26 @@ from geomatics_toolbox.core.progress import Cancelled
 SAMPLES = ["samp11", "samp12", "samp22", "samp31", "samp41", "samp53", "samp54", "samp61"]
 
 #: 8 ISPRS samples at the defaults: sha1 of the uint8 classes and the total error (%) of
-#: the recommended filter (research code /work/scratch/g1, tangent-plane hole fill,
-#: identical totals), then of PTD (research code /work/scratch/ground, before the port;
+#: the recommended filter (research harness /work/scratch/g3: tangent-plane hole fill,
+#: detrending, continuity growing; identical totals), then of PTD (research code
+#: /work/scratch/ground, before the port;
 #: re-measured with the cliff-aware mirroring: mean 8.07 %, 8.05 % before it).
 RESEARCH = {
-    "samp11": ("000f315a62775b5d694a3ba2f17d29bf2be677c1", 9.5948,
+    "samp11": ("a2568d8b68a5af9226ab989104c455785744ea7c", 8.9187,
                "6e1e87dada2ddc6ea5895aaca62e6fe77b8d4c67", 14.5909),
-    "samp12": ("a64d27c7b28a30bb3c604ad8bd6395a3453a1599", 2.6900,
+    "samp12": ("9fa5d2dead9f0614bdbdbcdc4e1368a0dd31f8b1", 2.7092,
                "4cc2fe02320d4d310afb6adce9fdc41a369ba1ff", 5.8577),
-    "samp22": ("a9066cf80dcbb551655962d5a567bb574c452168", 3.0851,
+    "samp22": ("c662f662d292299b134228d6bb10f3737e3d6d58", 2.9077,
                "da7b30150e55c0baee260839929777b1eefa5dc1", 18.7336),
-    "samp31": ("e84efaa82ee2740d901e1358c2b7bddca423f252", 1.8259,
+    "samp31": ("15aa21b1fafc2d8bf20935d0c0a92f9955b5077b", 1.9507,
                "c439440fbe06d5086c9999b50d9d0b06d6f3b611", 1.5834),
-    "samp41": ("656fa7dd1761e693f4a98a3a6c7efc9b9e83a7aa", 2.6623,
+    "samp41": ("0b1ebbf55c585d514741ac9be020bdd4ed93528e", 2.5732,
                "648d274242335fa3e2063639819420dc130bf4a2", 9.5717),
-    "samp53": ("74c3e9ebe155b1bedbaa9bbd776873a4596b28a1", 3.6128,
+    "samp53": ("273592eec9f1ef0a2bd6a7696d805591ba2a4339", 3.1997,
                "00592f576252742637e12c6e37c938b4b54f79c5", 8.3862),
-    "samp54": ("5c9de395f9b71bac1450aa44502bf8ba46250cb8", 2.7881,
+    "samp54": ("248c73e81f64485518c6dc4aedcf506ae054b6fd", 2.6487,
                "1580381cbe70109c2e69d6cbc8bcebb45a34a5ec", 3.1599),
-    "samp61": ("61197ac648b9bcced1c8693021e7dba2e6c1ca5c", 2.1991,
+    "samp61": ("55c04aec05059270d5809acda1ef67a99f17de03", 1.9966,
                "3034dc3b1d9c0daed521475e0b524de41a4e1e39", 2.7153),
 }
 
@@ -171,7 +172,7 @@ def test_recommended_isprs_golden_identical_to_research(isprs_dir, sample):
 
 def test_recommended_isprs_mean_and_wins(isprs_dir):
     totals = [RESEARCH[s][1] for s in SAMPLES]
-    assert np.mean(totals) == pytest.approx(3.56, abs=0.005)
+    assert np.mean(totals) == pytest.approx(3.36, abs=0.005)
     smrf = dict(samp11=8.52, samp12=3.60, samp22=3.59, samp31=3.55, samp41=12.20,
                 samp53=7.99, samp54=4.28, samp61=2.28)     # pysmrf, PDAL defaults
     assert sum(RESEARCH[s][1] < smrf[s] for s in SAMPLES) == 7
