@@ -277,6 +277,30 @@ def _ptd_isprs_rows():
     return rows
 
 
+def _ptd_speed_row(r):
+    """Markdown row of PTD's speed measurement ``r`` (a ``speed_section`` row)."""
+    if "error" in r:
+        return f"| ptd | error: {r['error'][-120:]!r} |"
+    return ("| ptd" + (" (1 M window)" if r["n"] < 5_000_000 else "")
+            + f" | {r['n']:,} | {r['wall']:.1f} | {r['cpu']:.1f} | "
+            f"{r['n'] / max(r['cpu'], 1e-9):,.0f} | {r['peak_mb']:.0f} | "
+            f"{r['base_mb']:.0f} | {r['peak_mb'] * 2**20 / r['n']:.0f} | {r['total']:.2f} |")
+
+
+def _insert_speed_row(lines, row):
+    """Put ``row`` in the speed table: in place of its ptd row, else after its last row."""
+    start = next((i for i, ln in enumerate(lines) if ln.startswith("## Throughput")), None)
+    if start is None:
+        return lines + ["", row]
+    table = [i for i in range(start, len(lines)) if lines[i].startswith("|")]
+    table = [i for k, i in enumerate(table) if k == 0 or i == table[k - 1] + 1]
+    for i in table:
+        if lines[i].startswith("| ptd"):
+            return lines[:i] + [row] + lines[i + 1:]
+    at = table[-1] + 1 if table else len(lines)
+    return lines[:at] + [row] + lines[at:]
+
+
 def merge_ptd(text, rows, speed, quick):
     """Replace PTD's column, rows and speed row of ``ground.md`` ``text``; add a note."""
     col = FILTERS.index("ptd") + 1
@@ -293,22 +317,13 @@ def merge_ptd(text, rows, speed, quick):
             a = rows[cells[0][2:]]
             line = (f"{cells[0]} | ptd | {_f(a['type1'])} | {_f(a['type2'])} | "
                     f"{_f(a['total'])} | {_f(a['kappa'], 1)} |")
-        elif speed and line.startswith("| ptd"):
-            continue
         elif line.startswith("PTD speed row:") or line.startswith("PTD rows re-measured"):
             continue
         out.append(line)
+    if speed:
+        out = _insert_speed_row(out, _ptd_speed_row(speed[0]))
     text = "\n".join(out).rstrip("\n") + "\n"
     now = datetime.datetime.now().isoformat(timespec="minutes")
-    if speed:
-        r = speed[0]
-        row = ("| ptd" + (" (1 M window)" if r["n"] < 5_000_000 else "")
-               + f" | {r['n']:,} | {r['wall']:.1f} | {r['cpu']:.1f} | "
-               f"{r['n'] / max(r['cpu'], 1e-9):,.0f} | {r['peak_mb']:.0f} | "
-               f"{r['base_mb']:.0f} | {r['peak_mb'] * 2**20 / r['n']:.0f} | "
-               f"{r['total']:.2f} |") if "error" not in r \
-            else f"| ptd | error: {r['error'][-120:]!r} |"
-        text += row + "\n"
     what = " and ".join(w for w, on in (("ISPRS rows", rows), ("speed row", speed)) if on)
     text += (f"\nPTD rows re-measured on {now} with `bench_ground.py --ptd"
              f"{' --quick' if quick else ''}` ({what}; {platform.node()}, other rows "

@@ -178,8 +178,8 @@ def classify_with_tin(x, y, z, *, options=None, progress=None, cancel=None):
     uniq = _tin.dedupe_xy(xs, ys, z)
     seeds, pool = initial_ground(xs, ys, z, uniq, opt)
     rep(0.1)
-    ground = densify(xs, ys, z, seeds, pool, opt, rep)
-    cls, (gx, gy, gz) = final_pass(xs, ys, z, ground, opt)
+    ground, tin = densify(xs, ys, z, seeds, pool, opt, rep)
+    cls, (gx, gy, gz) = final_pass(xs, ys, z, ground, opt, tin)
     rep(1.0)
     return cls, np.column_stack((gx + x0, gy + y0, gz))
 
@@ -258,31 +258,51 @@ def with_corners(x, y, z, ground):
 
 
 def densify(x, y, z, seeds, pool, opt, rep):
-    """Progressive densification; returns the indices of the accepted ground points."""
+    """Progressive densification.
+
+    Returns
+    -------
+    ground : ndarray of int
+        Indices of the accepted ground points.
+    tin : tuple or None
+        ``(tri, (gx, gy, gz))`` of the last TIN when it was built from exactly
+        ``ground`` (the loop stopped because no point was accepted), else None.
+    """
     is_ground = np.zeros(x.size, dtype=bool)
     is_ground[seeds] = True
     cand = pool[~is_ground[pool]]
     for it in range(opt.max_iterations):
         rep(0.1 + 0.8 * it / opt.max_iterations)
-        ground = np.flatnonzero(is_ground)
-        gx, gy, gz = with_corners(x, y, z, ground)
+        tri = geom = None                     # free the previous TIN before the next
+        gx, gy, gz = with_corners(x, y, z, np.flatnonzero(is_ground))
         tri = _tin.build(np.column_stack((gx, gy)))
         geom = _tin.facet_geometry(tri, gz)
-        d, _, ang, s = _tin.distances(tri, gz, x[cand], y[cand], z[cand], geom=geom)
-        ok = (np.abs(d) <= opt.max_distance) & (ang <= opt.max_angle)
-        d = np.abs(d)
-        steep = breakline_facets(geom, gz, tri, opt) if opt.breakline else None
-        mirror_test(tri, gz, geom, x[cand], y[cand], z[cand], s, d, ok, opt, steep)
-        ok &= geom[2][s] >= opt.min_edge if steep is None else \
-            (geom[2][s] >= opt.min_edge) | steep[s]
-        if not ok.any():
-            break
-        sel = np.flatnonzero(ok)
+        sel, s, d = _accepted(tri, gz, geom, x, y, z, cand, opt)
+        if sel is None:
+            return np.flatnonzero(is_ground), (tri, (gx, gy, gz))
         order = sel[np.lexsort((d[sel], s[sel]))]
         first = np.r_[True, s[order[1:]] != s[order[:-1]]]
         is_ground[cand[order[first]]] = True
         cand = cand[~is_ground[cand]]
-    return np.flatnonzero(is_ground)
+    return np.flatnonzero(is_ground), None
+
+
+def _accepted(tri, gz, geom, x, y, z, cand, opt):
+    """Candidates passing the tests of one iteration: (positions, facets, distances).
+
+    Positions are None when no candidate passes.
+    """
+    cx, cy, cz = x[cand], y[cand], z[cand]
+    d, _, ang, s = _tin.distances(tri, gz, cx, cy, cz, geom=geom)
+    ok = (np.abs(d) <= opt.max_distance) & (ang <= opt.max_angle)
+    d = np.abs(d)
+    steep = breakline_facets(geom, gz, tri, opt) if opt.breakline else None
+    mirror_test(tri, gz, geom, cx, cy, cz, s, d, ok, opt, steep)
+    ok &= geom[2][s] >= opt.min_edge if steep is None else \
+        (geom[2][s] >= opt.min_edge) | steep[s]
+    if not ok.any():
+        return None, s, d
+    return np.flatnonzero(ok), s, d
 
 
 def mirror_test(tri, gz, geom, cx, cy, cz, s, d, ok, opt, steep=None):
@@ -349,10 +369,15 @@ def breakline_test(tri, gz, geom, cx, cy, cz, s, d, ok, opt, steep):
     d[test[good]] = off[good]
 
 
-def final_pass(x, y, z, ground, opt):
-    """Classes against the final TIN: ground within ``final_distance``, 7 far below."""
-    gx, gy, gz = with_corners(x, y, z, ground)
-    tri = _tin.build(np.column_stack((gx, gy)))
+def final_pass(x, y, z, ground, opt, tin=None):
+    """Classes against the final TIN: ground within ``final_distance``, 7 far below.
+
+    ``tin`` is ``(tri, (gx, gy, gz))`` of the TIN of exactly ``ground`` when the
+    densification already built it (Qhull gives the same TIN for the same input).
+    """
+    tri, (gx, gy, gz) = tin if tin is not None else (None, with_corners(x, y, z, ground))
+    if tri is None:
+        tri = _tin.build(np.column_stack((gx, gy)))
     d, dz, _, _ = _tin.distances(tri, gz, x, y, z)
     cls = np.full(x.size, OBJECT, dtype=np.uint8)
     cls[np.abs(d) <= opt.final_distance] = GROUND
