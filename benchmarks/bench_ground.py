@@ -18,8 +18,9 @@ Writes ``benchmarks/results/ground.md``:
    pts/m², ``synthetic.lidar.generate_tile``; 1 M with ``--quick``): every run in a
    fresh subprocess with OMP/BLAS threads = 1 (``_probe.run_python``), peak = VmHWM
    after a reset, so it includes the resident baseline (coordinates, Python, numpy).
-   PTD runs on a 1 M point window of the tile (its Qhull rebuilds make the full tile
-   take too long for a benchmark run); the table says so.
+   PTD runs on a 1 M point window of the tile (one Qhull rebuild per iteration, about
+   100 iterations, make the full tile take too long for a benchmark run); the table
+   says so.
 
 ``--ptd`` re-measures only PTD (its ISPRS rows and its speed row) and merges them into
 the existing ``ground.md``, leaving every other row as it was and noting when.
