@@ -193,8 +193,9 @@ def assess_gcps(gcps: GCPSet, *, kind: str = "polynomial2", order: Optional[int]
     if kind == RECOMMENDED:
         first = compare_transforms(gcps, kinds=kinds, gr=gr, image_size=image_size)
         if first.recommended is None:
-            raise InputError("No transformation can be recommended: {reason}",
-                             reason=first.reason)
+            raise InputError("No transformation can be recommended: no transformation "
+                             "has enough GCPs to be judged on independent residuals; add "
+                             "GCPs.")
         kind = first.recommended
     mon.step(0.2)
     dropped, tol = [], None

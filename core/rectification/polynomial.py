@@ -37,6 +37,8 @@ from typing import Optional, Sequence
 
 import numpy as np
 
+from ..errors import InputError
+
 #: exponents (i, j) of u^i·v^j in the paper's term order
 TERMS = ((0, 0), (1, 0), (0, 1),
          (2, 0), (1, 1), (0, 2),
@@ -112,7 +114,7 @@ class Normaliser:
         return {"x0": self.x0, "y0": self.y0, "scale": self.scale}
 
 
-class IllConditionedError(ValueError):
+class IllConditionedError(InputError):
     """The GCP geometry cannot support the requested order (collinear or clustered)."""
 
 
@@ -284,29 +286,41 @@ class PolynomialModel:
 
 
 # ---------------------------------------------------------------------- fitting
-def _diagnose(uv: np.ndarray, order: int, pixel_xy: np.ndarray) -> str:
-    """Plain-language reason why the GCP geometry is degenerate for ``order``."""
+_ILL = ("Cannot fit a polynomial of order {order}: the normal equations are "
+        "ill-conditioned (condition number {cond} > {limit}) because ")
+#: Why the GCP geometry is degenerate (:func:`_diagnose`), as complete message templates.
+ILL_CONDITIONED = {
+    "collinear": _ILL + (
+        "the GCPs are (nearly) collinear: their spread across the best-fit line is {minor} "
+        "px against {major} px along it, so the transformation across the line is "
+        "undetermined. Add GCPs away from that line."),
+    "clustered": _ILL + (
+        "the GCPs are clustered: only {distinct} distinct image positions (points closer "
+        "than {tol} px counted once) for the {need} coefficients per axis of order "
+        "{order}. Spread GCPs over the image."),
+    "undetermined": _ILL + (
+        "the GCP positions do not determine the {need} coefficients of order {order} (e.g. "
+        "they lie on a conic or a few lines, which a polynomial of this order cannot tell "
+        "apart). Add GCPs spread over the whole image or lower the order."),
+}
+
+
+def _diagnose(uv: np.ndarray, order: int, pixel_xy: np.ndarray):
+    """Why the GCP geometry is degenerate: a key of :data:`ILL_CONDITIONED`, its fields."""
     n_needed = n_terms(order)
     c = pixel_xy - pixel_xy.mean(axis=0)
     sv = np.linalg.svd(c, compute_uv=False) if len(c) > 1 else np.array([0.0, 0.0])
     major = sv[0] / np.sqrt(max(len(c), 1))
     minor = (sv[1] if len(sv) > 1 else 0.0) / np.sqrt(max(len(c), 1))
     if major > 0 and minor / major < 1e-3:
-        return (f"the GCPs are (nearly) collinear: their spread across the best-fit line "
-                f"is {minor:.3g} px against {major:.3g} px along it, so the transformation "
-                "across the line is undetermined. Add GCPs away from that line")
+        return "collinear", dict(minor=f"{minor:.3g}", major=f"{major:.3g}")
     # distinct positions: merge points closer than 1e-3 of the spread
     tol = max(major, 1e-12) * 1e-3
     keys = np.round(pixel_xy / tol).astype(np.int64)
     distinct = len({tuple(k) for k in keys})
     if distinct < n_needed:
-        return (f"the GCPs are clustered: only {distinct} distinct image positions "
-                f"(points closer than {tol:.3g} px counted once) for the {n_needed} "
-                f"coefficients per axis of order {order}. Spread GCPs over the image")
-    return (f"the GCP positions do not determine the {n_needed} coefficients of order "
-            f"{order} (e.g. they lie on a conic or a few lines, which a polynomial of this "
-            "order cannot tell apart). Add GCPs spread over the whole image or lower the "
-            "order")
+        return "clustered", dict(distinct=distinct, tol=f"{tol:.3g}", need=n_needed)
+    return "undetermined", dict(need=n_needed)
 
 
 def fit_polynomial(pixel_xy, map_xy, *, order: int, weights: Optional[Sequence] = None,
@@ -358,13 +372,13 @@ def fit_polynomial(pixel_xy, map_xy, *, order: int, weights: Optional[Sequence] 
             + (f" (order {max(t for t in (1, 2, 3) if n_terms(t) <= n)} is possible)."
                if n >= 3 else "."))
     if not (np.isfinite(pix).all() and np.isfinite(mp).all()):
-        raise ValueError("GCP coordinates contain NaN or infinite values; fix the GCP file.")
+        raise InputError("GCP coordinates contain NaN or infinite values; fix the GCP file.")
     w = None
     if weights is not None:
         w = np.asarray(weights, float).ravel()
         if w.shape != (n,) or not np.isfinite(w).all() or (w <= 0).any():
-            raise ValueError("weights must be n finite positive numbers (one per GCP), "
-                             "e.g. 1/sigma²; remove zero or negative weights.")
+            raise InputError("GCP weights must be finite positive numbers, one per GCP "
+                             "(e.g. 1/sigma²); remove zero or negative weights.")
     pn = Normaliser.fit(pix)
     mn = Normaliser.fit(mp)
     u, v = pn.apply(pix[:, 0], pix[:, 1])
@@ -374,10 +388,9 @@ def fit_polynomial(pixel_xy, map_xy, *, order: int, weights: Optional[Sequence] 
     sv = np.linalg.svd(aw, compute_uv=False)
     cond = float(sv[0] / sv[-1]) if sv[-1] > 0 else float("inf")
     if not np.isfinite(cond) or cond > max_condition:
-        raise IllConditionedError(
-            f"Cannot fit a polynomial of order {order}: the normal equations are "
-            f"ill-conditioned (condition number {cond:.3g} > {max_condition:.3g}) because "
-            f"{_diagnose(np.column_stack([u, v]), order, pix)}.")
+        key, fields = _diagnose(np.column_stack([u, v]), order, pix)
+        raise IllConditionedError(ILL_CONDITIONED[key], order=order, cond=f"{cond:.3g}",
+                                  limit=f"{max_condition:.3g}", **fields)
     rhs = np.column_stack([mp[:, 0] - mn.x0, mp[:, 1] - mn.y0]) * sw[:, None]
     coef, *_ = np.linalg.lstsq(aw, rhs, rcond=None)
     # inverse polynomial: normalised map -> normalised pixel, same order

@@ -392,11 +392,8 @@ def fit_transform(kind: str, pixel_xy, map_xy, *, weights=None,
                          need=need,
                          n=len(pix))
     if kind.startswith("polynomial"):
-        try:
-            model = fit_polynomial(pix, mp, order=int(kind[-1]), weights=weights,
-                                   max_condition=max_condition)
-        except ValueError as exc:
-            raise InputError(str(exc)) from None
+        model = fit_polynomial(pix, mp, order=int(kind[-1]), weights=weights,
+                               max_condition=max_condition)           # InputError if degenerate
         return PolynomialTransform(kind, len(pix), model.warnings, model=model)
     fit = {"linear": fit_linear, "helmert": fit_helmert, "projective": fit_projective,
            "tps": fit_tps}[kind]

@@ -13,6 +13,7 @@ import subprocess
 import numpy as np
 import pytest
 
+from geomatics_toolbox.core.errors import InputError
 from geomatics_toolbox.core.io import gcp as gcp_io
 from geomatics_toolbox.core.rectification import accuracy as gcp_report
 from geomatics_toolbox.core.rectification import assess, export, polynomial, report, warp
@@ -537,3 +538,17 @@ def test_collinear_map_coordinates_clear_error_not_gr():
     g = gcp_io.make_gcps(None, pix, mp, crs="EPSG:22780")
     with pytest.raises(InputError, match="do not span an area"):
         gcp_report.evaluate_gcps(g, order=1)
+
+
+@pytest.mark.parametrize("lang", ["ar", "fa"])
+def test_ill_conditioned_messages_are_translated(lang):
+    """The degenerate-geometry messages are templates with ar/fa translations."""
+    from geomatics_toolbox.core.reporting.i18n import translator
+    tr = translator(lang)
+    for template in polynomial.ILL_CONDITIONED.values():
+        assert tr(template) != template, template
+    pix = np.column_stack([np.linspace(0, 1000, 8), np.linspace(0, 500, 8)])   # a line
+    with pytest.raises(polynomial.IllConditionedError) as err:
+        polynomial.fit_polynomial(pix, pix * 2.0, order=1)
+    assert err.value.template == polynomial.ILL_CONDITIONED["collinear"]
+    assert isinstance(err.value, InputError) and "collinear" in str(err.value)
