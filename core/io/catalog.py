@@ -106,7 +106,8 @@ def index_tiles(paths: Iterable[str]) -> List[LasInfo]:
         except InputError:
             raise                       # keeps its template (translated for the user)
         except ValueError as exc:
-            raise InputError(str(exc)) from exc
+            raise InputError("Cannot read the header of {path} ({reason}); check that it is "
+                             "a LAS/LAZ file and not damaged.", path=p, reason=str(exc)) from exc
     return infos
 
 

@@ -168,6 +168,12 @@ def test_bad_inputs(tiles, tmp_path):
         cc.Catalog.open(str(tmp_path / "nothing*.laz"))
     with pytest.raises(InputError, match="Unknown ground filter"):
         cc.run_catalog(str(tiles), tmp_path / "o", ground_filter="nope")
+    bad = tmp_path / "bad"
+    bad.mkdir()
+    (bad / "junk.laz").write_bytes(b"not a point cloud" * 10)
+    with pytest.raises(InputError, match="Cannot read the header of .*junk.laz") as err:
+        cc.Catalog.open(str(bad))
+    assert err.value.template.startswith("Cannot read the header of {path}")
 
 
 def test_vpc_input(tiles, tmp_path):
