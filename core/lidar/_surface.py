@@ -27,10 +27,45 @@ from scipy.spatial import cKDTree
 
 from . import _raster as R  # noqa: N812
 
-__all__ = ["plane_gradient", "tangent_fill"]
+__all__ = ["plane_fit", "plane_gradient", "tangent_fill"]
 
 #: Hole cells processed per batch (bounds the k-neighbour arrays' memory).
 BATCH = 65_536
+
+
+def _window_planes(z, valid, radius: int, *, spread: bool = False):
+    """Moments and least-squares plane of the valid cells of every (2r+1)² window.
+
+    Returns a dict: ``n`` (valid cells), ``mx, my, mz`` (means of column, row and z
+    offset; z relative to ``zc``, the mean of all valid cells), ``det`` (of the
+    coordinate covariance), ``gx, gy`` (rise per cell) and, with ``spread``, ``czz``
+    (variance of z) and the covariances ``cxz, cyz``.
+    """
+    r = int(radius)
+    off = np.arange(-r, r + 1, dtype=np.float64)
+    box = np.ones(2 * r + 1)
+    w = valid.astype(np.float64)
+    zc = float(np.mean(z[valid])) if valid.any() else 0.0
+    zw = np.where(valid, z - zc, 0.0)
+
+    def corr(a, kx, ky):
+        a = ndimage.correlate1d(a, kx, axis=1, mode="constant")
+        return ndimage.correlate1d(a, ky, axis=0, mode="constant")
+
+    n = corr(w, box, box)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        mx, my, mz = corr(w, off, box) / n, corr(w, box, off) / n, corr(zw, box, box) / n
+        cxx = corr(w, off * off, box) / n - mx * mx
+        cyy = corr(w, box, off * off) / n - my * my
+        cxy = corr(w, off, off) / n - mx * my
+        cxz = corr(zw, off, box) / n - mx * mz
+        cyz = corr(zw, box, off) / n - my * mz
+        out = dict(n=n, mx=mx, my=my, mz=mz, zc=zc)
+        if spread:
+            out.update(czz=corr(zw * zw, box, box) / n - mz * mz, cxz=cxz, cyz=cyz)
+        det = cxx * cyy - cxy * cxy
+        out.update(det=det, gx=(cyy * cxz - cxy * cyz) / det, gy=(cxx * cyz - cxy * cxz) / det)
+    return out
 
 
 def plane_gradient(z, valid, radius: int, cell: float):
@@ -54,32 +89,43 @@ def plane_gradient(z, valid, radius: int, cell: float):
         cells of a window do not span a plane.
     """
     r = int(radius)
-    off = np.arange(-r, r + 1, dtype=np.float64)
-    box = np.ones(2 * r + 1)
-    w = valid.astype(np.float64)
-    zc = float(np.mean(z[valid])) if valid.any() else 0.0
-    zw = np.where(valid, z - zc, 0.0)
-
-    def corr(a, kx, ky):
-        a = ndimage.correlate1d(a, kx, axis=1, mode="constant")
-        return ndimage.correlate1d(a, ky, axis=0, mode="constant")
-
-    n = corr(w, box, box)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        mx, my, mz = corr(w, off, box) / n, corr(w, box, off) / n, corr(zw, box, box) / n
-        cxx = corr(w, off * off, box) / n - mx * mx
-        cyy = corr(w, box, off * off) / n - my * my
-        cxy = corr(w, off, off) / n - mx * my
-        cxz = corr(zw, off, box) / n - mx * mz
-        cyz = corr(zw, box, off) / n - my * mz
-        det = cxx * cyy - cxy * cxy
-        gx = (cyy * cxz - cxy * cyz) / det
-        gy = (cxx * cyz - cxy * cxz) / det
+    m = _window_planes(z, valid, r)
+    gx, gy, det = m["gx"], m["gy"], m["det"]
     full = (r * (r + 1) / 3.0) ** 2                 # det of a complete window
     bad = ~(det > 1e-3 * full) | ~np.isfinite(gx) | ~np.isfinite(gy)
     gx[bad] = 0.0
     gy[bad] = 0.0
     return gx / cell, gy / cell
+
+
+def plane_fit(z, valid, radius: int):
+    """Least-squares plane over the valid cells of every (2r+1)² window, with its fit.
+
+    Parameters
+    ----------
+    z : ndarray
+        Raster (values of invalid cells are ignored).
+    valid : ndarray of bool
+        Cells that carry data.
+    radius : int
+        Window half-size in cells.
+
+    Returns
+    -------
+    tuple of ndarray
+        ``(rms, centre, gx, gy)``: RMS residual of the plane, its height at the
+        window centre and its rise per cell along columns and rows; rms and centre
+        are NaN where fewer than 6 valid cells or a degenerate layout.
+    """
+    m = _window_planes(z, valid, radius, spread=True)
+    gx, gy = m["gx"], m["gy"]
+    with np.errstate(invalid="ignore"):
+        rms = np.sqrt(np.maximum(m["czz"] - gx * m["cxz"] - gy * m["cyz"], 0.0))
+        centre = m["mz"] - gx * m["mx"] - gy * m["my"] + m["zc"]
+    bad = ~(m["det"] > 0.1) | (m["n"] < 6)
+    rms[bad] = np.nan
+    centre[bad] = np.nan
+    return rms, centre, gx, gy
 
 
 def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12,

@@ -337,56 +337,6 @@ def surface(zmin, grid, opt, rep):
     return fill_holes(zmin, ~bad, grid, opt)
 
 
-def plane_fit(z, valid, radius):
-    """Least-squares plane over the valid cells of every (2r+1)² window.
-
-    Parameters
-    ----------
-    z : ndarray
-        Raster (values of invalid cells are ignored).
-    valid : ndarray of bool
-        Cells that carry data.
-    radius : int
-        Window half-size in cells.
-
-    Returns
-    -------
-    tuple of ndarray
-        ``(rms, centre, gx, gy)``: RMS residual of the plane, its height at the
-        window centre and its rise per cell along columns and rows; rms and centre
-        are NaN where fewer than 6 valid cells or a degenerate layout.
-    """
-    r = int(radius)
-    off = np.arange(-r, r + 1, dtype=np.float64)
-    box = np.ones(2 * r + 1)
-    w = valid.astype(np.float64)
-    zc = float(np.mean(z[valid])) if valid.any() else 0.0
-    zw = np.where(valid, z - zc, 0.0)
-
-    def corr(a, kx, ky):
-        a = ndimage.correlate1d(a, kx, axis=1, mode="constant")
-        return ndimage.correlate1d(a, ky, axis=0, mode="constant")
-
-    n = corr(w, box, box)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        mx, my, mz = corr(w, off, box) / n, corr(w, box, off) / n, corr(zw, box, box) / n
-        cxx = corr(w, off * off, box) / n - mx * mx
-        cyy = corr(w, box, off * off) / n - my * my
-        cxy = corr(w, off, off) / n - mx * my
-        cxz = corr(zw, off, box) / n - mx * mz
-        cyz = corr(zw, box, off) / n - my * mz
-        czz = corr(zw * zw, box, box) / n - mz * mz
-        det = cxx * cyy - cxy * cxy
-        gx = (cyy * cxz - cxy * cyz) / det
-        gy = (cxx * cyz - cxy * cxz) / det
-        rms = np.sqrt(np.maximum(czz - gx * cxz - gy * cyz, 0.0))
-        centre = mz - gx * mx - gy * my + zc
-    bad = ~(det > 0.1) | (n < 6)
-    rms[bad] = np.nan
-    centre[bad] = np.nan
-    return rms, centre, gx, gy
-
-
 def grow_ground(zmin, obj, skip, dtm, cell, opt):
     """Object cells left after growing the ground along continuous surfaces (step 5b).
 
@@ -425,7 +375,7 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
         return obj
     rows, cols = zmin.shape
     rad = max(1, int(round(opt.grow_window / cell)))
-    rms, centre, gx, gy = plane_fit(zmin, ~skip, rad)
+    rms, centre, gx, gy = S.plane_fit(zmin, ~skip, rad)
     with np.errstate(invalid="ignore"):
         tol = opt.grow_tol + opt.scaler * np.hypot(gx, gy) / cell
         cand = (obj & ~skip & (rms <= opt.grow_rms) & (np.abs(zmin - centre) <= tol)
