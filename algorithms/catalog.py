@@ -69,9 +69,10 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
             {self.INPUT: self.tr("All tiles must share one CRS."),
              self.GROUND_FILTER: self.tr("The first choice keeps the classes already in "
                                          "the files."),
-             self.BUFFER: self.tr("Must exceed the filter's reach (about 240 m for the "
-                                  "improved LSQ, 120 m for the terrain-adaptive slope "
-                                  "filter) and the DTM search distance."),
+             self.BUFFER: self.tr("Must exceed the filter's reach (about 100 m for the "
+                                  "recommended filter, 240 m for the improved LSQ, 120 m "
+                                  "for the terrain-adaptive slope filter) and the DTM "
+                                  "search distance."),
              self.CHUNK_SIZE: self.tr("0 processes whole tiles; a size (a multiple of "
                                       "the cell size) cuts the catalog into squares "
                                       "read from the tiles they overlap."),

@@ -338,16 +338,16 @@
             <translation>تقرير فهرس البلاطات</translation>
         </message>
         <message>
-            <source>Must exceed the filter's reach (about 240 m for the improved LSQ, 120 m for the terrain-adaptive slope filter) and the DTM search distance.</source>
-            <translation>يجب أن يتجاوز مدى تأثير المرشح (نحو 240 م لـ LSQ المحسّن، و120 م لمرشح الانحدار المتكيف مع التضاريس) ومسافة البحث لنموذج التضاريس الرقمي.</translation>
-        </message>
-        <message>
             <source>0 processes whole tiles; a size (a multiple of the cell size) cuts the catalog into squares read from the tiles they overlap.</source>
             <translation>القيمة 0 تعالج البلاطات كاملة؛ أما الحجم (مضاعف لحجم الخلية) فيقسم الفهرس إلى مربعات تُقرأ من البلاطات التي تتقاطع معها.</translation>
         </message>
         <message>
             <source>Chunk size (m, 0 = the tiles)</source>
             <translation>حجم القطعة (م، 0 = البلاطات)</translation>
+        </message>
+        <message>
+            <source>Must exceed the filter's reach (about 100 m for the recommended filter, 240 m for the improved LSQ, 120 m for the terrain-adaptive slope filter) and the DTM search distance.</source>
+            <translation>يجب أن يتجاوز مدى تأثير المرشح (نحو 100 م للمرشح الموصى به، و240 م لـ LSQ المحسّن، و120 م لمرشح الانحدار المتكيف مع التضاريس) ومسافة البحث لنموذج التضاريس الرقمي.</translation>
         </message>
     </context>
     <context>

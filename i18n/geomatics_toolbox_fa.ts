@@ -338,16 +338,16 @@
             <translation>گزارش فهرست کاشی‌ها</translation>
         </message>
         <message>
-            <source>Must exceed the filter's reach (about 240 m for the improved LSQ, 120 m for the terrain-adaptive slope filter) and the DTM search distance.</source>
-            <translation>باید از بُرد فیلتر (حدود 240 متر برای LSQ بهبودیافته و 120 متر برای فیلتر شیب سازگار با عوارض) و فاصلهٔ جست‌وجوی مدل رقومی زمین بیشتر باشد.</translation>
-        </message>
-        <message>
             <source>0 processes whole tiles; a size (a multiple of the cell size) cuts the catalog into squares read from the tiles they overlap.</source>
             <translation>مقدار 0 کاشی‌ها را کامل پردازش می‌کند؛ یک اندازه (مضربی از اندازهٔ سلول) کاتالوگ را به مربع‌هایی تقسیم می‌کند که از کاشی‌های هم‌پوشان خوانده می‌شوند.</translation>
         </message>
         <message>
             <source>Chunk size (m, 0 = the tiles)</source>
             <translation>اندازهٔ تکه (متر، 0 = کاشی‌ها)</translation>
+        </message>
+        <message>
+            <source>Must exceed the filter's reach (about 100 m for the recommended filter, 240 m for the improved LSQ, 120 m for the terrain-adaptive slope filter) and the DTM search distance.</source>
+            <translation>باید از بُرد فیلتر (حدود 100 متر برای فیلتر پیشنهادی، 240 متر برای LSQ بهبودیافته و 120 متر برای فیلتر شیب سازگار با عوارض) و فاصلهٔ جست‌وجوی مدل رقومی زمین بیشتر باشد.</translation>
         </message>
     </context>
     <context>
