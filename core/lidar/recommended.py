@@ -384,7 +384,6 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
     offs = [(dr, dc) for dr in range(-rad, rad + 1) for dc in range(-rad, rad + 1)
             if (dr, dc) != (0, 0)]
     fp = np.ones((2 * rad + 1, 2 * rad + 1), bool)
-    grown = np.zeros_like(obj)
     front = cand & ndimage.binary_dilation(ground, structure=fp)
     for _ in range(int(opt.grow_iters)):
         rr, cc = np.nonzero(front)
@@ -400,13 +399,11 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
         acc = best <= tol[rr, cc]
         if not acc.any():
             break
-        ar, ac = rr[acc], cc[acc]
-        ground[ar, ac] = True
-        grown[ar, ac] = True
-        new = np.zeros_like(obj)
-        new[ar, ac] = True
-        front = cand & ~ground & ndimage.binary_dilation(new, structure=fp)
-    return obj & ~grown
+        front[:] = False
+        front[rr[acc], cc[acc]] = True                   # the cells just accepted
+        ground |= front
+        front = cand & ~ground & ndimage.binary_dilation(front, structure=fp)
+    return obj & ~ground
 
 
 def fill_holes(z, valid, grid, opt):

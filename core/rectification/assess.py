@@ -205,7 +205,7 @@ def assess_gcps(gcps: GCPSet, *, kind: str = "polynomial2", order: Optional[int]
     mon.step(0.3)
     cmp_ = compare_transforms(gcps, kinds=kinds, gr=gr, image_size=image_size)
     if not cmp_.results[kind].ok:
-        raise InputError(cmp_.results[kind].error)
+        raise cmp_.results[kind].failure      # the fit's own (translatable) InputError
     mon.step(0.6)
     poly = int(kind[-1]) if kind.startswith("polynomial") else None
     if poly is None:

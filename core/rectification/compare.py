@@ -42,7 +42,8 @@ class TransformResult:
     kind: str
     n_gcps: int
     transform: Optional[Transform] = None
-    error: Optional[str] = None
+    #: Why the fit failed (its template is translated when it reaches the user).
+    failure: Optional[InputError] = None
     fit: Optional[ResidualStats] = None
     loo: Optional[ResidualStats] = None
     check: Optional[ResidualStats] = None
@@ -51,6 +52,11 @@ class TransformResult:
     def ok(self) -> bool:
         """True when the transformation could be fitted."""
         return self.transform is not None
+
+    @property
+    def error(self) -> Optional[str]:
+        """The failure's English message, or None."""
+        return None if self.failure is None else str(self.failure)
 
     @property
     def n_parameters(self) -> int:
@@ -102,7 +108,7 @@ def _evaluate(kind: str, g: GCPSet, gr: float, image_size) -> TransformResult:
     try:
         t = fit_transform(kind, pix, mp, weights=w)
     except InputError as exc:
-        res.error = str(exc)
+        res.failure = exc
         return res
     res.transform = t
     vx, vy = t.residuals(pix, mp)

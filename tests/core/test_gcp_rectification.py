@@ -552,3 +552,13 @@ def test_ill_conditioned_messages_are_translated(lang):
         polynomial.fit_polynomial(pix, pix * 2.0, order=1)
     assert err.value.template == polynomial.ILL_CONDITIONED["collinear"]
     assert isinstance(err.value, InputError) and "collinear" in str(err.value)
+
+
+def test_failed_fit_reaches_the_user_as_its_own_template():
+    """assess_gcps re-raises the fit's InputError (translatable), not a bare string."""
+    n = 8
+    pix = np.column_stack([np.linspace(0, 1000, n), np.linspace(0, 500, n)])  # a line
+    g = gcp_io.make_gcps([f"p{i}" for i in range(n)], pix, pix * 2.0 + 100.0)
+    with pytest.raises(polynomial.IllConditionedError) as err:
+        assess.assess_gcps(g, kind="polynomial1", gr=2.0, refine=False)
+    assert err.value.template == polynomial.ILL_CONDITIONED["collinear"]
