@@ -119,8 +119,8 @@ def write_geotiff(path, data, *, geotransform: Sequence[float], crs: Optional[st
     return os.fspath(path)
 
 
-def read_raster(path, band: int = 1) -> Raster:
-    """Read one band of a GDAL raster with its geotransform, CRS and nodata."""
+def _open_band(path, band: int):
+    """``(dataset, band)`` of a raster GDAL can read, with clear errors; no pixels read."""
     gdal = _gdal()
     path = os.fspath(path)
     if not os.path.exists(path):
@@ -131,7 +131,12 @@ def read_raster(path, band: int = 1) -> Raster:
         raise ValueError(f"{path} is not a raster GDAL can read: {exc}") from exc
     if band < 1 or band > ds.RasterCount:
         raise ValueError(f"{path} has {ds.RasterCount} band(s); band {band} does not exist.")
-    b = ds.GetRasterBand(band)
+    return ds, ds.GetRasterBand(band)
+
+
+def read_raster(path, band: int = 1) -> Raster:
+    """Read one band of a GDAL raster with its geotransform, CRS and nodata."""
+    ds, b = _open_band(path, band)
     return Raster(b.ReadAsArray(), tuple(ds.GetGeoTransform()), ds.GetProjection(),
                   b.GetNoDataValue())
 
@@ -147,7 +152,9 @@ def read_raster_on_grid(path, geotransform: Sequence[float], shape: Tuple[int, i
     """
     gdal = _gdal()
     path = os.fspath(path)
-    src = read_raster(path, band)     # checks existence, readability, band
+    ds, b = _open_band(path, band)    # checks existence, readability, band; no pixels
+    src_crs, src_nodata = ds.GetProjection(), b.GetNoDataValue()
+    del ds, b
     if band != 1:
         raise ValueError("Only band 1 can be resampled onto another grid.")
     rows, cols = int(shape[0]), int(shape[1])
@@ -155,8 +162,8 @@ def read_raster_on_grid(path, geotransform: Sequence[float], shape: Tuple[int, i
     bounds = (x0, y0 + rows * dy, x0 + cols * dx, y0)
     opts = gdal.WarpOptions(format="MEM", outputBounds=bounds, width=cols, height=rows,
                             resampleAlg=resampling,
-                            dstSRS=crs or src.crs or None, outputType=gdal.GDT_Float64,
-                            srcNodata=src.nodata, dstNodata=float("nan"))
+                            dstSRS=crs or src_crs or None, outputType=gdal.GDT_Float64,
+                            srcNodata=src_nodata, dstNodata=float("nan"))
     try:
         ds = gdal.Warp("", path, options=opts)
     except RuntimeError as exc:
