@@ -25,6 +25,7 @@ import numpy as np
 from ..progress import Monitor
 from .contract import atomic_output, check_not_input
 from .crs import spatial_reference
+from .units import METRIC, Units, header_units
 
 DEFAULT_CHUNK = 2_000_000
 _SUPPORTED_VERSIONS = {(1, 0), (1, 1), (1, 2), (1, 3), (1, 4)}
@@ -62,6 +63,9 @@ class LasInfo:
     n_vlrs: int
     #: Scalar extra-bytes dimensions as ``(name, numpy type string)``, e.g. ``("hag", "<f4")``.
     extra_dims: Tuple[Tuple[str, str], ...] = ()
+    #: Horizontal and vertical linear units (:func:`~.units.header_units`); metres when
+    #: the file has no CRS.
+    units: Units = METRIC
 
 
 @dataclass
@@ -137,7 +141,15 @@ def crs_of_header(header) -> Optional[str]:
     return None
 
 
+def _units_of_header(header, crs) -> Units:
+    try:
+        return header_units(header, crs)
+    except ValueError:      # an unparsable CRS is refused where the CRS is used
+        return METRIC
+
+
 def _info_from_header(path: str, header) -> LasInfo:
+    crs = crs_of_header(header)
     return LasInfo(
         path=path,
         version=str(header.version),
@@ -148,11 +160,12 @@ def _info_from_header(path: str, header) -> LasInfo:
         mins=tuple(float(v) for v in header.mins),
         maxs=tuple(float(v) for v in header.maxs),
         compressed=path.lower().endswith(".laz"),
-        crs=crs_of_header(header),
+        crs=crs,
         dimensions=tuple(header.point_format.dimension_names),
         n_vlrs=len(header.vlrs),
         extra_dims=tuple((d.name, d.dtype.str) for d in header.point_format.extra_dimensions
                          if d.num_elements == 1),
+        units=_units_of_header(header, crs),
     )
 
 
