@@ -75,8 +75,9 @@ LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
 _LAS_EXTENSIONS = (".las", ".laz")
 
 
-def point_cloud_layers_supported() -> bool:
-    """True when this QGIS build can open LAS/LAZ as point-cloud layers (PDAL provider).
+def point_cloud_layers_supported(path: str | None = None) -> bool:
+    """True when this QGIS build can open LAS/LAZ as point-cloud layers (PDAL provider),
+    or, given ``path``, that file (a ``.copc.laz`` needs no PDAL from QGIS 3.26 on).
 
     Debian's QGIS 3.22 is built without PDAL: there LiDAR inputs are file paths.
     """
@@ -84,7 +85,14 @@ def point_cloud_layers_supported() -> bool:
         from qgis.core import QgsProcessingParameterPointCloudLayer  # noqa: F401
     except ImportError:  # QGIS < 3.18
         return False
-    return "pdal" in QgsProviderRegistry.instance().providerList()
+    providers = QgsProviderRegistry.instance().providerList()
+    if "pdal" in providers:
+        return True
+    return bool(path) and path.lower().endswith(".copc.laz") and "copc" in providers
+
+
+#: parameter types read with parameterAsOutputLayer (loaded into the map on request)
+LAYER_DESTINATIONS = ("rasterDestination", "vectorDestination", "sink")
 
 
 class GeomaticsAlgorithm(QgsProcessingAlgorithm):
@@ -214,11 +222,12 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
     def load_cloud_on_completion(self, context, path: str, name: str,
                                  output_name: str = "OUTPUT") -> bool:
         """Ask QGIS to load a written LAS/LAZ output as a point-cloud layer, if it can."""
-        if not path or context is None or not point_cloud_layers_supported():
+        if not path or context is None or not point_cloud_layers_supported(path):
             return False
         details = QgsProcessingContext.LayerDetails(name, context.project(), output_name,
                                                     QgsProcessingUtils.LayerHint.PointCloud)
         context.addLayerToLoadOnCompletion(path, details)
+        self.style_output(context, output_name, path, "classes")
         return True
 
     # Shared low-outlier pre-filter (core.noise.flag_low_outliers) of the ground filters
@@ -299,13 +308,50 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
         """
         paths = {}
         for name in outputs:
-            value = parameters.get(name) if parameters else None
-            if value is None or value == "":
-                continue
-            path = self.parameterAsFileOutput(parameters, name, context)
+            path = self.output_path(parameters, context, name)
             if path:
                 paths[name] = path
         return OutputContract(paths, inputs=dict(inputs))
+
+    #: style kind (:data:`.styles.KINDS`) of each layer output, by parameter name
+    OUTPUT_STYLES: dict = {}
+
+    def output_path(self, parameters, context, name: str) -> str:
+        """The path of output ``name`` ('' when an optional one is unset).
+
+        Call it once per output and run: a temporary output gets a new name at every
+        call. Raster and vector destinations are read with ``parameterAsOutputLayer``,
+        which puts them on the context's list of layers to load when the user asked
+        for that (dialog, batch, model); :data:`OUTPUT_STYLES` then styles them.
+        """
+        value = parameters.get(name) if parameters else None
+        if value is None or value == "":
+            return ""
+        param = self.parameterDefinition(name)
+        if param is not None and param.type() in LAYER_DESTINATIONS:
+            path = self.parameterAsOutputLayer(parameters, name, context)
+            self.style_output(context, name, path)
+        else:
+            path = self.parameterAsFileOutput(parameters, name, context)
+        return path or ""
+
+    def style_output(self, context, name: str, path: str, kind: str | None = None) -> bool:
+        """Style the layer ``path`` of output ``name`` once QGIS loads it (if it does)."""
+        from .styles import style_on_completion
+        return style_on_completion(context, path, kind or self.OUTPUT_STYLES.get(name))
+
+    def load_layer_on_completion(self, context, path: str, name: str, output_name: str,
+                                 kind: str | None = None, *, raster: bool = True) -> bool:
+        """Ask QGIS to load a written file that is no destination parameter (the
+        catalog's VRT) as a layer of the run's project, styled as ``kind``."""
+        if not path or context is None or context.project() is None:
+            return False
+        hint = (QgsProcessingUtils.LayerHint.Raster if raster
+                else QgsProcessingUtils.LayerHint.Vector)
+        context.addLayerToLoadOnCompletion(path, QgsProcessingContext.LayerDetails(
+            name, context.project(), output_name, hint))
+        self.style_output(context, output_name, path, kind)
+        return True
 
     @staticmethod
     def write_text(path: str, text: str) -> str:

@@ -40,6 +40,7 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
     OUTPUT = "OUTPUT"
     OUTPUT_CLOUD = "OUTPUT_CLOUD"
     OUTPUT_HTML = "OUTPUT_HTML"
+    OUTPUT_STYLES = {"OUTPUT": "footprints"}
 
     def name(self):
         return "buildings"
@@ -140,6 +141,9 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
                 out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters,
                                                                     context))
         results = {n: out.final(n) for n in names if out.requested(n)}
+        self.load_cloud_on_completion(context, results.get(self.OUTPUT_CLOUD),
+                                      self.tr("Classified cloud (class 6 = building)"),
+                                      self.OUTPUT_CLOUD)
         results.update(N_BUILDINGS=len(res.buildings),
                        TOTAL_AREA=float(sum(b["area"] for b in res.buildings)),
                        TOTAL_VOLUME=float(sum(b["volume"] for b in res.buildings)))

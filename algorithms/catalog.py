@@ -4,6 +4,7 @@ from __future__ import annotations
 import numpy as np
 from qgis.core import (
     QgsProcessingOutputNumber,
+    QgsProcessingOutputRasterLayer,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterEnum,
     QgsProcessingParameterFileDestination,
@@ -33,6 +34,7 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
     COG = "COG"
     OUTPUT_FOLDER = "OUTPUT_FOLDER"
     OUTPUT_HTML = "OUTPUT_HTML"
+    OUTPUT_VRT = "OUTPUT_VRT"
     N_TILES = "N_TILES"
     N_FAILED = "N_FAILED"
     POINTS_PER_SECOND = "POINTS_PER_SECOND"
@@ -115,6 +117,8 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_HTML, self.tr("Tile catalog report"), self.tr("HTML files (*.html)"),
             optional=True))
+        self.addOutput(QgsProcessingOutputRasterLayer(
+            self.OUTPUT_VRT, self.tr("DTM mosaic (VRT)")))
         for name, label in ((self.N_TILES, self.tr("Tiles")),
                             (self.N_FAILED, self.tr("Failed tiles")),
                             (self.POINTS_PER_SECOND, self.tr("Points per second"))):
@@ -147,6 +151,10 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                                         lang=self.report_lang(parameters, context))
                 out.write_text(self.OUTPUT_HTML, self.render_report(report, parameters,
                                                                     context))
+        if res.vrt:
+            self.load_layer_on_completion(context, res.vrt, self.tr("DTM mosaic (VRT)"),
+                                          self.OUTPUT_VRT, "elevation")
         return {self.OUTPUT_FOLDER: folder, self.OUTPUT_HTML: out.final(self.OUTPUT_HTML),
+                self.OUTPUT_VRT: res.vrt,
                 self.N_TILES: len(res.chunks), self.N_FAILED: len(res.failed),
                 self.POINTS_PER_SECOND: res.points_per_second}

@@ -50,15 +50,10 @@ NUMBERS = (
 )
 
 
-def residual_style(errors) -> str:
-    """QML of a diverging graduated renderer on ``error`` (blue below, red above)."""
-    from qgis.core import (
-        QgsGraduatedSymbolRenderer,
-        QgsMarkerSymbol,
-        QgsRendererRange,
-        QgsVectorLayer,
-    )
-    from qgis.PyQt.QtXml import QDomDocument
+def residual_renderer(errors):
+    """Diverging graduated renderer on ``error`` (blue below, red above), symmetric
+    about zero up to the largest absolute error."""
+    from qgis.core import QgsGraduatedSymbolRenderer, QgsMarkerSymbol, QgsRendererRange
 
     from ..core.reporting import svg
     err = np.asarray(errors, dtype=float)
@@ -70,8 +65,16 @@ def residual_style(errors) -> str:
         symbol = QgsMarkerSymbol.createSimple({"name": "circle", "color": colour,
                                               "size": "3", "outline_color": "#222222"})
         ranges.append(QgsRendererRange(float(edges[i]), float(edges[i + 1]), symbol, label))
+    return QgsGraduatedSymbolRenderer("error", ranges)
+
+
+def residual_style(errors) -> str:
+    """QML of :func:`residual_renderer` (stored in the GeoPackage as its default style)."""
+    from qgis.core import QgsVectorLayer
+    from qgis.PyQt.QtXml import QDomDocument
+
     layer = QgsVectorLayer("Point?field=error:double", "residuals", "memory")
-    layer.setRenderer(QgsGraduatedSymbolRenderer("error", ranges))
+    layer.setRenderer(residual_renderer(errors))
     doc = QDomDocument()
     layer.exportNamedStyle(doc)
     return doc.toString()
@@ -187,6 +190,7 @@ class DtmAccuracyAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
     DTM = "DTM"
     BAND = "BAND"
     OUTPUT = "OUTPUT"
+    OUTPUT_STYLES = {"OUTPUT": "residuals"}
     OUTPUT_HTML = "OUTPUT_HTML"
 
     def name(self):

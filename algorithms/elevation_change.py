@@ -59,6 +59,7 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
     OUTPUT = "OUTPUT"
     OUTPUT_POLYGONS = "OUTPUT_POLYGONS"
     OUTPUT_HTML = "OUTPUT_HTML"
+    OUTPUT_STYLES = {"OUTPUT": "change", "OUTPUT_POLYGONS": "change_polygons"}
 
     def name(self):
         return "elevationchange"

@@ -30,6 +30,7 @@ class LidarQaAlgorithm(GeomaticsAlgorithm):
     GROUND_CLASSES = "GROUND_CLASSES"
     OUTPUT = "OUTPUT"
     OUTPUT_HTML = "OUTPUT_HTML"
+    OUTPUT_STYLES = {"OUTPUT": "density"}
 
     def name(self):
         return "lidarqa"

@@ -79,6 +79,7 @@ class LidarToDtmAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
     OUTPUT = "OUTPUT"
     OUTPUT_DTM = "OUTPUT_DTM"
     OUTPUT_RESIDUALS = "OUTPUT_RESIDUALS"
+    OUTPUT_STYLES = {"OUTPUT_DTM": "elevation", "OUTPUT_RESIDUALS": "residuals"}
     OUTPUT_FILTER_HTML = "OUTPUT_FILTER_HTML"
     OUTPUT_DTM_HTML = "OUTPUT_DTM_HTML"
     OUTPUT_HTML = "OUTPUT_HTML"

@@ -30,6 +30,7 @@ class PublishOutputsAlgorithm(GeomaticsAlgorithm):
              ("RESIDUALS", "OUTPUT_RESIDUALS", "vector"), ("HTML", "OUTPUT_HTML", "file"))
     SOURCES = ("INPUT_CLOUD", "INPUT_CHECKPOINTS_CSV")
     INPUT_CHECKPOINTS = "INPUT_CHECKPOINTS"
+    OUTPUT_STYLES = {"OUTPUT_DTM": "elevation", "OUTPUT_RESIDUALS": "residuals"}
 
     def name(self):
         return "publishoutputs"
@@ -91,10 +92,7 @@ class PublishOutputsAlgorithm(GeomaticsAlgorithm):
             "OUTPUT_HTML", self.tr("DTM accuracy report"), html, optional=True))
 
     def _destination(self, parameters, context, name):
-        value = parameters.get(name) if parameters else None
-        if value is None or value == "":
-            return None
-        return self.parameterAsFileOutput(parameters, name, context) or None
+        return self.output_path(parameters, context, name) or None
 
     def _inputs(self, parameters, context) -> dict:
         inputs = {n: self.parameterAsFile(parameters, n, context) for n in self.SOURCES}

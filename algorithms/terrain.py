@@ -251,6 +251,7 @@ class _GridAlgorithm(GeomaticsAlgorithm):
 class IdwDtmAlgorithm(_GridAlgorithm):
     """IDW DTM (gdal_grid invdistnn semantics)."""
 
+    OUTPUT_STYLES = {"OUTPUT": "elevation"}
     POWER = "POWER"
     NEIGHBOURS = "NEIGHBOURS"
     RADIUS = "RADIUS"
@@ -364,6 +365,7 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
     SEED = "SEED"
     VARIANCE_AS_STD = "VARIANCE_AS_STD"
     OUTPUT_VARIANCE = "OUTPUT_VARIANCE"
+    OUTPUT_STYLES = {"OUTPUT": "elevation", "OUTPUT_VARIANCE": "variance"}
 
     TYPES = ("ordinary", "universal")
 
@@ -564,6 +566,7 @@ class DsmAlgorithm(_GridAlgorithm):
     DTM = "DTM"
     CLAMP_NEGATIVE = "CLAMP_NEGATIVE"
     OUTPUT_NDSM = "OUTPUT_NDSM"
+    OUTPUT_STYLES = {"OUTPUT": "elevation", "OUTPUT_NDSM": "height"}
 
     def report_label(self):
         return self.tr("DSM report")

@@ -14,13 +14,14 @@ from ..core.lidar.qa import check_projected
 from ..core.terrain import tin as core_tin
 from ..core.terrain.report import tin_report
 from .helptext import build_help
-from .terrain import _check_tif, _GridAlgorithm
+from .terrain import _GridAlgorithm
 
 
 class TinDtmAlgorithm(_GridAlgorithm):
     """DTM by linear interpolation in the Delaunay triangles of the ground points."""
 
     MAX_EDGE = "MAX_EDGE"
+    OUTPUT_STYLES = {"OUTPUT": "elevation"}
 
     def name(self):
         return "tindtm"
@@ -61,7 +62,6 @@ class TinDtmAlgorithm(_GridAlgorithm):
             advanced=True)
         self.add(QgsProcessingParameterRasterDestination(self.OUTPUT, self.tr("TIN DTM")))
         self.add_html()
-        self.add_report_language()
         for name, label in (("N_POINTS", self.tr("Points triangulated")),
                             ("N_TRIANGLES", self.tr("Triangles")),
                             ("VALID_CELLS", self.tr("Cells with a value")),
@@ -69,12 +69,10 @@ class TinDtmAlgorithm(_GridAlgorithm):
             self.addOutput(QgsProcessingOutputNumber(name, label))
 
     def process(self, parameters, context, feedback):
-        path = self.parameterAsFile(parameters, self.INPUT, context)
-        _check_tif(self.parameterAsOutputLayer(parameters, self.OUTPUT, context))
+        path = self.las_input_path(parameters, context, self.INPUT)
         max_edge = self.parameterAsDouble(parameters, self.MAX_EDGE, context)
         fill = self.parameterAsBool(parameters, self.FILL_GAPS, context)
-        with self.output_contract(parameters, context, [self.OUTPUT, self.OUTPUT_HTML],
-                                  inputs={self.INPUT: path}) as out:
+        with self.contract(parameters, context, [self.OUTPUT], {self.INPUT: path}) as out:
             path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
             check_projected(pts.x, pts.y)
             res = core_tin.tin_grid(pts.x, pts.y, pts.z, grid,

@@ -349,6 +349,10 @@
             <source>Must exceed the filter's reach (about 100 m for the recommended filter, 240 m for the improved LSQ, 120 m for the terrain-adaptive slope filter) and the DTM search distance.</source>
             <translation>يجب أن يتجاوز مدى تأثير المرشح (نحو 100 م للمرشح الموصى به، و240 م لـ LSQ المحسّن، و120 م لمرشح الانحدار المتكيف مع التضاريس) ومسافة البحث لنموذج التضاريس الرقمي.</translation>
         </message>
+        <message>
+            <source>DTM mosaic (VRT)</source>
+            <translation>فسيفساء نموذج التضاريس الرقمي (VRT)</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>
@@ -1150,6 +1154,26 @@
         <message>
             <source>Exponential (exponential)</source>
             <translation>أُسّي (exponential)</translation>
+        </message>
+        <message>
+            <source>Colour ramp</source>
+            <translation>تدرّج لوني</translation>
+        </message>
+        <message>
+            <source>Hillshade</source>
+            <translation>تظليل التضاريس</translation>
+        </message>
+        <message>
+            <source>Cut (surface lowered)</source>
+            <translation>حفر (انخفض السطح)</translation>
+        </message>
+        <message>
+            <source>Fill (surface raised)</source>
+            <translation>ردم (ارتفع السطح)</translation>
+        </message>
+        <message>
+            <source>Could not style the layer {name}: {error}</source>
+            <translation>تعذّر تطبيق النمط على الطبقة {name}: {error}</translation>
         </message>
     </context>
     <context>

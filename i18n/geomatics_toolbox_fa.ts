@@ -349,6 +349,10 @@
             <source>Must exceed the filter's reach (about 100 m for the recommended filter, 240 m for the improved LSQ, 120 m for the terrain-adaptive slope filter) and the DTM search distance.</source>
             <translation>باید از بُرد فیلتر (حدود 100 متر برای فیلتر پیشنهادی، 240 متر برای LSQ بهبودیافته و 120 متر برای فیلتر شیب سازگار با عوارض) و فاصلهٔ جست‌وجوی مدل رقومی زمین بیشتر باشد.</translation>
         </message>
+        <message>
+            <source>DTM mosaic (VRT)</source>
+            <translation>موزاییک مدل رقومی زمین (VRT)</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>
@@ -1150,6 +1154,26 @@
         <message>
             <source>Exponential (exponential)</source>
             <translation>نمایی (exponential)</translation>
+        </message>
+        <message>
+            <source>Colour ramp</source>
+            <translation>طیف رنگی</translation>
+        </message>
+        <message>
+            <source>Hillshade</source>
+            <translation>سایه‌روشن</translation>
+        </message>
+        <message>
+            <source>Cut (surface lowered)</source>
+            <translation>برداشت (سطح پایین رفته)</translation>
+        </message>
+        <message>
+            <source>Fill (surface raised)</source>
+            <translation>خاکریز (سطح بالا آمده)</translation>
+        </message>
+        <message>
+            <source>Could not style the layer {name}: {error}</source>
+            <translation>سبک‌دهی لایهٔ {name} ممکن نشد: {error}</translation>
         </message>
     </context>
     <context>

@@ -1,0 +1,264 @@
+"""Styles of the layers the algorithms load into the map.
+
+An algorithm names the kind of each layer output (``OUTPUT_STYLES = {"OUTPUT":
+"elevation"}``); :meth:`.base.GeomaticsAlgorithm.output_contract` reads layer
+destinations with ``parameterAsOutputLayer`` (which puts them on the context's
+load-on-completion list when the user asked for them: the dialog's "Open output file
+after running algorithm", a batch's "Load layers on completion", a model output) and
+attaches a :class:`LayerStyler` to each, which styles the layer once QGIS has loaded it:
+
+* ``elevation`` (DTM, DSM, the catalog's VRT) — hypsometric colour ramp over the 2–98 %
+  cumulative cut, plus a second named style "Hillshade" (multidirectional) in the
+  layer's style manager (Layer ▸ Styles);
+* ``height`` (nDSM / canopy height), ``variance`` (kriging variance), ``density``
+  (point density, band 1), ``change`` (after − before, a diverging ramp symmetric about
+  zero);
+* ``footprints`` (graduated by ``height_m`` and extruded by it in 3D views),
+  ``change_polygons`` (cut red, fill blue), ``residuals`` (diverging by ``error``);
+* ``classes`` — a point cloud with the ASPRS classification renderer.
+
+QGIS keeps only a raw pointer to a post-processor: :data:`_KEEP` holds the Python
+objects so they outlive the algorithm run.
+"""
+from __future__ import annotations
+
+import collections
+
+from qgis.core import (
+    QgsCategorizedSymbolRenderer,
+    QgsColorRampShader,
+    QgsFillSymbol,
+    QgsGradientColorRamp,
+    QgsGradientStop,
+    QgsGraduatedSymbolRenderer,
+    QgsHillshadeRenderer,
+    QgsMapLayerType,
+    QgsProcessingLayerPostProcessorInterface,
+    QgsRasterBandStats,
+    QgsRasterShader,
+    QgsRendererCategory,
+    QgsSingleBandPseudoColorRenderer,
+)
+from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtGui import QColor
+
+#: post-processors handed to QGIS (which keeps raw pointers): kept alive here
+_KEEP: collections.deque = collections.deque(maxlen=1024)
+
+#: colour ramps by layer kind: (position 0–1, colour)
+RAMPS = {
+    # hypsometric tints: lowland green, upland ochre, summit white
+    "elevation": ((0.0, "#1a6e3c"), (0.2, "#5fa052"), (0.4, "#c9d88a"),
+                  (0.6, "#e8c77f"), (0.8, "#b07845"), (1.0, "#f4f1ee")),
+    # heights above ground (nDSM / canopy height): yellow-green
+    "height": ((0.0, "#ffffcc"), (0.25, "#c2e699"), (0.5, "#78c679"),
+               (0.75, "#31a354"), (1.0, "#006837")),
+    # kriging variance: yellow-orange-red (more uncertain = darker)
+    "variance": ((0.0, "#ffffb2"), (0.25, "#fecc5c"), (0.5, "#fd8d3c"),
+                 (0.75, "#f03b20"), (1.0, "#bd0026")),
+    # after - before: red = loss (cut), white = no change, blue = gain (fill)
+    "change": ((0.0, "#b2182b"), (0.25, "#ef8a62"), (0.5, "#f7f7f7"),
+               (0.75, "#67a9cf"), (1.0, "#2166ac")),
+    # point density: viridis
+    "density": ((0.0, "#440154"), (0.25, "#3b528b"), (0.5, "#21918c"),
+                (0.75, "#5ec962"), (1.0, "#fde725")),
+}
+RASTER_KINDS = ("elevation", "height", "variance", "change", "density")
+VECTOR_KINDS = ("footprints", "change_polygons", "residuals")
+KINDS = RASTER_KINDS + VECTOR_KINDS + ("classes",)
+
+
+def _style_names():
+    # literal translate() calls so that pylupdate5 finds them
+    return {"colour": QCoreApplication.translate("GeomaticsAlgorithm", "Colour ramp"),
+            "hillshade": QCoreApplication.translate("GeomaticsAlgorithm", "Hillshade"),
+            "cut": QCoreApplication.translate("GeomaticsAlgorithm", "Cut (surface lowered)"),
+            "fill": QCoreApplication.translate("GeomaticsAlgorithm",
+                                               "Fill (surface raised)")}
+
+
+def color_ramp(kind: str) -> QgsGradientColorRamp:
+    """The :data:`RAMPS` entry ``kind`` as a QGIS gradient ramp."""
+    stops = RAMPS[kind]
+    ramp = QgsGradientColorRamp(QColor(stops[0][1]), QColor(stops[-1][1]), False,
+                                [QgsGradientStop(p, QColor(c)) for p, c in stops[1:-1]])
+    return ramp
+
+
+def raster_range(layer, kind: str, band: int = 1):
+    """(min, max) of the colour ramp: the 2–98 % cumulative cut, adapted to the kind.
+
+    ``change`` is symmetric about zero, ``height`` and ``density`` start at zero.
+    """
+    provider = layer.dataProvider()
+    lo, hi = provider.cumulativeCut(band, 0.02, 0.98)
+    if not (lo == lo and hi == hi) or hi <= lo:     # NaN or constant: plain min / max
+        stats = provider.bandStatistics(band, QgsRasterBandStats.Min | QgsRasterBandStats.Max)
+        lo, hi = stats.minimumValue, stats.maximumValue
+    if kind == "change":
+        limit = max(abs(lo), abs(hi)) or 1.0
+        return -limit, limit
+    if kind in ("height", "density"):
+        lo = 0.0
+    if hi <= lo:
+        hi = lo + 1.0
+    return float(lo), float(hi)
+
+
+def pseudocolor_renderer(layer, kind: str, band: int = 1):
+    """A single-band pseudocolour renderer with the kind's ramp over its range."""
+    lo, hi = raster_range(layer, kind, band)
+    ramp = color_ramp(kind)
+    shader_fn = QgsColorRampShader(lo, hi, ramp.clone(), QgsColorRampShader.Interpolated)
+    items = []
+    for pos, colour in RAMPS[kind]:
+        value = lo + pos * (hi - lo)
+        items.append(QgsColorRampShader.ColorRampItem(value, QColor(colour),
+                                                      f"{value:.2f}"))
+    shader_fn.setColorRampItemList(items)
+    shader_fn.setClip(False)
+    shader = QgsRasterShader()
+    shader.setRasterShaderFunction(shader_fn)
+    shader.setMinimumValue(lo)
+    shader.setMaximumValue(hi)
+    renderer = QgsSingleBandPseudoColorRenderer(layer.dataProvider(), band, shader)
+    renderer.setClassificationMin(lo)
+    renderer.setClassificationMax(hi)
+    return renderer
+
+
+def style_raster(layer, kind: str) -> None:
+    """Colour ramp (and, for elevations, a second "Hillshade" style) on ``layer``."""
+    names = _style_names()
+    if kind == "elevation":
+        shade = QgsHillshadeRenderer(layer.dataProvider(), 1, 315.0, 45.0)
+        shade.setMultiDirectional(True)
+        layer.setRenderer(shade)
+        manager = layer.styleManager()
+        manager.addStyleFromLayer(names["hillshade"])
+        layer.setRenderer(pseudocolor_renderer(layer, kind))
+        current = manager.currentStyle()
+        if current != names["colour"]:
+            manager.renameStyle(current, names["colour"])
+    else:
+        layer.setRenderer(pseudocolor_renderer(layer, kind))
+    layer.triggerRepaint()
+
+
+def _graduated(layer, field: str, kind: str, classes: int = 5):
+    from qgis.core import QgsClassificationQuantile
+    renderer = QgsGraduatedSymbolRenderer(field)
+    renderer.setSourceSymbol(QgsFillSymbol.createSimple(
+        {"color": "#cccccc", "outline_color": "#333333", "outline_width": "0.2"}))
+    renderer.setClassificationMethod(QgsClassificationQuantile())
+    renderer.updateClasses(layer, classes)
+    renderer.updateColorRamp(color_ramp(kind))
+    return renderer
+
+
+def footprints_3d(field: str = "height_m"):
+    """A 3D renderer extruding polygons by ``field`` (None where the 3D library is
+    missing)."""
+    try:
+        from qgis._3d import (
+            Qgs3DTypes,
+            QgsPhongMaterialSettings,
+            QgsPolygon3DSymbol,
+            QgsVectorLayer3DRenderer,
+        )
+        from qgis.core import QgsAbstract3DSymbol, QgsProperty
+    except ImportError:
+        return None
+    symbol = QgsPolygon3DSymbol()
+    symbol.setAltitudeClamping(Qgs3DTypes.AltClampRelative)
+    symbol.setExtrusionHeight(0.0)
+    props = symbol.dataDefinedProperties()
+    props.setProperty(QgsAbstract3DSymbol.PropertyExtrusionHeight,
+                      QgsProperty.fromField(field))
+    symbol.setDataDefinedProperties(props)
+    material = QgsPhongMaterialSettings()
+    material.setDiffuse(QColor("#d9b38c"))
+    material.setAmbient(QColor("#6b5a48"))
+    symbol.setMaterial(material)
+    return QgsVectorLayer3DRenderer(symbol)
+
+
+def style_vector(layer, kind: str) -> None:
+    """Renderer (and 3D renderer for footprints) of a vector output."""
+    if kind == "footprints":
+        layer.setRenderer(_graduated(layer, "height_m", "height"))
+        renderer3d = footprints_3d("height_m")
+        if renderer3d is not None:
+            layer.setRenderer3D(renderer3d)
+    elif kind == "change_polygons":
+        names = _style_names()
+        cats = []
+        for value, colour in (("cut", RAMPS["change"][0][1]),
+                              ("fill", RAMPS["change"][-1][1])):
+            symbol = QgsFillSymbol.createSimple({"color": colour, "outline_color": "#333333",
+                                                 "outline_width": "0.2"})
+            symbol.setOpacity(0.7)
+            cats.append(QgsRendererCategory(value, symbol, names[value]))
+        layer.setRenderer(QgsCategorizedSymbolRenderer("kind", cats))
+    elif kind == "residuals":
+        from .dtm_accuracy import residual_renderer
+        errors = [f["error"] for f in layer.getFeatures()
+                  if isinstance(f["error"], (int, float))]
+        layer.setRenderer(residual_renderer(errors))
+    layer.triggerRepaint()
+
+
+def style_point_cloud(layer) -> None:
+    """The ASPRS classification renderer (QGIS's default class colours and names)."""
+    from qgis.core import QgsPointCloudClassifiedRenderer
+    renderer = QgsPointCloudClassifiedRenderer()
+    renderer.setAttribute("Classification")
+    renderer.setCategories(QgsPointCloudClassifiedRenderer.defaultCategories())
+    layer.setRenderer(renderer)
+    layer.triggerRepaint()
+
+
+def apply_style(layer, kind: str) -> None:
+    """Style ``layer`` as ``kind`` (one of :data:`KINDS`)."""
+    if kind not in KINDS:
+        raise ValueError(f"unknown layer style {kind!r}; one of {', '.join(KINDS)}")
+    if layer is None or not layer.isValid():
+        return
+    ltype = layer.type()
+    if kind in RASTER_KINDS and ltype == QgsMapLayerType.RasterLayer:
+        style_raster(layer, kind)
+    elif kind in VECTOR_KINDS and ltype == QgsMapLayerType.VectorLayer:
+        style_vector(layer, kind)
+    elif kind == "classes" and ltype == QgsMapLayerType.PointCloudLayer:
+        style_point_cloud(layer)
+
+
+class LayerStyler(QgsProcessingLayerPostProcessorInterface):
+    """Styles a layer once QGIS has loaded it after the algorithm run."""
+
+    def __init__(self, kind: str):
+        super().__init__()
+        if kind not in KINDS:
+            raise ValueError(f"unknown layer style {kind!r}")
+        self.kind = kind
+
+    def postProcessLayer(self, layer, context, feedback):  # noqa: N802 - QGIS API
+        try:
+            apply_style(layer, self.kind)
+        except Exception as exc:  # noqa: BLE001 - a style never fails a finished run
+            if feedback is not None:
+                feedback.pushWarning(QCoreApplication.translate(
+                    "GeomaticsAlgorithm", "Could not style the layer {name}: {error}")
+                    .format(name=layer.name(), error=exc))
+
+
+def style_on_completion(context, path: str, kind: str | None) -> bool:
+    """Attach the style ``kind`` to ``path`` if the context will load it; True if so."""
+    if not kind or not path or context is None:
+        return False
+    if not context.willLoadLayerOnCompletion(path):
+        return False
+    styler = LayerStyler(kind)
+    _KEEP.append(styler)
+    context.layerToLoadOnCompletionDetails(path).setPostProcessor(styler)
+    return True
