@@ -9,7 +9,6 @@ from __future__ import annotations
 import json
 import math
 import os
-import resource
 import socket
 import time
 from dataclasses import dataclass, field
@@ -21,6 +20,7 @@ from ..io.catalog import read_box
 from ..io.contract import OutputContract
 from ..io.las import read_las, write_las, write_las_like
 from ..io.raster import write_geotiff
+from ..system import peak_rss_mb
 from ..terrain.grid import GridSpec
 
 GROUND = 2
@@ -305,7 +305,7 @@ def process_chunk(task: ChunkTask) -> dict:
     ph = clock.phases
     stats.update(phases=ph, seconds=sum(v[0] for v in ph.values()),
                  cpu_seconds=sum(v[1] for v in ph.values()), worker=_worker_name(),
-                 peak_rss_mb=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0)
+                 peak_rss_mb=peak_rss_mb())
     with open(task.outputs["DONE"], "w", encoding="utf-8") as fh:
         json.dump(stats, fh)
     return stats

@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import math
 import os
-import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -47,6 +46,7 @@ from ._chunks import (
     register_dtm_method,
     register_ground_filter,
 )
+from ._workers import SINGLE_THREAD_ENV, start_local_workers
 
 __all__ = ["Catalog", "CatalogResult", "run_catalog", "GROUND_FILTERS", "DTM_METHODS",
            "register_ground_filter", "register_dtm_method", "default_ground_filter",
@@ -321,29 +321,8 @@ class CatalogResult:
         return out
 
 
-def _worker_env() -> None:
-    """Make the package importable in spawned workers (PYTHONPATH, python executable)."""
-    pkg_dir = Path(os.path.abspath(__file__)).parents[2]   # as imported (plugin link)
-    if pkg_dir.name != _pkg_name():    # a checkout under another name: the venv .pth serves
-        return
-    pkg_parent = str(pkg_dir.parent)
-    parts = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
-    if pkg_parent not in parts:
-        os.environ["PYTHONPATH"] = os.pathsep.join([pkg_parent] + parts)
-    exe = os.path.abspath(sys.executable or "")
-    prefixes = {os.path.abspath(p) + os.sep for p in (sys.exec_prefix, sys.base_exec_prefix)}
-    if not (os.path.basename(exe).startswith("python")
-            and any(exe.startswith(p) for p in prefixes)):
-        # inside QGIS sys.executable is the QGIS binary (or some other python3 on PATH):
-        # spawn workers with the interpreter QGIS embeds (same version and prefix)
-        import multiprocessing
-        name = f"python{sys.version_info[0]}.{sys.version_info[1]}"
-        py = os.path.join(sys.base_exec_prefix, "bin", name)
-        if os.path.exists(py):
-            multiprocessing.set_executable(py)
-
-
-# The local scheduler and nannies run in this (the client) process, next to the
+# The local scheduler runs in this (the client) process and the nannies in the workers'
+# child process (`_workers.py`), next to the
 # workers on the same cores: their periodic callbacks (event-loop tick every 20 ms,
 # system monitor every 0.5 s, nanny memory monitor every 0.1 s, work stealing every
 # 0.1 s) cost 23 ms of CPU per second of run, measured; with these 7 ms. One chunk per
@@ -356,7 +335,7 @@ QUIET = {"distributed.admin.tick.interval": "1s",
 
 def _client(workers: int, scheduler: str, memory_limit):
     try:
-        from distributed import Client, LocalCluster
+        from distributed import Client
     except ImportError as exc:  # pragma: no cover - install problem
         raise InputError("The Python packages 'dask' and 'distributed' are not installed; "
                          "pip install dask distributed.") from exc
@@ -368,16 +347,13 @@ def _client(workers: int, scheduler: str, memory_limit):
                              "it with 'dask scheduler' or leave SCHEDULER empty.",
                              scheduler=scheduler,
                              exc=exc) from exc
-    _worker_env()
     import dask
     environ = dict(dask.config.get("distributed.nanny.pre-spawn-environ", {}) or {})
-    environ.update(RAYON_NUM_THREADS=1, OMP_NUM_THREADS=1, OPENBLAS_NUM_THREADS=1,
-                   MKL_NUM_THREADS=1)    # one worker = one core (see single_threaded)
-    with dask.config.set({"distributed.nanny.pre-spawn-environ": environ, **QUIET}):
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None, memory_limit=memory_limit,
-                               silence_logs=40)
-        return Client(cluster), cluster
+    environ.update(SINGLE_THREAD_ENV)    # one worker = one core (see single_threaded)
+    config = {"distributed.nanny.pre-spawn-environ": environ, **QUIET}
+    with dask.config.set(config):
+        workers_ = start_local_workers(workers, memory_limit=memory_limit, config=config)
+        return Client(workers_.cluster), workers_
 
 
 def _pkg_name() -> str:

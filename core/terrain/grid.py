@@ -21,12 +21,12 @@ available memory, naming the size it would need.
 from __future__ import annotations
 
 import math
-import os
 from dataclasses import dataclass, replace
 from typing import Optional, Sequence, Tuple
 
 import numpy as np
 
+from .. import system as _system
 from ..io.raster import DEFAULT_NODATA
 
 #: Default number of bytes of working memory per cell (float64 value + variance +
@@ -218,18 +218,8 @@ def grid_like(geotransform: Sequence[float], shape: Tuple[int, int], *,
 
 
 def available_memory() -> int:
-    """Bytes of memory available to this process (``MemAvailable``, else 4 GiB)."""
-    try:
-        with open("/proc/meminfo", encoding="ascii") as fh:
-            for line in fh:
-                if line.startswith("MemAvailable:"):
-                    return int(line.split()[1]) * 1024
-    except OSError:
-        pass
-    try:
-        return int(os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE"))
-    except (ValueError, OSError, AttributeError):  # pragma: no cover - non-POSIX
-        return 4 << 30
+    """Bytes of memory available to this process (:func:`..system.available_memory`)."""
+    return _system.available_memory()
 
 
 def _human(nbytes: float) -> str:

@@ -58,9 +58,7 @@ Murphy, B., Yurchak, R., Müller, S. (2022). GeoStat-Framework/PyKrige v1.7.
 """
 from __future__ import annotations
 
-import contextlib
 import math
-import os
 from dataclasses import dataclass, field
 from typing import Dict, List, Optional, Sequence, Tuple, Union
 
@@ -70,6 +68,7 @@ from scipy.spatial import cKDTree
 from ..coords import as_xyz
 from ..errors import InputError
 from ..progress import Monitor
+from ..system import limit_blas_threads
 from .grid import GridSpec, check_memory, distance_mask, resolve_max_distance, row_blocks
 
 MODELS = ("linear", "power", "gaussian", "spherical", "exponential")
@@ -564,56 +563,13 @@ class Kriging:
                 "rmsse": float(np.sqrt(np.mean(zs ** 2))) if zs.size else float("nan")}
 
 
-_BLAS_SETTERS = None
-
-
-def _blas_thread_setters():
-    """(get, set) pairs of the OpenBLAS thread-count functions loaded in this process."""
-    global _BLAS_SETTERS
-    if _BLAS_SETTERS is not None:
-        return _BLAS_SETTERS
-    found = []
-    try:
-        import ctypes
-        libs = set()
-        with open("/proc/self/maps", encoding="utf-8", errors="replace") as fh:
-            for line in fh:
-                path = line.split()[-1] if line.strip() else ""
-                name = os.path.basename(path)
-                if "blas" in name and ".so" in name:
-                    libs.add(path)
-        for path in sorted(libs):
-            try:
-                lib = ctypes.CDLL(path)
-                get = lib.openblas_get_num_threads
-                set_ = lib.openblas_set_num_threads
-            except (OSError, AttributeError):
-                continue
-            get.restype = ctypes.c_int
-            set_.argtypes = [ctypes.c_int]
-            found.append((get, set_))
-    except OSError:  # pragma: no cover - no /proc (non-Linux)
-        pass
-    _BLAS_SETTERS = found
-    return found
-
-
-@contextlib.contextmanager
 def single_threaded_blas():
-    """Run small batched LAPACK solves with one BLAS thread.
+    """Run small batched LAPACK solves with one BLAS thread (:func:`..system.limit_blas_threads`).
 
     OpenBLAS otherwise starts its thread pool for every 17×17 system, which on a
     loaded machine makes ``numpy.linalg.solve`` over 10⁵ tiny systems 10–20× slower.
     """
-    setters = _blas_thread_setters()
-    old = [get() for get, _ in setters]
-    for _, set_ in setters:
-        set_(1)
-    try:
-        yield
-    finally:
-        for (_, set_), n in zip(setters, old):
-            set_(n)
+    return limit_blas_threads(1)
 
 
 def _batched_solve(a: np.ndarray, b: np.ndarray) -> np.ndarray:

@@ -1,0 +1,141 @@
+"""Portable machine facts (core/system.py) and the catalog's local workers (_workers.py)."""
+from __future__ import annotations
+
+import multiprocessing
+import os
+import stat
+import sys
+
+import numpy as np
+import pytest
+
+from geomatics_toolbox.core import system
+from geomatics_toolbox.core.lidar import _workers
+
+
+def _touch(path, text="") -> str:
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w", encoding="utf-8") as fh:
+        fh.write(text)
+    os.chmod(path, os.stat(path).st_mode | stat.S_IEXEC)
+    return str(path)
+
+
+def _fake_interpreter(monkeypatch, *, executable, prefix, platform):
+    monkeypatch.setattr(sys, "executable", str(executable))
+    for name in ("exec_prefix", "base_exec_prefix", "prefix", "base_prefix"):
+        monkeypatch.setattr(sys, name, str(prefix))
+    monkeypatch.setattr(sys, "platform", platform)
+
+
+def test_osgeo4w_layout_finds_python_exe_not_qgis_bin(tmp_path, monkeypatch):
+    root = tmp_path / "OSGeo4W"
+    qgis = _touch(root / "bin" / "qgis-bin.exe")
+    _touch(root / "bin" / "python-qgis.bat")
+    py = _touch(root / "apps" / "Python39" / "python.exe")
+    _fake_interpreter(monkeypatch, executable=qgis, prefix=root / "apps" / "Python39",
+                      platform="win32")
+    assert system.interpreter_candidates()[0] == py
+    assert system.python_executable(verify=False) == py
+
+
+def test_macos_bundle_finds_bin_python3(tmp_path, monkeypatch):
+    app = tmp_path / "QGIS.app" / "Contents"
+    qgis = _touch(app / "MacOS" / "QGIS")
+    ver = f"{sys.version_info[0]}.{sys.version_info[1]}"
+    fw = app / "Frameworks" / "Python.framework" / "Versions" / ver
+    py = _touch(fw / "bin" / f"python{ver}")
+    _fake_interpreter(monkeypatch, executable=qgis, prefix=fw, platform="darwin")
+    assert system.python_executable(verify=False) == py
+    os.remove(py)                          # the official bundle: Contents/MacOS/bin/python3
+    py2 = _touch(app / "MacOS" / "bin" / "python3")
+    assert system.python_executable(verify=False) == py2
+
+
+def test_embedded_linux_qgis_finds_the_system_interpreter(monkeypatch):
+    """qgis_process.bin embeds /usr/bin/python3.X: the real one runs and answers."""
+    real = os.path.join(sys.base_exec_prefix, "bin",
+                        f"python{sys.version_info[0]}.{sys.version_info[1]}")
+    if not os.path.exists(real):
+        pytest.skip(f"{real} not present")
+    monkeypatch.setattr(sys, "executable", "/usr/bin/qgis_process.bin")
+    for name in ("exec_prefix", "prefix"):
+        monkeypatch.setattr(sys, name, sys.base_exec_prefix)
+    assert system.python_executable() == real
+
+
+def test_a_python_of_another_version_is_refused(tmp_path, monkeypatch):
+    other = _touch(tmp_path / "bin" / "python3", "#!/bin/sh\necho '(2, 7)'\n")
+    _fake_interpreter(monkeypatch, executable=tmp_path / "qgis", prefix=tmp_path,
+                      platform="linux")
+    assert system.python_executable(verify=False) == other
+    assert system.python_executable() is None
+
+
+def test_memory_figures_are_positive_and_consistent():
+    mem = system.available_memory()
+    assert 64 << 20 < mem < 1 << 50
+    peak = system.peak_rss_mb()
+    assert 10 < peak < mem / 1048576.0 * 4
+
+
+def test_memory_fallback_without_psutil(monkeypatch):
+    monkeypatch.setattr(system, "_psutil", lambda: None)
+    mem = system.available_memory()
+    assert mem > 64 << 20
+    monkeypatch.setattr(sys, "platform", "win32")          # no windll here: 4 GiB
+    assert system.available_memory() == system.FALLBACK_MEMORY
+
+
+def test_blas_threads_limited_inside_and_restored_after(monkeypatch):
+    np.linalg.solve(np.eye(2), np.ones(2))
+    monkeypatch.setitem(sys.modules, "threadpoolctl", None)   # the fallback path
+    monkeypatch.setattr(system, "_SETTERS", None)
+    setters = system._loaded_openblas()
+    if not setters:
+        pytest.skip("no OpenBLAS loaded in this process")
+    before = [get() for get, _ in setters]
+    with system.limit_blas_threads(1):
+        assert [get() for get, _ in setters] == [1] * len(setters)
+        assert np.allclose(np.linalg.solve(np.eye(3) * 4, np.ones(3)), 0.25)
+    assert [get() for get, _ in setters] == before
+
+
+def test_worker_environment_is_a_copy_with_the_plugin_paths(monkeypatch, tmp_path):
+    monkeypatch.setattr(_workers, "WORKER_PATHS", [str(tmp_path / "packages")])
+    monkeypatch.setattr(_workers, "_package_parent", lambda: str(tmp_path / "plugins"))
+    before = dict(os.environ)
+    env = _workers.worker_environment({"PYTHONPATH": "/x", "PATH": "/bin"},
+                                      config={"distributed.admin.tick.interval": "1s"})
+    assert dict(os.environ) == before
+    assert env["PYTHONPATH"].split(os.pathsep) == [str(tmp_path / "plugins"),
+                                                   str(tmp_path / "packages"), "/x"]
+    assert env["OMP_NUM_THREADS"] == "1" and env["RAYON_NUM_THREADS"] == "1"
+    import dask
+    cfg = dask.config.deserialize(env["DASK_INTERNAL_INHERIT_CONFIG"])
+    assert cfg == {"distributed.admin.tick.interval": "1s"}
+
+
+def test_local_workers_leave_interpreter_state_alone(monkeypatch):
+    """Workers start from the real interpreter; set_executable and os.environ untouched."""
+    pytest.importorskip("distributed")
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("multiprocessing.set_executable called")
+
+    monkeypatch.setattr(multiprocessing, "set_executable", refuse)
+    env_before = dict(os.environ)
+    workers = _workers.start_local_workers(2, memory_limit=None)
+    try:
+        from distributed import Client
+        with Client(workers.cluster, timeout="30s") as client:
+            info = client.run(lambda: (os.environ.get("OMP_NUM_THREADS"),
+                                       __import__("sys").executable))
+            assert len(info) == 2
+            for omp, exe in info.values():
+                assert omp == "1" and os.path.basename(exe).startswith("python")
+            assert client.submit(lambda: 6 * 7).result(timeout=60) == 42
+    finally:
+        workers.close()
+    assert workers.process.poll() is not None
+    assert dict(os.environ) == env_before

@@ -1,0 +1,163 @@
+"""The plugin loads where QGIS runs: Windows and macOS (simulated), and without its packages.
+
+A fresh interpreter imports QGIS, then makes the POSIX-only modules (``resource``,
+``fcntl``, ``pwd``, ``grp``, ``termios``) unimportable, every ``/proc`` path unreadable
+and ``sys.platform`` report ``win32`` (or ``darwin``) before it imports every module of
+the plugin, starts it as QGIS does (``classFactory`` → ``initProcessing``) and lists the
+algorithms of the provider; the platform helpers the QGIS process calls must answer.
+The same harness with laspy, lazrs, pykrige, dask and distributed unimportable shows
+that the plugin loads with no error when every runtime package is missing.
+"""
+from __future__ import annotations
+
+import json
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+POSIX_ONLY = ("resource", "fcntl", "pwd", "grp", "termios")
+RUNTIME = ("laspy", "lazrs", "pykrige", "dask", "distributed", "psutil", "threadpoolctl")
+
+HARNESS = r"""
+import builtins, importlib, importlib.abc, importlib.util, io, json, os, pkgutil, sys
+os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+from qgis.core import QgsApplication
+sys.path.append("/usr/share/qgis/python/plugins")
+app = QgsApplication([], False)
+app.initQgis()
+from processing.core.Processing import Processing
+Processing.initialize()
+
+ROOT, BLOCKED, PLATFORM = sys.argv[1], set(sys.argv[2].split(",")), sys.argv[3]
+denied = []
+
+class Block(importlib.abc.MetaPathFinder):
+    def find_spec(self, name, path=None, target=None):
+        if name.split(".")[0] in BLOCKED:
+            raise ModuleNotFoundError(f"No module named {name!r} (blocked)", name=name)
+        return None
+
+for mod in [m for m in sys.modules if m.split(".")[0] in BLOCKED]:
+    del sys.modules[mod]
+sys.meta_path.insert(0, Block())
+
+def _is_proc(path):
+    try:
+        p = os.fsdecode(os.fspath(path))
+    except TypeError:
+        return False
+    return p == "/proc" or p.startswith("/proc/")
+
+def _guard(func, exc=PermissionError):
+    def wrapper(path, *args, **kwargs):
+        if _is_proc(path):
+            denied.append(os.fsdecode(os.fspath(path)))
+            raise exc(13, "Permission denied (simulated)", os.fsdecode(os.fspath(path)))
+        return func(path, *args, **kwargs)
+    return wrapper
+
+builtins.open = io.open = _guard(io.open)
+for name in ("open", "stat", "lstat", "listdir", "scandir", "access"):
+    setattr(os, name, _guard(getattr(os, name)))
+
+# the standard library of the real platform: modules that choose their implementation
+# when imported are imported before sys.platform changes (only the plugin's code and
+# what it imports later see the simulated platform)
+for mod in ("asyncio", "concurrent.futures", "ctypes", "ctypes.util", "email", "glob",
+            "http.client", "locale", "mimetypes", "multiprocessing", "platform", "shutil",
+            "socket", "ssl", "subprocess", "sysconfig", "tempfile", "urllib.request",
+            "uuid", "webbrowser", "xml.sax.saxutils", "zipfile"):
+    importlib.import_module(mod)
+if PLATFORM:
+    sys.platform = PLATFORM
+
+spec = importlib.util.spec_from_file_location(
+    "geomatics_toolbox", os.path.join(ROOT, "__init__.py"), submodule_search_locations=[ROOT])
+pkg = importlib.util.module_from_spec(spec)
+sys.modules["geomatics_toolbox"] = pkg
+spec.loader.exec_module(pkg)
+errors, modules = [], []
+for sub in ("core", "algorithms", "provider"):
+    base = importlib.import_module("geomatics_toolbox." + sub)
+    for info in pkgutil.walk_packages(base.__path__, "geomatics_toolbox." + sub + "."):
+        try:
+            importlib.import_module(info.name)
+            modules.append(info.name)
+        except Exception as exc:
+            errors.append(f"{info.name}: {type(exc).__name__}: {exc}")
+
+plugin = pkg.classFactory(None)
+plugin.initProcessing()
+provider = QgsApplication.processingRegistry().providerById("geomatics")
+algs = sorted(a.id() for a in provider.algorithms()) if provider else []
+
+from geomatics_toolbox.core import system
+from geomatics_toolbox.core.terrain import grid, kriging
+import numpy as np
+facts = {"memory": system.available_memory(), "peak": system.peak_rss_mb(),
+         "candidates": system.interpreter_candidates(),
+         "budget_ok": grid.check_memory(grid.GridSpec(xmin=0, ymax=10, cell=1, ncols=10,
+                                                      nrows=10)) == 1600}
+with kriging.single_threaded_blas():
+    facts["solve"] = float(np.linalg.solve(np.eye(3) * 2, np.ones(3)).sum())
+plugin.unload()
+leaked = sorted(m for m in sys.modules if m.split(".")[0] in BLOCKED)
+print("RESULT:" + json.dumps(dict(algs=algs, errors=errors, modules=len(modules),
+                                  denied=denied, facts=facts, leaked=leaked)))
+"""
+
+
+def _run(blocked, platform: str) -> dict:
+    out = subprocess.run([sys.executable, "-c", HARNESS, str(ROOT), ",".join(blocked),
+                          platform], capture_output=True, text=True, timeout=600)
+    lines = [ln for ln in out.stdout.splitlines() if ln.startswith("RESULT:")]
+    assert out.returncode == 0 and lines, f"{out.stdout}\n{out.stderr}"
+    return json.loads(lines[-1][len("RESULT:"):])
+
+
+@pytest.fixture(scope="module")
+def expected_ids(qgis_app):
+    from qgis.core import QgsApplication
+    provider = QgsApplication.processingRegistry().providerById("geomatics")
+    ids = sorted(a.id() for a in provider.algorithms())
+    assert len(ids) >= 20 and "geomatics:catalog" in ids and "geomatics:groundfilter" in ids
+    return ids
+
+
+@pytest.mark.parametrize("platform", ["win32", "darwin"])
+def test_plugin_loads_without_posix_modules_or_proc(expected_ids, platform):
+    res = _run(POSIX_ONLY, platform)
+    assert res["errors"] == []
+    assert res["modules"] >= 60
+    assert res["algs"] == expected_ids
+    assert res["leaked"] == []
+    facts = res["facts"]
+    assert facts["memory"] > 0 and facts["budget_ok"] and facts["solve"] == 1.5
+    assert facts["candidates"], "no interpreter candidate"
+    if platform == "win32":
+        assert any(c.endswith("python.exe") for c in facts["candidates"])
+
+
+def test_plugin_loads_with_every_runtime_package_missing(expected_ids):
+    res = _run(RUNTIME + POSIX_ONLY, "win32")
+    assert res["errors"] == []
+    assert res["algs"] == expected_ids
+    assert res["leaked"] == []
+
+
+def test_no_posix_only_import_or_proc_path_in_the_qgis_process():
+    """The same grep as the release check: module-level POSIX imports, literal /proc."""
+    bad = []
+    files = [ROOT / "plugin.py", ROOT / "__init__.py"]
+    for sub in ("core", "algorithms", "provider"):
+        files += sorted((ROOT / sub).rglob("*.py"))
+    for path in files:
+        for n, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+            if re.match(r"^(import|from) (resource|fcntl|pwd|grp|termios)\b", line) \
+                    or '"/proc/' in line or "'/proc/" in line:
+                bad.append(f"{path.relative_to(ROOT)}:{n}: {line.strip()}")
+    assert bad == []
