@@ -254,6 +254,25 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
         return {"progress": lambda f: feedback.setProgress(100.0 * f),
                 "cancel": feedback.isCanceled}
 
+    def log_units(self, feedback, units) -> None:
+        """Log the data's linear units when they are not metres (DEVELOPERS.md, Units).
+
+        Every length parameter is in metres; data in feet are converted, and the log
+        says so once, in the interface language.
+        """
+        if feedback is None or units is None or units.metric:
+            return
+        from ..core.io.units import unit_label
+        try:
+            lang = user_locale()
+        except Exception:  # noqa: BLE001 - cosmetic
+            lang = "en"
+        feedback.pushInfo(self.tr(
+            "The data are in {} horizontally and {} vertically; they are converted to "
+            "metres, so every length you give and every length in this log is in "
+            "metres.").format(unit_label(units.horizontal, lang),
+                              unit_label(units.vertical, lang)))
+
     # ---------------------------------------------------------------- reports
     REPORT_LANGUAGE = "REPORT_LANGUAGE"
     #: REPORT_LANGUAGE options: index -> language code ('' = the QGIS interface language)

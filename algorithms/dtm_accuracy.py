@@ -23,7 +23,8 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.io.points import read_checkpoints_csv, write_points_layer
-from ..core.io.raster import read_raster
+from ..core.io.raster import raster_extent, read_raster
+from ..core.io.units import raster_units
 from ..core.progress import Cancelled
 from ..core.reporting import translator
 from ..core.terrain import accuracy as core_acc
@@ -255,10 +256,17 @@ class DtmAccuracyAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
             dtm_crs = layer.crs()
             feedback.setProgress(20)
             ids, x, y, z = self.read_points(parameters, context, dtm_crs, feedback)
-            core_acc.check_duplicates(ids, x, y)
+            core_acc.check_points_not_degrees(
+                x, y, raster_extent(r), crs_label=dtm_crs.authid() or dtm_crs.description())
+            # Heights in metres (DEVELOPERS.md, Units): a DTM in feet, check points in
+            # the DTM's units, errors reported in metres.
+            units = raster_units(layer.source(), band)
+            self.log_units(feedback, units)
+            core_acc.check_duplicates(ids, x, y, tolerance=0.001 / units.h)
             if feedback.isCanceled():
                 raise Cancelled("cancelled by the user")
-            res = core_acc.dtm_accuracy(r.masked(), r.geotransform, x, y, z, method=method)
+            res = core_acc.dtm_accuracy(r.masked() * units.v, r.geotransform, x, y,
+                                        z * units.v, method=method)
             feedback.setProgress(50)
             summary = res.summary()
             results = {name: summary[key] for name, key, _ in NUMBERS}
@@ -273,10 +281,10 @@ class DtmAccuracyAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
                 raise Cancelled("cancelled by the user")
             if out.requested(self.OUTPUT_HTML):
                 rep = terrain_report.accuracy_report(
-                    res, ids, r.masked(), r.geotransform,
+                    res, ids, r.masked() * units.v, r.geotransform,
                     dtm_name=os.path.basename(layer.source()),
                     crs_label=dtm_crs.authid() or dtm_crs.description() or "unknown",
-                    tr=translator(self.report_lang(parameters, context)))
+                    tr=translator(self.report_lang(parameters, context)), units=units)
                 out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters, context))
                 results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         feedback.setProgress(100)

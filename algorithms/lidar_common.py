@@ -1,6 +1,7 @@
 """Plumbing shared by the LiDAR ground-filter algorithms (over core.lidar.pipeline)."""
 from __future__ import annotations
 
+from ..core.io.las import las_info
 from ..core.lidar.pipeline import FilterOutputs, classify_file
 from ..core.progress import Monitor
 from .base import GeomaticsAlgorithm
@@ -42,6 +43,7 @@ class LidarFilterMixin(GeomaticsAlgorithm):
         """Run ``algorithm`` on ``src`` through the pipeline, log the counts, load the
         classified cloud into the project on completion; the output numbers and paths
         (N_NOISE: every class-7 point of the output)."""
+        self.log_units(feedback, las_info(src).units)
         s = classify_file(src, algorithm, outputs, Monitor(**self.core_callbacks(feedback)),
                           selection=selection)
         filt = s.seconds.get("filter") or 0.0

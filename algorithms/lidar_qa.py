@@ -95,6 +95,10 @@ class LidarQaAlgorithm(GeomaticsAlgorithm):
         with self.output_contract(parameters, context, [self.OUTPUT, self.OUTPUT_HTML],
                                   inputs={self.INPUT: path}) as out:
             pts = read_las(path, dims, **cb)
+            # Densities per m² and cells in metres (DEVELOPERS.md, Units).
+            units = info.units
+            self.log_units(feedback, units)
+            pts.x, pts.y, pts.z = units.xyz_to_metres(pts.x, pts.y, pts.z)
             sa = pts[angle] if angle else None
             if angle == "scan_angle":
                 sa = sa * 0.006  # LAS 1.4: 0.006° per unit
@@ -103,13 +107,15 @@ class LidarQaAlgorithm(GeomaticsAlgorithm):
                                    scan_angle=sa, cell_size=cell, crs=info.crs,
                                    ground_classes=ground)
             g = res.grid
-            write_geotiff(out.path(self.OUTPUT), res.density_all, geotransform=g.geotransform,
+            write_geotiff(out.path(self.OUTPUT), res.density_all,
+                          geotransform=tuple(v / units.h for v in g.geotransform),
                           crs=g.crs, bands=[res.density_last, res.density_ground,
                                             res.gaps.astype(float)],
                           band_names=BANDS, metadata={"source": os.path.basename(path)})
             if out.requested(self.OUTPUT_HTML):
                 out.write_text(self.OUTPUT_HTML, self.render_report(
-                    core_qa.qa_report(res, os.path.basename(path)), parameters, context))
+                    core_qa.qa_report(res, os.path.basename(path), units=units), parameters,
+                    context))
         a = res.advice
         results = {self.OUTPUT: out.final(self.OUTPUT), "DENSITY": res.density,
                    "GROUND_DENSITY": res.ground_density, "GAP_SHARE": res.gap_share,

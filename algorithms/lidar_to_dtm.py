@@ -34,6 +34,7 @@ from ..core.errors import InputError
 from ..core.io.las import las_info
 from ..core.io.points import read_class_points, write_grid
 from ..core.io.raster import read_raster
+from ..core.io.units import crs_units
 from ..core.lidar import lsq as core_lsq
 from ..core.lidar.pipeline import FilterOutputs, SelectionOptions, classify_file
 from ..core.progress import Monitor
@@ -199,7 +200,9 @@ class LidarToDtmAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
             if not qcrs.isValid():
                 qcrs = QgsCoordinateReferenceSystem.fromWkt(crs)
             ids, x, y, z = self.read_points(parameters, context, qcrs, feedback)
-            core_acc.check_duplicates(ids, x, y)
+            self.units = info.units if info.crs else crs_units(crs)
+            self.log_units(feedback, self.units)
+            core_acc.check_duplicates(ids, x, y, tolerance=0.001 / self.units.h)
             self.check_extent(info, ids, x, y)
             # 2. ground filter (writes the classified cloud to its contract temporary)
             run = self.classify(parameters, context, src, out, lang, mon.sub(0.0, 0.7))
@@ -242,7 +245,8 @@ class LidarToDtmAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
         k = self.parameterAsInt(parameters, self.NEIGHBOURS, context)
         fill = self.parameterAsBool(parameters, self.FILL_GAPS, context)
         cloud = out.path(self.OUTPUT)
-        pts = read_class_points(cloud, (2,), cancel=mon.cancelled)
+        pts = read_class_points(cloud, (2,), cancel=mon.cancelled, metres=True)
+        pts.units = self.units
         if len(pts) == 0:
             raise InputError(self.tr("The ground filter found no ground point; no DTM can "
                                      "be interpolated. No output was written."))
@@ -253,7 +257,7 @@ class LidarToDtmAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
         name = os.path.basename(out.final(self.OUTPUT))
         write_grid(out.path(self.OUTPUT_DTM), dtm, grid,
                    metadata={"method": f"IDW p={power:g} k={k} radius=0 min_points=0",
-                             "source": name}, band_name="DTM (IDW)")
+                             "source": name}, band_name="DTM (IDW)", units=self.units)
         if out.requested(self.OUTPUT_DTM_HTML):
             method = [("method", T("inverse distance weighting (Shepard 1968)")),
                       ("power", power), ("neighbours", k),
@@ -272,16 +276,18 @@ class LidarToDtmAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
         ids, x, y, z = points
         method = core_acc.METHODS[self.parameterAsEnum(parameters, self.METHOD, context)]
         r = read_raster(out.path(self.OUTPUT_DTM), 1)
-        res = core_acc.dtm_accuracy(r.masked(), r.geotransform, x, y, z, method=method)
+        v = self.units.v     # heights in metres (DEVELOPERS.md, Units)
+        res = core_acc.dtm_accuracy(r.masked() * v, r.geotransform, x, y, z * v,
+                                    method=method)
         summary = res.summary()
         if out.requested(self.OUTPUT_RESIDUALS):
             DtmAccuracyAlgorithm.write_residuals(out.path(self.OUTPUT_RESIDUALS), res, ids,
                                                  qcrs)
         if out.requested(self.OUTPUT_HTML):
             rep = terrain_report.accuracy_report(
-                res, ids, r.masked(), r.geotransform,
+                res, ids, r.masked() * v, r.geotransform,
                 dtm_name=os.path.basename(out.final(self.OUTPUT_DTM)),
                 crs_label=qcrs.authid() or qcrs.description() or "unknown",
-                tr=translator(lang))
+                tr=translator(lang), units=self.units)
             out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters, context))
         return {name: summary[key] for name, key, _ in NUMBERS}

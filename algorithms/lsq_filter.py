@@ -8,6 +8,7 @@ from qgis.core import (
 )
 
 from ..core.errors import InputError
+from ..core.io.las import las_info
 from ..core.lidar import lsq as core_lsq
 from ..core.lidar.pipeline import SelectionOptions, classify_file
 from ..core.progress import Monitor
@@ -184,6 +185,7 @@ class LsqGroundFilterAlgorithm(LidarFilterMixin):
             raise InputError(self.tr("Choose an output file for the classified cloud "
                                      "(OUTPUT, .laz or .las)."))
         feedback.pushInfo(self.tr("Reading {p}").format(p=src))
+        self.log_units(feedback, las_info(src).units)
         run = classify_file(src, core_lsq.LsqFilter(opts), outputs,
                             Monitor(**self.core_callbacks(feedback)), selection=selection)
         res = run.outcome.details

@@ -26,9 +26,11 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.coords import check_projected
+from ..core.errors import InputError
 from ..core.io.las import iter_las_chunks, las_info
 from ..core.io.points import parse_classes, read_class_points, write_grid
 from ..core.io.raster import read_raster
+from ..core.io.units import Units, crs_units, units_note
 from ..core.reporting import T, translator
 from ..core.terrain import dsm as core_dsm
 from ..core.terrain import idw as core_idw
@@ -87,6 +89,13 @@ def _crs_string(crs: QgsCoordinateReferenceSystem) -> str:
     if authid and authid.upper().startswith("EPSG:"):
         return authid
     return crs.toWkt(QgsCoordinateReferenceSystem.WKT_PREFERRED_GDAL)
+
+
+def las_units_for(info, crs: str, crs_source: str) -> Units:
+    """Units of a cloud: its header's, or those of the CRS the user gave instead."""
+    if crs_source == "LAS file" or not crs:
+        return info.units
+    return crs_units(crs)
 
 
 def _qgs_crs(text: str) -> QgsCoordinateReferenceSystem:
@@ -217,8 +226,16 @@ class _GridAlgorithm(GeomaticsAlgorithm):
         cb = self.core_callbacks(feedback)
         feedback.pushInfo(self.tr("Reading points of class(es) {} from {}").format(
             ", ".join(map(str, classes)) or "all", path))
+        units = las_units_for(info, crs, crs_source)
+        self.log_units(feedback, units)
         pts = read_class_points(path, classes, extent=box, progress=None, cancel=cb["cancel"])
         check_projected(pts.x, pts.y, pts.z, crs=crs)
+        # Lengths are metres (DEVELOPERS.md, Units): grid in metres, written back in
+        # the data's units by write_grid(..., units=pts.units).
+        pts.units = units
+        pts.x, pts.y, pts.z = units.xyz_to_metres(pts.x, pts.y, pts.z)
+        if box is not None:
+            box = tuple(v * units.h for v in box)
         feedback.pushInfo(self.tr("{} of {} points selected").format(len(pts), pts.n_total))
         grid = grid_from_points(pts.x, pts.y, cell, extent=box, crs=crs)
         return path, pts, grid, crs_source
@@ -230,6 +247,17 @@ class _GridAlgorithm(GeomaticsAlgorithm):
         for name in rasters:
             _check_tif(out.final(name))
         return out
+
+    @staticmethod
+    def refuse_empty_grid(stats: dict, n_points: int, path: str) -> None:
+        """Refuse a DTM with no valid cell (degenerate or too few points): no output."""
+        if stats["valid_cells"] == 0:
+            raise InputError(
+                "The DTM from {n} point(s) of {path} has no cell with a value: the points "
+                "are too few, too far apart or nearly on one line for this method and "
+                "cell size. Use more ground points (a ground filter first), a larger "
+                "maximum edge / distance, or fill the gaps. No output was written.",
+                n=n_points, path=path)
 
     @staticmethod
     def grid_stats(arr) -> dict:
@@ -245,7 +273,9 @@ class _GridAlgorithm(GeomaticsAlgorithm):
         return [("input", os.path.basename(path)), ("points in file", pts.n_total),
                 ("classes present (class: count)", classes), ("points used", len(pts)),
                 ("classes used", ", ".join(map(str, pts.classes)) or T("all")),
-                ("CRS source", T(crs_source))]
+                ("CRS source", T(crs_source))] + (
+                    [("Linear units", units_note(pts.units))]
+                    if units_note(pts.units) is not None else [])
 
 
 class IdwDtmAlgorithm(_GridAlgorithm):
@@ -320,8 +350,10 @@ class IdwDtmAlgorithm(_GridAlgorithm):
                                     max_distance=maxd, fill=fill, **cb)
             meta = {"method": f"IDW p={power:g} k={k} radius={radius:g} min_points={minp}",
                     "source": os.path.basename(path)}
-            write_grid(out.path(self.OUTPUT), dtm, grid, metadata=meta, band_name="DTM (IDW)")
             stats = self.grid_stats(dtm)
+            self.refuse_empty_grid(stats, len(pts), path)
+            write_grid(out.path(self.OUTPUT), dtm, grid, metadata=meta, band_name="DTM (IDW)",
+                       units=pts.units)
             results = {self.OUTPUT: out.final(self.OUTPUT), "N_POINTS": len(pts),
                        "VALID_CELLS": stats["valid_cells"],
                        "NODATA_CELLS": stats["nodata_cells"]}
@@ -517,13 +549,14 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
                                            core_kriging.describe_variogram(v)),
                     "source": os.path.basename(path)}
             write_grid(out.path(self.OUTPUT), res.z, grid, metadata=meta,
-                       band_name="DTM (kriging)")
+                       band_name="DTM (kriging)", units=pts.units)
             results = {self.OUTPUT: out.final(self.OUTPUT)}
             if out.requested(self.OUTPUT_VARIANCE):
                 data = res.std if as_std else res.variance
                 write_grid(out.path(self.OUTPUT_VARIANCE), data, grid, metadata=meta,
-                           band_name="kriging standard deviation (m)" if as_std
-                           else "kriging variance (m²)")
+                           band_name="kriging standard deviation" if as_std
+                           else "kriging variance", units=pts.units,
+                           quantity="height" if as_std else "height2")
                 results[self.OUTPUT_VARIANCE] = out.final(self.OUTPUT_VARIANCE)
             stats = self.grid_stats(res.z)
             cv = res.cross_validation or {}
@@ -646,7 +679,8 @@ class DsmAlgorithm(_GridAlgorithm):
                 "IDW DTM algorithm). No output was written."))
         crs, crs_source = self.resolve_crs(parameters, context, info.crs)
         self.check_cloud_projected(info, crs)
-        cell = self.cell_size(parameters, context)
+        # The DSM grid is in the cloud's own units: the cell size (m) is converted.
+        cell = self.cell_size(parameters, context) / las_units_for(info, crs, crs_source).h
         box = self.extent_box(parameters, context, crs)
         if box is None:
             box = (info.mins[0], info.maxs[0], info.mins[1], info.maxs[1])
@@ -667,6 +701,9 @@ class DsmAlgorithm(_GridAlgorithm):
             info = las_info(path)
             grid, dtm, crs_source = self.target_grid(parameters, context, info, dtm_layer,
                                                      out.requested(self.OUTPUT_NDSM))
+            units = las_units_for(info, grid.crs, crs_source)
+            self.log_units(feedback, units)
+            fill_d = fill_d / units.h
             dims = ["classification"] + (["return_number"] if first else [])
             cb = self.core_callbacks(feedback)
 
@@ -684,7 +721,8 @@ class DsmAlgorithm(_GridAlgorithm):
                                             fill_distance=fill_d, **cb)
             meta = {"method": f"highest {'first ' if first else ''}return per cell",
                     "source": os.path.basename(path)}
-            write_grid(out.path(self.OUTPUT), surf, grid, metadata=meta, band_name="DSM")
+            write_grid(out.path(self.OUTPUT), surf, grid, metadata=meta, band_name="DSM",
+                       units=units, in_data_units=True)
             stats = self.grid_stats(surf)
             results = {self.OUTPUT: out.final(self.OUTPUT), "VALID_CELLS": stats["valid_cells"],
                        "NDSM_MAX": float("nan")}
@@ -692,7 +730,7 @@ class DsmAlgorithm(_GridAlgorithm):
             if dtm is not None and out.requested(self.OUTPUT_NDSM):
                 nd = core_dsm.ndsm(surf, dtm, clamp_negative=clamp)
                 write_grid(out.path(self.OUTPUT_NDSM), nd, grid, metadata=meta,
-                           band_name="nDSM")
+                           band_name="nDSM", units=units, in_data_units=True)
                 results[self.OUTPUT_NDSM] = out.final(self.OUTPUT_NDSM)
                 results["NDSM_MAX"] = self.grid_stats(nd)["max"]
             if out.requested(self.OUTPUT_HTML):

@@ -81,12 +81,14 @@ class TinDtmAlgorithm(_GridAlgorithm):
             meta = {"method": "TIN linear (Delaunay) "
                     + ("gaps filled" if fill else f"max edge {res.max_edge:g} m"),
                     "source": os.path.basename(path)}
-            write_grid(out.path(self.OUTPUT), res.z, grid, metadata=meta,
-                       band_name="DTM (TIN)")
             stats = self.grid_stats(res.z)
+            self.refuse_empty_grid(stats, res.n_points, path)
+            write_grid(out.path(self.OUTPUT), res.z, grid, metadata=meta,
+                       band_name="DTM (TIN)", units=pts.units)
             if out.requested(self.OUTPUT_HTML):
                 out.write_text(self.OUTPUT_HTML, self.render_report(
-                    tin_report(res, os.path.basename(path), pts.n_total, grid), parameters,
+                    tin_report(res, os.path.basename(path), pts.n_total, grid,
+                               units=pts.units), parameters,
                     context))
         results = {self.OUTPUT: out.final(self.OUTPUT), "N_POINTS": res.n_points,
                    "N_TRIANGLES": res.n_triangles, "VALID_CELLS": stats["valid_cells"],

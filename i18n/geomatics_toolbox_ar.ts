@@ -1175,6 +1175,10 @@
             <source>Could not style the layer {name}: {error}</source>
             <translation>تعذّر تطبيق النمط على الطبقة {name}: {error}</translation>
         </message>
+        <message>
+            <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
+            <translation>البيانات بوحدة {} أفقياً و{} رأسياً؛ تُحوَّل إلى الأمتار، لذا فكل طول تُدخله وكل طول في هذا السجل بالأمتار.</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>

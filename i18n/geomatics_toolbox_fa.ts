@@ -1175,6 +1175,10 @@
             <source>Could not style the layer {name}: {error}</source>
             <translation>سبک‌دهی لایهٔ {name} ممکن نشد: {error}</translation>
         </message>
+        <message>
+            <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
+            <translation>داده‌ها در افق بر حسب {} و در ارتفاع بر حسب {} هستند؛ به متر تبدیل می‌شوند، پس هر طولی که می‌دهید و هر طول در این گزارش کار به متر است.</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>

@@ -19,6 +19,7 @@ from ..errors import InputError
 from ..progress import Monitor
 from .las import LasInfo, iter_las_chunks, las_info
 from .raster import write_geotiff
+from .units import METRIC, Units
 
 
 def parse_classes(text, *, name: str = "class filter",
@@ -93,6 +94,9 @@ class ClassPoints:
     classes: Tuple[int, ...]
     n_total: int
     class_counts: dict
+    #: Units of the file; with ``read_class_points(..., metres=True)`` x, y, z are
+    #: already converted to metres by them.
+    units: Units = METRIC
 
     def __len__(self) -> int:
         """Return the number of points."""
@@ -101,13 +105,16 @@ class ClassPoints:
 
 def read_class_points(path, classes: Sequence[int] = (2,), *,
                       extent: Optional[Sequence[float]] = None,
-                      progress=None, cancel=None) -> ClassPoints:
+                      progress=None, cancel=None, metres: bool = False) -> ClassPoints:
     """Read only the points of ``classes`` (all if empty) from a LAS/LAZ file, in chunks.
 
     Parameters
     ----------
     extent : (xmin, xmax, ymin, ymax), optional
-        Keep only points inside this box.
+        Keep only points inside this box (in the file's CRS units).
+    metres : bool, default False
+        Return x, y, z converted to metres (:attr:`ClassPoints.units` says from what;
+        DEVELOPERS.md, Units).
 
     Raises
     ------
@@ -144,8 +151,10 @@ def read_class_points(path, classes: Sequence[int] = (2,), *,
             f"{', '.join(map(str, classes)) or 'any'}{where}. Classes present (class: "
             f"count): {present or 'none'}. Run a ground filter first or change the class "
             "filter.")
-    return ClassPoints(x, np.concatenate(ys), np.concatenate(zs), info, classes,
-                       int(info.count), present)
+    y, z = np.concatenate(ys), np.concatenate(zs)
+    if metres:
+        x, y, z = info.units.xyz_to_metres(x, y, z)
+    return ClassPoints(x, y, z, info, classes, int(info.count), present, info.units)
 
 
 _X_NAMES = ("x", "east", "easting", "e", "lon", "longitude")
@@ -252,11 +261,38 @@ def _xyz_columns(path: str, header, rows, fields) -> tuple:
 
 
 def write_grid(path, data: np.ndarray, grid, *, metadata=None,
-               band_name: Optional[str] = None) -> str:
-    """Write a grid-shaped array (NaN = nodata) as a GeoTIFF with the grid's CRS."""
-    return write_geotiff(path, data, geotransform=grid.geotransform, crs=grid.crs,
+               band_name: Optional[str] = None, units: Optional[Units] = None,
+               quantity: str = "height", in_data_units: bool = False) -> str:
+    """Write a grid-shaped array (NaN = nodata) as a GeoTIFF with the grid's CRS.
+
+    Parameters
+    ----------
+    units : Units, optional
+        Units of the data the grid was computed from. The grid and the values are in
+        metres (DEVELOPERS.md, Units); with non-metric ``units`` the raster is written
+        in the data's own units: geotransform divided by ``units.h``, values by
+        ``units.v`` (``quantity='height'``), ``units.v²`` (``'height2'``, a variance)
+        or left as they are (``'other'``: densities, counts, flags). The band unit type
+        names the unit of heights.
+    in_data_units : bool
+        The grid and values are already in the data's units (only the band unit type
+        is written).
+    """
+    gt = grid.geotransform
+    unit_type = None
+    if units is not None and quantity in ("height", "height2"):
+        unit_type = units.vertical.symbol + ("²" if quantity == "height2" else "")
+    if units is not None and not units.metric and not in_data_units:
+        gt = tuple(v / units.h for v in gt)
+        data = np.asarray(data, dtype=np.float64)
+        if quantity == "height":
+            data = data / units.v
+        elif quantity == "height2":
+            data = data / units.v ** 2
+    return write_geotiff(path, data, geotransform=gt, crs=grid.crs,
                          nodata=grid.nodata, metadata=metadata,
-                         band_names=[band_name] if band_name else None)
+                         band_names=[band_name] if band_name else None,
+                         unit_type=unit_type)
 
 
 #: Vector formats the point writer supports (extension -> OGR driver).

@@ -54,7 +54,8 @@ def write_geotiff(path, data, *, geotransform: Sequence[float], crs: Optional[st
                   bands: Optional[Sequence[np.ndarray]] = None,
                   band_names: Optional[Sequence[str]] = None,
                   creation_options: Sequence[str] = CREATION_OPTIONS,
-                  metadata: Optional[dict] = None) -> str:
+                  metadata: Optional[dict] = None,
+                  unit_type: Optional[str] = None) -> str:
     """Write a tiled, compressed GeoTIFF atomically (temporary name, then rename).
 
     Parameters
@@ -73,6 +74,9 @@ def write_geotiff(path, data, *, geotransform: Sequence[float], crs: Optional[st
         Extra bands (same shape) after ``data``.
     band_names : sequence of str, optional
         Band descriptions.
+    unit_type : str, optional
+        Unit of the values of every band (GDAL ``SetUnitType``), e.g. ``'ftUS'`` for
+        heights in US survey feet (:func:`~.units.raster_units` reads it back).
     """
     gdal = _gdal()
     arrays = [np.asarray(data)] + [np.asarray(b) for b in (bands or [])]
@@ -111,12 +115,22 @@ def write_geotiff(path, data, *, geotransform: Sequence[float], crs: Optional[st
                     if np.issubdtype(arr.dtype, np.floating):
                         out = np.where(np.isfinite(arr), arr, nodata)
                 band.WriteArray(out.astype(np.dtype(dtype), copy=False))
+                if unit_type:
+                    band.SetUnitType(str(unit_type))
                 if band_names and i <= len(band_names):
                     band.SetDescription(str(band_names[i - 1]))
             ds.FlushCache()
         finally:
             ds = None
     return os.fspath(path)
+
+
+def raster_extent(r: Raster) -> Tuple[float, float, float, float]:
+    """``(xmin, xmax, ymin, ymax)`` of a north-up :class:`Raster`."""
+    x0, dx, _, y0, _, dy = r.geotransform
+    rows, cols = r.shape
+    xs, ys = (x0, x0 + cols * dx), (y0, y0 + rows * dy)
+    return (min(xs), max(xs), min(ys), max(ys))
 
 
 def _open_band(path, band: int):

@@ -358,3 +358,27 @@ def unit_name(unit: LinearUnit, lang="en") -> str:
 def unit_label(unit: LinearUnit, lang="en") -> str:
     """Return ``'US survey foot (ftUS)'`` in ``lang`` (the symbol stays Latin)."""
     return f"{unit_name(unit, lang)} ({unit.symbol})"
+
+
+def units_note(units: Units):
+    """Report value saying the data's units and that lengths were converted (a ``T``).
+
+    ``None`` for metric data (nothing to say). Rows use the label ``'Linear units'``.
+    """
+    from ..reporting.content import T
+    if units.metric:
+        return None
+    return T("{h} ({hs}) horizontally, {v} ({vs}) vertically; converted to metres for "
+             "the computation: lengths in this report are in metres unless a unit says "
+             "otherwise.", h=T(_NAMES.get(units.horizontal.name, units.horizontal.name)),
+             hs=units.horizontal.symbol,
+             v=T(_NAMES.get(units.vertical.name, units.vertical.name)),
+             vs=units.vertical.symbol)
+
+
+def to_metres_message(units: Units, what: str) -> str:
+    """English log line: the data's units and the conversion (``''`` when metric)."""
+    if units.metric:
+        return ""
+    return (f"{what} is in {units.describe()}; its coordinates are converted to metres "
+            "(every length parameter is in metres).")

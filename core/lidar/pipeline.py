@@ -496,6 +496,8 @@ def read_cloud(src, *, returns: bool = True, monitor: Optional[Monitor] = None) 
     mon = monitor or Monitor()
     pd = read_las(src, dims, progress=mon.update, cancel=mon.cancelled)
     check_projected(pd.x, pd.y, pd.z, what=f"The point cloud {src}")
+    # Every length parameter is in metres (DEVELOPERS.md, Units): filter in metres.
+    pd.x, pd.y, pd.z = info.units.xyz_to_metres(pd.x, pd.y, pd.z)
     return pd
 
 
@@ -623,7 +625,8 @@ def filter_report(run: ClassifyRun, algorithm, *, lang: str = "en") -> Report:
                                    n=n, g=run.n_ground, o=run.n_nonground, z=run.n_noise)))
     rep.section("Input").add(KeyValues([
         ("Point cloud", run.input), ("Points", n),
-        ("CRS", _crs_label(run.points) or T("none"))]))
+        ("CRS", _crs_label(run.points) or T("none")),
+        *_units_rows(run.points)]))
     rows = [(k, T(CLASS_NAMES.get(k, "other class")), c, 100.0 * c / n)
             for k, c in sorted(run.counts().items())]
     rep.section("Output classes (ASPRS)").add(
@@ -665,6 +668,12 @@ def _selection_rows(run: ClassifyRun) -> list:
                  ("Points without return information (taken as last)",
                   run.selection.unknown_returns)]
     return rows
+
+
+def _units_rows(pd: PointData) -> list:
+    from ..io.units import units_note
+    note = units_note(pd.info.units) if pd.info else None
+    return [("Linear units", note)] if note is not None else []
 
 
 def _crs_label(pd: PointData) -> str:

@@ -219,8 +219,14 @@ def advice_lines(res: QaResult) -> List[Tuple[str, dict]]:
     return lines
 
 
-def qa_report(res: QaResult, name: str) -> Report:
-    """Build the report of :func:`lidar_qa` (maps, histograms, advice)."""
+def qa_report(res: QaResult, name: str, *, units=None) -> Report:
+    """Build the report of :func:`lidar_qa` (maps, histograms, advice).
+
+    ``units`` (:class:`~..io.units.Units`) are the cloud's when it is not in metres:
+    the report then says that densities and areas were computed in metres.
+    """
+    from ..io.units import units_note
+    note = units_note(units) if units is not None else None
     rep = Report("Point density and quality report",
                  citation="Kostrikov et al. (2020), ELiT, ISPRS IJGI 9(11):650; "
                  "ASPRS LAS 1.4.")
@@ -228,6 +234,7 @@ def qa_report(res: QaResult, name: str) -> Report:
     sa = res.scan_angle
     rep.section("Summary").add(KeyValues([
         ("Input", name),
+        *([("Linear units", note)] if note is not None else []),
         ("Points", res.n_points), ("Last returns", res.n_last),
         ("Ground points", res.n_ground),
         ("Covered area (m²)", res.covered_area),

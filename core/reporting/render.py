@@ -101,7 +101,8 @@ class _Renderer:
             return markupsafe.Markup("")
         if isinstance(m, T):
             text = esc(self.tr(m.text))
-            args = {k: bdi(fmt_number(v, None) if _is_number(v) else v)
+            args = {k: (self.message(v) if isinstance(v, T)
+                        else bdi(fmt_number(v, None) if _is_number(v) else v))
                     for k, v in m.args.items()}
             return markupsafe.Markup(str(text).format(**args)) if args else text
         return esc(self.tr(str(m)))

@@ -234,6 +234,39 @@ def dtm_accuracy(dtm: np.ndarray, geotransform: Sequence[float], x, y, z, *,
     return res
 
 
+def check_points_not_degrees(x, y, extent: Sequence[float], *, crs_label: str = "",
+                             what: str = "check points") -> None:
+    """Refuse check points in longitude/latitude against a DTM in a projected CRS.
+
+    Points given without their CRS are taken to be in the DTM's; when every point lies
+    within ±180 / ±90, none inside the DTM ``extent = (xmin, xmax, ymin, ymax)``, and
+    that extent is not itself within ±180 / ±90, they are degrees.
+
+    Raises
+    ------
+    InputError
+        Naming the DTM's CRS and the fix (give the points' CRS, e.g. EPSG:4326, and
+        reproject them).
+    """
+    x = np.asarray(x, dtype=np.float64)
+    y = np.asarray(y, dtype=np.float64)
+    ok = np.isfinite(x) & np.isfinite(y)
+    if not ok.any():
+        return
+    x, y = x[ok], y[ok]
+    xmin, xmax, ymin, ymax = (float(v) for v in extent)
+    dtm_in_degree_range = max(abs(xmin), abs(xmax)) <= 180 and max(abs(ymin), abs(ymax)) <= 90
+    looks_degrees = bool((np.abs(x) <= 180).all() and (np.abs(y) <= 90).all())
+    inside = (x >= xmin) & (x <= xmax) & (y >= ymin) & (y <= ymax)
+    if looks_degrees and not dtm_in_degree_range and not inside.any():
+        from ..errors import InputError
+        raise InputError(
+            "The {what} look like longitude/latitude in degrees (x within ±180, y within "
+            "±90) but the DTM is in a projected CRS ({crs}) and none of them lies on it. "
+            "Give the check points' CRS (e.g. EPSG:4326) and let them be reprojected to "
+            "the DTM's CRS. No output was written.", what=what, crs=crs_label or "?")
+
+
 def check_duplicates(ids: Sequence, x, y, *, tolerance: float = 0.001,
                      rows: Optional[Sequence] = None, limit: int = 5) -> None:
     """Refuse duplicated check points: the same id twice, or two points at one position.

@@ -231,9 +231,15 @@ def kriging_sections(rep: Report, result, *, tr: Translator = _identity) -> Repo
     return rep
 
 
+def _units_rows(units) -> list:
+    from ..io.units import units_note
+    note = units_note(units) if units is not None else None
+    return [("Linear units", note)] if note is not None else []
+
+
 def accuracy_report(res: acc.AccuracyResult, ids: Sequence, dtm: np.ndarray,
                     geotransform: Sequence[float], *, dtm_name: str, crs_label: str,
-                    tr: Translator = _identity, max_rows: int = 500) -> Report:
+                    tr: Translator = _identity, max_rows: int = 500, units=None) -> Report:
     """Return the DTM accuracy report: statistics, residual map, error vs height, table.
 
     The statistics follow the ASPRS Positional Accuracy Standards (2014): vertical
@@ -246,7 +252,8 @@ def accuracy_report(res: acc.AccuracyResult, ids: Sequence, dtm: np.ndarray,
     rep.summary.append(Paragraph(T("N = {n}, RMSE = {rmse} m, mean error = {me} m.",
                                    n=s["n"], rmse=round(s["rmse"], 4), me=round(s["me"], 4))))
     rep.section("Input").add(KeyValues([
-        ("DTM", dtm_name), ("CRS", crs_label), ("sampling", T(res.method)),
+        ("DTM", dtm_name), ("CRS", crs_label),
+        *_units_rows(units), ("sampling", T(res.method)),
         ("check points given", res.n_total), ("used", res.n_used),
         ("outside the DTM (excluded)", res.n_outside),
         ("on DTM nodata or without height (excluded)", res.n_nodata),
@@ -273,7 +280,7 @@ def accuracy_report(res: acc.AccuracyResult, ids: Sequence, dtm: np.ndarray,
     return rep
 
 
-def tin_report(res, name: str, n_in_file: int, grid) -> Report:
+def tin_report(res, name: str, n_in_file: int, grid, *, units=None) -> Report:
     """Report of a TIN DTM run: input and grid, triangles, cells and a height map.
 
     ``res`` is a :class:`~.tin.TinResult` (Delaunay 1934; Barber et al. 1996, Qhull),
@@ -286,6 +293,7 @@ def tin_report(res, name: str, n_in_file: int, grid) -> Report:
         library="Qhull", command="gdal_grid -a linear"))
     rep.section("Input and grid").add(KeyValues([
         ("Input", name),
+        *_units_rows(units),
         ("Points in file", n_in_file),
         ("Points triangulated", res.n_points),
         ("Grid (columns × rows)", f"{grid.ncols} × {grid.nrows}"),

@@ -65,16 +65,40 @@ def default_max_edge(grid: GridSpec, n_points: int) -> float:
     return 2.0 * default_max_distance(grid, n_points)
 
 
+#: Quantum (m) of the local coordinates the triangulation sees: finer than any LAS
+#: scale in use (0.001–0.01 m), coarse enough that the same cloud moved by a whole
+#: number of quanta gives bit-identical local coordinates.
+LOCAL_QUANTUM = 1e-4
+
+
+def _local(v):
+    """Local coordinates of ``v`` on the :data:`LOCAL_QUANTUM` lattice and their origin.
+
+    ``round(v / q)`` are whole numbers (exact in float64 up to 9e15 q); subtracting
+    their minimum is exact, so the local coordinates — and with them Qhull's
+    triangulation and every tie it breaks — do not depend on where the cloud lies.
+    """
+    k = np.round(v / LOCAL_QUANTUM)
+    k0 = float(k.min())
+    return (k - k0) * LOCAL_QUANTUM, k0 * LOCAL_QUANTUM
+
+
 def _triangulate(x, y):
+    """Delaunay triangulation of the quantised local coordinates (the topology).
+
+    Returns ``(tri, x0, y0, xy)``: ``xy`` are the exact local coordinates ``x - x0``,
+    ``y - y0`` the planes are interpolated on (a plane is reproduced to 1e-9 m).
+    """
     from scipy.spatial import Delaunay, QhullError
-    x0, y0 = float(x.mean()), float(y.mean())
+    xl, x0 = _local(x)
+    yl, y0 = _local(y)
     try:
-        tri = Delaunay(np.column_stack([x - x0, y - y0]))
+        tri = Delaunay(np.column_stack([xl, yl]))
     except QhullError as exc:
         raise InputError(
             "The points cannot be triangulated (fewer than three points, or all on one "
             "line); a TIN DTM needs ground points spread over an area.") from exc
-    return tri, x0, y0
+    return tri, x0, y0, np.column_stack([x - x0, y - y0])
 
 
 def _spatial_order(x, y) -> np.ndarray:
@@ -103,7 +127,8 @@ def _cell_ranges(lo, hi, origin, cell, n, flip=False):
     return first, last
 
 
-def _rasterise(tri, z, keep, grid: GridSpec, x0: float, y0: float, mon) -> np.ndarray:
+def _rasterise(tri, xy, z, keep, grid: GridSpec, x0: float, y0: float,
+               mon) -> np.ndarray:
     """Scan-convert the kept triangles: every cell centre inside gets the plane value.
 
     Candidate cells are the cell centres in each triangle's bounding box, enumerated in
@@ -111,8 +136,8 @@ def _rasterise(tri, z, keep, grid: GridSpec, x0: float, y0: float, mon) -> np.nd
     from either triangle (the surface is continuous).
     """
     simp = tri.simplices[keep]
-    px = tri.points[:, 0][simp]                       # (m, 3), centred coordinates
-    py = tri.points[:, 1][simp]
+    px = xy[:, 0][simp]                               # (m, 3), local coordinates
+    py = xy[:, 1][simp]
     c0, c1 = _cell_ranges(px.min(1), px.max(1), grid.xmin - x0, grid.cell, grid.ncols)
     r0, r1 = _cell_ranges(py.min(1), py.max(1), grid.ymax - y0, grid.cell, grid.nrows,
                           flip=True)
@@ -196,10 +221,10 @@ def tin_grid(x, y, z, grid: GridSpec, *, max_edge: Optional[float] = None,
     mon.step(0.0)
     order = _spatial_order(x, y)
     x, y, z = x[order], y[order], z[order]
-    tri, x0, y0 = _triangulate(x, y)
+    tri, x0, y0, xy = _triangulate(x, y)
     mon.step(0.3)
     edge = None if fill else (max_edge or default_max_edge(grid, x.size))
     bad = (_long_triangles(tri, edge) if edge is not None
            else np.zeros(len(tri.simplices), bool))
-    out = _rasterise(tri, z, ~bad, grid, x0, y0, mon.sub(0.3, 1.0))
+    out = _rasterise(tri, xy, z, ~bad, grid, x0, y0, mon.sub(0.3, 1.0))
     return TinResult(out, int(x.size), int(len(tri.simplices)), int(bad.sum()), edge)

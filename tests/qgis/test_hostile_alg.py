@@ -1,0 +1,82 @@
+"""Hostile input, round 3 (issue 22) through processing.run: every case asserts the
+message, byte-identical inputs and nothing at any output path or temporary name."""
+from __future__ import annotations
+
+import hashlib
+
+import numpy as np
+import pytest
+from qgis.core import QgsProcessingException
+
+from geomatics_toolbox.core.io import contract
+from geomatics_toolbox.core.io.las import write_las
+from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+
+
+def _digest(path) -> str:
+    return hashlib.sha256(open(path, "rb").read()).hexdigest()
+
+
+def _leftovers(folder):
+    return sorted(p.name for p in folder.iterdir() if contract.is_temp(p))
+
+
+def refused(processing, alg, params, message, inputs, outputs):
+    """Run expecting ``message``; inputs unchanged, no output nor temporary left."""
+    before = {str(p): _digest(p) for p in inputs}
+    with pytest.raises(QgsProcessingException, match=message) as info:
+        processing.run(alg, params)
+    text = str(info.value)
+    assert "Traceback" not in text and "RuntimeError" not in text, text
+    assert {str(p): _digest(p) for p in inputs} == before
+    for out in outputs:
+        assert not out.exists(), out
+        assert not _leftovers(out.parent), _leftovers(out.parent)
+    return text
+
+
+@pytest.fixture(scope="module")
+def data(tmp_path_factory):
+    d = tmp_path_factory.mktemp("hostile")
+    tile = generate_tile(extent=(60.0, 60.0), density=2.0, seed=4, n_buildings=1, n_halls=0)
+    write_tile(tile, d / "tile.laz", crs="EPSG:32632")
+    return {"dir": d, "tile": tile, "laz": d / "tile.laz"}
+
+
+# ----------------------------------------------------------------- 5. TIN degenerate
+@pytest.mark.parametrize("kind", ["ten", "collinear"])
+def test_tindtm_without_a_valid_cell_refused(qgis_processing, tmp_path, kind):
+    rng = np.random.default_rng(1)
+    if kind == "ten":      # ten points in a 0.4 m patch: their hull holds no cell centre
+        x = 500_000.05 + rng.uniform(0, 0.4, 10)
+        y = 4_000_000.05 + rng.uniform(0, 0.4, 10)
+    else:                  # 400 points along a line, 1 cm off it
+        t = np.linspace(0, 400, 400)
+        x = 500_000 + t
+        y = 4_000_000 + 0.5 * t + rng.normal(0, 0.01, t.size)
+    z = 100 + rng.normal(0, 0.1, x.size)
+    src = tmp_path / "few.las"
+    write_las(src, x, y, z, dimensions={"classification": np.full(x.size, 2, np.uint8)},
+              crs="EPSG:32632")
+    out = tmp_path / "tin.tif"
+    refused(qgis_processing, "geomatics:tindtm", {
+        "INPUT": str(src), "CELL_SIZE": 1.0, "OUTPUT": str(out),
+        "OUTPUT_HTML": str(tmp_path / "tin.html")},
+        r"has no cell with a value.*No output was written", [src],
+        [out, tmp_path / "tin.html"])
+
+
+# ----------------------------------------------------------------- dtmaccuracy lon/lat
+def test_dtmaccuracy_lon_lat_check_points_clear_message(qgis_processing, data, tmp_path):
+    dtm = qgis_processing.run("geomatics:idwdtm", {
+        "INPUT": str(data["laz"]), "CELL_SIZE": 1.0, "FILL_GAPS": True,
+        "OUTPUT": str(tmp_path / "dtm.tif")})["OUTPUT"]
+    csv = tmp_path / "lonlat.csv"
+    csv.write_text("id,x,y,z\n" + "".join(
+        f"{i},{9.0 + 1e-6 * i:.7f},{48.0 + 1e-6 * i:.7f},{200 + i}\n" for i in range(8)),
+        encoding="utf-8")
+    out = tmp_path / "acc.html"
+    text = refused(qgis_processing, "geomatics:dtmaccuracy", {
+        "DTM": dtm, "CHECKPOINTS_CSV": str(csv), "OUTPUT_HTML": str(out)},
+        r"look like longitude/latitude in degrees.*EPSG:32632", [dtm, csv], [out])
+    assert "Duplicated" not in text

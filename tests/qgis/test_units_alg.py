@@ -1,0 +1,172 @@
+"""Any linear unit (issue 22, Done-when 1): a cloud in US survey feet and its metre copy
+give the same ground classes, the same DTMs (converted), the same lidarqa densities and
+accuracy figures, and the reports of the feet cloud say feet.
+
+Rule (DEVELOPERS.md, Units): lengths the user types are metres; data in feet are
+converted; rasters are written in the data's own CRS and units (band unit type says
+which).
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import laspy
+import numpy as np
+import pytest
+from osgeo import gdal
+
+from geomatics_toolbox.core.io.units import US_FOOT
+from geomatics_toolbox.synthetic.hostile import unit_copy
+from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+
+FT = US_FOOT.metres
+REAL_USFT = Path(__file__).resolve().parents[3] / "shared" / "data" / "real" / "pdal_nm_usft.laz"
+
+
+@pytest.fixture(scope="module")
+def clouds(tmp_path_factory):
+    d = tmp_path_factory.mktemp("units")
+    # an origin off the cell lattice and 0.1 mm coordinates: no point sits on a cell
+    # edge, where the 1e-5 m difference between the two files would move it (or the
+    # snapped grid) by a cell
+    tile = generate_tile(extent=(100.0, 100.0), origin=(500_000.37, 4_000_000.41),
+                         density=3.0, seed=7, n_buildings=2, n_halls=0, scale=0.0001)
+    write_tile(tile, d / "src.las")
+    m = unit_copy(d / "src.las", d / "m.las", unit_metres=1.0, keys={1024: 1, 3072: 32632},
+                  scale=0.0001)
+    ft = unit_copy(d / "src.las", d / "ft.las", scale=0.0001)     # EPSG:2903 + ftUS keys
+    cp = tile.checkpoints(n=15, min_spacing=5.0)
+    csv_m = cp.to_csv(d / "cp_m.csv", xy_decimals=4)
+    with open(d / "cp_ft.csv", "w", encoding="utf-8") as fh:
+        fh.write("id,x,y,z\n")
+        for i, x, y, z in zip(cp.id, cp.x, cp.y, cp.z):
+            fh.write(f"{i},{x / FT:.5f},{y / FT:.5f},{z / FT:.6f}\n")
+    return {"dir": d, "m": m, "ft": ft, "cp_m": csv_m, "cp_ft": str(d / "cp_ft.csv")}
+
+
+def _classes(path):
+    return np.asarray(laspy.read(path).classification)
+
+
+def _raster(path):
+    ds = gdal.Open(str(path))
+    b = ds.GetRasterBand(1)
+    a = b.ReadAsArray().astype(float)
+    a[a == b.GetNoDataValue()] = np.nan
+    return a, np.array(ds.GetGeoTransform()), b.GetUnitType()
+
+
+def _same_dtm(m_path, ft_path, tol=1e-3):
+    am, gm, um = _raster(m_path)
+    af, gf, uf = _raster(ft_path)
+    assert (um, uf) == ("m", "ftUS")
+    assert am.shape == af.shape
+    np.testing.assert_allclose(gf * FT, gm, atol=1e-6)            # the same grid, in ftUS
+    assert np.array_equal(np.isnan(am), np.isnan(af))
+    # the same heights; the two files' coordinates differ by their 0.1 mm rounding,
+    # which may swap a rare nearest-neighbour tie (a few mm in a few cells)
+    diff = np.abs(af * FT - am)[~np.isnan(am)]
+    assert np.median(diff) < 1e-4
+    assert np.mean(diff > tol) < 0.005 and diff.max() < 0.05, (np.mean(diff > tol), diff.max())
+
+
+def test_ground_filter_same_classes_and_feet_in_report(qgis_processing, clouds):
+    d = clouds["dir"]
+    out = {}
+    for k in ("m", "ft"):
+        out[k] = qgis_processing.run("geomatics:groundfilter", {
+            "INPUT": clouds[k], "OUTPUT": str(d / f"gf_{k}.las"),
+            "OUTPUT_HTML": str(d / f"gf_{k}.html")})
+    cm, cf = _classes(out["m"]["OUTPUT"]), _classes(out["ft"]["OUTPUT"])
+    assert np.array_equal(cm, cf), int(np.count_nonzero(cm != cf))
+    assert out["m"]["N_GROUND"] == out["ft"]["N_GROUND"] > 1000
+    html_ft = (d / "gf_ft.html").read_text(encoding="utf-8")
+    html_m = (d / "gf_m.html").read_text(encoding="utf-8")
+    assert "US survey foot" in html_ft and "ftUS" in html_ft
+    assert "US survey foot" not in html_m
+
+
+@pytest.mark.parametrize("alg,extra", [
+    ("geomatics:idwdtm", {"POWER": 2.0, "NEIGHBOURS": 12, "FILL_GAPS": True}),
+    ("geomatics:tindtm", {}),
+    ("geomatics:krigingdtm", {"FIT_POINTS": 800, "NEIGHBOURS": 12, "FILL_GAPS": True}),
+])
+def test_dtm_same_grid_converted(qgis_processing, clouds, alg, extra):
+    d = clouds["dir"]
+    name = alg.split(":")[1]
+    paths = {}
+    for k in ("m", "ft"):
+        res = qgis_processing.run(alg, {"INPUT": clouds[k], "CELL_SIZE": 2.0, **extra,
+                                        "OUTPUT": str(d / f"{name}_{k}.tif"),
+                                        "OUTPUT_HTML": str(d / f"{name}_{k}.html")})
+        paths[k] = res["OUTPUT"]
+    _same_dtm(paths["m"], paths["ft"], tol=2e-3 if name == "krigingdtm" else 1e-3)
+    assert "ftUS" in (d / f"{name}_ft.html").read_text(encoding="utf-8")
+
+
+def test_dsm_same_grid_converted(qgis_processing, clouds):
+    d = clouds["dir"]
+    for k in ("m", "ft"):
+        qgis_processing.run("geomatics:dsm", {"INPUT": clouds[k], "CELL_SIZE": 2.0,
+                                              "OUTPUT": str(d / f"dsm_{k}.tif")})
+    _same_dtm(d / "dsm_m.tif", d / "dsm_ft.tif")
+
+
+def test_lidarqa_same_density(qgis_processing, clouds):
+    d = clouds["dir"]
+    res = {k: qgis_processing.run("geomatics:lidarqa", {
+        "INPUT": clouds[k], "CELL_SIZE": 5.0, "OUTPUT": str(d / f"qa_{k}.tif"),
+        "OUTPUT_HTML": str(d / f"qa_{k}.html")}) for k in ("m", "ft")}
+    for key in ("DENSITY", "GROUND_DENSITY", "GAP_SHARE", "GROUND_WINDOW", "DTM_CELL"):
+        assert res["ft"][key] == pytest.approx(res["m"][key], rel=1e-6), key
+    assert res["m"]["DENSITY"] == pytest.approx(3.0, rel=0.25)   # pts/m², not per ft²
+    html = (d / "qa_ft.html").read_text(encoding="utf-8")
+    assert "US survey foot" in html and "pts/m²" in html
+    am, gm, _ = _raster(d / "qa_m.tif")
+    af, gf, _ = _raster(d / "qa_ft.tif")
+    np.testing.assert_allclose(gf * FT, gm, atol=1e-6)
+    # the same counts per 5 m cell, but for a point within 0.1 mm of a cell edge
+    moved = np.abs(af - am) > 1e-6
+    assert moved.mean() < 0.01 and np.nanmax(np.abs(af - am)) <= 1 / 25 + 1e-6
+
+
+def test_dtm_accuracy_in_metres_labelled(qgis_processing, clouds):
+    d = clouds["dir"]
+    res = {}
+    for k in ("m", "ft"):
+        dtm = qgis_processing.run("geomatics:idwdtm", {
+            "INPUT": clouds[k], "CELL_SIZE": 1.0, "FILL_GAPS": True,
+            "OUTPUT": str(d / f"acc_dtm_{k}.tif")})["OUTPUT"]
+        res[k] = qgis_processing.run("geomatics:dtmaccuracy", {
+            "DTM": dtm, "CHECKPOINTS_CSV": clouds[f"cp_{k}"],
+            "OUTPUT_HTML": str(d / f"acc_{k}.html")})
+    assert res["m"]["N"] == res["ft"]["N"] == 15
+    for key in ("RMSE", "ME", "MAE", "MAX_ABS_ERROR"):
+        assert res["ft"][key] == pytest.approx(res["m"][key], abs=2e-4), key
+    html = (d / "acc_ft.html").read_text(encoding="utf-8")
+    assert "US survey foot" in html
+
+
+def test_lidar_to_dtm_same_rmse(qgis_processing, clouds):
+    d = clouds["dir"]
+    res = {k: qgis_processing.run("geomatics:lidartodtm", {
+        "INPUT": clouds[k], "CHECKPOINTS_CSV": clouds[f"cp_{k}"], "CELL_SIZE": 1.0,
+        "OUTPUT": str(d / f"l2d_{k}.las"), "OUTPUT_DTM": str(d / f"l2d_{k}.tif"),
+        "OUTPUT_HTML": str(d / f"l2d_{k}.html")}) for k in ("m", "ft")}
+    assert np.array_equal(_classes(res["m"]["OUTPUT"]), _classes(res["ft"]["OUTPUT"]))
+    _same_dtm(res["m"]["OUTPUT_DTM"], res["ft"]["OUTPUT_DTM"])
+    assert res["ft"]["RMSE"] == pytest.approx(res["m"]["RMSE"], abs=2e-4)
+    assert "US survey foot" in (d / "l2d_ft.html").read_text(encoding="utf-8")
+
+
+def test_real_us_survey_feet_file_and_its_metre_copy(qgis_processing, tmp_path):
+    if not REAL_USFT.exists():
+        pytest.skip(f"{REAL_USFT} not found (the real-data development set)")
+    m = unit_copy(REAL_USFT, tmp_path / "m.las", unit_metres=1.0 / FT,
+                  keys={1024: 1, 3072: 26913}, scale=0.0001)
+    out = {}
+    for k, src in (("m", m), ("ft", str(REAL_USFT))):
+        out[k] = qgis_processing.run("geomatics:groundfilter", {
+            "INPUT": src, "OUTPUT": str(tmp_path / f"out_{k}.las")})["OUTPUT"]
+    cm, cf = _classes(out["m"]), _classes(out["ft"])
+    assert np.array_equal(cm, cf), int(np.count_nonzero(cm != cf))   # 41 differed before
