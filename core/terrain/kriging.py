@@ -14,9 +14,10 @@ Why not plain PyKrige: ``pykrige.ok.OrdinaryKriging`` builds the full ``n × n``
 distance matrix both to fit the variogram and to predict (even with
 ``n_closest_points``), which needs 8 TB for 1 M points. Here
 
-1. the variogram is fitted **with PyKrige's own estimator** (binned experimental
+1. the variogram is fitted **with PyKrige's estimator** (binned experimental
    semivariogram + ``scipy.optimize.least_squares`` with a soft-L1 loss, PyKrige's
-   bounds) on pairs drawn around ``fit_points`` random points (default 3000) up to
+   bounds; re-implemented in :mod:`.variogram`, so kriging needs only numpy and
+   scipy, and checked against PyKrige by the tests) on pairs drawn around ``fit_points`` random points (default 3000) up to
    the distances local kriging actually uses (three times the typical distance to
    the ``n_closest``-th neighbour), so that the nugget and the short-range shape —
    which set the weights and the variance — are well sampled; or taken from the
@@ -69,6 +70,7 @@ from ..coords import as_xyz
 from ..errors import InputError
 from ..progress import Monitor
 from ..system import limit_blas_threads
+from . import variogram as variogram_models
 from .grid import GridSpec, check_memory, distance_mask, resolve_max_distance, row_blocks
 
 MODELS = ("linear", "power", "gaussian", "spherical", "exponential")
@@ -79,22 +81,9 @@ EPS = 1e-10
 GLOBAL_MAX_POINTS = 6000
 
 
-def _pykrige():
-    try:
-        from pykrige import core, variogram_models
-    except ImportError as exc:  # pragma: no cover - install problem
-        raise ValueError("The Python package 'pykrige' is not installed; install it "
-                         "(pip install pykrige==1.7.3).") from exc
-    return core, variogram_models
-
-
 def variogram_function(model: str):
-    """PyKrige's variogram function ``f(params, d)`` for ``model``."""
-    _, vm = _pykrige()
-    funcs = {"linear": vm.linear_variogram_model, "power": vm.power_variogram_model,
-             "gaussian": vm.gaussian_variogram_model,
-             "spherical": vm.spherical_variogram_model,
-             "exponential": vm.exponential_variogram_model}
+    """Return the variogram function ``f(params, d)`` of ``model`` (PyKrige's convention)."""
+    funcs = variogram_models.MODEL_FUNCTIONS
     if model not in funcs:
         raise ValueError(f"variogram model must be one of {', '.join(MODELS)}; got "
                          f"{model!r}.")
@@ -169,7 +158,6 @@ def _plane_residuals(x, y, z):
 
 
 def _bin_and_fit(d, g, used_lag, nlags, model, func, weight):
-    core, _ = _pykrige()
     edges = np.linspace(0.0, used_lag, nlags + 1)
     which = np.clip(np.searchsorted(edges, d, side="right") - 1, 0, nlags - 1)
     cnt = np.bincount(which, minlength=nlags)
@@ -180,7 +168,7 @@ def _bin_and_fit(d, g, used_lag, nlags, model, func, weight):
     if lags.size < 3:
         raise ValueError("Too few non-empty lag bins to fit a variogram; increase max_lag, "
                          "nlags or fit_points.")
-    return lags, semi, core._calculate_variogram_model(lags, semi, model, func, weight)
+    return lags, semi, variogram_models.fit_model(lags, semi, model, func, weight)
 
 
 def _resolve_lag(xy, sel, mode, max_lag, n_neighbours) -> Optional[float]:
@@ -275,7 +263,6 @@ def fit_variogram(x, y, z, *, model: str = "spherical", fit_points: int = 3000,
     seed : int
         Seed of the random choice of points.
     """
-    core, _ = _pykrige()
     func = variogram_function(model)
     x, y, z = _check_xyz(x, y, z)
     fit_points = int(fit_points)
@@ -297,8 +284,8 @@ def fit_variogram(x, y, z, *, model: str = "spherical", fit_points: int = 3000,
         raise ValueError(f"max_lag must be 'auto', 'half', a distance or None; got "
                          f"{max_lag!r}.")
     if mode is None:
-        lags, semi, params = core._initialize_variogram_model(
-            xy[sel], z[sel], model, None, func, nlags, weight, "euclidean")
+        lags, semi = variogram_models.all_pairs_semivariogram(xy[sel], z[sel], nlags)
+        params = variogram_models.fit_model(lags, semi, model, func, weight)
         used_lag = None
         n_pairs = sel.size * (sel.size - 1) // 2
     else:
