@@ -17,7 +17,8 @@ distance matrix both to fit the variogram and to predict (even with
 1. the variogram is fitted **with PyKrige's estimator** (binned experimental
    semivariogram + ``scipy.optimize.least_squares`` with a soft-L1 loss, PyKrige's
    bounds; re-implemented in :mod:`.variogram`, so kriging needs only numpy and
-   scipy, and checked against PyKrige by the tests) on pairs drawn around ``fit_points`` random points (default 3000) up to
+   scipy, and checked against PyKrige by the tests) on pairs drawn around
+   ``fit_points`` random points (default 3000) up to
    the distances local kriging actually uses (three times the typical distance to
    the ``n_closest``-th neighbour), so that the nugget and the short-range shape —
    which set the weights and the variance — are well sampled; or taken from the
