@@ -1,6 +1,6 @@
 """Quirky LAS files for the hostile-input tests (not shipped).
 
-* :func:`write_geokeys_las` — LAS 1.0–1.3 with any GeoTIFF keys (e.g. a US state plane
+* :func:`write_geokeys_las` — LAS 1.1–1.3 with any GeoTIFF keys (e.g. a US state plane
   in US survey feet with ``VerticalUnitsGeoKey``), the way US vendors deliver them;
 * :func:`unit_copy` — a copy of a metre cloud in another linear unit (coordinates
   divided by the unit's length in metres), under a feet CRS: the same terrain, so a

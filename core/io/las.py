@@ -22,13 +22,17 @@ from typing import Dict, Iterator, Mapping, Optional, Sequence, Tuple
 
 import numpy as np
 
+from ..errors import InputError
 from ..progress import Monitor
 from .contract import atomic_output, check_not_input
 from .crs import spatial_reference
 from .units import METRIC, Units, header_units
 
 DEFAULT_CHUNK = 2_000_000
-_SUPPORTED_VERSIONS = {(1, 0), (1, 1), (1, 2), (1, 3), (1, 4)}
+#: LAS versions laspy reads (1.0 is not among them: refused up front, with the fix).
+_SUPPORTED_VERSIONS = {(1, 1), (1, 2), (1, 3), (1, 4)}
+#: Bytes of a VLR header / an EVLR header (LAS 1.4 R15, 2.5 and 2.6).
+_VLR_HEADER, _EVLR_HEADER = 54, 60
 
 
 def _laspy():
@@ -104,7 +108,8 @@ def check_las_file(path) -> None:
     if os.path.isdir(path):
         raise ValueError(f"{path} is a folder; choose a .las or .laz file.")
     with open(path, "rb") as fh:
-        head = fh.read(27)
+        head = fh.read(375)
+        size = os.fstat(fh.fileno()).st_size
     if len(head) < 27 or head[:4] != b"LASF":
         raise ValueError(
             f"{path} is not a LAS/LAZ file (it does not start with the 'LASF' "
@@ -112,15 +117,87 @@ def check_las_file(path) -> None:
             "first, e.g. with PDAL (pdal translate).")
     version = (head[24], head[25])
     if version not in _SUPPORTED_VERSIONS:
-        raise ValueError(
-            f"{path} declares LAS version {version[0]}.{version[1]}, which is not "
-            "supported (1.0 to 1.4 are); re-export it as LAS 1.2 or 1.4.")
+        raise InputError(
+            "{path} declares LAS version {version}, which this toolbox cannot read (LAS "
+            "1.1 to 1.4 can be read). Convert it first, e.g. 'pdal translate in.las "
+            "out.las --writers.las.minor_version=2' or 'las2las -i in.las -o out.las "
+            "-set_version 1.2'.", path=path, version=f"{version[0]}.{version[1]}")
+    check_header_sizes(path, head, size)
     if path.lower().endswith(".laz"):
         laspy = _laspy()
         if not laspy.LazBackend.detect_available():
             raise ValueError(
                 f"{path} is compressed (LAZ) but no LAZ backend is installed: "
                 "install the Python package 'lazrs' (pip install lazrs).")
+
+
+def check_header_sizes(path, head: bytes, size: int) -> None:
+    """Refuse a header whose sizes and counts cannot be true for a file of ``size`` bytes.
+
+    Checked before laspy reads anything (a header claiming a billion VLRs made laspy
+    allocate gigabytes): the header size, the offset to the point data, the VLRs
+    (count × 54 bytes and each VLR's length must fit between the header and the point
+    data — each VLR header is read, a few bytes each), the EVLRs (LAS 1.4) and, for an
+    uncompressed file, the point records (count × record length).
+
+    Raises
+    ------
+    InputError
+        Naming the file, the field that lies and what to do.
+    """
+    import struct
+    if len(head) < 227:
+        raise InputError("{path} is truncated: its LAS header is incomplete ({n} of at "
+                         "least 227 bytes). Re-export or re-download the file.",
+                         path=path, n=len(head))
+    header_size, offset, n_vlrs = struct.unpack_from("<HII", head, 94)
+    fmt, rec_len, legacy_count = struct.unpack_from("<BHI", head, 104)
+    fmt &= 0x3F                     # LAZ sets bit 7 (and 6) of the format
+    if header_size < 227 or header_size > size or offset < header_size or offset > size:
+        raise InputError(
+            "{path} has an impossible LAS header: header size {hs} bytes and point data "
+            "at byte {off}, in a file of {size} bytes. The file is damaged or was not "
+            "written to the LAS specification; re-export it (e.g. pdal translate).",
+            path=path, hs=header_size, off=offset, size=size)
+    room = offset - header_size
+    if n_vlrs * _VLR_HEADER > room:
+        raise InputError(
+            "{path} claims {n} variable-length records (VLRs), which cannot fit in the "
+            "{room} bytes between its header and its point data. The header is damaged; "
+            "repair or re-export the file (e.g. 'pdal translate' or 'lasinfo -repair').",
+            path=path, n=f"{n_vlrs:,}", room=f"{room:,}")
+    with open(path, "rb") as fh:
+        pos = header_size
+        for k in range(n_vlrs):
+            fh.seek(pos + 20)
+            raw = fh.read(2)
+            length = struct.unpack("<H", raw)[0] if len(raw) == 2 else 0
+            pos += _VLR_HEADER + length
+            if len(raw) < 2 or pos > offset:
+                raise InputError(
+                    "{path}: its variable-length record {k} of {n} runs past the start of "
+                    "the point data (byte {off}). The header is damaged; repair or "
+                    "re-export the file (e.g. 'pdal translate' or 'lasinfo -repair').",
+                    path=path, k=k + 1, n=n_vlrs, off=offset)
+    count = legacy_count
+    minor = head[25]
+    if minor >= 4 and len(head) >= 255:
+        start_evlr, n_evlrs, count64 = struct.unpack_from("<QIQ", head, 235)
+        count = count64 or legacy_count
+        if n_evlrs and (start_evlr < offset or start_evlr + n_evlrs * _EVLR_HEADER > size):
+            raise InputError(
+                "{path} claims {n} extended VLRs from byte {start}, which do not fit in "
+                "its {size} bytes. The file is truncated or its header damaged; re-export "
+                "or re-download it.", path=path, n=f"{n_evlrs:,}", start=start_evlr,
+                size=size)
+    if not path.lower().endswith(".laz") and rec_len and fmt <= 10:
+        need = offset + count * rec_len
+        if need > size:
+            raise InputError(
+                "{path} is truncated: its header declares {count} points of {rec} bytes "
+                "({need} bytes with the header) but the file has {size} bytes. Re-export "
+                "or re-download the file.", path=path, count=f"{count:,}", rec=rec_len,
+                need=f"{need:,}", size=f"{size:,}")
 
 
 def crs_of_header(header) -> Optional[str]:
@@ -175,7 +252,11 @@ def _open(path):
     try:
         return laspy.open(os.fspath(path))
     except Exception as exc:  # laspy raises several types for broken files
-        raise ValueError(f"Cannot read {path} as LAS/LAZ: {exc}") from exc
+        raise InputError(
+            "Cannot read {path} as LAS/LAZ ({error}). The file is damaged or was not "
+            "written to the LAS specification; re-export it (e.g. 'pdal translate') or "
+            "download it again.", path=os.fspath(path),
+            error=f"{type(exc).__name__}: {exc}"[:300]) from exc
 
 
 def las_info(path) -> LasInfo:
@@ -193,9 +274,10 @@ def _chunks(reader, path, chunk_size: int):
         except StopIteration:
             return
         except Exception as exc:  # numpy buffer errors, lazrs.LazrsError, ...
-            raise ValueError(
-                f"{path} is truncated or corrupt: its point data cannot be decoded "
-                f"({type(exc).__name__}: {exc}). Re-export or re-download the file.") from exc
+            raise InputError(
+                "{path} is truncated or corrupt: its point data cannot be decoded "
+                "({error}). Re-export or re-download the file.", path=os.fspath(path),
+                error=f"{type(exc).__name__}: {exc}"[:300]) from exc
         yield chunk
 
 
@@ -246,7 +328,7 @@ def read_las(path, dimensions: Sequence[str] = (), *, chunk_size: int = DEFAULT_
     Parameters
     ----------
     path : str or path-like
-        A .las or .laz file (LAS 1.0–1.4).
+        A .las or .laz file (LAS 1.1–1.4; 1.0 is refused with the fix).
     dimensions : sequence of str
         laspy dimension names to read besides x, y, z, e.g.
         ``("classification", "return_number", "number_of_returns")``.

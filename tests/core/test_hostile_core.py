@@ -40,3 +40,60 @@ def test_lon_lat_check_points_on_a_projected_dtm_refused():
     # points on the DTM, or a DTM in degrees: nothing to say
     check_points_not_degrees([500050.0], [5e6 + 50], (500000, 500100, 5e6, 5e6 + 100))
     check_points_not_degrees([9.1], [48.1], (9.0, 9.5, 48.0, 48.5))
+
+
+# ----------------------------------------------------------------- 4. headers that lie
+def _small_las(path, n=200, version="1.2", point_format=1):
+    from geomatics_toolbox.core.io.las import write_las
+    rng = np.random.default_rng(3)
+    write_las(path, 500_000 + rng.uniform(0, 20, n), 4e6 + rng.uniform(0, 20, n),
+              100 + rng.uniform(0, 2, n), crs="EPSG:32632", version=version,
+              point_format=point_format)
+    return path
+
+
+def test_huge_vlr_count_refused_before_reading(tmp_path):
+    from geomatics_toolbox.core.io.las import las_info, read_las
+    from geomatics_toolbox.synthetic.hostile import huge_vlr_count
+    bad = huge_vlr_count(_small_las(tmp_path / "ok.las"), tmp_path / "bad.las")
+    for reader in (las_info, read_las):
+        with pytest.raises(InputError, match=r"bad\.las claims 1,069,128,089 variable-length "
+                                             r"records.*cannot fit in the"):
+            reader(bad)
+
+
+def test_las_1_0_refused_consistently(tmp_path):
+    from geomatics_toolbox.core.io.las import check_las_file, las_info
+    from geomatics_toolbox.synthetic.hostile import las10_copy
+    old = las10_copy(_small_las(tmp_path / "ok.las"), tmp_path / "old.las")
+    for fn in (check_las_file, las_info):
+        with pytest.raises(InputError, match=r"old\.las declares LAS version 1\.0, which this "
+                                             r"toolbox cannot read.*set_version 1\.2"):
+            fn(old)
+
+
+def test_truncated_las_and_lying_evlrs_refused(tmp_path):
+    import struct
+
+    from geomatics_toolbox.core.io.las import las_info
+    src = _small_las(tmp_path / "ok.las")
+    data = open(src, "rb").read()
+    cut = tmp_path / "cut.las"
+    cut.write_bytes(data[: len(data) - 100])
+    with pytest.raises(InputError, match=r"cut\.las is truncated: its header declares 200 "
+                                         r"points of 28 bytes"):
+        las_info(cut)
+    v14 = bytearray(open(_small_las(tmp_path / "v14.las", version="1.4", point_format=6),
+                         "rb").read())
+    v14[235:247] = struct.pack("<QI", len(v14) - 10, 5)      # 5 EVLRs in the last 10 bytes
+    lie = tmp_path / "evlr.las"
+    lie.write_bytes(bytes(v14))
+    with pytest.raises(InputError, match=r"evlr\.las claims 5 extended VLRs"):
+        las_info(lie)
+    # a VLR whose length runs into the point data
+    v12 = bytearray(data)
+    header_size = struct.unpack_from("<H", v12, 94)[0]
+    v12[header_size + 20:header_size + 22] = struct.pack("<H", 60000)
+    (tmp_path / "vlr.las").write_bytes(bytes(v12))
+    with pytest.raises(InputError, match=r"variable-length record 1 of 1 runs past"):
+        las_info(tmp_path / "vlr.las")

@@ -80,3 +80,23 @@ def test_dtmaccuracy_lon_lat_check_points_clear_message(qgis_processing, data, t
         "DTM": dtm, "CHECKPOINTS_CSV": str(csv), "OUTPUT_HTML": str(out)},
         r"look like longitude/latitude in degrees.*EPSG:32632", [dtm, csv], [out])
     assert "Duplicated" not in text
+
+
+# ----------------------------------------------------------------- 4. headers that lie
+@pytest.mark.parametrize("kind,message", [
+    ("vlrs", r"claims 1,069,128,089 variable-length records \(VLRs\), which cannot fit"),
+    ("las10", r"declares LAS version 1\.0, which this toolbox cannot read"),
+])
+def test_lying_headers_refused_by_groundfilter(qgis_processing, tmp_path, kind, message):
+    from geomatics_toolbox.synthetic.hostile import huge_vlr_count, las10_copy
+    rng = np.random.default_rng(2)
+    ok = tmp_path / "ok.las"
+    write_las(ok, 500_000 + rng.uniform(0, 30, 500), 4e6 + rng.uniform(0, 30, 500),
+              100 + rng.uniform(0, 1, 500), crs="EPSG:32632", version="1.2", point_format=1)
+    bad = tmp_path / "bad.las"
+    (huge_vlr_count if kind == "vlrs" else las10_copy)(ok, bad)
+    out = tmp_path / "out.laz"
+    text = refused(qgis_processing, "geomatics:groundfilter", {
+        "INPUT": str(bad), "OUTPUT": str(out), "OUTPUT_HTML": str(tmp_path / "r.html")},
+        message, [bad], [out, tmp_path / "r.html"])
+    assert "bad.las" in text and "FileVersionNotSupported" not in text
