@@ -9,6 +9,7 @@ def all_algorithms():
     """Fresh instances of every algorithm the provider offers."""
     from .buildings import BuildingsAlgorithm
     from .catalog import CatalogAlgorithm
+    from .classify import ClassifyAlgorithm
     from .dtm_accuracy import DtmAccuracyAlgorithm
     from .elevation_change import ElevationChangeAlgorithm
     from .filter_accuracy import GroundFilterAccuracyAlgorithm
@@ -45,6 +46,7 @@ def all_algorithms():
         LidarQaAlgorithm(),
         ElevationChangeAlgorithm(),
         BuildingsAlgorithm(),
+        ClassifyAlgorithm(),
         GroundFilterAlgorithm(),
         PtdGroundFilterAlgorithm(),
     ]

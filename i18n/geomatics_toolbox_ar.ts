@@ -426,6 +426,133 @@
         </message>
     </context>
     <context>
+        <name>ClassifyAlgorithm</name>
+        <message>
+            <source>Classify point cloud (ASPRS classes)</source>
+            <translation>تصنيف سحابة النقاط (أصناف ASPRS)</translation>
+        </message>
+        <message>
+            <source>Ground, low/medium/high vegetation, buildings and low noise in one run; water and the other attributes kept.</source>
+            <translation>الأرض والغطاء النباتي المنخفض/المتوسط/المرتفع والمباني والضوضاء المنخفضة في تشغيل واحد؛ مع الإبقاء على الماء والخصائص الأخرى.</translation>
+        </message>
+        <message>
+            <source>lidar,las,laz,classification,asprs,ground,vegetation,building,noise,water,height above ground,normalize</source>
+            <translation>ليدار,las,laz,تصنيف,asprs,أرض,غطاء نباتي,مبنى,ضوضاء,ماء,ارتفاع فوق الأرض,تطبيع</translation>
+        </message>
+        <message>
+            <source>Writes standard ASPRS classes into a copy of a LAS/LAZ cloud: 2 ground (the recommended ground filter, or the input's class 2 kept), 3/4/5 low/medium/high vegetation by height above a TIN of the ground, 6 building (roof planes, bridges refused), 7 low noise; water (9) and noise (18) are kept. Every other attribute, the VLRs and the CRS are copied unchanged. Heights are in metres also for clouds in feet (converted).</source>
+            <translation>يكتب أصناف ASPRS القياسية في نسخة من سحابة LAS/LAZ: ‏2 أرض (مرشح الأرض الموصى به، أو الإبقاء على الصنف 2 من المدخل)، ‏3/4/5 غطاء نباتي منخفض/متوسط/مرتفع حسب الارتفاع فوق شبكة TIN للأرض، ‏6 مبنى (مستويات الأسطح، مع رفض الجسور)، ‏7 ضوضاء منخفضة؛ ويُبقي على الماء (9) والضوضاء (18). تُنسخ كل الخصائص الأخرى وسجلات VLR ونظام الإحداثيات دون تغيير. الارتفاعات بالمتر حتى للسحب بالقدم (تُحوَّل).</translation>
+        </message>
+        <message>
+            <source>A .las or .laz file in a projected CRS.</source>
+            <translation>ملف .las أو .laz في نظام إحداثيات مُسقَط.</translation>
+        </message>
+        <message>
+            <source>Keep the input's class 2 when it was already filtered.</source>
+            <translation>أبقِ على الصنف 2 من المدخل إذا كان قد رُشِّح مسبقًا.</translation>
+        </message>
+        <message>
+            <source>Default 0.5 m and 1.5 m: the IGN LiDAR HD vegetation classes.</source>
+            <translation>الافتراضي 0.5 م و1.5 م: أصناف الغطاء النباتي في IGN LiDAR HD.</translation>
+        </message>
+        <message>
+            <source>The specification gives 1.5–2 m.</source>
+            <translation>تحدّد المواصفة 1.5–2 m.</translation>
+        </message>
+        <message>
+            <source>Classes 8 and 10–255 (rail, road, wires, bridge decks, vendor classes) keep their class.</source>
+            <translation>تحتفظ الأصناف 8 و10–255 (السكك، الطرق، الأسلاك، أسطح الجسور، أصناف المورّد) بصنفها.</translation>
+        </message>
+        <message>
+            <source>A float extra dimension HeightAboveGround in the cloud's vertical unit (as PDAL's filters.hag_delaunay).</source>
+            <translation>بُعد إضافي عشري HeightAboveGround بالوحدة الرأسية للسحابة (مثل filters.hag_delaunay في PDAL).</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;References: ASPRS LAS 1.4 R15, standard point classes; Kostrikov, S. et al. (2020), ISPRS IJGI 9(11), 650; IGN (2023), LiDAR HD classes.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;المراجع: ASPRS LAS 1.4 R15، أصناف النقاط القياسية؛ Kostrikov, S. وآخرون (2020)، ISPRS IJGI 9(11)، 650؛ IGN (2023)، أصناف LiDAR HD.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>سحابة النقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Ground</source>
+            <translation>الأرض</translation>
+        </message>
+        <message>
+            <source>Recommended ground filter</source>
+            <translation>مرشح الأرض الموصى به</translation>
+        </message>
+        <message>
+            <source>Keep the input's class 2</source>
+            <translation>الإبقاء على الصنف 2 من المدخل</translation>
+        </message>
+        <message>
+            <source>Low vegetation up to (m)</source>
+            <translation>الغطاء النباتي المنخفض حتى (م)</translation>
+        </message>
+        <message>
+            <source>Medium vegetation up to (m)</source>
+            <translation>الغطاء النباتي المتوسط حتى (م)</translation>
+        </message>
+        <message>
+            <source>Find buildings (class 6)</source>
+            <translation>إيجاد المباني (الصنف 6)</translation>
+        </message>
+        <message>
+            <source>Minimum building height above ground (m)</source>
+            <translation>أدنى ارتفاع للمبنى فوق الأرض (م)</translation>
+        </message>
+        <message>
+            <source>Keep other input classes</source>
+            <translation>الإبقاء على أصناف المدخل الأخرى</translation>
+        </message>
+        <message>
+            <source>Add height above ground</source>
+            <translation>إضافة الارتفاع فوق الأرض</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>سحابة النقاط المصنَّفة</translation>
+        </message>
+        <message>
+            <source>Classification report</source>
+            <translation>تقرير التصنيف</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Points read</source>
+            <translation>النقاط المقروءة</translation>
+        </message>
+        <message>
+            <source>Ground points (class 2)</source>
+            <translation>نقاط الأرض (الصنف 2)</translation>
+        </message>
+        <message>
+            <source>Vegetation points (classes 3-5)</source>
+            <translation>نقاط الغطاء النباتي (الأصناف 3-5)</translation>
+        </message>
+        <message>
+            <source>Building points (class 6)</source>
+            <translation>نقاط المباني (الصنف 6)</translation>
+        </message>
+        <message>
+            <source>Low noise points (class 7)</source>
+            <translation>نقاط الضوضاء المنخفضة (الصنف 7)</translation>
+        </message>
+        <message>
+            <source>Buildings</source>
+            <translation>المباني</translation>
+        </message>
+        <message>
+            <source>{} points: {} ground, {} vegetation, {} building, {} low noise; {} buildings</source>
+            <translation>{} نقطة: {} أرض، {} غطاء نباتي، {} مبنى، {} ضوضاء منخفضة؛ {} مبانٍ</translation>
+        </message>
+    </context>
+    <context>
         <name>DsmAlgorithm</name>
         <message>
             <source>DSM and nDSM / canopy height model</source>

@@ -426,6 +426,133 @@
         </message>
     </context>
     <context>
+        <name>ClassifyAlgorithm</name>
+        <message>
+            <source>Classify point cloud (ASPRS classes)</source>
+            <translation>طبقه‌بندی ابر نقاط (کلاس‌های ASPRS)</translation>
+        </message>
+        <message>
+            <source>Ground, low/medium/high vegetation, buildings and low noise in one run; water and the other attributes kept.</source>
+            <translation>زمین، پوشش گیاهی کوتاه/متوسط/بلند، ساختمان‌ها و نویز پایین در یک اجرا؛ آب و دیگر ویژگی‌ها حفظ می‌شوند.</translation>
+        </message>
+        <message>
+            <source>lidar,las,laz,classification,asprs,ground,vegetation,building,noise,water,height above ground,normalize</source>
+            <translation>لیدار,las,laz,طبقه‌بندی,asprs,زمین,پوشش گیاهی,ساختمان,نویز,آب,ارتفاع از زمین,نرمال‌سازی</translation>
+        </message>
+        <message>
+            <source>Writes standard ASPRS classes into a copy of a LAS/LAZ cloud: 2 ground (the recommended ground filter, or the input's class 2 kept), 3/4/5 low/medium/high vegetation by height above a TIN of the ground, 6 building (roof planes, bridges refused), 7 low noise; water (9) and noise (18) are kept. Every other attribute, the VLRs and the CRS are copied unchanged. Heights are in metres also for clouds in feet (converted).</source>
+            <translation>کلاس‌های استاندارد ASPRS را در رونوشتی از ابر LAS/LAZ می‌نویسد: ‏2 زمینی (فیلتر زمین پیشنهادی، یا حفظ کلاس 2 ورودی)، ‏3/4/5 پوشش گیاهی کوتاه/متوسط/بلند بر پایهٔ ارتفاع از TIN زمین، ‏6 ساختمان (صفحه‌های بام، پل‌ها رد می‌شوند)، ‏7 نویز پایین؛ آب (9) و نویز (18) حفظ می‌شوند. همهٔ ویژگی‌های دیگر، VLRها و سیستم مختصات بی‌تغییر کپی می‌شوند. ارتفاع‌ها برای ابرهای فوتی نیز به متر هستند (تبدیل می‌شوند).</translation>
+        </message>
+        <message>
+            <source>A .las or .laz file in a projected CRS.</source>
+            <translation>یک فایل .las یا .laz در سیستم مختصات تصویرشده.</translation>
+        </message>
+        <message>
+            <source>Keep the input's class 2 when it was already filtered.</source>
+            <translation>اگر ورودی پیش‌تر فیلتر شده است، کلاس 2 آن را حفظ کنید.</translation>
+        </message>
+        <message>
+            <source>Default 0.5 m and 1.5 m: the IGN LiDAR HD vegetation classes.</source>
+            <translation>پیش‌فرض 0.5 متر و 1.5 متر: کلاس‌های پوشش گیاهی IGN LiDAR HD.</translation>
+        </message>
+        <message>
+            <source>The specification gives 1.5–2 m.</source>
+            <translation>مشخصات فنی 1.5–2 m را می‌دهد.</translation>
+        </message>
+        <message>
+            <source>Classes 8 and 10–255 (rail, road, wires, bridge decks, vendor classes) keep their class.</source>
+            <translation>کلاس‌های 8 و 10–255 (ریل، جاده، سیم‌ها، عرشهٔ پل‌ها، کلاس‌های تأمین‌کننده) کلاس خود را حفظ می‌کنند.</translation>
+        </message>
+        <message>
+            <source>A float extra dimension HeightAboveGround in the cloud's vertical unit (as PDAL's filters.hag_delaunay).</source>
+            <translation>بُعد اضافی اعشاری HeightAboveGround با یکای قائم ابر (مانند filters.hag_delaunay در PDAL).</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;References: ASPRS LAS 1.4 R15, standard point classes; Kostrikov, S. et al. (2020), ISPRS IJGI 9(11), 650; IGN (2023), LiDAR HD classes.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;منابع: ASPRS LAS 1.4 R15، کلاس‌های استاندارد نقاط؛ Kostrikov, S. و همکاران (2020)، ISPRS IJGI 9(11)، 650؛ IGN (2023)، کلاس‌های LiDAR HD.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>ابر نقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>Ground</source>
+            <translation>زمین</translation>
+        </message>
+        <message>
+            <source>Recommended ground filter</source>
+            <translation>فیلتر زمین پیشنهادی</translation>
+        </message>
+        <message>
+            <source>Keep the input's class 2</source>
+            <translation>حفظ کلاس 2 ورودی</translation>
+        </message>
+        <message>
+            <source>Low vegetation up to (m)</source>
+            <translation>پوشش گیاهی کوتاه تا (متر)</translation>
+        </message>
+        <message>
+            <source>Medium vegetation up to (m)</source>
+            <translation>پوشش گیاهی متوسط تا (متر)</translation>
+        </message>
+        <message>
+            <source>Find buildings (class 6)</source>
+            <translation>یافتن ساختمان‌ها (کلاس 6)</translation>
+        </message>
+        <message>
+            <source>Minimum building height above ground (m)</source>
+            <translation>کمینهٔ ارتفاع ساختمان از زمین (متر)</translation>
+        </message>
+        <message>
+            <source>Keep other input classes</source>
+            <translation>حفظ کلاس‌های دیگر ورودی</translation>
+        </message>
+        <message>
+            <source>Add height above ground</source>
+            <translation>افزودن ارتفاع از زمین</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>ابر نقاط طبقه‌بندی‌شده</translation>
+        </message>
+        <message>
+            <source>Classification report</source>
+            <translation>گزارش طبقه‌بندی</translation>
+        </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
+        <message>
+            <source>Points read</source>
+            <translation>نقاط خوانده‌شده</translation>
+        </message>
+        <message>
+            <source>Ground points (class 2)</source>
+            <translation>نقاط زمینی (کلاس 2)</translation>
+        </message>
+        <message>
+            <source>Vegetation points (classes 3-5)</source>
+            <translation>نقاط پوشش گیاهی (کلاس‌های 3-5)</translation>
+        </message>
+        <message>
+            <source>Building points (class 6)</source>
+            <translation>نقاط ساختمان (کلاس 6)</translation>
+        </message>
+        <message>
+            <source>Low noise points (class 7)</source>
+            <translation>نقاط نویز پایین (کلاس 7)</translation>
+        </message>
+        <message>
+            <source>Buildings</source>
+            <translation>ساختمان‌ها</translation>
+        </message>
+        <message>
+            <source>{} points: {} ground, {} vegetation, {} building, {} low noise; {} buildings</source>
+            <translation>{} نقطه: {} زمینی، {} پوشش گیاهی، {} ساختمان، {} نویز پایین؛ {} ساختمان</translation>
+        </message>
+    </context>
+    <context>
         <name>DsmAlgorithm</name>
         <message>
             <source>DSM and nDSM / canopy height model</source>

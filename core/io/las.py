@@ -378,6 +378,7 @@ def read_las(path, dimensions: Sequence[str] = (), *, chunk_size: int = DEFAULT_
 
 def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] = None,
                    mask: Optional[np.ndarray] = None, chunk_size: int = DEFAULT_CHUNK,
+                   extra: Optional[Mapping[str, np.ndarray]] = None,
                    progress=None, cancel=None) -> int:
     """Copy ``src`` to ``dst`` replacing some dimensions and/or keeping a subset.
 
@@ -395,6 +396,11 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
         ``{"classification": classes}``.
     mask : array of bool, optional
         Full-length selection of the points to write (e.g. ground only).
+    extra : mapping of str to array, optional
+        New extra-bytes dimensions (e.g. ``{"HeightAboveGround": hag}``, one value per
+        point of ``src``), declared with the arrays' dtypes after the file's own
+        dimensions; a name the file already has is replaced in place instead. Every
+        existing field is copied byte for byte into the wider point record.
 
     Returns
     -------
@@ -407,12 +413,7 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
     info = las_info(src)
     if info.count == 0:
         raise ValueError(f"{src} holds no points (empty point cloud).")
-    dimensions = dict(dimensions or {})
-    _check_dims(info, list(dimensions))
-    for name, values in dimensions.items():
-        if np.shape(values) != (info.count,):
-            raise ValueError(f"New values for '{name}' have shape {np.shape(values)}; "
-                             f"expected one per point ({info.count}).")
+    dimensions, extra = _new_values(info, dimensions, extra)
     if mask is not None:
         mask = np.asarray(mask, dtype=bool)
         if mask.shape != (info.count,):
@@ -421,6 +422,11 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
     written = 0
     with _open(src) as reader, atomic_output(dst) as tmp:
         header = reader.header
+        if extra:
+            import copy
+            header = copy.deepcopy(header)
+            header.add_extra_dims([laspy.ExtraBytesParams(name=name, type=np.asarray(v).dtype)
+                                   for name, v in extra.items()])
         with laspy.open(tmp, mode="w", header=header,
                         do_compress=dst.lower().endswith(".laz")) as writer:
             start = 0
@@ -429,6 +435,8 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
                 stop = start + len(chunk)
                 for name, values in dimensions.items():
                     chunk[name] = values[start:stop]
+                if extra:
+                    chunk = _widen(laspy, chunk, header, extra, start, stop)
                 if mask is not None:
                     chunk = chunk[mask[start:stop]]
                 if len(chunk):
@@ -442,7 +450,75 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
             evlrs = getattr(header, "evlrs", None)
             if evlrs:
                 writer.write_evlrs(evlrs)
+        if not extra:
+            _restore_extra_bytes_vlrs(src, tmp)
     return written
+
+
+def _new_values(info: LasInfo, dimensions, extra):
+    """Return the checked ``(dimensions, extra)``; an ``extra`` name the file has is a dimension."""
+    dimensions = dict(dimensions or {})
+    extra = dict(extra or {})
+    for name in [n for n in extra if n in info.dimensions]:
+        dimensions[name] = extra.pop(name)
+    _check_dims(info, list(dimensions))
+    for name, values in {**dimensions, **extra}.items():
+        if np.shape(values) != (info.count,):
+            raise ValueError(f"New values for '{name}' have shape {np.shape(values)}; "
+                             f"expected one per point ({info.count}).")
+    return dimensions, extra
+
+
+def _vlr_table(fh):
+    """``[(user_id, record_id, data offset, length)]`` of the VLRs of an open LAS/LAZ."""
+    import struct
+    fh.seek(94)
+    header_size, _offset, count = struct.unpack("<HII", fh.read(10))
+    pos, out = header_size, []
+    for _ in range(count):
+        fh.seek(pos)
+        head = fh.read(54)
+        if len(head) < 54:
+            break
+        user = head[2:18].split(b"\0", 1)[0]
+        record, length = struct.unpack("<HH", head[18:22])
+        out.append((user, record, pos + 54, length))
+        pos += 54 + length
+    return out
+
+
+def _restore_extra_bytes_vlrs(src, dst) -> None:
+    """Put the source's extra-bytes VLRs back byte for byte into ``dst``.
+
+    laspy's writer recomputes the min/max fields of every extra-bytes descriptor from
+    the points it writes (or resets them), so a copy would not carry the producer's
+    VLR unchanged; the descriptors of a copy describe the same dimensions, so the
+    source's bytes are written back in place (same VLR, same length).
+    """
+    with open(os.fspath(src), "rb") as fs:
+        table = _vlr_table(fs)
+        source = {}
+        for user, record, off, length in table:
+            if user == b"LASF_Spec" and record == 4:
+                fs.seek(off)
+                source.setdefault(length, []).append(fs.read(length))
+    if not source:
+        return
+    with open(os.fspath(dst), "r+b") as fd:
+        for user, record, off, length in _vlr_table(fd):
+            if user == b"LASF_Spec" and record == 4 and source.get(length):
+                fd.seek(off)
+                fd.write(source[length].pop(0))
+
+
+def _widen(laspy, chunk, header, extra, start, stop):
+    """Return the points of ``chunk`` in ``header``'s wider record, new fields from ``extra``."""
+    wide = laspy.ScaleAwarePointRecord.zeros(len(chunk), header=header)
+    for name in chunk.array.dtype.names:
+        wide.array[name] = chunk.array[name]
+    for name, values in extra.items():
+        wide[name] = values[start:stop]
+    return wide
 
 
 def write_las(dst, x, y, z, *, dimensions: Optional[Mapping[str, np.ndarray]] = None,

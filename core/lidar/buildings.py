@@ -58,6 +58,28 @@ class BuildingResult:
     buildings: List[dict] = field(default_factory=list)
     is_building: np.ndarray = None
     dtm: np.ndarray = None
+    #: Roof height of every cell (highest roof point, cells between from the nearest).
+    roof: np.ndarray = None
+
+
+def building_points(res: BuildingResult, x, y, z, hag, classification, *,
+                    min_hag: float = 0.5, above_roof: float = 1.0) -> np.ndarray:
+    """Points of the buildings: roof points, and the others over a footprint up to its roof.
+
+    Over a footprint, a point that is not ground or noise, at least ``min_hag`` m
+    above the DTM (walls, chimneys, roof edges) and at most ``above_roof`` m above
+    the roof (canopy overhanging a roof is vegetation) belongs to the building.
+    """
+    flag = np.zeros(np.shape(x), bool) if res.is_building is None else res.is_building.copy()
+    if res.roof is None or not res.buildings:
+        return flag
+    r, c, inside = res.grid.cell_index(x, y)
+    idx = np.flatnonzero(inside)
+    idx = idx[res.labels[r[idx], c[idx]] > 0]
+    ok = (~np.isin(np.asarray(classification)[idx], EXCLUDED) & (hag[idx] >= min_hag)
+          & (z[idx] <= res.roof[r[idx], c[idx]] + above_roof))
+    flag[idx[ok]] = True
+    return flag
 
 
 def _sample(grid: GridSpec, arr: np.ndarray, x, y) -> np.ndarray:
@@ -65,6 +87,20 @@ def _sample(grid: GridSpec, arr: np.ndarray, x, y) -> np.ndarray:
     out = np.full(np.shape(x), np.nan)
     out[inside] = arr[row[inside], col[inside]]
     return out
+
+
+def fill_nearest(a: np.ndarray) -> np.ndarray:
+    """Return ``a`` with every NaN cell given the value of the nearest finite cell.
+
+    A TIN DTM is NaN outside the hull of the ground points (tile edges, a building
+    on the edge); heights above ground need a value there.
+    """
+    from scipy import ndimage
+    bad = ~np.isfinite(a)
+    if not bad.any() or bad.all():
+        return a
+    idx = ndimage.distance_transform_edt(bad, return_distances=False, return_indices=True)
+    return a[idx[0], idx[1]]
 
 
 def normals(xyz: np.ndarray, k: int = 10):
@@ -266,23 +302,43 @@ def min_area_rectangle(xy: np.ndarray):
         np.array([size_u[i], size_v[i]]) / 2
 
 
-def _regularise(lab, k, grid, xy, rho, min_fill):
+def group_by_label(labels: np.ndarray, n: int):
+    """One stable sort of point labels: ``(order, starts)``.
+
+    The points of label ``k`` (0..n) are ``order[starts[k]:starts[k + 1]]``: every
+    per-building step reads its own points in O(its size) instead of scanning the
+    whole cloud once per building.
+    """
+    labels = np.asarray(labels, dtype=np.int64)
+    order = np.argsort(labels, kind="stable")
+    starts = np.zeros(n + 2, np.int64)
+    np.cumsum(np.bincount(labels, minlength=n + 1)[:n + 1], out=starts[1:])
+    return order, starts
+
+
+def _window(sl, pad: int, shape):
+    """Return the slices ``sl`` (``ndimage.find_objects``) grown by ``pad`` cells, clipped."""
+    return tuple(slice(max(s.start - pad, 0), min(s.stop + pad, n))
+                 for s, n in zip(sl, shape))
+
+
+def _regularise(lab, k, ncell, grid, xy, rho, min_fill):
     """Replace region ``k`` of ``lab`` by the rectangle of its roof points if it fills it.
 
     Most footprints are rectangles; a raster of roof points at a spacing near
     the cell size frays their outline (Sampath & Shan 2007 regularise outlines
-    to dominant directions). When the raster region covers at least ``min_fill``
-    of the points' smallest rectangle, the rectangle is the footprint, each side
-    pushed out by the mean gap between the outermost points and the edge of a
-    side of length ``L`` sampled at density ``rho`` (``1 / (rho L)``).
+    to dominant directions). When the raster region (``ncell`` cells) covers at
+    least ``min_fill`` of the points' smallest rectangle, the rectangle is the
+    footprint, each side pushed out by the mean gap between the outermost points
+    and the edge of a side of length ``L`` sampled at density ``rho``
+    (``1 / (rho L)``). Works on a window around the rectangle only.
     """
     if len(xy) < 4:
-        return
+        return None
     centre, axes, half = min_area_rectangle(xy)
     half = half + 1.0 / (rho * 2.0 * half[::-1].clip(min=grid.cell))
-    cells = lab == k
-    if cells.sum() * grid.cell ** 2 < min_fill * 4.0 * half[0] * half[1]:
-        return
+    if ncell * grid.cell ** 2 < min_fill * 4.0 * half[0] * half[1]:
+        return None
     reach = float(np.hypot(*half)) + grid.cell
     r, c, _ = grid.cell_index(np.array([centre[0] - reach, centre[0] + reach]),
                               np.array([centre[1] + reach, centre[1] - reach]))
@@ -294,6 +350,7 @@ def _regularise(lab, k, grid, xy, rho, min_fill):
     win = lab[r0:r1, c0:c1]
     win[(win == k) & ~inside] = 0
     win[inside & (win == 0)] = k
+    return centre, axes, half
 
 
 def _footprint_labels(grid, x, y, keep, rho, min_area, min_roof_share):
@@ -301,7 +358,9 @@ def _footprint_labels(grid, x, y, keep, rho, min_area, min_roof_share):
 
     A region is a building when its area is at least ``min_area`` and at least
     ``min_roof_share`` of the candidate points over it lie on its roof planes (a
-    tree crown yields planar fragments among mostly rough points).
+    tree crown yields planar fragments among mostly rough points). Returns the
+    labels, their number and the rectangle ``(centre, axes, half)`` of each
+    regularised building (None where the raster outline was kept).
     """
     from scipy import ndimage
     row, col, inside = grid.cell_index(x[keep], y[keep])
@@ -322,17 +381,25 @@ def _footprint_labels(grid, x, y, keep, rho, min_area, min_roof_share):
     lab[drop[lab]] = 0
     b_lab = lab[row[inside], col[inside]]
     kxy = np.column_stack([x[keep][inside], y[keep][inside]])
+    order, starts = group_by_label(b_lab, nlab)
+    rects = {}
     for k in np.flatnonzero(~drop):
-        _regularise(lab, k, grid, kxy[b_lab == k], rho, 0.8)
+        rects[k] = _regularise(lab, k, ncell[k], grid, kxy[order[starts[k]:starts[k + 1]]],
+                               rho, 0.8)
     relabel = np.zeros(nlab + 1, np.int32)
     relabel[~drop] = np.arange(1, int((~drop).sum()) + 1)
-    return relabel[lab], int((~drop).sum())
+    return relabel[lab], int((~drop).sum()), [rects[k] for k in np.flatnonzero(~drop)]
 
 
-def _footprints(grid, x, y, z, dtm, keep, min_area, flat_angle, nz, rho):
-    """Rasterise roof points (density ``rho``) into footprints; measure each one."""
+def _footprints(grid, x, y, z, dtm, keep, min_area, flat_angle, nz, rho,
+                storey_height=3.0):
+    """Rasterise roof points (density ``rho``) into footprints; measure each one.
+
+    Linear in the number of buildings: each one is measured on its own
+    ``find_objects`` window of the raster and its own points (one sort by label).
+    """
     from scipy import ndimage
-    lab, nlab = _footprint_labels(grid, x, y, keep, rho, min_area, 0.5)
+    lab, nlab, rects = _footprint_labels(grid, x, y, keep, rho, min_area, 0.5)
     # roof heights of the cells, closed cells from the nearest roof point (volume)
     row, col, inside = grid.cell_index(x[keep], y[keep])
     roof = np.full(grid.shape, -np.inf)
@@ -342,30 +409,39 @@ def _footprints(grid, x, y, z, dtm, keep, min_area, flat_angle, nz, rho):
     roof_f = roof[near[0], near[1]]
     mask = lab > 0
     b_lab = lab[row[inside], col[inside]]
+    nz_sum = np.bincount(b_lab, weights=nz[keep][inside], minlength=nlab + 1)
+    nz_cnt = np.bincount(b_lab, minlength=nlab + 1)
     ra, ca, all_in = grid.cell_index(x, y)
     a_lab = lab[ra[all_in], ca[all_in]]
+    z_in = z[all_in]
+    order, starts = group_by_label(a_lab, nlab)
+    objs = ndimage.find_objects(lab, max_label=nlab)
     out = []
     for k in range(1, nlab + 1):
-        cells = lab == k
-        ring = ndimage.binary_dilation(cells, np.ones((3, 3)), iterations=2) & ~mask
-        g = np.nanmean(dtm[ring]) if np.isfinite(dtm[ring]).any() else np.nanmean(dtm[cells])
-        top = float(np.percentile(z[all_in][a_lab == k], 99))
+        win = _window(objs[k - 1], 2, grid.shape)
+        cells = lab[win] == k
+        ring = ndimage.binary_dilation(cells, np.ones((3, 3)), iterations=2) & ~mask[win]
+        d = dtm[win]
+        g = np.nanmean(d[ring]) if np.isfinite(d[ring]).any() else np.nanmean(d[cells])
+        top = float(np.percentile(z_in[order[starts[k]:starts[k + 1]]], 99))
         h = top - g
-        mean_nz = float(np.mean(nz[keep][inside][b_lab == k]))
+        mean_nz = float(nz_sum[k] / max(nz_cnt[k], 1))
         out.append({"id": k, "height": h, "area": float(cells.sum() * grid.cell ** 2),
-                    "volume": float(np.nansum(roof_f[cells] - dtm[cells]) * grid.cell ** 2),
-                    "storeys": max(1, int(h // 3.0)), "ground": float(g), "roof": top,
+                    "volume": float(np.nansum(roof_f[win][cells] - d[cells])
+                                    * grid.cell ** 2),
+                    "storeys": max(1, int(h // storey_height)), "ground": float(g),
+                    "roof": top,
                     "roof_type": "flat" if mean_nz >= math.cos(math.radians(flat_angle))
                     else "pitched"})
-    return lab, out
+    return lab, out, roof_f
 
 
 def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
                       min_height: float = 2.0, cell: float = 0.5, k: int = 10,
                       radius: float = 1.5, max_angle: float = 20.0,
                       min_patch_area: float = 15.0, min_area: float = 15.0,
-                      flat_angle: float = 10.0, crs=None, progress=None,
-                      cancel=None) -> BuildingResult:
+                      flat_angle: float = 10.0, storey_height: float = 3.0, crs=None,
+                      dtm=None, progress=None, cancel=None) -> BuildingResult:
     """Extract building footprints with height, area, volume, storeys and roof type.
 
     Parameters
@@ -383,8 +459,13 @@ def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
         Smallest building footprint (m²).
     flat_angle : float
         Roofs whose mean normal is within this angle of vertical are 'flat' (degrees).
+    storey_height : float
+        Height of one storey (m; the spec gives 2.5–3.5).
     crs : str, optional
         CRS of the grid.
+    dtm : (GridSpec, ndarray), optional
+        A TIN DTM of the ground points already computed (e.g. by the classification);
+        by default one is made on a ``cell`` grid.
     progress, cancel : callable, optional
         See :class:`~..progress.Monitor`.
 
@@ -398,8 +479,11 @@ def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
     if ground.sum() < 3:
         raise InputError("No ground points (class 2) in the cloud: run a ground filter "
                          "first (e.g. the slope-based or LSQ ground filter).")
-    grid = grid_from_points(x, y, cell, crs=crs)
-    dtm = tin_grid(x[ground], y[ground], z[ground], grid, fill=True).z
+    if dtm is None:
+        grid = grid_from_points(x, y, cell, crs=crs)
+        dtm = fill_nearest(tin_grid(x[ground], y[ground], z[ground], grid, fill=True).z)
+    else:
+        grid, dtm = dtm
     mon.step(0.3)
     hag = z - _sample(grid, dtm, x, y)
     cand = np.flatnonzero(~np.isin(cls, EXCLUDED) & (hag > min_height))
@@ -422,14 +506,14 @@ def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
     if not keep.any():
         return BuildingResult(grid, np.zeros(grid.shape, np.int32), [], flag, dtm)
     rho = float(np.median(density[keep]))
-    labels, blds = _footprints(grid, x[cand], y[cand], z[cand], dtm, keep, min_area,
-                               flat_angle, fit[0][:, 2], rho)
+    labels, blds, roof = _footprints(grid, x[cand], y[cand], z[cand], dtm, keep, min_area,
+                                     flat_angle, fit[0][:, 2], rho, storey_height)
     r, c, inside = grid.cell_index(x[cand], y[cand])
     on = np.zeros(cand.size, bool)
     on[inside] = labels[r[inside], c[inside]] > 0
     flag[cand[on & (lab >= 0)]] = True
     mon.step(1.0)
-    return BuildingResult(grid, labels, blds, flag, dtm)
+    return BuildingResult(grid, labels, blds, flag, dtm, roof)
 
 
 def buildings_report(res: BuildingResult, name: str, params: dict):

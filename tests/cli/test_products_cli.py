@@ -105,3 +105,14 @@ def test_buildings_defaults(qgis_process, demo):
     assert (np.asarray(out.classification)[changed] == 6).all()
     assert np.array_equal(np.asarray(out.intensity), np.asarray(src.intensity))
     assert 'id="footprint-map"' in (d / "b.html").read_text("utf-8")
+
+
+def test_classify_defaults(qgis_process, demo):
+    import laspy
+    d, laz = demo
+    res = qgis_process.run("geomatics:classify", INPUT=laz, OUTPUT=str(d / "asprs.laz"),
+                           OUTPUT_HTML=str(d / "asprs.html"), REPORT_LANGUAGE=2)["results"]
+    got = np.asarray(laspy.read(str(d / "asprs.laz")).classification)
+    assert {2, 3, 4, 5, 6, 7} <= set(np.unique(got).tolist())
+    assert res["N_POINTS"] == got.size and res["N_BUILDING"] == (got == 6).sum() > 1000
+    assert 'dir="rtl"' in (d / "asprs.html").read_text("utf-8")

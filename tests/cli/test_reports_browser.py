@@ -170,6 +170,11 @@ def _buildings(tmp_path):
             ["footprint-map"])
 
 
+def _classify(tmp_path):
+    return dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "asprs.laz"), "OUTPUT_HTML", \
+        ["class-map"]
+
+
 def _change(tmp_path):
     """Two epochs: the DTM and the same DTM with a 2 m fill on a 20 m x 20 m square."""
     from geomatics_toolbox.core.io.raster import read_raster, write_geotiff
@@ -206,6 +211,7 @@ CASES = {
     "geomatics:ptdgroundfilter": _ptd,
     "geomatics:lidarqa": _lidarqa,
     "geomatics:buildings": _buildings,
+    "geomatics:classify": _classify,
     "geomatics:elevationchange": _change,
 }
 
