@@ -296,9 +296,14 @@ def classify_file_asprs(src, *, cloud: str, report: Optional[str] = None,
         t0 = time.perf_counter()
         pd = read_cloud(src, returns=False, monitor=mon.sub(0.0, 0.1))
         t_read = time.perf_counter() - t0
+        # read_cloud converts the coordinates to metres; heights go back to the data's
+        # vertical unit for the HeightAboveGround dimension
+        units = pd.info.units
         res = classify_points(pd.x, pd.y, pd.z, pd["classification"], options=options,
-                              units=pd.info.units, crs=pd.info.crs,
-                              progress=mon.sub(0.1, 0.85).update, cancel=mon.cancelled)
+                              crs=pd.info.crs, progress=mon.sub(0.1, 0.85).update,
+                              cancel=mon.cancelled)
+        res.hag = (res.hag / units.v).astype(np.float32)
+        res.units = units
         t1 = time.perf_counter()
         write_las_like(src, out.path(cloud_name),
                        dimensions={"classification": res.classes.astype(
