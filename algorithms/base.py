@@ -55,6 +55,14 @@ def first_sentence(html: str) -> str:
     return sentence
 
 
+def default_decimals(value, most: int = 6) -> int:
+    """Decimals needed to show ``value`` exactly (at most ``most``); 0 for None."""
+    if value is None:
+        return 0
+    text = f"{float(value):.{most}f}".rstrip("0")
+    return len(text.split(".")[1]) if "." in text else 0
+
+
 def _groups():
     # Literal translate() calls so that pylupdate5 finds the group names.
     return {
@@ -152,8 +160,14 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
     # ---------------------------------------------------------------- parameters
     def add_number(self, name: str, label: str, default=None, *, minimum=None,
                    maximum=None, integer: bool = False, optional: bool = False,
-                   advanced: bool = False, help_text: str | None = None):
-        """Add a numeric parameter (double unless ``integer``); returns it."""
+                   advanced: bool = False, help_text: str | None = None,
+                   decimals: int | str | None = "auto"):
+        """Add a numeric parameter (double unless ``integer``); returns it.
+
+        ``decimals``: digits the dialog's spin box shows (QGIS shows six: "50.000000");
+        ``"auto"`` = two, or as many as the default needs (at most six); ``None`` keeps
+        QGIS's six (values in map units, which may be degrees).
+        """
         kind = (QgsProcessingParameterNumber.Integer if integer
                 else QgsProcessingParameterNumber.Double)
         param = QgsProcessingParameterNumber(name, label, kind, default, optional)
@@ -161,6 +175,11 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
             param.setMinimum(minimum)
         if maximum is not None:
             param.setMaximum(maximum)
+        if not integer and decimals is not None:
+            if decimals == "auto":
+                decimals = max(2, default_decimals(default))
+            param.setMetadata({**param.metadata(),
+                               "widget_wrapper": {"decimals": int(decimals)}})
         return self.add(param, advanced=advanced, help_text=help_text)
 
     def add(self, param, *, advanced: bool = False, help_text: str | None = None):

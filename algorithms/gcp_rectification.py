@@ -37,11 +37,11 @@ PIXEL_ORIGINS = ("corner", "center")
 #: RESAMPLING options: GDAL's method name after a translated label.
 RESAMPLING_LABELS = {
     "near": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Nearest neighbour (near)"),
-    "bilinear": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Bilinear (bilinear)"),
+    "bilinear": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Bilinear"),
     "cubic": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Cubic convolution (cubic)"),
     "cubicspline": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Cubic spline (cubicspline)"),
     "lanczos": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Lanczos windowed sinc (lanczos)"),
-    "average": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Average (average)"),
+    "average": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Average"),
     "mode": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Most frequent value (mode)"),
 }
 
@@ -177,13 +177,13 @@ class _GcpBase(TransformationParams, GeomaticsAlgorithm):
         self.add_transformation_params(default=0)
         self.add_number(self.REFINE_TOLERANCE, self.tr(
             "Refinement tolerance (map units) [default: C5 limit 5·GR]"), minimum=0.0,
-            optional=True, advanced=True)
+            optional=True, advanced=True, decimals=None)
         self.add_number(self.MIN_GCPS, self.tr(
             "Minimum GCPs kept by the refinement [default: minimum + 2]"), minimum=0,
             integer=True, optional=True, advanced=True)
         self.add_number(self.GR, self.tr("Ground resolution GR (map units/pixel) "
                                          "[default: from the GCPs]"), minimum=0.0,
-                        optional=True)
+                        optional=True, decimals=None)
 
     def add_numbers_outputs(self):
         """Declare the summary numbers and the transformation names as outputs."""
@@ -439,7 +439,8 @@ class RectifyGcpAlgorithm(_GcpBase):
         self.add(QgsProcessingParameterEnum(self.RESAMPLING, self.tr("Resampling"),
                                             resampling_options(self.tr), defaultValue=0))
         self.add_number(self.RESOLUTION, self.tr("Output resolution (target CRS units) "
-                                                 "[default: GR]"), minimum=0.0, optional=True)
+                                                 "[default: GR]"), minimum=0.0, optional=True,
+                        decimals=None)
         self.add_number(self.NODATA, self.tr("Output nodata value"), optional=True,
                         advanced=True)
         self.add(QgsProcessingParameterRasterDestination(self.OUTPUT,

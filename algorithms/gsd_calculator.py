@@ -157,17 +157,17 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
         required = self.tr("Required with the Custom camera; overrides the preset.")
         self.add_number(self.SENSOR_WIDTH, self.tr("Sensor width (mm) — required with "
                                                    "Custom"),
-                        minimum=0.0, optional=True, help_text=required)
+                        minimum=0.0, optional=True, help_text=required, decimals=3)
         self.add_number(self.IMAGE_WIDTH, self.tr("Image width (px) — required with "
                                                   "Custom"),
-                        minimum=0.0, optional=True, help_text=required)
+                        minimum=0.0, optional=True, help_text=required, decimals=0)
         self.add_number(self.FOCAL_LENGTH, self.tr("Focal length, true (mm) — required "
                                                    "with Custom"),
-                        minimum=0.0, optional=True, help_text=required)
+                        minimum=0.0, optional=True, help_text=required, decimals=3)
         self.add_number(self.SENSOR_HEIGHT, self.tr("Sensor height (mm)"), minimum=0.0,
-                        optional=True, advanced=True)
+                        optional=True, advanced=True, decimals=3)
         self.add_number(self.IMAGE_HEIGHT, self.tr("Image height (px)"), minimum=0.0,
-                        optional=True, advanced=True)
+                        optional=True, advanced=True, decimals=0)
         self.add_number(self.TARGET_GSD, self.tr("Target GSD (cm/px)"), minimum=0.0,
                         optional=True)
         self.add(QgsProcessingParameterBoolean(
@@ -191,7 +191,8 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
                             (self.OBSERVED_SXYZ, self.tr("Observed σxyz (mm)")),
                             (self.OBSERVED_DENSE_STD,
                              self.tr("Observed dense-cloud std (cm)"))):
-            self.add_number(name, label, minimum=0.0, optional=True, advanced=True)
+            self.add_number(name, label, minimum=0.0, optional=True, advanced=True,
+                            decimals=3)
         self.add_number(self.STEREO_BASE, self.tr("Stereo base B (m) [extension]"),
                         minimum=0.0, optional=True, advanced=True)
         self.add_number(self.FORWARD_OVERLAP, self.tr("Forward overlap (%) [extension]"),
@@ -315,7 +316,7 @@ class GsdBatchAlgorithm(GeomaticsAlgorithm):
         return "gsdbatch"
 
     def displayName(self):  # noqa: N802
-        return self.tr("GSD and photogrammetric accuracy calculator (batch table)")
+        return self.tr("GSD calculator over a table of cameras and distances")
 
     def shortHelpString(self):  # noqa: N802
         return build_help(self, self.tr(

@@ -21,6 +21,8 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
+from .locale import user_locale
+
 #: the help's own words (QT_TRANSLATE_NOOP so that pylupdate5 files them)
 _WORDS = (
     QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Example"),
@@ -122,4 +124,23 @@ def build_help(alg, summary: str, example: str, notes: dict | None = None) -> st
              "<ul>" + "".join(lines) + "</ul>"]
     if numbers:
         parts.append(f"<p><b>{_tr('Also returned')}</b>: " + "; ".join(numbers) + "</p>")
-    return "".join(parts)
+    return right_to_left("".join(parts)) if _rtl() else "".join(parts)
+
+
+def _rtl() -> bool:
+    """True when the QGIS interface language is written right to left (ar, fa)."""
+    try:
+        from ..core.reporting.i18n import direction
+        return direction(user_locale()) == "rtl"
+    except Exception:  # noqa: BLE001 - the direction is cosmetic
+        return False
+
+
+def right_to_left(text: str) -> str:
+    """``text`` (help HTML) laid out right to left: ``dir="rtl"`` on the panel and on
+    every paragraph and list (Qt's rich text does not inherit a div's direction), except
+    the blocks marked ``dir="ltr"`` (the command line example)."""
+    import re
+    text = re.sub(r"<(p|ul|ol|li)>", r'<\1 dir="rtl">', text)
+    return f'<div dir="rtl">{text}</div>'
+

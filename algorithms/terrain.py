@@ -47,11 +47,11 @@ LAS_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
 
 #: VARIOGRAM options (PyKrige's model name after a translated label)
 VARIOGRAM_LABELS = {
-    "linear": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Linear (linear)"),
-    "power": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Power (power)"),
-    "gaussian": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Gaussian (gaussian)"),
-    "spherical": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Spherical (spherical)"),
-    "exponential": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Exponential (exponential)"),
+    "linear": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Linear"),
+    "power": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Power"),
+    "gaussian": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Gaussian"),
+    "spherical": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Spherical"),
+    "exponential": QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Exponential"),
 }
 
 #: ASPRS LAS 1.4 R15 classes 0–22 (index = class code), for the class pickers.
@@ -135,9 +135,12 @@ class _GridAlgorithm(GeomaticsAlgorithm):
         """
         options = [f"{c} — {self.tr(n)}"  # i18n: noop-list
                    for c, n in enumerate(ASPRS_CLASSES)]
-        return QgsProcessingParameterEnum(
+        param = QgsProcessingParameterEnum(
             name, label, options,
             allowMultiple=True, defaultValue=list(default), optional=True)
+        # check boxes, not the chooser that only says "1 options selected"
+        param.setMetadata({"widget_wrapper": {"useCheckBoxes": True, "columns": 3}})
+        return param
 
     def classes(self, parameters, name, context):
         """Selected class codes (``()`` = every class)."""

@@ -180,7 +180,7 @@
         </message>
         <message>
             <source>Ground in class 2 (run a ground filter first), in a projected CRS (metres).</source>
-            <translation>الأرض في الفئة 2 (شغّل مرشّح أرض أولًا)، بنظام إحداثيات مُسقَط (بالأمتار).</translation>
+            <translation>الأرض في الفئة 2 (شغّل مرشح أرض أولًا)، بنظام إحداثيات مُسقَط (بالأمتار).</translation>
         </message>
         <message>
             <source>The specification gives 1.5–2 m.</source>
@@ -414,7 +414,7 @@
         </message>
         <message>
             <source>The {} is in {} but the DTM is in {}. Reproject the check points first or tick 'Reproject check points to the DTM CRS' (REPROJECT=true; x, y only, heights are not converted). No output was written.</source>
-            <translation>{} بنظام الإحداثيات {} لكن نموذج الارتفاعات الرقمي بنظام {}. أعد إسقاط نقاط التحقق أولاً أو فعِّل الخيار 'إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM' (REPROJECT=true؛ x وy فقط، ولا تُحوَّل الارتفاعات). لم تُكتب أي مخرجات.</translation>
+            <translation>{} بنظام الإحداثيات {} لكن نموذج التضاريس الرقمي بنظام {}. أعد إسقاط نقاط التحقق أولاً أو فعِّل الخيار 'إعادة إسقاط نقاط التحقق إلى نظام إحداثيات DTM' (REPROJECT=true؛ x وy فقط، ولا تُحوَّل الارتفاعات). لم تُكتب أي مخرجات.</translation>
         </message>
         <message>
             <source>Check points reprojected from {} to {}</source>
@@ -422,7 +422,7 @@
         </message>
         <message>
             <source>Check points assumed to be in the DTM's CRS.</source>
-            <translation>افتُرض أن نقاط التحقق بنظام إحداثيات نموذج الارتفاعات الرقمي.</translation>
+            <translation>افتُرض أن نقاط التحقق بنظام إحداثيات نموذج التضاريس الرقمي.</translation>
         </message>
     </context>
     <context>
@@ -576,7 +576,7 @@
         </message>
         <message>
             <source>DTM (for the nDSM; its grid is used)</source>
-            <translation>نموذج الارتفاعات الرقمي للأرض DTM (لحساب nDSM؛ تُستخدم شبكته)</translation>
+            <translation>نموذج التضاريس الرقمي DTM (لحساب nDSM؛ تُستخدم شبكته)</translation>
         </message>
         <message>
             <source>Clamp negative nDSM heights to 0</source>
@@ -592,11 +592,11 @@
         </message>
         <message>
             <source>The point cloud CRS ({}) differs from the DTM CRS ({}); give a DTM in the point cloud's CRS. No output was written.</source>
-            <translation>نظام إحداثيات سحابة النقاط ({}) يختلف عن نظام إحداثيات نموذج الارتفاعات الرقمي ({})؛ استخدم نموذج ارتفاعات رقمياً بنظام إحداثيات سحابة النقاط. لم تُكتب أي مخرجات.</translation>
+            <translation>نظام إحداثيات سحابة النقاط ({}) يختلف عن نظام إحداثيات نموذج التضاريس الرقمي ({})؛ استخدم نموذج ارتفاعات رقمياً بنظام إحداثيات سحابة النقاط. لم تُكتب أي مخرجات.</translation>
         </message>
         <message>
             <source>The nDSM needs a DTM: give the DTM parameter (e.g. the output of the IDW DTM algorithm). No output was written.</source>
-            <translation>يتطلب nDSM نموذج ارتفاعات رقمياً للأرض: حدِّد المعامل DTM (مثلاً مخرج خوارزمية نموذج الارتفاعات الرقمي بطريقة IDW). لم تُكتب أي مخرجات.</translation>
+            <translation>يتطلب nDSM نموذج ارتفاعات رقمياً للأرض: حدِّد المعامل DTM (مثلاً مخرج خوارزمية نموذج التضاريس الرقمي بطريقة IDW). لم تُكتب أي مخرجات.</translation>
         </message>
         <message>
             <source>DSM report</source>
@@ -639,7 +639,7 @@
         <name>DtmAccuracyAlgorithm</name>
         <message>
             <source>DTM accuracy against check points</source>
-            <translation>دقة نموذج الارتفاعات الرقمي للأرض مقارنةً بنقاط التحقق</translation>
+            <translation>دقة نموذج التضاريس الرقمي مقارنةً بنقاط التحقق</translation>
         </message>
         <message>
             <source>dtm,dem,accuracy,rmse,check points,gnss,nmad,asprs,vertical accuracy,validation</source>
@@ -647,7 +647,7 @@
         </message>
         <message>
             <source>DTM</source>
-            <translation>نموذج الارتفاعات الرقمي للأرض (DTM)</translation>
+            <translation>نموذج التضاريس الرقمي (DTM)</translation>
         </message>
         <message>
             <source>Band</source>
@@ -667,7 +667,7 @@
         </message>
         <message>
             <source>Choose a DTM raster.</source>
-            <translation>اختر طبقة راستر لنموذج الارتفاعات الرقمي للأرض.</translation>
+            <translation>اختر طبقة راستر لنموذج التضاريس الرقمي.</translation>
         </message>
         <message>
             <source>N = {}, RMSE = {:.4f} m, ME = {:.4f} m, r = {:.5f}; {} outside, {} on nodata</source>
@@ -896,7 +896,7 @@
         <name>GeomaticsAlgorithm</name>
         <message>
             <source>LiDAR ground filtering</source>
-            <translation>فلترة نقاط الأرض في بيانات الليدار</translation>
+            <translation>ترشيح نقاط الأرض في بيانات الليدار</translation>
         </message>
         <message>
             <source>Terrain models</source>
@@ -1175,10 +1175,6 @@
             <translation>أقرب جار (near)</translation>
         </message>
         <message>
-            <source>Bilinear (bilinear)</source>
-            <translation>ثنائي الخطية (bilinear)</translation>
-        </message>
-        <message>
             <source>Cubic convolution (cubic)</source>
             <translation>الالتفاف التكعيبي (cubic)</translation>
         </message>
@@ -1189,10 +1185,6 @@
         <message>
             <source>Lanczos windowed sinc (lanczos)</source>
             <translation>دالة sinc المُنوفذة لـ Lanczos (lanczos)</translation>
-        </message>
-        <message>
-            <source>Average (average)</source>
-            <translation>المتوسط (average)</translation>
         </message>
         <message>
             <source>Most frequent value (mode)</source>
@@ -1263,26 +1255,6 @@
             <translation>RMS_T لنقاط التحقق (وإلا فبطريقة ترك واحدة) للتحويل المستخدم</translation>
         </message>
         <message>
-            <source>Linear (linear)</source>
-            <translation>خطي (linear)</translation>
-        </message>
-        <message>
-            <source>Power (power)</source>
-            <translation>أُسّية القوة (power)</translation>
-        </message>
-        <message>
-            <source>Gaussian (gaussian)</source>
-            <translation>غاوسي (gaussian)</translation>
-        </message>
-        <message>
-            <source>Spherical (spherical)</source>
-            <translation>كروي (spherical)</translation>
-        </message>
-        <message>
-            <source>Exponential (exponential)</source>
-            <translation>أُسّي (exponential)</translation>
-        </message>
-        <message>
             <source>Colour ramp</source>
             <translation>تدرّج لوني</translation>
         </message>
@@ -1301,6 +1273,34 @@
         <message>
             <source>Could not style the layer {name}: {error}</source>
             <translation>تعذّر تطبيق النمط على الطبقة {name}: {error}</translation>
+        </message>
+        <message>
+            <source>Linear</source>
+            <translation>خطي (linear)</translation>
+        </message>
+        <message>
+            <source>Power</source>
+            <translation>أُسّية القوة (power)</translation>
+        </message>
+        <message>
+            <source>Gaussian</source>
+            <translation>غاوسي (gaussian)</translation>
+        </message>
+        <message>
+            <source>Spherical</source>
+            <translation>كروي (spherical)</translation>
+        </message>
+        <message>
+            <source>Exponential</source>
+            <translation>أُسّي (exponential)</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>ثنائي الخطية</translation>
+        </message>
+        <message>
+            <source>Average</source>
+            <translation>المتوسط (average)</translation>
         </message>
         <message>
             <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
@@ -1322,23 +1322,23 @@
         <name>GroundFilterAccuracyAlgorithm</name>
         <message>
             <source>Ground filter accuracy</source>
-            <translation>دقة فلتر نقاط الأرض</translation>
+            <translation>دقة مرشح نقاط الأرض</translation>
         </message>
         <message>
             <source>lidar,ground,filter,accuracy,type i,type ii,total error,kappa,isprs,reference,confusion matrix</source>
-            <translation>ليدار,أرض,فلتر,الدقة,النوع الأول,النوع الثاني,الخطأ الكلي,كابا,isprs,مرجع,مصفوفة الالتباس</translation>
+            <translation>ليدار,أرض,مرشح,الدقة,النوع الأول,النوع الثاني,الخطأ الكلي,كابا,isprs,مرجع,مصفوفة الالتباس</translation>
         </message>
         <message>
             <source>Filtered point cloud (LAS/LAZ)</source>
-            <translation>سحابة النقاط المفلترة (LAS/LAZ)</translation>
+            <translation>سحابة النقاط المرشحة (LAS/LAZ)</translation>
         </message>
         <message>
             <source>Class dimension of the filtered cloud</source>
-            <translation>بُعد الصنف في السحابة المفلترة</translation>
+            <translation>بُعد الصنف في السحابة المرشحة</translation>
         </message>
         <message>
             <source>Ground classes of the filtered cloud</source>
-            <translation>أصناف الأرض في السحابة المفلترة</translation>
+            <translation>أصناف الأرض في السحابة المرشحة</translation>
         </message>
         <message>
             <source>Reference point cloud (same points, same order)</source>
@@ -1366,7 +1366,7 @@
         </message>
         <message>
             <source>Compares a filtered point cloud with reference labels using the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix, Type I = b/(a+b), Type II = c/(c+d), total error and Cohen's kappa. An optional per-point error cloud shows where the filter fails.</source>
-            <translation>يقارن سحابة نقاط مرشَّحة بتصنيفات مرجعية وفق مقاييس اختبار المرشّحات لـ ISPRS ‏(Sithole &amp;amp; Vosselman 2004): المصفوفة المتقاطعة، والنوع الأول = b/(a+b)، والنوع الثاني = c/(c+d)، والخطأ الكلي، ومعامل كابا لكوهين. وتُظهر سحابة أخطاء اختيارية لكل نقطة أين يخفق المرشّح.</translation>
+            <translation>يقارن سحابة نقاط مرشَّحة بتصنيفات مرجعية وفق مقاييس اختبار المرشحات لـ ISPRS ‏(Sithole &amp;amp; Vosselman 2004): المصفوفة المتقاطعة، والنوع الأول = b/(a+b)، والنوع الثاني = c/(c+d)، والخطأ الكلي، ومعامل كابا لكوهين. وتُظهر سحابة أخطاء اختيارية لكل نقطة أين يخفق المرشح.</translation>
         </message>
         <message>
             <source>A list such as 2,8 is accepted; every other class counts as an object.</source>
@@ -1386,7 +1386,7 @@
         </message>
         <message>
             <source>Ground filter accuracy report</source>
-            <translation>تقرير دقة مرشّح الأرض</translation>
+            <translation>تقرير دقة مرشح الأرض</translation>
         </message>
     </context>
     <context>
@@ -1467,10 +1467,6 @@
     <context>
         <name>GsdBatchAlgorithm</name>
         <message>
-            <source>GSD and photogrammetric accuracy calculator (batch table)</source>
-            <translation>حاسبة GSD والدقة التصويرية (جدول دفعي)</translation>
-        </message>
-        <message>
             <source>Table of cameras and distances</source>
             <translation>جدول الكاميرات والمسافات</translation>
         </message>
@@ -1522,6 +1518,10 @@
             <source>The input columns plus gsd_cm, footprint_width_m, sigma_xyz_mm, dense_resolution_cm and every other result.</source>
             <translation>أعمدة المدخلات مضافًا إليها gsd_cm وfootprint_width_m وsigma_xyz_mm وdense_resolution_cm وكل النتائج الأخرى.</translation>
         </message>
+        <message>
+            <source>GSD calculator over a table of cameras and distances</source>
+            <translation>حاسبة GSD لجدول من الكاميرات والمسافات</translation>
+        </message>
     </context>
     <context>
         <name>GsdCalculatorAlgorithm</name>
@@ -1547,7 +1547,7 @@
         </message>
         <message>
             <source>Sensor height (mm)</source>
-            <translation>ارتفاع الحساس (مم)</translation>
+            <translation>ارتفاع المستشعر (مم)</translation>
         </message>
         <message>
             <source>Image height (px)</source>
@@ -1702,7 +1702,7 @@
         <name>IdwDtmAlgorithm</name>
         <message>
             <source>DTM by inverse distance weighting (IDW)</source>
-            <translation>نموذج الارتفاعات الرقمي للأرض بطريقة مقلوب المسافة الموزون (IDW)</translation>
+            <translation>استيفاء مقلوب المسافة الموزون (IDW) لنموذج التضاريس الرقمي</translation>
         </message>
         <message>
             <source>dtm,dem,idw,inverse distance,interpolation,lidar,ground,gdal_grid,invdistnn,raster</source>
@@ -1726,11 +1726,11 @@
         </message>
         <message>
             <source>IDW DTM</source>
-            <translation>نموذج الارتفاعات الرقمي للأرض بطريقة IDW</translation>
+            <translation>نموذج التضاريس الرقمي بطريقة IDW</translation>
         </message>
         <message>
             <source>IDW DTM report</source>
-            <translation>تقرير نموذج الارتفاعات الرقمي بطريقة IDW</translation>
+            <translation>تقرير نموذج التضاريس الرقمي بطريقة IDW</translation>
         </message>
         <message>
             <source>Interpolates a terrain raster from the ground points of a LAS/LAZ file by inverse distance weighting (Shepard 1968) over the nearest neighbours of each cell centre. It follows &lt;code&gt;gdal_grid -a invdistnn&lt;/code&gt; but works in blocks on a KD-tree, so a million points take seconds.</source>
@@ -1769,7 +1769,7 @@
         <name>KrigingDtmAlgorithm</name>
         <message>
             <source>DTM by kriging (ordinary / universal)</source>
-            <translation>نموذج الارتفاعات الرقمي للأرض بطريقة الكريغينغ (العادي / الشامل)</translation>
+            <translation>الكريغينغ (العادي / الشامل) لنموذج التضاريس الرقمي</translation>
         </message>
         <message>
             <source>dtm,dem,kriging,variogram,geostatistics,pykrige,interpolation,lidar,variance,cross-validation</source>
@@ -1817,7 +1817,7 @@
         </message>
         <message>
             <source>Kriging DTM</source>
-            <translation>نموذج الارتفاعات الرقمي للأرض بطريقة الكريغينغ</translation>
+            <translation>نموذج التضاريس الرقمي بطريقة الكريغينغ</translation>
         </message>
         <message>
             <source>Write standard deviation instead of variance</source>
@@ -1861,7 +1861,7 @@
         </message>
         <message>
             <source>Kriging DTM report</source>
-            <translation>تقرير نموذج الارتفاعات الرقمي بطريقة الكريغينغ</translation>
+            <translation>تقرير نموذج التضاريس الرقمي بطريقة الكريغينغ</translation>
         </message>
         <message>
             <source>Kriges the ground points of a LAS/LAZ file onto a raster (ordinary kriging, or universal kriging with a linear drift) and can also write the kriging variance. The variogram is fitted on a random sample or given by you, and each cell is kriged from its nearest points, so a million points take about a minute.</source>
@@ -1936,7 +1936,7 @@
         <name>LidarFilterMixin</name>
         <message>
             <source>{} points: {} ground, {} non-ground, {} low outliers; filter {:.1f} s</source>
-            <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الفلترة {:.1f} ث</translation>
+            <translation>{} نقطة: {} أرضية، {} غير أرضية، {} قيم شاذة منخفضة؛ الترشيح {:.1f} ث</translation>
         </message>
         <message>
             <source>Classified point cloud</source>
@@ -1951,7 +1951,7 @@
         </message>
         <message>
             <source>Density rasters, gaps, duplicates and noise of a cloud, and the filter window and DTM cell its density supports.</source>
-            <translation>شبكات الكثافة والفجوات والنقاط المكررة والضوضاء في سحابة، ونافذة المرشّح وخلية نموذج التضاريس التي تسمح بها كثافتها.</translation>
+            <translation>شبكات الكثافة والفجوات والنقاط المكررة والضوضاء في سحابة، ونافذة المرشح وخلية نموذج التضاريس التي تسمح بها كثافتها.</translation>
         </message>
         <message>
             <source>density,quality,qa,lasinfo,gaps,duplicates,noise,scan angle,returns,advice,lidar</source>
@@ -1979,7 +1979,7 @@
         </message>
         <message>
             <source>Checks a LAS/LAZ cloud before processing: density of all, last and ground returns, gaps without ground, duplicates, noise share and scan angles. It then states which settings the density supports: ground filter window, DTM cell size, LOD1 only below 1 pt/m², and the radius and tile of the slope-based and LSQ filters.</source>
-            <translation>يفحص سحابة LAS/LAZ قبل المعالجة: كثافة كل الانعكاسات والأخيرة منها وانعكاسات الأرض، والفجوات الخالية من الأرض، والنقاط المكررة، ونسبة الضجيج، وزوايا المسح. ثم يبيّن الإعدادات التي تدعمها الكثافة: نافذة مرشّح الأرض، وحجم خلية DTM، وLOD1 فقط دون 1 pt/m²، ونصف قطر مرشّح الانحدار وبلاطة مرشّح LSQ.</translation>
+            <translation>يفحص سحابة LAS/LAZ قبل المعالجة: كثافة كل الانعكاسات والأخيرة منها وانعكاسات الأرض، والفجوات الخالية من الأرض، والنقاط المكررة، ونسبة الضجيج، وزوايا المسح. ثم يبيّن الإعدادات التي تدعمها الكثافة: نافذة مرشح الأرض، وحجم خلية DTM، وLOD1 فقط دون 1 pt/m²، ونصف قطر مرشح الانحدار وبلاطة مرشح LSQ.</translation>
         </message>
         <message>
             <source>In a projected CRS (metres); a cloud in degrees is refused.</source>
@@ -2019,7 +2019,7 @@
         </message>
         <message>
             <source>Ground filter window (m)</source>
-            <translation>نافذة مرشّح الأرض (م)</translation>
+            <translation>نافذة مرشح الأرض (م)</translation>
         </message>
         <message>
             <source>Recommended DTM cell (m)</source>
@@ -2066,7 +2066,7 @@
         </message>
         <message>
             <source>DTM</source>
-            <translation>نموذج الارتفاعات الرقمي للأرض (DTM)</translation>
+            <translation>نموذج التضاريس الرقمي (DTM)</translation>
         </message>
         <message>
             <source>Check-point residuals</source>
@@ -2082,7 +2082,7 @@
         </message>
         <message>
             <source>Ground filter report</source>
-            <translation>تقرير مرشّح الأرض</translation>
+            <translation>تقرير مرشح الأرض</translation>
         </message>
         <message>
             <source>DTM report</source>
@@ -2114,7 +2114,7 @@
         </message>
         <message>
             <source>The ground filter found no ground point; no DTM can be interpolated. No output was written.</source>
-            <translation>لم يجد مرشّح الأرض أي نقطة أرض؛ لا يمكن استكمال نموذج تضاريس. لم يُكتب أي ناتج.</translation>
+            <translation>لم يجد مرشح الأرض أي نقطة أرض؛ لا يمكن استكمال نموذج تضاريس. لم يُكتب أي ناتج.</translation>
         </message>
         <message>
             <source>Classifies the ground of a LiDAR point cloud, interpolates an IDW DTM from the ground points and measures its accuracy against check points, in one step. It writes all its outputs or none, and its results equal those of the three algorithms run one after another.</source>
@@ -2134,18 +2134,18 @@
         </message>
         <message>
             <source>Classified by the recommended ground filter (the improved least-squares filter where it is not installed).</source>
-            <translation>مصنّفة بمرشّح الأرض الموصى به (أو بمرشّح المربعات الصغرى المحسَّن حيث لا يكون مثبّتًا).</translation>
+            <translation>مصنّفة بمرشح الأرض الموصى به (أو بمرشح المربعات الصغرى المحسَّن حيث لا يكون مثبّتًا).</translation>
         </message>
     </context>
     <context>
         <name>LsqGroundFilterAlgorithm</name>
         <message>
             <source>Ground filter (least-squares polynomial)</source>
-            <translation>فلتر نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
+            <translation>مرشح نقاط الأرض (متعدد حدود بالمربعات الصغرى)</translation>
         </message>
         <message>
             <source>lidar,ground,filter,bare earth,dtm,classification,least squares,polynomial,tiles,las,laz,isprs</source>
-            <translation>ليدار,أرض,فلتر,الأرض العارية,dtm,تصنيف,المربعات الصغرى,متعدد الحدود,بلاطات,las,laz,isprs</translation>
+            <translation>ليدار,أرض,مرشح,الأرض العارية,dtm,تصنيف,المربعات الصغرى,متعدد الحدود,بلاطات,las,laz,isprs</translation>
         </message>
         <message>
             <source>Point cloud (LAS/LAZ)</source>
@@ -2325,7 +2325,7 @@
         </message>
         <message>
             <source>LSQ ground filter report</source>
-            <translation>تقرير مرشّح الأرض بالمربعات الصغرى (LSQ)</translation>
+            <translation>تقرير مرشح الأرض بالمربعات الصغرى (LSQ)</translation>
         </message>
     </context>
     <context>
@@ -2475,11 +2475,11 @@
         </message>
         <message>
             <source>Ground filter report</source>
-            <translation>تقرير مرشّح الأرض</translation>
+            <translation>تقرير مرشح الأرض</translation>
         </message>
         <message>
             <source>DTM</source>
-            <translation>نموذج الارتفاعات الرقمي للأرض (DTM)</translation>
+            <translation>نموذج التضاريس الرقمي (DTM)</translation>
         </message>
         <message>
             <source>DTM report</source>
@@ -2647,11 +2647,11 @@
         <name>SlopeGroundFilterAlgorithm</name>
         <message>
             <source>Ground filter (slope-based)</source>
-            <translation>فلتر نقاط الأرض (على أساس الميل)</translation>
+            <translation>مرشح نقاط الأرض (على أساس الميل)</translation>
         </message>
         <message>
             <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,vosselman,slope,point cloud</source>
-            <translation>ليدار,las,laz,أرض,فلتر,تصنيف,dtm,الأرض العارية,vosselman,الميل,سحابة النقاط</translation>
+            <translation>ليدار,las,laz,أرض,مرشح,تصنيف,dtm,الأرض العارية,vosselman,الميل,سحابة النقاط</translation>
         </message>
         <message>
             <source>Radius r (m)</source>
@@ -2699,15 +2699,15 @@
         </message>
         <message>
             <source>Filter speed (points/s)</source>
-            <translation>سرعة الفلترة (نقطة/ث)</translation>
+            <translation>سرعة الترشيح (نقطة/ث)</translation>
         </message>
         <message>
             <source>Slope filter: r = {} m, θ = {}°, h = {} m, {} returns, mode {}</source>
-            <translation>فلتر الميل: ⁦r = {}⁩ م، ⁦θ = {}°⁩، ⁦h = {}⁩ م، الارتدادات: {}، النمط: {}</translation>
+            <translation>مرشح الميل: ⁦r = {}⁩ م، ⁦θ = {}°⁩، ⁦h = {}⁩ م، الارتدادات: {}، النمط: {}</translation>
         </message>
         <message>
             <source>Classifies a LAS/LAZ point cloud into ground (class 2) and non-ground (class 1) with Vosselman's (2000) slope-based filter: a point is non-ground when a neighbour within the radius r lies more than d·tan θ + h below it. The filter is exact and fast (about a million points per second at r = 3 m); tune r and θ to your data with the slope filter threshold sweep.</source>
-            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) وغير أرض (الفئة 1) بمرشّح الانحدار لـ Vosselman ‏(2000): تكون النقطة غير أرضية إذا وُجد جار ضمن نصف القطر r أدنى منها بأكثر من d·tan θ + h. المرشّح دقيق وسريع (نحو مليون نقطة في الثانية عند r = 3 m)؛ اضبط r وθ على بياناتك بأداة مسح عتبات مرشّح الانحدار.</translation>
+            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) وغير أرض (الفئة 1) بمرشح الانحدار لـ Vosselman ‏(2000): تكون النقطة غير أرضية إذا وُجد جار ضمن نصف القطر r أدنى منها بأكثر من d·tan θ + h. المرشح دقيق وسريع (نحو مليون نقطة في الثانية عند r = 3 m)؛ اضبط r وθ على بياناتك بأداة مسح عتبات مرشح الانحدار.</translation>
         </message>
         <message>
             <source>Must exceed half the width of the largest building to remove; a larger radius costs more time.</source>
@@ -2731,18 +2731,18 @@
         </message>
         <message>
             <source>Slope ground filter report</source>
-            <translation>تقرير مرشّح الأرض القائم على الانحدار</translation>
+            <translation>تقرير مرشح الأرض القائم على الانحدار</translation>
         </message>
     </context>
     <context>
         <name>SlopeThresholdSweepAlgorithm</name>
         <message>
             <source>Slope filter threshold sweep</source>
-            <translation>مسح عتبات فلتر الميل</translation>
+            <translation>مسح عتبات مرشح الميل</translation>
         </message>
         <message>
             <source>lidar,ground,filter,vosselman,slope,threshold,tuning,accuracy,type I,type II,kappa,isprs</source>
-            <translation>ليدار,أرض,فلتر,vosselman,الميل,العتبة,المعايرة,الدقة,النوع الأول,النوع الثاني,كابا,isprs</translation>
+            <translation>ليدار,أرض,مرشح,vosselman,الميل,العتبة,المعايرة,الدقة,النوع الأول,النوع الثاني,كابا,isprs</translation>
         </message>
         <message>
             <source>Reference cloud (empty = the input's classification)</source>
@@ -2846,7 +2846,7 @@
         </message>
         <message>
             <source>Runs the slope-based ground filter for every combination of slope thresholds θ, radii r and height tolerances h, and measures each against reference labels: Type I and Type II errors, total error and Cohen's kappa (Sithole &amp;amp; Vosselman 2004). It then picks the best setting, at the cost of one neighbourhood pass per radius and tolerance.</source>
-            <translation>يشغّل مرشّح الأرض القائم على الانحدار لكل توليفة من عتبات الانحدار θ وأنصاف الأقطار r وسماحيات الارتفاع h، ويقيس كلًّا منها مقابل التصنيفات المرجعية: خطأ النوع الأول والثاني، والخطأ الكلي، ومعامل كابا لكوهين (Sithole &amp;amp; Vosselman 2004). ثم يختار أفضل إعداد، بكلفة مرور جواري واحد لكل نصف قطر وسماحية.</translation>
+            <translation>يشغّل مرشح الأرض القائم على الانحدار لكل توليفة من عتبات الانحدار θ وأنصاف الأقطار r وسماحيات الارتفاع h، ويقيس كلًّا منها مقابل التصنيفات المرجعية: خطأ النوع الأول والثاني، والخطأ الكلي، ومعامل كابا لكوهين (Sithole &amp;amp; Vosselman 2004). ثم يختار أفضل إعداد، بكلفة مرور جواري واحد لكل نصف قطر وسماحية.</translation>
         </message>
         <message>
             <source>Its classification is never used to filter.</source>
@@ -2874,7 +2874,7 @@
         </message>
         <message>
             <source>Slope threshold sweep report</source>
-            <translation>تقرير مسح عتبات مرشّح الانحدار</translation>
+            <translation>تقرير مسح عتبات مرشح الانحدار</translation>
         </message>
     </context>
     <context>
@@ -3245,11 +3245,11 @@
         </message>
         <message>
             <source>Filter speed (points/s)</source>
-            <translation>سرعة الفلترة (نقطة/ث)</translation>
+            <translation>سرعة الترشيح (نقطة/ث)</translation>
         </message>
         <message>
             <source>Ground filter report</source>
-            <translation>تقرير مرشّح الأرض</translation>
+            <translation>تقرير مرشح الأرض</translation>
         </message>
         <message>
             <source>A .las or .laz file in a projected CRS (metres).</source>
@@ -3288,7 +3288,7 @@
         </message>
         <message>
             <source>Returns filtered</source>
-            <translation>الارتدادات المفلترة</translation>
+            <translation>الارتدادات المرشحة</translation>
         </message>
         <message>
             <source>All returns</source>
@@ -3324,7 +3324,7 @@
         </message>
         <message>
             <source>NOISE_RADIUS and NOISE_THRESHOLD must be &gt; 0 metres (e.g. 5 and 1), or switch the NOISE pre-filter off.</source>
-            <translation>يجب أن تكون قيمتا NOISE_RADIUS وNOISE_THRESHOLD &gt; 0 م (مثلاً 5 و1)، أو أوقف الفلترة المسبقة NOISE.</translation>
+            <translation>يجب أن تكون قيمتا NOISE_RADIUS وNOISE_THRESHOLD &gt; 0 م (مثلاً 5 و1)، أو أوقف الترشيح المسبق NOISE.</translation>
         </message>
         <message>
             <source>All returns: every return is classified and is a neighbour (the forest study). Last returns only: first and intermediate returns get class 1; files without return numbers count every point as a last return.</source>

@@ -25,7 +25,7 @@
         </message>
         <message>
             <source>Error DTM − check (m)</source>
-            <translation>خطا = مدل − نقطهٔ کنترل (متر)</translation>
+            <translation>خطا = مدل − نقطهٔ چک (متر)</translation>
         </message>
         <message>
             <source>Residual map</source>
@@ -33,11 +33,11 @@
         </message>
         <message>
             <source>check height (m)</source>
-            <translation>ارتفاع نقطهٔ کنترل (متر)</translation>
+            <translation>ارتفاع نقطهٔ چک (متر)</translation>
         </message>
         <message>
             <source>error DTM − check (m)</source>
-            <translation>خطا = مدل − نقطهٔ کنترل (متر)</translation>
+            <translation>خطا = مدل − نقطهٔ چک (متر)</translation>
         </message>
         <message>
             <source>zero error</source>
@@ -132,7 +132,7 @@
         </message>
         <message>
             <source>buildings,footprints,roofs,lod1,extraction,height,volume,storeys,class 6,lidar</source>
-            <translation>ساختمان‌ها,ردپا,بام‌ها,lod1,استخراج,ارتفاع,حجم,طبقه‌ها,کلاس ۶,لیدار</translation>
+            <translation>ساختمان‌ها,ردپا,بام‌ها,lod1,استخراج,ارتفاع,حجم,طبقه‌ها,کلاس ۶,لایدار</translation>
         </message>
         <message>
             <source>Point cloud (LAS/LAZ)</source>
@@ -211,7 +211,7 @@
         <name>CatalogAlgorithm</name>
         <message>
             <source>Process a LiDAR tile catalog</source>
-            <translation>پردازش کاتالوگ کاشی‌های لیدار</translation>
+            <translation>پردازش کاتالوگ کاشی‌های لایدار</translation>
         </message>
         <message>
             <source>Ground filter and DTM over a whole folder of LAS/LAZ tiles, in parallel, without seams.</source>
@@ -437,7 +437,7 @@
         </message>
         <message>
             <source>lidar,las,laz,classification,asprs,ground,vegetation,building,noise,water,height above ground,normalize</source>
-            <translation>لیدار,las,laz,طبقه‌بندی,asprs,زمین,پوشش گیاهی,ساختمان,نویز,آب,ارتفاع از زمین,نرمال‌سازی</translation>
+            <translation>لایدار,las,laz,طبقه‌بندی,asprs,زمین,پوشش گیاهی,ساختمان,نویز,آب,ارتفاع از زمین,نرمال‌سازی</translation>
         </message>
         <message>
             <source>Writes standard ASPRS classes into a copy of a LAS/LAZ cloud: 2 ground (the recommended ground filter, or the input's class 2 kept), 3/4/5 low/medium/high vegetation by height above a TIN of the ground, 6 building (roof planes, bridges refused), 7 low noise; water (9) and noise (18) are kept. Every other attribute, the VLRs and the CRS are copied unchanged. Heights are in metres also for clouds in feet (converted).</source>
@@ -675,7 +675,7 @@
         </message>
         <message>
             <source>Compares a DTM with independent check points (e.g. GNSS heights) and summarises the errors e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt; as bias, mean absolute error, RMSE, NMAD, Pearson r and the vertical accuracy at 95 % = 1.96·RMSE (ASPRS 2014). Check points outside the DTM or on nodata are counted and excluded, never read as 0.</source>
-            <translation>DTM را با نقاط کنترل مستقل (مانند ارتفاع‌های GNSS) مقایسه می‌کند و خطاهای e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt; را به‌صورت اریبی، میانگین خطای مطلق، RMSE، NMAD، ضریب پیرسون r و دقت ارتفاعی در سطح 95 % = 1.96·RMSE ‏(ASPRS 2014) خلاصه می‌کند. نقاط کنترلِ بیرون از DTM یا روی سلول‌های بدون داده شمرده و کنار گذاشته می‌شوند و هرگز 0 خوانده نمی‌شوند.</translation>
+            <translation>DTM را با نقاط چک مستقل (مانند ارتفاع‌های GNSS) مقایسه می‌کند و خطاهای e = z&lt;sub&gt;DTM&lt;/sub&gt; − z&lt;sub&gt;check&lt;/sub&gt; را به‌صورت اریبی، میانگین خطای مطلق، RMSE، NMAD، ضریب پیرسون r و دقت ارتفاعی در سطح 95 % = 1.96·RMSE ‏(ASPRS 2014) خلاصه می‌کند. نقاط چکِ بیرون از DTM یا روی سلول‌های بدون داده شمرده و کنار گذاشته می‌شوند و هرگز 0 خوانده نمی‌شوند.</translation>
         </message>
         <message>
             <source>Give the layer or the file.</source>
@@ -687,11 +687,11 @@
         </message>
         <message>
             <source>x and y only: heights are not converted between vertical datums. Without it, check points in another CRS are an error.</source>
-            <translation>فقط x و y: ارتفاع‌ها میان مبناهای ارتفاعی تبدیل نمی‌شوند. بدون این گزینه، نقاط کنترل در سامانهٔ مختصات دیگر خطا به شمار می‌آیند.</translation>
+            <translation>فقط x و y: ارتفاع‌ها میان مبناهای ارتفاعی تبدیل نمی‌شوند. بدون این گزینه، نقاط چک در سامانهٔ مختصات دیگر خطا به شمار می‌آیند.</translation>
         </message>
         <message>
             <source>Point layer with the error and status of each check point, styled by error.</source>
-            <translation>لایهٔ نقطه‌ای با خطا و وضعیت هر نقطهٔ کنترل، نمادپردازی‌شده بر اساس خطا.</translation>
+            <translation>لایهٔ نقطه‌ای با خطا و وضعیت هر نقطهٔ چک، نمادپردازی‌شده بر اساس خطا.</translation>
         </message>
         <message>
             <source>DTM accuracy report</source>
@@ -710,7 +710,7 @@
         </message>
         <message>
             <source>change,difference,dod,cut,fill,volume,epochs,lod,monitoring,lidar,dtm,dsm</source>
-            <translation>تغییر,تفاضل,dod,خاک‌برداری,خاک‌ریزی,حجم,دوره‌ها,حد آشکارسازی,پایش,لیدار,dtm,dsm</translation>
+            <translation>تغییر,تفاضل,dod,خاک‌برداری,خاک‌ریزی,حجم,دوره‌ها,حد آشکارسازی,پایش,لایدار,dtm,dsm</translation>
         </message>
         <message>
             <source>Before (raster or point cloud)</source>
@@ -802,7 +802,7 @@
         </message>
         <message>
             <source>{0} = {1:.4f} m: RMSE of {2} check-point residuals of {3}</source>
-            <translation>{0} = {1:.4f} متر: RMSE {2} باقیماندهٔ نقاط کنترل در {3}</translation>
+            <translation>{0} = {1:.4f} متر: RMSE {2} باقیماندهٔ نقاط چک در {3}</translation>
         </message>
         <message>
             <source>A raster layer of the project or a raster file; give each epoch once, as a file or as a raster layer.</source>
@@ -1088,15 +1088,15 @@
         </message>
         <message>
             <source>Check points used</source>
-            <translation>نقاط کنترل به‌کاررفته</translation>
+            <translation>نقاط چک به‌کاررفته</translation>
         </message>
         <message>
             <source>Check points outside the DTM</source>
-            <translation>نقاط کنترل بیرون از DTM</translation>
+            <translation>نقاط چک بیرون از DTM</translation>
         </message>
         <message>
             <source>Check points on DTM nodata</source>
-            <translation>نقاط کنترل روی سلول‌های بدون داده در DTM</translation>
+            <translation>نقاط چک روی سلول‌های بدون داده در DTM</translation>
         </message>
         <message>
             <source>Mean error (m)</source>
@@ -1136,19 +1136,19 @@
         </message>
         <message>
             <source>reference ground → filtered ground</source>
-            <translation>زمین در مرجع ← زمین پس از پالایش</translation>
+            <translation>زمین در مرجع ← زمین پس از فیلتر</translation>
         </message>
         <message>
             <source>reference ground → filtered object (Type I)</source>
-            <translation>زمین در مرجع ← عارضه پس از پالایش (نوع I)</translation>
+            <translation>زمین در مرجع ← عارضه پس از فیلتر (نوع I)</translation>
         </message>
         <message>
             <source>reference object → filtered ground (Type II)</source>
-            <translation>عارضه در مرجع ← زمین پس از پالایش (نوع II)</translation>
+            <translation>عارضه در مرجع ← زمین پس از فیلتر (نوع II)</translation>
         </message>
         <message>
             <source>reference object → filtered object</source>
-            <translation>عارضه در مرجع ← عارضه پس از پالایش</translation>
+            <translation>عارضه در مرجع ← عارضه پس از فیلتر</translation>
         </message>
         <message>
             <source>points</source>
@@ -1175,10 +1175,6 @@
             <translation>نزدیک‌ترین همسایه (near)</translation>
         </message>
         <message>
-            <source>Bilinear (bilinear)</source>
-            <translation>دوخطی (bilinear)</translation>
-        </message>
-        <message>
             <source>Cubic convolution (cubic)</source>
             <translation>پیچش مکعبی (cubic)</translation>
         </message>
@@ -1189,10 +1185,6 @@
         <message>
             <source>Lanczos windowed sinc (lanczos)</source>
             <translation>تابع sinc پنجره‌ای Lanczos (lanczos)</translation>
-        </message>
-        <message>
-            <source>Average (average)</source>
-            <translation>میانگین (average)</translation>
         </message>
         <message>
             <source>Most frequent value (mode)</source>
@@ -1240,11 +1232,11 @@
         </message>
         <message>
             <source>Check-point RMS_T (map units)</source>
-            <translation>RMS_T نقاط کنترل (واحد نقشه)</translation>
+            <translation>RMS_T نقاط چک (واحد نقشه)</translation>
         </message>
         <message>
             <source>Independent check points</source>
-            <translation>نقاط کنترل مستقل</translation>
+            <translation>نقاط چک مستقل</translation>
         </message>
         <message>
             <source>Recommended order (0 = none)</source>
@@ -1260,27 +1252,7 @@
         </message>
         <message>
             <source>Check-point (else leave-one-out) RMS_T of the transformation used</source>
-            <translation>RMS_T نقاط کنترل (وگرنه به روش یکی‌کنارگذاری) برای تبدیل به‌کاررفته</translation>
-        </message>
-        <message>
-            <source>Linear (linear)</source>
-            <translation>خطی (linear)</translation>
-        </message>
-        <message>
-            <source>Power (power)</source>
-            <translation>توانی (power)</translation>
-        </message>
-        <message>
-            <source>Gaussian (gaussian)</source>
-            <translation>گاوسی (gaussian)</translation>
-        </message>
-        <message>
-            <source>Spherical (spherical)</source>
-            <translation>کروی (spherical)</translation>
-        </message>
-        <message>
-            <source>Exponential (exponential)</source>
-            <translation>نمایی (exponential)</translation>
+            <translation>RMS_T نقاط چک (وگرنه به روش یکی‌کنارگذاری) برای تبدیل به‌کاررفته</translation>
         </message>
         <message>
             <source>Colour ramp</source>
@@ -1301,6 +1273,34 @@
         <message>
             <source>Could not style the layer {name}: {error}</source>
             <translation>سبک‌دهی لایهٔ {name} ممکن نشد: {error}</translation>
+        </message>
+        <message>
+            <source>Linear</source>
+            <translation>خطی (linear)</translation>
+        </message>
+        <message>
+            <source>Power</source>
+            <translation>توانی (power)</translation>
+        </message>
+        <message>
+            <source>Gaussian</source>
+            <translation>گاوسی (gaussian)</translation>
+        </message>
+        <message>
+            <source>Spherical</source>
+            <translation>کروی (spherical)</translation>
+        </message>
+        <message>
+            <source>Exponential</source>
+            <translation>نمایی (exponential)</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>دوخطی</translation>
+        </message>
+        <message>
+            <source>Average</source>
+            <translation>میانگین (average)</translation>
         </message>
         <message>
             <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
@@ -1457,7 +1457,7 @@
         </message>
         <message>
             <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell and slope tolerance are derived from the cloud, applied to the terrain with its regional slope removed; terrain crests it removed are grown back, then passes rebuild the terrain and re-test every point. On the 8 ISPRS filter-test samples its cross-validated total error is 3.50 % (SMRF with PDAL's defaults: 5.75 %).</source>
-            <translation>ابر نقطهٔ LAS/LAZ را بدون هیچ پارامتری به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) طبقه‌بندی می‌کند: یک پالایهٔ ریخت‌شناسی تدریجی (Pingel et al. 2013) که اندازهٔ سلول و رواداری شیب آن از خود ابر به دست می‌آید و روی زمینِ بدون شیب منطقه‌ای اعمال می‌شود؛ تیغه‌های زمین را که حذف کرده است باز می‌گرداند، سپس گذرهایی زمین را بازسازی و هر نقطه را دوباره آزمون می‌کنند. روی 8 نمونهٔ آزمون پالایه‌های ISPRS خطای کل آن با اعتبارسنجی متقابل 3.50 % است (SMRF با پیش‌فرض‌های PDAL: 5.75 %).</translation>
+            <translation>ابر نقطهٔ LAS/LAZ را بدون هیچ پارامتری به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) طبقه‌بندی می‌کند: یک فیلتر ریخت‌شناسی تدریجی (Pingel et al. 2013) که اندازهٔ سلول و رواداری شیب آن از خود ابر به دست می‌آید و روی زمینِ بدون شیب منطقه‌ای اعمال می‌شود؛ تیغه‌های زمین را که حذف کرده است باز می‌گرداند، سپس گذرهایی زمین را بازسازی و هر نقطه را دوباره آزمون می‌کنند. روی 8 نمونهٔ آزمون فیلترهای ISPRS خطای کل آن با اعتبارسنجی متقابل 3.50 % است (SMRF با پیش‌فرض‌های PDAL: 5.75 %).</translation>
         </message>
         <message>
             <source>Plus 1.0 m per unit of terrain slope.</source>
@@ -1466,10 +1466,6 @@
     </context>
     <context>
         <name>GsdBatchAlgorithm</name>
-        <message>
-            <source>GSD and photogrammetric accuracy calculator (batch table)</source>
-            <translation>محاسبه‌گر GSD و دقت فتوگرامتری (جدول دسته‌ای)</translation>
-        </message>
         <message>
             <source>Table of cameras and distances</source>
             <translation>جدول دوربین‌ها و فاصله‌ها</translation>
@@ -1521,6 +1517,10 @@
         <message>
             <source>The input columns plus gsd_cm, footprint_width_m, sigma_xyz_mm, dense_resolution_cm and every other result.</source>
             <translation>ستون‌های ورودی به‌علاوهٔ gsd_cm، footprint_width_m، sigma_xyz_mm، dense_resolution_cm و همهٔ نتایج دیگر.</translation>
+        </message>
+        <message>
+            <source>GSD calculator over a table of cameras and distances</source>
+            <translation>محاسبه‌گر GSD برای جدولی از دوربین‌ها و فاصله‌ها</translation>
         </message>
     </context>
     <context>
@@ -1702,7 +1702,7 @@
         <name>IdwDtmAlgorithm</name>
         <message>
             <source>DTM by inverse distance weighting (IDW)</source>
-            <translation>مدل رقومی زمین به روش وزن‌دهی معکوس فاصله (IDW)</translation>
+            <translation>وزن‌دهی معکوس فاصله (IDW) برای مدل رقومی زمین</translation>
         </message>
         <message>
             <source>dtm,dem,idw,inverse distance,interpolation,lidar,ground,gdal_grid,invdistnn,raster</source>
@@ -1769,7 +1769,7 @@
         <name>KrigingDtmAlgorithm</name>
         <message>
             <source>DTM by kriging (ordinary / universal)</source>
-            <translation>مدل رقومی زمین به روش کریجینگ (معمولی / عام)</translation>
+            <translation>کریجینگ (معمولی / عام) برای مدل رقومی زمین</translation>
         </message>
         <message>
             <source>dtm,dem,kriging,variogram,geostatistics,pykrige,interpolation,lidar,variance,cross-validation</source>
@@ -1955,7 +1955,7 @@
         </message>
         <message>
             <source>density,quality,qa,lasinfo,gaps,duplicates,noise,scan angle,returns,advice,lidar</source>
-            <translation>تراکم,کیفیت,qa,lasinfo,شکاف‌ها,تکراری‌ها,نویز,زاویهٔ اسکن,بازتاب‌ها,توصیه,لیدار</translation>
+            <translation>تراکم,کیفیت,qa,lasinfo,شکاف‌ها,تکراری‌ها,نویز,زاویهٔ اسکن,بازتاب‌ها,توصیه,لایدار</translation>
         </message>
         <message>
             <source>Point cloud (LAS/LAZ)</source>
@@ -2034,7 +2034,7 @@
         </message>
         <message>
             <source>lidar,ground,filter,dtm,dem,idw,accuracy,rmse,check points,chain,all-or-nothing</source>
-            <translation>لیدار,زمین,فیلتر,مدل رقومی زمین,dem,idw,دقت,rmse,نقاط کنترل,زنجیره,همه یا هیچ</translation>
+            <translation>لایدار,زمین,فیلتر,مدل رقومی زمین,dem,idw,دقت,rmse,نقاط چک,زنجیره,همه یا هیچ</translation>
         </message>
         <message>
             <source>DTM cell size (m)</source>
@@ -2058,7 +2058,7 @@
         </message>
         <message>
             <source>Check points (CSV/TXT file: id,x,y,z)</source>
-            <translation>نقاط کنترل (فایل CSV/TXT: ‏id,x,y,z)</translation>
+            <translation>نقاط چک (فایل CSV/TXT: ‏id,x,y,z)</translation>
         </message>
         <message>
             <source>Classified point cloud</source>
@@ -2070,7 +2070,7 @@
         </message>
         <message>
             <source>Check-point residuals</source>
-            <translation>باقیمانده‌های نقاط کنترل</translation>
+            <translation>باقیمانده‌های نقاط چک</translation>
         </message>
         <message>
             <source>HTML files (*.html)</source>
@@ -2098,7 +2098,7 @@
         </message>
         <message>
             <source>None of the {n} check points lies within the point cloud's extent (x {x0:.1f}–{x1:.1f}, y {y0:.1f}–{y1:.1f}); are they in another CRS? No output was written.</source>
-            <translation>هیچ‌یک از {n} نقطهٔ کنترل درون گسترهٔ ابر نقاط نیست (x ‏{x0:.1f}–{x1:.1f}، y ‏{y0:.1f}–{y1:.1f})؛ آیا در سیستم مختصات دیگری‌اند؟ هیچ خروجی‌ای نوشته نشد.</translation>
+            <translation>هیچ‌یک از {n} نقطهٔ چک درون گسترهٔ ابر نقاط نیست (x ‏{x0:.1f}–{x1:.1f}، y ‏{y0:.1f}–{y1:.1f})؛ آیا در سیستم مختصات دیگری‌اند؟ هیچ خروجی‌ای نوشته نشد.</translation>
         </message>
         <message>
             <source>Choose the point cloud (a .las or .laz file).</source>
@@ -2118,7 +2118,7 @@
         </message>
         <message>
             <source>Classifies the ground of a LiDAR point cloud, interpolates an IDW DTM from the ground points and measures its accuracy against check points, in one step. It writes all its outputs or none, and its results equal those of the three algorithms run one after another.</source>
-            <translation>زمینِ یک ابر نقاط LiDAR را کلاس‌بندی می‌کند، از نقاط زمین یک DTM به روش IDW درون‌یابی می‌کند و دقت آن را با نقاط کنترل می‌سنجد، در یک گام. همهٔ خروجی‌ها را می‌نویسد یا هیچ‌کدام را، و نتایجش با اجرای پی‌درپی سه الگوریتم یکسان است.</translation>
+            <translation>زمینِ یک ابر نقاط LiDAR را کلاس‌بندی می‌کند، از نقاط زمین یک DTM به روش IDW درون‌یابی می‌کند و دقت آن را با نقاط چک می‌سنجد، در یک گام. همهٔ خروجی‌ها را می‌نویسد یا هیچ‌کدام را، و نتایجش با اجرای پی‌درپی سه الگوریتم یکسان است.</translation>
         </message>
         <message>
             <source>In a projected CRS (metres).</source>
@@ -2384,11 +2384,11 @@
         </message>
         <message>
             <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest points of parcels larger than the largest building seed a TIN, which takes every point close enough to its facet until none is added. Its mean total error on the 8 ISPRS samples is 8.07 % at the defaults: use the recommended ground filter unless you need a TIN filter.</source>
-            <translation>ابر نقطهٔ LAS/LAZ را به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) با متراکم‌سازی تدریجی TIN (Axelsson 2000) طبقه‌بندی می‌کند: پایین‌ترین نقاط قطعه‌هایی بزرگ‌تر از بزرگ‌ترین ساختمان بذر یک TIN می‌شوند که هر نقطهٔ به‌قدر کافی نزدیک به وجه خود را می‌پذیرد تا جایی که نقطه‌ای افزوده نشود. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 8.07 % است: مگر به پالایهٔ TIN نیاز دارید، پالایهٔ زمین پیشنهادی را به کار ببرید.</translation>
+            <translation>ابر نقطهٔ LAS/LAZ را به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) با متراکم‌سازی تدریجی TIN (Axelsson 2000) طبقه‌بندی می‌کند: پایین‌ترین نقاط قطعه‌هایی بزرگ‌تر از بزرگ‌ترین ساختمان بذر یک TIN می‌شوند که هر نقطهٔ به‌قدر کافی نزدیک به وجه خود را می‌پذیرد تا جایی که نقطه‌ای افزوده نشود. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 8.07 % است: مگر به فیلتر TIN نیاز دارید، فیلتر زمین پیشنهادی را به کار ببرید.</translation>
         </message>
         <message>
             <source>Lowest point per cell for the step filter and the seeds.</source>
-            <translation>پایین‌ترین نقطهٔ هر سلول برای پالایهٔ پله‌ای و بذرها.</translation>
+            <translation>پایین‌ترین نقطهٔ هر سلول برای فیلتر پله‌ای و بذرها.</translation>
         </message>
         <message>
             <source>Larger than the largest building (30–50 m).</source>
@@ -2447,7 +2447,7 @@
         </message>
         <message>
             <source>Check-point residuals to publish</source>
-            <translation>باقی‌مانده‌های نقاط کنترل برای انتشار</translation>
+            <translation>باقی‌مانده‌های نقاط چک برای انتشار</translation>
         </message>
         <message>
             <source>DTM accuracy report to publish</source>
@@ -2459,11 +2459,11 @@
         </message>
         <message>
             <source>Check point file of the chain (never overwritten)</source>
-            <translation>فایل نقاط کنترل زنجیره (هرگز بازنویسی نمی‌شود)</translation>
+            <translation>فایل نقاط چک زنجیره (هرگز بازنویسی نمی‌شود)</translation>
         </message>
         <message>
             <source>Check point layer of the chain (never overwritten)</source>
-            <translation>لایهٔ نقاط کنترل زنجیره (هرگز بازنویسی نمی‌شود)</translation>
+            <translation>لایهٔ نقاط چک زنجیره (هرگز بازنویسی نمی‌شود)</translation>
         </message>
         <message>
             <source>HTML files (*.html)</source>
@@ -2487,7 +2487,7 @@
         </message>
         <message>
             <source>Check-point residuals</source>
-            <translation>باقیمانده‌های نقاط کنترل</translation>
+            <translation>باقیمانده‌های نقاط چک</translation>
         </message>
         <message>
             <source>DTM accuracy report</source>
@@ -2889,7 +2889,7 @@
         </message>
         <message>
             <source>dtm,dem,tin,delaunay,triangulation,linear,gdal_grid,blast2dem,lidar,ground,raster</source>
-            <translation>مدل رقومی زمین,dem,tin,دلونی,مثلث‌بندی,خطی,gdal_grid,blast2dem,لیدار,زمین,رستر</translation>
+            <translation>مدل رقومی زمین,dem,tin,دلونی,مثلث‌بندی,خطی,gdal_grid,blast2dem,لایدار,زمین,رستر</translation>
         </message>
         <message>
             <source>Maximum triangle edge (m, 0 = auto)</source>
@@ -3091,7 +3091,7 @@
         </message>
         <message>
             <source>Minimum GCPs kept by the refinement [default: minimum + 2]</source>
-            <translation>حداقل نقاط باقی‌مانده پس از پالایش [پیش‌فرض: حداقل + 2]</translation>
+            <translation>حداقل نقاط باقی‌مانده پس از فیلتر [پیش‌فرض: حداقل + 2]</translation>
         </message>
         <message>
             <source>A QGIS Georeferencer .points file or a CSV table with id, col, row, X, Y and optional enabled, role (gcp or check) and weight. Give the file or a point layer.</source>
@@ -3205,7 +3205,7 @@
         <name>_GroundCommon</name>
         <message>
             <source>lidar,las,laz,ground,filter,classification,dtm,bare earth,point cloud</source>
-            <translation>لیدار,las,laz,زمین,فیلتر,طبقه‌بندی,مدل رقومی زمین,زمین برهنه,ابر نقاط</translation>
+            <translation>لایدار,las,laz,زمین,فیلتر,طبقه‌بندی,مدل رقومی زمین,زمین برهنه,ابر نقاط</translation>
         </message>
         <message>
             <source>Point cloud (LAS/LAZ)</source>

@@ -30,7 +30,7 @@ def test_input_error_is_english_template_translated_on_demand():
     assert e.message("en") == str(e)
     ar = e.message("ar")
     assert ar == f"لا يحتوي {FSI}/data/cp.csv{PDI} على أي نقاط تحقق."
-    assert e.message("fa") == f"{FSI}/data/cp.csv{PDI} هیچ نقطهٔ کنترلی ندارد."
+    assert e.message("fa") == f"{FSI}/data/cp.csv{PDI} هیچ نقطهٔ چکی ندارد."
     # untranslated text stays English; pickling (Dask workers) keeps the template
     assert InputError("no such template {x}", x=1).message("ar") == "no such template 1"
     back = pickle.loads(pickle.dumps(e))
