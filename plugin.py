@@ -31,6 +31,37 @@ def install_translator(locale: str | None = None) -> QTranslator | None:
     return translator
 
 
+def activate_private_packages() -> str:
+    """Put the plugin's private package folder of this profile on ``sys.path``.
+
+    ``geomatics:installdependencies`` installs the runtime packages there
+    (``core/deps.py``); returns the folder.
+    """
+    from .core import deps
+    folder = deps.packages_dir(QgsApplication.qgisSettingsDirPath())
+    deps.activate(folder)
+    return str(folder)
+
+
+def missing_packages_text(missing) -> str:
+    """One translated sentence naming the missing packages and what needs them."""
+    lidar = [r.name for r in missing if r.group == "lidar"]
+    catalog = [r.name for r in missing if r.group != "lidar"]
+    parts = []
+    if lidar:
+        parts.append(QCoreApplication.translate(
+            "GeomaticsToolboxPlugin", "{packages} for the LiDAR algorithms").format(
+                packages=", ".join(lidar)))
+    if catalog:
+        parts.append(QCoreApplication.translate(
+            "GeomaticsToolboxPlugin", "{packages} for the tile catalog").format(
+                packages=", ".join(catalog)))
+    return QCoreApplication.translate(
+        "GeomaticsToolboxPlugin", "QGIS's Python lacks Python packages this toolbox "
+        "needs: {missing}. The other algorithms work without them.").format(
+            missing="; ".join(parts))
+
+
 class GeomaticsToolboxPlugin:
     """QGIS plugin object. Has no GUI of its own: everything is in Processing."""
 
@@ -38,6 +69,8 @@ class GeomaticsToolboxPlugin:
         self.iface = iface
         self.provider = None
         self.translator = install_translator()
+        self.packages_folder = activate_private_packages()
+        self.message = None
 
     def initProcessing(self):  # noqa: N802 - QGIS API name
         """Create and register the Processing provider (also used by qgis_process)."""
@@ -48,6 +81,37 @@ class GeomaticsToolboxPlugin:
 
     def initGui(self):  # noqa: N802 - QGIS API name
         self.initProcessing()
+        self.show_missing_packages()
+
+    def show_missing_packages(self):
+        """A message bar naming the missing runtime packages, with an Install button."""
+        from .core import deps
+        missing = deps.missing()
+        if not missing or self.iface is None:
+            return None
+        from qgis.core import Qgis
+        from qgis.PyQt.QtWidgets import QPushButton
+        bar = self.iface.messageBar()
+        widget = bar.createMessage(
+            QCoreApplication.translate("GeomaticsToolboxPlugin", "Geomatics Toolbox"),
+            missing_packages_text(missing))
+        button = QPushButton(QCoreApplication.translate("GeomaticsToolboxPlugin",
+                                                        "Install them…"), widget)
+        button.setObjectName("geomatics_install_button")
+        button.clicked.connect(self.open_installer)
+        widget.layout().addWidget(button)
+        self.message = bar.pushWidget(widget, Qgis.Warning)
+        return self.message
+
+    def open_installer(self):
+        """Open the dialog of ``geomatics:installdependencies`` (progress, log, command)."""
+        from processing import execAlgorithmDialog
+
+        from .core import deps
+        execAlgorithmDialog(f"geomatics:{deps.INSTALLER_ID.split(':')[1]}")
+        if not deps.missing() and self.message is not None and self.iface is not None:
+            self.iface.messageBar().popWidget(self.message)
+            self.message = None
 
     def unload(self):
         if self.provider is not None:

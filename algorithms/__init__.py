@@ -17,6 +17,7 @@ def all_algorithms():
     from .gcp_rectification import GcpAccuracyReportAlgorithm, RectifyGcpAlgorithm
     from .ground_filter import GroundFilterAlgorithm, PtdGroundFilterAlgorithm
     from .gsd_calculator import GsdBatchAlgorithm, GsdCalculatorAlgorithm
+    from .install_dependencies import InstallDependenciesAlgorithm
     from .lidar_qa import LidarQaAlgorithm
     from .lidar_to_dtm import LidarToDtmAlgorithm
     from .lsq_filter import LsqGroundFilterAlgorithm
@@ -49,4 +50,5 @@ def all_algorithms():
         ClassifyAlgorithm(),
         GroundFilterAlgorithm(),
         PtdGroundFilterAlgorithm(),
+        InstallDependenciesAlgorithm(),
     ]

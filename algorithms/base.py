@@ -32,6 +32,7 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QCoreApplication, QUrl
 from qgis.PyQt.QtGui import QIcon
 
+from ..core import deps
 from ..core.errors import InputError
 from ..core.io.contract import OutputContract, Terminated, atomic_output
 from ..core.progress import Cancelled
@@ -73,6 +74,7 @@ def _groups():
                                                     "Image rectification"),
         "photogrammetry": QCoreApplication.translate("GeomaticsAlgorithm", "Photogrammetry"),
         "accuracy": QCoreApplication.translate("GeomaticsAlgorithm", "Accuracy assessment"),
+        "setup": QCoreApplication.translate("GeomaticsAlgorithm", "Set-up"),
     }
 
 
@@ -107,6 +109,9 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
     """Base class: groups, icon, translation, error handling, core callbacks."""
 
     GROUP = "photogrammetry"
+    #: groups of runtime packages (core/deps.py) the algorithm always needs; a LiDAR
+    #: input or a .las/.laz path given adds 'lidar'
+    REQUIRES: tuple = ()
 
     # ---------------------------------------------------------------- metadata
     def tr(self, text: str) -> str:
@@ -209,6 +214,7 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
         description = description or self.tr("Point cloud (LAS/LAZ)")
         note = self.las_input_note()
         help_text = f"{help_text} {note}" if help_text else note
+        self._las_params = getattr(self, "_las_params", set()) | {name}
         if point_cloud_layers_supported():
             from qgis.core import QgsProcessingParameterPointCloudLayer
             param = QgsProcessingParameterPointCloudLayer(name, description,
@@ -417,8 +423,38 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
         message = getattr(exc, "message", None)
         return message(lang) if callable(message) else str(exc)
 
+    # ---------------------------------------------------------------- packages
+    def required_packages(self, parameters) -> list:
+        """Runtime package groups this run needs (``REQUIRES`` plus 'lidar' for LAS/LAZ)."""
+        groups = set(self.REQUIRES)
+        las_params = getattr(self, "_las_params", set())
+        for name, value in (parameters or {}).items():
+            if name in las_params and value not in (None, ""):
+                groups.add("lidar")
+            elif isinstance(value, str) and value.lower().endswith(_LAS_EXTENSIONS):
+                groups.add("lidar")
+        return sorted(groups)
+
+    def missing_packages_message(self, parameters) -> str:
+        """'' when every package this run needs is there, else the translated message."""
+        try:
+            deps.check(self.required_packages(parameters))
+        except InputError as exc:
+            return self.input_error_message(exc)
+        return ""
+
+    def checkParameterValues(self, parameters, context):  # noqa: N802
+        """Refuse the run before it starts when a runtime package is missing."""
+        message = self.missing_packages_message(parameters)
+        if message:
+            return False, message
+        return super().checkParameterValues(parameters, context)
+
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         try:
+            message = self.missing_packages_message(parameters)
+            if message:
+                raise QgsProcessingException(message)
             return self.process(parameters, context, feedback)
         except QgsProcessingException:
             raise

@@ -22,6 +22,7 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
     """Ground filter + DTM over a folder of tiles, chunk by chunk with buffers."""
 
     GROUP = "lidarfiltering"
+    REQUIRES = ("catalog",)
 
     INPUT = "INPUT"
     GROUND_FILTER = "GROUND_FILTER"

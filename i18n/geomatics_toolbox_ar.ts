@@ -1306,6 +1306,10 @@
             <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
             <translation>البيانات بوحدة {} أفقياً و{} رأسياً؛ تُحوَّل إلى الأمتار، لذا فكل طول تُدخله وكل طول في هذا السجل بالأمتار.</translation>
         </message>
+        <message>
+            <source>Set-up</source>
+            <translation>الإعداد</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>
@@ -1316,6 +1320,29 @@
         <message>
             <source>LiDAR to DTM with accuracy</source>
             <translation>من LiDAR إلى نموذج تضاريس رقمي مع الدقة</translation>
+        </message>
+    </context>
+    <context>
+        <name>GeomaticsToolboxPlugin</name>
+        <message>
+            <source>{packages} for the LiDAR algorithms</source>
+            <translation>{packages} لخوارزميات ليدار</translation>
+        </message>
+        <message>
+            <source>{packages} for the tile catalog</source>
+            <translation>{packages} لفهرس البلاطات</translation>
+        </message>
+        <message>
+            <source>QGIS's Python lacks Python packages this toolbox needs: {missing}. The other algorithms work without them.</source>
+            <translation>تنقص Python الخاص بـ QGIS حزمُ Python يحتاجها صندوق الأدوات هذا: {missing}. تعمل الخوارزميات الأخرى من دونها.</translation>
+        </message>
+        <message>
+            <source>Geomatics Toolbox</source>
+            <translation>صندوق أدوات الجيوماتكس</translation>
+        </message>
+        <message>
+            <source>Install them…</source>
+            <translation>ثبّتها…</translation>
         </message>
     </context>
     <context>
@@ -1763,6 +1790,65 @@
         <message>
             <source>Nodata cells</source>
             <translation>خلايا بلا بيانات</translation>
+        </message>
+    </context>
+    <context>
+        <name>InstallDependenciesAlgorithm</name>
+        <message>
+            <source>Install the Python packages this toolbox needs</source>
+            <translation>تثبيت حزم Python التي يحتاجها صندوق الأدوات هذا</translation>
+        </message>
+        <message>
+            <source>Installs laspy, lazrs, dask and distributed for QGIS's Python into a folder of this QGIS profile.</source>
+            <translation>يثبّت laspy وlazrs وdask وdistributed لـ Python الخاص بـ QGIS في مجلد ضمن ملف تعريف QGIS هذا.</translation>
+        </message>
+        <message>
+            <source>install,pip,dependencies,packages,laspy,lazrs,dask,offline,wheels,setup</source>
+            <translation>تثبيت,pip,اعتماديات,حزم,laspy,lazrs,dask,دون اتصال,wheels,إعداد</translation>
+        </message>
+        <message>
+            <source>The LiDAR algorithms need laspy and lazrs, the tile catalog also dask and distributed; QGIS ships the rest (numpy, SciPy, GDAL). This installs the versions the toolbox was tested with, only those QGIS's Python lacks, with that Python's pip into a folder of the current QGIS profile: QGIS's own packages are never changed or replaced, and removing the folder undoes it. The log shows every command and everything pip prints.</source>
+            <translation>تحتاج خوارزميات ليدار إلى laspy وlazrs، ويحتاج فهرس البلاطات أيضًا إلى dask وdistributed؛ أما الباقي (numpy وSciPy وGDAL) فيأتي مع QGIS. تثبّت هذه الخوارزمية الإصدارات التي اختُبر بها صندوق الأدوات، وفقط ما ينقص Python الخاص بـ QGIS، باستخدام pip التابع له في مجلد ضمن ملف تعريف QGIS الحالي: لا تُغيَّر حزم QGIS نفسها ولا تُستبدل أبدًا، وحذف المجلد يلغي التثبيت. يعرض السجل كل أمر وكل ما يطبعه pip.</translation>
+        </message>
+        <message>
+            <source>For computers without internet: a folder of wheel files (.whl) downloaded elsewhere with pip download for the same Python version and system. Empty: the package index pip is configured with.</source>
+            <translation>للحواسيب غير المتصلة بالإنترنت: مجلد ملفات wheel ‏(.whl) نُزّلت على جهاز آخر بالأمر pip download لإصدار Python نفسه ونظام التشغيل نفسه. فارغ: فهرس الحزم المضبوط في pip.</translation>
+        </message>
+        <message>
+            <source>Folder of wheels (offline installation)</source>
+            <translation>مجلد ملفات wheel (تثبيت دون اتصال)</translation>
+        </message>
+        <message>
+            <source>Folder the packages are installed in</source>
+            <translation>المجلد الذي ثُبّتت فيه الحزم</translation>
+        </message>
+        <message>
+            <source>Packages installed</source>
+            <translation>الحزم المثبّتة</translation>
+        </message>
+        <message>
+            <source>Packages still missing</source>
+            <translation>الحزم التي ما زالت ناقصة</translation>
+        </message>
+        <message>
+            <source>pip commands run</source>
+            <translation>أوامر pip المنفّذة</translation>
+        </message>
+        <message>
+            <source>Python: {python}</source>
+            <translation>Python: {python}</translation>
+        </message>
+        <message>
+            <source>Folder: {folder}</source>
+            <translation>المجلد: {folder}</translation>
+        </message>
+        <message>
+            <source>Installed: {packages}</source>
+            <translation>ثُبّتت: {packages}</translation>
+        </message>
+        <message>
+            <source>Nothing to install: QGIS's Python already has every package.</source>
+            <translation>لا شيء للتثبيت: يحتوي Python الخاص بـ QGIS على كل الحزم.</translation>
         </message>
     </context>
     <context>

@@ -1306,6 +1306,10 @@
             <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
             <translation>داده‌ها در افق بر حسب {} و در ارتفاع بر حسب {} هستند؛ به متر تبدیل می‌شوند، پس هر طولی که می‌دهید و هر طول در این گزارش کار به متر است.</translation>
         </message>
+        <message>
+            <source>Set-up</source>
+            <translation>تنظیمات</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>
@@ -1316,6 +1320,29 @@
         <message>
             <source>LiDAR to DTM with accuracy</source>
             <translation>از LiDAR تا DTM همراه با دقت</translation>
+        </message>
+    </context>
+    <context>
+        <name>GeomaticsToolboxPlugin</name>
+        <message>
+            <source>{packages} for the LiDAR algorithms</source>
+            <translation>{packages} برای الگوریتم‌های لیدار</translation>
+        </message>
+        <message>
+            <source>{packages} for the tile catalog</source>
+            <translation>{packages} برای کاتالوگ کاشی‌ها</translation>
+        </message>
+        <message>
+            <source>QGIS's Python lacks Python packages this toolbox needs: {missing}. The other algorithms work without them.</source>
+            <translation>Python خودِ QGIS بسته‌هایی را که این جعبه‌ابزار لازم دارد ندارد: {missing}. الگوریتم‌های دیگر بدون آن‌ها کار می‌کنند.</translation>
+        </message>
+        <message>
+            <source>Geomatics Toolbox</source>
+            <translation>جعبه‌ابزار ژئوماتیک</translation>
+        </message>
+        <message>
+            <source>Install them…</source>
+            <translation>نصب آن‌ها…</translation>
         </message>
     </context>
     <context>
@@ -1763,6 +1790,65 @@
         <message>
             <source>Nodata cells</source>
             <translation>سلول‌های بدون داده</translation>
+        </message>
+    </context>
+    <context>
+        <name>InstallDependenciesAlgorithm</name>
+        <message>
+            <source>Install the Python packages this toolbox needs</source>
+            <translation>نصب بسته‌های Python مورد نیاز این جعبه‌ابزار</translation>
+        </message>
+        <message>
+            <source>Installs laspy, lazrs, dask and distributed for QGIS's Python into a folder of this QGIS profile.</source>
+            <translation>laspy، lazrs، dask و distributed را برای Python خودِ QGIS در پوشه‌ای از همین نمایهٔ کاربری QGIS نصب می‌کند.</translation>
+        </message>
+        <message>
+            <source>install,pip,dependencies,packages,laspy,lazrs,dask,offline,wheels,setup</source>
+            <translation>نصب,pip,وابستگی‌ها,بسته‌ها,laspy,lazrs,dask,آفلاین,wheels,راه‌اندازی</translation>
+        </message>
+        <message>
+            <source>The LiDAR algorithms need laspy and lazrs, the tile catalog also dask and distributed; QGIS ships the rest (numpy, SciPy, GDAL). This installs the versions the toolbox was tested with, only those QGIS's Python lacks, with that Python's pip into a folder of the current QGIS profile: QGIS's own packages are never changed or replaced, and removing the folder undoes it. The log shows every command and everything pip prints.</source>
+            <translation>الگوریتم‌های لیدار به laspy و lazrs نیاز دارند و کاتالوگ کاشی‌ها افزون بر آن به dask و distributed؛ بقیه (numpy، SciPy، GDAL) همراه QGIS است. این الگوریتم نسخه‌هایی را که جعبه‌ابزار با آن‌ها آزموده شده، فقط آن‌هایی را که Python خودِ QGIS ندارد، با pip همان Python در پوشه‌ای از نمایهٔ کاربری کنونی QGIS نصب می‌کند: بسته‌های خودِ QGIS هرگز تغییر نمی‌کنند یا جایگزین نمی‌شوند و با حذف پوشه همه‌چیز به حالت پیش بازمی‌گردد. گزارش اجرا هر فرمان و هرچه pip چاپ می‌کند را نشان می‌دهد.</translation>
+        </message>
+        <message>
+            <source>For computers without internet: a folder of wheel files (.whl) downloaded elsewhere with pip download for the same Python version and system. Empty: the package index pip is configured with.</source>
+            <translation>برای رایانه‌های بدون اینترنت: پوشه‌ای از فایل‌های wheel ‏(.whl) که در جای دیگری با pip download برای همان نسخهٔ Python و همان سیستم‌عامل دریافت شده‌اند. خالی: نمایهٔ بسته‌ای که pip با آن پیکربندی شده است.</translation>
+        </message>
+        <message>
+            <source>Folder of wheels (offline installation)</source>
+            <translation>پوشهٔ فایل‌های wheel (نصب آفلاین)</translation>
+        </message>
+        <message>
+            <source>Folder the packages are installed in</source>
+            <translation>پوشه‌ای که بسته‌ها در آن نصب شدند</translation>
+        </message>
+        <message>
+            <source>Packages installed</source>
+            <translation>بسته‌های نصب‌شده</translation>
+        </message>
+        <message>
+            <source>Packages still missing</source>
+            <translation>بسته‌هایی که هنوز نیستند</translation>
+        </message>
+        <message>
+            <source>pip commands run</source>
+            <translation>فرمان‌های pip اجراشده</translation>
+        </message>
+        <message>
+            <source>Python: {python}</source>
+            <translation>Python: {python}</translation>
+        </message>
+        <message>
+            <source>Folder: {folder}</source>
+            <translation>پوشه: {folder}</translation>
+        </message>
+        <message>
+            <source>Installed: {packages}</source>
+            <translation>نصب شد: {packages}</translation>
+        </message>
+        <message>
+            <source>Nothing to install: QGIS's Python already has every package.</source>
+            <translation>چیزی برای نصب نیست: Python خودِ QGIS همهٔ بسته‌ها را دارد.</translation>
         </message>
     </context>
     <context>

@@ -104,6 +104,12 @@ facts = {"memory": system.available_memory(), "peak": system.peak_rss_mb(),
                                                       nrows=10)) == 1600}
 with kriging.single_threaded_blas():
     facts["solve"] = float(np.linalg.solve(np.eye(3) * 2, np.ones(3)).sum())
+import processing
+facts["gsd"] = processing.run("geomatics:gsdcalculator", {
+    "DISTANCE": 5.88, "SENSOR_WIDTH": 6.123, "IMAGE_WIDTH": 3648, "FOCAL_LENGTH": 4.6})["GSD"]
+gf = QgsApplication.processingRegistry().createAlgorithmById("geomatics:groundfilter")
+from qgis.core import QgsProcessingContext
+facts["refusal"] = gf.checkParameterValues({"INPUT": "a.laz"}, QgsProcessingContext())[1]
 plugin.unload()
 leaked = sorted(m for m in sys.modules if m.split(".")[0] in BLOCKED)
 print("RESULT:" + json.dumps(dict(algs=algs, errors=errors, modules=len(modules),
@@ -140,6 +146,7 @@ def test_plugin_loads_without_posix_modules_or_proc(expected_ids, platform):
     assert facts["candidates"], "no interpreter candidate"
     if platform == "win32":
         assert any(c.endswith("python.exe") for c in facts["candidates"])
+    assert abs(facts["gsd"] - 0.21455) < 5e-5 and "installdependencies" not in facts["refusal"]
 
 
 def test_plugin_loads_with_every_runtime_package_missing(expected_ids):
@@ -147,6 +154,10 @@ def test_plugin_loads_with_every_runtime_package_missing(expected_ids):
     assert res["errors"] == []
     assert res["algs"] == expected_ids
     assert res["leaked"] == []
+    # non-LiDAR algorithms run; LiDAR ones refuse before running, naming the installer
+    assert abs(res["facts"]["gsd"] - 0.21455) < 5e-5
+    refusal = res["facts"]["refusal"]
+    assert "laspy, lazrs" in refusal and "geomatics:installdependencies" in refusal
 
 
 def test_no_posix_only_import_or_proc_path_in_the_qgis_process():
@@ -161,3 +172,60 @@ def test_no_posix_only_import_or_proc_path_in_the_qgis_process():
                     or '"/proc/' in line or "'/proc/" in line:
                 bad.append(f"{path.relative_to(ROOT)}:{n}: {line.strip()}")
     assert bad == []
+
+
+MESSAGE_BAR = r"""
+import importlib.abc, importlib.util, os, sys, json
+os.environ["QT_QPA_PLATFORM"] = "offscreen"
+from qgis.core import QgsApplication
+from qgis.gui import QgsMessageBar
+app = QgsApplication([], True)
+app.initQgis()
+sys.path.append("/usr/share/qgis/python/plugins")
+from processing.core.Processing import Processing
+Processing.initialize()
+BLOCKED = set(sys.argv[2].split(","))
+class Block(importlib.abc.MetaPathFinder):
+    def find_spec(self, name, path=None, target=None):
+        if name.split(".")[0] in BLOCKED:
+            raise ModuleNotFoundError(name, name=name)
+sys.meta_path.insert(0, Block())
+class Iface:
+    def __init__(self):
+        self.bar = QgsMessageBar()
+    def messageBar(self):
+        return self.bar
+spec = importlib.util.spec_from_file_location(
+    "geomatics_toolbox", os.path.join(sys.argv[1], "__init__.py"),
+    submodule_search_locations=[sys.argv[1]])
+pkg = importlib.util.module_from_spec(spec)
+sys.modules["geomatics_toolbox"] = pkg
+spec.loader.exec_module(pkg)
+iface = Iface()
+plugin = pkg.classFactory(iface)
+plugin.initGui()
+from qgis.PyQt.QtWidgets import QLabel, QPushButton
+items = iface.bar.items()
+texts = [lab.text() for item in items for lab in item.findChildren(QLabel)]
+buttons = [b.text() for item in items for b in item.findChildren(QPushButton)
+           if b.objectName() == "geomatics_install_button"]
+print("RESULT:" + json.dumps({"items": len(items), "texts": texts, "buttons": buttons,
+                              "text": [i.text() for i in items]}))
+plugin.unload()
+"""
+
+
+@pytest.mark.parametrize("blocked, shown", [(RUNTIME, True), ((), False)])
+def test_message_bar_names_missing_packages_and_offers_install(qgis_app, blocked, shown):
+    out = subprocess.run([sys.executable, "-c", MESSAGE_BAR, str(ROOT), ",".join(blocked)],
+                         capture_output=True, text=True, timeout=600)
+    lines = [ln for ln in out.stdout.splitlines() if ln.startswith("RESULT:")]
+    assert out.returncode == 0 and lines, f"{out.stdout}\n{out.stderr}"
+    res = json.loads(lines[-1][len("RESULT:"):])
+    if not shown:
+        assert res["items"] == 0
+        return
+    assert res["items"] == 1 and res["buttons"] == ["Install them…"]
+    text = " ".join(res["texts"] + res["text"])
+    assert "laspy, lazrs for the LiDAR algorithms" in text
+    assert "dask, distributed for the tile catalog" in text

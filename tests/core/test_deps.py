@@ -1,0 +1,102 @@
+"""core/deps.py: the runtime requirements and the private, two-step pip installation."""
+from __future__ import annotations
+
+import json
+import os
+import sys
+
+import pytest
+
+from geomatics_toolbox.core import deps
+from geomatics_toolbox.core.errors import InputError
+from geomatics_toolbox.core.lidar import _workers
+
+
+def test_requirements_are_the_shipped_pins_with_a_purpose():
+    reqs = deps.requirements()
+    lines = [ln.split("#")[0].strip() for ln in
+             deps.REQUIREMENTS_FILE.read_text(encoding="utf-8").splitlines()]
+    assert [r.line for r in reqs] == [ln for ln in lines if ln and not ln.startswith("-")]
+    assert {r.name: r.group for r in reqs} == {"laspy": "lidar", "lazrs": "lidar",
+                                               "dask": "catalog", "distributed": "catalog"}
+    assert not {r.name for r in reqs} & set(deps.NEVER_INSTALL)
+    assert all("==" in r.line for r in reqs)           # pinned: what the tests ran
+
+
+def test_missing_and_check_name_the_packages_and_the_installer(monkeypatch, tmp_path):
+    req = tmp_path / "requirements.txt"
+    req.write_text("# comment\nlaspy==2.7.0\nno-such-package-xyz==1.0  # x\n-r other.txt\n",
+                   encoding="utf-8")
+    reqs = deps.requirements(req)
+    assert [(r.name, r.import_name) for r in reqs] == [("laspy", "laspy"),
+                                                       ("no-such-package-xyz",
+                                                        "no_such_package_xyz")]
+    monkeypatch.setattr(deps, "requirements", lambda path=None: reqs)
+    assert [r.name for r in deps.missing(["lidar"])] == ["no-such-package-xyz"]
+    with pytest.raises(InputError) as err:
+        deps.check(["lidar"])
+    assert "no-such-package-xyz" in str(err.value)
+    assert "geomatics:installdependencies" in str(err.value)
+    deps.check([])                                       # nothing needed: no error
+
+
+def test_catalog_group_includes_lidar():
+    assert deps.groups_closure(["catalog"]) == ["catalog", "lidar"]
+
+
+def test_commands_never_touch_site_packages(tmp_path):
+    resolve = deps.resolve_command("/py", tmp_path / "r.json", wheel_dir="/wheels")
+    assert resolve[:4] == ["/py", "-m", "pip", "install"]
+    assert "--dry-run" in resolve and "--report" in resolve
+    assert resolve[-3:] == ["--no-index", "--find-links", "/wheels"]
+    install = deps.install_command("/py", tmp_path / "t", ["laspy==2.7.0"])
+    assert install[install.index("--target") + 1] == str(tmp_path / "t")
+    assert "--no-deps" in install and "--no-index" not in install
+    assert install[-1] == "laspy==2.7.0"
+
+
+def test_plan_refuses_to_replace_qgis_packages(tmp_path):
+    report = tmp_path / "r.json"
+    items = [{"metadata": {"name": "laspy", "version": "2.7.0"}},
+             {"metadata": {"name": "toolz", "version": "1.2.0"}}]
+    report.write_text(json.dumps({"version": "1", "install": items}), encoding="utf-8")
+    assert deps.read_plan(report) == ["laspy==2.7.0", "toolz==1.2.0"]
+    items.append({"metadata": {"name": "numpy", "version": "2.2.0"}})
+    report.write_text(json.dumps({"version": "1", "install": items}), encoding="utf-8")
+    with pytest.raises(InputError, match="numpy 2.2.0"):
+        deps.read_plan(report)
+
+
+def test_folder_is_per_profile_and_python_and_appended(tmp_path, monkeypatch):
+    folder = deps.packages_dir(tmp_path / "profiles" / "default")
+    ver = f"python{sys.version_info[0]}.{sys.version_info[1]}"
+    assert folder == tmp_path / "profiles" / "default" / "geomatics_toolbox" / ver
+    monkeypatch.setattr(sys, "path", list(sys.path))
+    monkeypatch.setattr(_workers, "WORKER_PATHS", [])
+    assert not deps.activate(folder)                    # absent: nothing added
+    folder.mkdir(parents=True)
+    assert deps.activate(folder) and deps.activate(folder)
+    assert sys.path[-1] == str(folder) and sys.path.count(str(folder)) == 1
+    assert _workers.WORKER_PATHS == [str(folder)]
+
+
+def test_pip_environment_is_a_copy(tmp_path, monkeypatch):
+    monkeypatch.setenv("PIP_TARGET", "/elsewhere")
+    before = dict(os.environ)
+    env = deps.pip_environment(tmp_path)
+    assert dict(os.environ) == before
+    assert env["PYTHONPATH"].split(os.pathsep)[0] == str(tmp_path)
+    assert "PIP_TARGET" not in env
+
+
+def test_format_command_quotes_spaces():
+    assert deps.format_command(["/p y", "-m", "pip"]) == "'/p y' -m pip"
+
+
+def test_install_with_a_python_without_pip_says_how_to_get_it(tmp_path):
+    fake = tmp_path / "python3"
+    fake.write_text("#!/bin/sh\necho '/fake: No module named pip' >&2\nexit 1\n")
+    fake.chmod(0o755)
+    with pytest.raises(InputError, match="has no pip"):
+        deps.install(tmp_path / "target", python=str(fake), log=lambda s: None)
+    assert not list((tmp_path / "target").glob("*.json"))
