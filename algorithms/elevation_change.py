@@ -17,10 +17,11 @@ from qgis.core import (
 )
 
 from ..core.errors import InputError
-from ..core.io.crs import same_crs
+from ..core.io.crs import crs_label, same_crs
 from ..core.io.las import las_info
 from ..core.io.points import parse_classes, read_class_points, write_grid
 from ..core.io.raster import read_raster, read_raster_on_grid
+from ..core.io.units import raster_units
 from ..core.io.vector import write_label_polygons
 from ..core.lidar.qa import check_projected
 from ..core.terrain import change as core_change
@@ -39,6 +40,41 @@ FIELDS = [("id", "int"), ("kind", "str"), ("area_m2", "float"),
 
 def _is_las(path: str) -> bool:
     return os.path.splitext(path)[1].lower() in (".las", ".laz")
+
+
+def check_two_epochs(before: str, after: str) -> None:
+    """Refuse the same file (or two byte-identical files) as both epochs."""
+    same = os.path.exists(before) and os.path.exists(after) and os.path.samefile(before,
+                                                                                 after)
+    if not same and os.path.getsize(before) == os.path.getsize(after):
+        import hashlib
+
+        def digest(p):
+            h = hashlib.sha256()
+            with open(p, "rb") as fh:
+                for block in iter(lambda: fh.read(1 << 20), b""):
+                    h.update(block)
+            return h.digest()
+        same = digest(before) == digest(after)
+    if same:
+        raise InputError("Both epochs are the same data ({before} and {after}); the change "
+                         "would be zero everywhere. Give the surveys of two dates.",
+                         before=before, after=after)
+
+
+def check_same_crs(crs_a, crs_b, path_a, path_b, units_a=None, units_b=None) -> None:
+    """Refuse two epochs whose CRSs differ in meaning (both named), or in feet."""
+    if crs_a and crs_b and not same_crs(crs_a, crs_b):
+        raise InputError("The two epochs are in different CRSs: {a} is in {crs_a}, {b} in "
+                         "{crs_b}. Reproject one into the other's CRS first.",
+                         a=os.path.basename(path_a), crs_a=crs_label(crs_a),
+                         b=os.path.basename(path_b), crs_b=crs_label(crs_b))
+    for path, units in ((path_a, units_a), (path_b, units_b)):
+        if units is not None and not units.metric:
+            raise InputError("{path} is in {units}; elevation change (differences, areas "
+                             "and volumes in metres) needs both epochs in metres. Reproject "
+                             "it to a metre CRS first.", path=os.path.basename(path),
+                             units=units.describe())
 
 
 class ElevationChangeAlgorithm(GeomaticsAlgorithm):
@@ -147,6 +183,7 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
         """Both surfaces on one grid: rasters as they are, clouds by TIN."""
         if _is_las(before) != _is_las(after):
             raise InputError("Give two rasters or two point clouds, not one of each.")
+        check_two_epochs(before, after)
         if not _is_las(before):
             return self.raster_epochs(before, after, feedback)
         classes = parse_classes(self.parameterAsString(parameters, self.CLASSES, context))
@@ -154,6 +191,7 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
         if not cell > 0:
             raise InputError("Cell size must be > 0 (m); give e.g. 1.0.")
         ia, ib = las_info(before), las_info(after)
+        check_same_crs(ia.crs, ib.crs, before, after, ia.units, ib.units)
         box = (max(ia.mins[0], ib.mins[0]), min(ia.maxs[0], ib.maxs[0]),
                max(ia.mins[1], ib.mins[1]), min(ia.maxs[1], ib.maxs[1]))
         if box[0] >= box[1] or box[2] >= box[3]:
@@ -170,15 +208,14 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
     def raster_epochs(self, before, after, feedback):
         """Both rasters on the first one's grid; the second resampled when it differs."""
         ra, rb = read_raster(before), read_raster(after)
+        check_same_crs(ra.crs, rb.crs, before, after, raster_units(before),
+                       raster_units(after))
         if abs(ra.geotransform[2]) > 0 or abs(ra.geotransform[4]) > 0:
             raise InputError("The first raster is rotated; warp it north-up first.")
         grid = grid_like(ra.geotransform, ra.shape, crs=ra.crs)
         if ra.shape == rb.shape and np.abs(np.subtract(ra.geotransform,
                                                        rb.geotransform)).max() <= 1e-6:
             return ra.masked(), rb.masked(), grid
-        if ra.crs and rb.crs and not same_crs(ra.crs, rb.crs):
-            raise InputError("The two rasters are in different CRSs; reproject the second "
-                             "one into the first one's CRS first.")
         feedback.pushInfo(self.tr(
             "The second raster ({0} × {1} cells of {2:g} m) is resampled (bilinear) onto "
             "the first one's grid ({3} × {4} cells of {5:g} m).").format(

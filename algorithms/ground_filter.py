@@ -1,12 +1,15 @@
 """Recommended ground filter and progressive TIN densification (Processing algorithms)."""
 from __future__ import annotations
 
+import math
+
 from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterFileDestination,
 )
 
+from ..core.errors import InputError
 from ..core.lidar import ptd as core_ptd
 from ..core.lidar import recommended as core_rec
 from ..core.lidar.pipeline import SelectionOptions
@@ -155,13 +158,17 @@ class GroundFilterAlgorithm(_GroundCommon):
 
     def options(self, parameters, context) -> core_rec.RecommendedOptions:
         """Options from the advanced overrides (0 = derived / default)."""
-        def num(name):
-            return self.parameterAsDouble(parameters, name, context)
-        kw = dict(cell=num(self.CELL) or None, slope=num(self.SLOPE) or None,
+        def num(name, zero_ok):
+            value = self.parameterAsDouble(parameters, name, context)
+            if not (math.isfinite(value) and (value > 0 or (zero_ok and value == 0))):
+                raise InputError("{name} must be a number {rule}, got {value}; give a "
+                                 "value or leave the default.", name=name, value=value,
+                                 rule=">= 0 (0 = derived)" if zero_ok else "> 0")
+            return value
+        kw = dict(cell=num(self.CELL, True) or None, slope=num(self.SLOPE, True) or None,
                   refine=self.parameterAsInt(parameters, self.REFINE, context))
         for name, field in ((self.MAX_WINDOW, "max_window"), (self.THRESHOLD, "threshold")):
-            if num(name) > 0:
-                kw[field] = num(name)
+            kw[field] = num(name, False)
         return core_rec.RecommendedOptions(**kw)
 
     def process(self, parameters, context, feedback):

@@ -44,6 +44,50 @@ def _convert(kind: str, src: str, dst: str) -> None:
             suffix=Path(src).suffix)
 
 
+def _driver_for(kind: str, suffix: str) -> bool:
+    """Return True when GDAL/OGR can tell the one driver for ``kind`` files ``*suffix``.
+
+    As GDAL guesses the output driver: exactly one driver that creates such files
+    (GTiff wins among several); ``.txt`` (no raster driver, two vector ones) fails.
+    """
+    gdal = _gdal()
+    ext = suffix.lower().lstrip(".")
+    cap = gdal.DCAP_RASTER if kind == "raster" else gdal.DCAP_VECTOR
+    found = []
+    for i in range(gdal.GetDriverCount()):
+        drv = gdal.GetDriver(i)
+        md = drv.GetMetadata() or {}
+        if md.get(cap) != "YES" or not (md.get(gdal.DCAP_CREATE) == "YES"
+                                         or md.get(gdal.DCAP_CREATECOPY) == "YES"):
+            continue
+        if ext in (md.get(gdal.DMD_EXTENSIONS) or md.get(gdal.DMD_EXTENSION) or "").split():
+            found.append(drv.ShortName)
+    return len(found) == 1 or "GTiff" in found
+
+
+def check_destination(kind: str, src: str, dst: str) -> None:
+    """Refuse, before anything is written, a destination that cannot hold ``kind``.
+
+    A point cloud must go to .las/.laz; a raster or vector to an extension a GDAL/OGR
+    driver writes (``.txt`` is neither); a plain file keeps its extension.
+    """
+    suffix = Path(dst).suffix.lower()
+    if kind == "cloud":
+        ok = suffix in (".las", ".laz")
+        wanted = ".las or .laz"
+    elif kind in ("raster", "vector"):
+        ok = suffix == Path(src).suffix.lower() or (suffix and _driver_for(kind, suffix))
+        wanted = ".tif" if kind == "raster" else ".gpkg"
+    else:
+        ok = suffix == Path(src).suffix.lower()
+        wanted = Path(src).suffix
+    if not ok:
+        raise InputError("The {kind} output cannot be written as {dst} ({suffix} is not a "
+                         "{kind} format); choose a destination ending in {wanted}.",
+                         kind=kind, dst=dst, suffix=suffix or "no extension",
+                         wanted=wanted)
+
+
 def publish_file(kind: str, src: str, dst: str) -> None:
     """Copy ``src`` to ``dst`` (a contract temporary), converting when needed."""
     if kind not in KINDS:
@@ -86,6 +130,9 @@ def publish_files(files: Mapping[str, Tuple[str, Optional[str], str]], *,
         be written, or a source is missing; nothing is left at any destination.
     """
     wanted = {k: v for k, v in files.items() if v[1] not in (None, "")}
+    for src, dst, kind in wanted.values():
+        if kind in KINDS:
+            check_destination(kind, src, dst)
     sources = {f"{k} (temporary)": v[0] for k, v in wanted.items()}
     with OutputContract({k: v[1] for k, v in wanted.items()},
                         inputs={**dict(inputs), **sources}) as out:

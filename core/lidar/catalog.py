@@ -29,11 +29,14 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
+from ..coords import REPROJECT_HINT, crs_is_geographic
 from ..errors import InputError
 from ..io.catalog import build_vrt, find_tiles, index_tiles
 from ..io.contract import OutputContract, check_paths, remove_temp
+from ..io.crs import crs_label, same_crs
 from ..io.las import LasInfo
 from ..progress import Cancelled, Monitor
+from ..terrain.grid import check_grid_size
 from ._chunks import (
     DTM_METHODS,
     GROUND_FILTERS,
@@ -88,16 +91,17 @@ class Catalog:
         if empty:
             raise InputError("Tile(s) without points: {tiles}; remove them "
                              "from the catalog.", tiles=', '.join(empty))
-        crss = {t.crs for t in infos}
-        if len(crss) > 1:
-            listing = "; ".join(f"{os.path.basename(t.path)}: {t.crs or 'none'}"
-                                for t in infos[:6])
+        groups = _crs_groups(infos)
+        if len(groups) > 1:
+            listing = "; ".join(f"{os.path.basename(g[0].path)}: {crs_label(g[0].crs) or 'none'}"
+                                for g in groups[:6])
             raise InputError("The tiles are in {n_crs} different CRSs ({listing}); "
                              "reproject them to one CRS (e.g. pdal translate) first.",
-                             n_crs=len(crss),
+                             n_crs=len(groups),
                              listing=listing)
+        _check_tiles(infos)
         bounds = np.array([[t.mins[0], t.mins[1], t.maxs[0], t.maxs[1]] for t in infos])
-        return cls(infos, bounds, crss.pop())
+        return cls(infos, bounds, infos[0].crs)
 
     @property
     def paths(self) -> List[str]:
@@ -128,6 +132,51 @@ class Catalog:
         e = self.extent
         area = max((e[2] - e[0]) * (e[3] - e[1]), 1e-9)
         return 10.0 * math.sqrt(area / max(self.n_points, 1))
+
+
+def _crs_groups(infos: Sequence[LasInfo]) -> List[List[LasInfo]]:
+    """Tiles grouped by CRS meaning (PROJ equivalence), not by text.
+
+    A LAS 1.4 tile's WKT and a LAS 1.2 tile's GeoTIFF keys of the same EPSG:32632 are
+    one CRS; the vertical units (GeoKeys / compound CRS) must agree too.
+    """
+    groups: List[List[LasInfo]] = []
+    for t in infos:
+        for g in groups:
+            if (g[0].crs == t.crs or same_crs(g[0].crs, t.crs)) and g[0].units == t.units:
+                g.append(t)
+                break
+        else:
+            groups.append([t])
+    return groups
+
+
+def _check_tiles(infos: Sequence[LasInfo]) -> None:
+    """Refuse tiles in degrees or in feet, and duplicated tiles, from the headers."""
+    t = infos[0]
+    if crs_is_geographic(t.crs):
+        raise InputError("The tiles ({tile}, ...) are in a geographic CRS (longitude/"
+                         "latitude in degrees); tiles, buffers and cells need metres. "
+                         "{hint}", tile=os.path.basename(t.path), hint=REPROJECT_HINT)
+    if not t.units.metric:
+        raise InputError(
+            "The tiles ({tile}, ...) are in {units}; the catalog works on tiles in metres "
+            "only (single-file algorithms convert feet). Reproject them to a metre CRS "
+            "first, e.g. 'pdal translate in.laz out.laz reprojection "
+            "--filters.reprojection.out_srs=EPSG:26913'.", tile=os.path.basename(t.path),
+            units=t.units.describe())
+    seen: Dict[tuple, str] = {}
+    dups = []
+    for info in infos:
+        key = (info.count, tuple(round(v, 6) for v in (*info.mins, *info.maxs)))
+        if key in seen:
+            dups.append(f"{os.path.basename(seen[key])} = {os.path.basename(info.path)}")
+        else:
+            seen[key] = info.path
+    if dups:
+        raise InputError("Duplicated tiles (same number of points and same extent): {pairs}. "
+                         "Their points would be counted twice; remove the copies from the "
+                         "catalog.", pairs="; ".join(dups[:5]))
 
 
 # ============================================================================ planning
@@ -179,6 +228,103 @@ def _check_params(ground_filter, dtm_method, cell_size, buffer, chunk_size) -> N
                          "{example}.", chunk_size=f"{chunk_size:g}",
                          cell_size=f"{cell_size:g}",
                          example=f"{max(round(ratio), 1) * cell_size:g}")
+
+
+#: Most chunks a catalog run plans (the scheduler keeps one task each).
+MAX_CHUNKS = 10_000
+#: Most points one chunk (with its buffer) may hold in a worker's memory (about 60 B
+#: per point for coordinates, classes and the filter's arrays: 12 GB).
+MAX_CHUNK_POINTS = 200_000_000
+
+
+def _check_chunks(cat: Catalog, chunk_size: float, cell_size: float, buffer: float,
+                  origin) -> None:
+    """Refuse a plan with too many chunks, or chunks too big for a worker, up front."""
+    e = cat.extent
+    if chunk_size:
+        ox, oy = origin
+        nx = math.floor((e[2] - ox) / chunk_size) - math.floor((e[0] - ox) / chunk_size) + 1
+        ny = math.floor((e[3] - oy) / chunk_size) - math.floor((e[1] - oy) / chunk_size) + 1
+        if nx * ny > MAX_CHUNKS:
+            raise InputError(
+                "CHUNK_SIZE {chunk_size} m cuts the catalog ({w} × {h} m) into up to {n} "
+                "chunks, more than {limit}; each chunk costs scheduling and reading "
+                "overhead. Use CHUNK_SIZE 0 (one chunk per tile) or at least {fit} m.",
+                chunk_size=f"{chunk_size:g}", w=f"{e[2] - e[0]:.0f}", h=f"{e[3] - e[1]:.0f}",
+                n=f"{nx * ny:,}", limit=f"{MAX_CHUNKS:,}",
+                fit=f"{math.ceil(math.sqrt((e[2] - e[0]) * (e[3] - e[1]) / MAX_CHUNKS)):g}")
+        side = chunk_size
+        check_grid_size(math.ceil((side + 2 * buffer) / cell_size),
+                        math.ceil((side + 2 * buffer) / cell_size), cell_size)
+        boxes = [(e[0] - buffer, e[1] - buffer, e[0] + side + buffer, e[1] + side + buffer)]
+    else:
+        boxes = [(b[0] - buffer, b[1] - buffer, b[2] + buffer, b[3] + buffer)
+                 for b in cat.bounds]
+        for b in boxes:
+            check_grid_size(math.ceil((b[2] - b[0]) / cell_size),
+                            math.ceil((b[3] - b[1]) / cell_size), cell_size)
+    worst = max(_overlap_points(cat, b) for b in boxes)
+    if worst > MAX_CHUNK_POINTS:
+        raise InputError(
+            "A chunk with its buffer would hold about {n} points, more than the {limit} a "
+            "worker can keep in memory. Use a smaller CHUNK_SIZE (or 0 for the tiles) or "
+            "a smaller BUFFER.", n=f"{worst:,.0f}", limit=f"{MAX_CHUNK_POINTS:,}")
+
+
+def check_scheduler(address: str, *, timeout: float = 5.0) -> None:
+    """Refuse a malformed or unreachable Dask scheduler address before anything is made.
+
+    Accepts ``tcp://host:port``, ``tls://host:port`` or ``host:port``.
+    """
+    import re
+    import socket
+    m = re.fullmatch(r"(?:(tcp|tls)://)?(\[[0-9a-fA-F:]+\]|[A-Za-z0-9_.\-]+):(\d{1,5})",
+                     address.strip())
+    if not m or not 0 < int(m.group(3)) < 65536:
+        raise InputError("SCHEDULER {scheduler!r} is not a Dask scheduler address; give "
+                         "tcp://host:port (e.g. tcp://10.0.0.5:8786) or leave it empty for "
+                         "local workers.", scheduler=address)
+    host, port = m.group(2).strip("[]"), int(m.group(3))
+    try:
+        with socket.create_connection((host, port), timeout=timeout):
+            pass
+    except OSError as exc:
+        raise InputError("Cannot reach the Dask scheduler {scheduler} ({exc}); start "
+                         "it with 'dask scheduler' or leave SCHEDULER empty.",
+                         scheduler=address, exc=exc) from exc
+
+
+SETTINGS_FILE = "settings.json"
+
+
+def _run_settings(tasks: Sequence[ChunkTask], cat: Catalog) -> dict:
+    t = tasks[0]
+    return dict(ground_filter=t.ground_filter, dtm_method=t.dtm_method,
+                cell_size=t.cell_size, buffer=t.buffer, origin=list(t.origin),
+                max_distance=t.max_distance, chunks=sorted(x.key for x in tasks),
+                tiles=sorted([os.path.basename(i.path), i.count] for i in cat.tiles))
+
+
+def _check_resume(folder: Path, settings: dict) -> None:
+    """Refuse to resume into a folder whose earlier run used other settings."""
+    path = folder / STATE_DIR / SETTINGS_FILE
+    if not path.exists():
+        return
+    import json
+    try:
+        old = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        old = {}
+    diff = [f"{k}: {old.get(k)!r} → {v!r}" for k, v in settings.items()
+            if k not in ("chunks", "tiles") and old.get(k) != v]
+    if old.get("tiles") != settings["tiles"]:
+        diff.append("tiles")
+    if diff:
+        raise InputError(
+            "The output folder {folder} holds the results of an earlier run with other "
+            "settings ({diff}); resuming would mix them. Choose another output folder, or "
+            "delete that folder's outputs and its .catalog folder to start again.",
+            folder=folder, diff="; ".join(diff[:6]))
 
 
 def _overlap_points(cat: Catalog, box) -> float:
@@ -272,6 +418,7 @@ def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
     common = dict(buffer=float(buffer), origin=(float(origin[0]), float(origin[1])),
                   cell_size=float(cell_size), crs=cat.crs, ground_filter=ground_filter,
                   dtm_method=dtm_method, max_distance=md)
+    _check_chunks(cat, float(chunk_size), float(cell_size), float(buffer), origin)
     tasks = (_box_tasks(cat, folder, float(chunk_size), common) if chunk_size
              else _tile_tasks(cat, folder, common))
     outs = {f"{k}:{i}": v for i, t in enumerate(tasks) for k, v in t.outputs.items()
@@ -459,7 +606,13 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     tasks = plan_tasks(cat, folder, ground_filter=gf, dtm_method=dtm_method,
                        cell_size=cell_size, buffer=buffer, origin=origin,
                        chunk_size=chunk_size, max_distance=max_distance)
+    if scheduler:
+        check_scheduler(scheduler)
+    run_settings = _run_settings(tasks, cat)
+    _check_resume(folder, run_settings)
+    # everything is validated: only now is anything created
     (folder / STATE_DIR).mkdir(parents=True, exist_ok=True)
+    _write_settings(folder, run_settings)
     previous = {t.key: is_done(t) for t in tasks}
     todo = [t for t in tasks if previous[t.key] is None]
     for t in todo:
@@ -485,6 +638,14 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
                          vrt=vrt, cog=cog_path, seconds=time.perf_counter() - t0,
                          workers=nw, scheduler=scheduler or "local", settings=settings,
                          timings=clock.phases)
+
+
+def _write_settings(folder: Path, settings: dict) -> None:
+    import json
+    path = folder / STATE_DIR / SETTINGS_FILE
+    tmp = path.with_suffix(".tmp")
+    tmp.write_text(json.dumps(settings, indent=1), encoding="utf-8")
+    os.replace(tmp, path)
 
 
 def _mosaic(cat, folder: Path, tasks, failed, chunks, cog: bool):

@@ -155,6 +155,33 @@ def _snap(lo: float, hi: float, cell: float, align: bool) -> Tuple[float, int]:
     return start, max(n, 1)
 
 
+#: Largest grid any gridder builds (issue 19): 250 million cells (a 15.8 km square at
+#: 1 m, 2 GB per float64 array). Larger grids are refused before anything is allocated,
+#: with the cell size that would fit.
+MAX_GRID_CELLS = 250_000_000
+
+
+def check_grid_size(ncols: int, nrows: int, cell: float, *,
+                    limit: int = MAX_GRID_CELLS) -> None:
+    """Refuse a grid of more than ``limit`` cells (a typo'd cell size, a lying header).
+
+    Raises
+    ------
+    InputError
+        Naming the grid, the limit and a cell size that would fit.
+    """
+    cells = int(ncols) * int(nrows)
+    if cells > limit:
+        from ..errors import InputError
+        fit = cell * math.sqrt(cells / limit)
+        raise InputError(
+            "The grid would have {ncols} × {nrows} = {cells} cells (cell size {cell}), more "
+            "than the {limit} this toolbox builds at once. Use a cell size of at least "
+            "{fit}, a smaller extent, or a tile catalog. No output was written.",
+            ncols=f"{int(ncols):,}", nrows=f"{int(nrows):,}", cells=f"{cells:,}",
+            cell=f"{cell:g}", limit=f"{limit:,}", fit=f"{math.ceil(fit * 100) / 100:g}")
+
+
 def grid_from_extent(extent: Sequence[float], cell_size: float, *, crs: Optional[str] = None,
                      nodata: float = DEFAULT_NODATA, align: bool = True) -> GridSpec:
     """Grid covering ``extent = (xmin, xmax, ymin, ymax)``.
@@ -180,6 +207,7 @@ def grid_from_extent(extent: Sequence[float], cell_size: float, *, crs: Optional
         raise ValueError(f"extent must be (xmin, xmax, ymin, ymax) with xmin <= xmax and "
                          f"ymin <= ymax, got {tuple(extent)}.")
     x0, ncols = _snap(xmin, xmax, cell, align)
+    check_grid_size(ncols, max(int(math.ceil((ymax - ymin) / cell - 1e-9)), 1), cell)
     if align:
         y0, nrows = _snap(ymin, ymax, cell, True)
         ytop = y0 + nrows * cell

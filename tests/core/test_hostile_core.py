@@ -97,3 +97,25 @@ def test_truncated_las_and_lying_evlrs_refused(tmp_path):
     (tmp_path / "vlr.las").write_bytes(bytes(v12))
     with pytest.raises(InputError, match=r"variable-length record 1 of 1 runs past"):
         las_info(tmp_path / "vlr.las")
+
+
+# ----------------------------------------------------------------- 5. wrong output types
+@pytest.mark.parametrize("kind,src,dst,message", [
+    ("cloud", "c.laz", "c.tif", r"cloud output cannot be written as .*c\.tif.*\.las or \.laz"),
+    ("cloud", "c.laz", "c.txt", r"cloud output cannot be written as .*c\.txt"),
+    ("raster", "d.tif", "d.txt", r"raster output cannot be written as .*d\.txt.*\.tif"),
+    ("vector", "r.gpkg", "r.txt", r"vector output cannot be written as .*r\.txt.*\.gpkg"),
+])
+def test_publish_to_a_wrong_format_refused_before_any_copy(tmp_path, kind, src, dst, message):
+    from geomatics_toolbox.core.io import contract
+    from geomatics_toolbox.core.io.publish import publish_files
+    s = tmp_path / src
+    s.write_bytes(b"data")
+    ok = tmp_path / "ok.html"
+    ok_src = tmp_path / "src.html"
+    ok_src.write_text("<p>report</p>")
+    with pytest.raises(InputError, match=message):
+        publish_files({"A": (str(ok_src), str(ok), "file"),
+                       "B": (str(s), str(tmp_path / "out" / dst), kind)})
+    assert not ok.exists() and not (tmp_path / "out").exists()
+    assert not [p for p in tmp_path.iterdir() if contract.is_temp(p)]

@@ -100,3 +100,57 @@ def test_lying_headers_refused_by_groundfilter(qgis_processing, tmp_path, kind, 
         "INPUT": str(bad), "OUTPUT": str(out), "OUTPUT_HTML": str(tmp_path / "r.html")},
         message, [bad], [out, tmp_path / "r.html"])
     assert "bad.las" in text and "FileVersionNotSupported" not in text
+
+
+# ----------------------------------------------------------------- 2. CRSs by meaning
+def _grid_dem(path, crs, z=100.0):
+    from geomatics_toolbox.core.io.raster import write_geotiff
+    write_geotiff(path, np.full((20, 20), z), geotransform=(500_000, 1, 0, 4_000_020, 0, -1),
+                  crs=crs)
+    return path
+
+
+def test_elevationchange_rasters_on_same_numbers_other_crs_refused(qgis_processing, tmp_path):
+    a = _grid_dem(tmp_path / "a.tif", "EPSG:32632")
+    b = _grid_dem(tmp_path / "b.tif", "EPSG:31467", z=101.0)      # same grid numbers
+    out = tmp_path / "d.tif"
+    refused(qgis_processing, "geomatics:elevationchange", {
+        "INPUT": str(a), "INPUT_AFTER": str(b), "OUTPUT": str(out)},
+        r"different CRSs: a\.tif is in EPSG:32632.*b\.tif in EPSG:31467", [a, b], [out])
+
+
+def test_elevationchange_clouds_other_crs_and_same_file_refused(qgis_processing, data,
+                                                                tmp_path):
+    t = data["tile"]
+    g = t.classification == 2
+    a, b = tmp_path / "a.las", tmp_path / "b.las"
+    write_las(a, t.x[g], t.y[g], t.z[g], dimensions={"classification": t.classification[g]},
+              crs="EPSG:32632")
+    write_las(b, t.x[g], t.y[g], t.z[g] + 1, dimensions={"classification": t.classification[g]},
+              crs="EPSG:32633")
+    out = tmp_path / "d.tif"
+    refused(qgis_processing, "geomatics:elevationchange", {
+        "INPUT": str(a), "INPUT_AFTER": str(b), "OUTPUT": str(out)},
+        r"a\.las is in EPSG:32632.*b\.las in EPSG:32633", [a, b], [out])
+    refused(qgis_processing, "geomatics:elevationchange", {
+        "INPUT": str(a), "INPUT_AFTER": str(a), "OUTPUT": str(out)},
+        r"Both epochs are the same data", [a], [out])
+    copy = tmp_path / "copy.las"
+    copy.write_bytes(a.read_bytes())
+    refused(qgis_processing, "geomatics:elevationchange", {
+        "INPUT": str(a), "INPUT_AFTER": str(copy), "OUTPUT": str(out)},
+        r"Both epochs are the same data", [a, copy], [out])
+
+
+# ----------------------------------------------------------------- 5. numbers that lie
+@pytest.mark.parametrize("params,message", [
+    ({"MAX_WINDOW": 0}, r"MAX_WINDOW must be a number > 0, got 0"),
+    ({"THRESHOLD": float("nan")}, r"THRESHOLD must be a number > 0, got nan"),
+    ({"CELL": float("nan")}, r"CELL must be a number >= 0 \(0 = derived\), got nan"),
+])
+def test_groundfilter_nonsense_numbers_refused(qgis_processing, data, tmp_path, params,
+                                               message):
+    out = tmp_path / "c.laz"
+    refused(qgis_processing, "geomatics:groundfilter", {
+        "INPUT": str(data["laz"]), "OUTPUT": str(out), **params}, message, [data["laz"]],
+        [out])

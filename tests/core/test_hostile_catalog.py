@@ -1,0 +1,121 @@
+"""Catalogs validate everything before the first worker or file (issue 22, Build 2–3).
+
+Each refusal names the problem, leaves the tiles byte-identical and creates nothing in
+the output folder (not even ``.catalog``).
+"""
+from __future__ import annotations
+
+import hashlib
+import shutil
+
+import numpy as np
+import pytest
+
+from geomatics_toolbox.core.errors import InputError
+from geomatics_toolbox.core.io.las import write_las
+from geomatics_toolbox.core.lidar import catalog as cc
+from geomatics_toolbox.core.terrain.grid import grid_from_extent
+
+pytest.importorskip("distributed")
+
+
+def _tile(path, x0, y0, *, version="1.4", crs="EPSG:32632", n=400, seed=0):
+    rng = np.random.default_rng(seed)
+    write_las(path, x0 + rng.uniform(0, 100, n), y0 + rng.uniform(0, 100, n),
+              200 + rng.uniform(0, 3, n),
+              dimensions={"classification": np.full(n, 2, np.uint8)}, crs=crs,
+              version=version, point_format=6 if version == "1.4" else 1)
+    return str(path)
+
+
+def _digests(paths):
+    return {p: hashlib.sha256(open(p, "rb").read()).hexdigest() for p in paths}
+
+
+def _refused(src, out, message, **kw):
+    paths = [str(p) for p in (src if isinstance(src, list) else [])]
+    before = _digests(paths)
+    with pytest.raises(InputError, match=message):
+        cc.run_catalog(src, out, workers=1, **kw)
+    assert not out.exists(), sorted(out.rglob("*"))
+    assert _digests(paths) == before
+
+
+@pytest.fixture()
+def tiles(tmp_path):
+    d = tmp_path / "tiles"
+    d.mkdir()
+    return [_tile(d / "a.las", 500_000, 4_000_000, version="1.4"),      # WKT VLR
+            _tile(d / "b.las", 500_100, 4_000_000, version="1.2", seed=1)]   # GeoKeys
+
+
+def test_wkt_and_geokeys_of_one_crs_are_one_crs(tiles):
+    from geomatics_toolbox.core.io.las import las_info
+    assert las_info(tiles[0]).crs != las_info(tiles[1]).crs          # as text: different
+    cat = cc.Catalog.open(tiles)
+    assert len(cat.tiles) == 2
+
+
+def test_different_crs_refused_with_both_named(tiles, tmp_path):
+    other = _tile(tmp_path / "tiles" / "c.las", 500_200, 4_000_000, crs="EPSG:31467")
+    with pytest.raises(InputError, match=r"2 different CRSs.*EPSG:32632.*c\.las: EPSG:31467"):
+        cc.Catalog.open([*tiles, other])
+
+
+def test_duplicate_tile_refused(tiles, tmp_path):
+    copy = tmp_path / "tiles" / "a_copy.las"
+    shutil.copy(tiles[0], copy)
+    _refused([*tiles, str(copy)], tmp_path / "out", r"Duplicated tiles.*a\.las = a_copy\.las")
+
+
+def test_degree_and_feet_tiles_refused(tmp_path):
+    d = tmp_path / "t"
+    d.mkdir()
+    geo = [_tile(d / "g.las", 9.0, 48.0, crs="EPSG:4326")]
+    _refused(geo, tmp_path / "out", r"geographic CRS")
+    ft = [_tile(d / "f.las", 1_600_000, 13_000_000, crs="EPSG:2994")]
+    _refused(ft, tmp_path / "out2", r"are in foot \(ft\).*metres only")
+
+
+@pytest.mark.parametrize("chunk,message", [
+    (1.0, r"CHUNK_SIZE 1 m cuts the catalog .* into up to 20,000 chunks, more than 10,000"),
+    (1e12, r"The grid would have"),
+])
+def test_absurd_chunk_sizes_refused(tiles, tmp_path, chunk, message):
+    _refused(tiles, tmp_path / "out", message, chunk_size=chunk)
+
+
+@pytest.mark.parametrize("address,message", [
+    ("not a scheduler", r"is not a Dask scheduler address"),
+    ("tcp://127.0.0.1:1", r"Cannot reach the Dask scheduler tcp://127.0.0.1:1"),
+])
+def test_bad_scheduler_refused_before_any_file(tiles, tmp_path, address, message):
+    _refused(tiles, tmp_path / "out", message, scheduler=address)
+
+
+def test_truncated_tile_named_before_any_worker(tiles, tmp_path):
+    data = open(tiles[1], "rb").read()
+    open(tiles[1], "wb").write(data[:-500])
+    _refused(tiles, tmp_path / "out", r"b\.las is truncated")
+
+
+def test_rerun_with_other_settings_refused(tiles, tmp_path):
+    out = tmp_path / "out"
+    res = cc.run_catalog(tiles, out, workers=1, cell_size=2.0, buffer=10.0,
+                         ground_filter="keep")
+    assert not res.failed and (out / ".catalog" / "settings.json").exists()
+    again = cc.run_catalog(tiles, out, workers=1, cell_size=2.0, buffer=10.0,
+                           ground_filter="keep")
+    assert sorted(again.skipped) == ["a", "b"]                  # same settings: resumed
+    before = {p: p.stat().st_mtime_ns for p in out.rglob("*")}
+    with pytest.raises(InputError, match=r"earlier run with other settings \(cell_size: "
+                                         r"2\.0 → 1\.0"):
+        cc.run_catalog(tiles, out, workers=1, cell_size=1.0, buffer=10.0,
+                       ground_filter="keep")
+    assert {p: p.stat().st_mtime_ns for p in out.rglob("*")} == before
+
+
+def test_grid_of_a_billion_cells_refused():
+    with pytest.raises(InputError, match=r"100,000 × 10,000 = 1,000,000,000 cells.*at "
+                                         r"least 2"):
+        grid_from_extent((0, 100_000, 0, 10_000), 1.0)
