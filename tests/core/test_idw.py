@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 from geomatics_toolbox.core.terrain.grid import (
+    GridSpec,
     check_memory,
     grid_from_extent,
     grid_from_points,
@@ -118,7 +119,9 @@ def test_bad_input_clear_errors():
         grid_from_extent((0, 10, 0, 10), 0)
     with pytest.raises(ValueError, match="cell_size must be a positive"):
         grid_from_extent((0, 10, 0, 10), -1)
-    huge = grid_from_extent((0, 1e7, 0, 1e7), 0.01)
+    with pytest.raises(ValueError, match=r"1,000,000,000 × 1,000,000,000 = .* cells"):
+        grid_from_extent((0, 1e7, 0, 1e7), 0.01)      # refused before any memory check
+    huge = GridSpec(xmin=0.0, ymax=1e7, cell=0.01, ncols=10**9, nrows=10**9)
     with pytest.raises(ValueError, match=r"would need .*PiB.*available"):
         check_memory(huge)
     with pytest.raises(ValueError, match="would need"):

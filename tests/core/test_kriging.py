@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.terrain.grid import grid_from_extent
+from geomatics_toolbox.core.terrain.grid import GridSpec, grid_from_extent
 from geomatics_toolbox.core.terrain.kriging import (
     Kriging,
     fit_variogram,
@@ -133,7 +133,7 @@ def test_parse_parameters_and_bad_input():
         Kriging(x, y, z, variogram=v, n_closest=16)
     with pytest.raises(ValueError, match="variogram model must be one of"):
         fit_variogram(x, y, z, model="cubic")
-    grid = grid_from_extent((0, 1e7, 0, 1e7), 0.05)
+    grid = GridSpec(xmin=0.0, ymax=1e7, cell=0.05, ncols=2 * 10**8, nrows=2 * 10**8)
     with pytest.raises(ValueError, match="would need"):
         kriging_grid(x, y, z, grid, variogram=v, n_closest=4)
 
