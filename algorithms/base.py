@@ -39,8 +39,8 @@ from ..core.progress import Cancelled
 from ..core.reporting import render_html
 from .locale import user_locale
 
-ICON = os.path.join(os.path.dirname(os.path.dirname(__file__)),
-                    "provider", "icons", "geomatics.svg")
+ICON_DIR = os.path.join(os.path.dirname(os.path.dirname(__file__)), "provider", "icons")
+ICON = os.path.join(ICON_DIR, "geomatics.svg")
 #: help pages shipped with the plugin (scripts/build_help.py writes them)
 HELP_DIR = os.path.join(os.path.dirname(os.path.dirname(__file__)), "help")
 
@@ -141,10 +141,12 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
         return self.GROUP
 
     def icon(self) -> QIcon:
-        return QIcon(ICON)
+        return QIcon(self.svgIconPath())
 
     def svgIconPath(self) -> str:  # noqa: N802 - QGIS API name
-        return ICON
+        """The algorithm's own icon (``provider/icons/<name>.svg``, scripts/build_icons.py)."""
+        path = os.path.join(ICON_DIR, f"{self.name()}.svg")
+        return path if os.path.isfile(path) else ICON
 
     def shortDescription(self) -> str:  # noqa: N802 - QGIS API name
         """Toolbox tooltip: the first sentence of the help (override for a better one)."""

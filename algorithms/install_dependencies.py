@@ -24,7 +24,6 @@ class InstallDependenciesAlgorithm(GeomaticsAlgorithm):
     """``python -m pip`` the pinned runtime packages into a folder of the profile."""
 
     GROUP = "setup"
-    ICON_NAME = "install"
     WHEEL_FOLDER = "WHEEL_FOLDER"
 
     def name(self) -> str:

@@ -87,5 +87,12 @@ def shipped_model(path: str):
         def createInstance(self):  # noqa: N802 - QGIS API name
             return shipped_model(path)
 
+        def svgIconPath(self) -> str:  # noqa: N802 - QGIS API name
+            own = os.path.join(os.path.dirname(ICON_PATH), f"{self.name()}.svg")
+            return own if os.path.isfile(own) else super().svgIconPath()
+
+        def icon(self) -> QIcon:
+            return QIcon(self.svgIconPath())
+
     model = ShippedModel()
     return model if model.fromFile(path) else None

@@ -13,7 +13,9 @@ ROOT = Path(__file__).resolve().parents[1]
 PLUGIN = "geomatics_toolbox"
 EXCLUDE_DIRS = ("tests/", "benchmarks/", ".ci/", "scripts/", ".github/", "synthetic/")
 EXCLUDE_FILES = {".gitignore", "Makefile", "pytest.ini", "ruff.toml", "requirements-dev.txt",
-                 "DEVELOPERS.md"}
+                 "requirements-bench.txt", "DEVELOPERS.md"}
+#: translation sources: the plugin loads the compiled .qm (and i18n/strings/*.json)
+EXCLUDE_SUFFIXES = (".ts",)
 
 
 def main() -> None:
@@ -25,7 +27,8 @@ def main() -> None:
     version = meta["general"]["version"]
     files = subprocess.run(["git", "ls-files"], cwd=ROOT, capture_output=True, text=True,
                            check=True).stdout.split()
-    files = [f for f in files if not f.startswith(EXCLUDE_DIRS) and f not in EXCLUDE_FILES]
+    files = [f for f in files if not f.startswith(EXCLUDE_DIRS) and f not in EXCLUDE_FILES
+             and not f.endswith(EXCLUDE_SUFFIXES)]
     qms = sorted(str(p.relative_to(ROOT)) for p in (ROOT / "i18n").glob("*.qm"))
     if not qms:
         raise SystemExit("No compiled translations: run 'make qm' first.")

@@ -21,6 +21,18 @@ def test_package_ships_no_test_fixture(tmp_path):
     forbidden = ("tests/", "synthetic/", "benchmarks/", "scripts/", ".ci/")
     assert not [n for n in rel if n.startswith(forbidden)]
     assert not [n for n in rel if "synthetic" in n or n.startswith("test_")]
+    lowered = [n.lower() for n in rel]
+    assert not [n for n in lowered if any(w in n for w in ("bench", "test", "synthetic",
+                                                            "conftest", "__pycache__"))]
+    assert not [n for n in rel if n.endswith((".pyc", ".ts")) or n.startswith(".")]
+    # the installer reads the pins from the shipped requirements.txt; every algorithm
+    # has its icon and help page
+    assert "requirements.txt" in rel and "requirements-dev.txt" not in rel
+    pages = [n[len("help/"):-len(".html")] for n in rel
+             if n.startswith("help/") and n.count("/") == 1 and n.endswith(".html")]
+    assert len(pages) >= 24
+    for name in pages:                  # one help page per algorithm (build_help.py)
+        assert f"provider/icons/{name}.svg" in rel, name
     # what QGIS needs is there
     for needed in ("metadata.txt", "__init__.py", "plugin.py", "core/io/contract.py",
                    "i18n/geomatics_toolbox_ar.qm", "i18n/geomatics_toolbox_fa.qm"):
