@@ -4,6 +4,8 @@ Thin wrapper over :mod:`..core.rectification.batch`.
 """
 from __future__ import annotations
 
+import os
+
 from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterEnum,
@@ -12,6 +14,7 @@ from qgis.core import (
     QgsProcessingParameterFolderDestination,
 )
 
+from ..core.errors import InputError
 from ..core.rectification import batch, warp
 from .base import GeomaticsAlgorithm
 from .gcp_rectification import TRANSFORMATIONS, TransformationParams, resampling_options
@@ -102,6 +105,12 @@ class RectifyBatchAlgorithm(TransformationParams, GeomaticsAlgorithm):
                 resampling=warp.RESAMPLING[self.parameterAsEnum(parameters, self.RESAMPLING,
                                                                 context)],
                 log=log, **self.core_callbacks(feedback))
+            failed = [r for r in rows if r.error]
+            if rows and len(failed) == len(rows):
+                raise InputError("None of the {n} images could be rectified (first: {image}: "
+                                 "{error}). Fix their GCP files and run again.",
+                                 n=len(rows), image=os.path.basename(failed[0].image),
+                                 error=failed[0].error)
             outputs = {self.OUTPUT_FOLDER: out_folder, "N_IMAGES": len(rows),
                        "N_RECTIFIED": sum(1 for r in rows if not r.error)}
             if out.requested(self.OUTPUT_CSV):

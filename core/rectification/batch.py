@@ -98,6 +98,27 @@ def rectify_one(image: str, points: str, out_folder: str, *, kind: str, crs: str
     return row
 
 
+def check_batch(pairs, folder, out_folder) -> None:
+    """Refuse, before anything is created, a batch whose outputs would collide.
+
+    The output folder is compared with the input folder after resolving links (a
+    symlink to the input folder is the input folder); two images with one stem
+    (``a.tif`` and ``a.png``) would both become ``a_rectified.tif``.
+    """
+    if os.path.realpath(out_folder) == os.path.realpath(os.fspath(folder)):
+        raise InputError("OUTPUT_FOLDER must differ from INPUT_FOLDER (the rectified "
+                         "images would sit among the inputs).")
+    seen = {}
+    for image, _ in pairs:
+        name = os.path.normcase(output_name(image, out_folder))
+        if name in seen:
+            raise InputError("{a} and {b} would both be written as {out}; rename one of "
+                             "them (one result would be lost).",
+                             a=os.path.basename(seen[name]), b=os.path.basename(image),
+                             out=os.path.basename(name))
+        seen[name] = image
+
+
 def rectify_folder(folder, out_folder, *, kind: str = "recommended", crs: str = "",
                    refine: bool = False, resampling: str = "near", progress=None,
                    cancel=None, log=None) -> List[BatchRow]:
@@ -124,9 +145,7 @@ def rectify_folder(folder, out_folder, *, kind: str = "recommended", crs: str = 
     """
     pairs = find_images(folder)
     out_folder = os.fspath(out_folder)
-    if os.path.abspath(out_folder) == os.path.abspath(os.fspath(folder)):
-        raise InputError("OUTPUT_FOLDER must differ from INPUT_FOLDER (the rectified "
-                         "images would sit among the inputs).")
+    check_batch(pairs, folder, out_folder)
     os.makedirs(out_folder, exist_ok=True)
     mon = Monitor(progress, cancel)
     rows = []

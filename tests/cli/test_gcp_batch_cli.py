@@ -78,3 +78,40 @@ def test_rectifybatch_summary_on_an_input_points_file_is_refused(qgis_process, t
                                           OUTPUT_FOLDER=tmp_path / "out", OUTPUT_CSV=pts)
     assert "OUTPUT_CSV" in msg and pts.read_text() == before
     assert not (tmp_path / "out").exists()
+
+
+# ---------------------------------------------------------- issue 22: batches that refuse
+def test_rectifybatch_colliding_outputs_refused_up_front(qgis_process, tmp_path):
+    src = _folder(tmp_path)
+    (src / "img0.png").write_bytes((src / "img0.tif").read_bytes())      # same stem
+    (src / "img0.png.points").write_text((src / "img0.tif.points").read_text())
+    out = tmp_path / "rectified"
+    msg = qgis_process.run_expect_failure("geomatics:rectifybatch", INPUT_FOLDER=src,
+                                          OUTPUT_FOLDER=out)
+    assert "would both be written as img0_rectified.tif" in msg
+    assert not out.exists()
+
+
+def test_rectifybatch_output_folder_through_a_symlink_refused(qgis_process, tmp_path):
+    src = _folder(tmp_path)
+    link = tmp_path / "link"
+    link.symlink_to(src, target_is_directory=True)
+    before = sorted(p.name for p in src.iterdir())
+    msg = qgis_process.run_expect_failure("geomatics:rectifybatch", INPUT_FOLDER=src,
+                                          OUTPUT_FOLDER=link)
+    assert "OUTPUT_FOLDER must differ" in msg
+    assert sorted(p.name for p in src.iterdir()) == before
+
+
+def test_rectifybatch_every_image_failed_ends_non_zero(qgis_process, tmp_path):
+    src = _folder(tmp_path)
+    for k in range(3):
+        (src / f"img{k}.tif.points").write_text("mapX,mapY,pixelX,pixelY,enable\n1,2,3,-4,1\n")
+    out = tmp_path / "rectified"
+    summary = tmp_path / "summary.csv"
+    msg = qgis_process.run_expect_failure("geomatics:rectifybatch", INPUT_FOLDER=src,
+                                          OUTPUT_FOLDER=out, OUTPUT_CSV=summary,
+                                          GCP_CRS="EPSG:22780")
+    assert "None of the 3 images could be rectified" in msg
+    assert not summary.exists()
+    assert not [p for p in out.iterdir() if p.name.endswith(".tif")]
