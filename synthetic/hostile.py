@@ -105,3 +105,71 @@ def las10_copy(src, dst) -> str:
     data[25] = 0
     open(os.fspath(dst), "wb").write(bytes(data))
     return os.fspath(dst)
+
+
+def write_extra_bytes_las(dst, *, n: int = 50) -> dict:
+    """LAS 1.4 with two extra-bytes dimensions whose descriptors declare their own
+    min/max/no-data/scale/offset (option bits 0b11111 and 0b00111), as producers write.
+
+    Returns ``{name: descriptor bytes}`` (192 bytes each) as written.
+    """
+    import laspy
+    h = laspy.LasHeader(point_format=6, version="1.4")
+    h.add_extra_dim(laspy.ExtraBytesParams(name="hag", type=np.int32, description="height",
+                                           scales=np.array([0.01]),
+                                           offsets=np.array([0.0])))
+    h.add_extra_dim(laspy.ExtraBytesParams(name="amp", type=np.uint16, description="amp"))
+    rec = laspy.ScaleAwarePointRecord.zeros(n, header=h)
+    rec.x = 500_000 + np.arange(n, dtype=float)
+    rec.y = 4e6 + np.arange(n, dtype=float)
+    rec.z = 100 + np.arange(n, dtype=float)
+    rec["hag"] = np.arange(n) * 0.5
+    rec["amp"] = np.arange(n)
+    dst = os.fspath(dst)
+    with laspy.open(dst, mode="w", header=h) as w:
+        w.write_points(rec)
+    declared = {b"hag": (0b11111, -1000, 10000, -9999),      # raw (unscaled) int64 values
+                b"amp": (0b00111, 0, 60000, 65535)}
+    out = {}
+    with open(dst, "r+b") as fh:
+        fh.seek(94)
+        header_size, _, count = struct.unpack("<HII", fh.read(10))
+        pos = header_size
+        for _ in range(count):
+            fh.seek(pos)
+            head = fh.read(54)
+            user = head[2:18].split(b"\0", 1)[0]
+            record, length = struct.unpack("<HH", head[18:22])
+            if user == b"LASF_Spec" and record == 4:
+                for k in range(length // 192):
+                    off = pos + 54 + k * 192
+                    fh.seek(off)
+                    raw = bytearray(fh.read(192))
+                    name = bytes(raw[4:36]).split(b"\0", 1)[0]
+                    opts, lo, hi, nodata = declared[name]
+                    raw[3] = opts
+                    raw[40:48] = struct.pack("<q" if name == b"hag" else "<Q", nodata)
+                    raw[64:72] = struct.pack("<q" if name == b"hag" else "<Q", lo)
+                    raw[88:96] = struct.pack("<q" if name == b"hag" else "<Q", hi)
+                    fh.seek(off)
+                    fh.write(bytes(raw))
+                    out[name.decode()] = bytes(raw)
+            pos += 54 + length
+    return out
+
+
+def padded_vlr_count(src, dst) -> str:
+    """Copy ``src`` (LAS) with 54 zero bytes after its VLRs counted as one more VLR."""
+    data = bytearray(open(os.fspath(src), "rb").read())
+    header_size, offset, count = struct.unpack_from("<HII", data, 94)
+    pos = header_size
+    for _ in range(count):
+        pos += 54 + struct.unpack_from("<H", data, pos + 20)[0]
+    data[pos:pos] = bytes(54)
+    struct.pack_into("<II", data, 96, offset + 54, count + 1)
+    if data[25] >= 4:     # LAS 1.4: the EVLR start moves too
+        start = struct.unpack_from("<Q", data, 235)[0]
+        if start:
+            struct.pack_into("<Q", data, 235, start + 54)
+    open(os.fspath(dst), "wb").write(bytes(data))
+    return os.fspath(dst)

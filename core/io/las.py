@@ -422,6 +422,7 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
     written = 0
     with _open(src) as reader, atomic_output(dst) as tmp:
         header = reader.header
+        _drop_invented_vlrs(header)
         if extra:
             import copy
             header = copy.deepcopy(header)
@@ -450,8 +451,7 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
             evlrs = getattr(header, "evlrs", None)
             if evlrs:
                 writer.write_evlrs(evlrs)
-        if not extra:
-            _restore_extra_bytes_vlrs(src, tmp)
+        _restore_extra_bytes_vlrs(src, tmp)
     return written
 
 
@@ -487,28 +487,56 @@ def _vlr_table(fh):
     return out
 
 
-def _restore_extra_bytes_vlrs(src, dst) -> None:
-    """Put the source's extra-bytes VLRs back byte for byte into ``dst``.
+#: Bytes of one extra-bytes descriptor (LAS 1.4 R15, table 24); its name at 4:36.
+_EB_STRUCT = 192
 
-    laspy's writer recomputes the min/max fields of every extra-bytes descriptor from
-    the points it writes (or resets them), so a copy would not carry the producer's
-    VLR unchanged; the descriptors of a copy describe the same dimensions, so the
-    source's bytes are written back in place (same VLR, same length).
+
+def _restore_extra_bytes_vlrs(src, dst) -> None:
+    """Put the source's extra-bytes descriptors back byte for byte into ``dst``.
+
+    laspy's writer rebuilds the extra-bytes VLR from its own dimension list: it sets the
+    min/max option bits and resets min/max to ±DBL_MAX (or recomputes them), so a copy
+    would lose the producer's declared min/max/no-data/scale/offset and option bits.
+    Every descriptor of ``dst`` that has a source descriptor of the same name gets the
+    source's 192 bytes back (descriptors of dimensions added by the copy are kept).
     """
-    with open(os.fspath(src), "rb") as fs:
-        table = _vlr_table(fs)
-        source = {}
-        for user, record, off, length in table:
+    def descriptors(fh):
+        out = []
+        for user, record, off, length in _vlr_table(fh):
             if user == b"LASF_Spec" and record == 4:
-                fs.seek(off)
-                source.setdefault(length, []).append(fs.read(length))
+                for k in range(length // _EB_STRUCT):
+                    out.append(off + k * _EB_STRUCT)
+        return out
+
+    with open(os.fspath(src), "rb") as fs:
+        source = {}
+        for off in descriptors(fs):
+            fs.seek(off)
+            raw = fs.read(_EB_STRUCT)
+            source.setdefault(raw[4:36].split(b"\0", 1)[0], raw)
     if not source:
         return
     with open(os.fspath(dst), "r+b") as fd:
-        for user, record, off, length in _vlr_table(fd):
-            if user == b"LASF_Spec" and record == 4 and source.get(length):
+        for off in descriptors(fd):
+            fd.seek(off + 4)
+            name = fd.read(32).split(b"\0", 1)[0]
+            if name in source:
                 fd.seek(off)
-                fd.write(source[length].pop(0))
+                fd.write(source[name])
+
+
+def _drop_invented_vlrs(header) -> None:
+    """Remove VLRs laspy made up from padding (a header VLR count larger than the file's).
+
+    A file whose header counts one VLR more than it holds has zero bytes where the last
+    VLR header should be; laspy reads them as an empty VLR (no user id, record 0, no
+    data), which a copy would write out as if it were real.
+    """
+    keep = [v for v in header.vlrs
+            if getattr(v, "user_id", "") or getattr(v, "record_id", 0)
+            or bytes(getattr(v, "record_data", b"") or b"").strip(b"\0")]
+    if len(keep) != len(header.vlrs):
+        header.vlrs[:] = keep
 
 
 def _widen(laspy, chunk, header, extra, start, stop):

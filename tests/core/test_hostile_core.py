@@ -119,3 +119,61 @@ def test_publish_to_a_wrong_format_refused_before_any_copy(tmp_path, kind, src, 
                        "B": (str(s), str(tmp_path / "out" / dst), kind)})
     assert not ok.exists() and not (tmp_path / "out").exists()
     assert not [p for p in tmp_path.iterdir() if contract.is_temp(p)]
+
+
+# ----------------------------------------------------------------- 6. foreign metadata
+def _descriptors(path):
+    import struct
+    out = {}
+    with open(path, "rb") as fh:
+        fh.seek(94)
+        header_size, _, count = struct.unpack("<HII", fh.read(10))
+        pos = header_size
+        for _ in range(count):
+            fh.seek(pos)
+            head = fh.read(54)
+            user = head[2:18].split(b"\0", 1)[0]
+            record, length = struct.unpack("<HH", head[18:22])
+            if user == b"LASF_Spec" and record == 4:
+                fh.seek(pos + 54)
+                data = fh.read(length)
+                for k in range(length // 192):
+                    raw = data[k * 192:(k + 1) * 192]
+                    out[raw[4:36].split(b"\0", 1)[0].decode()] = raw
+            pos += 54 + length
+    return out, count
+
+
+@pytest.mark.parametrize("extra", [False, True])
+def test_extra_bytes_descriptors_written_exactly_as_read(tmp_path, extra):
+    import laspy
+
+    from geomatics_toolbox.core.io.las import read_las, write_las_like
+    from geomatics_toolbox.synthetic.hostile import write_extra_bytes_las
+    src = tmp_path / "eb.las"
+    declared = write_extra_bytes_las(src)
+    assert _descriptors(src)[0] == declared
+    n = len(read_las(src))
+    dst = tmp_path / "copy.las"
+    kw = {"extra": {"HeightAboveGround": np.zeros(n, np.float32)}} if extra else {}
+    write_las_like(src, dst, dimensions={"classification": np.full(n, 2, np.uint8)}, **kw)
+    got, _ = _descriptors(dst)
+    for name, raw in declared.items():
+        assert got[name] == raw, name          # options, min/max, no-data, scale, offset
+    assert ("HeightAboveGround" in got) == extra
+    las = laspy.read(dst)
+    assert np.allclose(las["hag"], np.arange(n) * 0.5) and (las.classification == 2).all()
+
+
+def test_vlr_count_is_what_was_really_read(tmp_path):
+    import laspy
+
+    from geomatics_toolbox.core.io.las import las_info, write_las_like
+    from geomatics_toolbox.synthetic.hostile import padded_vlr_count
+    src = _small_las(tmp_path / "ok.las")
+    lie = padded_vlr_count(src, tmp_path / "lie.las")
+    assert _descriptors(lie)[1] == 2 and las_info(lie).count == 200
+    dst = tmp_path / "copy.las"
+    write_las_like(lie, dst)
+    assert _descriptors(dst)[1] == 1                          # no invented empty VLR
+    assert [v.record_id for v in laspy.read(dst).header.vlrs] == [34735]
