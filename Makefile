@@ -10,7 +10,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 DEB_PACKAGES := qgis python3-qgis qgis-providers python3-gdal gdal-bin python3-scipy \
-	python3-venv qttools5-dev-tools pyqt5-dev-tools chromium xvfb xauth
+	python3-venv python3-pip qttools5-dev-tools pyqt5-dev-tools chromium xvfb xauth
 PYTEST_ARGS ?=
 QGIS_PROFILE ?= $(HOME)/.local/share/QGIS/QGIS3/profiles/default
 
@@ -33,7 +33,7 @@ system-deps:
 	@if ! command -v qgis_process.bin >/dev/null 2>&1 || ! command -v lrelease >/dev/null 2>&1 \
 	   || ! command -v pylupdate5 >/dev/null 2>&1 || ! command -v gdal_grid >/dev/null 2>&1 \
 	   || ! command -v chromium >/dev/null 2>&1 || ! command -v xvfb-run >/dev/null 2>&1 \
-	   || ! $(SYSPY) -c 'import qgis.core, osgeo.gdal, scipy, venv' >/dev/null 2>&1; then \
+	   || ! $(SYSPY) -c 'import qgis.core, osgeo.gdal, scipy, venv, pip' >/dev/null 2>&1; then \
 	  echo "Installing Debian packages: $(DEB_PACKAGES)"; \
 	  $(SUDO) apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends \

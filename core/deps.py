@@ -179,6 +179,7 @@ def pip_environment(target: os.PathLike) -> Dict[str, str]:
     parts = [p for p in env.get("PYTHONPATH", "").split(os.pathsep) if p]
     env["PYTHONPATH"] = os.pathsep.join([str(target)] + parts)
     env["PIP_DISABLE_PIP_VERSION_CHECK"] = "1"
+    env["PYTHONIOENCODING"] = "utf-8"     # pip's output is read as UTF-8 (Windows code pages)
     env.pop("PIP_TARGET", None)
     env.pop("PIP_PREFIX", None)
     env.pop("PIP_USER", None)

@@ -120,6 +120,7 @@ def test_clean_profile_offline_wheels_then_groundfilter(demo, wheelhouse, tmp_pa
     listed = profile.call("list")
     assert listed.returncode == 0 and "geomatics:gsdcalculator" in listed.stdout, \
         listed.stdout[-2000:] + listed.stderr
+    assert "Traceback" not in listed.stderr and "Error" not in listed.stderr, listed.stderr
     assert profile.call("help", "geomatics:installdependencies").returncode == 0
     refused = profile.run("geomatics:groundfilter", INPUT=demo, OUTPUT=tmp_path / "x.laz")
     text = refused.stdout + refused.stderr
