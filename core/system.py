@@ -230,28 +230,40 @@ def interpreter_candidates() -> List[str]:
     return unique
 
 
+#: what a candidate interpreter must report to be this one: version and installation
+IDENTITY_CODE = ("import os, sys; print(repr((tuple(sys.version_info[:3]), "
+                 "os.path.realpath(sys.base_exec_prefix))))")
+
+
+def interpreter_identity() -> str:
+    """Return ``repr((version, real base prefix))`` of this interpreter."""
+    return repr((tuple(sys.version_info[:3]), os.path.realpath(sys.base_exec_prefix)))
+
+
 @functools.cache
-def _reports_same_version(path: str) -> bool:
+def _same_interpreter(path: str) -> bool:
     try:
-        out = subprocess.run([path, "-c", "import sys; print(sys.version_info[:2])"],
-                             capture_output=True, text=True, timeout=60,
-                             creationflags=no_window_flag())
+        out = subprocess.run([path, "-c", IDENTITY_CODE], capture_output=True, text=True,
+                             timeout=60, creationflags=no_window_flag())
     except (OSError, subprocess.SubprocessError):
         return False
-    return out.returncode == 0 and out.stdout.strip() == str(tuple(sys.version_info[:2]))
+    return out.returncode == 0 and out.stdout.strip() == interpreter_identity()
 
 
 def python_executable(*, verify: bool = True) -> Optional[str]:
     """Return the Python interpreter of this process as a program (None if not found).
 
-    With ``verify`` (default) a candidate must run and report the same
-    ``major.minor`` as this process (a ``python3`` found on the side is refused).
-    Never changes any interpreter-wide setting (``multiprocessing.set_executable``).
+    With ``verify`` (default) a candidate must run and report the same version and the
+    same installation (``sys.base_exec_prefix``): an embedded interpreter (QGIS on
+    Linux) may set ``sys.executable`` to whatever ``python3`` comes first on ``PATH`` —
+    a pyenv shim or a conda Python of the same version, with other packages — and pip
+    or Dask workers run there would see another set of packages. Never changes any
+    interpreter-wide setting (``multiprocessing.set_executable``).
     """
     for path in interpreter_candidates():
         if not _is_python(path):
             continue
-        if not verify or _reports_same_version(path):
+        if not verify or _same_interpreter(path):
             return path
     return None
 

@@ -484,8 +484,9 @@ def _client(workers: int, scheduler: str, memory_limit):
     try:
         from distributed import Client
     except ImportError as exc:  # pragma: no cover - install problem
-        raise InputError("The Python packages 'dask' and 'distributed' are not installed; "
-                         "pip install dask distributed.") from exc
+        raise InputError("The Python packages dask and distributed cannot be imported "
+                         "({exc}); run 'Install the Python packages this toolbox needs' "
+                         "(geomatics:installdependencies).", exc=exc) from exc
     if scheduler:
         try:
             return Client(scheduler, timeout="20s"), None

@@ -141,6 +141,15 @@ def test_clean_profile_offline_wheels_then_groundfilter(demo, wheelhouse, tmp_pa
     assert site.returncode != 0
     # 3. the LiDAR algorithm now runs in a new qgis_process (plugin start adds the folder)
     _check_ground_filter(profile, demo, tmp_path / "classified.laz")
+    # the catalog from the embedded Python: its Dask workers are a child process of the
+    # real interpreter (not qgis_process.bin) that finds laspy/dask in the private folder
+    tiles = tmp_path / "tiles"
+    tiles.mkdir()
+    shutil.copy(demo, tiles / "demo.laz")
+    cat = _results(profile.run("geomatics:catalog", INPUT=tiles, WORKERS=1, CELL_SIZE=2,
+                               BUFFER=0, OUTPUT_FOLDER=tmp_path / "cat"))
+    assert cat["N_TILES"] == 1 and cat["N_FAILED"] == 0, cat
+    assert (tmp_path / "cat" / "demo_classified.laz").is_file()
     # a second run plans nothing
     again = _results(profile.run("geomatics:installdependencies", WHEEL_FOLDER=wheelhouse))
     assert again["INSTALLED"] == "" and again["MISSING"] == ""

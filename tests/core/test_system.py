@@ -65,11 +65,27 @@ def test_embedded_linux_qgis_finds_the_system_interpreter(monkeypatch):
 
 
 def test_a_python_of_another_version_is_refused(tmp_path, monkeypatch):
-    other = _touch(tmp_path / "bin" / "python3", "#!/bin/sh\necho '(2, 7)'\n")
+    other = _touch(tmp_path / "bin" / "python3", "#!/bin/sh\necho '((2, 7, 18), \"/usr\")'\n")
     _fake_interpreter(monkeypatch, executable=tmp_path / "qgis", prefix=tmp_path,
                       platform="linux")
     assert system.python_executable(verify=False) == other
     assert system.python_executable() is None
+
+
+def test_another_installation_of_the_same_version_is_refused(tmp_path, monkeypatch):
+    """Embedded Python on Linux: sys.executable = the first python3 on PATH (a pyenv
+    shim, conda) — same version, other packages: refused, the prefix's one is taken."""
+    same_version = repr((tuple(sys.version_info[:3]), "/root/.pyenv/versions/x"))
+    shim = _touch(tmp_path / "shims" / "python3", f"#!/bin/sh\necho \"{same_version}\"\n")
+    real = os.path.join(sys.base_exec_prefix, "bin",
+                        f"python{sys.version_info[0]}.{sys.version_info[1]}")
+    if not os.path.exists(real):
+        pytest.skip(f"{real} not present")
+    monkeypatch.setattr(sys, "executable", shim)
+    for name in ("exec_prefix", "prefix"):
+        monkeypatch.setattr(sys, name, sys.base_exec_prefix)
+    assert system.interpreter_candidates()[0] == shim
+    assert system.python_executable() == real
 
 
 def test_memory_figures_are_positive_and_consistent():
