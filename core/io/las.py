@@ -190,7 +190,17 @@ def check_header_sizes(path, head: bytes, size: int) -> None:
                 "its {size} bytes. The file is truncated or its header damaged; re-export "
                 "or re-download it.", path=path, n=f"{n_evlrs:,}", start=start_evlr,
                 size=size)
-    if not path.lower().endswith(".laz") and rec_len and fmt <= 10:
+    if head[104] & 0xC0:       # LAZ: the chunk table offset opens the point data
+        with open(path, "rb") as fh:
+            fh.seek(offset)
+            raw = fh.read(8)
+        table = struct.unpack("<q", raw)[0] if len(raw) == 8 else -2
+        if table != -1 and not offset + 8 <= table <= size - 8:
+            raise InputError(
+                "{path} is truncated: its compressed points end before their chunk table "
+                "(byte {table} of a {size}-byte file). Re-export or re-download the file.",
+                path=path, table=f"{table:,}", size=f"{size:,}")
+    elif rec_len and fmt <= 10:
         need = offset + count * rec_len
         if need > size:
             raise InputError(

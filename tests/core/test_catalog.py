@@ -5,6 +5,7 @@ import json
 import os
 import shutil
 import socket
+import struct
 import subprocess
 import sys
 import time
@@ -251,8 +252,13 @@ def test_external_cluster_matches_local(tiles, tmp_path, dask_cluster):
 def test_chunk_failing_twice_is_reported_and_others_finish(tiles, tmp_path):
     src = tmp_path / "tiles"
     shutil.copytree(tiles, src)
-    data = (src / "t11.laz").read_bytes()
-    (src / "t11.laz").write_bytes(data[:len(data) // 2])      # header intact, points cut
+    data = bytearray((src / "t11.laz").read_bytes())
+    # points cut and the chunk-table offset set to "unknown" (-1, as streaming writers
+    # leave it): damage the header cannot reveal, so it fails in its worker (a plainly
+    # truncated tile is refused up front: test_hostile_catalog)
+    cut = data[:len(data) // 2]
+    struct.pack_into("<q", cut, struct.unpack_from("<I", cut, 96)[0], -1)
+    (src / "t11.laz").write_bytes(bytes(cut))
     out = tmp_path / "out"
     res = cc.run_catalog(str(src), out, ground_filter="keep", cell_size=CELL, buffer=0.0,
                          workers=2)

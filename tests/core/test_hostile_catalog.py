@@ -119,3 +119,16 @@ def test_grid_of_a_billion_cells_refused():
     with pytest.raises(InputError, match=r"100,000 × 10,000 = 1,000,000,000 cells.*at "
                                          r"least 2"):
         grid_from_extent((0, 100_000, 0, 10_000), 1.0)
+
+
+def test_truncated_laz_tile_named_before_any_worker(tmp_path):
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+    d = tmp_path / "laz"
+    d.mkdir()
+    for k, x0 in enumerate((500_000.0, 500_060.0)):
+        write_tile(generate_tile(extent=(60.0, 60.0), origin=(x0, 4e6), density=2.0, seed=k),
+                   d / f"t{k}.laz")
+    data = (d / "t1.laz").read_bytes()
+    (d / "t1.laz").write_bytes(data[: len(data) // 2])
+    _refused([str(d / "t0.laz"), str(d / "t1.laz")], tmp_path / "out",
+             r"t1\.laz is truncated: its compressed points end before their chunk table")
