@@ -440,7 +440,7 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
     def missing_packages_message(self, parameters) -> str:
         """'' when every package this run needs is there, else the translated message."""
         try:
-            deps.check(self.required_packages(parameters))
+            deps.check(self.required_packages(parameters), load=True)
         except InputError as exc:
             return self.input_error_message(exc)
         return ""

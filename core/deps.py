@@ -108,8 +108,13 @@ def missing(groups: Optional[Iterable[str]] = None) -> List[Requirement]:
             and not r.importable()]
 
 
-def check(groups: Iterable[str]) -> None:
-    """Raise :class:`InputError` naming the missing packages of ``groups`` and the installer."""
+def check(groups: Iterable[str], *, load: bool = False) -> None:
+    """Raise :class:`InputError` naming the missing packages of ``groups`` and the installer.
+
+    With ``load`` the present ones are also imported, so a broken installation (a
+    dependency of theirs missing, a wheel for another Python) is reported before the
+    run with the import error, not halfway through it.
+    """
     gone = missing(groups)
     if gone:
         raise InputError("This algorithm needs the Python packages {packages}, which QGIS's "
@@ -117,6 +122,20 @@ def check(groups: Iterable[str]) -> None:
                          "toolbox needs' ({installer}) from the Processing Toolbox, then "
                          "run this algorithm again.",
                          packages=", ".join(r.name for r in gone), installer=INSTALLER_ID)
+    if not load:
+        return
+    wanted = set(groups_closure(groups))
+    for req in requirements():
+        if req.group not in wanted:
+            continue
+        try:
+            importlib.import_module(req.import_name)
+        except Exception as exc:  # noqa: BLE001 - any failure to load is reported
+            raise InputError("The Python package {package} is installed but cannot be "
+                             "loaded ({error}). Run 'Install the Python packages this "
+                             "toolbox needs' ({installer}) again to repair it.",
+                             package=req.name, error=f"{type(exc).__name__}: {exc}",
+                             installer=INSTALLER_ID) from exc
 
 
 # ---------------------------------------------------------------------------- the folder

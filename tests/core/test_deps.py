@@ -100,3 +100,19 @@ def test_install_with_a_python_without_pip_says_how_to_get_it(tmp_path):
     with pytest.raises(InputError, match="has no pip"):
         deps.install(tmp_path / "target", python=str(fake), log=lambda s: None)
     assert not list((tmp_path / "target").glob("*.json"))
+
+
+def test_a_package_that_cannot_load_is_reported_before_the_run(monkeypatch, tmp_path):
+    """find_spec sees distributed, but a dependency of it is gone: check(load=True) says so."""
+    broken = tmp_path / "brokenpkg_xyz"
+    broken.mkdir()
+    (broken / "__init__.py").write_text("import click_missing_dependency_xyz\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    req = deps.Requirement("brokenpkg-xyz", "brokenpkg-xyz==1.0", "brokenpkg_xyz", "lidar")
+    monkeypatch.setattr(deps, "requirements", lambda path=None: [req])
+    deps.check(["lidar"])                                # present: the cheap check passes
+    with pytest.raises(InputError) as err:
+        deps.check(["lidar"], load=True)
+    text = str(err.value)
+    assert "brokenpkg-xyz" in text and "click_missing_dependency_xyz" in text
+    assert "geomatics:installdependencies" in text
