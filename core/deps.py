@@ -239,6 +239,10 @@ class InstallResult:
     log: str
 
 
+class _OldPipError(Exception):
+    """pip older than 22.2: no ``--report`` (Ubuntu 22.04 ships 22.0)."""
+
+
 def _run(cmd: List[str], env: Dict[str, str], log: Callable[[str], None],
          cancel: Optional[Callable[[], bool]], on_line: Optional[Callable[[str], None]] = None
          ) -> str:
@@ -262,6 +266,8 @@ def _run(cmd: List[str], env: Dict[str, str], log: Callable[[str], None],
     proc.wait()
     if proc.returncode != 0:
         tail = "\n".join(lines[-15:])
+        if "--report" in cmd and "no such option: --report" in tail:
+            raise _OldPipError()
         if "No module named pip" in tail:
             raise InputError("QGIS's Python ({python}) has no pip. Install pip for it (Debian, "
                              "Ubuntu: the package python3-pip; OSGeo4W: python3-pip in the "
@@ -277,6 +283,36 @@ def format_command(cmd: Sequence[str]) -> str:
         return subprocess.list2cmdline(list(cmd))
     return " ".join(a if re.fullmatch(r"[A-Za-z0-9_./:=@+,-]+", a) else shlex.quote(a)
                     for a in cmd)
+
+
+def _install_with_old_pip(python, target, env, wheel_dir, requirements_file, commands, logs,
+                          log, cancel) -> List[str]:
+    """Install in one step for pip < 22.2 (no ``--report``).
+
+    The whole pinned closure goes into the folder, then QGIS's own compiled packages
+    (numpy, SciPy, GDAL…) are removed from it again.
+    """
+    import shutil
+    log("pip < 22.2 (no --report): installing every pin and its dependencies into the "
+        "folder, then removing the packages QGIS ships from it.")
+    cmd = (pip_base(python) + ["--target", str(target), "--upgrade", "--progress-bar", "off",
+                               "-r", str(requirements_file)] + _source_args(wheel_dir))
+    commands.append(cmd)
+    log(format_command(cmd))
+    text = _run(cmd, env, log, cancel)
+    logs.append(text)
+    for entry in Path(target).iterdir():
+        base = re.split(r"[-.]", entry.name, maxsplit=1)[0].lower()
+        if base in NEVER_INSTALL:
+            if entry.is_dir():
+                shutil.rmtree(entry, ignore_errors=True)
+            else:
+                entry.unlink(missing_ok=True)
+            log(f"removed {entry.name} (QGIS's own package)")
+    done = re.findall(r"^Successfully installed (.+)$", text, re.M)
+    pairs = done[-1].split() if done else []
+    return [re.sub(r"-(?=[^-]+$)", "==", p) for p in pairs
+            if _dist_name(p.rsplit("-", 1)[0]) not in NEVER_INSTALL]
 
 
 def install(target: os.PathLike, *, wheel_dir: Optional[str] = None,
@@ -317,24 +353,29 @@ def install(target: os.PathLike, *, wheel_dir: Optional[str] = None,
     commands.append(cmd)
     log(format_command(cmd))
     step(0.05)
-    logs.append(_run(cmd, env, log, cancel))
     try:
-        plan = read_plan(report)
-    finally:
-        report.unlink(missing_ok=True)
-    step(0.3)
-    if plan:
-        cmd = install_command(python, target, plan, wheel_dir=wheel_dir)
-        commands.append(cmd)
-        log(format_command(cmd))
-        seen = [0]
+        logs.append(_run(cmd, env, log, cancel))
+    except _OldPipError:
+        plan = _install_with_old_pip(python, target, env, wheel_dir, requirements_file,
+                                     commands, logs, log, cancel)
+    else:
+        try:
+            plan = read_plan(report)
+        finally:
+            report.unlink(missing_ok=True)
+        step(0.3)
+        if plan:
+            cmd = install_command(python, target, plan, wheel_dir=wheel_dir)
+            commands.append(cmd)
+            log(format_command(cmd))
+            seen = [0]
 
-        def on_line(line: str) -> None:
-            if line.startswith(("Collecting", "Processing", "Installing collected")):
-                seen[0] += 1
-                step(min(0.95, 0.3 + 0.65 * seen[0] / (len(plan) + 1)))
+            def on_line(line: str) -> None:
+                if line.startswith(("Collecting", "Processing", "Installing collected")):
+                    seen[0] += 1
+                    step(min(0.95, 0.3 + 0.65 * seen[0] / (len(plan) + 1)))
 
-        logs.append(_run(cmd, env, log, cancel, on_line))
+            logs.append(_run(cmd, env, log, cancel, on_line))
     activate(target)
     step(1.0)
     return InstallResult(folder=str(target), planned=plan, commands=commands,

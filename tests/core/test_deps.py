@@ -116,3 +116,30 @@ def test_a_package_that_cannot_load_is_reported_before_the_run(monkeypatch, tmp_
     text = str(err.value)
     assert "brokenpkg-xyz" in text and "click_missing_dependency_xyz" in text
     assert "geomatics:installdependencies" in text
+
+
+OLD_PIP = r"""#!/bin/sh
+# a pip 22.0 stand-in: no --report; --target writes the closure (numpy included)
+for a in "$@"; do
+  if [ "$a" = "--report" ]; then echo "no such option: --report" >&2; exit 2; fi
+done
+t=""; prev=""
+for a in "$@"; do [ "$prev" = "--target" ] && t="$a"; prev="$a"; done
+mkdir -p "$t/laspy" "$t/laspy-2.7.0.dist-info" "$t/numpy" "$t/numpy-2.2.6.dist-info" \
+         "$t/numpy.libs"
+echo "Successfully installed laspy-2.7.0 numpy-2.2.6 lazy-importer-0.1.0"
+"""
+
+
+def test_old_pip_without_report_installs_then_drops_qgis_packages(tmp_path):
+    fake = tmp_path / "python3"
+    fake.write_text(OLD_PIP)
+    fake.chmod(0o755)
+    target = tmp_path / "target"
+    lines = []
+    res = deps.install(target, python=str(fake), log=lines.append)
+    assert sorted(p.name for p in target.iterdir()) == ["laspy", "laspy-2.7.0.dist-info"]
+    assert res.planned == ["laspy==2.7.0", "lazy-importer==0.1.0"]
+    assert len(res.commands) == 2 and "--report" in res.commands[0]
+    assert "--target" in res.commands[1] and "-r" in res.commands[1]
+    assert any("removed numpy" in ln for ln in lines)
