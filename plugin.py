@@ -108,7 +108,7 @@ class GeomaticsToolboxPlugin:
         from processing import execAlgorithmDialog
 
         from .core import deps
-        execAlgorithmDialog(f"geomatics:{deps.INSTALLER_ID.split(':')[1]}")
+        execAlgorithmDialog(deps.INSTALLER_ID)
         if not deps.missing() and self.message is not None and self.iface is not None:
             self.iface.messageBar().popWidget(self.message)
             self.message = None

@@ -232,12 +232,13 @@ def interpreter_candidates() -> List[str]:
 
 #: what a candidate interpreter must report to be this one: version and installation
 IDENTITY_CODE = ("import os, sys; print(repr((tuple(sys.version_info[:3]), "
-                 "os.path.realpath(sys.base_exec_prefix))))")
+                 "os.path.normcase(os.path.realpath(sys.base_exec_prefix)))))")
 
 
 def interpreter_identity() -> str:
     """Return ``repr((version, real base prefix))`` of this interpreter."""
-    return repr((tuple(sys.version_info[:3]), os.path.realpath(sys.base_exec_prefix)))
+    return repr((tuple(sys.version_info[:3]),
+                 os.path.normcase(os.path.realpath(sys.base_exec_prefix))))
 
 
 @functools.cache

@@ -209,8 +209,15 @@ items = iface.bar.items()
 texts = [lab.text() for item in items for lab in item.findChildren(QLabel)]
 buttons = [b.text() for item in items for b in item.findChildren(QPushButton)
            if b.objectName() == "geomatics_install_button"]
+opened = []
+import processing
+processing.execAlgorithmDialog = lambda alg_id, *a, **k: opened.append(alg_id)
+for item in items:
+    for b in item.findChildren(QPushButton):
+        if b.objectName() == "geomatics_install_button":
+            b.click()
 print("RESULT:" + json.dumps({"items": len(items), "texts": texts, "buttons": buttons,
-                              "text": [i.text() for i in items]}))
+                              "text": [i.text() for i in items], "opened": opened}))
 plugin.unload()
 """
 
@@ -226,6 +233,7 @@ def test_message_bar_names_missing_packages_and_offers_install(qgis_app, blocked
         assert res["items"] == 0
         return
     assert res["items"] == 1 and res["buttons"] == ["Install them…"]
+    assert res["opened"] == ["geomatics:installdependencies"]
     text = " ".join(res["texts"] + res["text"])
     assert "laspy, lazrs for the LiDAR algorithms" in text
     assert "dask, distributed for the tile catalog" in text
