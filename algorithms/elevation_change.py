@@ -63,18 +63,17 @@ def check_two_epochs(before: str, after: str) -> None:
 
 
 def check_same_crs(crs_a, crs_b, path_a, path_b, units_a=None, units_b=None) -> None:
-    """Refuse two epochs whose CRSs differ in meaning (both named), or in feet."""
+    """Refuse two epochs whose CRSs (or linear units) differ in meaning, both named."""
     if crs_a and crs_b and not same_crs(crs_a, crs_b):
         raise InputError("The two epochs are in different CRSs: {a} is in {crs_a}, {b} in "
                          "{crs_b}. Reproject one into the other's CRS first.",
                          a=os.path.basename(path_a), crs_a=crs_label(crs_a),
                          b=os.path.basename(path_b), crs_b=crs_label(crs_b))
-    for path, units in ((path_a, units_a), (path_b, units_b)):
-        if units is not None and not units.metric:
-            raise InputError("{path} is in {units}; elevation change (differences, areas "
-                             "and volumes in metres) needs both epochs in metres. Reproject "
-                             "it to a metre CRS first.", path=os.path.basename(path),
-                             units=units.describe())
+    if units_a is not None and units_b is not None and units_a != units_b:
+        raise InputError("The two epochs have different linear units: {a} is in {ua}, {b} "
+                         "in {ub}. Convert one into the other's units first.",
+                         a=os.path.basename(path_a), ua=units_a.describe(),
+                         b=os.path.basename(path_b), ub=units_b.describe())
 
 
 class ElevationChangeAlgorithm(GeomaticsAlgorithm):
@@ -185,6 +184,7 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
             raise InputError("Give two rasters or two point clouds, not one of each.")
         check_two_epochs(before, after)
         if not _is_las(before):
+            self.units = raster_units(before)
             return self.raster_epochs(before, after, feedback)
         classes = parse_classes(self.parameterAsString(parameters, self.CLASSES, context))
         cell = self.parameterAsDouble(parameters, self.CELL_SIZE, context)
@@ -192,6 +192,8 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
             raise InputError("Cell size must be > 0 (m); give e.g. 1.0.")
         ia, ib = las_info(before), las_info(after)
         check_same_crs(ia.crs, ib.crs, before, after, ia.units, ib.units)
+        self.units = ia.units
+        cell = cell / ia.units.h        # the grid is in the clouds' own units
         box = (max(ia.mins[0], ib.mins[0]), min(ia.maxs[0], ib.maxs[0]),
                max(ia.mins[1], ib.mins[1]), min(ia.maxs[1], ib.maxs[1]))
         if box[0] >= box[1] or box[2] >= box[3]:
@@ -283,10 +285,15 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
                                   inputs={self.INPUT: before, self.INPUT_AFTER: after,
                                           **res_paths}) as out:
             a, b, grid = self.epochs(before, after, parameters, context, feedback)
-            res = core_change.elevation_change(a, b, grid.cell, sigma1=s1, sigma2=s2,
-                                               min_area=min_area,
+            # heights, areas and volumes in metres (DEVELOPERS.md, Units); the grid and
+            # the difference raster stay in the data's own units
+            u = self.units
+            self.log_units(feedback, u)
+            res = core_change.elevation_change(a * u.v, b * u.v, grid.cell * u.h,
+                                               sigma1=s1, sigma2=s2, min_area=min_area,
                                                **self.core_callbacks(feedback))
-            write_grid(out.path(self.OUTPUT), res.diff, grid, band_name="after - before (m)",
+            write_grid(out.path(self.OUTPUT), res.diff / u.v, grid,
+                       band_name="after - before", units=u, in_data_units=True,
                        metadata={"lod95": f"{res.lod:.4f}"})
             if out.requested(self.OUTPUT_POLYGONS):
                 recs = {r["id"]: {"id": r["id"], "kind": r["kind"], "area_m2": r["area"],

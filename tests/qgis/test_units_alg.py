@@ -170,3 +170,26 @@ def test_real_us_survey_feet_file_and_its_metre_copy(qgis_processing, tmp_path):
             "INPUT": src, "OUTPUT": str(tmp_path / f"out_{k}.las")})["OUTPUT"]
     cm, cf = _classes(out["m"]), _classes(out["ft"])
     assert np.array_equal(cm, cf), int(np.count_nonzero(cm != cf))   # 41 differed before
+
+
+def test_elevation_change_in_feet_equals_metres(qgis_processing, clouds, tmp_path):
+    """Two epochs in ftUS (clouds, then their DTMs) and their metre copies: the same
+    LoD and volumes (m, m³), the difference raster the same once converted."""
+    d = clouds["dir"]
+    after = {}
+    for k in ("m", "ft"):
+        las = laspy.read(clouds[k])
+        rise = 1.0 if k == "m" else 1.0 / FT                    # +1 m everywhere
+        inside = (np.asarray(las.x) - np.asarray(las.x).min()) * (1.0 if k == "m" else FT) < 50
+        las.z = np.asarray(las.z) + np.where(inside, rise, 0.0)
+        after[k] = tmp_path / f"after_{k}.las"
+        las.write(after[k])
+    res = {}
+    for k in ("m", "ft"):
+        res[k] = qgis_processing.run("geomatics:elevationchange", {
+            "INPUT": clouds[k], "INPUT_AFTER": str(after[k]), "CELL_SIZE": 2.0,
+            "SIGMA1": 0.05, "SIGMA2": 0.05, "OUTPUT": str(tmp_path / f"chg_{k}.tif")})
+    for key in ("LOD", "FILL_VOLUME", "CUT_VOLUME", "N_REGIONS"):
+        assert res["ft"][key] == pytest.approx(res["m"][key], rel=1e-3, abs=1e-6), key
+    assert res["m"]["FILL_VOLUME"] > 1000                        # ~50 m × 100 m × 1 m
+    _same_dtm(res["m"]["OUTPUT"], res["ft"]["OUTPUT"], tol=1e-3)
