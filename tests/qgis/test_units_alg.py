@@ -173,9 +173,8 @@ def test_real_us_survey_feet_file_and_its_metre_copy(qgis_processing, tmp_path):
 
 
 def test_elevation_change_in_feet_equals_metres(qgis_processing, clouds, tmp_path):
-    """Two epochs in ftUS (clouds, then their DTMs) and their metre copies: the same
+    """Two epochs in ftUS and their metre copies: the same
     LoD and volumes (m, m³), the difference raster the same once converted."""
-    d = clouds["dir"]
     after = {}
     for k in ("m", "ft"):
         las = laspy.read(clouds[k])
