@@ -1,9 +1,6 @@
 """Building footprints with heights from a ground-classified cloud (core.lidar.buildings)."""
 from __future__ import annotations
 
-import os
-
-import numpy as np
 from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterFileDestination,
@@ -12,18 +9,14 @@ from qgis.core import (
 )
 
 from ..core.errors import InputError
-from ..core.io.las import las_info, read_las, write_las_like
 from ..core.io.points import parse_classes
-from ..core.io.vector import write_label_polygons
-from ..core.lidar import buildings as core_b
-from ..core.lidar.qa import check_projected
+from ..core.lidar.buildings_file import BuildingOutputs, buildings_file
 from .base import GeomaticsAlgorithm
 from .helptext import build_help
 from .terrain import LAS_FILTER
 
-FIELDS = [("id", "int"), ("height_m", "float"), ("area_m2", "float"),
-          ("volume_m3", "float"), ("storeys", "int"), ("roof_type", "str"),
-          ("ground_z", "float"), ("roof_z", "float")]
+CITYJSON_FILTER = "CityJSON (*.city.json *.json)"
+OBJ_FILTER = "Wavefront OBJ (*.obj)"
 
 
 class BuildingsAlgorithm(GeomaticsAlgorithm):
@@ -37,8 +30,11 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
     MIN_PATCH_AREA = "MIN_PATCH_AREA"
     MIN_AREA = "MIN_AREA"
     CELL_SIZE = "CELL_SIZE"
+    STOREY_HEIGHT = "STOREY_HEIGHT"
     OUTPUT = "OUTPUT"
     OUTPUT_CLOUD = "OUTPUT_CLOUD"
+    OUTPUT_CITYJSON = "OUTPUT_CITYJSON"
+    OUTPUT_OBJ = "OUTPUT_OBJ"
     OUTPUT_HTML = "OUTPUT_HTML"
     OUTPUT_STYLES = {"OUTPUT": "footprints"}
 
@@ -60,16 +56,26 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
         return build_help(self, self.tr(
             "Extracts buildings from a ground-classified LAS/LAZ cloud: points above the "
             "ground TIN are fitted with local planes, and neighbours with agreeing normals "
-            "grow into roof patches. Patches large enough become footprints with height, "
-            "area, volume, storeys and roof type; trees are rejected because their points "
-            "are not planar."),
-            "INPUT=ground_filtered.laz MIN_HEIGHT=2 MAX_ANGLE=20 OUTPUT=buildings.gpkg "
-            "OUTPUT_CLOUD=classified.laz",
+            "grow into roof patches; trees are rejected because their points are not "
+            "planar. Each footprint gets a roof model fitted to its roof points only (flat, "
+            "shed, gabled, hipped or complex), so canopy over a roof does not raise it; "
+            "heights, eave heights, area, volume and storeys follow from it. A deck whose "
+            "surface runs on into the ground at both ends (a bridge) is not a building. "
+            "Optional LOD1/LOD2 CityJSON and OBJ 3D models. Clouds in feet are converted: "
+            "heights, areas and volumes are in metres, geometry in the data's CRS."),
+            "INPUT=ground_filtered.laz OUTPUT=buildings.gpkg OUTPUT_CITYJSON=city.json "
+            "OUTPUT_OBJ=city.obj OUTPUT_CLOUD=classified.laz",
             {self.INPUT: self.tr("Ground in class 2 (run a ground filter first), in a "
                                  "projected CRS (metres)."),
              self.MIN_HEIGHT: self.tr("The specification gives 1.5–2 m."),
+             self.STOREY_HEIGHT: self.tr("Storeys = mean roof height above ground / this "
+                                         "height (the specification gives 2.5–3.5 m)."),
              self.OUTPUT: self.tr("GeoPackage polygons with height, area, volume, storeys, "
-                                  "roof type, ground and roof heights.")})
+                                  "roof type, ground and roof heights."),
+             self.OUTPUT_CITYJSON: self.tr("CityJSON 2.0: each building as an LOD1 block "
+                                           "and, for rectangular footprints with a flat, "
+                                           "shed, gabled or hipped roof, an LOD2 solid "
+                                           "with roof, wall and ground surfaces.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))
@@ -85,11 +91,19 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
                         minimum=0.0)
         self.add_number(self.CELL_SIZE, self.tr("Cell size (m)"), 0.5, minimum=0.0,
                         advanced=True)
+        self.add_number(self.STOREY_HEIGHT, self.tr("Storey height (m)"), 3.0, minimum=2.0,
+                        maximum=5.0)
         self.add(QgsProcessingParameterVectorDestination(self.OUTPUT,
                                                          self.tr("Building footprints")))
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_CLOUD, self.tr("Classified cloud (class 6 = building)"),
             LAS_FILTER, optional=True, createByDefault=False))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_CITYJSON, self.tr("3D city model (CityJSON, LOD1 and LOD2)"),
+            CITYJSON_FILTER, optional=True, createByDefault=False))
+        self.add(QgsProcessingParameterFileDestination(
+            self.OUTPUT_OBJ, self.tr("3D model for viewers (OBJ)"), OBJ_FILTER,
+            optional=True, createByDefault=False))
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_HTML, self.tr("Building footprints report"), self.tr("HTML files (*.html)"),
             optional=True, createByDefault=False))
@@ -103,47 +117,41 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
         cell = self.parameterAsDouble(parameters, self.CELL_SIZE, context)
         if not cell > 0:
             raise InputError("Cell size must be > 0 (m); give e.g. 0.5.")
+        storey = self.parameterAsDouble(parameters, self.STOREY_HEIGHT, context)
+        if not 2.0 <= storey <= 5.0:
+            raise InputError("Storey height must be between 2 and 5 m (typically 2.5–3.5); "
+                             "got {value} m.", value=storey)
         return {"min_height": self.parameterAsDouble(parameters, self.MIN_HEIGHT, context),
                 "max_angle": self.parameterAsDouble(parameters, self.MAX_ANGLE, context),
                 "min_patch_area": self.parameterAsDouble(parameters, self.MIN_PATCH_AREA,
                                                          context),
                 "min_area": self.parameterAsDouble(parameters, self.MIN_AREA, context),
-                "cell": cell}
+                "storey_height": storey, "cell": cell}
 
     def process(self, parameters, context, feedback):
         path = self.las_input_path(parameters, context, self.INPUT)
         p = self.params(parameters, context)
         ground = parse_classes(self.parameterAsString(parameters, self.GROUND_CLASSES,
                                                       context)) or (2,)
-        names = [self.OUTPUT, self.OUTPUT_CLOUD, self.OUTPUT_HTML]
-        cb = self.core_callbacks(feedback)
-        with self.output_contract(parameters, context, names,
-                                  inputs={self.INPUT: path}) as out:
-            info = las_info(path)
-            pts = read_las(path, ["classification"], cancel=cb["cancel"])
-            check_projected(pts.x, pts.y)
-            res = core_b.extract_buildings(pts.x, pts.y, pts.z, pts["classification"],
-                                           ground_classes=ground, crs=info.crs, **p, **cb)
-            recs = {b["id"]: {"id": b["id"], "height_m": b["height"], "area_m2": b["area"],
-                              "volume_m3": b["volume"], "storeys": b["storeys"],
-                              "roof_type": b["roof_type"], "ground_z": b["ground"],
-                              "roof_z": b["roof"]} for b in res.buildings}
-            write_label_polygons(out.path(self.OUTPUT), res.labels, res.grid.geotransform,
-                                 crs=info.crs, layer_name="buildings", fields=FIELDS,
-                                 records=recs)
-            if out.requested(self.OUTPUT_CLOUD):
-                cls = np.where(res.is_building, 6, pts["classification"]).astype(
-                    pts["classification"].dtype)
-                write_las_like(path, out.path(self.OUTPUT_CLOUD),
-                               dimensions={"classification": cls})
-            if out.requested(self.OUTPUT_HTML):
-                rep = core_b.buildings_report(res, os.path.basename(path), p)
-                out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters,
-                                                                    context))
-        results = {n: out.final(n) for n in names if out.requested(n)}
+        names = (self.OUTPUT, self.OUTPUT_CLOUD, self.OUTPUT_CITYJSON, self.OUTPUT_OBJ,
+                 self.OUTPUT_HTML)
+        footprints, *others = (self.output_path(parameters, context, n) or None
+                               for n in names)
+        outputs = BuildingOutputs(footprints, *others, names=names)
+        res, units = buildings_file(
+            path, outputs, ground_classes=ground, params=p,
+            render=lambda rep: self.render_report(rep, parameters, context),
+            lang=self.report_lang(parameters, context), **self.core_callbacks(feedback))
+        results = {self.OUTPUT: footprints}
+        for n, value in zip(names[1:], (outputs.cloud, outputs.cityjson, outputs.obj,
+                                        outputs.report)):
+            if value:
+                results[n] = value
         self.load_cloud_on_completion(context, results.get(self.OUTPUT_CLOUD),
                                       self.tr("Classified cloud (class 6 = building)"),
                                       self.OUTPUT_CLOUD)
+        feedback.pushInfo(self.tr("{} buildings; data units: {}").format(
+            len(res.buildings), units.describe()))
         results.update(N_BUILDINGS=len(res.buildings),
                        TOTAL_AREA=float(sum(b["area"] for b in res.buildings)),
                        TOTAL_VOLUME=float(sum(b["volume"] for b in res.buildings)))

@@ -175,10 +175,6 @@
             <translation>ملفات HTML (*.html)</translation>
         </message>
         <message>
-            <source>Extracts buildings from a ground-classified LAS/LAZ cloud: points above the ground TIN are fitted with local planes, and neighbours with agreeing normals grow into roof patches. Patches large enough become footprints with height, area, volume, storeys and roof type; trees are rejected because their points are not planar.</source>
-            <translation>يستخرج المباني من سحابة LAS/LAZ مصنّفة الأرض: تُوفَّق مستويات محلية للنقاط الواقعة فوق TIN الأرض، وتنمو الجيران ذات المتجهات العمودية المتوافقة إلى رقع أسطح. تصبح الرقع الكبيرة بما يكفي مساقط مبانٍ بارتفاعها ومساحتها وحجمها وعدد طوابقها ونوع سقفها؛ وتُرفض الأشجار لأن نقاطها غير مستوية.</translation>
-        </message>
-        <message>
             <source>Ground in class 2 (run a ground filter first), in a projected CRS (metres).</source>
             <translation>الأرض في الفئة 2 (شغّل مرشح أرض أولًا)، بنظام إحداثيات مُسقَط (بالأمتار).</translation>
         </message>
@@ -205,6 +201,34 @@
         <message>
             <source>Total volume (m³)</source>
             <translation>الحجم الإجمالي (م³)</translation>
+        </message>
+        <message>
+            <source>Storey height (m)</source>
+            <translation>ارتفاع الطابق (م)</translation>
+        </message>
+        <message>
+            <source>3D city model (CityJSON, LOD1 and LOD2)</source>
+            <translation>نموذج المدينة ثلاثي الأبعاد (CityJSON، LOD1 وLOD2)</translation>
+        </message>
+        <message>
+            <source>3D model for viewers (OBJ)</source>
+            <translation>نموذج ثلاثي الأبعاد للعارضات (OBJ)</translation>
+        </message>
+        <message>
+            <source>{} buildings; data units: {}</source>
+            <translation>{} مبانٍ؛ وحدات البيانات: {}</translation>
+        </message>
+        <message>
+            <source>Extracts buildings from a ground-classified LAS/LAZ cloud: points above the ground TIN are fitted with local planes, and neighbours with agreeing normals grow into roof patches; trees are rejected because their points are not planar. Each footprint gets a roof model fitted to its roof points only (flat, shed, gabled, hipped or complex), so canopy over a roof does not raise it; heights, eave heights, area, volume and storeys follow from it. A deck whose surface runs on into the ground at both ends (a bridge) is not a building. Optional LOD1/LOD2 CityJSON and OBJ 3D models. Clouds in feet are converted: heights, areas and volumes are in metres, geometry in the data's CRS.</source>
+            <translation>يستخرج المباني من سحابة LAS/LAZ مصنّفة الأرض: تُطابَق النقاط الواقعة فوق شبكة TIN للأرض بمستويات محلية، وتنمو النقاط المتجاورة ذات المتجهات العمودية المتوافقة إلى رقع أسطح؛ وتُرفض الأشجار لأن نقاطها غير مستوية. يحصل كل مسقط على نموذج سقف مطابَق على نقاط سقفه فقط (مسطّح، أحادي الميل، جملوني، هرمي أو معقّد)، فلا ترفعه الأشجار المتدلية فوقه؛ ومنه تُشتق الارتفاعات وارتفاعات الأفاريز والمساحة والحجم والطوابق. السطح الذي يمتد حتى الأرض عند طرفيه (جسر) ليس مبنى. نماذج ثلاثية الأبعاد اختيارية LOD1/LOD2 بصيغة CityJSON وOBJ. تُحوَّل السحب بالقدم: الارتفاعات والمساحات والأحجام بالمتر، والهندسة في نظام إحداثيات البيانات.</translation>
+        </message>
+        <message>
+            <source>Storeys = mean roof height above ground / this height (the specification gives 2.5–3.5 m).</source>
+            <translation>الطوابق = متوسط ارتفاع السقف فوق الأرض ÷ هذا الارتفاع (تعطي المواصفة 2.5–3.5 م).</translation>
+        </message>
+        <message>
+            <source>CityJSON 2.0: each building as an LOD1 block and, for rectangular footprints with a flat, shed, gabled or hipped roof, an LOD2 solid with roof, wall and ground surfaces.</source>
+            <translation>CityJSON 2.0: كل مبنى ككتلة LOD1، وللمساقط المستطيلة ذات السطح المسطّح أو أحادي الميل أو الجملوني أو الهرمي مجسّم LOD2 بأسطح السقف والجدران والأرضية.</translation>
         </message>
     </context>
     <context>

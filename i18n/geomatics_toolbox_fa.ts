@@ -175,10 +175,6 @@
             <translation>پرونده‌های HTML (*.html)</translation>
         </message>
         <message>
-            <source>Extracts buildings from a ground-classified LAS/LAZ cloud: points above the ground TIN are fitted with local planes, and neighbours with agreeing normals grow into roof patches. Patches large enough become footprints with height, area, volume, storeys and roof type; trees are rejected because their points are not planar.</source>
-            <translation>ساختمان‌ها را از یک ابر LAS/LAZ با زمینِ کلاس‌بندی‌شده استخراج می‌کند: بر نقاطِ بالای TIN زمین صفحه‌های محلی برازش می‌شود و همسایه‌هایی با بردارهای قائم هم‌سو به وصله‌های بام رشد می‌کنند. وصله‌های به‌اندازهٔ کافی بزرگ به ردپای ساختمان با ارتفاع، مساحت، حجم، تعداد طبقه و نوع بام تبدیل می‌شوند؛ درختان رد می‌شوند چون نقاطشان صفحه‌ای نیست.</translation>
-        </message>
-        <message>
             <source>Ground in class 2 (run a ground filter first), in a projected CRS (metres).</source>
             <translation>زمین در کلاس 2 (نخست یک فیلتر زمین اجرا کنید)، در سامانهٔ مختصات تصویری (متر).</translation>
         </message>
@@ -205,6 +201,34 @@
         <message>
             <source>Total volume (m³)</source>
             <translation>حجم کل (مترمکعب)</translation>
+        </message>
+        <message>
+            <source>Storey height (m)</source>
+            <translation>ارتفاع طبقه (متر)</translation>
+        </message>
+        <message>
+            <source>3D city model (CityJSON, LOD1 and LOD2)</source>
+            <translation>مدل سه‌بعدی شهر (CityJSON، LOD1 و LOD2)</translation>
+        </message>
+        <message>
+            <source>3D model for viewers (OBJ)</source>
+            <translation>مدل سه‌بعدی برای نمایشگرها (OBJ)</translation>
+        </message>
+        <message>
+            <source>{} buildings; data units: {}</source>
+            <translation>{} ساختمان؛ یکای داده: {}</translation>
+        </message>
+        <message>
+            <source>Extracts buildings from a ground-classified LAS/LAZ cloud: points above the ground TIN are fitted with local planes, and neighbours with agreeing normals grow into roof patches; trees are rejected because their points are not planar. Each footprint gets a roof model fitted to its roof points only (flat, shed, gabled, hipped or complex), so canopy over a roof does not raise it; heights, eave heights, area, volume and storeys follow from it. A deck whose surface runs on into the ground at both ends (a bridge) is not a building. Optional LOD1/LOD2 CityJSON and OBJ 3D models. Clouds in feet are converted: heights, areas and volumes are in metres, geometry in the data's CRS.</source>
+            <translation>ساختمان‌ها را از ابر LAS/LAZ با زمین طبقه‌بندی‌شده استخراج می‌کند: به نقاط بالای TIN زمین صفحه‌های محلی برازش داده می‌شود و همسایه‌های با بردار نرمال هم‌سو به وصله‌های بام رشد می‌کنند؛ درختان رد می‌شوند چون نقاطشان صفحه‌ای نیست. هر ردپا یک مدل بام برازش‌یافته فقط بر نقاط بام خود می‌گیرد (تخت، یک‌طرفه، شیروانی، چهارشیب یا پیچیده)، پس تاج درخت روی بام آن را بالا نمی‌برد؛ ارتفاع، ارتفاع لبهٔ بام، مساحت، حجم و تعداد طبقه از آن به دست می‌آید. عرشه‌ای که سطحش در هر دو سر تا زمین ادامه دارد (پل) ساختمان نیست. مدل‌های سه‌بعدی اختیاری LOD1/LOD2 در CityJSON و OBJ. ابرهای فوتی تبدیل می‌شوند: ارتفاع، مساحت و حجم به متر، هندسه در سیستم مختصات داده.</translation>
+        </message>
+        <message>
+            <source>Storeys = mean roof height above ground / this height (the specification gives 2.5–3.5 m).</source>
+            <translation>تعداد طبقه = میانگین ارتفاع بام از زمین ÷ این ارتفاع (مشخصات 2.5–3.5 متر می‌دهد).</translation>
+        </message>
+        <message>
+            <source>CityJSON 2.0: each building as an LOD1 block and, for rectangular footprints with a flat, shed, gabled or hipped roof, an LOD2 solid with roof, wall and ground surfaces.</source>
+            <translation>CityJSON 2.0: هر ساختمان به‌صورت یک بلوک LOD1 و، برای ردپاهای مستطیلی با بام تخت، یک‌طرفه، شیروانی یا چهارشیب، یک حجم LOD2 با سطوح بام، دیوار و کف.</translation>
         </message>
     </context>
     <context>

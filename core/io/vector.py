@@ -120,3 +120,35 @@ def read_polygons(path, layer: Optional[str] = None):
     out = [(feat.items(), feat.GetGeometryRef().ExportToWkt()) for feat in lyr]
     ds = None
     return out
+
+
+def label_outlines(labels: np.ndarray, geotransform: Sequence[float], *,
+                   tolerance: float = 0.0) -> dict:
+    """Exterior ring of each non-zero label (its largest polygon), simplified.
+
+    ``gdal.Polygonize`` of ``labels`` (the same outlines as
+    :func:`write_label_polygons`), Douglas–Peucker simplification with ``tolerance``
+    (CRS units; topology kept), ring without the closing point. Returns
+    ``{label: (n, 2) array}``.
+    """
+    from osgeo import ogr
+    ogr.UseExceptions()
+    _mem, _vds, src = _label_layer(np.asarray(labels), geotransform, "")
+    best = {}
+    for feat in src:
+        lab = feat.GetField("label")
+        geom = feat.GetGeometryRef()
+        area = geom.GetArea()
+        if lab not in best or area > best[lab][0]:
+            best[lab] = (area, geom.Clone())
+    out = {}
+    for lab, (_area, geom) in best.items():
+        if tolerance > 0:
+            geom = geom.SimplifyPreserveTopology(tolerance)
+        ring = geom.GetGeometryRef(0)
+        pts = np.array(ring.GetPoints(), dtype=float)[:, :2]
+        if len(pts) > 1 and np.allclose(pts[0], pts[-1]):
+            pts = pts[:-1]
+        if len(pts) >= 3:
+            out[int(lab)] = pts
+    return out

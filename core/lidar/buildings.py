@@ -47,6 +47,8 @@ from ..terrain.tin import tin_grid
 
 #: Classes never taken as building candidates (ground, low/high noise, water).
 EXCLUDED = (2, 7, 9, 18)
+#: Largest distance of a roof point from its fitted roof (m).
+ROOF_TOLERANCE = 0.3
 
 
 @dataclass
@@ -58,8 +60,11 @@ class BuildingResult:
     buildings: List[dict] = field(default_factory=list)
     is_building: np.ndarray = None
     dtm: np.ndarray = None
-    #: Roof height of every cell (highest roof point, cells between from the nearest).
+    #: Roof height of every cell: the fitted roof over a footprint, elsewhere the
+    #: highest roof-plane point (cells between from the nearest).
     roof: np.ndarray = None
+    #: Cells of the structures refused as bridges (decks joining the ground at both ends).
+    bridges: np.ndarray = None
 
 
 def building_points(res: BuildingResult, x, y, z, hag, classification, *,
@@ -391,49 +396,28 @@ def _footprint_labels(grid, x, y, keep, rho, min_area, min_roof_share):
     return relabel[lab], int((~drop).sum()), [rects[k] for k in np.flatnonzero(~drop)]
 
 
-def _footprints(grid, x, y, z, dtm, keep, min_area, flat_angle, nz, rho,
+def _footprints(grid, x, y, z, dtm, keep, min_area, flat_angle, rho, zlow, min_height,
                 storey_height=3.0):
     """Rasterise roof points (density ``rho``) into footprints; measure each one.
 
     Linear in the number of buildings: each one is measured on its own
-    ``find_objects`` window of the raster and its own points (one sort by label).
+    ``find_objects`` window of the raster and its own points
+    (:func:`.building_measure.measure_buildings`).
     """
     from scipy import ndimage
+
+    from .building_measure import measure_buildings
     lab, nlab, rects = _footprint_labels(grid, x, y, keep, rho, min_area, 0.5)
-    # roof heights of the cells, closed cells from the nearest roof point (volume)
+    # roof heights of the cells, closed cells from the nearest roof point
     row, col, inside = grid.cell_index(x[keep], y[keep])
     roof = np.full(grid.shape, -np.inf)
     np.maximum.at(roof, (row[inside], col[inside]), z[keep][inside])
     near = ndimage.distance_transform_edt(~np.isfinite(roof), return_distances=False,
                                           return_indices=True)
     roof_f = roof[near[0], near[1]]
-    mask = lab > 0
-    b_lab = lab[row[inside], col[inside]]
-    nz_sum = np.bincount(b_lab, weights=nz[keep][inside], minlength=nlab + 1)
-    nz_cnt = np.bincount(b_lab, minlength=nlab + 1)
-    ra, ca, all_in = grid.cell_index(x, y)
-    a_lab = lab[ra[all_in], ca[all_in]]
-    z_in = z[all_in]
-    order, starts = group_by_label(a_lab, nlab)
-    objs = ndimage.find_objects(lab, max_label=nlab)
-    out = []
-    for k in range(1, nlab + 1):
-        win = _window(objs[k - 1], 2, grid.shape)
-        cells = lab[win] == k
-        ring = ndimage.binary_dilation(cells, np.ones((3, 3)), iterations=2) & ~mask[win]
-        d = dtm[win]
-        g = np.nanmean(d[ring]) if np.isfinite(d[ring]).any() else np.nanmean(d[cells])
-        top = float(np.percentile(z_in[order[starts[k]:starts[k + 1]]], 99))
-        h = top - g
-        mean_nz = float(nz_sum[k] / max(nz_cnt[k], 1))
-        out.append({"id": k, "height": h, "area": float(cells.sum() * grid.cell ** 2),
-                    "volume": float(np.nansum(roof_f[win][cells] - d[cells])
-                                    * grid.cell ** 2),
-                    "storeys": max(1, int(h // storey_height)), "ground": float(g),
-                    "roof": top,
-                    "roof_type": "flat" if mean_nz >= math.cos(math.radians(flat_angle))
-                    else "pitched"})
-    return lab, out, roof_f
+    return measure_buildings(grid, lab, nlab, rects, x, y, z, keep, dtm, zlow, roof_f,
+                             min_height=min_height, flat_angle=flat_angle,
+                             storey_height=storey_height)
 
 
 def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
@@ -506,37 +490,63 @@ def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
     if not keep.any():
         return BuildingResult(grid, np.zeros(grid.shape, np.int32), [], flag, dtm)
     rho = float(np.median(density[keep]))
-    labels, blds, roof = _footprints(grid, x[cand], y[cand], z[cand], dtm, keep, min_area,
-                                     flat_angle, fit[0][:, 2], rho, storey_height)
+    labels, blds, roof, bridges = _footprints(
+        grid, x[cand], y[cand], z[cand], dtm, keep, min_area, flat_angle, rho,
+        _lowest(grid, x, y, z, cls), min_height, storey_height)
+    # roof points: candidates over a footprint on its fitted roof
     r, c, inside = grid.cell_index(x[cand], y[cand])
-    on = np.zeros(cand.size, bool)
-    on[inside] = labels[r[inside], c[inside]] > 0
-    flag[cand[on & (lab >= 0)]] = True
+    idx = np.flatnonzero(inside)
+    idx = idx[labels[r[idx], c[idx]] > 0]
+    on = np.abs(z[cand[idx]] - roof[r[idx], c[idx]]) <= ROOF_TOLERANCE
+    flag[cand[idx[on]]] = True
     mon.step(1.0)
-    return BuildingResult(grid, labels, blds, flag, dtm, roof)
+    return BuildingResult(grid, labels, blds, flag, dtm, roof, bridges)
 
 
-def buildings_report(res: BuildingResult, name: str, params: dict):
-    """Build the report: parameters, footprint map, per-building table."""
+def _lowest(grid, x, y, z, cls) -> np.ndarray:
+    """Lowest non-noise point of every cell (NaN where none)."""
+    ok = ~np.isin(cls, (7, 18))
+    r, c, inside = grid.cell_index(x[ok], y[ok])
+    low = np.full(grid.shape, np.inf)
+    np.minimum.at(low, (r[inside], c[inside]), z[ok][inside])
+    low[~np.isfinite(low)] = np.nan
+    return low
+
+
+def buildings_report(res: BuildingResult, name: str, params: dict, *, units=None,
+                     lang: str = "en"):
+    """Build the report: parameters, footprint map, per-building table, bridges refused."""
+    from scipy import ndimage
+
+    from ..io.units import unit_label
     from ..reporting import Figure, KeyValues, Paragraph, Report, T, Table
     from ..reporting.svg import svg_raster
     rep = Report("Building footprints report",
                  citation="Kostrikov et al. (2020), ELiT non-ground branch; Rabbani et al. "
-                 "(2006), region growing with a smoothness constraint.")
-    rep.summary = [Paragraph(T("{n} buildings found.", n=len(res.buildings)))]
-    rep.section("Parameters").add(KeyValues([
-        ("Input", name),
-        ("Minimum height above ground (m)", params["min_height"]),
-        ("Maximum angle between roof normals (°)", params["max_angle"]),
-        ("Minimum roof patch area (m²)", params["min_patch_area"]),
-        ("Minimum building area (m²)", params["min_area"]),
-        ("Cell size (m)", res.grid.cell)]))
+                 "(2006), region growing with a smoothness constraint; Henn et al. (2013), "
+                 "model-driven roofs; Biljecki et al. (2016), LODs.")
+    n_bridges = int(ndimage.label(res.bridges)[1]) if res.bridges is not None else 0
+    rep.summary = [Paragraph(T("{n} buildings found.", n=len(res.buildings))),
+                   Paragraph(T("{n} bridges or decks refused (their surface runs on into "
+                               "the ground at both ends).", n=n_bridges))]
+    rows = [("Input", name)]
+    if units is not None:
+        rows.append(("Units of the data", unit_label(units.horizontal, lang)))
+    rows += [("Minimum height above ground (m)", params["min_height"]),
+             ("Maximum angle between roof normals (°)", params["max_angle"]),
+             ("Minimum roof patch area (m²)", params["min_patch_area"]),
+             ("Minimum building area (m²)", params["min_area"]),
+             ("Storey height (m)", params.get("storey_height", 3.0)),
+             ("Cell size (m)", res.grid.cell)]
+    rep.section("Parameters").add(KeyValues(rows))
     lut = np.array([np.nan] + [b["height"] for b in res.buildings])
     heights = lut[res.labels] if res.buildings else np.full(res.labels.shape, np.nan)
     sec = rep.section("Buildings")
     sec.add(Figure(svg_raster(heights, unit="m"), "Footprints coloured by height (m)",
                    "footprint-map"))
-    sec.add(Table(["Id", "Height (m)", "Area (m²)", "Volume (m³)", "Storeys", "Roof type"],
-                  [[b["id"], b["height"], b["area"], b["volume"], b["storeys"],
-                    T(b["roof_type"])] for b in res.buildings], digits=[0, 2, 1, 0, 0, None]))
+    sec.add(Table(["Id", "Height (m)", "Eave height (m)", "Area (m²)", "Volume (m³)",
+                   "Storeys", "Roof type"],
+                  [[b["id"], b["height"], b["eave_height"], b["area"], b["volume"],
+                    b["storeys"], T(b["roof_type"])] for b in res.buildings],
+                  digits=[0, 2, 2, 1, 0, 0, None]))
     return rep

@@ -13,7 +13,9 @@ al. 2020):
    bilinearly at every point (lidR ``normalize_height(las, tin())``, PDAL
    ``filters.hag_delaunay``).
 3. **Building (6)** — roof planes found by :func:`.buildings.extract_buildings` on the
-   same DTM (bridges refused), plus the other points over a footprint up to the roof.
+   same DTM, plus the other points over a footprint up to the roof; a structure the
+   building step refuses as a bridge (its deck runs on into the ground at both ends)
+   is **bridge deck (17)**.
 4. **Vegetation (3/4/5)** — every other point above the ground by its height:
    ``0 ≤ h ≤ low_max`` low, ``low_max < h ≤ medium_max`` medium, higher high. The
    defaults 0.5 m and 1.5 m are the IGN LiDAR HD classes (végétation basse < 50 cm,
@@ -170,6 +172,18 @@ def height_above_ground(x, y, grid, dtm) -> np.ndarray:
     return top * (1 - ty) + bottom * ty
 
 
+def _on_bridges(res, x, y, hag, *, min_hag: float = 0.5) -> np.ndarray:
+    """Points over a refused bridge deck at least ``min_hag`` m above the DTM."""
+    flag = np.zeros(np.shape(x), bool)
+    if res.bridges is None or not res.bridges.any():
+        return flag
+    r, c, inside = res.grid.cell_index(x, y)
+    idx = np.flatnonzero(inside)
+    idx = idx[res.bridges[r[idx], c[idx]]]
+    flag[idx[hag[idx] >= min_hag]] = True
+    return flag
+
+
 def classify_points(x, y, z, classification=None, *, options: Optional[ClassifyOptions] = None,
                     units: Units = METRIC, crs=None, progress=None,
                     cancel=None) -> Classification:
@@ -227,12 +241,14 @@ def classify_points(x, y, z, classification=None, *, options: Optional[ClassifyO
     t_dtm = time.perf_counter()
     res = None
     is_bld = np.zeros(n, bool)
+    deck = np.zeros(n, bool)
     if opt.buildings:
         res = extract_buildings(xm, ym, zm, cls, min_height=opt.min_height,
                                 storey_height=opt.storey_height, crs=crs,
                                 dtm=(grid, dtm), progress=mon.sub(0.6, 0.95).update,
                                 cancel=mon.cancelled)
         is_bld = building_points(res, xm, ym, zm, hag, cls)
+        deck = _on_bridges(res, xm, ym, hag)
     t_bld = time.perf_counter()
     free = cls == OTHER
     out = cls.copy()
@@ -240,6 +256,7 @@ def classify_points(x, y, z, classification=None, *, options: Optional[ClassifyO
     out[free & (hag > opt.low_max) & (hag <= opt.medium_max)] = MEDIUM_VEG
     out[free & (hag > opt.medium_max)] = HIGH_VEG
     out[free & is_bld] = BUILDING
+    out[free & deck & ~is_bld] = BRIDGE_DECK
     keep = cls_in == WATER
     if opt.keep_other:
         keep |= ~np.isin(cls_in, WRITTEN)

@@ -96,7 +96,12 @@ def test_buildings_defaults(qgis_process, demo):
     d, laz = demo
     res = qgis_process.run("geomatics:buildings", INPUT=laz, OUTPUT=str(d / "b.gpkg"),
                            OUTPUT_CLOUD=str(d / "b.laz"), OUTPUT_HTML=str(d / "b.html"),
-                           REPORT_LANGUAGE=3)["results"]
+                           OUTPUT_CITYJSON=str(d / "b.city.json"),
+                           OUTPUT_OBJ=str(d / "b.obj"), REPORT_LANGUAGE=3)["results"]
+    import json
+    doc = json.loads((d / "b.city.json").read_text("utf-8"))
+    assert len(doc["CityObjects"]) == res["N_BUILDINGS"]
+    assert res["OUTPUT_OBJ"].endswith("b.obj")
     polys = read_polygons(d / "b.gpkg")
     assert res["N_BUILDINGS"] == len(polys) >= 5
     assert all(a["height_m"] > 2 and a["storeys"] >= 1 for a, _ in polys)

@@ -58,3 +58,36 @@ def test_classify_keep_ground_and_bad_options(qgis_processing, scene):
                                                    "MEDIUM_VEGETATION": 1.0,
                                                    "OUTPUT": str(bad)})
     assert not bad.exists()
+
+
+def test_buildings_city_models(qgis_processing, tmp_path):
+    """geomatics:buildings on the city scene: no bridge building, roof types, CityJSON
+    and OBJ written, storey height applied; the footprints keep their attributes."""
+    import json
+
+    from geomatics_toolbox.core.io.vector import read_polygons
+    from geomatics_toolbox.synthetic.city import city_scene, write_scene
+    scene = city_scene(density=4.0)
+    scene.classification[np.isin(scene.classification, (5, 6, 17))] = 1
+    laz = write_scene(scene, tmp_path / "city.laz")
+    res = qgis_processing.run("geomatics:buildings", {
+        "INPUT": laz, "STOREY_HEIGHT": 2.5, "OUTPUT": str(tmp_path / "b.gpkg"),
+        "OUTPUT_CITYJSON": str(tmp_path / "b.city.json"), "OUTPUT_OBJ": str(tmp_path / "b.obj"),
+        "OUTPUT_HTML": str(tmp_path / "b.html")})
+    assert res["N_BUILDINGS"] == 5
+    polys = read_polygons(tmp_path / "b.gpkg")
+    types = sorted(a["roof_type"] for a, _ in polys)
+    assert types == ["flat", "flat", "flat", "gabled", "hipped"]
+    assert all(a["storeys"] == max(1, int(a["volume_m3"] / a["area_m2"] // 2.5))
+               for a, _ in polys)
+    doc = json.loads((tmp_path / "b.city.json").read_text(encoding="utf-8"))
+    assert doc["type"] == "CityJSON" and len(doc["CityObjects"]) == 5
+    assert (tmp_path / "b.obj").read_text().count("\no building_") == 5
+    html = (tmp_path / "b.html").read_text(encoding="utf-8")
+    import re
+    assert "1 bridges or decks refused" in re.sub(r"<[^>]+>", "", html)
+    bad = tmp_path / "bad.gpkg"
+    with pytest.raises(QgsProcessingException, match="STOREY_HEIGHT"):
+        qgis_processing.run("geomatics:buildings", {"INPUT": laz, "STOREY_HEIGHT": 1.0,
+                                                    "OUTPUT": str(bad)})
+    assert not bad.exists()
