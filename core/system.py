@@ -68,9 +68,9 @@ def available_memory() -> int:
     return FALLBACK_MEMORY
 
 
-def _windows_memory_status():  # pragma: no cover - Windows only
+def _windows_memory_status():
     class MemoryStatusEx(ctypes.Structure):
-        _fields_ = [("dwLength", ctypes.c_ulong), ("dwMemoryLoad", ctypes.c_ulong),
+        _fields_ = [("dwLength", ctypes.c_uint32), ("dwMemoryLoad", ctypes.c_uint32),
                     ("ullTotalPhys", ctypes.c_ulonglong), ("ullAvailPhys", ctypes.c_ulonglong),
                     ("ullTotalPageFile", ctypes.c_ulonglong),
                     ("ullAvailPageFile", ctypes.c_ulonglong),

@@ -1350,7 +1350,7 @@
         <name>GeomaticsToolboxPlugin</name>
         <message>
             <source>{packages} for the LiDAR algorithms</source>
-            <translation>{packages} برای الگوریتم‌های لیدار</translation>
+            <translation>{packages} برای الگوریتم‌های لایدار</translation>
         </message>
         <message>
             <source>{packages} for the tile catalog</source>
@@ -1832,7 +1832,7 @@
         </message>
         <message>
             <source>The LiDAR algorithms need laspy and lazrs, the tile catalog also dask and distributed; QGIS ships the rest (numpy, SciPy, GDAL). This installs the versions the toolbox was tested with, only those QGIS's Python lacks, with that Python's pip into a folder of the current QGIS profile: QGIS's own packages are never changed or replaced, and removing the folder undoes it. The log shows every command and everything pip prints.</source>
-            <translation>الگوریتم‌های لیدار به laspy و lazrs نیاز دارند و کاتالوگ کاشی‌ها افزون بر آن به dask و distributed؛ بقیه (numpy، SciPy، GDAL) همراه QGIS است. این الگوریتم نسخه‌هایی را که جعبه‌ابزار با آن‌ها آزموده شده، فقط آن‌هایی را که Python خودِ QGIS ندارد، با pip همان Python در پوشه‌ای از نمایهٔ کاربری کنونی QGIS نصب می‌کند: بسته‌های خودِ QGIS هرگز تغییر نمی‌کنند یا جایگزین نمی‌شوند و با حذف پوشه همه‌چیز به حالت پیش بازمی‌گردد. گزارش اجرا هر فرمان و هرچه pip چاپ می‌کند را نشان می‌دهد.</translation>
+            <translation>الگوریتم‌های لایدار به laspy و lazrs نیاز دارند و کاتالوگ کاشی‌ها افزون بر آن به dask و distributed؛ بقیه (numpy، SciPy، GDAL) همراه QGIS است. این الگوریتم نسخه‌هایی را که جعبه‌ابزار با آن‌ها آزموده شده، فقط آن‌هایی را که Python خودِ QGIS ندارد، با pip همان Python در پوشه‌ای از نمایهٔ کاربری کنونی QGIS نصب می‌کند: بسته‌های خودِ QGIS هرگز تغییر نمی‌کنند یا جایگزین نمی‌شوند و با حذف پوشه همه‌چیز به حالت پیش بازمی‌گردد. گزارش اجرا هر فرمان و هرچه pip چاپ می‌کند را نشان می‌دهد.</translation>
         </message>
         <message>
             <source>For computers without internet: a folder of wheel files (.whl) downloaded elsewhere with pip download for the same Python version and system. Empty: the package index pip is configured with.</source>

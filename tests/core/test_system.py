@@ -155,3 +155,27 @@ def test_local_workers_leave_interpreter_state_alone(monkeypatch):
         workers.close()
     assert workers.process.poll() is not None
     assert dict(os.environ) == env_before
+
+
+def test_windows_memory_from_global_memory_status(monkeypatch):
+    """Windows without psutil: GlobalMemoryStatusEx's ullAvailPhys (kernel32 stand-in)."""
+    import ctypes
+    calls = []
+
+    class Kernel32:
+        @staticmethod
+        def GlobalMemoryStatusEx(ref):  # noqa: N802 - the Windows API name
+            status = ref._obj
+            calls.append(status.dwLength)
+            status.ullAvailPhys = 6 << 30
+            status.ullTotalPhys = 16 << 30
+            return 1
+
+    class WinDLL:
+        kernel32 = Kernel32()
+
+    monkeypatch.setattr(ctypes, "windll", WinDLL(), raising=False)
+    monkeypatch.setattr(system, "_psutil", lambda: None)
+    monkeypatch.setattr(sys, "platform", "win32")
+    assert system.available_memory() == 6 << 30
+    assert calls == [64]                      # sizeof(MEMORYSTATUSEX) on every Windows
