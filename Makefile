@@ -22,11 +22,11 @@ PY_SOURCES = $(shell git ls-files '*.py' 2>/dev/null | grep -vE '^(tests|benchma
 TS_FILES := i18n/$(PLUGIN)_ar.ts i18n/$(PLUGIN)_fa.ts
 QM_FILES := $(TS_FILES:.ts=.qm)
 
-.PHONY: help system-deps venv demo test test-core test-qgis test-cli bench lint ts qm \
-	package deploy clean model help-pages screenshots
+.PHONY: help system-deps venv demo test test-core test-qgis test-cli test-340 root-340 bench \
+	lint ts qm package deploy clean model help-pages screenshots
 
 help:
-	@echo "make demo | test | bench | lint | ts | qm | model | help-pages | screenshots | package | deploy | clean"
+	@echo "make demo | test | test-340 | bench | lint | ts | qm | model | help-pages | screenshots | package | deploy | clean"
 
 # --------------------------------------------------------------------------- set-up
 system-deps:
@@ -52,7 +52,7 @@ $(VENV)/.stamp: requirements.txt requirements-dev.txt | system-deps
 $(VENV)/.plugin-link: $(VENV)/.stamp
 	mkdir -p $(VENV)/plugin-path
 	ln -sfn "$(CURDIR)" $(VENV)/plugin-path/$(PLUGIN)
-	echo "$(CURDIR)/$(VENV)/plugin-path" > \
+	echo "$(abspath $(VENV))/plugin-path" > \
 		"$$($(PY) -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')/$(PLUGIN).pth"
 	touch $@
 
@@ -83,6 +83,15 @@ test-qgis: venv qm
 
 test-cli: venv qm
 	$(PY) -m pytest tests/cli $(PYTEST_ARGS)
+
+# The same `make test` on QGIS 3.40 LTR (Python 3.13, numpy 2.2, GDAL 3.10) in a Debian 13
+# root made with debootstrap (scripts/qgis340_root.sh: ~7 min the first time, then reused;
+# its own venv; this checkout and ../shared mounted inside). .ci/run runs it after `make test`.
+test-340:
+	bash scripts/qgis340_root.sh test $(PYTEST_ARGS)
+
+root-340:
+	bash scripts/qgis340_root.sh build
 
 $(VENV)/.bench-stamp: requirements-bench.txt $(VENV)/.stamp
 	$(PY) -m pip install -q --disable-pip-version-check -c $(VENV)/constraints.txt \
