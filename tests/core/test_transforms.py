@@ -80,12 +80,38 @@ def test_polynomial_and_tps_equal_gdal_transformer(kind, options):
     o = np.array(tr.TransformPoints(0, list(zip(c.tolist(), r.tolist())))[0])
     x, y = t.forward(c, r)
     assert np.abs(x - o[:, 0]).max() <= TOL and np.abs(y - o[:, 1]).max() <= TOL
-    if kind == "tps":  # GDAL fits its own map -> image spline; so do we
+    if kind == "tps":  # the inverse is the GDAL in use's (exact from 3.8 on)
         back = np.array(tr.TransformPoints(1, o[:, :2].tolist())[0])
         cc, rr = t.inverse(o[:, 0], o[:, 1])
         assert np.abs(cc - back[:, 0]).max() < 1e-6 and np.abs(rr - back[:, 1]).max() < 1e-6
         vx, vy = t.residuals(pix, mp)
         assert np.abs(vx).max() < 1e-6 and np.abs(vy).max() < 1e-6
+
+
+def test_tps_inverse_is_the_gdal_in_use():
+    """GDAL ≥ 3.8 inverts its spline exactly, older GDAL fits a map → image spline.
+
+    The two inverses are ~0.01 px apart between GCPs, so only the mode GDAL uses
+    agrees with GDAL's own transformer to 1e-6 px, away from the GCPs too.
+    """
+    pix, mp, _, size = gcp_synthetic.transformed_gcps("polynomial2", noise=1.0, seed=7)
+    tr, _ds = _gdal_transformer(pix, mp, ["METHOD=GCP_TPS"])
+    c, r = _grid(size, n=23)
+    x, y = transforms.fit_tps(pix, mp).forward(c, r)
+    gdal_back = np.array(tr.TransformPoints(1, list(zip(x.tolist(), y.tolist())))[0])
+    gdal_exact = np.abs(gdal_back[:, 0] - c).max() < 1e-6
+    assert transforms.gdal_inverts_tps_exactly() == gdal_exact == (
+        int(gdal.VersionInfo("VERSION_NUM")) >= 3080000)
+    gaps = {}
+    for exact in (True, False):
+        t = transforms.fit_tps(pix, mp, exact_inverse=exact)
+        cc, rr = t.inverse(x, y)
+        gaps[exact] = max(np.abs(cc - gdal_back[:, 0]).max(),
+                          np.abs(rr - gdal_back[:, 1]).max())
+        if exact:  # forward(inverse(p)) == p
+            assert np.abs(cc - c).max() < 1e-6 and np.abs(rr - r).max() < 1e-6
+    assert gaps[gdal_exact] < 1e-6
+    assert gaps[not gdal_exact] > 1e-3, gaps  # the other mode is measurably different
 
 
 @pytest.mark.parametrize("kind, pix, message", [
