@@ -210,6 +210,24 @@ def _add_children(m, algs, sources) -> None:
         m.addChildAlgorithm(c)
 
 
+def pin_output_names(model) -> None:
+    """Keep the model outputs' names ``publish:<label>`` whichever QGIS builds the model.
+
+    QGIS 3.40 makes new models ``internal_version=Version2``, whose outputs are named
+    after their labels alone (``dtm`` instead of ``publish:DTM``), so the same command
+    line, the demo and the tests would fail on one of the two versions. QGIS 3.22 knows
+    only Version1, and every QGIS reads a model saved as Version1 (or without the
+    option) with the ``<child>:<label>`` names: reload the model as Version1, which
+    rebuilds its output parameters under those names.
+    """
+    variant = model.toVariant()
+    if variant.get("internal_version", "Version1") == "Version1":
+        return
+    variant["internal_version"] = "Version1"
+    if not model.loadVariant(variant):
+        raise SystemExit("could not reload the model as internal_version Version1")
+
+
 def _register_provider():
     """Register the plugin's provider so the filter's parameter definitions are copied."""
     import importlib.util
@@ -246,6 +264,7 @@ def main(argv=None) -> int:
     provider = _register_provider()
     try:
         model = build(args.filter)
+        pin_output_names(model)
         out = Path(args.out)
         out.parent.mkdir(parents=True, exist_ok=True)
         tmp = out.with_name(out.name + ".part")

@@ -12,6 +12,8 @@ from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 
 ROOT = Path(__file__).resolve().parents[2]
 MODEL = ROOT / "models" / "lidar_to_dtm.model3"
+OUTPUT_LABELS = ("Classified point cloud", "Ground filter report", "DTM", "DTM report",
+                 "Check-point residuals", "DTM accuracy report")
 
 
 @pytest.fixture(scope="module")
@@ -53,8 +55,40 @@ def test_chain_with_slope_filter(qgis_process, demo):
     model = demo / "slope_chain.model3"
     subprocess.run([sys.executable, str(ROOT / "scripts" / "build_model.py"), "--filter",
                     "slope", "--out", str(model)], check=True, capture_output=True)
+    # built on this QGIS, the outputs keep their publish: names (3.40 would save
+    # internal_version=Version2 and call them "dtm", … without build_model's pin)
+    import xml.etree.ElementTree as ET
+    versions = [o.get("value") for o in ET.parse(model).getroot()
+                if o.get("name") == "internal_version"]
+    assert versions in ([], ["Version1"]), versions
     res, out = run_model(qgis_process, model, demo)
     check_outputs(res, out)
+    assert sorted(k for k in res["results"] if k.startswith("publish:")) == sorted(
+        f"publish:{label}" for label in OUTPUT_LABELS)
+
+
+def test_model_output_names_pinned_to_version1(qgis_app):
+    """A model that QGIS made Version2 (3.40: outputs "dtm", …) is reloaded as Version1."""
+    sys.path.insert(0, str(ROOT / "scripts"))
+    try:
+        import build_model
+    finally:
+        sys.path.remove(str(ROOT / "scripts"))
+    model = build_model.build("slope")
+    variant = model.toVariant()
+    variant["internal_version"] = "Version2"
+    assert model.loadVariant(variant)
+    names = sorted(d.name() for d in model.destinationParameterDefinitions())
+    if "internal_version" in model.toVariant():  # QGIS with Version2 models (3.40)
+        assert len(names) == len(OUTPUT_LABELS) and not [
+            n for n in names if n.startswith("publish:")], names   # "dtm", …
+    else:                                         # QGIS 3.22: Version1 only
+        assert names == sorted(f"publish:{label}" for label in OUTPUT_LABELS)
+    build_model.pin_output_names(model)
+    assert sorted(d.name() for d in model.destinationParameterDefinitions()) == sorted(
+        f"publish:{label}" for label in OUTPUT_LABELS)
+    assert model.toVariant().get("internal_version", "Version1") == "Version1"
+    assert {label for label, *_ in build_model.OUTPUTS} == set(OUTPUT_LABELS)
 
 
 def test_shipped_model(qgis_process, demo):
