@@ -105,6 +105,14 @@ def point_cloud_layers_supported(path: str | None = None) -> bool:
 LAYER_DESTINATIONS = ("rasterDestination", "vectorDestination", "sink")
 
 
+def copc_layers_supported() -> bool:
+    """True when this QGIS build reads COPC files (.copc.laz) as point-cloud layers.
+
+    QGIS 3.26 and later have a native ``copc`` provider that needs no PDAL.
+    """
+    return "copc" in QgsProviderRegistry.instance().providerList()
+
+
 class GeomaticsAlgorithm(QgsProcessingAlgorithm):
     """Base class: groups, icon, translation, error handling, core callbacks."""
 
@@ -200,11 +208,23 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
 
     # ---------------------------------------------------------------- LiDAR inputs
     def las_input_note(self) -> str:
-        """One sentence on how the LAS/LAZ input is given in this QGIS build."""
+        """What this QGIS build can load as a point-cloud layer, and how to give the input.
+
+        With PDAL any LAS/LAZ is a layer; without it (Debian's QGIS 3.22 and 3.40) plain
+        LAS/LAZ files are not, but QGIS 3.26 and later read COPC (.copc.laz) natively.
+        Every LiDAR algorithm reads all three from a path.
+        """
         if point_cloud_layers_supported():
-            return self.tr("Pick a loaded point-cloud layer or a .las/.laz file.")
+            return self.tr("Pick a loaded point-cloud layer or a .las, .laz or .copc.laz "
+                           "file.")
+        if copc_layers_supported():
+            return self.tr("This QGIS build has no PDAL point-cloud provider: .las/.laz "
+                           "files cannot be loaded as layers here, COPC files (.copc.laz) "
+                           "can (QGIS 3.26 and later read them without PDAL). Give the "
+                           ".las, .laz or .copc.laz file.")
         return self.tr("This QGIS build has no PDAL point-cloud provider, so point clouds "
-                       "cannot be loaded as layers: give the .las/.laz file.")
+                       "cannot be loaded as layers (COPC needs QGIS 3.26 or later): give "
+                       "the .las, .laz or .copc.laz file.")
 
     def add_las_input(self, name: str = "INPUT", description: str | None = None, *,
                       optional: bool = False, help_text: str | None = None):

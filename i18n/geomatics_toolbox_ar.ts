@@ -971,14 +971,6 @@
             <translation>أُنهي التشغيل؛ لم يُكتب أي ناتج.</translation>
         </message>
         <message>
-            <source>Pick a loaded point-cloud layer or a .las/.laz file.</source>
-            <translation>اختر طبقة سحابة نقاط محمّلة أو ملف ‎.las/.laz‏.</translation>
-        </message>
-        <message>
-            <source>This QGIS build has no PDAL point-cloud provider, so point clouds cannot be loaded as layers: give the .las/.laz file.</source>
-            <translation>نسخة QGIS هذه لا تحتوي على مزوّد سحب النقاط PDAL، لذا لا يمكن تحميل سحب النقاط كطبقات: أعطِ ملف ‎.las/.laz‏.</translation>
-        </message>
-        <message>
             <source>Point cloud (LAS/LAZ)</source>
             <translation>سحابة النقاط (LAS/LAZ)</translation>
         </message>
@@ -1279,6 +1271,34 @@
             <translation>RMS_T لنقاط التحقق (وإلا فبطريقة ترك واحدة) للتحويل المستخدم</translation>
         </message>
         <message>
+            <source>Pick a loaded point-cloud layer or a .las, .laz or .copc.laz file.</source>
+            <translation>اختر طبقة سحابة نقاط محمّلة أو ملف ‎.las‏ أو ‎.laz‏ أو ‎.copc.laz‏.</translation>
+        </message>
+        <message>
+            <source>This QGIS build has no PDAL point-cloud provider: .las/.laz files cannot be loaded as layers here, COPC files (.copc.laz) can (QGIS 3.26 and later read them without PDAL). Give the .las, .laz or .copc.laz file.</source>
+            <translation>نسخة QGIS هذه لا تحتوي على مزوّد سحب النقاط PDAL: لا يمكن تحميل ملفات ‎.las/.laz‏ كطبقات هنا، أما ملفات COPC ‏(‎.copc.laz‏) فيمكن تحميلها (يقرؤها QGIS 3.26 وما بعده دون PDAL). أعطِ ملف ‎.las‏ أو ‎.laz‏ أو ‎.copc.laz‏.</translation>
+        </message>
+        <message>
+            <source>This QGIS build has no PDAL point-cloud provider, so point clouds cannot be loaded as layers (COPC needs QGIS 3.26 or later): give the .las, .laz or .copc.laz file.</source>
+            <translation>نسخة QGIS هذه لا تحتوي على مزوّد سحب النقاط PDAL، لذا لا يمكن تحميل سحب النقاط كطبقات (يتطلب COPC الإصدار QGIS 3.26 أو أحدث): أعطِ ملف ‎.las‏ أو ‎.laz‏ أو ‎.copc.laz‏.</translation>
+        </message>
+        <message>
+            <source>Set-up</source>
+            <translation>الإعداد</translation>
+        </message>
+        <message>
+            <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
+            <translation>البيانات بوحدة {} أفقياً و{} رأسياً؛ تُحوَّل إلى الأمتار، لذا فكل طول تُدخله وكل طول في هذا السجل بالأمتار.</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>ثنائي الخطية</translation>
+        </message>
+        <message>
+            <source>Average</source>
+            <translation>المتوسط (average)</translation>
+        </message>
+        <message>
             <source>Colour ramp</source>
             <translation>تدرّج لوني</translation>
         </message>
@@ -1317,22 +1337,6 @@
         <message>
             <source>Exponential</source>
             <translation>أُسّي (exponential)</translation>
-        </message>
-        <message>
-            <source>Bilinear</source>
-            <translation>ثنائي الخطية</translation>
-        </message>
-        <message>
-            <source>Average</source>
-            <translation>المتوسط (average)</translation>
-        </message>
-        <message>
-            <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
-            <translation>البيانات بوحدة {} أفقياً و{} رأسياً؛ تُحوَّل إلى الأمتار، لذا فكل طول تُدخله وكل طول في هذا السجل بالأمتار.</translation>
-        </message>
-        <message>
-            <source>Set-up</source>
-            <translation>الإعداد</translation>
         </message>
     </context>
     <context>

@@ -971,14 +971,6 @@
             <translation>اجرا متوقف شد؛ هیچ خروجی‌ای نوشته نشد.</translation>
         </message>
         <message>
-            <source>Pick a loaded point-cloud layer or a .las/.laz file.</source>
-            <translation>یک لایهٔ ابر نقاط بارشده یا یک فایل ‎.las/.laz‏ انتخاب کنید.</translation>
-        </message>
-        <message>
-            <source>This QGIS build has no PDAL point-cloud provider, so point clouds cannot be loaded as layers: give the .las/.laz file.</source>
-            <translation>این نسخهٔ QGIS ارائه‌دهندهٔ ابر نقاط PDAL ندارد، پس ابرهای نقاط را نمی‌توان به‌صورت لایه بار کرد: فایل ‎.las/.laz‏ را بدهید.</translation>
-        </message>
-        <message>
             <source>Point cloud (LAS/LAZ)</source>
             <translation>ابر نقاط (LAS/LAZ)</translation>
         </message>
@@ -1279,6 +1271,34 @@
             <translation>RMS_T نقاط چک (وگرنه به روش یکی‌کنارگذاری) برای تبدیل به‌کاررفته</translation>
         </message>
         <message>
+            <source>Pick a loaded point-cloud layer or a .las, .laz or .copc.laz file.</source>
+            <translation>یک لایهٔ ابر نقاط بارشده یا یک فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ انتخاب کنید.</translation>
+        </message>
+        <message>
+            <source>This QGIS build has no PDAL point-cloud provider: .las/.laz files cannot be loaded as layers here, COPC files (.copc.laz) can (QGIS 3.26 and later read them without PDAL). Give the .las, .laz or .copc.laz file.</source>
+            <translation>این نسخهٔ QGIS ارائه‌دهندهٔ ابر نقاط PDAL ندارد: فایل‌های ‎.las/.laz‏ را اینجا نمی‌توان به‌صورت لایه بار کرد، اما فایل‌های COPC ‏(‎.copc.laz‏) را می‌توان (QGIS 3.26 و نسخه‌های بعدی آن‌ها را بدون PDAL می‌خوانند). فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ را بدهید.</translation>
+        </message>
+        <message>
+            <source>This QGIS build has no PDAL point-cloud provider, so point clouds cannot be loaded as layers (COPC needs QGIS 3.26 or later): give the .las, .laz or .copc.laz file.</source>
+            <translation>این نسخهٔ QGIS ارائه‌دهندهٔ ابر نقاط PDAL ندارد، پس ابرهای نقاط را نمی‌توان به‌صورت لایه بار کرد (COPC به QGIS 3.26 یا جدیدتر نیاز دارد): فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ را بدهید.</translation>
+        </message>
+        <message>
+            <source>Set-up</source>
+            <translation>تنظیمات</translation>
+        </message>
+        <message>
+            <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
+            <translation>داده‌ها در افق بر حسب {} و در ارتفاع بر حسب {} هستند؛ به متر تبدیل می‌شوند، پس هر طولی که می‌دهید و هر طول در این گزارش کار به متر است.</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>دوخطی</translation>
+        </message>
+        <message>
+            <source>Average</source>
+            <translation>میانگین (average)</translation>
+        </message>
+        <message>
             <source>Colour ramp</source>
             <translation>طیف رنگی</translation>
         </message>
@@ -1317,22 +1337,6 @@
         <message>
             <source>Exponential</source>
             <translation>نمایی (exponential)</translation>
-        </message>
-        <message>
-            <source>Bilinear</source>
-            <translation>دوخطی</translation>
-        </message>
-        <message>
-            <source>Average</source>
-            <translation>میانگین (average)</translation>
-        </message>
-        <message>
-            <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
-            <translation>داده‌ها در افق بر حسب {} و در ارتفاع بر حسب {} هستند؛ به متر تبدیل می‌شوند، پس هر طولی که می‌دهید و هر طول در این گزارش کار به متر است.</translation>
-        </message>
-        <message>
-            <source>Set-up</source>
-            <translation>تنظیمات</translation>
         </message>
     </context>
     <context>

@@ -430,6 +430,7 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
             raise ValueError(f"mask has shape {mask.shape}; expected ({info.count},).")
     dst = os.fspath(dst)
     written = 0
+    from laspy.vlrs.vlrlist import VLRList
     with _open(src) as reader, atomic_output(dst) as tmp:
         header = reader.header
         _drop_invented_vlrs(header)
@@ -438,6 +439,7 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
             header = copy.deepcopy(header)
             header.add_extra_dims([laspy.ExtraBytesParams(name=name, type=np.asarray(v).dtype)
                                    for name, v in extra.items()])
+        _drop_copc_records(header)
         with laspy.open(tmp, mode="w", header=header,
                         do_compress=dst.lower().endswith(".laz")) as writer:
             start = 0
@@ -458,9 +460,11 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
             if start != info.count:
                 raise ValueError(f"{src} declares {info.count} points but holds {start}; "
                                  "the file is truncated or corrupt.")
-            evlrs = getattr(header, "evlrs", None)
+            # EVLRs of a LAZ file are read (into the reader's header) after its points
+            evlrs = [v for v in (getattr(reader.header, "evlrs", None) or [])
+                     if not is_copc_record(v)]
             if evlrs:
-                writer.write_evlrs(evlrs)
+                writer.write_evlrs(VLRList(evlrs))
         _restore_extra_bytes_vlrs(src, tmp)
     return written
 
@@ -557,6 +561,30 @@ def _widen(laspy, chunk, header, extra, start, stop):
     for name, values in extra.items():
         wide[name] = values[start:stop]
     return wide
+
+
+def is_copc_record(vlr) -> bool:
+    """Tell whether ``vlr`` is a COPC record (user id ``copc``: info, hierarchy, extents)."""
+    user_id = getattr(vlr, "user_id", "")
+    if isinstance(user_id, bytes):
+        user_id = user_id.decode("ascii", "replace")
+    return user_id.rstrip("\0").strip() == "copc"
+
+
+def _drop_copc_records(header) -> None:
+    """Remove the COPC records from ``header`` (its VLRs and EVLRs), keep every other.
+
+    A COPC file (``.copc.laz``) is a LAZ 1.4 file whose points are stored in octree
+    order, one LAZ chunk per octree node, described by a ``copc`` info VLR and a
+    ``copc`` hierarchy EVLR. A copy with new classes (or a subset of the points) is
+    written as a plain LAS/LAZ, where those records would describe chunks that no
+    longer exist (and laspy cannot write them); every other VLR and EVLR — CRS,
+    extra-bytes descriptions, user records — is kept.
+    """
+    from laspy.vlrs.vlrlist import VLRList
+    header.vlrs = VLRList([v for v in header.vlrs if not is_copc_record(v)])
+    if getattr(header, "evlrs", None):
+        header.evlrs = VLRList([v for v in header.evlrs if not is_copc_record(v)])
 
 
 def write_las(dst, x, y, z, *, dimensions: Optional[Mapping[str, np.ndarray]] = None,
