@@ -581,10 +581,8 @@ def _drop_copc_records(header) -> None:
     longer exist (and laspy cannot write them); every other VLR and EVLR — CRS,
     extra-bytes descriptions, user records — is kept.
     """
-    from laspy.vlrs.vlrlist import VLRList
-    header.vlrs = VLRList([v for v in header.vlrs if not is_copc_record(v)])
-    if getattr(header, "evlrs", None):
-        header.evlrs = VLRList([v for v in header.evlrs if not is_copc_record(v)])
+    for records in (header.vlrs, getattr(header, "evlrs", None) or []):
+        records[:] = [v for v in records if not is_copc_record(v)]   # in place, in order
 
 
 def write_las(dst, x, y, z, *, dimensions: Optional[Mapping[str, np.ndarray]] = None,

@@ -51,8 +51,13 @@ def clouds(tmp_path_factory):
     las = laspy.read(d / "source.laz")
     las.points = las.points[copc_writer.copc_point_order(las.x, las.y, las.z)]
     las.write(d / "tile.laz")
+    # a second epoch for elevationchange: 0.5 m of fill on the western half
+    las.z = las.z + np.where(las.x < las.x.min() + 40.0, 0.5, 0.0)
+    las.write(d / "after.laz")
+    copc_writer.write_copc(d / "after.laz", d / "after.copc.laz")
     cp = tile.checkpoints(n=10, min_spacing=3.0)
     return {"copc": d / "tile.copc.laz", "plain": d / "tile.laz", "n": n,
+            "copc_after": d / "after.copc.laz", "plain_after": d / "after.laz",
             "csv": cp.to_csv(d / "cp.csv"), "dir": d}
 
 
@@ -121,7 +126,7 @@ CASES = {
     "dsm": ({"CELL_SIZE": 2.0}, ["INPUT"], {"OUTPUT": "dsm.tif"}),
     "lidarqa": ({}, ["INPUT"], {"OUTPUT": "density.tif", "OUTPUT_HTML": "qa.html"}),
     "buildings": ({}, ["INPUT"], {"OUTPUT": "b.gpkg", "OUTPUT_CLOUD": "b.laz"}),
-    "elevationchange": ({}, ["INPUT", "INPUT_AFTER"], {"OUTPUT": "change.tif"}),
+    "elevationchange": ({}, ["INPUT", "INPUT_AFTER:after"], {"OUTPUT": "change.tif"}),
     "lidartodtm": ({"CELL_SIZE": 2.0, "CHECKPOINTS_CSV": "csv"}, ["INPUT"],
                    {"OUTPUT": "c.laz", "OUTPUT_DTM": "dtm.tif",
                     "OUTPUT_RESIDUALS": "res.gpkg", "OUTPUT_HTML": "acc.html"}),
@@ -132,10 +137,12 @@ CASES = {
 }
 
 
-def _run(qgis_processing, alg, settings, inputs, outputs, cloud, folder, clouds):
+def _run(qgis_processing, alg, settings, inputs, outputs, kind, folder, clouds):
     folder.mkdir()
     params = {k: (str(clouds["csv"]) if v == "csv" else v) for k, v in settings.items()}
-    params.update({name: str(cloud) for name in inputs})
+    for name in inputs:                       # "NAME" or "NAME:after" (second epoch)
+        name, _, epoch = name.partition(":")
+        params[name] = str(clouds[f"{kind}_{epoch}" if epoch else kind])
     params.update({name: str(folder / f) for name, f in outputs.items()})
     return qgis_processing.run(f"geomatics:{alg}", params)
 
@@ -146,10 +153,10 @@ def test_copc_input_gives_the_plain_file_results(qgis_processing, clouds, tmp_pa
     if QgsApplication.processingRegistry().algorithmById(f"geomatics:{alg}") is None:
         pytest.fail(f"geomatics:{alg} is not registered")
     settings, inputs, outputs = CASES[alg]
-    a = _run(qgis_processing, alg, settings, inputs, outputs, clouds["copc"],
-             tmp_path / "copc", clouds)
-    b = _run(qgis_processing, alg, settings, inputs, outputs, clouds["plain"],
-             tmp_path / "plain", clouds)
+    a = _run(qgis_processing, alg, settings, inputs, outputs, "copc", tmp_path / "copc",
+             clouds)
+    b = _run(qgis_processing, alg, settings, inputs, outputs, "plain", tmp_path / "plain",
+             clouds)
     checked = 0
     for name, fname in outputs.items():
         fa, fb = tmp_path / "copc" / fname, tmp_path / "plain" / fname
