@@ -135,15 +135,15 @@ def test_model_equals_its_three_steps_in_sequence(qgis_processing, model, data,
 def test_publish_files_converts_and_refuses_an_input(tmp_path):
     src = tmp_path / "a.html"
     src.write_text("<p>report</p>")
-    cloud = tmp_path / "cloud.laz"
-    cloud.write_bytes(b"LASF")
+    page = tmp_path / "page.html"                   # an input with the output's format
+    page.write_text("<p>input</p>")
     with pytest.raises(ValueError, match="same file as the input INPUT"):
-        publish_files({"OUTPUT_HTML": (str(src), str(cloud), "file")},
-                      inputs={"INPUT": str(cloud)})
-    assert cloud.read_bytes() == b"LASF"
-    with pytest.raises(ValueError, match="extensions differ"):
+        publish_files({"OUTPUT_HTML": (str(src), str(page), "file")},
+                      inputs={"INPUT": str(page)})
+    assert page.read_text() == "<p>input</p>"
+    with pytest.raises(ValueError, match="choose a destination ending in .html"):
         publish_files({"OUTPUT_HTML": (str(src), str(tmp_path / "r.txt"), "file")})
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.html", "cloud.laz"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.html", "page.html"]
     out = publish_files({"OUTPUT_HTML": (str(src), str(tmp_path / "r.html"), "file")})
     assert out == {"OUTPUT_HTML": str(tmp_path / "r.html")}
     assert (tmp_path / "r.html").read_text() == "<p>report</p>"
