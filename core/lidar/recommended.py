@@ -9,7 +9,10 @@ itself (point density, terrain slope), never from labels:
    (leave-one-sample-out found no gain from cells other than 1 m between 0.17 and
    20 pts/m²).
 2. minimum-z raster; empty cells filled by a push-pull pyramid.
-3. low outliers: cells more than 5 m below their 3x3 closing are dropped.
+3. low outliers: cells more than 5 m below their 3x3 closing are dropped; where such
+   pits are more than 8 % of the occupied cells within 25 m they are ground seen
+   through a canopy, and the closing is taken at the spacing of the ground returns
+   (:mod:`._lowcells`), so the terrain never climbs into the trees.
 4. slope tolerance per cell = clip(0.5 x local terrain slope, 0.10, 0.60), the
    terrain slope being the gradient of the 18 m opening averaged over 18 m.
 5. the large-scale terrain trend (27 m opening box-averaged over 55 m) is subtracted:
@@ -79,6 +82,7 @@ from scipy import ndimage
 from ..errors import InputError
 from ..progress import Cancelled, Monitor
 from ..reporting import T
+from . import _lowcells as L  # noqa: N812
 from . import _raster as R  # noqa: N812
 from . import _surface as S  # noqa: N812
 from .pipeline import FunctionFilter
@@ -122,7 +126,11 @@ class RecommendedOptions:
     scaler : float
         Extra tolerance per unit of local DTM slope (m per rise/run).
     low_step : float
-        A cell more than this below its 3x3 closing is a low outlier (m).
+        A cell more than this below its 3x3 closing is a low outlier (m) - read at
+        the ground-return scale where such pits are common (:mod:`._lowcells`).
+    low_window, low_share : float
+        Half-size (m) of the neighbourhood, and the share of pits in it above which
+        the pits are ground under a canopy, not outliers.
     low_noise_depth : float
         Points deeper than this below the DTM become class 7 (m).
     min_points : int
@@ -171,6 +179,8 @@ class RecommendedOptions:
     threshold: float = 0.5
     scaler: float = 1.0
     low_step: float = 5.0
+    low_window: float = 25.0
+    low_share: float = 0.08
     low_noise_depth: float = 1.0
     min_points: int = 10
     refine: int = 3
@@ -194,6 +204,7 @@ class RecommendedOptions:
                              "negative.")
         for name in ("cell_factor", "cell_min", "cell_max", "max_window", "slope_factor",
                      "slope_min", "slope_max", "threshold", "low_step", "low_noise_depth",
+                     "low_window", "low_share",
                      "fill_radius", "fill_reach", "grow_window", "grow_rms", "grow_tol",
                      "grow_max_slope", "grow_max_rise"):
             if not getattr(self, name) > 0:
@@ -319,10 +330,9 @@ def surface(zmin, grid, opt, rep):
         The provisional DTM.
     """
     empty = np.isnan(zmin)
-    zf = R.fill(zmin, ~empty)
-    low = (R.opening(-zf, 1) * -1.0 - zf) > opt.low_step
-    low &= ~empty
-    zf = R.fill(zf, ~(low | empty))
+    low = L.low_cells(zmin, grid.cell, step=opt.low_step, window=opt.low_window,
+                      share=opt.low_share).low
+    zf = R.fill(zmin, ~(low | empty))
     slope = opt.slope if opt.slope is not None else terrain_slope(zf, grid, opt)
     if opt.trend_window > 0 and opt.trend_smooth > 0:
         zf = zf - trend_surface(zf, grid, opt)

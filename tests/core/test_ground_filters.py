@@ -21,6 +21,8 @@ SAMPLES = ["samp11", "samp12", "samp22", "samp31", "samp41", "samp53", "samp54",
 #: detrending, continuity growing; identical totals), then of PTD (research code
 #: /work/scratch/ground, before the port;
 #: re-measured with the cliff-aware mirroring: mean 8.07 %, 8.05 % before it).
+#: Low-outlier cells read at the ground-return scale under canopy (``_lowcells``):
+#: samp41 2.5732 -> 2.6089, samp53 3.1997 -> 3.2259, the other six identical.
 RESEARCH = {
     "samp11": ("a2568d8b68a5af9226ab989104c455785744ea7c", 8.9187,
                "6e1e87dada2ddc6ea5895aaca62e6fe77b8d4c67", 14.5909),
@@ -30,9 +32,9 @@ RESEARCH = {
                "da7b30150e55c0baee260839929777b1eefa5dc1", 18.7336),
     "samp31": ("15aa21b1fafc2d8bf20935d0c0a92f9955b5077b", 1.9507,
                "c439440fbe06d5086c9999b50d9d0b06d6f3b611", 1.5834),
-    "samp41": ("0b1ebbf55c585d514741ac9be020bdd4ed93528e", 2.5732,
+    "samp41": ("abf075402a9f47f36a12fba27ea648dc61072bbc", 2.6089,
                "648d274242335fa3e2063639819420dc130bf4a2", 9.5717),
-    "samp53": ("273592eec9f1ef0a2bd6a7696d805591ba2a4339", 3.1997,
+    "samp53": ("162a2aff19e76c9ed696390a7a5d037f810fa7dc", 3.2259,
                "00592f576252742637e12c6e37c938b4b54f79c5", 8.3862),
     "samp54": ("248c73e81f64485518c6dc4aedcf506ae054b6fd", 2.6487,
                "1580381cbe70109c2e69d6cbc8bcebb45a34a5ec", 3.1599),
@@ -172,7 +174,7 @@ def test_recommended_isprs_golden_identical_to_research(isprs_dir, sample):
 
 def test_recommended_isprs_mean_and_wins(isprs_dir):
     totals = [RESEARCH[s][1] for s in SAMPLES]
-    assert np.mean(totals) == pytest.approx(3.36, abs=0.005)
+    assert np.mean(totals) == pytest.approx(3.371, abs=0.0005)
     smrf = dict(samp11=8.52, samp12=3.60, samp22=3.59, samp31=3.55, samp41=12.20,
                 samp53=7.99, samp54=4.28, samp61=2.28)     # pysmrf, PDAL defaults
     assert sum(RESEARCH[s][1] < smrf[s] for s in SAMPLES) == 7
