@@ -519,8 +519,7 @@ def buildings_report(res: BuildingResult, name: str, params: dict, *, units=None
     from scipy import ndimage
 
     from ..io.units import unit_label
-    from ..reporting import Figure, KeyValues, Paragraph, Report, T, Table
-    from ..reporting.svg import svg_raster
+    from ..reporting import KeyValues, Paragraph, Report, T
     rep = Report("Building footprints report",
                  citation="Kostrikov et al. (2020), ELiT non-ground branch; Rabbani et al. "
                  "(2006), region growing with a smoothness constraint; Henn et al. (2013), "
@@ -539,6 +538,14 @@ def buildings_report(res: BuildingResult, name: str, params: dict, *, units=None
              ("Storey height (m)", params.get("storey_height", 3.0)),
              ("Cell size (m)", res.grid.cell)]
     rep.section("Parameters").add(KeyValues(rows))
+    buildings_section(rep, res)
+    return rep
+
+
+def buildings_section(rep, res: BuildingResult) -> None:
+    """Add the "Buildings" section: footprint map coloured by height, one row each."""
+    from ..reporting import Figure, T, Table
+    from ..reporting.svg import svg_raster
     lut = np.array([np.nan] + [b["height"] for b in res.buildings])
     heights = lut[res.labels] if res.buildings else np.full(res.labels.shape, np.nan)
     sec = rep.section("Buildings")
@@ -549,4 +556,3 @@ def buildings_report(res: BuildingResult, name: str, params: dict, *, units=None
                   [[b["id"], b["height"], b["eave_height"], b["area"], b["volume"],
                     b["storeys"], T(b["roof_type"])] for b in res.buildings],
                   digits=[0, 2, 2, 1, 0, 0, None]))
-    return rep

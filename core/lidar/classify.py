@@ -364,6 +364,9 @@ def classify_report(res: Classification, name: str, x, y, *, lang: str = "en"):
                                               "Output points", "% of output"], rows,
                                              digits=[0, None, 0, 0, 2]))
     rep.section("Class map").add(class_map(x, y, res.classes, tr))
+    if res.buildings is not None and res.buildings.buildings:
+        from .buildings import buildings_section
+        buildings_section(rep, res.buildings)
     rep.section("Parameters").add(KeyValues([
         ("Ground", T("recommended ground filter") if opt.ground == "filter"
          else T("input class 2 kept")),

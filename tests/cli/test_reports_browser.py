@@ -171,8 +171,12 @@ def _buildings(tmp_path):
 
 
 def _classify(tmp_path):
-    return dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "asprs.laz"), "OUTPUT_HTML", \
-        ["class-map"]
+    from geomatics_toolbox.synthetic.city import city_scene, write_scene
+    path = tmp_path / "city.laz"
+    if not path.exists():
+        write_scene(city_scene(density=2.0), path)
+    return dict(INPUT=path, OUTPUT=tmp_path / "asprs.laz"), "OUTPUT_HTML", \
+        ["class-map", "footprint-map"]
 
 
 def _change(tmp_path):

@@ -87,6 +87,7 @@ def test_demo_tile_gets_every_class(demo):
     assert (got[truth == 2] == 2).mean() > 0.97
     html = (d / "c.html").read_text(encoding="utf-8")
     assert 'id="class-map"' in html and "ASPRS" in html
+    assert 'id="footprint-map"' in html and res.buildings.buildings
     assert laspy.read(out).header.point_count == len(truth)
 
 
