@@ -187,7 +187,10 @@ def style_vector(layer, kind: str) -> None:
     """Renderer (and 3D renderer for footprints) of a vector output."""
     if kind == "footprints":
         layer.setRenderer(_graduated(layer, "height_m", "height"))
-        renderer3d = footprints_3d("height_m")
+        # height in the data's own vertical unit where the layer has it (a 3D view of a
+        # feet CRS extrudes in feet); metres otherwise
+        renderer3d = footprints_3d("height_z" if layer.fields().indexOf("height_z") >= 0
+                                   else "height_m")
         if renderer3d is not None:
             layer.setRenderer3D(renderer3d)
     elif kind == "change_polygons":

@@ -5,7 +5,9 @@ metres, :func:`.pipeline.read_cloud`), runs :func:`.buildings.extract_buildings`
 writes, all or none through one :class:`~..io.contract.OutputContract`:
 
 * footprints (GeoPackage) with height, eave height, area, volume, storeys, roof type
-  and slope — SI units (metres, m², m³), geometry in the data's CRS units;
+  and slope — SI units (metres, m², m³), geometry in the data's CRS units; ``ground_z``,
+  ``roof_z`` and ``height_z`` in the data's vertical unit (what a 3D view extrudes by
+  in a feet CRS);
 * optionally a copy of the cloud with class 6 on the buildings' points
   (:func:`.buildings.building_points`), every other attribute and VLR unchanged;
 * optionally LOD1/LOD2 **CityJSON** 2.0 and an **OBJ** of the same solids
@@ -27,7 +29,7 @@ __all__ = ["BuildingOutputs", "buildings_file", "FIELDS"]
 FIELDS = [("id", "int"), ("height_m", "float"), ("eave_height_m", "float"),
           ("area_m2", "float"), ("volume_m3", "float"), ("storeys", "int"),
           ("roof_type", "str"), ("roof_slope_deg", "float"), ("ground_z", "float"),
-          ("roof_z", "float")]
+          ("roof_z", "float"), ("height_z", "float")]
 
 
 @dataclass
@@ -49,7 +51,8 @@ def _records(res, v: float) -> dict:
                       "eave_height_m": b["eave_height"], "area_m2": b["area"],
                       "volume_m3": b["volume"], "storeys": b["storeys"],
                       "roof_type": b["roof_type"], "roof_slope_deg": b["slope"],
-                      "ground_z": b["ground"] / v, "roof_z": b["roof"] / v}
+                      "ground_z": b["ground"] / v, "roof_z": b["roof"] / v,
+                      "height_z": b["height"] / v}
             for b in res.buildings}
 
 

@@ -251,7 +251,9 @@ def test_buildings_footprints_extruded(qgis_processing, scene):
     from qgis.core import QgsAbstract3DSymbol
     sym = r3d.symbol()
     prop = sym.dataDefinedProperties().property(QgsAbstract3DSymbol.PropertyExtrusionHeight)
-    assert prop.isActive() and prop.field() == "height_m"
+    # extruded by the height in the data's vertical unit (equal to height_m in metres)
+    assert prop.isActive() and prop.field() == "height_z"
+    assert [f["height_z"] for f in lyr.getFeatures()] == pytest.approx(heights)
 
 
 def test_footprints_3d_guarded_without_3d_library(monkeypatch):
