@@ -282,10 +282,10 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
     NOISE_RADIUS = "NOISE_RADIUS"
     NOISE_THRESHOLD = "NOISE_THRESHOLD"
 
-    def add_noise_params(self) -> None:
-        """NOISE (default yes), NOISE_RADIUS (m, 5) and NOISE_THRESHOLD (m, 1)."""
+    def add_noise_params(self, default: bool = True) -> None:
+        """NOISE (default ``default``), NOISE_RADIUS (m, 5) and NOISE_THRESHOLD (m, 1)."""
         self.add(QgsProcessingParameterBoolean(
-            self.NOISE, self.tr("Remove low outliers first (class 7)"), True))
+            self.NOISE, self.tr("Remove low outliers first (class 7)"), default))
         self.add_number(self.NOISE_RADIUS, self.tr("Low-outlier search cell (m)"), 5.0,
                         minimum=0.0, advanced=True)
         self.add_number(self.NOISE_THRESHOLD,
@@ -500,4 +500,4 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
         except Exception as exc:  # noqa: BLE001 - report every failure as such
             if feedback is not None:
                 feedback.pushDebugInfo(traceback.format_exc())
-            raise QgsProcessingException(f"{type(exc).__name__}: {exc}") from exc
+            raise QgsProcessingException(f"{type(exc).__name__}: {exc}") from exc  # i18n: data

@@ -56,7 +56,8 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                 "lsq_improved": self.tr("LSQ surfaces, improved (ours)"),
                 "slope_exact": self.tr("Slope filter, exact (Vosselman 2000)"),
                 "slope_adaptive": self.tr("Slope filter, terrain-adaptive"),
-                "groundfilter": self.tr("Ground filter (recommended)")}
+                "groundfilter": self.tr("Ground filter (recommended)"),
+                "ptd": self.tr("Ground filter (progressive TIN densification)")}
 
     def _dtm_labels(self) -> dict:
         return {"idw": self.tr("IDW"), "kriging": self.tr("Kriging"), "tin": self.tr("TIN")}

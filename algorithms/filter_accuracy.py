@@ -129,7 +129,8 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
             cancel=cb["cancel"])
         acc = res.accuracy.as_dict()
         for key, out, label in self.OUTPUTS:
-            feedback.pushInfo(f"{out} ({self.tr(label)}): {acc[key]:.6g}")  # i18n: noop-list
+            feedback.pushInfo(  # i18n: data
+                f"{out} ({self.tr(label)}): {acc[key]:.6g}")  # i18n: noop-list
         with contract as out:
             if err_out:
                 write_las_like(src, out.path(self.ERROR_OUTPUT),

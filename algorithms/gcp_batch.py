@@ -93,11 +93,11 @@ class RectifyBatchAlgorithm(TransformationParams, GeomaticsAlgorithm):
 
             def log(row):
                 if row.error:
-                    feedback.reportError(f"{row.image}: {row.error}", False)
+                    feedback.reportError(f"{row.image}: {row.error}", False)  # i18n: data
                 else:
                     feedback.pushInfo(f"{row.image}: {row.kind}, RMS_T {row.rms_t:.4f}, "
                                       f"{row.basis} RMS_T {row.honest_rms_t:.4f}, "
-                                      f"{row.verdict} -> {row.output}")
+                                      f"{row.verdict} -> {row.output}")  # i18n: data
 
             rows = batch.rectify_folder(
                 folder, out_folder, kind=kind, crs=crs.toWkt() if crs.isValid() else "",

@@ -27,6 +27,7 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
+from ..core.errors import InputError
 from ..core.io import gcp as gcp_io
 from ..core.rectification import assess, export, report, warp
 from .base import GeomaticsAlgorithm
@@ -218,7 +219,8 @@ class _GcpBase(TransformationParams, GeomaticsAlgorithm):
         try:
             v = float(v)
         except (TypeError, ValueError):
-            raise QgsProcessingException(f"{name}: '{v}' is not a number.") from None
+            raise InputError("{name}: '{value}' is not a number.", name=name,
+                             value=v) from None
         return None if math.isnan(v) or v == 0 else v
 
     def raster_path(self, parameters, context, required: bool):
@@ -301,8 +303,8 @@ class _GcpBase(TransformationParams, GeomaticsAlgorithm):
         if fields[self.ROLE_FIELD]:
             rv = str(feat[fields[self.ROLE_FIELD]] or "").strip().lower()
             if rv not in gcp_io._ROLE_ALIASES:
-                raise QgsProcessingException(
-                    f"{where}: role must be 'gcp' or 'check', got {rv!r}.")
+                raise InputError("{where}: role must be 'gcp' or 'check', got {value}.",
+                                 where=where, value=repr(rv))
             role = gcp_io._ROLE_ALIASES[rv]
         weight = (self._number_field(feat, fields[self.WEIGHT_FIELD], where)
                   if fields[self.WEIGHT_FIELD] else None)
@@ -314,8 +316,8 @@ class _GcpBase(TransformationParams, GeomaticsAlgorithm):
         try:
             return float(raw)
         except (TypeError, ValueError):
-            raise QgsProcessingException(
-                f"{where}: field '{name}' must be a number, got {raw!r}.") from None
+            raise InputError("{where}: field '{name}' must be a number, got {value}.",
+                             where=where, name=name, value=repr(raw)) from None
 
     def load_layer(self, parameters, context, origin):
         source = self.parameterAsSource(parameters, self.GCP_LAYER, context)
@@ -385,18 +387,20 @@ class _GcpBase(TransformationParams, GeomaticsAlgorithm):
         return self.render_report(report.build_report(a, extra=extra, lang=lang),
                                   parameters, context)
 
-    @staticmethod
-    def log_assessment(a, unit, feedback):
+    def log_assessment(self, a, unit, feedback):
         """Push the transformation, its RMS, honest error, verdict and drops to the log."""
         r = a.selected
         basis = assess.honest_label(a.comparison.basis)
-        feedback.pushInfo(f"{a.kind}: fit RMS_T = {r.fit.rms_t:.4f} {unit}, {basis} RMS_T = "
-                          f"{r.score(a.comparison.basis):.4f} {unit} (n = {r.n_gcps}); "
-                          f"verdict {a.verdict}.")
-        feedback.pushInfo(f"Recommended transformation: {a.comparison.reason}")
+        feedback.pushInfo(self.tr("{0}: fit RMS_T = {1} {2}, {3} RMS_T = {4} {2} (n = {5}); "
+                                  "verdict {6}.").format(
+            a.kind, f"{r.fit.rms_t:.4f}", unit, basis, f"{r.score(a.comparison.basis):.4f}",
+            r.n_gcps, a.verdict))
+        feedback.pushInfo(self.tr("Recommended transformation: {0}").format(
+            a.comparison.reason))
         for d in a.dropped:
-            feedback.pushWarning(f"Refinement dropped GCP {d['id']} (residual "
-                                 f"{d['residual']:.4f} {unit}; {d['n_after']} left).")
+            feedback.pushWarning(self.tr("Refinement dropped GCP {0} (residual {1} {2}; "
+                                         "{3} left).").format(
+                d["id"], f"{d['residual']:.4f}", unit, d["n_after"]))
 
 
 
@@ -491,8 +495,9 @@ class RectifyGcpAlgorithm(_GcpBase):
                 out.write_text(self.OUTPUT_HTML, self.report_html(a, parameters, context,
                                                                   extra))
                 outputs[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
-        feedback.pushInfo(f"Wrote {outputs[self.OUTPUT]}: {res.width} × {res.height} px at "
-                          f"{res.resolution:.6g} units/px, resampling {resampling}.")
+        feedback.pushInfo(self.tr("Wrote {0}: {1} × {2} px at {3} units/px, resampling "
+                                  "{4}.").format(outputs[self.OUTPUT], res.width, res.height,
+                                                 f"{res.resolution:.6g}", resampling))
         feedback.setProgress(100)
         return outputs
 
@@ -593,12 +598,11 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
         h = self._optional_number(parameters, self.IMAGE_HEIGHT)
         return (int(w), int(h)) if w and h else None
 
-    @staticmethod
-    def log_summary(acc, order, unit, feedback):
+    def log_summary(self, acc, order, unit, feedback):
         """Push the RMS, verdict and recommendation to the log."""
         s = acc.selected.stats
         qgis = "" if s.rms_t_qgis is None else f"{s.rms_t_qgis:.4f}"
-        feedback.pushInfo(f"Order {order}: RMS_T = {s.rms_t:.4f} {unit} (divisor n), "
-                          f"{qgis} (divisor n − N); {s.n_within}/{s.n} within RMS_T; "
-                          f"verdict {acc.verdict}.")
-        feedback.pushInfo(f"Recommendation: {acc.recommendation}")
+        feedback.pushInfo(self.tr("Order {0}: RMS_T = {1} {2} (divisor n), {3} (divisor "
+                                  "n − N); {4}/{5} within RMS_T; verdict {6}.").format(
+            order, f"{s.rms_t:.4f}", unit, qgis, s.n_within, s.n, acc.verdict))
+        feedback.pushInfo(self.tr("Recommendation: {0}").format(acc.recommendation))

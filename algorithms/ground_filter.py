@@ -12,6 +12,7 @@ from qgis.core import (
 from ..core.errors import InputError
 from ..core.lidar import ptd as core_ptd
 from ..core.lidar import recommended as core_rec
+from ..core.lidar.filters import ground_filter
 from ..core.lidar.pipeline import SelectionOptions
 from .helptext import build_help
 from .lidar_common import LidarFilterMixin
@@ -177,7 +178,7 @@ class GroundFilterAlgorithm(_GroundCommon):
                                   "{} refinement passes").format(
             opts.max_window, opts.threshold, opts.refine))
         return self.run_filter(parameters, context, feedback,
-                               core_rec.recommended_filter(opts))
+                               ground_filter("groundfilter", opts))
 
 
 class PtdGroundFilterAlgorithm(_GroundCommon):
@@ -273,4 +274,4 @@ class PtdGroundFilterAlgorithm(_GroundCommon):
         opts = self.options(parameters, context)
         feedback.pushInfo(self.tr("PTD: parcels {} m, distance {} m, angle {}°").format(
             opts.max_building, opts.max_distance, opts.max_angle))
-        return self.run_filter(parameters, context, feedback, core_ptd.ptd_filter(opts))
+        return self.run_filter(parameters, context, feedback, ground_filter("ptd", opts))

@@ -258,7 +258,7 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
             for attr, name, unit in NUMERIC_OUTPUTS:
                 outputs[name] = values[attr]
                 if values[attr] is not None:
-                    feedback.pushInfo(f"{name}: {values[attr]:.6g} {unit}")
+                    feedback.pushInfo(f"{name}: {values[attr]:.6g} {unit}")  # i18n: data
             if out.requested(self.OUTPUT_HTML):
                 index = self.parameterAsEnum(parameters, self.CAMERA, context)
                 preset = CAMERAS.get(CAMERA_KEYS[index])

@@ -1,6 +1,8 @@
 """Ground filter by tiled least-squares polynomial surfaces (Processing algorithm)."""
 from __future__ import annotations
 
+from dataclasses import replace
+
 from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterEnum,
@@ -10,7 +12,8 @@ from qgis.core import (
 from ..core.errors import InputError
 from ..core.io.las import las_info
 from ..core.lidar import lsq as core_lsq
-from ..core.lidar.pipeline import SelectionOptions, classify_file
+from ..core.lidar.filters import default_selection, ground_filter
+from ..core.lidar.pipeline import classify_file
 from ..core.progress import Monitor
 from .helptext import build_help
 from .lidar_common import LidarFilterMixin
@@ -173,11 +176,12 @@ class LsqGroundFilterAlgorithm(LidarFilterMixin):
     def process(self, parameters, context, feedback):
         src = self.las_input_path(parameters, context, self.INPUT)
         opts = self.options(parameters, context)
-        selection = SelectionOptions(
-            returns="all", noise=self.parameterAsBool(parameters, self.NOISE, context),
+        key = f"lsq_{opts.mode}"
+        selection = replace(
+            default_selection(key),
+            noise=self.parameterAsBool(parameters, self.NOISE, context),
             noise_radius=self.parameterAsDouble(parameters, self.NOISE_RADIUS, context),
-            noise_threshold=self.parameterAsDouble(parameters, self.NOISE_THRESHOLD, context),
-            keep_noise_classes=False)
+            noise_threshold=self.parameterAsDouble(parameters, self.NOISE_THRESHOLD, context))
         outputs = self.filter_outputs(parameters, context, cloud=self.OUTPUT,
                                       ground=self.GROUND_OUTPUT, report=self.OUTPUT_HTML,
                                       text={"csv": self.TILE_STATS})
@@ -186,7 +190,7 @@ class LsqGroundFilterAlgorithm(LidarFilterMixin):
                                      "(OUTPUT, .laz or .las)."))
         feedback.pushInfo(self.tr("Reading {p}").format(p=src))
         self.log_units(feedback, las_info(src).units)
-        run = classify_file(src, core_lsq.LsqFilter(opts), outputs,
+        run = classify_file(src, ground_filter(key, opts), outputs,
                             Monitor(**self.core_callbacks(feedback)), selection=selection)
         res = run.outcome.details
         for row in res.iteration_stats:

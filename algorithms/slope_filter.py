@@ -12,6 +12,7 @@ from qgis.core import (
 
 from ..core.lidar import pipeline as core_sp
 from ..core.lidar import slope as core_sf
+from ..core.lidar.filters import ground_filter
 from ..core.lidar.pipeline import SelectionOptions
 from ..core.lidar.sweep import sweep_file
 from .helptext import build_help
@@ -190,7 +191,7 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
                                   "mode {}").format(opts.radius, opts.slope,
                                                     opts.height_tolerance, kw["returns"],
                                                     kw["mode"]))
-        algorithm = core_sf.SlopeFilter(opts)
+        algorithm = ground_filter(f"slope_{opts.mode}", opts)
         return self.classify_and_publish(src, algorithm, outputs, selection, context,
                                          feedback)
 
@@ -311,7 +312,7 @@ class SlopeThresholdSweepAlgorithm(_SlopeCommon):
         for row in s.result.rows:
             feedback.pushInfo(f"r={row.radius:g} θ={row.slope:g} h={row.height_tolerance:g}: "
                               f"I {row.type1:.2f} % II {row.type2:.2f} % total "
-                              f"{row.total:.2f} % κ {row.kappa:.1f}")
+                              f"{row.total:.2f} % κ {row.kappa:.1f}")  # i18n: data
         best = f"r={b.radius:g} m, θ={b.slope:g}°, h={b.height_tolerance:g} m"
         feedback.pushInfo(self.tr("Best ({}): {} — total {:.2f} %").format(metric, best,
                                                                            b.total))

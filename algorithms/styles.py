@@ -224,7 +224,8 @@ def style_point_cloud(layer) -> None:
 def apply_style(layer, kind: str) -> None:
     """Style ``layer`` as ``kind`` (one of :data:`KINDS`)."""
     if kind not in KINDS:
-        raise ValueError(f"unknown layer style {kind!r}; one of {', '.join(KINDS)}")
+        raise ValueError(  # i18n: internal
+            f"unknown layer style {kind!r}; one of {', '.join(KINDS)}")
     if layer is None or not layer.isValid():
         return
     ltype = layer.type()
@@ -242,7 +243,7 @@ class LayerStyler(QgsProcessingLayerPostProcessorInterface):
     def __init__(self, kind: str):
         super().__init__()
         if kind not in KINDS:
-            raise ValueError(f"unknown layer style {kind!r}")
+            raise ValueError(f"unknown layer style {kind!r}")  # i18n: internal
         self.kind = kind
 
     def postProcessLayer(self, layer, context, feedback):  # noqa: N802 - QGIS API

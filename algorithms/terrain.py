@@ -28,15 +28,16 @@ from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 from ..core.coords import check_projected
 from ..core.errors import InputError
 from ..core.io.las import iter_las_chunks, las_info
-from ..core.io.points import parse_classes, read_class_points, write_grid
+from ..core.io.points import parse_classes, write_grid
 from ..core.io.raster import read_raster
-from ..core.io.units import Units, crs_units, units_note
-from ..core.reporting import T, translator
+from ..core.io.units import Units, crs_units
+from ..core.progress import Monitor
+from ..core.reporting import translator
 from ..core.terrain import dsm as core_dsm
+from ..core.terrain import dtm as core_dtm
 from ..core.terrain import idw as core_idw
 from ..core.terrain import kriging as core_kriging
-from ..core.terrain import report as terrain_report
-from ..core.terrain.grid import grid_from_extent, grid_from_points, grid_like
+from ..core.terrain.grid import grid_from_extent, grid_like
 from .base import GeomaticsAlgorithm
 from .helptext import build_help
 
@@ -109,8 +110,8 @@ def _qgs_crs(text: str) -> QgsCoordinateReferenceSystem:
 
 def _check_tif(path: str) -> None:
     if path and os.path.splitext(path)[1].lower() not in (".tif", ".tiff"):
-        raise QgsProcessingException(
-            f"Output {path}: only GeoTIFF outputs are written; use a .tif file name.")
+        raise InputError("Output {path}: only GeoTIFF outputs are written; use a .tif file "
+                         "name.", path=path)
 
 
 class _GridAlgorithm(GeomaticsAlgorithm):
@@ -210,8 +211,8 @@ class _GridAlgorithm(GeomaticsAlgorithm):
     def cell_size(self, parameters, context):
         cell = self.parameterAsDouble(parameters, self.CELL_SIZE, context)
         if not cell > 0:
-            raise QgsProcessingException(self.tr(
-                "Cell size must be > 0 (metres); give e.g. 1.0. No output was written."))
+            raise InputError("Cell size must be > 0 (metres); give e.g. 1.0. No output was "
+                             "written.")
         return cell
 
     def gap_options(self, parameters, context):
@@ -220,6 +221,7 @@ class _GridAlgorithm(GeomaticsAlgorithm):
         return fill, (maxd if maxd > 0 else None)
 
     def load_points(self, parameters, context, feedback):
+        """Return ``(path, points in metres, grid, CRS source)`` (core ``read_ground``)."""
         path = self.las_input_path(parameters, context, self.INPUT)
         classes = self.classes(parameters, self.CLASSES, context)
         info = las_info(path)
@@ -228,20 +230,35 @@ class _GridAlgorithm(GeomaticsAlgorithm):
         cell = self.cell_size(parameters, context)
         cb = self.core_callbacks(feedback)
         feedback.pushInfo(self.tr("Reading points of class(es) {} from {}").format(
-            ", ".join(map(str, classes)) or "all", path))
+            ", ".join(map(str, classes)) or self.tr("all"), path))
         units = las_units_for(info, crs, crs_source)
         self.log_units(feedback, units)
-        pts = read_class_points(path, classes, extent=box, progress=None, cancel=cb["cancel"])
-        check_projected(pts.x, pts.y, pts.z, crs=crs)
-        # Lengths are metres (DEVELOPERS.md, Units): grid in metres, written back in
-        # the data's units by write_grid(..., units=pts.units).
-        pts.units = units
-        pts.x, pts.y, pts.z = units.xyz_to_metres(pts.x, pts.y, pts.z)
-        if box is not None:
-            box = tuple(v * units.h for v in box)
+        pts, grid = core_dtm.read_ground(path, classes, cell=cell, units=units, extent=box,
+                                         crs=crs, cancel=cb["cancel"])
         feedback.pushInfo(self.tr("{} of {} points selected").format(len(pts), pts.n_total))
-        grid = grid_from_points(pts.x, pts.y, cell, extent=box, crs=crs)
         return path, pts, grid, crs_source
+
+    def run_method(self, parameters, context, feedback, method, out, rasters=()):
+        """Read, interpolate with ``method``, write OUTPUT (+ ``rasters``: {name: extra})
+        and the report; the output numbers shared by every DTM algorithm."""
+        path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
+        fill, maxd = self.gap_options(parameters, context)
+        run = core_dtm.make_dtm(path, pts, grid, method, max_distance=maxd, fill=fill,
+                                crs_source=crs_source,
+                                monitor=Monitor(**self.core_callbacks(feedback)))
+        core_dtm.write_dtm(run, out.path(self.OUTPUT))
+        results = {self.OUTPUT: out.final(self.OUTPUT), "N_POINTS": run.outcome.n_points,
+                   "VALID_CELLS": run.stats["valid_cells"],
+                   "NODATA_CELLS": run.stats["nodata_cells"]}
+        for name, extra in dict(rasters).items():
+            if out.requested(name):
+                core_dtm.write_dtm(run, out.path(name), extra=extra)
+                results[name] = out.final(name)
+        if out.requested(self.OUTPUT_HTML):
+            rep = core_dtm.dtm_report(run, lang=self.report_lang(parameters, context))
+            out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters, context))
+            results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
+        return run, results
 
     def contract(self, parameters, context, rasters, inputs):
         """The output contract of the rasters + the report; rasters must be GeoTIFF."""
@@ -251,34 +268,7 @@ class _GridAlgorithm(GeomaticsAlgorithm):
             _check_tif(out.final(name))
         return out
 
-    @staticmethod
-    def refuse_empty_grid(stats: dict, n_points: int, path: str) -> None:
-        """Refuse a DTM with no valid cell (degenerate or too few points): no output."""
-        if stats["valid_cells"] == 0:
-            raise InputError(
-                "The DTM from {n} point(s) of {path} has no cell with a value: the points "
-                "are too few, too far apart or nearly on one line for this method and "
-                "cell size. Use more ground points (a ground filter first), a larger "
-                "maximum edge / distance, or fill the gaps. No output was written.",
-                n=n_points, path=path)
-
-    @staticmethod
-    def grid_stats(arr) -> dict:
-        ok = np.isfinite(arr)
-        return {"valid_cells": int(ok.sum()), "nodata_cells": int((~ok).sum()),
-                "min": float(arr[ok].min()) if ok.any() else float("nan"),
-                "max": float(arr[ok].max()) if ok.any() else float("nan")}
-
-    @staticmethod
-    def input_rows(path, pts, crs_source):
-        """Report rows describing the cloud and the points used."""
-        classes = ", ".join(f"{c}: {n}" for c, n in sorted(pts.class_counts.items()))
-        return [("input", os.path.basename(path)), ("points in file", pts.n_total),
-                ("classes present (class: count)", classes), ("points used", len(pts)),
-                ("classes used", ", ".join(map(str, pts.classes)) or T("all")),
-                ("CRS source", T(crs_source))] + (
-                    [("Linear units", units_note(pts.units))]
-                    if units_note(pts.units) is not None else [])
+    grid_stats = staticmethod(core_dtm.grid_stats)
 
 
 class IdwDtmAlgorithm(_GridAlgorithm):
@@ -322,7 +312,7 @@ class IdwDtmAlgorithm(_GridAlgorithm):
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_input_params()
-        self.add_number(self.POWER, self.tr("Power p"), 2.0, minimum=0.0)
+        self.add_number(self.POWER, self.tr("Power p"), core_idw.DEFAULT_POWER, minimum=0.0)
         self.add_number(self.NEIGHBOURS, self.tr("Neighbours (0 = all within radius)"), 12,
                         minimum=0, integer=True)
         self.add_number(self.RADIUS, self.tr("Search radius (m, 0 = unlimited)"), 0.0,
@@ -338,45 +328,15 @@ class IdwDtmAlgorithm(_GridAlgorithm):
             self.addOutput(QgsProcessingOutputNumber(name, label))
 
     def process(self, parameters, context, feedback):
-        t0 = time.time()
-        path = self.las_input_path(parameters, context, self.INPUT)
-        power = self.parameterAsDouble(parameters, self.POWER, context)
-        k = self.parameterAsInt(parameters, self.NEIGHBOURS, context)
         radius = self.parameterAsDouble(parameters, self.RADIUS, context)
-        minp = self.parameterAsInt(parameters, self.MIN_POINTS, context)
-        fill, maxd = self.gap_options(parameters, context)
+        method = core_dtm.IdwMethod(core_dtm.IdwOptions(
+            power=self.parameterAsDouble(parameters, self.POWER, context),
+            neighbours=self.parameterAsInt(parameters, self.NEIGHBOURS, context),
+            radius=radius if radius > 0 else None,
+            min_points=self.parameterAsInt(parameters, self.MIN_POINTS, context)))
+        path = self.las_input_path(parameters, context, self.INPUT)
         with self.contract(parameters, context, [self.OUTPUT], {self.INPUT: path}) as out:
-            path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
-            cb = self.core_callbacks(feedback)
-            dtm = core_idw.idw_grid(pts.x, pts.y, pts.z, grid, power=power, max_points=k,
-                                    radius=radius if radius > 0 else None, min_points=minp,
-                                    max_distance=maxd, fill=fill, **cb)
-            meta = {"method": f"IDW p={power:g} k={k} radius={radius:g} min_points={minp}",
-                    "source": os.path.basename(path)}
-            stats = self.grid_stats(dtm)
-            self.refuse_empty_grid(stats, len(pts), path)
-            write_grid(out.path(self.OUTPUT), dtm, grid, metadata=meta, band_name="DTM (IDW)",
-                       units=pts.units)
-            results = {self.OUTPUT: out.final(self.OUTPUT), "N_POINTS": len(pts),
-                       "VALID_CELLS": stats["valid_cells"],
-                       "NODATA_CELLS": stats["nodata_cells"]}
-            if out.requested(self.OUTPUT_HTML):
-                method = [("method", T("inverse distance weighting (Shepard 1968)")),
-                          ("power", power), ("neighbours", k),
-                          ("search radius", radius if radius > 0 else T("unlimited"),
-                           "m" if radius > 0 else ""),
-                          ("minimum points", minp),
-                          ("gaps", T("filled") if fill else (maxd or T("automatic")),
-                           "m" if maxd and not fill else "")]
-                rep = terrain_report.grid_report(
-                    "IDW DTM report", method_rows=method,
-                    input_rows=self.input_rows(path, pts, crs_source), grid=grid, data=dtm,
-                    stats=stats, elapsed=time.time() - t0,
-                    citation="Shepard (1968) inverse distance weighting, semantics of "
-                             "gdal_grid -a invdistnn.",
-                    tr=self.tr_report(parameters, context))
-                out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters, context))
-                results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
+            _, results = self.run_method(parameters, context, feedback, method, out)
         return results
 
 
@@ -519,78 +479,34 @@ class KrigingDtmAlgorithm(_GridAlgorithm):
             self.addOutput(QgsProcessingOutputNumber(name, label))
 
     def process(self, parameters, context, feedback):
-        t0 = time.time()
         path = self.las_input_path(parameters, context, self.INPUT)
-        drift = "linear" if self.parameterAsEnum(parameters, self.KRIGING_TYPE, context) \
-            else "none"
         model = core_kriging.MODELS[self.parameterAsEnum(parameters, self.VARIOGRAM, context)]
-        vario = self.variogram(parameters, context, model)
-        k = self.parameterAsInt(parameters, self.NEIGHBOURS, context)
-        fit_points = self.parameterAsInt(parameters, self.FIT_POINTS, context)
-        nlags = self.parameterAsInt(parameters, self.NLAGS, context)
         max_lag = self.parameterAsDouble(parameters, self.MAX_LAG, context)
-        cv_points = self.parameterAsInt(parameters, self.CV_POINTS, context)
-        seed = self.parameterAsInt(parameters, self.SEED, context)
-        as_std = self.parameterAsBool(parameters, self.VARIANCE_AS_STD, context)
-        fill, maxd = self.gap_options(parameters, context)
+        method = core_dtm.KrigingMethod(core_dtm.KrigingOptions(
+            model=model, variogram=self.variogram(parameters, context, model),
+            drift="linear" if self.parameterAsEnum(parameters, self.KRIGING_TYPE, context)
+            else "none",
+            neighbours=self.parameterAsInt(parameters, self.NEIGHBOURS, context),
+            fit_points=self.parameterAsInt(parameters, self.FIT_POINTS, context),
+            nlags=self.parameterAsInt(parameters, self.NLAGS, context),
+            max_lag=max_lag if max_lag > 0 else "auto",
+            cv_points=self.parameterAsInt(parameters, self.CV_POINTS, context),
+            seed=self.parameterAsInt(parameters, self.SEED, context)))
+        extra = "std" if self.parameterAsBool(parameters, self.VARIANCE_AS_STD, context) \
+            else "variance"
         with self.contract(parameters, context, [self.OUTPUT, self.OUTPUT_VARIANCE],
                            {self.INPUT: path}) as out:
-            path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
-            cb = self.core_callbacks(feedback)
-            res = core_kriging.kriging_grid(
-                pts.x, pts.y, pts.z, grid, model=model, variogram=vario, drift=drift,
-                n_closest=k, fit_points=fit_points, nlags=nlags,
-                max_lag=max_lag if max_lag > 0 else "auto", max_distance=maxd, fill=fill,
-                cv_points=cv_points, seed=seed, **cb)
-            v = res.variogram
-            vd = v.as_dict()
-            feedback.pushInfo(self.tr("Variogram: {}").format(
-                ", ".join(f"{a} {b}" for a, b in core_kriging.describe_variogram(v))))
-            kind = "ordinary" if drift == "none" else "universal (linear drift)"
-            meta = {"method": f"{kind} kriging, {model} variogram, {k} neighbours",
-                    "variogram": "; ".join(f"{a}={b}" for a, b in
-                                           core_kriging.describe_variogram(v)),
-                    "source": os.path.basename(path)}
-            write_grid(out.path(self.OUTPUT), res.z, grid, metadata=meta,
-                       band_name="DTM (kriging)", units=pts.units)
-            results = {self.OUTPUT: out.final(self.OUTPUT)}
-            if out.requested(self.OUTPUT_VARIANCE):
-                data = res.std if as_std else res.variance
-                write_grid(out.path(self.OUTPUT_VARIANCE), data, grid, metadata=meta,
-                           band_name="kriging standard deviation" if as_std
-                           else "kriging variance", units=pts.units,
-                           quantity="height" if as_std else "height2")
-                results[self.OUTPUT_VARIANCE] = out.final(self.OUTPUT_VARIANCE)
-            stats = self.grid_stats(res.z)
-            cv = res.cross_validation or {}
-            nan = float("nan")
-            results.update(NUGGET=vd.get("nugget", nan), SILL=vd.get("sill", nan),
-                           RANGE=vd.get("range", nan), N_POINTS=res.n_points,
-                           VALID_CELLS=stats["valid_cells"], CV_ME=cv.get("me", nan),
-                           CV_RMSE=cv.get("rmse", nan), CV_MSE=cv.get("mse_std", nan))
-            if out.requested(self.OUTPUT_HTML):
-                rep = self.report(res, kind, path, pts, crs_source, grid, stats,
-                                  time.time() - t0, fill, maxd,
-                                  self.tr_report(parameters, context))
-                out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters, context))
-                results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
+            run, results = self.run_method(parameters, context, feedback, method, out,
+                                           {self.OUTPUT_VARIANCE: extra})
+        res = run.outcome.details
+        feedback.pushInfo(self.tr("Variogram: {}").format(
+            ", ".join(f"{a} {b}" for a, b in core_kriging.describe_variogram(res.variogram))))
+        vd, cv, nan = res.variogram.as_dict(), res.cross_validation or {}, float("nan")
+        results.pop("NODATA_CELLS")
+        results.update(NUGGET=vd.get("nugget", nan), SILL=vd.get("sill", nan),
+                       RANGE=vd.get("range", nan), CV_ME=cv.get("me", nan),
+                       CV_RMSE=cv.get("rmse", nan), CV_MSE=cv.get("mse_std", nan))
         return results
-
-    def report(self, res, kind, path, pts, crs_source, grid, stats, elapsed, fill, maxd,
-               tr):
-        method = [("method", T(kind + " kriging")), ("variogram model", res.variogram.model),
-                  ("neighbours per cell", res.n_closest),
-                  ("gaps", T("filled") if fill else res.max_distance,
-                   "" if fill else "m")]
-        inputs = self.input_rows(path, pts, crs_source) + [
-            ("duplicate x,y merged", res.n_merged)]
-        rep = terrain_report.grid_report(
-            "Kriging DTM report", method_rows=method, input_rows=inputs, grid=grid,
-            data=res.z, stats=stats, elapsed=elapsed,
-            citation="Local-neighbourhood kriging with a variogram fitted by PyKrige's "
-                     "estimator on a random subsample; Matheron (1963), Cressie (1993).",
-            tr=tr)
-        return terrain_report.kriging_sections(rep, res, tr=tr)
 
 
 class DsmAlgorithm(_GridAlgorithm):
@@ -737,32 +653,10 @@ class DsmAlgorithm(_GridAlgorithm):
                 results[self.OUTPUT_NDSM] = out.final(self.OUTPUT_NDSM)
                 results["NDSM_MAX"] = self.grid_stats(nd)["max"]
             if out.requested(self.OUTPUT_HTML):
-                rep = self.report(path, info, grid, crs_source, first, classes, excl,
-                                  stats, surf, nd, clamp, time.time() - t0,
-                                  self.tr_report(parameters, context))
+                rep = core_dsm.dsm_report(
+                    os.path.basename(path), info.count, grid, crs_source, surf, nd,
+                    first_only=first, classes=classes, excluded=excl, clamp=clamp,
+                    elapsed=time.time() - t0, lang=self.report_lang(parameters, context))
                 out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters, context))
                 results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         return results
-
-    def report(self, path, info, grid, crs_source, first, classes, excl, stats, surf, nd,
-               clamp, elapsed, tr):
-        method = [("method", T("highest return per cell")),
-                  ("first returns only", T("yes") if first else T("no")),
-                  ("classes used", ", ".join(map(str, classes)) or T("all")),
-                  ("excluded classes", ", ".join(map(str, excl)) or T("none"))]
-        inputs = [("input", os.path.basename(path)), ("points in file", info.count),
-                  ("grid source", T(crs_source))]
-        rep = terrain_report.grid_report(
-            "DSM / nDSM report", method_rows=method, input_rows=inputs, grid=grid,
-            data=surf, stats=stats, elapsed=elapsed,
-            citation="Digital surface model: highest return per cell; nDSM = DSM − DTM.",
-            tr=tr)
-        if nd is not None:
-            nd_stats = self.grid_stats(nd)
-            nd_valid = nd[np.isfinite(nd)]
-            rep.section("nDSM").add(terrain_report.KeyValues([
-                ("cells with a value", nd_stats["valid_cells"]),
-                ("max height", nd_stats["max"], "m"),
-                ("cells ≥ 2 m", int((nd_valid >= 2).sum())),
-                ("negative heights clamped", T("yes") if clamp else T("no"))]))
-        return rep

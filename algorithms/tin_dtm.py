@@ -1,18 +1,13 @@
 """TIN DTM: Delaunay linear interpolation of the ground points (core.terrain.tin)."""
 from __future__ import annotations
 
-import os
-
 from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterRasterDestination,
 )
 
-from ..core.io.points import write_grid
-from ..core.lidar.qa import check_projected
-from ..core.terrain import tin as core_tin
-from ..core.terrain.report import tin_report
+from ..core.terrain import dtm as core_dtm
 from .helptext import build_help
 from .terrain import _GridAlgorithm
 
@@ -71,28 +66,9 @@ class TinDtmAlgorithm(_GridAlgorithm):
     def process(self, parameters, context, feedback):
         path = self.las_input_path(parameters, context, self.INPUT)
         max_edge = self.parameterAsDouble(parameters, self.MAX_EDGE, context)
-        fill = self.parameterAsBool(parameters, self.FILL_GAPS, context)
+        method = core_dtm.TinMethod(core_dtm.TinOptions(
+            max_edge=max_edge if max_edge > 0 else None))
         with self.contract(parameters, context, [self.OUTPUT], {self.INPUT: path}) as out:
-            path, pts, grid, crs_source = self.load_points(parameters, context, feedback)
-            check_projected(pts.x, pts.y)
-            res = core_tin.tin_grid(pts.x, pts.y, pts.z, grid,
-                                    max_edge=max_edge if max_edge > 0 else None, fill=fill,
-                                    **self.core_callbacks(feedback))
-            meta = {"method": "TIN linear (Delaunay) "
-                    + ("gaps filled" if fill else f"max edge {res.max_edge:g} m"),
-                    "source": os.path.basename(path)}
-            stats = self.grid_stats(res.z)
-            self.refuse_empty_grid(stats, res.n_points, path)
-            write_grid(out.path(self.OUTPUT), res.z, grid, metadata=meta,
-                       band_name="DTM (TIN)", units=pts.units)
-            if out.requested(self.OUTPUT_HTML):
-                out.write_text(self.OUTPUT_HTML, self.render_report(
-                    tin_report(res, os.path.basename(path), pts.n_total, grid,
-                               units=pts.units), parameters,
-                    context))
-        results = {self.OUTPUT: out.final(self.OUTPUT), "N_POINTS": res.n_points,
-                   "N_TRIANGLES": res.n_triangles, "VALID_CELLS": stats["valid_cells"],
-                   "NODATA_CELLS": stats["nodata_cells"]}
-        if out.requested(self.OUTPUT_HTML):
-            results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
+            run, results = self.run_method(parameters, context, feedback, method, out)
+        results["N_TRIANGLES"] = run.outcome.details.n_triangles
         return results

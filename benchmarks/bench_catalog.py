@@ -41,10 +41,30 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "tests"))
 import conftest  # noqa: E402,F401  (imports the checkout as geomatics_toolbox)
 
-from geomatics_toolbox.core.io.las import iter_las_chunks, read_las  # noqa: E402
+from geomatics_toolbox.core.io.las import (  # noqa: E402
+    PointData,  # noqa: E402
+    iter_las_chunks,
+    read_las,
+)
 from geomatics_toolbox.core.io.raster import read_raster  # noqa: E402
 from geomatics_toolbox.core.lidar import catalog as cc  # noqa: E402
-from geomatics_toolbox.core.lidar._chunks import DTM_METHODS, GROUND_FILTERS, snap_grid  # noqa: E402
+from geomatics_toolbox.core.lidar._chunks import (  # noqa: E402
+    DTM_METHODS,
+    GROUND_FILTERS,
+    chunk_dtm,
+    snap_grid,
+)
+from geomatics_toolbox.core.lidar.filters import (  # noqa: E402
+    classify_points,
+    default_selection,
+    ground_filter,
+)
+
+
+def _classify(key, x, y, z, c0, origin):
+    """The catalog chunks' call on the merged cloud (same filter, selection, origin)."""
+    return classify_points(PointData(x, y, z, {"classification": c0}), ground_filter(key),
+                           default_selection(key), origin=origin)
 from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile  # noqa: E402
 
 DENSITY = 5.0
@@ -121,10 +141,10 @@ def merged_run(cat, args, origin):
     z = np.concatenate([p.z for p in parts])
     c0 = np.concatenate([p["classification"] for p in parts])
     del parts
-    cls = GROUND_FILTERS[args.filter].func(x, y, z, {"classification": c0}, origin)
+    cls = _classify(args.filter, x, y, z, c0, origin)
     g = cls == 2
     grid = snap_grid(cat.extent, origin, args.cell)
-    ref = DTM_METHODS[args.dtm].func(x[g], y[g], z[g], grid, cat.default_max_distance())
+    ref = chunk_dtm(args.dtm, x[g], y[g], z[g], grid, cat.default_max_distance())
     secs = time.perf_counter() - t0
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
     return ref, secs, peak
@@ -180,10 +200,10 @@ def band_seam_check(cat, mosaic_path, args, origin, n_side, side):
     diffs = []
     for (axis, pos, lo, hi), box, parts in zip(edges, boxes, bands):
         x, y, z, c0 = (np.concatenate([p[k] for p in parts]) for k in range(4))
-        cls = GROUND_FILTERS[args.filter].func(x, y, z, {"classification": c0}, origin)
+        cls = _classify(args.filter, x, y, z, c0, origin)
         g = cls == 2
         grid = snap_grid(box, origin, args.cell)
-        ref = DTM_METHODS[args.dtm].func(x[g], y[g], z[g], grid, md)
+        ref = chunk_dtm(args.dtm, x[g], y[g], z[g], grid, md)
         cx, cy = (v.reshape(grid.shape) for v in grid.block_centers(0, grid.nrows))
         across = cx - pos if axis == 0 else cy - pos
         along = cy if axis == 0 else cx

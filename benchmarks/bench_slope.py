@@ -52,6 +52,7 @@ def isprs_rows(quick: bool):
     from geomatics_toolbox.core.io.las import read_las
     from geomatics_toolbox.core.lidar import pipeline as sp
     from geomatics_toolbox.core.lidar import slope as sf
+    from geomatics_toolbox.core.lidar import sweep as slope_sweep
     from geomatics_toolbox.core.lidar.accuracy import assess
 
     if not (ISPRS / "samp11.laz").exists():
@@ -79,9 +80,10 @@ def isprs_rows(quick: bool):
             out[key] = dict(acc.as_dict(), seconds=time.perf_counter() - t)
         for mode in ("exact", "adaptive"):
             t = time.perf_counter()
-            sw = sf.threshold_sweep(pd.x, pd.y, pd.z, ref, slopes=slopes, radii=radii,
-                                    height_tolerance=hs, classify=sel.candidates,
-                                    neighbours=sel.candidates, mode=mode)
+            sw = slope_sweep.threshold_sweep(pd.x, pd.y, pd.z, ref, slopes=slopes,
+                                             radii=radii, height_tolerance=hs,
+                                             classify=sel.candidates,
+                                             neighbours=sel.candidates, mode=mode)
             b = sw.best
             out[f"best_{mode}"] = dict(b.as_dict(), seconds=time.perf_counter() - t,
                                        settings=len(sw.rows))
@@ -106,6 +108,8 @@ _CHILD = r"""
 import json, os, sys
 import numpy as np
 from geomatics_toolbox.core.lidar import slope as sf
+from geomatics_toolbox.core.lidar import sweep
+from geomatics_toolbox.synthetic import oracles
 x = np.load({xyz!r} + ".x.npy"); y = np.load({xyz!r} + ".y.npy"); z = np.load({xyz!r} + ".z.npy")
 sel = None
 if {window!r}:
@@ -117,7 +121,7 @@ from _probe import Probe
 probe = Probe()
 if {what!r} == "sweep":
     ref = np.load({xyz!r} + ".g.npy")
-    sw = sf.threshold_sweep(x, y, z, ref, slopes=list(range(20, 71, 2)), radii=[{radius}],
+    sw = sweep.threshold_sweep(x, y, z, ref, slopes=list(range(20, 71, 2)), radii=[{radius}],
                             height_tolerance={h})
     labels = sw.best_ground
     stats = dict(settings=len(sw.rows), best_slope=sw.best.slope, best_total=sw.best.total)
@@ -126,7 +130,7 @@ elif {what!r} == "fast":
     labels = res.ground
     stats = res.stats
 else:
-    s = sf.max_slope_reference(x, y, z, radius={radius}, height_tolerance={h})
+    s = oracles.max_slope_reference(x, y, z, radius={radius}, height_tolerance={h})
     labels = ~(s > np.tan(np.radians({slope})))
     stats = {{}}
 measured = probe.result()

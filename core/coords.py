@@ -56,20 +56,22 @@ def as_xyz(x, y, z, *, nonfinite: str = "raise", empty_error: Optional[str] = No
         no points (with ``empty_error``); :class:`~.errors.InputError` for degrees.
     """
     if nonfinite not in ("raise", "drop"):
-        raise ValueError(f"nonfinite must be 'raise' or 'drop', got {nonfinite!r}.")
+        raise InputError("nonfinite must be 'raise' or 'drop', got {value}.",
+                         value=repr(nonfinite))
     x, y, z = (np.ascontiguousarray(v, dtype=np.float64).ravel() for v in (x, y, z))
     if not (x.size == y.size == z.size):
-        raise ValueError(f"x, y and z must have the same length (got {x.size}, {y.size}, "
-                         f"{z.size}).")
+        raise InputError("x, y and z must have the same length (got {nx}, {ny}, {nz}).",
+                         nx=int(x.size), ny=int(y.size), nz=int(z.size))
     ok = np.isfinite(x) & np.isfinite(y) & np.isfinite(z)
     if not ok.all():
         if nonfinite == "raise":
-            raise ValueError(
-                f"{int(np.count_nonzero(~ok))} point(s) have non-finite (NaN or infinite) "
-                "coordinates; remove or repair them (e.g. PDAL filters.range) first.")
+            raise InputError(
+                "{n} point(s) have non-finite (NaN or infinite) "
+                "coordinates; remove or repair them (e.g. PDAL filters.range) first.",
+                n=int(np.count_nonzero(~ok)))
         x, y, z = x[ok], y[ok], z[ok]
     if empty_error is not None and x.size == 0:
-        raise ValueError(empty_error)
+        raise InputError(empty_error)
     if projected:
         check_projected(x, y, z)
     return x, y, z

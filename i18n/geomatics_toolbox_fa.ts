@@ -377,6 +377,10 @@
             <source>DTM mosaic (VRT)</source>
             <translation>موزاییک مدل رقومی زمین (VRT)</translation>
         </message>
+        <message>
+            <source>Ground filter (progressive TIN densification)</source>
+            <translation>فیلتر زمین (متراکم‌سازی تدریجی TIN)</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>
@@ -915,6 +919,14 @@
             <source>Leave-one-out RMS_T of order {}</source>
             <translation>RMS_T به روش یکی‌کنارگذاری برای مرتبهٔ {}</translation>
         </message>
+        <message>
+            <source>Order {0}: RMS_T = {1} {2} (divisor n), {3} (divisor n − N); {4}/{5} within RMS_T; verdict {6}.</source>
+            <translation>درجهٔ {0}: RMS_T = {1} {2} (مقسوم‌علیه n)، {3} (مقسوم‌علیه n − N)؛ {4}/{5} درون RMS_T؛ داوری {6}.</translation>
+        </message>
+        <message>
+            <source>Recommendation: {0}</source>
+            <translation>توصیه: {0}</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsAlgorithm</name>
@@ -1348,6 +1360,66 @@
         <message>
             <source>LiDAR to DTM with accuracy</source>
             <translation>از LiDAR تا DTM همراه با دقت</translation>
+        </message>
+        <message>
+            <source>Point cloud (LAS/LAZ)</source>
+            <translation>ابر نقاط (LAS/LAZ)</translation>
+        </message>
+        <message>
+            <source>DTM cell size (m)</source>
+            <translation>اندازهٔ سلول مدل زمین (متر)</translation>
+        </message>
+        <message>
+            <source>IDW power</source>
+            <translation>توان IDW</translation>
+        </message>
+        <message>
+            <source>Fill data gaps in the DTM (interpolate far from ground points)</source>
+            <translation>پر کردن شکاف‌های داده در DTM (درون‌یابی دور از نقاط زمین)</translation>
+        </message>
+        <message>
+            <source>CRS override for a cloud without a CRS record</source>
+            <translation>سیستم مختصات جایگزین برای ابری بدون رکورد سیستم مختصات</translation>
+        </message>
+        <message>
+            <source>Check points (point layer)</source>
+            <translation>نقاط چک (لایهٔ نقطه‌ای)</translation>
+        </message>
+        <message>
+            <source>Check points (CSV/TXT file: id,x,y,z)</source>
+            <translation>نقاط چک (فایل CSV/TXT: ‏id,x,y,z)</translation>
+        </message>
+        <message>
+            <source>Classified point cloud</source>
+            <translation>ابر نقاط طبقه‌بندی‌شده</translation>
+        </message>
+        <message>
+            <source>Ground filter report</source>
+            <translation>گزارش فیلتر زمین</translation>
+        </message>
+        <message>
+            <source>DTM</source>
+            <translation>مدل رقومی زمین (DTM)</translation>
+        </message>
+        <message>
+            <source>DTM report</source>
+            <translation>گزارش مدل رقومی زمین</translation>
+        </message>
+        <message>
+            <source>Check-point residuals</source>
+            <translation>باقیمانده‌های نقاط چک</translation>
+        </message>
+        <message>
+            <source>DTM accuracy report</source>
+            <translation>گزارش دقت مدل رقومی زمین</translation>
+        </message>
+        <message>
+            <source>The editable model of 'LiDAR to DTM with accuracy': the same steps, defaults and results; open it in the Model Designer to change a step.</source>
+            <translation>مدل ویرایش‌پذیرِ 'از LiDAR تا DTM همراه با دقت': همان گام‌ها، همان پیش‌فرض‌ها و همان نتایج؛ برای تغییر یک گام آن را در طراح مدل باز کنید.</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Ground filter (recommended) → DTM by IDW → DTM accuracy against check points, as a Processing model you can open and change in the Model Designer. With its defaults it gives the same classified cloud, DTM and RMSE, bit for bit, as the one-step algorithm 'LiDAR to DTM with accuracy' and as the three algorithms run one after another. Its steps write temporary files and a last step publishes them all or none: when a step fails, nothing is left at any destination.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;: the point cloud (LAS/LAZ, projected CRS), the DTM cell size (m, default 1), the IDW power (default 2), fill data gaps (default no), a CRS for a cloud without one, and the check points (a point layer or a CSV/TXT file id,x,y,z).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified point cloud, DTM, DTM accuracy report; optionally the ground filter report, the DTM report and the check-point residuals.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;فیلتر زمین (پیشنهادی) ← مدل رقومی زمین با IDW ← دقت مدل رقومی زمین در برابر نقاط چک، به‌صورت یک مدل پردازش که می‌توانید آن را در طراح مدل باز کنید و تغییر دهید. با پیش‌فرض‌هایش همان ابر نقاط طبقه‌بندی‌شده، همان مدل رقومی زمین و همان RMSE را، بیت به بیت، می‌دهد که الگوریتم تک‌گامی 'از LiDAR تا DTM همراه با دقت' و سه الگوریتمِ اجراشده پشت سر هم می‌دهند. گام‌هایش فایل‌های موقت می‌نویسند و گامی پایانی همه را با هم منتشر می‌کند یا هیچ‌کدام را: اگر گامی شکست بخورد، در هیچ مقصدی چیزی نمی‌ماند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;: ابر نقاط (LAS/LAZ، سیستم مختصات تصویری)، اندازهٔ سلول DTM (متر، پیش‌فرض 1)، توان IDW (پیش‌فرض 2)، پر کردن شکاف‌های داده (پیش‌فرض خیر)، سیستم مختصات برای ابری که ندارد، و نقاط چک (لایهٔ نقطه‌ای یا فایل CSV/TXT ‏id,x,y,z).&lt;/p&gt;&lt;p&gt;&lt;b&gt;خروجی‌ها&lt;/b&gt;: ابر نقاط طبقه‌بندی‌شده، مدل رقومی زمین، گزارش دقت مدل رقومی زمین؛ و به‌اختیار گزارش فیلتر زمین، گزارش مدل رقومی زمین و باقیمانده‌های نقاط چک.&lt;/p&gt;</translation>
         </message>
     </context>
     <context>
@@ -2239,16 +2311,16 @@
             <translation>در سامانهٔ مختصات تصویری (متر).</translation>
         </message>
         <message>
-            <source>Power 3 with 12 neighbours is the seed paper's best setting.</source>
-            <translation>توان 3 با 12 همسایه بهترین تنظیم مقالهٔ مرجع است.</translation>
-        </message>
-        <message>
             <source>Give the layer or the file; duplicates and points outside the cloud's extent are refused before anything is written.</source>
             <translation>لایه یا فایل را بدهید؛ نقاط تکراری و نقاطِ بیرون از گسترهٔ ابر پیش از نوشتن هر چیزی رد می‌شوند.</translation>
         </message>
         <message>
             <source>Classified by the recommended ground filter (the improved least-squares filter where it is not installed).</source>
             <translation>کلاس‌بندی‌شده با فیلتر زمین توصیه‌شده (یا فیلتر کمترین مربعات بهبودیافته هرجا نصب نباشد).</translation>
+        </message>
+        <message>
+            <source>The seed paper found 3 best (RMSE 0.204 m at 62 GNSS points).</source>
+            <translation>مقالهٔ مرجع مقدار 3 را بهترین یافت (RMSE = 0.204 m در 62 نقطهٔ GNSS).</translation>
         </message>
     </context>
     <context>
@@ -2756,6 +2828,10 @@
             <source>GCP rectification report</source>
             <translation>گزارش تصحیح با نقاط کنترل زمینی</translation>
         </message>
+        <message>
+            <source>Wrote {0}: {1} × {2} px at {3} units/px, resampling {4}.</source>
+            <translation>{0} نوشته شد: {1} × {2} پیکسل با {3} یکا/پیکسل، بازنمونه‌برداری {4}.</translation>
+        </message>
     </context>
     <context>
         <name>SlopeGroundFilterAlgorithm</name>
@@ -3239,6 +3315,18 @@
             <source>Recommended transformation</source>
             <translation>تبدیل پیشنهادی</translation>
         </message>
+        <message>
+            <source>{0}: fit RMS_T = {1} {2}, {3} RMS_T = {4} {2} (n = {5}); verdict {6}.</source>
+            <translation>{0}: RMS_T برازش = {1} {2}، {3} RMS_T = {4} {2} ‏(n = {5})؛ داوری {6}.</translation>
+        </message>
+        <message>
+            <source>Recommended transformation: {0}</source>
+            <translation>تبدیل پیشنهادی: {0}</translation>
+        </message>
+        <message>
+            <source>Refinement dropped GCP {0} (residual {1} {2}; {3} left).</source>
+            <translation>پالایش نقطهٔ کنترل {0} را کنار گذاشت (باقیمانده {1} {2}؛ {3} مانده).</translation>
+        </message>
     </context>
     <context>
         <name>_GridAlgorithm</name>
@@ -3279,10 +3367,6 @@
             <translation>ابر نقاط رکورد سیستم مختصات ندارد و سیستم مختصاتی هم داده نشده است؛ پارامتر CRS را تنظیم کنید (مثلاً EPSG:32632). هیچ خروجی‌ای نوشته نشد.</translation>
         </message>
         <message>
-            <source>Cell size must be &gt; 0 (metres); give e.g. 1.0. No output was written.</source>
-            <translation>اندازهٔ سلول باید &gt; 0 (متر) باشد؛ مثلاً 1.0 بدهید. هیچ خروجی‌ای نوشته نشد.</translation>
-        </message>
-        <message>
             <source>Reading points of class(es) {} from {}</source>
             <translation>در حال خواندن نقاط کلاس(های) {} از {}</translation>
         </message>
@@ -3313,6 +3397,10 @@
         <message>
             <source>GeoTIFF (float32, nodata −9999) in the cloud's CRS.</source>
             <translation>فایل GeoTIFF (float32، مقدار بدون داده ‎−9999‎) در سامانهٔ مختصات ابر نقاط.</translation>
+        </message>
+        <message>
+            <source>all</source>
+            <translation>همه</translation>
         </message>
     </context>
     <context>

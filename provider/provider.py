@@ -4,7 +4,7 @@ from __future__ import annotations
 import os
 
 from qgis.core import QgsProcessingProvider
-from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
 ICON_PATH = os.path.join(os.path.dirname(__file__), "icons", "geomatics.svg")
@@ -67,6 +67,61 @@ def model_titles() -> dict:
                                                        "LiDAR to DTM with accuracy")}
 
 
+#: labels of the shipped models' inputs and outputs (English, as in the .model3 files)
+MODEL_LABELS = (
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "Point cloud (LAS/LAZ)"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "DTM cell size (m)"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "IDW power"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider",
+                      "Fill data gaps in the DTM (interpolate far from ground points)"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "CRS override for a cloud without a CRS record"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "Check points (point layer)"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "Check points (CSV/TXT file: id,x,y,z)"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "Classified point cloud"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "Ground filter report"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "DTM"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "DTM report"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "Check-point residuals"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "DTM accuracy report"),
+)
+
+
+#: description and help of the shipped model lidar_to_dtm (English; translated on use)
+LIDAR_TO_DTM_TEXTS = (
+    QT_TRANSLATE_NOOP(
+        "GeomaticsProvider",
+        "The editable model of 'LiDAR to DTM with accuracy': the same steps, defaults "
+        "and results; open it in the Model Designer to change a step."),
+    QT_TRANSLATE_NOOP(
+        "GeomaticsProvider",
+        "<p>Ground filter (recommended) → DTM by IDW → DTM accuracy against check "
+        "points, as a Processing model you can open and change in the Model Designer. "
+        "With its defaults it gives the same classified cloud, DTM and RMSE, bit for "
+        "bit, as the one-step algorithm 'LiDAR to DTM with accuracy' and as the three "
+        "algorithms run one after another. Its steps write temporary files and a last "
+        "step publishes them all or none: when a step fails, nothing is left at any "
+        "destination.</p><p><b>Parameters</b>: the point cloud (LAS/LAZ, projected "
+        "CRS), the DTM cell size (m, default 1), the IDW power (default 2), fill data "
+        "gaps (default no), a CRS for a cloud without one, and the check points (a "
+        "point layer or a CSV/TXT file id,x,y,z).</p><p><b>Outputs</b>: classified "
+        "point cloud, DTM, DTM accuracy report; optionally the ground filter report, "
+        "the DTM report and the check-point residuals.</p>"),
+)
+
+
+def model_texts() -> dict:
+    """Translated description and help of the shipped models, by model name."""
+    return {"lidar_to_dtm": tuple(
+        QCoreApplication.translate("GeomaticsProvider", text)  # i18n: noop-list
+        for text in LIDAR_TO_DTM_TEXTS)}
+
+
+def model_labels() -> dict:
+    """Translated labels of the shipped models' inputs and outputs, by English label."""
+    return {label: QCoreApplication.translate("GeomaticsProvider", label)  # i18n: noop-list
+            for label in MODEL_LABELS}
+
+
 def shipped_model(path: str):
     """A shipped model with a translated title and group, or None if it cannot load."""
     from qgis.core import QgsProcessingModelAlgorithm
@@ -84,6 +139,16 @@ def shipped_model(path: str):
         def group(self) -> str:
             return _groups().get(self.groupId(), super().group())
 
+        def shortDescription(self) -> str:  # noqa: N802 - QGIS API name
+            return model_texts().get(self.name(), ("", ""))[0] or super().shortDescription()
+
+        def shortHelpString(self) -> str:  # noqa: N802 - QGIS API name
+            text = model_texts().get(self.name(), ("", ""))[1]
+            if not text:
+                return super().shortHelpString()
+            from ..algorithms.helptext import _rtl, right_to_left
+            return right_to_left(text) if _rtl() else text
+
         def createInstance(self):  # noqa: N802 - QGIS API name
             return shipped_model(path)
 
@@ -95,4 +160,11 @@ def shipped_model(path: str):
             return QIcon(self.svgIconPath())
 
     model = ShippedModel()
-    return model if model.fromFile(path) else None
+    if not model.fromFile(path):
+        return None
+    labels = model_labels()       # the labels the user reads, in the interface language
+    for d in model.parameterDefinitions():
+        label = d.description()
+        if label in labels:
+            d.setDescription(labels[label])
+    return model

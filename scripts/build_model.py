@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Build the shipped Processing model ``models/lidar_to_dtm.model3``.
 
-LAS/LAZ → ground filter (the recommended ``geomatics:groundfilter`` when registered,
-else ``geomatics:lsqgroundfilter``) → IDW DTM (``geomatics:idwdtm``, p = 3, 12
-neighbours: the seed paper's best setting) → DTM accuracy against check points
+LAS/LAZ → ground filter (the default of the one filter registry,
+``core.lidar.filters.default_ground_filter``: the recommended ``geomatics:groundfilter``)
+→ IDW DTM (``geomatics:idwdtm`` with its defaults) → DTM accuracy against check points
 (``geomatics:dtmaccuracy``) → publish (``geomatics:publishoutputs``). The first three
 write temporaries; the publish step copies them to the classified cloud, DTM, residual
 layer and report destinations (the model outputs) through one output contract, so a
@@ -45,8 +45,9 @@ FILTERS = {
     "lsq": "geomatics:lsqgroundfilter",
     "slope": "geomatics:slopegroundfilter",
 }
-#: DTM settings exposed as model inputs (IDW child parameter -> model default)
-DTM_SETTINGS = {"CELL_SIZE": 1.0, "POWER": 3.0, "FILL_GAPS": False, "CRS": None}
+#: DTM settings exposed as model inputs (IDW child parameter -> model default; None =
+#: the child's default, so the model equals idwdtm and lidartodtm with their defaults)
+DTM_SETTINGS = {"CELL_SIZE": 1.0, "POWER": None, "FILL_GAPS": False, "CRS": None}
 #: human labels of the model inputs that differ from the child's own label
 LABELS = {"CELL_SIZE": "DTM cell size (m)", "POWER": "IDW power",
           "FILL_GAPS": "Fill data gaps in the DTM (interpolate far from ground points)",
@@ -73,12 +74,14 @@ PUBLISH_PROTECTED = {"INPUT_CLOUD": "INPUT", "INPUT_CHECKPOINTS_CSV": "CHECKPOIN
 
 
 def pick_filter(requested: str = "auto") -> str:
-    """Algorithm id of the ground filter: the recommended one when registered."""
+    """Algorithm id of the ground filter: the filter registry's default when registered."""
     from qgis.core import QgsApplication
     registry = QgsApplication.processingRegistry()
     if requested != "auto":
         return FILTERS[requested]
-    for alg_id in FILTERS.values():
+    from geomatics_toolbox.core.lidar.filters import GROUND_FILTERS, default_ground_filter
+    for alg_id in (f"geomatics:{GROUND_FILTERS[default_ground_filter()].algorithm}",
+                   *FILTERS.values()):
         if registry.algorithmById(alg_id) is not None:
             return alg_id
     raise SystemExit("no geomatics ground filter registered")

@@ -141,6 +141,88 @@ def scan_tr_calls(src: str, rel: str) -> list:
     return problems
 
 
+#: exceptions whose message reaches the user; core raises InputError templates instead
+PLAIN_ERRORS = ("ValueError", "RuntimeError")
+#: feedback calls whose text the user reads in the log
+FEEDBACK = ("pushInfo", "pushWarning", "reportError", "pushCommandInfo", "pushConsoleInfo",
+            "setProgressText")
+#: per-file counts of English-only messages not converted yet (a ratchet: may only fall)
+MESSAGE_BASELINE = ROOT / "scripts" / "message_baseline.json"
+
+
+def _is_tr(node) -> bool:
+    """``self.tr(...)``/``translate(...)``, or ``.format(...)`` of one."""
+    if not isinstance(node, ast.Call):
+        return False
+    name = getattr(node.func, "attr", None) or getattr(node.func, "id", None)
+    if name in ("tr", "translate"):
+        return True
+    return name == "format" and _is_tr(getattr(node.func, "value", None))
+
+
+def _english(node) -> bool:
+    """A message argument that is English text: a literal, an f-string, a + or a
+    ``.format`` of a literal (a variable or a call is judged where it is built)."""
+    if _literal(node) is not None or isinstance(node, (ast.JoinedStr, ast.BinOp)):
+        return True
+    if isinstance(node, ast.Call) and getattr(node.func, "attr", None) == "format":
+        return _english(node.func.value)
+    return False
+
+
+def scan_messages(src: str, rel: str) -> list:
+    """English-only messages of one file: ``raise ValueError/RuntimeError("...")`` with a
+    message (core and algorithms), and literal English in ``algorithms/`` raised as
+    ``QgsProcessingException`` or written to the log (``feedback.pushInfo("...")``)."""
+    problems, lines = [], src.splitlines()
+
+    def marked(node) -> bool:
+        """``# i18n: data`` (numbers, ids) or ``# i18n: internal`` (a programming error
+        no input can cause) on the statement's first or last line."""
+        ends = (node.lineno, getattr(node, "end_lineno", node.lineno))
+        return any(tag in lines[n - 1] for n in ends
+                   for tag in ("# i18n: data", "# i18n: internal"))
+
+    for node in ast.walk(ast.parse(src)):
+        if isinstance(node, (ast.Raise, ast.Call)) and marked(node):
+            continue
+        if isinstance(node, ast.Raise) and isinstance(node.exc, ast.Call):
+            name = getattr(node.exc.func, "id", None) or getattr(node.exc.func, "attr", None)
+            args = node.exc.args
+            if name in PLAIN_ERRORS and args and not _is_tr(args[0]):
+                problems.append(f"{rel}:{node.lineno}: raise {name}(...) with a message the "
+                                "user reads in English: raise InputError(\"template "
+                                "{field}\", field=value) with ar/fa in i18n/strings/")
+            elif (name == "QgsProcessingException" and rel.startswith("algorithms/")
+                  and args and _english(args[0]) and not _is_tr(args[0])):
+                problems.append(f"{rel}:{node.lineno}: QgsProcessingException with literal "
+                                "English: use self.tr(...) or an InputError template")
+        elif (isinstance(node, ast.Call) and rel.startswith("algorithms/")
+              and getattr(node.func, "attr", None) in FEEDBACK and node.args
+              and _english(node.args[0]) and not _is_tr(node.args[0])):
+            problems.append(f"{rel}:{node.lineno}: feedback.{node.func.attr}() of literal "
+                            "English: wrap it in self.tr(...)")
+    return problems
+
+
+def message_problems() -> tuple:
+    """``(problems, over)``: every English-only message, and the files whose count rose
+    above the baseline (``scripts/message_baseline.json``)."""
+    per_file, problems = {}, []
+    for rel in sources():
+        if rel.startswith(("core/", "algorithms/")):
+            found = scan_messages((ROOT / rel).read_text(encoding="utf-8"), rel)
+            problems += found
+            if found:
+                per_file[rel] = len(found)
+    baseline = json.loads(MESSAGE_BASELINE.read_text(encoding="utf-8")) \
+        if MESSAGE_BASELINE.exists() else {}
+    over = [f"{rel}: {n} English-only messages (baseline {baseline.get(rel, 0)}); convert "
+            "them to InputError templates / self.tr()" for rel, n in sorted(per_file.items())
+            if n > baseline.get(rel, 0)]
+    return problems, over
+
+
 def fill(dictionary: dict) -> dict:
     """Fill every message of the .ts files from the dictionary; return missing per lang."""
     missing = {}
@@ -185,6 +267,8 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--export", action="store_true")
+    ap.add_argument("--messages", action="store_true",
+                    help="list every English-only message left (core, algorithms)")
     args = ap.parse_args()
     if args.export:
         export_base()
@@ -204,6 +288,12 @@ def main() -> int:
             for t in miss[:50]:
                 print(f"  {templates[t]}: {t!r}", file=sys.stderr)
     for problem in problems + tr_call_problems():
+        bad = True
+        print(problem, file=sys.stderr)
+    english, over = message_problems()
+    if args.messages:
+        print("\n".join(english))
+    for problem in over:
         bad = True
         print(problem, file=sys.stderr)
     for lang, miss in missing.items():

@@ -154,7 +154,7 @@ def build_vrt(vrt_path: str, rasters: Sequence[str], *, cog_path: Optional[str] 
         raise InputError("No tile raster to mosaic (every chunk failed?).")
     vrt = gdal.BuildVRT(os.fspath(vrt_path), [os.fspath(r) for r in rasters])
     if vrt is None:  # pragma: no cover - GDAL raises with UseExceptions
-        raise RuntimeError(f"GDAL could not build {vrt_path}")
+        raise InputError("GDAL could not build {path}.", path=vrt_path)
     vrt.FlushCache()
     if cog_path:
         gdal.Translate(os.fspath(cog_path), vrt, format="COG",

@@ -264,7 +264,7 @@ class OutputContract:
                    or not self._temps[n].exists()]
         if missing:
             self.discard()
-            raise RuntimeError(f"Outputs never written: {', '.join(missing)}.")
+            raise InputError("Outputs never written: {names}.", names=", ".join(missing))
         backups: Dict[Path, Path] = {}
         done = []
         try:

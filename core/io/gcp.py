@@ -150,33 +150,34 @@ def make_gcps(ids, pixel, map_xy, *, enabled=None, role=None, weight=None, crs: 
     n = len(pixel)
     ids = [str(i) for i in (ids if ids is not None else range(1, n + 1))]
     if len(ids) != n or len(map_xy) != n:
-        raise ValueError(f"GCP arrays differ in length: {len(ids)} ids, {n} image and "
-                         f"{len(map_xy)} map coordinates.")
+        raise InputError("GCP arrays differ in length: {ids} ids, {n} image and "
+                         "{m} map coordinates.", ids=len(ids), n=n, m=len(map_xy))
     if n == 0:
-        raise ValueError(f"No ground control points found in {source or 'the input'}; "
-                         "give at least 3 (order 1).")
+        raise InputError("No ground control points found in {source}; "
+                         "give at least 3 (order 1).", source=source or "the input")
     seen, dup = set(), []
     for i in ids:
         if i in seen and i not in dup:
             dup.append(i)
         seen.add(i)
     if dup:
-        raise ValueError(f"Duplicate GCP ids in {source or 'the input'}: {', '.join(dup)}. "
-                         "Each point needs a unique id; rename or remove the duplicates.")
+        raise InputError("Duplicate GCP ids in {source}: {ids}. Each point needs a unique "
+                         "id; rename or remove the duplicates.",
+                         source=source or "the input", ids=", ".join(dup))
     bad = ~(np.isfinite(pixel).all(axis=1) & np.isfinite(map_xy).all(axis=1))
     if bad.any():
-        raise ValueError(f"GCP(s) {', '.join(np.asarray(ids)[bad])} have missing or "
-                         "non-finite coordinates; fix or remove them.")
+        raise InputError("GCP(s) {ids} have missing or non-finite coordinates; fix or "
+                         "remove them.", ids=", ".join(np.asarray(ids)[bad]))
     enabled = np.ones(n, bool) if enabled is None else np.asarray(enabled, bool).ravel()
     role = np.array(["gcp"] * n if role is None else [str(r) for r in role], dtype=object)
     for r in role:
         if r not in ROLES:
-            raise ValueError(f"Unknown GCP role {r!r}; use 'gcp' or 'check'.")
+            raise InputError("Unknown GCP role {role}; use 'gcp' or 'check'.", role=repr(r))
     w = None
     if weight is not None:
         w = np.asarray(weight, float).ravel()
         if (~np.isfinite(w) | (w <= 0)).any():
-            raise ValueError("GCP weights must be positive numbers; fix the weight column.")
+            raise InputError("GCP weights must be positive numbers; fix the weight column.")
     check_distinct_map(ids, map_xy, enabled, source)
     return GCPSet(ids, pixel, map_xy, enabled, role, w, crs or "", source, list(notes or []))
 
@@ -223,11 +224,11 @@ def check_in_image(gcps: GCPSet, width: int, height: int, *, tolerance: float = 
     if out.any():
         items = ", ".join(f"{i} (col {cc:.6g}, row {rr:.6g})" for i, cc, rr in
                           zip(np.asarray(gcps.ids)[out], c[out], r[out]))
-        raise ValueError(
-            f"GCP(s) outside the image ({width} × {height} pixels, columns 0…{width}, rows "
-            f"0…{height} with rows growing downwards): {items}. Check that the GCP file "
+        raise InputError(
+            "GCP(s) outside the image ({width} × {height} pixels, columns 0…{width}, rows "
+            "0…{height} with rows growing downwards): {items}. Check that the GCP file "
             "belongs to this image and its row sign (QGIS .points store minus the row); "
-            "disable or fix these points.")
+            "disable or fix these points.", width=width, height=height, items=items)
 
 
 # ---------------------------------------------------------------------- parsing
@@ -236,8 +237,9 @@ def _num(text, *, where: str, column: str) -> float:
     try:
         v = float(s)
     except ValueError:
-        raise ValueError(f"{where}: column '{column}' must be a number, got {s!r}. "
-                         "Fix the value (use '.' as the decimal separator).") from None
+        raise InputError("{where}: column '{column}' must be a number, got {value}. "
+                         "Fix the value (use '.' as the decimal separator).", where=where,
+                         column=column, value=repr(s)) from None
     return v
 
 
@@ -247,13 +249,14 @@ def _flag(text, *, where: str, column: str) -> bool:
         return True
     if s in _FALSE:
         return False
-    raise ValueError(f"{where}: column '{column}' must be 1/0 (or true/false), got {text!r}.")
+    raise InputError("{where}: column '{column}' must be 1/0 (or true/false), got {value}.",
+                     where=where, column=column, value=repr(text))
 
 
 def _read_text(path) -> str:
     path = os.fspath(path)
     if not os.path.exists(path):
-        raise ValueError(f"GCP file not found: {path}. Check the path.")
+        raise InputError("GCP file not found: {path}. Check the path.", path=path)
     with open(path, "rb") as fh:
         raw = fh.read()
     for enc in ("utf-8-sig", "cp1252"):
@@ -261,7 +264,7 @@ def _read_text(path) -> str:
             return raw.decode(enc)
         except UnicodeDecodeError:
             continue
-    raise ValueError(f"{path} is not a text file.")
+    raise InputError("{path} is not a text file.", path=path)
 
 
 def _crs_line(line: str) -> Optional[str]:
@@ -296,8 +299,8 @@ def read_points(path, *, source_geotransform: Optional[Sequence[float]] = None) 
             crs = c
         i += 1
     if i >= len(lines):
-        raise ValueError(f"{src} holds no GCP rows; save the GCPs again from the "
-                         "Georeferencer.")
+        raise InputError("{path} holds no GCP rows; save the GCPs again from the "
+                         "Georeferencer.", path=src)
     header = lines[i].strip()
     delim = "," if "," in header else "\t"
     cols = [h.strip() for h in header.split(delim)]
@@ -307,16 +310,18 @@ def read_points(path, *, source_geotransform: Optional[Sequence[float]] = None) 
         if low[2:4] == ["sourcex", "sourcey"]:
             layer_coords = True
         elif low[2:4] != ["pixelx", "pixely"]:
-            raise ValueError(f"{src}: unexpected header {header!r}; a Georeferencer file "
-                             "starts with mapX,mapY,pixelX,pixelY (or sourceX,sourceY).")
+            raise InputError("{path}: unexpected header {header}; a Georeferencer file "
+                             "starts with mapX,mapY,pixelX,pixelY (or sourceX,sourceY).",
+                             path=src, header=repr(header))
         i += 1
     else:
         # very old files: no header, tab separated mapX mapY pixelX pixelY
         try:
             [float(v) for v in header.split(delim)[:4]]
         except ValueError:
-            raise ValueError(f"{src}: not a QGIS .points file (header {header!r}); expected "
-                             "'mapX,mapY,pixelX,pixelY,enable,dX,dY,residual'.") from None
+            raise InputError("{path}: not a QGIS .points file (header {header}); expected "
+                             "'mapX,mapY,pixelX,pixelY,enable,dX,dY,residual'.", path=src,
+                             header=repr(header)) from None
     ids, pix, mp, en, qres = [], [], [], [], []
     for k in range(i, len(lines)):
         line = lines[k].strip()
@@ -325,8 +330,8 @@ def read_points(path, *, source_geotransform: Optional[Sequence[float]] = None) 
         parts = line.split("," if "," in line else "\t")
         where = f"{src} line {k + 1}"
         if len(parts) < 4:
-            raise ValueError(f"{where}: expected at least 4 values (mapX,mapY,pixelX,pixelY), "
-                             f"got {len(parts)}.")
+            raise InputError("{where}: expected at least 4 values (mapX,mapY,pixelX,pixelY), "
+                             "got {n}.", where=where, n=len(parts))
         names = ("mapX", "mapY", "pixelX", "pixelY")
         v = [_num(parts[j], where=where, column=names[j]) for j in range(4)]
         ids.append(str(len(ids) + 1))
@@ -398,7 +403,8 @@ def _csv_rows(text: str, src: str):
         body_start = k + 1
     body = "\n".join(lines[body_start:])
     if not body.strip():
-        raise ValueError(f"{src} is empty; it needs a header row and one row per GCP.")
+        raise InputError("{path} is empty; it needs a header row and one row per GCP.",
+                         path=src)
     first = body.splitlines()[0]
     delim = max((";", "\t", ","), key=first.count) if any(d in first for d in ";\t,") else ","
     reader = csv.reader(io.StringIO(body), delimiter=delim)
@@ -421,19 +427,21 @@ def _csv_columns(rows, src: str):
     elif "ix" in found and "iy" in found:
         ci, ri, sign = found["ix"], found["iy"], None
     else:
-        raise ValueError(f"{src}: no image coordinate columns. Expected 'col,row', "
+        raise InputError("{path}: no image coordinate columns. Expected 'col,row', "
                          "'pixel,line' or 'image_x,image_y' (QGIS style, y = −row); found "
-                         f"columns {rows[0]}.")
+                         "columns {columns}.", path=src, columns=rows[0])
     if "x" not in found or "y" not in found:
-        raise ValueError(f"{src}: no map coordinate columns. Expected 'X,Y', 'map_x,map_y' "
-                         f"or 'easting,northing'; found columns {rows[0]}.")
+        raise InputError("{path}: no map coordinate columns. Expected 'X,Y', 'map_x,map_y' "
+                         "or 'easting,northing'; found columns {columns}.", path=src,
+                         columns=rows[0])
     return found, ci, ri, sign, notes
 
 
 def _csv_role(value: str, where: str) -> str:
     rv = value.strip().lower()
     if rv not in _ROLE_ALIASES:
-        raise ValueError(f"{where}: role must be 'gcp' or 'check', got {rv!r}.")
+        raise InputError("{where}: role must be 'gcp' or 'check', got {value}.",
+                         where=where, value=repr(rv))
     return _ROLE_ALIASES[rv]
 
 
@@ -449,7 +457,7 @@ def _csv_records(rows, found, ci, ri, src):
 
         ids.append(get("id").strip() if "id" in found else str(len(ids) + 1))
         if "id" in found and not ids[-1]:
-            raise ValueError(f"{where}: empty id.")
+            raise InputError("{where}: empty id.", where=where)
         pix.append([_num(r[ci] if ci < len(r) else "", where=where, column=rows[0][ci]),
                     _num(r[ri] if ri < len(r) else "", where=where, column=rows[0][ri])])
         mp.append([_num(get("x"), where=where, column=rows[0][found["x"]]),
@@ -476,7 +484,8 @@ def read_csv(path, *, pixel_origin: str = "corner", crs: str = "") -> GCPSet:
         CRS of the map coordinates when the file has no ``# CRS:`` line.
     """
     if pixel_origin not in ("corner", "center", "centre"):
-        raise ValueError(f"pixel_origin must be 'corner' or 'center', got {pixel_origin!r}.")
+        raise InputError("pixel_origin must be 'corner' or 'center', got {value}.",
+                         value=repr(pixel_origin))
     src = os.fspath(path)
     file_crs, rows = _csv_rows(_read_text(path), src)
     found, ci, ri, sign, notes = _csv_columns(rows, src)

@@ -44,7 +44,7 @@ def _laspy():
                                     category=UserWarning)
             import laspy
     except ImportError as exc:  # pragma: no cover - install problem
-        raise ValueError("The Python package 'laspy' is not installed; install "
+        raise InputError("The Python package 'laspy' is not installed; install "
                          "laspy and lazrs (pip install laspy lazrs).") from exc
     return laspy
 
@@ -81,6 +81,9 @@ class PointData:
     z: np.ndarray
     dims: Dict[str, np.ndarray] = field(default_factory=dict)
     info: Optional[LasInfo] = None
+    #: the decoded point records, chunk by chunk (``read_las(keep_records=True)``): a
+    #: copy of the file is written from them without decoding it again
+    records: Optional[list] = field(default=None, repr=False)
 
     def __len__(self) -> int:
         """Return the number of points."""
@@ -101,20 +104,20 @@ def check_las_file(path) -> None:
         LAZ with no decompression backend, or an unsupported LAS version.
     """
     if path is None or str(path) == "":
-        raise ValueError("No point cloud file was given; choose a .las or .laz file.")
+        raise InputError("No point cloud file was given; choose a .las or .laz file.")
     path = os.fspath(path)
     if not os.path.exists(path):
-        raise ValueError(f"Point cloud file not found: {path}. Check the path.")
+        raise InputError("Point cloud file not found: {path}. Check the path.", path=path)
     if os.path.isdir(path):
-        raise ValueError(f"{path} is a folder; choose a .las or .laz file.")
+        raise InputError("{path} is a folder; choose a .las or .laz file.", path=path)
     with open(path, "rb") as fh:
         head = fh.read(375)
         size = os.fstat(fh.fileno()).st_size
     if len(head) < 27 or head[:4] != b"LASF":
-        raise ValueError(
-            f"{path} is not a LAS/LAZ file (it does not start with the 'LASF' "
+        raise InputError(
+            "{path} is not a LAS/LAZ file (it does not start with the 'LASF' "
             "signature). Choose a real .las or .laz file; convert other formats "
-            "first, e.g. with PDAL (pdal translate).")
+            "first, e.g. with PDAL (pdal translate).", path=path)
     version = (head[24], head[25])
     if version not in _SUPPORTED_VERSIONS:
         raise InputError(
@@ -126,9 +129,9 @@ def check_las_file(path) -> None:
     if path.lower().endswith(".laz"):
         laspy = _laspy()
         if not laspy.LazBackend.detect_available():
-            raise ValueError(
-                f"{path} is compressed (LAZ) but no LAZ backend is installed: "
-                "install the Python package 'lazrs' (pip install lazrs).")
+            raise InputError(
+                "{path} is compressed (LAZ) but no LAZ backend is installed: "
+                "install the Python package 'lazrs' (pip install lazrs).", path=path)
 
 
 def check_header_sizes(path, head: bytes, size: int) -> None:
@@ -294,9 +297,9 @@ def _chunks(reader, path, chunk_size: int):
 def _check_dims(info: LasInfo, names: Sequence[str]) -> None:
     missing = [n for n in names if n not in info.dimensions]
     if missing:
-        raise ValueError(
-            f"{info.path} has no dimension(s) {', '.join(missing)}; it has "
-            f"{', '.join(info.dimensions)}.")
+        raise InputError("{path} has no dimension(s) {missing}; it has {present}.",
+                         path=info.path, missing=", ".join(missing),
+                         present=", ".join(info.dimensions))
 
 
 def _extract(points, names: Sequence[str]) -> PointData:
@@ -317,12 +320,12 @@ def iter_las_chunks(path, dimensions: Sequence[str] = (), *,
     streamed (e.g. to compute a raster or statistics).
     """
     if chunk_size <= 0:
-        raise ValueError(f"chunk_size must be positive, got {chunk_size}")
+        raise InputError("chunk_size must be positive, got {value}.", value=chunk_size)
     with _open(path) as reader:
         info = _info_from_header(os.fspath(path), reader.header)
         _check_dims(info, dimensions)
         if info.count == 0 and not allow_empty:
-            raise ValueError(f"{path} holds no points (empty point cloud).")
+            raise InputError("{path} holds no points (empty point cloud).", path=path)
         start = 0
         for chunk in _chunks(reader, path, chunk_size):
             data = _extract(chunk, dimensions)
@@ -331,8 +334,14 @@ def iter_las_chunks(path, dimensions: Sequence[str] = (), *,
             start += len(data)
 
 
+class _Records(list):
+    """Decoded point records of a file, chunk by chunk, with the file's EVLRs."""
+
+    evlrs: list = []
+
+
 def read_las(path, dimensions: Sequence[str] = (), *, chunk_size: int = DEFAULT_CHUNK,
-             progress=None, cancel=None) -> PointData:
+             keep_records: bool = False, progress=None, cancel=None) -> PointData:
     """Read coordinates and the named dimensions of a LAS/LAZ file.
 
     Parameters
@@ -344,6 +353,10 @@ def read_las(path, dimensions: Sequence[str] = (), *, chunk_size: int = DEFAULT_
         ``("classification", "return_number", "number_of_returns")``.
     chunk_size : int
         Points decoded per chunk (bounds the temporary memory).
+    keep_records : bool
+        Keep the decoded point records (``PointData.records``) so that
+        :func:`write_las_like` can write a copy without decoding the file again
+        (about the file's uncompressed size in memory).
     progress, cancel : callable, optional
         See :class:`~.progress.Monitor`.
 
@@ -363,33 +376,42 @@ def read_las(path, dimensions: Sequence[str] = (), *, chunk_size: int = DEFAULT_
     info = las_info(path)
     _check_dims(info, dimensions)
     if info.count == 0:
-        raise ValueError(f"{path} holds no points (empty point cloud).")
+        raise InputError("{path} holds no points (empty point cloud).", path=path)
     n = info.count
     x = np.empty(n, np.float64)
     y = np.empty(n, np.float64)
     z = np.empty(n, np.float64)
     dims: Dict[str, np.ndarray] = {}
+    records = _Records() if keep_records else None
     filled = 0
-    for start, chunk in iter_las_chunks(path, dimensions, chunk_size=chunk_size):
-        mon.check()
-        stop = start + len(chunk)
-        x[start:stop], y[start:stop], z[start:stop] = chunk.x, chunk.y, chunk.z
-        for name, values in chunk.dims.items():
-            if name not in dims:
-                dims[name] = np.empty(n, values.dtype)
-            dims[name][start:stop] = values
-        filled = stop
-        mon.update(stop / n)
+    with _open(path) as reader:
+        for raw in _chunks(reader, path, chunk_size):
+            mon.check()
+            chunk = _extract(raw, dimensions)
+            start, stop = filled, filled + len(chunk)
+            if stop > n:
+                break
+            x[start:stop], y[start:stop], z[start:stop] = chunk.x, chunk.y, chunk.z
+            for name, values in chunk.dims.items():
+                if name not in dims:
+                    dims[name] = np.empty(n, values.dtype)
+                dims[name][start:stop] = values
+            if records is not None:
+                records.append(raw)
+            filled = stop
+            mon.update(stop / n)
+        if records is not None:      # read after the points (LAZ): keep them for copies
+            records.evlrs = list(getattr(reader.header, "evlrs", None) or [])
     if filled != n:
-        raise ValueError(f"{path} declares {n} points but holds {filled}; the file "
-                         "is truncated or corrupt.")
-    return PointData(x, y, z, dims, info)
+        raise InputError("{path} declares {n} points but holds {filled}; the file "
+                         "is truncated or corrupt.", path=path, n=n, filled=filled)
+    return PointData(x, y, z, dims, info, records)
 
 
 def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] = None,
                    mask: Optional[np.ndarray] = None, chunk_size: int = DEFAULT_CHUNK,
                    extra: Optional[Mapping[str, np.ndarray]] = None,
-                   progress=None, cancel=None) -> int:
+                   records: Optional[list] = None, progress=None, cancel=None) -> int:
     """Copy ``src`` to ``dst`` replacing some dimensions and/or keeping a subset.
 
     Every attribute not named in ``dimensions`` is copied bit for bit; the point
@@ -411,6 +433,10 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
         point of ``src``), declared with the arrays' dtypes after the file's own
         dimensions; a name the file already has is replaced in place instead. Every
         existing field is copied byte for byte into the wider point record.
+    records : list, optional
+        The point records of ``src`` already decoded (``read_las(...,
+        keep_records=True).records``): written from memory, ``src`` is not decoded
+        again (its header is still read).
 
     Returns
     -------
@@ -422,12 +448,13 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
     check_not_input(dst, src)
     info = las_info(src)
     if info.count == 0:
-        raise ValueError(f"{src} holds no points (empty point cloud).")
+        raise InputError("{path} holds no points (empty point cloud).", path=src)
     dimensions, extra = _new_values(info, dimensions, extra)
     if mask is not None:
         mask = np.asarray(mask, dtype=bool)
         if mask.shape != (info.count,):
-            raise ValueError(f"mask has shape {mask.shape}; expected ({info.count},).")
+            raise InputError("mask has shape {shape}; expected ({n},).",
+                             shape=mask.shape, n=info.count)
     dst = os.fspath(dst)
     written = 0
     from laspy.vlrs.vlrlist import VLRList
@@ -443,7 +470,8 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
         with laspy.open(tmp, mode="w", header=header,
                         do_compress=dst.lower().endswith(".laz")) as writer:
             start = 0
-            for chunk in _chunks(reader, src, chunk_size):
+            for chunk in (records if records is not None
+                          else _chunks(reader, src, chunk_size)):
                 mon.check()
                 stop = start + len(chunk)
                 for name, values in dimensions.items():
@@ -458,11 +486,14 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
                 start = stop
                 mon.update(stop / info.count)
             if start != info.count:
-                raise ValueError(f"{src} declares {info.count} points but holds {start}; "
-                                 "the file is truncated or corrupt.")
-            # EVLRs of a LAZ file are read (into the reader's header) after its points
-            evlrs = [v for v in (getattr(reader.header, "evlrs", None) or [])
-                     if not is_copc_record(v)]
+                raise InputError("{path} declares {n} points but holds {filled}; the file "
+                                 "is truncated or corrupt.", path=src, n=info.count,
+                                 filled=start)
+            # EVLRs of a LAZ file are read (into the reader's header) after its points;
+            # records decoded earlier carry those of their own read
+            source_evlrs = (getattr(records, "evlrs", None) if records is not None
+                            else getattr(reader.header, "evlrs", None))
+            evlrs = [v for v in (source_evlrs or []) if not is_copc_record(v)]
             if evlrs:
                 writer.write_evlrs(VLRList(evlrs))
         _restore_extra_bytes_vlrs(src, tmp)
@@ -478,8 +509,9 @@ def _new_values(info: LasInfo, dimensions, extra):
     _check_dims(info, list(dimensions))
     for name, values in {**dimensions, **extra}.items():
         if np.shape(values) != (info.count,):
-            raise ValueError(f"New values for '{name}' have shape {np.shape(values)}; "
-                             f"expected one per point ({info.count}).")
+            raise InputError("New values for '{name}' have shape {shape}; "
+                             "expected one per point ({n}).", name=name,
+                             shape=np.shape(values), n=info.count)
     return dimensions, extra
 
 
@@ -608,7 +640,7 @@ def write_las(dst, x, y, z, *, dimensions: Optional[Mapping[str, np.ndarray]] = 
     laspy = _laspy()
     x, y, z = (np.asarray(v, dtype=np.float64) for v in (x, y, z))
     if not (x.shape == y.shape == z.shape) or x.ndim != 1:
-        raise ValueError("x, y and z must be 1-D arrays of equal length.")
+        raise InputError("x, y and z must be 1-D arrays of equal length.")
     header = laspy.LasHeader(point_format=point_format, version=version)
     for name, dtype in (extra_dims or {}).items():
         header.add_extra_dim(laspy.ExtraBytesParams(name=name, type=np.dtype(dtype)))
@@ -639,8 +671,8 @@ def _add_crs(header, crs: str) -> None:
     srs.AutoIdentifyEPSG()
     code = srs.GetAuthorityCode(None)
     if not code:
-        raise ValueError(f"CRS {crs!r} has no EPSG code; LAS < 1.4 can only store "
-                         "EPSG codes here. Use version 1.4.")
+        raise InputError("CRS {crs} has no EPSG code; LAS < 1.4 can only store "
+                         "EPSG codes here. Use version 1.4.", crs=repr(crs))
     key_id = 3072 if srs.IsProjected() else 2048
     vlr = laspy.vlrs.known.GeoKeyDirectoryVlr()
     entries = [(1, 1, 0, 3), (1024, 0, 1, 1 if srs.IsProjected() else 2),

@@ -145,12 +145,18 @@ def read_class_points(path, classes: Sequence[int] = (2,), *,
     present = {int(c): int(n) for c, n in enumerate(counts) if n}
     x = np.concatenate(xs) if xs else np.empty(0)
     if x.size == 0:
-        where = " inside the extent" if extent is not None else ""
-        raise ValueError(
-            f"No ground points in the input class filter: {path} has no point of class(es) "
-            f"{', '.join(map(str, classes)) or 'any'}{where}. Classes present (class: "
-            f"count): {present or 'none'}. Run a ground filter first or change the class "
-            "filter.")
+        args = dict(path=path, classes=", ".join(map(str, classes)) or "any",
+                    present=", ".join(f"{c}: {n}" for c, n in present.items()) or "none")
+        if extent is not None:
+            raise InputError(
+                "No ground points in the input class filter: {path} has no point of "
+                "class(es) {classes} inside the extent. Classes present (class: count): "
+                "{present}. Run a ground filter first or change the class filter or the "
+                "extent.", **args)
+        raise InputError(
+            "No ground points in the input class filter: {path} has no point of class(es) "
+            "{classes}. Classes present (class: count): {present}. Run a ground filter "
+            "first or change the class filter.", **args)
     y, z = np.concatenate(ys), np.concatenate(zs)
     if metres:
         x, y, z = info.units.xyz_to_metres(x, y, z)

@@ -91,7 +91,8 @@ def check_destination(kind: str, src: str, dst: str) -> None:
 def publish_file(kind: str, src: str, dst: str) -> None:
     """Copy ``src`` to ``dst`` (a contract temporary), converting when needed."""
     if kind not in KINDS:
-        raise ValueError(f"unknown kind {kind!r}; expected one of {KINDS}")
+        raise InputError("Unknown output kind {kind}; expected one of {kinds}.",
+                         kind=repr(kind), kinds=", ".join(KINDS))
     if not Path(src).is_file():
         raise InputError("The file to publish {src} does not exist; the step that "
                          "should have written it failed or was skipped.", src=src)

@@ -14,6 +14,7 @@ from typing import Optional, Sequence, Tuple
 
 import numpy as np
 
+from ..errors import InputError
 from .contract import atomic_output
 from .crs import crs_label, srs_wkt  # noqa: F401 - re-exported (historic location)
 
@@ -82,12 +83,14 @@ def write_geotiff(path, data, *, geotransform: Sequence[float], crs: Optional[st
     arrays = [np.asarray(data)] + [np.asarray(b) for b in (bands or [])]
     shape = arrays[0].shape
     if len(shape) != 2 or 0 in shape:
-        raise ValueError(f"A raster needs a non-empty 2-D array, got shape {shape}.")
+        raise InputError("A raster needs a non-empty 2-D array, got shape {shape}.",
+                         shape=shape)
     if any(a.shape != shape for a in arrays):
-        raise ValueError("All bands must have the same shape.")
+        raise InputError("All bands must have the same shape.")
     gt = tuple(float(v) for v in geotransform)
     if len(gt) != 6 or gt[1] <= 0 or gt[5] >= 0:
-        raise ValueError(f"Expected a north-up geotransform (xres > 0, yres < 0), got {gt}.")
+        raise InputError("Expected a north-up geotransform (xres > 0, yres < 0), got {gt}.",
+                         gt=gt)
     gdt = {"float32": gdal.GDT_Float32, "float64": gdal.GDT_Float64,
            "uint8": gdal.GDT_Byte, "int16": gdal.GDT_Int16,
            "int32": gdal.GDT_Int32, "uint16": gdal.GDT_UInt16}[dtype]
@@ -138,13 +141,15 @@ def _open_band(path, band: int):
     gdal = _gdal()
     path = os.fspath(path)
     if not os.path.exists(path):
-        raise ValueError(f"Raster not found: {path}. Check the path.")
+        raise InputError("Raster not found: {path}. Check the path.", path=path)
     try:
         ds = gdal.Open(path)
     except RuntimeError as exc:
-        raise ValueError(f"{path} is not a raster GDAL can read: {exc}") from exc
+        raise InputError("{path} is not a raster GDAL can read: {error}", path=path,
+                         error=exc) from exc
     if band < 1 or band > ds.RasterCount:
-        raise ValueError(f"{path} has {ds.RasterCount} band(s); band {band} does not exist.")
+        raise InputError("{path} has {n} band(s); band {band} does not exist.", path=path,
+                         n=ds.RasterCount, band=band)
     return ds, ds.GetRasterBand(band)
 
 
@@ -170,7 +175,7 @@ def read_raster_on_grid(path, geotransform: Sequence[float], shape: Tuple[int, i
     src_crs, src_nodata = ds.GetProjection(), b.GetNoDataValue()
     del ds, b
     if band != 1:
-        raise ValueError("Only band 1 can be resampled onto another grid.")
+        raise InputError("Only band 1 can be resampled onto another grid.")
     rows, cols = int(shape[0]), int(shape[1])
     x0, dx, _, y0, _, dy = geotransform
     bounds = (x0, y0 + rows * dy, x0 + cols * dx, y0)
@@ -181,6 +186,7 @@ def read_raster_on_grid(path, geotransform: Sequence[float], shape: Tuple[int, i
     try:
         ds = gdal.Warp("", path, options=opts)
     except RuntimeError as exc:
-        raise ValueError(f"{path} could not be resampled onto the grid: {exc}") from exc
+        raise InputError("{path} could not be resampled onto the grid: {error}", path=path,
+                         error=exc) from exc
     return Raster(ds.GetRasterBand(1).ReadAsArray(), tuple(ds.GetGeoTransform()),
                   ds.GetProjection(), float("nan"))

@@ -1,8 +1,9 @@
 """One catalog chunk: buffered read, ground filter, DTM, per-chunk outputs (runs on a worker).
 
 Everything here is a plain function of picklable arguments so that Dask can ship
-it to a worker process (local or remote). The registries of ground filters and DTM
-methods live here too: adding a filter is one :func:`register_ground_filter` call.
+it to a worker process (local or remote). The ground filters are the registered
+algorithm objects of :mod:`.filters` (the same as the single-file algorithms, run by
+the same :func:`.filters.classify_points`); the DTM methods are registered here.
 """
 from __future__ import annotations
 
@@ -12,108 +13,46 @@ import os
 import socket
 import time
 from dataclasses import dataclass, field
-from typing import Callable, Dict, List, Optional, Sequence, Tuple
+from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
 from ..io.catalog import read_box
 from ..io.contract import OutputContract
-from ..io.las import read_las, write_las, write_las_like
+from ..io.las import PointData, read_las, write_las, write_las_like
 from ..io.raster import write_geotiff
 from ..system import peak_rss_mb
+from ..terrain.dtm import DTM_METHODS, IdwOptions, dtm_method, register_dtm_method
 from ..terrain.grid import GridSpec
+from .filters import (
+    GROUND_FILTERS,
+    RECOMMENDED_FILTER,
+    classify_points,
+    default_ground_filter,
+    default_selection,
+    ground_filter,
+    register_ground_filter,
+)
 
 GROUND = 2
+__all__ = ["GROUND_FILTERS", "RECOMMENDED_FILTER", "DTM_METHODS", "register_ground_filter",
+           "register_dtm_method", "default_ground_filter", "chunk_dtm", "ChunkTask",
+           "process_chunk", "read_chunk", "filter_chunk", "snap_grid", "is_done",
+           "neighbour_paths"]
 
 
-# ============================================================================ registries
-@dataclass(frozen=True)
-class Method:
-    """A registered ground filter or DTM method."""
-
-    key: str
-    label: str
-    func: Callable
-    tiling: bool = False     # True: anchored on the global origin (tiles, grids)
+# ============================================================================ methods
+# Ground filters: the one registry of :mod:`.filters`; DTM methods: the one registry of
+# :mod:`..terrain.dtm` (the same algorithm objects as the single-file algorithms).
+#: IDW in chunks orders equidistant neighbours by their coordinates (not by a quadtree
+#: of the chunk's points), so a chunk gives the merged cloud's cells exactly
+CHUNK_IDW = IdwOptions(tie_order="xy")
 
 
-GROUND_FILTERS: Dict[str, Method] = {}
-DTM_METHODS: Dict[str, Method] = {}
-RECOMMENDED_FILTER = "groundfilter"   # used as default once registered
-
-
-def register_ground_filter(key: str, label: str, func: Callable, *, tiling: bool = False):
-    """Register ``func(x, y, z, dims, origin) -> uint8 classes`` as a catalog filter."""
-    GROUND_FILTERS[key] = Method(key, label, func, tiling)
-
-
-def register_dtm_method(key: str, label: str, func: Callable):
-    """Register ``func(x, y, z, grid, max_distance) -> 2-D array`` as a DTM method."""
-    DTM_METHODS[key] = Method(key, label, func, True)
-
-
-def default_ground_filter() -> str:
-    """Return the recommended filter when it is registered, else improved LSQ."""
-    return RECOMMENDED_FILTER if RECOMMENDED_FILTER in GROUND_FILTERS else "lsq_improved"
-
-
-def _keep(x, y, z, dims, origin):
-    return np.asarray(dims["classification"], dtype=np.uint8)
-
-
-def _lsq(mode):
-    def run(x, y, z, dims, origin):
-        from .lsq import lsq_ground_filter
-        return lsq_ground_filter(x, y, z, mode=mode, origin=origin).classification
-    return run
-
-
-def _slope(mode):
-    def run(x, y, z, dims, origin):
-        from .noise import flag_low_outliers
-        from .slope import slope_filter
-        low = flag_low_outliers(x, y, z)
-        res = slope_filter(x, y, z, classify=~low, neighbours=~low, mode=mode,
-                           trend_origin=origin)
-        cls = np.where(res.ground, GROUND, 1).astype(np.uint8)
-        cls[low] = 7
-        return cls
-    return run
-
-
-def _recommended(x, y, z, dims, origin):
-    from .recommended import classify
-    return classify(x, y, z)
-
-
-def _idw(x, y, z, grid, max_distance):
-    from ..terrain.idw import idw_grid
-    return idw_grid(x, y, z, grid, max_distance=max_distance, workers=1)
-
-
-def _kriging(x, y, z, grid, max_distance):
-    from ..terrain.kriging import kriging_grid
-    return kriging_grid(x, y, z, grid, max_distance=max_distance, workers=1).z
-
-
-register_ground_filter("keep", "Keep the classes in the files", _keep)
-register_ground_filter("lsq_faithful", "LSQ surfaces (faithful)", _lsq("faithful"), tiling=True)
-register_ground_filter("lsq_improved", "LSQ surfaces (improved)", _lsq("improved"), tiling=True)
-register_ground_filter("slope_exact", "Slope filter (exact)", _slope("exact"))
-register_ground_filter("slope_adaptive", "Slope filter (terrain-adaptive)", _slope("adaptive"),
-                       tiling=True)
-register_ground_filter(RECOMMENDED_FILTER, "Ground filter (recommended)", _recommended)
-def _tin(x, y, z, grid, max_distance):
-    """Delaunay TIN; the edge limit is the catalog-wide gap distance (not per chunk)."""
-    from ..terrain.tin import tin_grid
-    if x.size < 3:
-        return np.full(grid.shape, np.nan)
-    return tin_grid(x, y, z, grid, max_edge=max_distance).z
-
-
-register_dtm_method("idw", "IDW", _idw)
-register_dtm_method("kriging", "Kriging", _kriging)
-register_dtm_method("tin", "TIN", _tin)
+def chunk_dtm(key: str, x, y, z, grid, max_distance: float) -> np.ndarray:
+    """DTM of a chunk's ground points with the registered method ``key`` (one thread)."""
+    method = dtm_method(key, CHUNK_IDW if key == "idw" else None)
+    return method.interpolate(x, y, z, grid, max_distance=max_distance, workers=1).z
 
 
 # ============================================================================ the task
@@ -192,12 +131,16 @@ def _worker_name() -> str:
         return f"{socket.gethostname()}:{os.getpid()}"
 
 
+class InjectedFailureError(RuntimeError):
+    """A chunk's first attempt failing on purpose (tests of the retry; never in use)."""
+
+
 def _fail_first_attempt(task: ChunkTask) -> None:
     flag = task.outputs["DONE"] + ".attempted"
     if not os.path.exists(flag):
         with open(flag, "w", encoding="utf-8") as fh:
             fh.write("1")
-        raise RuntimeError(f"injected failure of chunk {task.key} (test)")
+        raise InjectedFailureError(task.key)
 
 
 def single_threaded() -> None:
@@ -254,11 +197,17 @@ def read_chunk(task: ChunkTask):
 
 
 def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
-    """Classes from the chunk's ground filter for every point read (chunk and buffer)."""
+    """Classes from the chunk's ground filter for every point read (chunk and buffer).
+
+    The registered algorithm object with the point selection of its single-file
+    algorithm's defaults (input noise classes 7 and 18 kept), anchored on the
+    catalog's global origin: the same call as a single-file run.
+    """
     if not core.any():
         return np.zeros(core.size, np.uint8)
-    cls = GROUND_FILTERS[task.ground_filter].func(*xyz, dims, task.origin)
-    return np.asarray(cls, dtype=np.uint8)
+    pts = PointData(*xyz, dims=dims)
+    return classify_points(pts, ground_filter(task.ground_filter),
+                           default_selection(task.ground_filter), origin=task.origin)
 
 
 def _write_outputs(task: ChunkTask, xyz, dims, core, cls, dtm, grid) -> None:
@@ -296,8 +245,8 @@ def process_chunk(task: ChunkTask) -> dict:
         clock.lap("filter")
         grid = snap_grid(task.bounds, task.origin, task.cell_size, task.crs)
         g = cls == GROUND
-        dtm = DTM_METHODS[task.dtm_method].func(xyz[0][g], xyz[1][g], xyz[2][g], grid,
-                                                task.max_distance)
+        dtm = chunk_dtm(task.dtm_method, xyz[0][g], xyz[1][g], xyz[2][g], grid,
+                        task.max_distance)
         clock.lap("dtm")
         _write_outputs(task, xyz, dims, core, cls, dtm, grid)
         clock.lap("write")

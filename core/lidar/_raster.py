@@ -11,6 +11,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage
 
+from ..errors import InputError
+
 
 def density(x, y, cell: float = 5.0) -> float:
     """Points per m² over the occupied ``cell``-sized cells (ignores empty areas).
@@ -33,6 +35,20 @@ def density(x, y, cell: float = 5.0) -> float:
     return x.size / (occupied * cell * cell)
 
 
+#: corner period (cells) of grids anchored on a catalog origin: 2**6 aligns the first
+#: six levels of the push-pull pyramid of :func:`fill`
+ALIGN = 64
+
+
+def snap_down(value: float, origin: float, period: float) -> float:
+    """Return the lattice point ``origin + k * period`` at or below ``value``.
+
+    >>> snap_down(1234.5, 1000.0, 10.0)
+    1230.0
+    """
+    return float(origin) + np.floor((float(value) - float(origin)) / period) * period
+
+
 @dataclass(frozen=True)
 class Grid:
     """A regular grid: lower-left origin, cell size (m) and shape (rows, cols)."""
@@ -44,9 +60,17 @@ class Grid:
     cols: int
 
     @classmethod
-    def around(cls, x, y, cell):
-        """Smallest grid with cell ``cell`` holding every point."""
+    def around(cls, x, y, cell, origin=None):
+        """Smallest grid with cell ``cell`` holding every point.
+
+        With ``origin`` (x, y) the grid's corner is on the lattice through that point
+        with a period of :data:`ALIGN` cells, so grids of separate chunks share cells
+        and the blocks of the :func:`fill` pyramid up to that size.
+        """
         x0, y0 = float(x.min()), float(y.min())
+        if origin is not None:
+            period = cell * ALIGN
+            x0, y0 = snap_down(x0, origin[0], period), snap_down(y0, origin[1], period)
         cols = int((float(x.max()) - x0) // cell) + 1
         rows = int((float(y.max()) - y0) // cell) + 1
         return cls(x0, y0, float(cell), rows, cols)
@@ -142,7 +166,7 @@ def fill(z, valid):
     if valid.all():
         return z.copy()
     if not valid.any():
-        raise ValueError("no valid cell to interpolate from")
+        raise InputError("No valid cell to interpolate from.")
     w = valid.astype(np.float64)
     v = np.where(valid, z, 0.0)
     return _pushpull(v * w, w)

@@ -22,6 +22,7 @@ from typing import Optional, Sequence
 
 import numpy as np
 
+from ..errors import InputError
 from ..io.points import parse_classes as _parse_classes
 
 GROUND = 2
@@ -94,7 +95,8 @@ def from_counts(a: int, b: int, c: int, d: int) -> FilterAccuracy:
     """
     for name, v in (("a", a), ("b", b), ("c", c), ("d", d)):
         if int(v) != v or v < 0:
-            raise ValueError(f"count {name} must be a non-negative integer, got {v}")
+            raise InputError("count {name} must be a non-negative integer, got {value}.",
+                             name=name, value=v)
     return FilterAccuracy(int(a), int(b), int(c), int(d))
 
 
@@ -119,11 +121,11 @@ def assess(predicted_ground, reference_ground) -> FilterAccuracy:
     p = np.asarray(predicted_ground, dtype=bool).ravel()
     r = np.asarray(reference_ground, dtype=bool).ravel()
     if p.size != r.size:
-        raise ValueError(
-            f"The classified cloud has {p.size} points but the reference has {r.size}; "
-            "both must hold the same points in the same order.")
+        raise InputError(
+            "The classified cloud has {n} points but the reference has {m}; "
+            "both must hold the same points in the same order.", n=int(p.size), m=int(r.size))
     if p.size == 0:
-        raise ValueError("Cannot assess an empty point cloud.")
+        raise InputError("Cannot assess an empty point cloud.")
     a = int(np.count_nonzero(p & r))
     b = int(np.count_nonzero(~p & r))
     c = int(np.count_nonzero(p & ~r))
@@ -144,8 +146,8 @@ def error_codes(predicted_ground, reference_ground) -> np.ndarray:
     p = np.asarray(predicted_ground, dtype=bool)
     r = np.asarray(reference_ground, dtype=bool)
     if p.shape != r.shape:
-        raise ValueError(f"predicted has {p.size} points, reference {r.size}; "
-                         "they must match point for point.")
+        raise InputError("predicted has {n} points, reference {m}; they must match point "
+                         "for point.", n=int(p.size), m=int(r.size))
     out = np.zeros(p.shape, dtype=np.uint8)
     out[r & ~p] = 1
     out[~r & p] = 2
@@ -221,10 +223,10 @@ def assess_clouds(classified, reference=None, *, field: str = "classification",
                                              name="reference ground classes")
     if reference is None or str(reference) == "":
         if reference_field == field:
-            raise ValueError(
-                f"Without a reference cloud the reference labels must come from another "
-                f"dimension of the classified cloud, but both are '{field}'. Give a "
-                "reference cloud, or the name of the reference dimension.")
+            raise InputError(
+                "Without a reference cloud the reference labels must come from another "
+                "dimension of the classified cloud, but both are '{field}'. Give a "
+                "reference cloud, or the name of the reference dimension.", field=field)
         pd = read_las(classified, (field, reference_field), progress=mon.sub(0, .9).update,
                       cancel=cancel)
         pred, ref = pd[field], pd[reference_field]
@@ -233,19 +235,20 @@ def assess_clouds(classified, reference=None, *, field: str = "classification",
         rd = read_las(reference, (reference_field,), progress=mon.sub(.45, .9).update,
                       cancel=cancel)
         if len(rd) != len(pd):
-            raise ValueError(
-                f"The classified cloud has {len(pd)} points but the reference cloud has "
-                f"{len(rd)}; both must hold the same points in the same order (filter the "
-                "reference file itself, do not thin or merge it).")
+            raise InputError(
+                "The classified cloud has {n} points but the reference cloud has "
+                "{m}; both must hold the same points in the same order (filter the "
+                "reference file itself, do not thin or merge it).", n=len(pd), m=len(rd))
         tol = xy_tolerance
         if tol is None:
             tol = 2.0 * max(max(pd.info.scales[:2]), max(rd.info.scales[:2]))
         dxy = max(float(np.max(np.abs(pd.x - rd.x))), float(np.max(np.abs(pd.y - rd.y))))
         if dxy > tol:
-            raise ValueError(
-                f"The classified and reference clouds have the same number of points but "
-                f"their coordinates differ by up to {dxy:.3f} m (tolerance {tol:.3f} m): "
-                "they are not the same points in the same order.")
+            raise InputError(
+                "The classified and reference clouds have the same number of points but "
+                "their coordinates differ by up to {dxy} m (tolerance {tol} m): "
+                "they are not the same points in the same order.", dxy=f"{dxy:.3f}",
+                tol=f"{tol:.3f}")
         pred, ref = pd[field], rd[reference_field]
     mon.check()
     p = ground_mask(pred, ground_classes)

@@ -76,9 +76,20 @@ from typing import Dict, List, Optional, Sequence
 import numpy as np
 
 from ..coords import as_xyz
+from ..errors import InputError
 from ..progress import Monitor
+from ._filter import FilterOutcome, GroundFilter
+from ._lsq_fit import (
+    STATUS_NAMES,
+    TERMS,
+    TileGrid,
+    design_matrix,
+    fit_tiles,
+    n_coefficients,
+)
+from ._lsq_modes import _faithful, _improved
+from .lsq_report import lsq_sections, lsq_settings, tile_csv
 from .noise import NOISE_CLASS, flag_low_outliers
-from .pipeline import FilterOutcome, GroundFilter
 
 __all__ = ["lsq_ground_filter", "LsqResult", "TileGrid", "design_matrix", "n_coefficients",
            "fit_tiles", "GROUND", "OTHER", "NOISE", "UNCLASSIFIED", "IMPROVED_DEFAULTS",
@@ -88,9 +99,6 @@ GROUND = 2
 OTHER = 1
 NOISE = NOISE_CLASS
 UNCLASSIFIED = 0
-
-#: Term names of the polynomial, in the paper's order.
-TERMS = {1: ("1", "x", "y"), 2: ("1", "x²", "y²", "x·y", "x", "y")}
 
 #: Faithful-mode iteration cap (the paper's tables end at iteration 5).
 FAITHFUL_MAX_ITERATIONS = 5
@@ -106,489 +114,6 @@ IMPROVED_DEFAULTS = dict(
     noise=True,                    # low-outlier pre-filter
     max_iterations=5,
 )
-
-
-def n_coefficients(order: int) -> int:
-    """Return the number of polynomial coefficients: 3 for order 1, 6 for order 2."""
-    return {1: 3, 2: 6}[int(order)]
-
-
-def design_matrix(u, v, order: int) -> np.ndarray:
-    """Design matrix ``B`` of the paper's polynomial (columns in the paper's order).
-
-    Parameters
-    ----------
-    u, v : array_like
-        Tile coordinates (centred and scaled).
-    order : {1, 2}
-
-    Returns
-    -------
-    numpy.ndarray, shape (n, 3) or (n, 6)
-        ``[1, u, v]`` or ``[1, u², v², u·v, u, v]``.
-    """
-    u = np.asarray(u, dtype=np.float64)
-    v = np.asarray(v, dtype=np.float64)
-    one = np.ones_like(u)
-    if int(order) == 1:
-        return np.column_stack((one, u, v))
-    return np.column_stack((one, u * u, v * v, u * v, u, v))
-
-
-def _cols(coef):
-    """Contiguous coefficient columns (fast ``take`` gathers)."""
-    return [np.ascontiguousarray(coef[:, k]) for k in range(coef.shape[1])]
-
-
-def _eval(coef, tid, u, v, order):
-    """ẑ of points with tile index ``tid`` (coefficients per tile, paper order)."""
-    c = _cols(coef)
-    if order == 1:
-        out = c[1].take(tid)
-        out *= u
-        out += c[0].take(tid)
-        out += c[2].take(tid) * v
-        return out
-    a = c[1].take(tid)                   # u·(b1·u + b3·v + b4) + v·(b2·v + b5) + b0
-    a *= u
-    a += c[3].take(tid) * v
-    a += c[4].take(tid)
-    a *= u
-    b = c[2].take(tid)
-    b *= v
-    b += c[5].take(tid)
-    b *= v
-    a += b
-    a += c[0].take(tid)
-    return a
-
-
-def _grad(coef, tid, u, v, order, half):
-    """|∇ẑ| (dimensionless slope) of the tile surfaces at the points."""
-    c = _cols(coef)
-    if order == 1:
-        gu, gv = c[1].take(tid), c[2].take(tid)
-    else:
-        gu = 2 * c[1].take(tid) * u + c[3].take(tid) * v + c[4].take(tid)
-        gv = 2 * c[2].take(tid) * v + c[3].take(tid) * u + c[5].take(tid)
-    return np.hypot(gu, gv) / half
-
-
-def _within(coef, tid, u, v, z, threshold, order, chunk=2_000_000):
-    """``z − ẑ ≤ threshold`` per row, evaluated in blocks (bounded temporaries)."""
-    out = np.empty(tid.size, dtype=bool)
-    per_row = np.ndim(threshold) > 0
-    for s in range(0, tid.size, chunk):
-        sl = slice(s, s + chunk)
-        res = z[sl] - _eval(coef, tid[sl], u[sl], v[sl], order)
-        np.less_equal(res, threshold[sl] if per_row else threshold, out=out[sl])
-    return out
-
-
-# pairs (i, j), i <= j, of design columns, as exponent pairs of the monomials
-_EXPO = {1: ((0, 0), (1, 0), (0, 1)),
-         2: ((0, 0), (2, 0), (0, 2), (1, 1), (1, 0), (0, 1))}
-
-
-def _normal_equations(tid, u, v, z, w, ntiles, order, chunk=2_000_000):
-    """Batched normal equations ``BᵀWB`` and ``BᵀWz`` of every tile at once.
-
-    Sums of monomials ``u^a v^b`` (a + b ≤ 2·order) are accumulated per tile with
-    ``np.bincount``; the normal matrices are then assembled from them.
-    Returns ``(N, r, szz)`` with shapes ``(ntiles, p, p)``, ``(ntiles, p)`` and
-    ``(ntiles,)`` — ``szz`` is the sum of ``w·z²`` (for the kept-height σ).
-    Sums are additive, so a change of the kept set is applied as the normal
-    equations of the rows that entered minus those of the rows that left.
-    """
-    ex = _EXPO[order]
-    p = len(ex)
-    need = sorted({(a1 + a2, b1 + b2) for (a1, b1) in ex for (a2, b2) in ex})
-    mom = {m: np.zeros(ntiles) for m in need}
-    rz = {e: np.zeros(ntiles) for e in ex}
-    szz = np.zeros(ntiles)
-    n = tid.size
-    for s in range(0, n, chunk):
-        t = tid[s:s + chunk]
-        uu, vv, zz = u[s:s + chunk], v[s:s + chunk], z[s:s + chunk]
-        ww = None if w is None else w[s:s + chunk]
-        upow = [np.ones_like(uu) if ww is None else ww]
-        vpow = [np.ones_like(vv)]
-        for _ in range(2 * order):
-            upow.append(upow[-1] * uu)
-            vpow.append(vpow[-1] * vv)
-        for (a, b) in need:
-            if a == 0 and b == 0 and ww is None:
-                mom[(0, 0)] += np.bincount(t, minlength=ntiles)
-                continue
-            mom[(a, b)] += np.bincount(t, weights=upow[a] * vpow[b] if b else upow[a],
-                                       minlength=ntiles)
-        wz = zz if ww is None else ww * zz
-        for (a, b) in ex:
-            if a == 0 and b == 0:
-                rz[(0, 0)] += np.bincount(t, weights=wz, minlength=ntiles)
-            else:
-                rz[(a, b)] += np.bincount(t, weights=upow[a] * vpow[b] * zz,
-                                          minlength=ntiles)
-        szz += np.bincount(t, weights=wz * zz, minlength=ntiles)
-    N = np.empty((ntiles, p, p))
-    for i, (a1, b1) in enumerate(ex):
-        for j, (a2, b2) in enumerate(ex):
-            N[:, i, j] = mom[(a1 + a2, b1 + b2)]
-    r = np.stack([rz[e] for e in ex], axis=1)
-    return N, r, szz
-
-
-def _solve(N, r, ok):
-    """Solve the tiles flagged ``ok`` whose normal matrix is well conditioned.
-
-    Returns ``(coef, solved)``; ``solved`` is False for singular systems
-    (reciprocal condition number below 1e-12, e.g. points on a line).
-    """
-    nt, p = r.shape
-    coef = np.full((nt, p), np.nan)
-    solved = np.zeros(nt, dtype=bool)
-    idx = np.flatnonzero(ok)
-    if idx.size == 0:
-        return coef, solved
-    Ns = N[idx]
-    # Jacobi scaling then eigenvalues: a cheap, batched conditioning test
-    d = np.sqrt(np.maximum(np.einsum("kii->ki", Ns), 1e-300))
-    Ss = Ns / d[:, :, None] / d[:, None, :]
-    ev = np.linalg.eigvalsh(Ss)
-    good = ev[:, 0] > 1e-12 * ev[:, -1]
-    if good.any():
-        gi = idx[good]
-        sol = np.linalg.solve(Ss[good], (r[gi] / d[good])[:, :, None])[:, :, 0]
-        coef[gi] = sol / d[good]
-        solved[gi] = True
-    return coef, solved
-
-
-@dataclass
-class TileGrid:
-    """Square tiles anchored at ``(x0, y0)``; only occupied tiles are listed.
-
-    Attributes
-    ----------
-    x0, y0 : float
-        Grid origin (min x, min y of the cloud).
-    size : float
-        Tile side, metres.
-    ix, iy : ndarray of int
-        Column and row of every occupied tile.
-    """
-
-    x0: float
-    y0: float
-    size: float
-    ix: np.ndarray
-    iy: np.ndarray
-
-    @property
-    def count(self) -> int:
-        """Number of occupied tiles."""
-        return int(self.ix.size)
-
-    @property
-    def centres(self) -> np.ndarray:
-        """(ntiles, 2) tile centres."""
-        return np.column_stack((self.x0 + (self.ix + 0.5) * self.size,
-                                self.y0 + (self.iy + 0.5) * self.size))
-
-    def local(self, tile, x, y):
-        """Tile coordinates ``u, v`` (centred on the tile centre, ÷ half size)."""
-        h = self.size / 2.0
-        return ((x - (self.x0 + (self.ix[tile] + 0.5) * self.size)) / h,
-                (y - (self.y0 + (self.iy[tile] + 0.5) * self.size)) / h)
-
-
-def _tile_index(x, y, x0, y0, size):
-    """Compact tile index of every point and the :class:`TileGrid`."""
-    ix = np.floor((x - x0) / size).astype(np.int64)
-    iy = np.floor((y - y0) / size).astype(np.int64)
-    ny = int(iy.max()) + 1
-    nx = int(ix.max()) + 1
-    key = ix * ny + iy
-    del ix, iy
-    if nx * ny <= 4 * key.size + 1_000_000:
-        # dense grid: O(n) compaction of the occupied tiles, no sort
-        occupied = np.bincount(key, minlength=nx * ny) > 0
-        ukey = np.flatnonzero(occupied)
-        remap = np.cumsum(occupied) - 1
-        tid = remap[key]
-    else:
-        ukey, tid = np.unique(key, return_inverse=True)
-    grid = TileGrid(float(x0), float(y0), float(size), ukey // ny, ukey % ny)
-    return tid.astype(np.int64, copy=False), grid
-
-
-@dataclass
-class FitOutcome:
-    """Internal result of :func:`fit_tiles`."""
-
-    coef: np.ndarray          # (ntiles, p), NaN where no surface
-    status: np.ndarray        # (ntiles,) 0 no surface, 1 converged, 2 iteration cap,
-    #                           3 frozen (too few points left), -1 borrowed
-    iterations: np.ndarray    # (ntiles,) number of fits made
-    npoints: np.ndarray       # (ntiles,) fitting points at the start
-    stats: np.ndarray         # (steps, ntiles, 5): count, min, max, mean, std (NaN = done)
-    agg: List[dict]           # aggregated per step
-    kept: np.ndarray          # bool per fitting row: still in the kept set at the end
-
-
-STATUS_NAMES = {0: "too few points", 1: "converged", 2: "iteration cap",
-                3: "stopped: too few points left", -1: "borrowed neighbour surface"}
-
-
-def fit_tiles(tid, u, v, z, ntiles, *, order=2, threshold=0.5, max_iterations=20,
-              tolerance=0.01, min_points=None, active=None, rejection="reweighted",
-              start=None, mon=None) -> FitOutcome:
-    """Fit every tile at once by iterative one-sided least squares (paper step 4).
-
-    Parameters
-    ----------
-    tid : ndarray of int, shape (m,)
-        Tile of every fitting row, **sorted ascending**.
-    u, v, z : ndarray, shape (m,)
-        Tile coordinates and heights of the rows.
-    ntiles : int
-    order : {1, 2}
-    threshold : float
-        ``T``: rows with ``z − ẑ > T`` leave the kept set.
-    max_iterations : int
-        Fits per tile at most.
-    tolerance : float
-        Stop when min, max, mean and std of the kept heights all change by less.
-    min_points : int, optional
-        Tiles with fewer rows get no surface (default ``3 × p``).
-    active : ndarray of bool, optional
-        Rows taking part at all (e.g. a random subset; default all rows).
-    rejection : {"reweighted", "cumulative"}
-        ``"reweighted"``: each iteration the kept set is every row with
-        ``v ≤ T`` against the current surface (``W = diag(v ≤ T)`` recomputed
-        from all residuals, so a row can come back); ``"cumulative"``: rows once
-        rejected stay out.
-    start : ndarray of bool, optional
-        Rows of the first fit (default all active rows); used by the improved
-        mode to seed a level with the ground of the previous one.
-    mon : Monitor, optional
-
-    Returns
-    -------
-    FitOutcome
-    """
-    mon = mon or Monitor()
-    fit = _TileFit(tid, u, v, z, ntiles, order=order, threshold=threshold,
-                   min_points=min_points, active=active, rejection=rejection)
-    fit.first_step(start)
-    for it in range(1, int(max_iterations) + 1):
-        # progress: share of tiles finished, blended with the iteration count
-        mon.step(0.5 * (it - 1) / max_iterations
-                 + 0.5 * (1 - fit.live.sum() / max(fit.n_fit_tiles, 1)))
-        if not fit.live.any():
-            break
-        fit.iterate(it, int(max_iterations), tolerance)
-    out = fit.outcome()
-    mon.update(1.0)
-    return out
-
-
-class _TileFit:
-    """State of the iterative fit of every tile (:func:`fit_tiles`).
-
-    The working pool is every active row; with no subset it is the caller's arrays
-    themselves (no copies: memory matters at tens of millions of points). Heights are
-    taken relative to a per-tile origin ``zt0`` (numerical safety of the sums of
-    squares) and the normal equations are updated incrementally as the kept set
-    changes.
-    """
-
-    def __init__(self, tid, u, v, z, ntiles, *, order, threshold, min_points, active,
-                 rejection):
-        self.ntiles, self.order = ntiles, order
-        self.cumulative = rejection == "cumulative"
-        self.p = p = n_coefficients(order)
-        self.min_points = 3 * p if min_points is None else max(int(min_points), p)
-        rows = np.arange(tid.size) if active is None else np.flatnonzero(active)
-        self.kept = np.zeros(tid.size, dtype=bool)
-        self.zt0 = np.zeros(ntiles)
-        self.cnt0 = cnt0 = np.bincount(tid[rows], minlength=ntiles)
-        s0 = np.bincount(tid[rows], weights=z[rows], minlength=ntiles)
-        self.zt0[cnt0 > 0] = s0[cnt0 > 0] / cnt0[cnt0 > 0]
-        self.status = np.zeros(ntiles, dtype=np.int8)
-        self.iterations = np.zeros(ntiles, dtype=np.int32)
-        self.coef = np.full((ntiles, p), np.nan)
-        self.per_row = np.ndim(threshold) > 0
-        threshold = (np.asarray(threshold, dtype=np.float64) if self.per_row
-                     else float(threshold))
-        # step 0: every tile (also the under-populated ones), all fitting rows
-        self.live = cnt0 >= self.min_points          # tiles still iterating
-        self.n_fit_tiles = int(self.live.sum())
-        if active is None:
-            self.pool = None
-            self.T, self.U, self.V = tid, u, v
-            self.Z = z - self.zt0[tid]
-        else:
-            self.pool = rows
-            self.T, self.U, self.V = tid[rows], u[rows], v[rows]
-            self.Z = z[rows] - self.zt0[self.T]
-        self.H = threshold if not self.per_row or self.pool is None else threshold[rows]
-
-    def _equations(self, sel=None):
-        T, U, V, Z = self.T, self.U, self.V, self.Z
-        if sel is not None:
-            T, U, V, Z = T[sel], U[sel], V[sel], Z[sel]
-        return _normal_equations(T, U, V, Z, None, self.ntiles, self.order)
-
-    def _minmax(self, cur):
-        """Per-tile min and max of the kept heights (NaN where none)."""
-        T, Z, zt0 = self.T, self.Z, self.zt0
-        lo = np.full(self.ntiles, np.nan)
-        hi = np.full(self.ntiles, np.nan)
-        if T.size:
-            starts = np.flatnonzero(np.r_[True, T[1:] != T[:-1]])
-            present = T[starts]
-            if cur is None:
-                mn = np.minimum.reduceat(Z, starts)
-                mx = np.maximum.reduceat(Z, starts)
-            else:
-                zz = np.where(cur, Z, np.inf)
-                mn = np.minimum.reduceat(zz, starts)
-                zz[~cur] = -np.inf
-                mx = np.maximum.reduceat(zz, starts)
-                del zz
-            ok = np.isfinite(mn)
-            lo[present[ok]] = mn[ok] + zt0[present[ok]]
-            hi[present[ok]] = mx[ok] + zt0[present[ok]]
-        return lo, hi
-
-    def _stats(self, cnt, sz, szz, cur):
-        """Per-tile count, min, max, mean, std of the kept heights."""
-        lo, hi = self._minmax(cur)
-        st = np.full((self.ntiles, 5), np.nan)
-        st[:, 0] = cnt
-        has = cnt > 0
-        mean = sz[has] / cnt[has]
-        st[has, 1] = lo[has]
-        st[has, 2] = hi[has]
-        st[has, 3] = mean + self.zt0[has]
-        st[has, 4] = np.sqrt(np.maximum(szz[has] / cnt[has] - mean ** 2, 0.0))
-        return st
-
-    def first_step(self, start) -> None:
-        """Record step 0 (all fitting rows) and the sums of the first kept set."""
-        N0, r0, szz0 = self._equations()
-        st0 = self._stats(N0[:, 0, 0], r0[:, 0], szz0, None)
-        self.steps = [st0]
-        self.agg = [_aggregate(st0, self.cnt0 > 0, "all fitting points",
-                               active_tiles=self.n_fit_tiles)]
-        self.prev = st0[:, 1:5]
-        if start is None:
-            self.cur = np.ones(self.T.size, dtype=bool)   # kept set within the pool
-            self.N, self.r, self.szz = N0, r0, szz0
-        else:
-            cur = np.asarray(start, dtype=bool)
-            self.cur = cur.copy() if self.pool is None else cur[self.pool]
-            self.N, self.r, self.szz = self._equations(self.cur)
-
-    def iterate(self, it: int, max_iterations: int, tolerance: float) -> None:
-        """Fit every live tile once, update its kept set, statistics and status."""
-        new_coef, solved = _solve(self.N, self.r, self.live & (self.N[:, 0, 0] >= self.p))
-        # a tile that cannot be solved any more keeps its previous surface
-        lost = self.live & ~solved
-        self.status[lost & (self.iterations > 0)] = 3
-        self.status[lost & (self.iterations == 0)] = 0
-        self.live &= solved
-        self.coef[self.live] = new_coef[self.live]
-        self.iterations[self.live] += 1
-        self._update_kept()
-        self._record(it, max_iterations, tolerance, lost)
-        self._compact()
-
-    def _update_kept(self) -> None:
-        ok = _within(self.coef, self.T, self.U, self.V, self.Z, self.H, self.order)
-        if self.cumulative:
-            ok &= self.cur                  # rows once rejected stay out
-        # (re-weighted: W = diag(v <= T) from every row's residual.) Rows of tiles
-        # that have stopped (or never started) keep their kept flag.
-        new = np.where(self.live.take(self.T), ok, self.cur)
-        del ok
-        # the kept set changed by a few rows: update the sums incrementally
-        for sel, sign in ((new & ~self.cur, 1.0), (self.cur & ~new, -1.0)):
-            if sel.any():
-                dN, dr, dszz = self._equations(sel)
-                self.N += sign * dN
-                self.r += sign * dr
-                self.szz += sign * dszz
-            del sel
-        self.cur = new
-
-    def _record(self, it, max_iterations, tolerance, lost) -> None:
-        live = self.live
-        cnt = np.rint(self.N[:, 0, 0])
-        st = self._stats(cnt, self.r[:, 0], self.szz, self.cur)
-        st[~live] = self.steps[-1][~live]   # finished tiles keep their last statistics
-        now = st[:, 1:5]
-        same = np.all(np.abs(now - self.prev) < tolerance, axis=1)
-        self.prev = now
-        self.steps.append(st)
-        self.agg.append(_aggregate(st, self.cnt0 > 0, f"iteration {it}",
-                                   active_tiles=int(live.sum())))
-        conv = live & same
-        self.status[conv] = 1
-        small = live & (cnt < self.p)       # too few kept points left: stop here
-        self.status[small] = 3
-        done = conv | small | lost
-        if it == max_iterations:
-            self.status[live & ~done] = 2
-            done |= live
-        live &= ~done
-
-    def _compact(self) -> None:
-        """Drop the rows of finished tiles once they are most of the pool."""
-        stay = self.live.take(self.T)
-        if stay.sum() >= 0.5 * self.T.size:
-            return
-        fin = ~stay
-        if self.pool is None:
-            self.kept[fin & self.cur] = True
-            self.pool = np.flatnonzero(stay)
-        else:
-            self.kept[self.pool[fin & self.cur]] = True
-            self.pool = self.pool[stay]
-        self.T, self.U, self.V = self.T[stay], self.U[stay], self.V[stay]
-        self.Z, self.cur = self.Z[stay], self.cur[stay]
-        if self.per_row:
-            self.H = self.H[stay]
-
-    def outcome(self) -> FitOutcome:
-        """Return the :class:`FitOutcome` (coefficients with ``zt0`` moved into b0)."""
-        if self.pool is None:
-            self.kept |= self.cur
-        else:
-            self.kept[self.pool[self.cur]] = True
-        coef_out = self.coef.copy()
-        coef_out[:, 0] = coef_out[:, 0] + self.zt0
-        coef_out[self.status == 0] = np.nan
-        return FitOutcome(coef_out, self.status, self.iterations, self.cnt0,
-                          np.stack(self.steps), self.agg, self.kept)
-
-
-def _aggregate(st, present, label, active_tiles=None) -> dict:
-    """Whole-cloud statistics of one step from per-tile statistics."""
-    cnt = np.nan_to_num(st[:, 0])
-    has = present & (cnt > 0)
-    n = cnt[has].sum()
-    if n == 0:
-        return dict(step=label, points=0, zmin=np.nan, zmax=np.nan, zmean=np.nan,
-                    std=np.nan, active_tiles=active_tiles)
-    m = st[has, 3]
-    s = st[has, 4]
-    mean = float((cnt[has] * m).sum() / n)
-    var = float((cnt[has] * (s * s + (m - mean) ** 2)).sum() / n)
-    return dict(step=label, points=int(n), zmin=float(np.nanmin(st[has, 1])),
-                zmax=float(np.nanmax(st[has, 2])), zmean=mean, std=float(np.sqrt(var)),
-                active_tiles=active_tiles)
 
 
 @dataclass
@@ -679,85 +204,42 @@ def _validate(x, y, z, order, tile_size, threshold, max_iterations, tolerance, s
     x, y, z = as_xyz(x, y, z, empty_error="The point cloud is empty: there is nothing to "
                      "filter. Choose a file that holds points.", projected=True)
     if int(order) not in (1, 2) or int(order) != order:
-        raise ValueError(f"ORDER must be 1 or 2 (the paper's planar or quadratic "
-                         f"surface), got {order}.")
+        raise InputError("ORDER must be 1 or 2 (the paper's planar or quadratic "
+                         "surface), got {order}.", order=order)
     for name, val in (("TILE_SIZE", tile_size), ("THRESHOLD", threshold)):
         if val is None or not np.isfinite(val) or val <= 0:
-            raise ValueError(f"{name} must be a positive number of metres, got {val}. "
-                             + ("Use about the size of the largest building (e.g. 50)."
-                                if name == "TILE_SIZE" else
-                                "Use 0.5 to 1.0 m (larger on steeper terrain)."))
+            if name == "TILE_SIZE":
+                raise InputError("TILE_SIZE must be a positive number of metres, got "
+                                 "{value}. Use about the size of the largest building "
+                                 "(e.g. 50).", value=val)
+            raise InputError("THRESHOLD must be a positive number of metres, got {value}. "
+                             "Use 0.5 to 1.0 m (larger on steeper terrain).", value=val)
     if int(max_iterations) < 1:
-        raise ValueError(f"max_iterations must be at least 1, got {max_iterations}.")
+        raise InputError("max_iterations must be at least 1, got {value}.",
+                         value=max_iterations)
     if not np.isfinite(tolerance) or tolerance <= 0:
-        raise ValueError(f"tolerance must be a positive number of metres, got {tolerance}.")
+        raise InputError("tolerance must be a positive number of metres, got {value}.",
+                         value=tolerance)
     p = n_coefficients(order)
     if subset_size is not None and int(subset_size) < p:
-        raise ValueError(f"subset_size must be at least {p} points for order {order} "
-                         f"(or None to fit all points), got {subset_size}.")
+        raise InputError("subset_size must be at least {p} points for order {order} "
+                         "(or None to fit all points), got {value}.", p=p, order=order,
+                         value=subset_size)
     if mode not in ("faithful", "improved"):
-        raise ValueError(f"mode must be 'faithful' or 'improved', got {mode!r}.")
+        raise InputError("mode must be one of {choices}, got {mode}.",
+                         choices="faithful, improved", mode=repr(mode))
     if rejection not in ("reweighted", "cumulative"):
-        raise ValueError(f"rejection must be 'reweighted' or 'cumulative', got {rejection!r}.")
+        raise InputError("rejection must be 'reweighted' or 'cumulative', got {value}.",
+                         value=repr(rejection))
     if sparse_tiles not in ("borrow", "unclassified"):
-        raise ValueError(f"sparse_tiles must be 'borrow' or 'unclassified', got "
-                         f"{sparse_tiles!r}.")
+        raise InputError("sparse_tiles must be 'borrow' or 'unclassified', got {value}.",
+                         value=repr(sparse_tiles))
     ext = max(x.max() - x.min(), y.max() - y.min())
     if ext / tile_size > 1e6:
-        raise ValueError(f"TILE_SIZE {tile_size} m cuts the {ext:.0f} m extent into more "
+        raise InputError("TILE_SIZE {tile_size} m cuts the {extent} m extent into more "
                          "than a million tiles per side; use a tile size of metres to "
-                         "hundreds of metres.")
+                         "hundreds of metres.", tile_size=tile_size, extent=f"{ext:.0f}")
     return x, y, z
-
-
-def _random_subset(tid_sorted, subset_size, seed):
-    """Per tile, a random subset of at most ``subset_size`` rows (mask, sorted rows)."""
-    rng = np.random.default_rng(seed)
-    key = rng.random(tid_sorted.size)
-    o = np.lexsort((key, tid_sorted))
-    starts = np.flatnonzero(np.r_[True, tid_sorted[o][1:] != tid_sorted[o][:-1]])
-    counts = np.diff(np.r_[starts, o.size])
-    rank = np.arange(o.size) - np.repeat(starts, counts)
-    mask = np.zeros(tid_sorted.size, dtype=bool)
-    mask[o[rank < int(subset_size)]] = True
-    return mask
-
-
-def _borrow(coef, solved, grid):
-    """Index of the tile whose surface each tile uses (itself, or nearest fitted)."""
-    src = np.arange(grid.count)
-    missing = np.flatnonzero(~solved)
-    if missing.size and solved.any():
-        from scipy.spatial import cKDTree
-        good = np.flatnonzero(solved)
-        c = grid.centres
-        _, j = cKDTree(c[good]).query(c[missing])
-        src[missing] = good[j]
-    return src
-
-
-def _surface_at(x, y, grid, coef, src, tid, order):
-    """ẑ and |∇ẑ| of each point from the surface of tile ``src[tid]``."""
-    s = src[tid]
-    u, v = grid.local(s, x, y)
-    zhat = _eval(coef, s, u, v, order)
-    slope = _grad(coef, s, u, v, order, grid.size / 2.0)
-    far = (np.abs(u) > 1) | (np.abs(v) > 1)
-    if far.any():
-        # borrowed surface outside its own tile: continue it linearly from the tile
-        # edge (tangent plane) instead of extrapolating the quadratic
-        sf = s[far]
-        uc, vc = np.clip(u[far], -1, 1), np.clip(v[far], -1, 1)
-        c = coef
-        if order == 1:
-            gu, gv = c[sf, 1], c[sf, 2]
-        else:
-            gu = 2 * c[sf, 1] * uc + c[sf, 3] * vc + c[sf, 4]
-            gv = 2 * c[sf, 2] * vc + c[sf, 3] * uc + c[sf, 5]
-        zhat[far] = (_eval(coef, sf, uc, vc, order) + gu * (u[far] - uc)
-                     + gv * (v[far] - vc))
-        slope[far] = np.hypot(gu, gv) / (grid.size / 2.0)
-    return zhat, slope
 
 
 def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
@@ -879,9 +361,10 @@ def _fit_points(x, y, z, order, noise, noise_radius, noise_threshold, mon, timin
     n_fit = n - int(is_noise.sum())
     p = n_coefficients(order)
     if n_fit < p:
-        raise ValueError(f"Too few points: only {n_fit} point(s) are left for fitting "
-                         f"and an order-{order} surface needs at least {p} in a tile. Use "
-                         "ORDER 1, a larger cloud, or switch the noise pre-filter off.")
+        raise InputError("Too few points: only {n} point(s) are left for fitting "
+                         "and an order-{order} surface needs at least {p} in a tile. Use "
+                         "ORDER 1, a larger cloud, or switch the noise pre-filter off.",
+                         n=n_fit, order=order, p=p)
     return is_noise, (None if n_fit == n else np.flatnonzero(~is_noise))
 
 
@@ -894,13 +377,15 @@ def _improved_options(levels, overlap, slope_factor, slope_cap, blend) -> dict:
     cap = float(d["slope_cap"] if slope_cap is None else slope_cap)
     bl = bool(d["blend"] if blend is None else blend)
     if not lv or any((not np.isfinite(f)) or f <= 0 for f in lv):
-        raise ValueError(f"levels must be positive fractions of tile_size, got {lv}.")
+        raise InputError("levels must be positive fractions of tile_size, got {value}.",
+                         value=lv)
     if not (0 <= ov <= 2):
-        raise ValueError(f"overlap must be between 0 and 2 (fraction of a tile), got {ov}.")
+        raise InputError("overlap must be between 0 and 2 (fraction of a tile), got "
+                         "{value}.", value=ov)
     if not np.isfinite(sf) or sf < 0:
-        raise ValueError(f"slope_factor must be ≥ 0, got {sf}.")
+        raise InputError("slope_factor must be ≥ 0, got {value}.", value=sf)
     if not (cap >= 0):
-        raise ValueError(f"slope_cap must be ≥ 0 metres, got {cap}.")
+        raise InputError("slope_cap must be ≥ 0 metres, got {value}.", value=cap)
     return dict(levels=lv, overlap=ov, slope_factor=sf, slope_cap=cap, blend=bl)
 
 
@@ -928,234 +413,6 @@ def _origin(x, y, origin, tile_size, levels):
     ox, oy = float(origin[0]), float(origin[1])
     return (ox + np.floor((x0 - ox) / period) * period,
             oy + np.floor((y0 - oy) / period) * period)
-
-
-def _too_few(order, min_points, npoints, n) -> ValueError:
-    p = n_coefficients(order)
-    mp = 3 * p if min_points is None else max(int(min_points), p)
-    return ValueError(
-        f"Too few points: no tile has enough well-spread points to fit an order-{order} "
-        f"surface (at least {mp} per tile, not all on one line; the fullest tile has "
-        f"{int(npoints.max())} of the {n} points). Use a larger TILE_SIZE, ORDER 1, or a "
-        "denser cloud.")
-
-
-def _faithful(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterations,
-              tolerance, subset_size, seed, min_points, sparse_tiles, rejection, mon,
-              timings):
-    t0 = time.perf_counter()
-    n = x.size
-    tid_all, grid = _tile_index(x, y, x0, y0, tile_size)
-    if fit_pts is None:
-        rows = np.argsort(tid_all, kind="stable")
-        T = tid_all[rows]
-    else:
-        ft = tid_all[fit_pts]
-        o = np.argsort(ft, kind="stable")
-        rows = fit_pts[o]
-        T = ft[o]
-        del o, ft
-    u, v = grid.local(T, x[rows], y[rows])
-    Z = z[rows]
-    del rows
-    active = None
-    if subset_size is not None:
-        active = _random_subset(T, subset_size, seed)
-    timings["tiling"] = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    out = fit_tiles(T, u, v, Z, grid.count, order=order, threshold=threshold,
-                    max_iterations=max_iterations, tolerance=tolerance,
-                    min_points=min_points, active=active, rejection=rejection,
-                    mon=mon.sub(0.0, 0.85))
-    del u, v, Z, T
-    timings["fitting"] = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    solved = out.status != 0
-    if not solved.any():
-        raise _too_few(order, min_points, out.npoints, n)
-    status = out.status.copy()
-    if sparse_tiles == "borrow":
-        src = _borrow(out.coef, solved, grid)
-        status[~solved] = -1
-    else:
-        src = np.arange(grid.count)
-    surface = np.full(n, np.nan)
-    blk = 2_000_000
-    for s in range(0, n, blk):
-        mon.step(0.85 + 0.15 * s / n)
-        sl = slice(s, s + blk)
-        surface[sl] = _surface_at(x[sl], y[sl], grid, out.coef, src, tid_all[sl], order)[0]
-    del tid_all
-    ground = z <= surface + threshold          # NaN surface → False
-    thr = np.broadcast_to(np.float64(threshold), (n,))   # one value, no n-array
-    timings["classification"] = time.perf_counter() - t0
-    extra = dict(grid=grid, coefficients=out.coef, tile_status=status,
-                 tile_iterations=out.iterations, tile_points=out.npoints,
-                 tile_stats=out.stats, iteration_stats=out.agg)
-    return ground, surface, thr, extra
-
-
-def _window_rows(x, y, pts, x0, y0, size, overlap):
-    """Replicate points into every overlapping fitting window that holds them.
-
-    The window of tile ``(i, j)`` is the tile grown by ``overlap × size`` on every
-    side. Returns ``(tile_key, point_index, nx_keys)`` for the rows, sorted by key,
-    where ``key = i * ny + j``.
-    """
-    fx = (x[pts] - x0) / size
-    fy = (y[pts] - y0) / size
-    ix = np.floor(fx).astype(np.int64)
-    iy = np.floor(fy).astype(np.int64)
-    reach = int(np.ceil(overlap)) if overlap > 0 else 0
-    ny = int(np.floor((y[pts].max() - y0) / size)) + 2 + reach
-    keys, idx = [], []
-    for di in range(-reach, reach + 1):
-        for dj in range(-reach, reach + 1):
-            ti, tj = ix + di, iy + dj
-            inside = ((np.abs(fx - (ti + 0.5)) <= 0.5 + overlap)
-                      & (np.abs(fy - (tj + 0.5)) <= 0.5 + overlap) & (ti >= 0) & (tj >= 0))
-            keys.append((ti * ny + tj)[inside])
-            idx.append(pts[inside])
-    keys = np.concatenate(keys)
-    idx = np.concatenate(idx)
-    o = np.argsort(keys, kind="stable")
-    return keys[o], idx[o], ny
-
-
-def _blend(x, y, x0, y0, size, ny, ukeys, coef, solved, order, bilinear=True,
-           chunk=2_000_000):
-    """Surface blended between tile centres (bilinear partition of unity).
-
-    Every point takes the surfaces of the four tiles whose centres surround it,
-    each evaluated at the point, weighted bilinearly by distance to the centres;
-    missing or unsolved tiles get weight 0 (the others are renormalised). Returns
-    ``(zhat, slope)``; NaN where no surrounding tile has a surface.
-    """
-    n = x.size
-    zhat = np.full(n, np.nan)
-    slope = np.zeros(n)
-    h = size / 2.0
-    for s in range(0, n, chunk):
-        xs, ys = x[s:s + chunk], y[s:s + chunk]
-        fx = (xs - x0) / size - 0.5
-        fy = (ys - y0) / size - 0.5
-        i0 = np.floor(fx).astype(np.int64)
-        j0 = np.floor(fy).astype(np.int64)
-        tx, ty = fx - i0, fy - j0
-        acc = np.zeros(xs.size)
-        gacc = np.zeros(xs.size)
-        wsum = np.zeros(xs.size)
-        own_z = np.full(xs.size, np.nan)
-        own_g = np.zeros(xs.size)
-        if bilinear:
-            corners = ((0, 0, (1 - tx) * (1 - ty)), (1, 0, tx * (1 - ty)),
-                       (0, 1, (1 - tx) * ty), (1, 1, tx * ty))
-        else:   # the point's own tile, fallback to the nearest neighbours
-            own_i = np.floor(fx + 0.5).astype(np.int64) - i0
-            own_j = np.floor(fy + 0.5).astype(np.int64) - j0
-            corners = tuple((di, dj, np.where((own_i == di) & (own_j == dj), 1.0, 1e-6))
-                            for di in (0, 1) for dj in (0, 1))
-        for di, dj, w in corners:
-            ti, tj = i0 + di, j0 + dj
-            key = ti * ny + tj
-            pos = np.minimum(np.searchsorted(ukeys, key), ukeys.size - 1)
-            hit = (ukeys[pos] == key) & (ti >= 0) & (tj >= 0)
-            hit &= solved[pos]
-            if not hit.any():
-                continue
-            k = pos[hit]
-            u = (xs[hit] - (x0 + (ti[hit] + 0.5) * size)) / h
-            v = (ys[hit] - (y0 + (tj[hit] + 0.5) * size)) / h
-            ww = w[hit]
-            val, grd = _eval(coef, k, u, v, order), _grad(coef, k, u, v, order, h)
-            acc[hit] += ww * val
-            gacc[hit] += ww * grd
-            wsum[hit] += ww
-            if not bilinear:        # the own tile alone where it is solved (see below)
-                mine = ww == 1.0
-                own_z[np.flatnonzero(hit)[mine]] = val[mine]
-                own_g[np.flatnonzero(hit)[mine]] = grd[mine]
-        good = wsum > 0
-        zz = np.full(xs.size, np.nan)
-        zz[good] = acc[good] / wsum[good]
-        gg = np.zeros(xs.size)
-        gg[good] = gacc[good] / wsum[good]
-        if not bilinear:
-            # no 1e-6 leak of the neighbours into a solved tile: a tile's surface then
-            # depends on its own window only, so a catalog chunk equals the merged run
-            # away from its buffer edge (the leak grew across levels into class flips)
-            mine = np.isfinite(own_z)
-            zz[mine], gg[mine] = own_z[mine], own_g[mine]
-        zhat[s:s + chunk] = zz
-        slope[s:s + chunk] = gg
-    return zhat, slope
-
-
-def _improved(x, y, z, fit_pts, x0, y0, order, tile_size, threshold, max_iterations,
-              tolerance, subset_size, seed, min_points, sparse_tiles, levels, overlap,
-              slope_factor, slope_cap, blend, rejection, mon, timings):
-    """Coarse-to-fine, overlapping, blended, slope-adaptive LSQ (ours, see module doc)."""
-    n = x.size
-    p = n_coefficients(order)
-    if fit_pts is None:
-        fit_pts = np.arange(n)
-    seeds = None                              # bool per point: ground of the previous level
-    surface = slope = None
-    level_info = []
-    nlev = len(levels)
-    out = None
-    for k, frac in enumerate(levels):
-        lm = mon.sub(k / nlev, (k + 1) / nlev)
-        t0 = time.perf_counter()
-        size = tile_size * float(frac)
-        keys, idx, ny = _window_rows(x, y, fit_pts, x0, y0, size, overlap)
-        ukeys, T = np.unique(keys, return_inverse=True)
-        T = T.astype(np.int64)
-        del keys
-        ix, iy = ukeys // ny, ukeys % ny
-        h = size / 2.0
-        U = (x[idx] - (x0 + (ix[T] + 0.5) * size)) / h
-        V = (y[idx] - (y0 + (iy[T] + 0.5) * size)) / h
-        active = None
-        if subset_size is not None:
-            active = _random_subset(T, subset_size, seed)
-        rthr = threshold if slope is None else threshold + slope_factor * slope[idx]
-        out = fit_tiles(T, U, V, z[idx], ukeys.size, order=order, threshold=rthr,
-                        max_iterations=max_iterations, tolerance=tolerance,
-                        min_points=min_points, active=active, rejection=rejection,
-                        start=None if seeds is None else seeds[idx], mon=lm.sub(0.0, 0.8))
-        solved = out.status != 0
-        del T, U, V, idx
-        if not solved.any():
-            if k == 0:
-                raise _too_few(order, min_points, out.npoints, n)
-            break
-        zh, sl = _blend(x, y, x0, y0, size, ny, ukeys, out.coef, solved, order,
-                        bilinear=blend)
-        lm.step(0.95)
-        if surface is not None:
-            # where the finer level has no surface, keep the coarser one
-            miss = np.isnan(zh)
-            zh[miss] = surface[miss]
-            sl[miss] = slope[miss]
-        surface, slope = zh, sl
-        thr = threshold + np.minimum(slope_factor * slope, slope_cap)
-        # seed of the next level: this level's ground (and everything below it)
-        seeds = z <= surface + thr
-        seed_n = int(seeds[fit_pts].sum())
-        grid = TileGrid(float(x0), float(y0), float(size), ix, iy)
-        level_info.append(dict(level=k + 1, tile_size=size, tiles=int(ukeys.size),
-                               fitted=int(solved.sum()), seed_points=seed_n,
-                               seconds=time.perf_counter() - t0))
-        if seed_n < p:
-            break
-    ground = z <= surface + thr
-    status = out.status.copy()
-    status[status == 0] = -1        # their points took the neighbouring tiles' surfaces
-    extra = dict(grid=grid, coefficients=out.coef, tile_status=status,
-                 tile_iterations=out.iterations, tile_points=out.npoints,
-                 tile_stats=out.stats, iteration_stats=out.agg, levels=level_info)
-    return ground, surface, thr, extra
 
 
 # ============================================================================ pipeline object
@@ -1250,24 +507,22 @@ class LsqFilter(GroundFilter):
         super().__init__(options or LsqOptions())
 
     def classify(self, x, y, z, *, return_number=None, number_of_returns=None,
+                 classification=None, origin=None,
                  monitor: Optional[Monitor] = None) -> FilterOutcome:
         """Run :func:`lsq_ground_filter` (classes 2, 1, 0) on the selected points."""
         mon = monitor or Monitor()
-        res = lsq_ground_filter(x, y, z, **vars(self.options), noise=False,
+        res = lsq_ground_filter(x, y, z, **vars(self.options), noise=False, origin=origin,
                                 progress=mon.update, cancel=mon.cancelled)
         return FilterOutcome(res.classification, details=res)
 
     def settings(self) -> List[tuple]:
         """Report rows of the options, with the values the filter resolved."""
-        from .lsq_report import lsq_settings
         return lsq_settings(self.options)
 
     def report_sections(self, run, report, tr) -> None:
         """Append the iterations, levels, fullest tile, tile map and status table."""
-        from .lsq_report import lsq_sections
         lsq_sections(run.outcome.details, report, tr)
 
     def text_outputs(self, run) -> Dict[str, str]:
         """``{"csv": per-tile iteration table}``."""
-        from .lsq_report import tile_csv
         return {"csv": tile_csv(run.outcome.details)}

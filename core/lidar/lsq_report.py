@@ -13,6 +13,7 @@ from typing import List
 import numpy as np
 
 from ..reporting import Paragraph, T, Table
+from ._lsq_fit import STATUS_NAMES, TERMS
 
 MAX_TILE_ROWS = 200
 STATUS_LABELS = {"too few points": "too few points", "converged": "converged",
@@ -32,7 +33,6 @@ def lsq_settings(opt) -> List[tuple]:
     list of tuple
         ``(label, value)`` rows.
     """
-    from .lsq import TERMS
     poly = " + ".join(f"b{i}·{t}" if t != "1" else "b0" for i, t in enumerate(TERMS[opt.order]))
     return [("Mode", T("Faithful (paper)") if opt.mode == "faithful"
              else T("Improved (coarse-to-fine, slope-adaptive)")),
@@ -97,7 +97,6 @@ def lsq_sections(res, report, tr) -> None:
 
 
 def _tile_sections(res, report, order, tr) -> None:
-    from .lsq import STATUS_NAMES
     sec = report.section("Tiles")
     _tile_map(res, sec, tr)
     sec.add(Table(["Status", "Tiles"], [(T(k), v) for k, v in res.status_counts().items()]))
@@ -118,7 +117,6 @@ def _tile_sections(res, report, order, tr) -> None:
 def _tile_map(res, sec, tr) -> None:
     """Add the tile-status map (converged, iteration cap, too few points, ...)."""
     from .figures import tile_map
-    from .lsq import STATUS_NAMES
     sec.add(tile_map(res.grid, res.tile_status, tr, STATUS_NAMES))
 
 
@@ -136,7 +134,6 @@ def tile_csv(res) -> str:
         CSV text with the tile's final coefficients (tile coordinates, paper's term
         order).
     """
-    from .lsq import STATUS_NAMES, TERMS
     fh = io.StringIO()
     w = csv.writer(fh, lineterminator="\n")
     terms = TERMS[res.params["order"]]

@@ -48,6 +48,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from ..coords import as_xyz
+from ..errors import InputError
 from ..progress import Monitor
 
 __all__ = ["flag_low_outliers", "NOISE_CLASS"]
@@ -139,7 +140,7 @@ def _knn_reference(x, y, z, query, kk, rank, workers):
 
 def flag_low_outliers(x, y, z, *, radius: float = 5.0, threshold: float = 1.0,
                       min_neighbors: int = 4, max_cluster: int = 3,
-                      max_iterations: int = 3, workers: int = 1,
+                      max_iterations: int = 3, workers: int = 1, origin=None,
                       progress=None, cancel=None) -> np.ndarray:
     """Flag points far below their horizontal neighbourhood (low noise, class 7).
 
@@ -168,6 +169,10 @@ def flag_low_outliers(x, y, z, *, radius: float = 5.0, threshold: float = 1.0,
         nothing new is found.
     workers : int, default 1
         Threads for the k-d tree queries of the sparse fallback (-1 = all cores).
+    origin : (float, float), optional
+        Anchors the cells on the lattice through this point (default: the cloud's
+        lower-left corner), so that the chunks of a catalog flag the same points as
+        the merged cloud.
     progress, cancel : callable, optional
         ``progress(fraction)`` and ``cancel() -> bool``; see
         :class:`~.progress.Monitor`.
@@ -210,7 +215,7 @@ def flag_low_outliers(x, y, z, *, radius: float = 5.0, threshold: float = 1.0,
     if x.size <= int(min_neighbors):
         mon.update(1.0)
         return flagged
-    grid = _CellKeys.of(x, y, float(radius))
+    grid = _CellKeys.of(x, y, float(radius), origin)
     opts = dict(rank=int(max_cluster) - 1, min_neighbors=int(min_neighbors),
                 threshold=float(threshold), workers=workers)
     new_idx = None                          # points flagged by the previous pass
@@ -228,16 +233,20 @@ def flag_low_outliers(x, y, z, *, radius: float = 5.0, threshold: float = 1.0,
 def _check_options(radius, threshold, min_neighbors, max_cluster, max_iterations) -> None:
     """Raise ValueError naming the first invalid option of :func:`flag_low_outliers`."""
     if not np.isfinite(radius) or radius <= 0:
-        raise ValueError(f"radius must be a positive number of metres, got {radius}.")
+        raise InputError("radius must be a positive number of metres, got {value}.",
+                         value=radius)
     if not np.isfinite(threshold) or threshold <= 0:
-        raise ValueError(f"threshold must be a positive number of metres, got {threshold}.")
+        raise InputError("threshold must be a positive number of metres, got {value}.",
+                         value=threshold)
     if int(max_cluster) < 1:
-        raise ValueError(f"max_cluster must be at least 1, got {max_cluster}.")
+        raise InputError("max_cluster must be at least 1, got {value}.", value=max_cluster)
     if int(min_neighbors) <= int(max_cluster):
-        raise ValueError(f"min_neighbors ({min_neighbors}) must exceed max_cluster "
-                         f"({max_cluster}); raise min_neighbors.")
+        raise InputError("min_neighbors ({min_neighbors}) must exceed max_cluster "
+                         "({max_cluster}); raise min_neighbors.", min_neighbors=min_neighbors,
+                         max_cluster=max_cluster)
     if int(max_iterations) < 1:
-        raise ValueError(f"max_iterations must be at least 1, got {max_iterations}.")
+        raise InputError("max_iterations must be at least 1, got {value}.",
+                         value=max_iterations)
 
 
 @dataclass(frozen=True)
@@ -250,9 +259,12 @@ class _CellKeys:
     offs: dict          # block radius (1, 2) -> key offsets of the (2r+1)^2 block
 
     @classmethod
-    def of(cls, x, y, cell: float) -> _CellKeys:
-        """Return the keys of the points ``x, y``."""
+    def of(cls, x, y, cell: float, anchor=None) -> _CellKeys:
+        """Return the keys of the points ``x, y`` (cells on ``anchor``'s lattice)."""
         origin = (float(x.min()), float(y.min()))
+        if anchor is not None:
+            origin = tuple(float(a) + np.floor((o - float(a)) / cell) * cell
+                           for o, a in zip(origin, anchor))
         gy = np.floor((y - origin[1]) / cell).astype(np.int64)
         ny = int(gy.max()) + 5
         key = np.floor((x - origin[0]) / cell).astype(np.int64) * ny + gy

@@ -40,19 +40,19 @@ from typing import Optional
 
 import numpy as np
 
+from ..classes import GROUND, LOW_NOISE
+from ..classes import UNCLASSIFIED as OBJECT
 from ..errors import InputError
 from ..progress import Cancelled, Monitor
 from ..reporting import T
 from . import _raster as R  # noqa: N812
 from . import _tin
-from .recommended import OptionsFilter, _options
+from ._filter import OptionsFilter
+from ._filter import options_or_default as _options
 
 __all__ = ["PtdOptions", "classify", "classify_with_tin", "ptd_filter", "Cancelled",
            "CITATION", "TITLE"]
 
-GROUND = np.uint8(2)
-OBJECT = np.uint8(1)
-LOW_NOISE = np.uint8(7)
 TITLE = "Ground filter (progressive TIN densification)"
 CITATION = T("Reference: {ref}", ref="Axelsson, P. (2000). DEM generation from laser scanner "
              "data using adaptive TIN models. IAPRS XXXIII-B4, 110–117.")
@@ -132,7 +132,7 @@ class PtdOptions:
 
 
 def classify(x, y, z, *, return_number=None, number_of_returns=None, options=None,
-             progress=None, cancel=None) -> np.ndarray:
+             progress=None, cancel=None, origin=None) -> np.ndarray:
     """Classify ground by progressive TIN densification (Axelsson 2000).
 
     Parameters
@@ -147,6 +147,9 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
         Receives the fraction done in [0, 1].
     cancel : callable() -> bool, optional
         Polled between steps; when it returns True, :class:`Cancelled` is raised.
+    origin : (float, float), optional
+        Anchors the cells and parcels on the lattice through this point (catalog
+        chunks equal the merged cloud); default: the cloud's lower-left corner.
 
     Returns
     -------
@@ -161,11 +164,11 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
         When ``cancel()`` returned True.
     """
     cls, _ = classify_with_tin(x, y, z, options=options, progress=progress,
-                               cancel=cancel)
+                               cancel=cancel, origin=origin)
     return cls
 
 
-def classify_with_tin(x, y, z, *, options=None, progress=None, cancel=None):
+def classify_with_tin(x, y, z, *, options=None, progress=None, cancel=None, origin=None):
     """As :func:`classify`, also returning the final TIN vertices.
 
     Returns
@@ -179,6 +182,9 @@ def classify_with_tin(x, y, z, *, options=None, progress=None, cancel=None):
     rep = Monitor(progress, cancel).step
     rep(0.0)
     x0, y0 = x.min(), y.min()
+    if origin is not None:     # a period holding whole cells, parcels and half parcels
+        period = 2.0 * opt.max_building * opt.cell
+        x0, y0 = R.snap_down(x0, origin[0], period), R.snap_down(y0, origin[1], period)
     xs, ys = x - x0, y - y0                       # local coordinates for Qhull
     uniq = _tin.dedupe_xy(xs, ys, z)
     seeds, pool = initial_ground(xs, ys, z, uniq, opt)

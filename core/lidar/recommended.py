@@ -79,20 +79,20 @@ from typing import Optional
 import numpy as np
 from scipy import ndimage
 
+from ..classes import GROUND, LOW_NOISE
+from ..classes import UNCLASSIFIED as OBJECT
 from ..errors import InputError
 from ..progress import Cancelled, Monitor
 from ..reporting import T
 from . import _lowcells as L  # noqa: N812
 from . import _raster as R  # noqa: N812
 from . import _surface as S  # noqa: N812
-from .pipeline import FunctionFilter
+from ._filter import FunctionFilter, OptionsFilter
+from ._filter import options_or_default as _options
 
 __all__ = ["RecommendedOptions", "classify", "derive", "recommended_filter", "OptionsFilter",
            "Cancelled", "CITATION", "TITLE"]
 
-GROUND = np.uint8(2)
-OBJECT = np.uint8(1)
-LOW_NOISE = np.uint8(7)
 TITLE = "Ground filter (recommended)"
 CITATION = T("References: {ref}", ref=(
     "Pingel, T. J., Clarke, K. C. & McBride, W. A. (2013). An improved simple morphological "
@@ -247,7 +247,7 @@ def derive(x, y, opt: RecommendedOptions) -> RecommendedOptions:
 
 
 def classify(x, y, z, *, return_number=None, number_of_returns=None, options=None,
-             progress=None, cancel=None) -> np.ndarray:
+             progress=None, cancel=None, origin=None) -> np.ndarray:
     """Classify ground with the recommended, cloud-adaptive morphological filter.
 
     Parameters
@@ -262,6 +262,9 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
         Receives the fraction done in [0, 1].
     cancel : callable() -> bool, optional
         Polled between steps; when it returns True, :class:`Cancelled` is raised.
+    origin : (float, float), optional
+        Anchors the raster on the lattice through this point (catalog chunks equal
+        the merged cloud); default: the cloud's lower-left corner.
 
     Returns
     -------
@@ -285,7 +288,7 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     rep = Monitor(progress, cancel).step
     rep(0.0)
     opt = derive(x, y, opt)
-    pc = R.PointCells(x, y, R.Grid.around(x, y, opt.cell))
+    pc = R.PointCells(x, y, R.Grid.around(x, y, opt.cell, origin=origin))
     zmin = pc.cell_min(z)
     rep(0.3)
     dtm = surface(zmin, pc.grid, opt, rep)
@@ -297,15 +300,6 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
         cls = label_points(z, fill_holes(zg, ~np.isnan(zg), pc.grid, opt), pc, opt)
     rep(1.0)
     return cls
-
-
-def _options(options, cls):
-    """``options`` if given (must be a ``cls``), else ``cls()``."""
-    if options is None:
-        return cls()
-    if not isinstance(options, cls):
-        raise TypeError(f"options must be a {cls.__name__}, got {type(options).__name__}")
-    return options
 
 
 def surface(zmin, grid, opt, rep):
@@ -560,29 +554,6 @@ def label_points(z, dtm, pc, opt):
     np.maximum(tol, opt.low_noise_depth, out=tol)
     cls[dz < -tol] = LOW_NOISE
     return cls
-
-
-class OptionsFilter(FunctionFilter):
-    """A :class:`~.pipeline.FunctionFilter` whose report rows have labels and units.
-
-    Parameters
-    ----------
-    func, options, name, title, citation
-        As :class:`~.pipeline.FunctionFilter`.
-    labels : dict of str to str
-        Report label (an English message id) per options field; fields left out are
-        not shown.
-    """
-
-    def __init__(self, func, options, *, name, title, citation, labels):
-        super().__init__(func, options, name=name, title=title, citation=citation)
-        self.labels = labels
-
-    def settings(self):
-        """Report rows ``(label, value)``; None shows as 'derived from the cloud'."""
-        from ..reporting import T
-        return [(label, T("derived from the cloud") if getattr(self.options, f) is None
-                 else getattr(self.options, f)) for f, label in self.labels.items()]
 
 
 LABELS = {"cell": "Raster cell (m)", "max_window": "Largest window (m)",

@@ -7,10 +7,11 @@ setting) go through one :class:`~..io.contract.OutputContract`.
 """
 from __future__ import annotations
 
+import math
 import os
 import time
 from dataclasses import dataclass, field
-from typing import Dict, Optional, Sequence
+from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
@@ -29,7 +30,19 @@ from ..reporting import (
     translator,
 )
 from . import slope as sf
-from .accuracy import error_codes, ground_mask
+from ._slope_kernel import (
+    _bounded_max_slope,
+    _check_height,
+    _check_radius,
+    _check_slope,
+    _mask,
+    _Stats,
+    _take,
+    _tan,
+    _xyz,
+    allowed_rise,
+)
+from .accuracy import assess, error_codes, ground_mask
 from .figures import error_map, sweep_plot
 from .pipeline import (
     GROUND_CLASS,
@@ -39,15 +52,185 @@ from .pipeline import (
     read_cloud,
     select_points,
 )
+from .slope import (
+    DEFAULT_HEIGHT_TOLERANCE,
+    DEFAULT_RADIUS,
+    MODES,
+    SLOPE_METRICS,
+    terrain_trend,
+)
 
-__all__ = ["sweep_file", "SweepSummary", "sweep_report"]
+__all__ = ["sweep_file", "SweepSummary", "sweep_report", "SweepRow", "SweepResult",
+           "threshold_sweep"]
+
+
+@dataclass
+class SweepRow:
+    """One setting of the sweep and its accuracy against the reference."""
+
+    radius: float
+    slope: float
+    height_tolerance: float
+    allowed_rise: float
+    n_ground: int
+    a: int
+    b: int
+    c: int
+    d: int
+    type1: float
+    type2: float
+    total: float
+    kappa: float
+
+    def as_dict(self) -> dict:
+        """Return the row as a dict."""
+        return dict(self.__dict__)
+
+
+@dataclass
+class SweepResult:
+    """All rows of a sweep and the best one by ``metric``."""
+
+    rows: List[SweepRow]
+    metric: str
+    best: SweepRow
+    n_points: int
+    n_reference_ground: int
+    mode: str
+    best_ground: Optional[np.ndarray] = None
+
+    HEADERS = ("radius_m", "slope_deg", "height_tolerance_m", "allowed_rise_at_r_m",
+               "n_ground", "a", "b", "c", "d", "type1_pct", "type2_pct", "total_pct",
+               "kappa_pct")
+
+    def table(self) -> List[tuple]:
+        """Return one tuple per setting, in the order of :attr:`HEADERS`."""
+        return [(r.radius, r.slope, r.height_tolerance, r.allowed_rise, r.n_ground, r.a, r.b,
+                 r.c, r.d, r.type1, r.type2, r.total, r.kappa) for r in self.rows]
+
+    def to_csv(self) -> str:
+        """CSV text (comma separated, '.' decimals, header row)."""
+        lines = [",".join(self.HEADERS)]
+        for row in self.table():
+            cells = []
+            for v in row:
+                if isinstance(v, (int, np.integer)):
+                    cells.append(str(int(v)))
+                else:
+                    cells.append("" if not math.isfinite(v) else f"{v:.6g}")
+            lines.append(",".join(cells))
+        return "\n".join(lines) + "\n"
+
+
+def _metric_key(row: SweepRow, metric: str) -> float:
+    val = getattr(row, metric)
+    if not math.isfinite(val):
+        return math.inf
+    return -val if SLOPE_METRICS[metric] else val
+
+
+def threshold_sweep(x, y, z, reference_ground, *, slopes: Sequence[float] = (
+        40, 44, 48, 52, 56, 60), radii: Sequence[float] = (DEFAULT_RADIUS,),
+        height_tolerance=DEFAULT_HEIGHT_TOLERANCE, classify=None, neighbours=None,
+        mode: str = "exact", metric: str = "total", trend_cell: float = 10.0,
+        trend_window: float = 60.0, progress=None, cancel=None) -> SweepResult:
+    """Filter accuracy for every (radius, slope) setting, one neighbourhood pass per radius.
+
+    For each radius the exact per-point required slope ``S_i`` is computed once
+    over the range of the thresholds (:func:`max_slope`); every threshold is
+    then a single comparison ``S_i > tan(theta)`` giving labels identical to
+    :func:`slope_filter` with that setting. Points outside ``classify`` count as
+    non-ground. Errors follow Sithole & Vosselman (2004): Type I (ground
+    rejected), Type II (objects accepted: the forest study's "error" column),
+    total and Cohen's kappa, all in percent.
+
+    Parameters
+    ----------
+    x, y, z : array_like
+        Coordinates.
+    reference_ground : array_like of bool
+        Reference labels (True = ground), one per point.
+    slopes : sequence of float
+        Thresholds in degrees, each in (0, 90).
+    radii : sequence of float
+        Radii in metres, each > 0.
+    height_tolerance : float or sequence of float
+        Metres (>= 0); a sequence sweeps it too (one pass per radius and
+        tolerance).
+    metric : {"total", "kappa", "type1", "type2"}
+        Criterion for the best setting: lowest error, or highest kappa. Ties go
+        to the first setting in radius, slope order.
+    classify, neighbours, mode, trend_cell, trend_window
+        As in :func:`slope_filter`.
+
+    Returns
+    -------
+    SweepResult
+    """
+    x, y, z = _xyz(x, y, z)
+    ref = np.asarray(reference_ground, dtype=bool).ravel()
+    if ref.size != x.size:
+        raise InputError("The reference has {labels} labels but the cloud has {n} "
+                         "points; the reference must label the same points in the same "
+                         "order.", labels=int(ref.size), n=int(x.size))
+    if metric not in SLOPE_METRICS:
+        raise InputError("metric must be one of {choices}, got {metric}.",
+                         choices=", ".join(SLOPE_METRICS), metric=repr(metric))
+    if mode not in MODES:
+        raise InputError("mode must be one of {choices}, got {mode}.",
+                         choices=", ".join(MODES), mode=repr(mode))
+    slopes = [_check_slope(s) for s in np.atleast_1d(np.asarray(slopes, dtype=float))]
+    radii = [_check_radius(r) for r in np.atleast_1d(np.asarray(radii, dtype=float))]
+    if not slopes or not radii:
+        raise InputError("Give at least one slope threshold and one radius to sweep.")
+    hs = [_check_height(v) for v in np.atleast_1d(np.asarray(height_tolerance, dtype=float))]
+    if not hs:
+        raise InputError("Give at least one height tolerance (e.g. 0).")
+    cm = _mask(classify, x.size, "classify")
+    nm = _mask(neighbours, x.size, "neighbours")
+    mon = Monitor(progress, cancel)
+    zz = z
+    if mode == "adaptive":
+        zz = z - terrain_trend(x, y, z, cell=trend_cell, window=trend_window,
+                               neighbours=nm, cancel=cancel)
+    lo, hi = min(slopes), max(slopes)
+    rows: List[SweepRow] = []
+    passes = [(r, h) for r in radii for h in hs]
+    px, py, pz = _take(x, y, zz, cm)
+    qx, qy, qz = _take(x, y, zz, nm)
+    best_key, best_ground = None, None
+    for k, (r, h) in enumerate(passes):
+        v = np.full(x.size, np.nan)
+        if cm.any():
+            v[cm] = _bounded_max_slope(px, py, pz, qx, qy, qz, radius=r, height=h,
+                                       t_lo=_tan(lo), t_hi=_tan(hi), cell=None,
+                                       mon=mon.sub(k / len(passes), (k + 1) / len(passes)),
+                                       stats=_Stats())
+        for s in slopes:
+            pred = cm & ~(v > _tan(s))
+            acc = assess(pred, ref)
+            row = SweepRow(radius=r, slope=s, height_tolerance=h,
+                           allowed_rise=float(allowed_rise(r, s)),
+                           n_ground=int(np.count_nonzero(pred)), a=acc.a, b=acc.b,
+                           c=acc.c, d=acc.d, type1=acc.type1, type2=acc.type2,
+                           total=acc.total, kappa=acc.kappa)
+            rows.append(row)
+            key = _metric_key(row, metric)
+            if best_key is None or key < best_key:
+                best_key, best_ground = key, pred
+    best = min(rows, key=lambda row: _metric_key(row, metric))
+    mon.update(1.0)
+    return SweepResult(rows=rows, metric=metric, best=best, n_points=x.size,
+                       n_reference_ground=int(np.count_nonzero(ref)), mode=mode,
+                       best_ground=best_ground)
+
 
 
 @dataclass
 class SweepSummary:
     """Result of :func:`sweep_file`."""
 
-    result: sf.SweepResult
+    result: SweepResult
     input: str
     reference: str
     n_points: int
@@ -164,7 +347,7 @@ def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_C
                              classes=', '.join(map(str, ground_classes)))
         sel = select_points(pd, **vars(sel_opt), progress=mon.sub(0.1, 0.15).update,
                             cancel=mon.cancelled)
-        res = sf.threshold_sweep(pd.x, pd.y, pd.z, ref, slopes=slopes, radii=radii,
+        res = threshold_sweep(pd.x, pd.y, pd.z, ref, slopes=slopes, radii=radii,
                                  height_tolerance=hs, classify=sel.candidates,
                                  neighbours=sel.candidates, mode=mode, metric=metric,
                                  trend_cell=trend_cell, trend_window=trend_window,

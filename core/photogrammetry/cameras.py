@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..errors import InputError
+
 
 @dataclass(frozen=True)
 class Camera:
@@ -54,5 +56,6 @@ def camera(key: str) -> Camera:
     try:
         return CAMERAS[key]
     except KeyError:
-        raise ValueError(f"Unknown camera preset {key!r}; known presets: "
-                         f"{', '.join(CAMERAS)} (or enter the values yourself).") from None
+        raise InputError("Unknown camera preset {key}; known presets: {presets} (or enter "
+                         "the values yourself).", key=repr(key),
+                         presets=", ".join(CAMERAS)) from None

@@ -50,6 +50,8 @@ from typing import Optional
 
 import numpy as np
 
+from ..errors import InputError
+
 K_M = 0.3        # px, image-measurement precision factor (Gülch 1995 via the paper)
 K_M_EXPERT = 0.13
 K_S = 2.0        # safety factor, natural points at close range
@@ -61,10 +63,10 @@ def _check(name: str, value, *, unit: str = "", low: float = 0.0, low_inclusive=
            high: Optional[float] = None, high_inclusive=True, hint: str = ""):
     arr = np.asarray(value, dtype=float)
     if arr.size == 0:
-        raise ValueError(f"{name} is empty.")
+        raise InputError("{name} is empty.", name=name)
     if not np.all(np.isfinite(arr)):
-        raise ValueError(f"{name} must be a finite number{(' in ' + unit) if unit else ''}, "
-                         f"got {value!r}.")
+        raise InputError("{name} must be a finite number{unit}, got {value}.", name=name,
+                         unit=(" in " + unit) if unit else "", value=repr(value))
     bad_low = arr < low if low_inclusive else arr <= low
     bad_high = np.zeros_like(bad_low) if high is None else (
         arr > high if high_inclusive else arr >= high)
@@ -75,8 +77,9 @@ def _check(name: str, value, *, unit: str = "", low: float = 0.0, low_inclusive=
         rng = f"in {lo}{low:g}{hi}" if high is not None else (
             f"{'≥' if low_inclusive else '>'} {low:g}")
         u = f" {unit}" if unit else ""
-        raise ValueError(f"{name} must be {rng}{u}, got {shown:g}{u}." +
-                         (f" {hint}" if hint else ""))
+        raise InputError("{name} must be {range}{unit}, got {value}{unit}.{hint}",
+                         name=name, range=rng, unit=u, value=f"{shown:g}",
+                         hint=f" {hint}" if hint else "")
     return arr if arr.ndim else float(arr)
 
 
@@ -299,9 +302,10 @@ def compute(*, distance: float, sensor_width: float, image_width: float,
     g_exact = float(gsd(distance, sensor_width, image_width, focal_length))
     g = round(g_exact, 2) if round_gsd else g_exact
     if not math.isfinite(g_exact):
-        raise ValueError("The GSD is not finite; check the inputs.")
+        raise InputError("The GSD is not finite; check the inputs.")
     if g <= 0:
-        raise ValueError(f"The GSD rounds to 0 cm/px ({g_exact:.5f}); do not round it.")
+        raise InputError("The GSD rounds to 0 cm/px ({value}); do not round it.",
+                         value=f"{g_exact:.5f}")
     res = _base_result(g, g_exact, distance, sensor_width, image_width, focal_length,
                        sensor_height, image_height, k_m=k_m, k_s=k_s,
                        pyramid_level=pyramid_level, pyramid_percent=pyramid_percent,
@@ -355,7 +359,7 @@ def _add_observed(res: GsdResult, sx, sy, sz, sxyz, dense_std) -> None:
     elif None not in (sx, sy, sz):
         res.observed_sigma_xyz_mm = float(observed_sigma_xyz(sx, sy, sz))
     elif any(v is not None for v in (sx, sy, sz)):
-        raise ValueError("Give all three observed σx, σy, σz (mm), or the combined σxyz.")
+        raise InputError("Give all three observed σx, σy, σz (mm), or the combined σxyz.")
     if res.observed_sigma_xyz_mm is not None:
         res.ratio_xyz = float(accuracy_ratio(res.observed_sigma_xyz_mm, res.sigma_xyz_mm))
     if dense_std is not None:
@@ -367,7 +371,7 @@ def _add_flight_spacing(res: GsdResult, forward_overlap, side_overlap, stereo_ba
     if forward_overlap is None and side_overlap is None:
         return stereo_base
     if res.footprint_height_m is None:
-        raise ValueError("Flight spacing needs the footprint height: give the sensor "
+        raise InputError("Flight spacing needs the footprint height: give the sensor "
                          "height (mm) or the image height (px).")
     base, line = flight_spacing(res.footprint_height_m, res.footprint_width_m,
                                 forward_overlap=forward_overlap or 0.0,

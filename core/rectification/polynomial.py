@@ -64,7 +64,8 @@ def min_gcps(order: int) -> int:
 
 def _check_order(order) -> int:
     if order not in (1, 2, 3) or isinstance(order, bool):
-        raise ValueError(f"order must be 1, 2 or 3 (polynomial order), got {order!r}.")
+        raise InputError("order must be 1, 2 or 3 (polynomial order), got {value}.",
+                         value=repr(order))
     return int(order)
 
 
@@ -361,16 +362,21 @@ def fit_polynomial(pixel_xy, map_xy, *, order: int, weights: Optional[Sequence] 
     pix = np.asarray(pixel_xy, float)
     mp = np.asarray(map_xy, float)
     if pix.ndim != 2 or pix.shape[1] != 2 or mp.shape != pix.shape:
-        raise ValueError(f"pixel_xy and map_xy must both be (n, 2) arrays, got {pix.shape} "
-                         f"and {mp.shape}.")
+        raise InputError("pixel_xy and map_xy must both be (n, 2) arrays, got {a} and {b}.",
+                         a=pix.shape, b=mp.shape)
     n = len(pix)
     need = n_terms(order)
     if n < need:
-        raise ValueError(
-            f"A polynomial of order {order} needs at least {need} enabled GCPs "
-            f"({need} coefficients per axis); only {n} given. Add GCPs or lower the order"
-            + (f" (order {max(t for t in (1, 2, 3) if n_terms(t) <= n)} is possible)."
-               if n >= 3 else "."))
+        if n >= 3:
+            raise InputError(
+                "A polynomial of order {order} needs at least {need} enabled GCPs "
+                "({need} coefficients per axis); only {n} given. Add GCPs or lower the "
+                "order (order {possible} is possible).", order=order, need=need, n=n,
+                possible=max(t for t in (1, 2, 3) if n_terms(t) <= n))
+        raise InputError(
+            "A polynomial of order {order} needs at least {need} enabled GCPs "
+            "({need} coefficients per axis); only {n} given. Add GCPs or lower the order.",
+            order=order, need=need, n=n)
     if not (np.isfinite(pix).all() and np.isfinite(mp).all()):
         raise InputError("GCP coordinates contain NaN or infinite values; fix the GCP file.")
     w = None

@@ -25,6 +25,7 @@ from typing import Optional, Sequence
 
 import numpy as np
 
+from ..errors import InputError
 from ..io.contract import atomic_output, check_not_input
 from ..io.crs import linear_unit, same_crs, spatial_reference
 from ..io.gcp import GCPSet, check_in_image, make_gcps
@@ -52,11 +53,12 @@ def image_info(path):
     gdal = _gdal()
     path = os.fspath(path)
     if not os.path.exists(path) and not path.startswith("/vsi"):
-        raise ValueError(f"Image not found: {path}. Check the path.")
+        raise InputError("Image not found: {path}. Check the path.", path=path)
     try:
         ds = gdal.Open(path, gdal.GA_ReadOnly)
     except RuntimeError as exc:
-        raise ValueError(f"{path} is not an image GDAL can read: {exc}") from None
+        raise InputError("{path} is not an image GDAL can read: {error}", path=path,
+                         error=exc) from None
     return ds.RasterXSize, ds.RasterYSize, ds.RasterCount, tuple(ds.GetGeoTransform())
 
 
@@ -128,11 +130,12 @@ class WarpResult:
 
 def _check_options(resampling, resolution):
     if resampling not in RESAMPLING:
-        raise ValueError(f"resampling must be one of {', '.join(RESAMPLING)}, got "
-                         f"{resampling!r}.")
+        raise InputError("resampling must be one of {choices}, got {value}.",
+                         choices=", ".join(RESAMPLING), value=repr(resampling))
     if resolution is not None and not (np.isfinite(resolution) and resolution > 0):
-        raise ValueError(f"resolution must be a positive pixel size, got {resolution!r}; "
-                         "leave it empty to use the ground resolution GR.")
+        raise InputError("resolution must be a positive pixel size, got {value}; "
+                         "leave it empty to use the ground resolution GR.",
+                         value=repr(resolution))
 
 
 #: nodes per side of the GCP grid that carries a projective fit into GDAL's TPS
@@ -180,11 +183,11 @@ def _run_warp(tmp, ds, opts, sub, src):
     except RuntimeError as exc:
         if sub.cancelled():
             raise Cancelled("cancelled by the user") from None
-        raise ValueError(f"GDAL could not warp {src}: {exc}") from None
+        raise InputError("GDAL could not warp {path}: {error}", path=src, error=exc) from None
     if res is None:
         if sub.cancelled():
             raise Cancelled("cancelled by the user")
-        raise ValueError(f"GDAL could not warp {src}.")
+        raise InputError("GDAL could not warp {path}.", path=src)
     return res
 
 
@@ -239,7 +242,7 @@ def rectify(input_path, gcps: GCPSet, output_path, *, order: int = 2,
     _check_options(resampling, resolution)
     kind = check_kind(kind or f"polynomial{int(order)}")
     if not gcps.crs:
-        raise ValueError("The GCP map coordinates have no CRS (no '#CRS:' line in the file "
+        raise InputError("The GCP map coordinates have no CRS (no '#CRS:' line in the file "
                          "and none given). Set the GCP CRS (e.g. EPSG:22780) and run again.")
     gcp_srs = _srs(gcps.crs, "GCP CRS")
     tgt_srs = _srs(target_crs or gcps.crs, "target CRS")

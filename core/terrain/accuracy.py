@@ -36,6 +36,8 @@ from typing import Dict, Optional, Sequence
 
 import numpy as np
 
+from ..errors import InputError
+
 OK, OUTSIDE, NODATA = 0, 1, 2
 STATUS_NAMES = {OK: "used", OUTSIDE: "outside DTM", NODATA: "DTM nodata"}
 METHODS = ("bilinear", "nearest")
@@ -55,13 +57,14 @@ def sample_raster(data: np.ndarray, geotransform: Sequence[float], x, y, *,
         Bilinear estimates that renormalised over fewer than 4 valid cells.
     """
     if method not in METHODS:
-        raise ValueError(f"method must be 'bilinear' or 'nearest', got {method!r}.")
+        raise InputError("method must be 'bilinear' or 'nearest', got {value}.",
+                         value=repr(method))
     data = np.asarray(data, dtype=np.float64)
     x = np.asarray(x, dtype=np.float64).ravel()
     y = np.asarray(y, dtype=np.float64).ravel()
     gt = tuple(float(v) for v in geotransform)
     if gt[2] != 0 or gt[4] != 0 or gt[1] <= 0 or gt[5] >= 0:
-        raise ValueError(f"Only north-up rasters are supported (geotransform {gt}).")
+        raise InputError("Only north-up rasters are supported (geotransform {gt}).", gt=gt)
     nrows, ncols = data.shape
     fc = (x - gt[0]) / gt[1]               # fractional column (0 at the west edge)
     fr = (y - gt[3]) / gt[5]               # fractional row (0 at the north edge)
@@ -212,10 +215,10 @@ def dtm_accuracy(dtm: np.ndarray, geotransform: Sequence[float], x, y, z, *,
     y = np.asarray(y, dtype=np.float64).ravel()
     z = np.asarray(z, dtype=np.float64).ravel()
     if not (x.size == y.size == z.size):
-        raise ValueError(f"Check point x, y, z must have the same length, got {x.size}, "
-                         f"{y.size}, {z.size}.")
+        raise InputError("Check point x, y, z must have the same length, got {nx}, "
+                         "{ny}, {nz}.", nx=int(x.size), ny=int(y.size), nz=int(z.size))
     if x.size == 0:
-        raise ValueError("No check points were given.")
+        raise InputError("No check points were given.")
     data = np.asarray(dtm, dtype=np.float64)
     if nodata is not None and not math.isnan(nodata):
         data = np.where(data == nodata, np.nan, data)
@@ -226,11 +229,12 @@ def dtm_accuracy(dtm: np.ndarray, geotransform: Sequence[float], x, y, z, *,
     stats = accuracy_stats(vals[status == OK], z[status == OK])
     res = AccuracyResult(x, y, z, vals, status, partial & (status == OK), stats, method)
     if res.n_used < min_points:
-        raise ValueError(
-            f"Only {res.n_used} of {res.n_total} check points can be compared with the "
-            f"DTM ({res.n_outside} outside its extent, {res.n_nodata} on nodata or without "
+        raise InputError(
+            "Only {used} of {total} check points can be compared with the "
+            "DTM ({outside} outside its extent, {nodata} on nodata or without "
             "height). Check that the check points and the DTM are in the same CRS and "
-            "overlap.")
+            "overlap.", used=res.n_used, total=res.n_total, outside=res.n_outside,
+            nodata=res.n_nodata)
     return res
 
 

@@ -22,7 +22,9 @@ from typing import Iterable, Optional, Sequence
 
 import numpy as np
 
+from ..errors import InputError
 from ..progress import Monitor
+from ..reporting import Report
 from .grid import GridSpec, check_memory
 
 
@@ -115,9 +117,10 @@ def dsm_from_chunks(chunks: Iterable, grid: GridSpec, *, n_total: Optional[int] 
         if n_total:
             mon.update(0.9 * seen / n_total)
     if used == 0:
-        raise ValueError("No point is left for the DSM after the selection (first returns "
-                         f"only: {first_only}; excluded classes: {list(excl)}) inside the "
-                         "grid extent; relax the selection or check the extent.")
+        raise InputError("No point is left for the DSM after the selection (first returns "
+                         "only: {first}; excluded classes: {excluded}) inside the "
+                         "grid extent; relax the selection or check the extent.",
+                         first=first_only, excluded=list(excl))
     out = fill_nearest(out, grid.cell, fill_distance)
     mon.update(1.0)
     return out
@@ -128,9 +131,49 @@ def ndsm(dsm: np.ndarray, dtm: np.ndarray, *, clamp_negative: bool = True) -> np
     dsm = np.asarray(dsm, dtype=np.float64)
     dtm = np.asarray(dtm, dtype=np.float64)
     if dsm.shape != dtm.shape:
-        raise ValueError(f"DSM {dsm.shape} and DTM {dtm.shape} are not on the same grid; "
-                         "compute the DSM on the DTM's grid.")
+        raise InputError("DSM {dsm} and DTM {dtm} are not on the same grid; "
+                         "compute the DSM on the DTM's grid.", dsm=dsm.shape, dtm=dtm.shape)
     out = dsm - dtm
     if clamp_negative:
         out = np.where(out < 0, 0.0, out)
     return out
+
+
+def dsm_report(name: str, n_points: int, grid: GridSpec, grid_source: str,
+               surface: np.ndarray, ndsm_grid: Optional[np.ndarray] = None, *,
+               first_only: bool, classes, excluded, clamp: bool, elapsed: float,
+               lang: str = "en") -> Report:
+    """Report content of a DSM (and nDSM) run.
+
+    Parameters
+    ----------
+    name : str
+        Input file name; ``n_points`` its points.
+    grid, grid_source : GridSpec, str
+        The output grid and where it came from ("DTM grid", "LAS file", …).
+    surface, ndsm_grid : ndarray
+        The DSM and the nDSM (None when not made).
+    first_only, classes, excluded, clamp
+        The settings shown.
+    """
+    from ..reporting import KeyValues, T, translator
+    from .dtm import grid_stats
+    from .report import grid_report
+    method = [("method", T("highest return per cell")),
+              ("first returns only", T("yes") if first_only else T("no")),
+              ("classes used", ", ".join(map(str, classes)) or T("all")),
+              ("excluded classes", ", ".join(map(str, excluded)) or T("none"))]
+    inputs = [("input", name), ("points in file", n_points), ("grid source", T(grid_source))]
+    rep = grid_report(
+        "DSM / nDSM report", method_rows=method, input_rows=inputs, grid=grid,
+        data=surface, stats=grid_stats(surface), elapsed=elapsed,
+        citation="Digital surface model: highest return per cell; nDSM = DSM − DTM.",
+        tr=translator(lang))
+    if ndsm_grid is not None:
+        st = grid_stats(ndsm_grid)
+        valid = ndsm_grid[np.isfinite(ndsm_grid)]
+        rep.section("nDSM").add(KeyValues([
+            ("cells with a value", st["valid_cells"]), ("max height", st["max"], "m"),
+            ("cells ≥ 2 m", int((valid >= 2).sum())),
+            ("negative heights clamped", T("yes") if clamp else T("no"))]))
+    return rep

@@ -27,6 +27,7 @@ from typing import Optional, Sequence, Tuple
 import numpy as np
 
 from .. import system as _system
+from ..errors import InputError
 from ..io.raster import DEFAULT_NODATA
 
 #: Default number of bytes of working memory per cell (float64 value + variance +
@@ -136,10 +137,10 @@ def check_cell_size(cell: float) -> float:
     try:
         cell = float(cell)
     except (TypeError, ValueError):
-        raise ValueError(f"cell_size must be a number, got {cell!r}.") from None
+        raise InputError("cell_size must be a number, got {value}.", value=repr(cell)) from None
     if not math.isfinite(cell) or cell <= 0:
-        raise ValueError(f"cell_size must be a positive number of CRS units (metres), got "
-                         f"{cell}; give e.g. 1.0 for a 1 m grid.")
+        raise InputError("cell_size must be a positive number of CRS units (metres), got "
+                         "{value}; give e.g. 1.0 for a 1 m grid.", value=cell)
     return cell
 
 
@@ -199,13 +200,13 @@ def grid_from_extent(extent: Sequence[float], cell_size: float, *, crs: Optional
     """
     cell = check_cell_size(cell_size)
     if extent is None or len(extent) != 4:
-        raise ValueError("extent must be (xmin, xmax, ymin, ymax).")
+        raise InputError("extent must be (xmin, xmax, ymin, ymax).")
     xmin, xmax, ymin, ymax = (float(v) for v in extent)
     if not all(math.isfinite(v) for v in (xmin, xmax, ymin, ymax)):
-        raise ValueError(f"extent has non-finite values: {extent}.")
+        raise InputError("extent has non-finite values: {extent}.", extent=extent)
     if xmax < xmin or ymax < ymin:
-        raise ValueError(f"extent must be (xmin, xmax, ymin, ymax) with xmin <= xmax and "
-                         f"ymin <= ymax, got {tuple(extent)}.")
+        raise InputError("extent must be (xmin, xmax, ymin, ymax) with xmin <= xmax and "
+                         "ymin <= ymax, got {extent}.", extent=tuple(extent))
     x0, ncols = _snap(xmin, xmax, cell, align)
     check_grid_size(ncols, max(int(math.ceil((ymax - ymin) / cell - 1e-9)), 1), cell)
     if align:
@@ -226,7 +227,7 @@ def grid_from_points(x, y, cell_size: float, *, extent: Optional[Sequence[float]
         x = np.asarray(x, dtype=np.float64)
         y = np.asarray(y, dtype=np.float64)
         if x.size == 0:
-            raise ValueError("No points to define the grid extent from.")
+            raise InputError("No points to define the grid extent from.")
         extent = (float(x.min()), float(x.max()), float(y.min()), float(y.max()))
     return grid_from_extent(extent, cell_size, crs=crs, nodata=nodata, align=align)
 
@@ -236,10 +237,10 @@ def grid_like(geotransform: Sequence[float], shape: Tuple[int, int], *,
     """Grid of an existing north-up raster with square cells."""
     gt = tuple(float(v) for v in geotransform)
     if gt[2] != 0 or gt[4] != 0 or gt[1] <= 0 or gt[5] >= 0:
-        raise ValueError(f"Only north-up rasters are supported (geotransform {gt}).")
+        raise InputError("Only north-up rasters are supported (geotransform {gt}).", gt=gt)
     if abs(gt[1] + gt[5]) > 1e-9 * gt[1]:
-        raise ValueError(f"Only square cells are supported; the raster has "
-                         f"{gt[1]} × {-gt[5]} cells.")
+        raise InputError("Only square cells are supported; the raster has "
+                         "{w} × {h} cells.", w=gt[1], h=-gt[5])
     nodata = DEFAULT_NODATA if nodata is None else float(nodata)
     return GridSpec(xmin=gt[0], ymax=gt[3], cell=gt[1], ncols=int(shape[1]),
                     nrows=int(shape[0]), crs=crs, nodata=nodata)
@@ -285,10 +286,11 @@ def check_memory(grid: GridSpec, *, arrays: int = 2, bytes_per_value: int = 8,
     need = int(grid.size) * int(arrays) * int(bytes_per_value)
     budget = int(0.8 * available_memory()) if limit is None else int(limit)
     if need > budget:
-        raise ValueError(
-            f"The grid of {grid.ncols} × {grid.nrows} cells ({grid.size:,} cells at "
-            f"{grid.cell:g} m) would need {_human(need)} of memory but only "
-            f"{_human(budget)} is available. Use a larger cell size or a smaller extent.")
+        raise InputError(
+            "The grid of {ncols} × {nrows} cells ({cells} cells at {cell} m) would need "
+            "{need} of memory but only {budget} is available. Use a larger cell size or a "
+            "smaller extent.", ncols=grid.ncols, nrows=grid.nrows, cells=f"{grid.size:,}",
+            cell=f"{grid.cell:g}", need=_human(need), budget=_human(budget))
     return need
 
 
@@ -325,8 +327,9 @@ def resolve_max_distance(grid: GridSpec, n_points: int, max_distance: Optional[f
     if max_distance is None:
         return default_max_distance(grid, n_points)
     if not (max_distance > 0):
-        raise ValueError(f"max_distance must be > 0 (m), got {max_distance}; leave it empty "
-                         "for the automatic value or fill the gaps instead.")
+        raise InputError("max_distance must be > 0 (m), got {value}; leave it empty "
+                         "for the automatic value or fill the gaps instead.",
+                         value=max_distance)
     return float(max_distance)
 
 

@@ -49,11 +49,17 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from ..coords import as_xyz
+from ..errors import InputError
 from ..progress import Monitor
 from .grid import GridSpec, check_memory, resolve_max_distance, row_blocks
 
 #: squared distance below which a node "is on" a point (GDAL's constant)
 COINCIDENT_R2 = 1e-13
+#: orders of equidistant neighbours: GDAL's quadtree, input order, coordinates (x, y, z)
+TIE_ORDERS = ("gdal", "input", "xy")
+#: IDW power of every entry point (idwdtm, lidartodtm, the model, catalogs): GDAL's
+#: invdistnn default
+DEFAULT_POWER = 2.0
 DEFAULT_BLOCK_CELLS = 262_144
 
 
@@ -146,31 +152,33 @@ def _validate(x, y, z, power, max_points, radius, min_points, smoothing):
         "No points to interpolate from (check the class filter and the extent)."))
     power = float(power)
     if not math.isfinite(power) or power <= 0:
-        raise ValueError(f"power must be > 0 (typically 2 or 3), got {power}.")
+        raise InputError("power must be > 0 (typically 2 or 3), got {value}.", value=power)
     max_points = int(max_points)
     if max_points < 0:
-        raise ValueError(f"max_points must be >= 0 (0 = every point within the radius), "
-                         f"got {max_points}.")
+        raise InputError("max_points must be >= 0 (0 = every point within the radius), "
+                         "got {value}.", value=max_points)
     if radius is not None:
         radius = float(radius)
         if not math.isfinite(radius) or radius <= 0:
-            raise ValueError(f"radius must be > 0 (or None for no radius), got {radius}.")
+            raise InputError("radius must be > 0 (or None for no radius), got {value}.",
+                             value=radius)
     if max_points == 0 and radius is None:
-        raise ValueError("max_points = 0 (all points) needs a search radius; give a radius "
+        raise InputError("max_points = 0 (all points) needs a search radius; give a radius "
                          "or a number of neighbours such as 12.")
     if max_points > x.size:
-        raise ValueError(f"Only {x.size} point(s) to interpolate from but max_points = "
-                         f"{max_points} neighbours were asked for; lower the number of "
-                         "neighbours or use more points.")
+        raise InputError("Only {n} point(s) to interpolate from but max_points = "
+                         "{k} neighbours were asked for; lower the number of "
+                         "neighbours or use more points.", n=int(x.size), k=max_points)
     min_points = int(min_points)
     if min_points < 0:
-        raise ValueError(f"min_points must be >= 0, got {min_points}.")
+        raise InputError("min_points must be >= 0, got {value}.", value=min_points)
     if max_points and min_points > max_points:
-        raise ValueError(f"min_points ({min_points}) cannot exceed max_points "
-                         f"({max_points}); every cell would be nodata.")
+        raise InputError("min_points ({min_points}) cannot exceed max_points "
+                         "({max_points}); every cell would be nodata.",
+                         min_points=min_points, max_points=max_points)
     smoothing = float(smoothing)
     if not math.isfinite(smoothing) or smoothing < 0:
-        raise ValueError(f"smoothing must be >= 0, got {smoothing}.")
+        raise InputError("smoothing must be >= 0, got {value}.", value=smoothing)
     return x, y, z, power, max_points, radius, min_points, smoothing
 
 
@@ -199,8 +207,9 @@ class IDW:
     def __init__(self, x, y, z, *, power: float = 2.0, max_points: int = 12,
                  radius: Optional[float] = None, min_points: int = 0,
                  smoothing: float = 0.0, workers: int = -1, tie_order: str = "gdal"):
-        if tie_order not in ("gdal", "input"):
-            raise ValueError(f"tie_order must be 'gdal' or 'input', got {tie_order!r}.")
+        if tie_order not in TIE_ORDERS:
+            raise InputError("tie_order must be one of {choices}, got {value}.",
+                             choices=", ".join(TIE_ORDERS), value=tie_order)
         self.tie_order = tie_order
         self._rank = None
         (self.x, self.y, self.z, self.power, self.max_points, self.radius,
@@ -240,6 +249,10 @@ class IDW:
         if self._rank is None:
             if self.tie_order == "gdal":
                 self._rank = gdal_quadtree_rank(self.x, self.y)
+            elif self.tie_order == "xy":       # independent of the other points
+                order = np.lexsort((self.z, self.y, self.x))
+                self._rank = np.empty(self.n_points, np.int64)
+                self._rank[order] = np.arange(self.n_points)
             else:
                 self._rank = np.arange(self.n_points)
         return self._rank
@@ -307,7 +320,7 @@ class IDW:
         return out
 
 
-def idw_grid(x, y, z, grid: GridSpec, *, power: float = 2.0, max_points: int = 12,
+def idw_grid(x, y, z, grid: GridSpec, *, power: float = DEFAULT_POWER, max_points: int = 12,
              radius: Optional[float] = None, min_points: int = 0, smoothing: float = 0.0,
              max_distance: Optional[float] = None, fill: bool = False,
              block_cells: int = DEFAULT_BLOCK_CELLS, workers: int = -1,

@@ -70,7 +70,6 @@ from scipy.spatial import cKDTree
 from ..coords import as_xyz
 from ..errors import InputError
 from ..progress import Monitor
-from ..system import limit_blas_threads
 from . import variogram as variogram_models
 from .grid import GridSpec, check_memory, distance_mask, resolve_max_distance, row_blocks
 
@@ -86,8 +85,8 @@ def variogram_function(model: str):
     """Return the variogram function ``f(params, d)`` of ``model`` (PyKrige's convention)."""
     funcs = variogram_models.MODEL_FUNCTIONS
     if model not in funcs:
-        raise ValueError(f"variogram model must be one of {', '.join(MODELS)}; got "
-                         f"{model!r}.")
+        raise InputError("variogram model must be one of {choices}; got {model}.",
+                         choices=", ".join(MODELS), model=repr(model))
     return funcs[model]
 
 
@@ -132,8 +131,8 @@ class Variogram:
 def _check_xyz(x, y, z):
     x, y, z = as_xyz(x, y, z, nonfinite="drop")
     if x.size < 3:
-        raise ValueError(f"Kriging needs at least 3 points, got {x.size} (check the class "
-                         "filter and the extent).")
+        raise InputError("Kriging needs at least 3 points, got {n} (check the class "
+                         "filter and the extent).", n=int(x.size))
     return x, y, z
 
 
@@ -167,7 +166,7 @@ def _bin_and_fit(d, g, used_lag, nlags, model, func, weight):
     ok = cnt > 0
     lags, semi = lags[ok] / cnt[ok], semi[ok] / cnt[ok]
     if lags.size < 3:
-        raise ValueError("Too few non-empty lag bins to fit a variogram; increase max_lag, "
+        raise InputError("Too few non-empty lag bins to fit a variogram; increase max_lag, "
                          "nlags or fit_points.")
     return lags, semi, variogram_models.fit_model(lags, semi, model, func, weight)
 
@@ -180,12 +179,12 @@ def _resolve_lag(xy, sel, mode, max_lag, n_neighbours) -> Optional[float]:
         dk, _ = cKDTree(xy).query(xy[sel], k=k + 1)
         used_lag = 3.0 * float(np.median(dk[:, -1]))
         if not used_lag > 0:
-            raise ValueError("All points coincide; a variogram cannot be fitted.")
+            raise InputError("All points coincide; a variogram cannot be fitted.")
         return used_lag
     if mode == "value":
         used_lag = float(max_lag)
         if not math.isfinite(used_lag) or used_lag <= 0:
-            raise ValueError(f"max_lag must be > 0, got {max_lag}.")
+            raise InputError("max_lag must be > 0, got {value}.", value=max_lag)
         return used_lag
     return None
 
@@ -268,10 +267,10 @@ def fit_variogram(x, y, z, *, model: str = "spherical", fit_points: int = 3000,
     x, y, z = _check_xyz(x, y, z)
     fit_points = int(fit_points)
     if fit_points < 10:
-        raise ValueError(f"fit_points must be at least 10, got {fit_points}.")
+        raise InputError("fit_points must be at least 10, got {value}.", value=fit_points)
     nlags = int(nlags)
     if nlags < 2:
-        raise ValueError(f"nlags must be at least 2, got {nlags}.")
+        raise InputError("nlags must be at least 2, got {value}.", value=nlags)
     if detrend:
         z = _plane_residuals(x, y, z)
     rng = np.random.default_rng(seed)
@@ -282,8 +281,8 @@ def fit_variogram(x, y, z, *, model: str = "spherical", fit_points: int = 3000,
     xy = np.column_stack([x - x0, y - y0])
     mode = max_lag if isinstance(max_lag, str) or max_lag is None else "value"
     if mode not in ("auto", "half", "value", None):
-        raise ValueError(f"max_lag must be 'auto', 'half', a distance or None; got "
-                         f"{max_lag!r}.")
+        raise InputError("max_lag must be 'auto', 'half', a distance or None; got {value}.",
+                         value=repr(max_lag))
     if mode is None:
         lags, semi = variogram_models.all_pairs_semivariogram(xy[sel], z[sel], nlags)
         params = variogram_models.fit_model(lags, semi, model, func, weight)
@@ -293,8 +292,9 @@ def fit_variogram(x, y, z, *, model: str = "spherical", fit_points: int = 3000,
         used_lag = _resolve_lag(xy, sel, mode, max_lag, n_neighbours)
         d, g, used_lag = _sample_pairs(xy, z, sel, mode, used_lag)
         if d.size < nlags:
-            raise ValueError(f"Only {d.size} point pairs are closer than max_lag = "
-                             f"{used_lag:g}; increase max_lag or fit_points.")
+            raise InputError("Only {n} point pairs are closer than max_lag = "
+                             "{lag}; increase max_lag or fit_points.", n=int(d.size),
+                             lag=f"{used_lag:g}")
         if not np.any(g > 0):
             raise InputError("The heights do not vary between the sampled point pairs, so "
                              "no variogram can be fitted; give the variogram parameters or "
@@ -321,258 +321,24 @@ def given_variogram(model: str, *, nugget: float = 0.0, sill: Optional[float] = 
     variogram_function(model)
     nugget = float(nugget)
     if not math.isfinite(nugget) or nugget < 0:
-        raise ValueError(f"nugget must be >= 0, got {nugget}.")
+        raise InputError("nugget must be >= 0, got {value}.", value=nugget)
     if model == "linear":
         if slope is None or not slope >= 0:
-            raise ValueError("The linear variogram needs slope >= 0.")
+            raise InputError("The linear variogram needs slope >= 0.")
         return Variogram(model, [float(slope), nugget])
     if model == "power":
         if scale is None or not scale > 0 or exponent is None or not 0 < exponent < 2:
-            raise ValueError("The power variogram needs scale > 0 and 0 < exponent < 2.")
+            raise InputError("The power variogram needs scale > 0 and 0 < exponent < 2.")
         return Variogram(model, [float(scale), float(exponent), nugget])
     if sill is None or range_ is None:
-        raise ValueError(f"The {model} variogram needs sill and range (and nugget).")
+        raise InputError("The {model} variogram needs sill and range (and nugget).",
+                         model=model)
     if not sill > nugget:
-        raise ValueError(f"sill ({sill}) must be larger than the nugget ({nugget}); the "
-                         "sill includes the nugget.")
+        raise InputError("sill ({sill}) must be larger than the nugget ({nugget}); the "
+                         "sill includes the nugget.", sill=sill, nugget=nugget)
     if not range_ > 0:
-        raise ValueError(f"range must be > 0, got {range_}.")
+        raise InputError("range must be > 0, got {value}.", value=range_)
     return Variogram(model, [float(sill) - nugget, float(range_), nugget])
-
-
-class Kriging:
-    """Local-neighbourhood (or global) ordinary/universal kriging predictor.
-
-    Parameters
-    ----------
-    x, y, z : array_like
-        Data points (duplicates in (x, y) are merged).
-    variogram : Variogram
-        From :func:`fit_variogram` or :func:`given_variogram`.
-    drift : {'none', 'linear'}
-        'none' = ordinary kriging; 'linear' = universal kriging with a linear drift.
-    n_closest : int
-        Neighbours per estimate (default 16). Equal to the number of points → global
-        kriging (one system).
-    workers : int
-        Threads for the KD-tree queries.
-    """
-
-    def __init__(self, x, y, z, *, variogram: Variogram, drift: str = "none",
-                 n_closest: int = 16, workers: int = -1):
-        x, y, z = _check_xyz(x, y, z)
-        self.n_input = int(x.size)
-        x, y, z, self.n_merged = merge_duplicates(x, y, z)
-        if drift not in DRIFTS:
-            raise ValueError(f"drift must be one of {', '.join(DRIFTS)}; got {drift!r}.")
-        n_closest = int(n_closest)
-        n_min = 4 if drift == "linear" else 2
-        if n_closest < n_min:
-            raise ValueError(f"n_closest must be at least {n_min} for "
-                             f"{'universal' if drift == 'linear' else 'ordinary'} "
-                             f"kriging, got {n_closest}.")
-        if n_closest > x.size:
-            raise ValueError(f"Only {x.size} distinct point(s) to krige from but n_closest "
-                             f"= {n_closest} neighbours were asked for; lower the number "
-                             "of neighbours or use more points.")
-        self.x0, self.y0 = float(x.mean()), float(y.mean())
-        self.x, self.y, self.z = x - self.x0, y - self.y0, z
-        self.variogram = variogram
-        self.drift = drift
-        self.n_closest = n_closest
-        self.workers = workers
-        self.tree = cKDTree(np.column_stack([self.x, self.y]))
-        self._lu = None
-        self.is_global = n_closest == x.size and x.size <= GLOBAL_MAX_POINTS
-
-    @property
-    def n_points(self) -> int:
-        """Return the number of data points."""
-        return int(self.x.size)
-
-    @property
-    def n_extra(self) -> int:
-        """Return the number of Lagrange rows (1, or 3 with a linear drift)."""
-        return 1 + (2 if self.drift == "linear" else 0)
-
-    def block_cells(self, budget: int = 160_000_000) -> int:
-        """Cells per batch so that the batched systems use about ``budget`` bytes."""
-        m = self.n_closest + self.n_extra
-        return int(max(64, min(65536, budget // (m * m * 8 * 6))))
-
-    # ---------------------------------------------------------------- local solve
-    def _solve_local(self, qx, qy, d0, idx) -> Tuple[np.ndarray, np.ndarray]:
-        """Kriging estimates and variances at query points given their neighbours."""
-        m, n = idx.shape
-        e = self.n_extra
-        px = self.x[idx] - qx[:, None]
-        py = self.y[idx] - qy[:, None]
-        dd = np.hypot(px[:, :, None] - px[:, None, :], py[:, :, None] - py[:, None, :])
-        a = np.zeros((m, n + e, n + e))
-        a[:, :n, :n] = self.variogram(dd)
-        del dd
-        di = np.arange(n)
-        a[:, di, di] = 0.0
-        a[:, :n, n] = 1.0
-        a[:, n, :n] = 1.0
-        b = np.zeros((m, n + e))
-        g0 = self.variogram(d0)
-        g0[d0 <= EPS] = 0.0
-        b[:, :n] = g0
-        b[:, n] = 1.0
-        if self.drift == "linear":
-            s = np.maximum(np.abs(px).max(axis=1), np.abs(py).max(axis=1))
-            s = np.where(s > 0, s, 1.0)[:, None]
-            fx, fy = px / s, py / s
-            a[:, :n, n + 1], a[:, n + 1, :n] = fx, fx
-            a[:, :n, n + 2], a[:, n + 2, :n] = fy, fy
-            # drift at the query point is (0, 0) in query-centred coordinates
-        sol = _batched_solve(a, b)
-        zhat = np.einsum("ij,ij->i", sol[:, :n], self.z[idx])
-        var = np.einsum("ij,ij->i", sol, b)
-        return zhat, np.maximum(var, 0.0)
-
-    def _global_factor(self):
-        if self._lu is None:
-            import scipy.linalg
-            n, e = self.n_points, self.n_extra
-            xy = np.column_stack([self.x, self.y])
-            from scipy.spatial.distance import cdist
-            a = np.zeros((n + e, n + e))
-            a[:n, :n] = self.variogram(cdist(xy, xy))
-            np.fill_diagonal(a[:n, :n], 0.0)
-            a[:n, n] = a[n, :n] = 1.0
-            if self.drift == "linear":
-                a[:n, n + 1] = a[n + 1, :n] = self.x
-                a[:n, n + 2] = a[n + 2, :n] = self.y
-            try:
-                self._lu = scipy.linalg.lu_factor(a, check_finite=False)
-            except (np.linalg.LinAlgError, ValueError) as exc:
-                raise ValueError(f"The global kriging system is singular ({exc}); use "
-                                 "fewer neighbours or add a nugget.") from exc
-        return self._lu
-
-    def _solve_global(self, qx, qy) -> Tuple[np.ndarray, np.ndarray]:
-        import scipy.linalg
-        from scipy.spatial.distance import cdist
-        n, e = self.n_points, self.n_extra
-        d0 = cdist(np.column_stack([qx, qy]), np.column_stack([self.x, self.y]))
-        b = np.zeros((qx.size, n + e))
-        g0 = self.variogram(d0)
-        g0[d0 <= EPS] = 0.0
-        b[:, :n] = g0
-        b[:, n] = 1.0
-        if self.drift == "linear":
-            b[:, n + 1] = qx
-            b[:, n + 2] = qy
-        sol = scipy.linalg.lu_solve(self._global_factor(), b.T, check_finite=False).T
-        zhat = sol[:, :n] @ self.z
-        var = np.einsum("ij,ij->i", sol, b)
-        return zhat, np.maximum(var, 0.0)
-
-    # ---------------------------------------------------------------- public
-    def predict(self, xq, yq, *, max_distance: Optional[float] = None,
-                progress=None, cancel=None) -> Tuple[np.ndarray, np.ndarray]:
-        """Estimates and kriging variances at points ``(xq, yq)`` (CRS coordinates).
-
-        Points whose nearest data point is farther than ``max_distance`` get NaN.
-        """
-        mon = Monitor(progress, cancel)
-        qx = np.asarray(xq, np.float64).ravel() - self.x0
-        qy = np.asarray(yq, np.float64).ravel() - self.y0
-        out = np.full(qx.size, np.nan)
-        var = np.full(qx.size, np.nan)
-        step = self.block_cells() if not self.is_global else 2048
-        for s0 in range(0, qx.size, step):
-            s1 = min(qx.size, s0 + step)
-            bx, by = qx[s0:s1], qy[s0:s1]
-            if self.is_global and max_distance is None:
-                ok = np.ones(bx.size, bool)
-            else:
-                k = 1 if self.is_global else self.n_closest
-                d, idx = self.tree.query(np.column_stack([bx, by]), k=k,
-                                         workers=self.workers)
-                d = d.reshape(bx.size, -1)
-                idx = idx.reshape(bx.size, -1)
-                ok = np.ones(bx.size, bool) if max_distance is None else \
-                    d[:, 0] <= max_distance
-            if ok.any():
-                if self.is_global:
-                    zz, vv = self._solve_global(bx[ok], by[ok])
-                else:
-                    zz, vv = self._solve_local(bx[ok], by[ok], d[ok], idx[ok])
-                tmp_z = np.full(bx.size, np.nan)
-                tmp_v = np.full(bx.size, np.nan)
-                tmp_z[ok], tmp_v[ok] = zz, vv
-                out[s0:s1], var[s0:s1] = tmp_z, tmp_v
-            mon.step(s1 / qx.size)
-        return out, var
-
-    def cross_validate(self, n: int = 1000, *, seed: int = 0) -> Dict[str, float]:
-        """Leave-one-out cross-validation on a random subsample of ``n`` points.
-
-        Each selected point is predicted from its ``n_closest`` nearest *other*
-        points with the same variogram. Returns ``n``, ``me`` (mean error,
-        estimate − observed), ``rmse``, ``mae``, ``mse_std`` (mean standardised
-        error, ideally 0), ``rmsse`` (root mean square standardised error, ideally 1).
-        """
-        n = int(min(n, self.n_points))
-        if n < 1:
-            raise ValueError("cross-validation needs at least one point.")
-        if self.n_closest >= self.n_points:
-            raise ValueError("Leave-one-out needs n_closest smaller than the number of "
-                             "points.")
-        rng = np.random.default_rng(seed)
-        sel = np.sort(rng.choice(self.n_points, n, replace=False))
-        qx, qy = self.x[sel], self.y[sel]
-        errs, stds = [], []
-        step = self.block_cells()
-        for s0 in range(0, n, step):
-            s1 = min(n, s0 + step)
-            d, idx = self.tree.query(np.column_stack([qx[s0:s1], qy[s0:s1]]),
-                                     k=self.n_closest + 1, workers=self.workers)
-            own = idx == sel[s0:s1, None]
-            # drop the point itself (distance 0: the first column after merging)
-            keep = ~own
-            keep[~own.any(axis=1), -1] = False
-            d = d[keep].reshape(s1 - s0, self.n_closest)
-            idx = idx[keep].reshape(s1 - s0, self.n_closest)
-            zz, vv = self._solve_local(qx[s0:s1], qy[s0:s1], d, idx)
-            errs.append(zz - self.z[sel[s0:s1]])
-            stds.append(np.sqrt(vv))
-        err = np.concatenate(errs)
-        std = np.concatenate(stds)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            zs = err / std
-        zs = zs[np.isfinite(zs)]
-        return {"n": int(n), "me": float(err.mean()), "rmse": float(np.sqrt(np.mean(err ** 2))),
-                "mae": float(np.mean(np.abs(err))),
-                "mse_std": float(zs.mean()) if zs.size else float("nan"),
-                "rmsse": float(np.sqrt(np.mean(zs ** 2))) if zs.size else float("nan")}
-
-
-def single_threaded_blas():
-    """Run small batched LAPACK solves with one BLAS thread (:func:`..system.limit_blas_threads`).
-
-    OpenBLAS otherwise starts its thread pool for every 17×17 system, which on a
-    loaded machine makes ``numpy.linalg.solve`` over 10⁵ tiny systems 10–20× slower.
-    """
-    return limit_blas_threads(1)
-
-
-def _batched_solve(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Solve ``a[i] @ s[i] = b[i]``; singular systems fall back to least squares."""
-    try:
-        with single_threaded_blas():
-            return np.linalg.solve(a, b[..., None])[..., 0]
-    except np.linalg.LinAlgError:
-        out = np.empty_like(b)
-        for i in range(a.shape[0]):
-            try:
-                out[i] = np.linalg.solve(a[i], b[i])
-            except np.linalg.LinAlgError:
-                out[i] = np.linalg.lstsq(a[i], b[i], rcond=None)[0]
-        return out
 
 
 @dataclass
@@ -710,19 +476,20 @@ def parse_variogram_parameters(text: str, model: str) -> Optional[Variogram]:
         if not part.strip():
             continue
         if "=" not in part:
-            raise ValueError(f"Variogram parameters must be name=value pairs, e.g. "
-                             f"'nugget=0.01, sill=2, range=50'; got {part.strip()!r}.")
+            raise InputError("Variogram parameters must be name=value pairs, e.g. "
+                             "'nugget=0.01, sill=2, range=50'; got {value}.",
+                             value=repr(part.strip()))
         k, v = part.split("=", 1)
         try:
             vals[k.strip().lower()] = float(v)
         except ValueError:
-            raise ValueError(f"Variogram parameter {k.strip()} is not a number: "
-                             f"{v.strip()!r}.") from None
+            raise InputError("Variogram parameter {name} is not a number: {value}.",
+                             name=k.strip(), value=repr(v.strip())) from None
     allowed = {"nugget", "sill", "range", "slope", "scale", "exponent"}
     unknown = set(vals) - allowed
     if unknown:
-        raise ValueError(f"Unknown variogram parameter(s) {', '.join(sorted(unknown))}; use "
-                         f"{', '.join(sorted(allowed))}.")
+        raise InputError("Unknown variogram parameter(s) {unknown}; use {allowed}.",
+                         unknown=", ".join(sorted(unknown)), allowed=", ".join(sorted(allowed)))
     return given_variogram(model, nugget=vals.get("nugget", 0.0), sill=vals.get("sill"),
                            range_=vals.get("range"), slope=vals.get("slope"),
                            scale=vals.get("scale"), exponent=vals.get("exponent"))
@@ -739,3 +506,7 @@ def describe_variogram(v: Variogram) -> Sequence[Tuple[str, str]]:
         if v.nugget_floored:
             rows.append(("nugget", "raised to 1 % of γ(max lag) for numerical stability"))
     return rows
+
+
+# The kriging system lives in a private module that imports the names above.
+from ._kriging_system import Kriging, single_threaded_blas  # noqa: E402,F401

@@ -16,10 +16,11 @@ import pytest
 
 from geomatics_toolbox.core.errors import InputError
 from geomatics_toolbox.core.io.catalog import find_tiles, read_box
-from geomatics_toolbox.core.io.las import read_las
+from geomatics_toolbox.core.io.las import PointData, read_las
 from geomatics_toolbox.core.io.raster import read_raster
 from geomatics_toolbox.core.lidar import catalog as cc
 from geomatics_toolbox.core.lidar._chunks import GROUND_FILTERS, snap_grid
+from geomatics_toolbox.core.lidar.filters import classify_points, default_selection, ground_filter
 from geomatics_toolbox.core.terrain.idw import idw_grid
 from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 
@@ -54,6 +55,12 @@ def _merged(tiles: Path):
     return paths, x, y, z, cls0
 
 
+def _filter(key, x, y, z, cls0, origin):
+    """The chunks' call on the merged cloud: same filter, selection and origin."""
+    return classify_points(PointData(x, y, z, {"classification": cls0}), ground_filter(key),
+                           default_selection(key), origin=origin)
+
+
 def _catalog_classes(paths, out: Path) -> np.ndarray:
     return np.concatenate([read_las(out / f"{Path(p).stem}_classified.laz",
                                     ("classification",))["classification"] for p in paths])
@@ -83,8 +90,7 @@ def test_catalog_equals_merged_run(tiles, local_run):
     assert not res.failed and len(res.chunks) == 4
     paths, x, y, z, cls0 = _merged(tiles)
     cat = cc.Catalog.open(str(tiles))
-    merged = GROUND_FILTERS["lsq_improved"].func(x, y, z, {"classification": cls0},
-                                                 res.settings["origin"])
+    merged = _filter("lsq_improved", x, y, z, cls0, res.settings["origin"])
     got = _catalog_classes(paths, out)
     assert got.shape == merged.shape == (cat.n_points,)
     inner = _outer_distance(x, y, cat.extent) > BUFFER
@@ -94,7 +100,8 @@ def test_catalog_equals_merged_run(tiles, local_run):
     # DTM: IDW on the merged ground onto the same global lattice
     g = merged == 2
     grid = snap_grid(cat.extent, res.settings["origin"], CELL)
-    ref = idw_grid(x[g], y[g], z[g], grid, max_distance=cat.default_max_distance(), workers=1)
+    ref = idw_grid(x[g], y[g], z[g], grid, max_distance=cat.default_max_distance(), workers=1,
+                   tie_order="xy")
     mosaic = _dtm(out / "dtm.vrt")
     assert mosaic.shape == ref.shape
     both = np.isfinite(ref) & np.isfinite(mosaic)
@@ -338,8 +345,7 @@ def test_chunk_size_run_equals_merged_run(big_tiles, chunk_run):
     assert all(set(c["phases"]) == {"read", "filter", "dtm", "write"} for c in res.chunks)
     _, x, y, z, cls0 = _merged(big_tiles)
     cat = cc.Catalog.open(str(big_tiles))
-    merged = GROUND_FILTERS["lsq_improved"].func(x, y, z, {"classification": cls0},
-                                                 res.settings["origin"])
+    merged = _filter("lsq_improved", x, y, z, cls0, res.settings["origin"])
     cx, cy, cz, got, n_files = _chunk_outputs(out)
     assert n_files == 9 and got.size == x.size     # every point in exactly one chunk
     got_sorted, corder = _sorted_classes(cx, cy, cz, got)
@@ -351,7 +357,8 @@ def test_chunk_size_run_equals_merged_run(big_tiles, chunk_run):
     assert np.mean(got_sorted == ref_sorted) >= 0.999
     g = merged == 2
     grid = snap_grid(cat.extent, res.settings["origin"], CELL)
-    ref = idw_grid(x[g], y[g], z[g], grid, max_distance=cat.default_max_distance(), workers=1)
+    ref = idw_grid(x[g], y[g], z[g], grid, max_distance=cat.default_max_distance(), workers=1,
+                   tie_order="xy")
     mosaic = _dtm(out / "dtm.vrt")
     assert mosaic.shape == (grid.nrows + 50, grid.ncols + 50)    # 900 m of chunks
     mosaic = mosaic[50:, :grid.ncols]                           # rows from the top
@@ -394,8 +401,7 @@ def test_adaptive_slope_is_anchored_on_the_global_origin(tiles, tmp_path):
     assert not res.failed and GROUND_FILTERS["slope_adaptive"].tiling
     paths, x, y, z, cls0 = _merged(tiles)
     cat = cc.Catalog.open(str(tiles))
-    merged = GROUND_FILTERS["slope_adaptive"].func(x, y, z, {"classification": cls0},
-                                                   res.settings["origin"])
+    merged = _filter("slope_adaptive", x, y, z, cls0, res.settings["origin"])
     got = _catalog_classes(paths, out)
     inner = _outer_distance(x, y, cat.extent) > BUFFER
     assert np.array_equal(got[inner], merged[inner])
@@ -438,3 +444,34 @@ def test_chunks_keep_the_extra_bytes_dimensions_every_tile_has(tiles, tmp_path):
     assert np.array_equal(pulse[o1], want[o2])
     assert np.array_equal(np.concatenate([p["intensity"] for p in got])[o1],
                           np.concatenate([p["intensity"] for p in ref])[o2])
+
+
+def test_idw_mosaic_equals_the_merged_cloud_10_m_inside(tiles, tmp_path):
+    """The chunks' IDW cells equal the merged cloud's IDW to float32 precision.
+
+    Classes kept (``keep``) so only the DTM step is compared; every cell more than
+    10 m inside the catalog's outer edge, seams included. Equidistant neighbours are
+    ordered by their coordinates in chunks and reference alike (``tie_order='xy'``),
+    which does not depend on which other points a chunk holds.
+    """
+    from geomatics_toolbox.core.io.catalog import build_vrt
+    from geomatics_toolbox.core.lidar._chunks import process_chunk
+    cat = cc.Catalog.open(str(tiles))
+    tasks = cc.plan_tasks(cat, tmp_path, ground_filter="keep", dtm_method="idw",
+                          cell_size=CELL, buffer=BUFFER)
+    (tmp_path / cc.STATE_DIR).mkdir()
+    for t in tasks:
+        process_chunk(t)
+    build_vrt(str(tmp_path / "m.vrt"), [t.outputs["DTM"] for t in tasks])
+    mosaic = _dtm(tmp_path / "m.vrt")
+    _, x, y, z, cls0 = _merged(tiles)
+    g = cls0 == 2
+    grid = snap_grid(cat.extent, tasks[0].origin, CELL)
+    ref = idw_grid(x[g], y[g], z[g], grid, max_distance=cat.default_max_distance(),
+                   workers=1, tie_order="xy")
+    assert mosaic.shape == ref.shape
+    assert np.array_equal(np.isfinite(mosaic), np.isfinite(ref))
+    cx, cy = (v.reshape(grid.shape) for v in grid.block_centers(0, grid.nrows))
+    sel = (_outer_distance(cx, cy, cat.extent) > 10.0) & np.isfinite(ref)
+    assert sel.sum() > 50_000
+    assert np.max(np.abs(mosaic[sel] - ref[sel])) <= 1e-4

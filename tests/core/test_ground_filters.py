@@ -248,8 +248,15 @@ def test_recommended_one_cell_wide_strip():
 
 
 def test_catalog_default_is_the_recommended_filter():
-    from geomatics_toolbox.core.lidar._chunks import GROUND_FILTERS, default_ground_filter
+    from geomatics_toolbox.core.io.las import PointData
+    from geomatics_toolbox.core.lidar.filters import (
+        classify_points,
+        default_ground_filter,
+        default_selection,
+        ground_filter,
+    )
     assert default_ground_filter() == "groundfilter"
     x, y, z, _ = scene(size=40.0)
-    cls = GROUND_FILTERS["groundfilter"].func(x, y, z, {}, (0.0, 0.0))
+    cls = classify_points(PointData(x, y, z), ground_filter("groundfilter"),
+                          default_selection("groundfilter"))
     assert np.array_equal(cls, recommended.classify(x, y, z))

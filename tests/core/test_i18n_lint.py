@@ -41,3 +41,29 @@ def test_scanner_flags_tr_of_a_variable_unless_marked():
     problems = i18n_sync.scan_tr_calls(src, "algorithms/a.py")
     assert [p.split(":")[1] for p in problems] == ["4"]
     assert i18n_sync.tr_call_problems() == []
+
+
+def test_no_english_only_user_message_left():
+    """core/ raises InputError templates, algorithms/ logs and raises through self.tr()."""
+    problems, over = i18n_sync.message_problems()
+    assert problems == [] and over == []
+
+
+def test_message_scanner_flags_english_and_respects_markers():
+    core = ('def f(p):\n'
+            '    raise ValueError(f"{p} is bad")\n'
+            '    raise RuntimeError("disk gone")\n'
+            '    raise ValueError\n'
+            '    raise ValueError(self.tr("fine"))\n'
+            '    raise ValueError("kind")  # i18n: internal\n')
+    found = i18n_sync.scan_messages(core, "core/x.py")
+    assert sorted(p.split(":")[1] for p in found) == ["2", "3"]
+    alg = ('class A:\n'
+           '    def run(self, feedback, n):\n'
+           '        feedback.pushInfo(f"{n} points")\n'
+           '        feedback.pushInfo(self.tr("{} points").format(n))\n'
+           '        feedback.pushInfo(f"{n}")  # i18n: data\n'
+           '        raise QgsProcessingException("Bad input")\n'
+           '        raise QgsProcessingException(self.tr("Bad input"))\n')
+    found = i18n_sync.scan_messages(alg, "algorithms/a.py")
+    assert sorted(p.split(":")[1] for p in found) == ["3", "6"]

@@ -10,7 +10,7 @@ import pytest
 from geomatics_toolbox.core.lidar import figures as F  # noqa: N812
 from geomatics_toolbox.core.lidar.lsq import STATUS_NAMES, LsqFilter, LsqOptions
 from geomatics_toolbox.core.lidar.pipeline import FilterOutputs, classify_file
-from geomatics_toolbox.core.lidar.slope import SweepRow
+from geomatics_toolbox.core.lidar.sweep import SweepRow
 from geomatics_toolbox.core.reporting import Figure, render_html
 from geomatics_toolbox.core.reporting.i18n import has_translation
 

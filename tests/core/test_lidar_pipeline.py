@@ -158,3 +158,35 @@ def test_lidar_reports_fully_translated(tmp_path, lang):
     assert 'dir="rtl"' in html
     for word in ("Cross matrix", "Classes", "Iterations", "faithful", "converged"):
         assert f">{word}<" not in html
+
+
+def test_input_decoded_once_and_outputs_equal_a_second_decode(tmp_path, monkeypatch):
+    """classify_file decodes the input once and writes both clouds from those records:
+    the files equal copies written by decoding the input again."""
+    import laspy
+
+    from geomatics_toolbox.core.io import las as las_io
+    from geomatics_toolbox.core.lidar.filters import ground_filter
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+    src = tmp_path / "t.laz"
+    write_tile(generate_tile(extent=(60, 60), density=2.0, seed=4), src)
+    calls = []
+    real = las_io._chunks
+
+    def counting(reader, path, chunk_size):
+        calls.append(str(path))
+        return real(reader, path, chunk_size)
+
+    monkeypatch.setattr(las_io, "_chunks", counting)
+    run = classify_file(src, ground_filter("slope_exact"),
+                        FilterOutputs(cloud=tmp_path / "c.laz", ground=tmp_path / "g.las"))
+    assert calls == [str(src)]                   # one decode for the read and both writes
+    monkeypatch.setattr(las_io, "_chunks", real)
+    dims = {"classification": run.classes}
+    las_io.write_las_like(src, tmp_path / "c2.laz", dimensions=dims)
+    las_io.write_las_like(src, tmp_path / "g2.las", dimensions=dims, mask=run.classes == 2)
+    for a, b in (("c.laz", "c2.laz"), ("g.las", "g2.las")):
+        pa, pb = laspy.read(tmp_path / a), laspy.read(tmp_path / b)
+        assert len(pa.points) == len(pb.points) > 1000
+        assert bytes(pa.points.array.tobytes()) == bytes(pb.points.array.tobytes())
+        assert pa.header.parse_crs() == pb.header.parse_crs()

@@ -10,11 +10,13 @@ from hypothesis import strategies as st
 from scipy.spatial import cKDTree
 
 from geomatics_toolbox.core.io.las import read_las, write_las, write_las_like
+from geomatics_toolbox.core.lidar import _slope_kernel as sk
 from geomatics_toolbox.core.lidar import pipeline as sp
 from geomatics_toolbox.core.lidar import slope as sf
 from geomatics_toolbox.core.lidar import sweep as sw
 from geomatics_toolbox.core.lidar.pipeline import FilterOutputs, SelectionOptions
 from geomatics_toolbox.core.progress import Cancelled, Monitor
+from geomatics_toolbox.synthetic import oracles
 
 SAMPLES = ("samp11", "samp12", "samp31", "samp54")
 
@@ -55,14 +57,14 @@ def test_labels_equal_brute_force(c):
     kw = dict(radius=c["radius"], height_tolerance=c["h"], classify=c["classify"],
               neighbours=c["neighbours"])
     fast = sf.slope_filter(c["x"], c["y"], c["z"], slope=c["slope"], cell=c["cell"], **kw)
-    dense = sf.slope_filter_reference(c["x"], c["y"], c["z"], slope=c["slope"],
+    dense = oracles.slope_filter_reference(c["x"], c["y"], c["z"], slope=c["slope"],
                                       method="dense", **kw)
-    tree = sf.slope_filter_reference(c["x"], c["y"], c["z"], slope=c["slope"],
+    tree = oracles.slope_filter_reference(c["x"], c["y"], c["z"], slope=c["slope"],
                                      method="kdtree", **kw)
     np.testing.assert_array_equal(fast.ground, dense)
     np.testing.assert_array_equal(tree, dense)
     # the sweep's one-pass labels agree for every threshold of a range
-    s = sf.max_slope_reference(c["x"], c["y"], c["z"], method="dense", **kw)
+    s = oracles.max_slope_reference(c["x"], c["y"], c["z"], method="dense", **kw)
     v = sf.max_slope(c["x"], c["y"], c["z"], slope_range=(20.0, 60.0), cell=c["cell"], **kw)
     for theta in (20.0, 26.565051177077986, 40.0, 45.0, 60.0):
         t = np.tan(np.radians(theta))
@@ -79,7 +81,7 @@ def test_random_float_clouds_with_objects():
         z = 200 + 0.4 * x % 9 + rng.normal(0, 0.1, n)
         obj = rng.random(n) < 0.3
         z[obj] += rng.uniform(0.2, 15, obj.sum())
-        ref = sf.max_slope_reference(x, y, z, radius=r, height_tolerance=0.1)
+        ref = oracles.max_slope_reference(x, y, z, radius=r, height_tolerance=0.1)
         all_pairs = 2 * len(cKDTree(np.column_stack((x, y))).query_pairs(r))
         for theta in (30.0, 45.0, 60.0):
             got = sf.slope_filter(x, y, z, radius=r, slope=theta, height_tolerance=0.1)
@@ -91,13 +93,13 @@ def test_random_float_clouds_with_objects():
 
 def test_tiling_of_huge_extents_is_exact(monkeypatch):
     """Clouds too large for one dense grid are tiled with an r-wide overlap: same labels."""
-    monkeypatch.setattr(sf, "_MAX_CELLS", 2000)
+    monkeypatch.setattr(sk, "_MAX_CELLS", 2000)
     rng = np.random.default_rng(9)
     n = 3000
     x = 600_000 + np.r_[rng.uniform(0, 30, n // 2), rng.uniform(500, 530, n // 2)]
     y = np.r_[rng.uniform(0, 30, n // 2), rng.uniform(200, 230, n // 2)]
     z = rng.normal(0, 0.3, n) + (rng.random(n) < 0.3) * rng.uniform(0, 5, n)
-    ref = sf.max_slope_reference(x, y, z, radius=2.5, height_tolerance=0.1)
+    ref = oracles.max_slope_reference(x, y, z, radius=2.5, height_tolerance=0.1)
     for theta in (30.0, 45.0):
         got = sf.slope_filter(x, y, z, radius=2.5, slope=theta, height_tolerance=0.1)
         np.testing.assert_array_equal(got.ground, ~(ref > np.tan(np.radians(theta))))
@@ -186,7 +188,7 @@ def test_sweep_rows_equal_single_runs_and_pick_best():
     obj = rng.random(n) < 0.35
     z[obj] += rng.uniform(0.3, 12, obj.sum())
     slopes = [30, 40, 44, 50, 60]
-    res = sf.threshold_sweep(x, y, z, ~obj, slopes=slopes, radii=[2.0, 5.0],
+    res = sw.threshold_sweep(x, y, z, ~obj, slopes=slopes, radii=[2.0, 5.0],
                              height_tolerance=[0.0, 0.1])
     assert len(res.rows) == 20
     for row in res.rows:
@@ -195,10 +197,10 @@ def test_sweep_rows_equal_single_runs_and_pick_best():
         assert single.n_ground == row.n_ground
         assert row.a + row.b + row.c + row.d == n
     assert res.best.total == min(r.total for r in res.rows)
-    kap = sf.threshold_sweep(x, y, z, ~obj, slopes=slopes, radii=[2.0], metric="kappa")
+    kap = sw.threshold_sweep(x, y, z, ~obj, slopes=slopes, radii=[2.0], metric="kappa")
     assert kap.best.kappa == max(r.kappa for r in kap.rows)
     # Type II alone favours the lowest threshold (the forest study's caveat)
-    t2 = sf.threshold_sweep(x, y, z, ~obj, slopes=slopes, radii=[2.0], metric="type2")
+    t2 = sw.threshold_sweep(x, y, z, ~obj, slopes=slopes, radii=[2.0], metric="type2")
     assert t2.best.slope == 30
     assert res.to_csv().splitlines()[0].startswith("radius_m,slope_deg,height_tolerance_m")
 
@@ -246,7 +248,7 @@ def test_bad_arrays():
     with pytest.raises(ValueError, match="non-finite"):
         sf.slope_filter([1.0, np.nan], [1.0, 2.0], [1.0, 2.0])
     with pytest.raises(ValueError, match="reference has 2 labels"):
-        sf.threshold_sweep([1.0, 2.0, 3.0], [0.0] * 3, [0.0] * 3, [True, False])
+        sw.threshold_sweep([1.0, 2.0, 3.0], [0.0] * 3, [0.0] * 3, [True, False])
     with pytest.raises(ValueError, match="classify has 2"):
         sf.slope_filter([1.0, 2.0, 3.0], [0.0] * 3, [0.0] * 3, classify=[True, False])
 

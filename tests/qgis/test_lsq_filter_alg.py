@@ -23,6 +23,15 @@ def tile(tmp_path_factory):
     return path, t
 
 
+def _core_classes(t, **kw):
+    """The core filter on the points the input does not mark as noise (7, 18 kept)."""
+    noise = np.isin(t.classification, (7, 18))
+    res = lsq_ground_filter(t.x[~noise], t.y[~noise], t.z[~noise], **kw)
+    cls = np.asarray(t.classification, np.uint8).copy()
+    cls[~noise] = res.classification
+    return cls, res
+
+
 def _all_dims_but(path_a, path_b, skip=("classification",)):
     a, b = laspy.read(path_a), laspy.read(path_b)
     assert a.header.point_format.id == b.header.point_format.id
@@ -44,9 +53,10 @@ def test_filter_writes_classes_and_preserves_everything_else(qgis_processing, ti
     a, b = _all_dims_but(path, out)
     assert a.header.parse_crs() == b.header.parse_crs()
     cls = np.asarray(b.classification)
-    # identical to the core on the same coordinates (noise pre-filter on by default)
-    core = lsq_ground_filter(t.x, t.y, t.z, tile_size=40, threshold=0.5, noise=True)
-    assert np.array_equal(cls, core.classification)
+    # identical to the core on the same coordinates (noise pre-filter on by default;
+    # the input's noise classes 7 and 18 kept, as by every registered filter)
+    expect, core = _core_classes(t, tile_size=40, threshold=0.5, noise=True)
+    assert np.array_equal(cls, expect)
     assert res["N_GROUND"] == np.sum(cls == 2) > 0
     assert res["N_OTHER"] == np.sum(cls == 1) and res["N_NOISE"] == np.sum(cls == 7)
     assert res["N_TILES"] == core.grid.count and res["POINTS_PER_SECOND"] > 0
@@ -60,17 +70,22 @@ def test_filter_writes_classes_and_preserves_everything_else(qgis_processing, ti
     assert acc.type2 < 2.0
 
 
-def test_input_classification_is_ignored(qgis_processing, tile, tmp_path):
+def test_input_classes_ignored_but_noise_classes_kept(qgis_processing, tile, tmp_path):
+    """Input ground/other classes play no part; input noise (7, 18) keeps its class."""
     path, t = tile
     pd = read_las(path, ("classification",))
+    noise = np.isin(pd["classification"], (7, 18))
+    assert noise.sum() >= 4
     outs = []
-    for k, classes in enumerate((np.full(len(pd), 2, np.uint8), pd["classification"])):
+    for k, classes in enumerate((np.where(noise, pd["classification"], 2).astype(np.uint8),
+                                 pd["classification"])):
         src = tmp_path / f"in{k}.las"
         write_las(src, pd.x, pd.y, pd.z, dimensions={"classification": classes})
         out = tmp_path / f"out{k}.las"
         qgis_processing.run(ALG, {"INPUT": str(src), "OUTPUT": str(out), "MODE": 1})
         outs.append(read_las(out, ("classification",))["classification"])
     assert np.array_equal(outs[0], outs[1])
+    assert np.array_equal(outs[1][noise], pd["classification"][noise])
 
 
 def test_improved_mode_and_advanced_parameters(qgis_processing, tile, tmp_path):
@@ -81,11 +96,11 @@ def test_improved_mode_and_advanced_parameters(qgis_processing, tile, tmp_path):
                                     "NOISE": False, "SUBSET_SIZE": 2000, "SEED": 5,
                                     "REJECTION": 1, "MAX_ITERATIONS": 8,
                                     "TILE_STATS": str(tiles_csv)})
-    core = lsq_ground_filter(t.x, t.y, t.z, mode="improved", noise=False, subset_size=2000,
-                             seed=5, rejection="cumulative", max_iterations=8)
+    expect, core = _core_classes(t, mode="improved", noise=False, subset_size=2000,
+                                 seed=5, rejection="cumulative", max_iterations=8)
     cls = read_las(out, ("classification",))["classification"]
-    assert np.array_equal(cls, core.classification)
-    assert res["N_NOISE"] == 0
+    assert np.array_equal(cls, expect)
+    assert res["N_NOISE"] == np.sum(cls == 7) == np.sum(t.classification == 7)   # kept
     rows = list(csv.DictReader(tiles_csv.open(encoding="utf-8")))
     assert len(rows) == int(np.sum(core.tile_iterations + 1))
     first = [r for r in rows if r["step"] == "0"]
