@@ -12,7 +12,7 @@ from scipy.spatial import cKDTree
 from ..errors import InputError
 from ..progress import Monitor
 from ..system import limit_blas_threads
-from .kriging import (
+from ._kriging_base import (
     DRIFTS,
     EPS,
     GLOBAL_MAX_POINTS,

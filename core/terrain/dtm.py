@@ -19,7 +19,8 @@ Examples
 >>> from geomatics_toolbox.core.terrain.grid import grid_from_extent
 >>> x, y = np.array([0.5, 1.5, 0.5, 1.5]), np.array([0.5, 0.5, 1.5, 1.5])
 >>> grid = grid_from_extent((0.0, 2.0, 0.0, 2.0), 1.0)
->>> out = dtm_method("idw").interpolate(x, y, x + y, grid, fill=True)
+>>> method = dtm_method("idw", IdwOptions(neighbours=4))
+>>> out = method.interpolate(x, y, x + y, grid, fill=True)
 >>> np.round(out.z, 3).tolist()
 [[2.0, 3.0], [1.0, 2.0]]
 """

@@ -92,11 +92,9 @@ def test_model_output_names_pinned_to_version1(qgis_app):
 
 
 def test_shipped_model(qgis_process, demo):
-    if not MODEL.exists():
-        pytest.skip(f"{MODEL} not built yet (needs geomatics:lsqgroundfilter)")
+    assert MODEL.exists(), f"{MODEL} missing: run `make model`"
     listing = qgis_process.call("list").stdout
-    if "geomatics:lsqgroundfilter" not in listing:
-        pytest.skip("geomatics:lsqgroundfilter is not registered")
+    assert "geomatics:groundfilter" in listing
     res, out = run_model(qgis_process, MODEL, demo)
     check_outputs(res, out)
     # the provider also offers the shipped model as geomatics:lidar_to_dtm

@@ -245,9 +245,9 @@ def test_every_report_algorithm_is_checked_or_pending(qgis_app):
     assert not set(CASES) & set(PENDING)
 
 
-@pytest.mark.parametrize("reason", [pytest.param(r, id=a) for a, r in PENDING.items()])
-def test_pending_reports(reason):
-    pytest.skip(f"pending: {reason}")
+def test_pending_reports_say_why():
+    """Every algorithm left out of CASES names its reason (no test that can only skip)."""
+    assert all(isinstance(r, str) and len(r) > 20 for r in PENDING.values())
 
 
 @needs_chromium

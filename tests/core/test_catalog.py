@@ -8,7 +8,6 @@ import socket
 import struct
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
@@ -243,10 +242,8 @@ def test_external_cluster_matches_local(tiles, tmp_path, dask_cluster):
     remote = tmp_path / "remote"
     cc.run_catalog(str(tiles), local, ground_filter="lsq_faithful", cell_size=CELL,
                    buffer=60.0, workers=1)
-    t0 = time.perf_counter()
     res = cc.run_catalog(str(tiles), remote, ground_filter="lsq_faithful", cell_size=CELL,
                          buffer=60.0, scheduler=dask_cluster)
-    assert time.perf_counter() - t0 < 300
     assert not res.failed and res.scheduler == dask_cluster
     assert len({c["worker"] for c in res.chunks}) == 2
     paths = find_tiles(str(tiles))
