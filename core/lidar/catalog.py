@@ -504,12 +504,25 @@ def _client(workers: int, scheduler: str, memory_limit):
         return Client(workers_.cluster), workers_
 
 
+def finished_chunks(out_folder) -> List[str]:
+    """Keys of the chunks whose done marker is in ``out_folder`` (kept for a resume)."""
+    state = Path(out_folder) / STATE_DIR
+    suffix = ".done.json"
+    return sorted(p.name[:-len(suffix)] for p in state.glob(f"*{suffix}")) \
+        if state.is_dir() else []
+
+
 def _pkg_name() -> str:
     return __name__.split(".")[0]
 
 
-def _collect(futures: dict, mon: Monitor, n_total: int, done_before: int, failed: dict):
-    """Wait for the chunk futures; progress per chunk; cancel stops scheduling."""
+def _collect(futures: dict, mon: Monitor, n_total: int, done_before: int, failed: dict,
+             on_chunk=None):
+    """Wait for the chunk futures; cancel stops scheduling.
+
+    Progress per chunk, and ``on_chunk(stats)``: the stats of each finished chunk or
+    ``{"key", "status": "failed", "error"}``.
+    """
     pending = set(futures)
     results = []
     while pending:
@@ -523,9 +536,13 @@ def _collect(futures: dict, mon: Monitor, n_total: int, done_before: int, failed
             key = futures[f]
             if f.status == "finished":
                 results.append(f.result())
+                event = results[-1]
             else:
                 exc = f.exception()
                 failed[key] = f"{type(exc).__name__}: {exc}"
+                event = {"key": key, "status": "failed", "error": failed[key]}
+            if on_chunk is not None:
+                on_chunk(event)
             mon.update((done_before + len(results) + len(failed)) / max(n_total, 1))
     return results
 
@@ -556,7 +573,7 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
                 scheduler: str = "", cog: bool = False,
                 origin=None, max_distance: Optional[float] = None,
                 memory_limit="auto", fail_once: Sequence[str] = (),
-                progress=None, cancel=None) -> CatalogResult:
+                on_chunk=None, progress=None, cancel=None) -> CatalogResult:
     """Process a tile catalog chunk by chunk on Dask (see the module docstring).
 
     Parameters
@@ -589,6 +606,10 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
         DTM gap distance (m); default :meth:`Catalog.default_max_distance`.
     fail_once : sequence of str
         Tile stems whose first attempt raises (tests of the retry).
+    on_chunk : callable, optional
+        Called with the stats dict of every chunk as it finishes (``key``, ``status``
+        'done'/'empty'/'failed', ``points``, ``seconds``, ``error``), and of every chunk
+        a previous run finished (``status`` 'skipped'), e.g. for a log line per tile.
 
     Returns
     -------
@@ -621,11 +642,14 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     nw = int(workers or os.cpu_count() or 1)
     chunks = [s for s in previous.values() if s is not None]
     failed: Dict[str, str] = {}
+    if on_chunk is not None:
+        for s in chunks:
+            on_chunk({**s, "status": "skipped"})
     mon.update(len(chunks) / len(tasks))
     clock.lap("plan")
     if todo:
         chunks += _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon,
-                            len(chunks), failed, clock)
+                            len(chunks), failed, clock, on_chunk)
     vrt, cog_path = _mosaic(cat, folder, tasks, failed, chunks, cog)
     clock.lap("mosaic")
     order = {t.key: i for i, t in enumerate(tasks)}
@@ -661,7 +685,7 @@ def _mosaic(cat, folder: Path, tasks, failed, chunks, cog: bool):
 
 
 def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, failed,
-              clock):
+              clock, on_chunk=None):
     client, cluster = _client(nw, scheduler, memory_limit)
     clock.lap("cluster start")
     try:
@@ -672,7 +696,7 @@ def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, f
         futures = {client.submit(process_chunk, t, key=f"chunk-{t.key}-{time.time_ns()}",
                                  retries=1, pure=False, priority=int(t.cost)): t.key
                    for t in order}
-        results = _collect(futures, mon, len(tasks), n_before, failed)
+        results = _collect(futures, mon, len(tasks), n_before, failed, on_chunk)
         clock.lap("compute")
         return results
     except BaseException:
