@@ -60,6 +60,10 @@ class SelectionOptions:
     noise_threshold: float = 1.0
     keep_noise_classes: bool = True
 
+    def __post_init__(self):
+        """Refuse an invalid option (InputError naming it)."""
+        self.validate()
+
     def validate(self) -> SelectionOptions:
         """Raise :class:`InputError` on an invalid option; returns self."""
         if self.returns not in RETURNS:

@@ -203,6 +203,21 @@ def _validate(x, y, z, order, tile_size, threshold, max_iterations, tolerance, s
               mode, sparse_tiles, rejection="reweighted"):
     x, y, z = as_xyz(x, y, z, empty_error="The point cloud is empty: there is nothing to "
                      "filter. Choose a file that holds points.", projected=True)
+    check_options(order=order, tile_size=tile_size, threshold=threshold,
+                  max_iterations=max_iterations, tolerance=tolerance,
+                  subset_size=subset_size, mode=mode, sparse_tiles=sparse_tiles,
+                  rejection=rejection)
+    ext = max(x.max() - x.min(), y.max() - y.min())
+    if ext / tile_size > 1e6:
+        raise InputError("TILE_SIZE {tile_size} m cuts the {extent} m extent into more "
+                         "than a million tiles per side; use a tile size of metres to "
+                         "hundreds of metres.", tile_size=tile_size, extent=f"{ext:.0f}")
+    return x, y, z
+
+
+def check_options(*, order, tile_size, threshold, max_iterations, tolerance, subset_size,
+                  mode, sparse_tiles, rejection) -> None:
+    """Raise :class:`InputError` naming the first invalid LSQ option (None = default)."""
     if int(order) not in (1, 2) or int(order) != order:
         raise InputError("ORDER must be 1 or 2 (the paper's planar or quadratic "
                          "surface), got {order}.", order=order)
@@ -214,7 +229,7 @@ def _validate(x, y, z, order, tile_size, threshold, max_iterations, tolerance, s
                                  "(e.g. 50).", value=val)
             raise InputError("THRESHOLD must be a positive number of metres, got {value}. "
                              "Use 0.5 to 1.0 m (larger on steeper terrain).", value=val)
-    if int(max_iterations) < 1:
+    if max_iterations is not None and int(max_iterations) < 1:
         raise InputError("max_iterations must be at least 1, got {value}.",
                          value=max_iterations)
     if not np.isfinite(tolerance) or tolerance <= 0:
@@ -234,12 +249,6 @@ def _validate(x, y, z, order, tile_size, threshold, max_iterations, tolerance, s
     if sparse_tiles not in ("borrow", "unclassified"):
         raise InputError("sparse_tiles must be 'borrow' or 'unclassified', got {value}.",
                          value=repr(sparse_tiles))
-    ext = max(x.max() - x.min(), y.max() - y.min())
-    if ext / tile_size > 1e6:
-        raise InputError("TILE_SIZE {tile_size} m cuts the {extent} m extent into more "
-                         "than a million tiles per side; use a tile size of metres to "
-                         "hundreds of metres.", tile_size=tile_size, extent=f"{ext:.0f}")
-    return x, y, z
 
 
 def lsq_ground_filter(x, y, z, *, order: int = 2, tile_size: float = 50.0,
@@ -488,6 +497,12 @@ class LsqOptions:
     min_points: Optional[int] = None
     sparse_tiles: str = "borrow"
     rejection: str = "reweighted"
+
+    def __post_init__(self):
+        """Refuse an invalid option (:func:`check_options`)."""
+        check_options(**{f: getattr(self, f) for f in (
+            "order", "tile_size", "threshold", "max_iterations", "tolerance", "subset_size",
+            "mode", "sparse_tiles", "rejection")})
 
 
 class LsqFilter(GroundFilter):

@@ -268,6 +268,12 @@ def terrain_trend(x, y, z, *, cell: float = 10.0, window: float = 60.0,
 MODES = ("exact", "adaptive")
 
 
+def _check_mode(mode) -> None:
+    if mode not in MODES:
+        raise InputError("mode must be one of {choices}, got {mode}.",
+                         choices=", ".join(MODES), mode=repr(mode))
+
+
 def slope_filter(x, y, z, *, radius: float = DEFAULT_RADIUS, slope: float = DEFAULT_SLOPE,
                  height_tolerance: float = DEFAULT_HEIGHT_TOLERANCE, classify=None, neighbours=None,
                  mode: str = "exact", trend_cell: float = 10.0, trend_window: float = 60.0,
@@ -342,9 +348,7 @@ def slope_filter(x, y, z, *, radius: float = DEFAULT_RADIUS, slope: float = DEFA
     r = _check_radius(radius)
     theta = _check_slope(slope)
     h = _check_height(height_tolerance)
-    if mode not in MODES:
-        raise InputError("mode must be one of {choices}, got {mode}.",
-                         choices=", ".join(MODES), mode=repr(mode))
+    _check_mode(mode)
     cm = _mask(classify, x.size, "classify")
     nm = _mask(neighbours, x.size, "neighbours")
     mon = Monitor(progress, cancel)
@@ -383,14 +387,16 @@ class SlopeOptions:
     trend_cell: float = 10.0
     trend_window: float = 60.0
 
+    def __post_init__(self):
+        """Refuse an invalid option (InputError naming it)."""
+        self.validate()
+
     def validate(self) -> SlopeOptions:
-        """Raise ``ValueError`` naming the bad option; returns self."""
+        """Raise :class:`InputError` naming the bad option; returns self."""
         _check_radius(self.radius)
         _check_slope(self.slope)
         _check_height(self.height_tolerance)
-        if self.mode not in MODES:
-            raise InputError("mode must be one of {choices}, got {mode}.",
-                             choices=", ".join(MODES), mode=repr(self.mode))
+        _check_mode(self.mode)
         if self.mode == "adaptive" and not (self.trend_cell > 0 and self.trend_window > 0):
             raise InputError("TREND_CELL and TREND_WINDOW must be > 0 metres in adaptive "
                              "mode (e.g. 10 and 60).")

@@ -6,7 +6,7 @@ renderer :func:`render_html` and the translator :func:`translator`.
 """
 from .content import Figure, Formula, KeyValues, Paragraph, Report, Section, T, Table
 from .i18n import direction, translator
-from .render import about_rows, render_html
+from .render import render_html
 
 __all__ = ["Figure", "Formula", "KeyValues", "Paragraph", "Report", "Section", "T", "Table",
-           "about_rows", "direction", "render_html", "translator"]
+           "direction", "render_html", "translator"]

@@ -69,3 +69,22 @@ def test_no_core_function_over_100_lines():
                     long.add((str(path.relative_to(CORE)), node.name))
     assert long <= LONG_ALLOWED, f"new functions over {MAX_LINES} lines: {long - LONG_ALLOWED}"
     assert not (LONG_ALLOWED - long), f"split now, drop from LONG_ALLOWED: {LONG_ALLOWED - long}"
+
+
+def test_algorithms_use_no_private_core_module():
+    """algorithms/ imports the core's public modules and sub-package surfaces only."""
+    import re
+    root = Path(__file__).resolve().parents[2]
+    bad = []
+    for path in sorted((root / "algorithms").glob("*.py")):
+        for n, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+            m = re.match(r"\s*from \.\.core((?:\.\w+)*) import (.+)", line)
+            if m and (re.search(r"\._", m.group(1)) or re.match(r"_\w", m.group(2))):
+                bad.append(f"{path.name}:{n}: {line.strip()}")
+    assert bad == []
+
+
+def test_lidar_surface_names_exist():
+    import geomatics_toolbox.core.lidar as lidar
+    assert len(lidar.__all__) >= 20
+    assert all(hasattr(lidar, name) for name in lidar.__all__)
