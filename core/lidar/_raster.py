@@ -143,6 +143,28 @@ class PointCells:
         bot += top
         return bot
 
+    def read_mask(self):
+        """Cells read by :meth:`bilinear` or by a central-difference slope at a point's cell.
+
+        A filled raster is needed only there: at low density most cells are empty
+        and far from every point.
+        """
+        g = self.grid
+        m = np.zeros(g.rows * g.cols, dtype=bool)
+        i = self.i00
+        c1 = 1 if g.cols > 1 else 0
+        r1 = g.cols if g.rows > 1 else 0
+        for off in (0, c1, r1, r1 + c1):
+            m[i + off] = True
+        cells = self.cells                      # occupied cells, and their 4-neighbours
+        m[cells] = True
+        col = cells % g.cols
+        m[cells[col > 0] - 1] = True
+        m[cells[col < g.cols - 1] + 1] = True
+        m[cells[cells >= g.cols] - g.cols] = True
+        m[cells[cells < (g.rows - 1) * g.cols] + g.cols] = True
+        return m.reshape(g.rows, g.cols)
+
     def nearest(self, raster):
         """Value of the cell holding each point."""
         return raster.ravel()[self.idx]

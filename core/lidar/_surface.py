@@ -128,8 +128,23 @@ def plane_fit(z, valid, radius: int):
     return rms, centre, gx, gy
 
 
+def _knn(tree, q, k: int):
+    """``k`` nearest neighbours: first within a short radius, then unbounded.
+
+    Most hole cells have their border close by; the bounded search prunes the tree.
+    """
+    bound = 2.0 * np.sqrt(k)
+    d, j = tree.query(q, k=k, distance_upper_bound=bound)
+    d, j = d.reshape(len(q), k), j.reshape(len(q), k)
+    far = np.isinf(d[:, -1])
+    if far.any():
+        df, jf = tree.query(q[far], k=k)
+        d[far], j[far] = df.reshape(-1, k), jf.reshape(-1, k)
+    return d, j
+
+
 def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12,
-                 reach: float = 10.0):
+                 reach: float = 10.0, need=None):
     """Fill invalid cells with the weighted tangent planes of the hole borders.
 
     Parameters
@@ -146,6 +161,9 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         Border cells per hole cell (the nearest ones).
     reach : float
         Distance (m) beyond which a tangent plane's slope term stops growing.
+    need : ndarray of bool, optional
+        Cells that will be read; invalid cells outside it are left NaN (at low
+        density most cells are empty and only those near a point are ever read).
 
     Returns
     -------
@@ -161,19 +179,26 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         return R.fill_tin(z, valid)
     gx, gy = plane_gradient(z, valid, radius, cell)
     bz, bgx, bgy = z[rr, cc], gx[rr, cc], gy[rr, cc]
+    bs = bgx * cc + bgy * rr               # plane term at the border cell itself
     del gx, gy
     tree = cKDTree(np.column_stack((cc, rr)))
     k = min(int(neighbours), rr.size)
     out = np.where(valid, z, np.nan)
-    hr, hc = np.nonzero(~valid)
+    hr, hc = np.nonzero(~valid if need is None else ~valid & need)
     for s in range(0, hr.size, BATCH):
         r, c = hr[s:s + BATCH], hc[s:s + BATCH]
-        d, j = tree.query(np.column_stack((c, r)), k=k)
-        d, j = d.reshape(r.size, k), j.reshape(r.size, k)
+        d, j = _knn(tree, np.column_stack((c, r)), k)
         d *= cell
         np.maximum(d, 1e-9, out=d)
-        damp = np.minimum(1.0, reach / d) * cell
-        plane = bz[j] + damp * (bgx[j] * (c[:, None] - cc[j]) + bgy[j] * (r[:, None] - rr[j]))
-        w = d ** -2.0
-        out[r, c] = (w * plane).sum(axis=1) / w.sum(axis=1)
+        damp = np.minimum(1.0, reach / d)
+        damp *= cell
+        gxj, gyj = bgx[j], bgy[j]
+        plane = gxj * c[:, None] + gyj * r[:, None]
+        plane -= bs[j]
+        plane *= damp
+        plane += bz[j]
+        np.multiply(d, d, out=d)
+        np.divide(1.0, d, out=d)                     # weights 1 / d²
+        plane *= d
+        out[r, c] = plane.sum(axis=1) / d.sum(axis=1)
     return out

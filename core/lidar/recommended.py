@@ -291,18 +291,19 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     pc = R.PointCells(x, y, R.Grid.around(x, y, opt.cell, origin=origin))
     zmin = pc.cell_min(z)
     rep(0.3)
-    dtm = surface(zmin, pc.grid, opt, rep)
+    need = pc.read_mask()
+    dtm = surface(zmin, pc.grid, opt, rep, need=need)
     rep(0.8)
     cls = label_points(z, dtm, pc, opt)
     for k in range(int(opt.refine)):
         rep(0.8 + 0.2 * (k + 1) / (opt.refine + 1))
         zg = pc.cell_min(z, cls == GROUND)
-        cls = label_points(z, fill_holes(zg, ~np.isnan(zg), pc.grid, opt), pc, opt)
+        cls = label_points(z, fill_holes(zg, ~np.isnan(zg), pc.grid, opt, need), pc, opt)
     rep(1.0)
     return cls
 
 
-def surface(zmin, grid, opt, rep):
+def surface(zmin, grid, opt, rep, need=None):
     """Provisional bare-earth raster from the minimum surface (steps 2-6).
 
     Object, low and empty cells are filled by :func:`fill_holes`.
@@ -317,6 +318,8 @@ def surface(zmin, grid, opt, rep):
         Options with ``cell`` set.
     rep : callable
         Progress step (checks cancel).
+    need : ndarray of bool, optional
+        Cells the caller reads (others may stay NaN).
 
     Returns
     -------
@@ -333,12 +336,12 @@ def surface(zmin, grid, opt, rep):
     obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep)
     if opt.grow and opt.grow_iters > 0:
         skip = low | empty
-        obj = grow_ground(zmin, obj, skip, fill_holes(zmin, ~(obj | skip), grid, opt),
+        obj = grow_ground(zmin, obj, skip, fill_holes(zmin, ~(obj | skip), grid, opt, ~empty),
                           grid.cell, opt)
     bad = obj | low | empty
     if bad.all():
         bad = low | empty
-    return fill_holes(zmin, ~bad, grid, opt)
+    return fill_holes(zmin, ~bad, grid, opt, need)
 
 
 def grow_ground(zmin, obj, skip, dtm, cell, opt):
@@ -410,7 +413,7 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
     return obj & ~ground
 
 
-def fill_holes(z, valid, grid, opt):
+def fill_holes(z, valid, grid, opt, need=None):
     """Fill the non-ground cells of a DTM raster with border tangent planes.
 
     Parameters
@@ -423,6 +426,8 @@ def fill_holes(z, valid, grid, opt):
         Its grid.
     opt : RecommendedOptions
         Options (``fill_radius``, ``fill_neighbours``, ``fill_reach``).
+    need : ndarray of bool, optional
+        Cells that are read; other invalid cells stay NaN.
 
     Returns
     -------
@@ -431,7 +436,7 @@ def fill_holes(z, valid, grid, opt):
     """
     return S.tangent_fill(z, valid, grid.cell,
                           radius=max(1, int(round(opt.fill_radius / grid.cell))),
-                          neighbours=opt.fill_neighbours, reach=opt.fill_reach)
+                          neighbours=opt.fill_neighbours, reach=opt.fill_reach, need=need)
 
 
 def trend_surface(zf, grid, opt):

@@ -22,23 +22,25 @@ SAMPLES = ["samp11", "samp12", "samp22", "samp31", "samp41", "samp53", "samp54",
 #: /work/scratch/ground, before the port;
 #: re-measured with the cliff-aware mirroring: mean 8.07 %, 8.05 % before it).
 #: Low-outlier cells read at the ground-return scale under canopy (``_lowcells``):
-#: samp41 2.5732 -> 2.6089, samp53 3.1997 -> 3.2259, the other six identical.
+#: samp41 2.5732 -> 2.6089, samp53 3.1997 -> 3.2259, the other six identical. Hole
+#: fill k-NN searched within a short radius first (ties at the 12th neighbour resolve
+#: differently): samp11/12/22/53/61 move by -0.012..+0.004 (mean 3.368).
 RESEARCH = {
-    "samp11": ("a2568d8b68a5af9226ab989104c455785744ea7c", 8.9187,
+    "samp11": ("ba1f3c1b41aed0746d4d40affaaa48d0689685f6", 8.9134,
                "6e1e87dada2ddc6ea5895aaca62e6fe77b8d4c67", 14.5909),
-    "samp12": ("9fa5d2dead9f0614bdbdbcdc4e1368a0dd31f8b1", 2.7092,
+    "samp12": ("9002d44cfe968fde0edac8893d03108155640d21", 2.7130,
                "4cc2fe02320d4d310afb6adce9fdc41a369ba1ff", 5.8577),
-    "samp22": ("c662f662d292299b134228d6bb10f3737e3d6d58", 2.9077,
+    "samp22": ("970e36774cb3a3d30d08863fa80ea5777532a26e", 2.9047,
                "da7b30150e55c0baee260839929777b1eefa5dc1", 18.7336),
     "samp31": ("15aa21b1fafc2d8bf20935d0c0a92f9955b5077b", 1.9507,
                "c439440fbe06d5086c9999b50d9d0b06d6f3b611", 1.5834),
     "samp41": ("abf075402a9f47f36a12fba27ea648dc61072bbc", 2.6089,
                "648d274242335fa3e2063639819420dc130bf4a2", 9.5717),
-    "samp53": ("162a2aff19e76c9ed696390a7a5d037f810fa7dc", 3.2259,
+    "samp53": ("ccc174b9bf89cc5ba3d45d6ae491e1aafdd46edb", 3.2143,
                "00592f576252742637e12c6e37c938b4b54f79c5", 8.3862),
     "samp54": ("248c73e81f64485518c6dc4aedcf506ae054b6fd", 2.6487,
                "1580381cbe70109c2e69d6cbc8bcebb45a34a5ec", 3.1599),
-    "samp61": ("55c04aec05059270d5809acda1ef67a99f17de03", 1.9966,
+    "samp61": ("b739a6f1fadf3cf7999d9a25ff85ffe876b62e1d", 1.9909,
                "3034dc3b1d9c0daed521475e0b524de41a4e1e39", 2.7153),
 }
 
@@ -174,7 +176,7 @@ def test_recommended_isprs_golden_identical_to_research(isprs_dir, sample):
 
 def test_recommended_isprs_mean_and_wins(isprs_dir):
     totals = [RESEARCH[s][1] for s in SAMPLES]
-    assert np.mean(totals) == pytest.approx(3.371, abs=0.0005)
+    assert np.mean(totals) == pytest.approx(3.368, abs=0.0005)
     smrf = dict(samp11=8.52, samp12=3.60, samp22=3.59, samp31=3.55, samp41=12.20,
                 samp53=7.99, samp54=4.28, samp61=2.28)     # pysmrf, PDAL defaults
     assert sum(RESEARCH[s][1] < smrf[s] for s in SAMPLES) == 7
