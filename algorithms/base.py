@@ -36,7 +36,7 @@ from ..core import deps
 from ..core.errors import InputError
 from ..core.io.contract import OutputContract, Terminated, atomic_output
 from ..core.progress import Cancelled
-from ..core.reporting import render_html
+from ..core.reporting import about_rows, render_html
 from .locale import user_locale
 
 ICON_DIR = os.path.join(os.path.dirname(os.path.dirname(__file__)), "provider", "icons")
@@ -54,6 +54,18 @@ def first_sentence(html: str) -> str:
     if len(sentence) > 200:      # a tooltip, not a paragraph
         sentence = sentence[:200].rsplit(" ", 1)[0].rstrip(",;:") + " …"
     return sentence
+
+
+def plugin_version() -> str:
+    """The ``version`` of the plugin's metadata.txt ('' when unreadable)."""
+    import configparser
+    parser = configparser.ConfigParser(interpolation=None)
+    try:
+        parser.read(os.path.join(os.path.dirname(os.path.dirname(__file__)), "metadata.txt"),
+                    encoding="utf-8")
+        return parser.get("general", "version", fallback="")
+    except (OSError, configparser.Error):
+        return ""
 
 
 def default_decimals(value, most: int = 6) -> int:
@@ -322,16 +334,25 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
 
     # ---------------------------------------------------------------- reports
     REPORT_LANGUAGE = "REPORT_LANGUAGE"
+    REPORT_PROJECT = "REPORT_PROJECT"
+    REPORT_OPERATOR = "REPORT_OPERATOR"
     #: REPORT_LANGUAGE options: index -> language code ('' = the QGIS interface language)
     REPORT_LANGUAGES = ("", "en", "ar", "fa")
 
     def add_report_language(self) -> None:
-        """Add REPORT_LANGUAGE (advanced enum; default: the QGIS interface language)."""
-        from qgis.core import QgsProcessingParameterEnum
+        """Add REPORT_LANGUAGE (advanced enum; default: the QGIS interface language) and
+        the optional REPORT_PROJECT and REPORT_OPERATOR shown at the top of reports."""
+        from qgis.core import QgsProcessingParameterEnum, QgsProcessingParameterString
         self.add(QgsProcessingParameterEnum(
             self.REPORT_LANGUAGE, self.tr("Report language"),
             [self.tr("Interface language"), "English", "العربية", "فارسی"],
             defaultValue=0), advanced=True)
+        self.add(QgsProcessingParameterString(
+            self.REPORT_PROJECT, self.tr("Project name (shown in the report)"),
+            optional=True), advanced=True)
+        self.add(QgsProcessingParameterString(
+            self.REPORT_OPERATOR, self.tr("Operator (shown in the report)"),
+            optional=True), advanced=True)
 
     def report_lang(self, parameters=None, context=None) -> str:
         """Language code for reports: REPORT_LANGUAGE if set, else the UI language."""
@@ -345,8 +366,19 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
             return "en"
 
     def render_report(self, report, parameters=None, context=None) -> str:
-        """HTML of a core :class:`~..core.reporting.Report` in the report language."""
-        return render_html(report, lang=self.report_lang(parameters, context))
+        """HTML of a core :class:`~..core.reporting.Report` in the report language, with
+        the date, the plugin version and the optional project and operator on top."""
+        return render_html(report, lang=self.report_lang(parameters, context),
+                           about=self.report_about(parameters, context))
+
+    def report_about(self, parameters=None, context=None) -> list:
+        """Rows naming when, with which version and for whom a report was made."""
+        def text(name):
+            if parameters is None or not self.parameterDefinition(name):
+                return None
+            return (self.parameterAsString(parameters, name, context) or "").strip() or None
+        return about_rows(version=plugin_version(), project=text(self.REPORT_PROJECT),
+                          operator=text(self.REPORT_OPERATOR))
 
     def checkpoint_files(self, parameters, context, *, csv="CHECKPOINTS_CSV",
                          layer="CHECKPOINTS") -> dict:

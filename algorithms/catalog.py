@@ -3,17 +3,21 @@ from __future__ import annotations
 
 import numpy as np
 from qgis.core import (
+    QgsProcessing,
+    QgsProcessingException,
     QgsProcessingOutputNumber,
     QgsProcessingOutputRasterLayer,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterEnum,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterFolderDestination,
+    QgsProcessingParameterMultipleLayers,
     QgsProcessingParameterString,
 )
 
 from ..core.lidar import catalog as core_cat
 from ..core.lidar.catalog_report import catalog_report
+from ..core.progress import Cancelled
 from .base import GeomaticsAlgorithm
 from .helptext import build_help
 
@@ -88,8 +92,11 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                                        "per second per worker.")})
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.add(QgsProcessingParameterString(
-            self.INPUT, self.tr("Tiles: folder, .vpc or files separated by ';'")))
+        # a file list with "Add File(s)…" / "Add Directory…" in the dialog; on the
+        # command line INPUT=folder, INPUT=a.laz;b.laz, INPUT=x.vpc or INPUT repeated
+        self.add(QgsProcessingParameterMultipleLayers(
+            self.INPUT, self.tr("Tiles: LAS/LAZ files, folders or a .vpc"),
+            QgsProcessing.TypeFile))
         fl = self._filter_labels()
         keys = list(core_cat.GROUND_FILTERS)
         self.add(QgsProcessingParameterEnum(
@@ -126,8 +133,36 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                             (self.POINTS_PER_SECOND, self.tr("Points per second"))):
             self.addOutput(QgsProcessingOutputNumber(name, label))
 
+    def tiles_source(self, parameters, context) -> list:
+        """The INPUT entries (files, folders, globs, .vpc), ';'-separated ones split."""
+        items = self.parameterAsFileList(parameters, self.INPUT, context)
+        return [s.strip() for item in items for s in str(item).split(";") if s.strip()]
+
+    def log_chunk(self, feedback, done: list):
+        """A log line per tile as it finishes (``done`` collects the finished keys)."""
+        def log(stats):
+            key, status = stats.get("key"), stats.get("status")
+            if status == "failed":
+                feedback.reportError(self.tr("Tile {0} failed: {1}").format(
+                    key, stats.get("error")), False)
+                return
+            done.append(key)
+            if status == "skipped":
+                feedback.pushInfo(self.tr("Tile {key}: finished by an earlier run, "
+                                          "kept.").format(key=key))
+            elif status == "empty":
+                feedback.pushInfo(self.tr("Tile {key}: no point of its own, no DTM.")
+                                  .format(key=key))
+            else:
+                feedback.pushInfo(self.tr(
+                    "Tile {key} done: {points} points, {ground} ground, {seconds:.1f} s.")
+                    .format(key=key, points=stats.get("points", 0),
+                            ground=stats.get("ground", 0),
+                            seconds=float(stats.get("seconds") or 0.0)))
+        return log
+
     def process(self, parameters, context, feedback) -> dict:
-        source = self.parameterAsString(parameters, self.INPUT, context)
+        source = self.tiles_source(parameters, context)
         folder = self.parameterAsString(parameters, self.OUTPUT_FOLDER, context)
         fkey = list(core_cat.GROUND_FILTERS)[
             self.parameterAsEnum(parameters, self.GROUND_FILTER, context)]
@@ -135,19 +170,20 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
             self.parameterAsEnum(parameters, self.DTM_METHOD, context)]
         workers = self.parameterAsInt(parameters, self.WORKERS, context)
         cat = core_cat.Catalog.open(source)
+        done = []
         with self.output_contract(parameters, context, [self.OUTPUT_HTML],
                                   inputs={"INPUT": cat.paths}) as out:
-            res = core_cat.run_catalog(
-                cat.paths, folder, ground_filter=fkey, dtm_method=dkey,
-                cell_size=self.parameterAsDouble(parameters, self.CELL_SIZE, context),
-                buffer=self.parameterAsDouble(parameters, self.BUFFER, context),
-                chunk_size=self.parameterAsDouble(parameters, self.CHUNK_SIZE, context),
-                workers=workers or None,
-                scheduler=self.parameterAsString(parameters, self.SCHEDULER, context).strip(),
-                cog=self.parameterAsBool(parameters, self.COG, context),
-                **self.core_callbacks(feedback))
-            for key, msg in res.failed.items():
-                feedback.reportError(self.tr("Tile {0} failed: {1}").format(key, msg))
+            try:
+                res = self.run_tiles(cat, folder, fkey, dkey, workers, parameters, context,
+                               feedback, done)
+            except Cancelled:
+                kept = core_cat.finished_chunks(folder)
+                if not kept:
+                    raise
+                raise QgsProcessingException(self.tr(
+                    "Cancelled by the user. {n} finished tile(s) are kept in {folder}: run "
+                    "again with the same settings to resume; unfinished tiles left "
+                    "nothing.").format(n=len(kept), folder=folder)) from None
             if out.requested(self.OUTPUT_HTML):
                 report = catalog_report(res, np.asarray(res.settings["bounds"]),
                                         lang=self.report_lang(parameters, context))
@@ -160,3 +196,16 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                 self.OUTPUT_VRT: res.vrt,
                 self.N_TILES: len(res.chunks), self.N_FAILED: len(res.failed),
                 self.POINTS_PER_SECOND: res.points_per_second}
+
+    def run_tiles(self, cat, folder, fkey, dkey, workers, parameters, context, feedback,
+                  done):
+        """run_catalog with the parameters, a log line per tile."""
+        return core_cat.run_catalog(
+            cat.paths, folder, ground_filter=fkey, dtm_method=dkey,
+            cell_size=self.parameterAsDouble(parameters, self.CELL_SIZE, context),
+            buffer=self.parameterAsDouble(parameters, self.BUFFER, context),
+            chunk_size=self.parameterAsDouble(parameters, self.CHUNK_SIZE, context),
+            workers=workers or None,
+            scheduler=self.parameterAsString(parameters, self.SCHEDULER, context).strip(),
+            cog=self.parameterAsBool(parameters, self.COG, context),
+            on_chunk=self.log_chunk(feedback, done), **self.core_callbacks(feedback))

@@ -15,7 +15,7 @@ from qgis.core import (
 )
 
 from ..core.errors import InputError
-from ..core.rectification import batch, warp
+from ..core.rectification import assess, batch, warp
 from .base import GeomaticsAlgorithm
 from .gcp_rectification import TRANSFORMATIONS, TransformationParams, resampling_options
 from .helptext import build_help
@@ -95,9 +95,13 @@ class RectifyBatchAlgorithm(TransformationParams, GeomaticsAlgorithm):
                 if row.error:
                     feedback.reportError(f"{row.image}: {row.error}", False)  # i18n: data
                 else:
-                    feedback.pushInfo(f"{row.image}: {row.kind}, RMS_T {row.rms_t:.4f}, "
-                                      f"{row.basis} RMS_T {row.honest_rms_t:.4f}, "
-                                      f"{row.verdict} -> {row.output}")  # i18n: data
+                    word = self.log_word
+                    feedback.pushInfo(self.tr(
+                        "{image}: {kind}, RMS_T {rms:.4f}, {basis} RMS_T {honest:.4f}, "
+                        "{verdict} → {output}").format(
+                            image=row.image, kind=row.kind, rms=row.rms_t,
+                            basis=word(assess.honest_label(row.basis)), honest=row.honest_rms_t,
+                            verdict=word(row.verdict), output=row.output))
 
             rows = batch.rectify_folder(
                 folder, out_folder, kind=kind, crs=crs.toWkt() if crs.isValid() else "",

@@ -32,6 +32,7 @@ from ..core.io import gcp as gcp_io
 from ..core.rectification import assess, export, report, warp
 from .base import GeomaticsAlgorithm
 from .helptext import build_help
+from .locale import user_locale
 
 PIXEL_ORIGINS = ("corner", "center")
 
@@ -77,6 +78,14 @@ NUMBERS = (
 TRANSFORMATIONS = (None, "polynomial1", "polynomial2", "polynomial3", "linear", "helmert",
                    "projective", "tps", assess.RECOMMENDED)
 
+def unit_symbol(unit: str) -> str:
+    """The symbol of a linear unit name ("metre" -> "m"); the name if unknown."""
+    from ..core.io import units
+    known = getattr(units, "_ALIASES", {})
+    key = str(unit or "").strip().lower()
+    return known[key].symbol if key in known else unit
+
+
 class TransformationParams:
     """The transformation choice shared by the single-image and the batch tools:
     TRANSFORMATION (see :data:`TRANSFORMATIONS`), ORDER, REFINE and GCP_CRS. Mixed in
@@ -86,6 +95,16 @@ class TransformationParams:
     ORDER = "ORDER"
     REFINE = "REFINE"
     GCP_CRS = "GCP_CRS"
+
+    @staticmethod
+    def log_word(text: str) -> str:
+        """A word of the core's results (verdict, basis) in the interface language."""
+        from ..core.reporting import translator
+        try:
+            lang = user_locale()
+        except Exception:  # noqa: BLE001 - the log language is cosmetic
+            lang = "en"
+        return translator(lang)(text)
 
     def add_gcp_crs_param(self):
         """GCP_CRS: the CRS of the map coordinates when the .points file has none."""
@@ -140,7 +159,9 @@ class _GcpBase(TransformationParams, GeomaticsAlgorithm):
                                     "below give the image coordinates."),
             self.GCP_CRS: self.tr("Needed when the file does not state its CRS."),
             self.TRANSFORMATION: self.tr("The last choice picks the transformation with the "
-                                         "lowest check-point or leave-one-out error."),
+                                         "lowest check-point or leave-one-out error.") + " "
+            + self.tr("A run that gives the polynomial order but no transformation (the "
+                      "command line of earlier versions) uses a polynomial of that order."),
             self.REFINE: self.tr("Drops the worst point while a residual exceeds the "
                                  "tolerance, keeping at least the minimum number of GCPs."),
             self.GR: self.tr("Sets the map scale S = 20000·GR and the tolerance band 4·GR "
@@ -175,7 +196,7 @@ class _GcpBase(TransformationParams, GeomaticsAlgorithm):
              self.tr("pixel centres: integer = centre of a pixel (0-based indices)")],
             defaultValue=0), advanced=True)
         self.add_gcp_crs_param()
-        self.add_transformation_params(default=0)
+        self.add_transformation_params(default=len(TRANSFORMATIONS) - 1)
         self.add_number(self.REFINE_TOLERANCE, self.tr(
             "Refinement tolerance (map units) [default: C5 limit 5·GR]"), minimum=0.0,
             optional=True, advanced=True, decimals=None)
@@ -197,7 +218,10 @@ class _GcpBase(TransformationParams, GeomaticsAlgorithm):
 
     def kind(self, parameters, context) -> str:
         """Return the core transformation kind chosen by TRANSFORMATION and ORDER."""
-        k = TRANSFORMATIONS[self.parameterAsEnum(parameters, self.TRANSFORMATION, context)]
+        order_only = (parameters.get(self.TRANSFORMATION) in (None, "")
+                      and parameters.get(self.ORDER) not in (None, ""))
+        k = None if order_only else TRANSFORMATIONS[
+            self.parameterAsEnum(parameters, self.TRANSFORMATION, context)]
         return k or f"polynomial{self.parameterAsInt(parameters, self.ORDER, context)}"
 
     def assess(self, parameters, context, gcps, size, unit, callbacks):
@@ -388,19 +412,36 @@ class _GcpBase(TransformationParams, GeomaticsAlgorithm):
                                   parameters, context)
 
     def log_assessment(self, a, unit, feedback):
-        """Push the transformation, its RMS, honest error, verdict and drops to the log."""
+        """Push the transformation, its RMS, honest error, verdict and drops to the log
+        (in the interface language; the unit as its symbol)."""
+        word = self.log_word
+        sym = unit_symbol(unit)
         r = a.selected
-        basis = assess.honest_label(a.comparison.basis)
-        feedback.pushInfo(self.tr("{0}: fit RMS_T = {1} {2}, {3} RMS_T = {4} {2} (n = {5}); "
-                                  "verdict {6}.").format(
-            a.kind, f"{r.fit.rms_t:.4f}", unit, basis, f"{r.score(a.comparison.basis):.4f}",
-            r.n_gcps, a.verdict))
-        feedback.pushInfo(self.tr("Recommended transformation: {0}").format(
-            a.comparison.reason))
+        c = a.comparison
+        feedback.pushInfo(self.tr(
+            "{kind}: fit RMS_T = {fit:.4f} {unit}, {basis} RMS_T = {honest:.4f} {unit} "
+            "(n = {n}); verdict: {verdict}.").format(
+                kind=a.kind, fit=r.fit.rms_t, unit=sym,
+                basis=word(assess.honest_label(c.basis)), honest=r.score(c.basis),
+                n=r.n_gcps, verdict=word(a.verdict)))
+        if c.recommended:
+            ranking = "; ".join(f"{k}: {c.results[k].score(c.basis):.4g}"
+                                for k in c.ranking())
+            feedback.pushInfo(self.tr(
+                "Recommended transformation: {kind}, the fewest parameters among those "
+                "within 10 % of the best {basis} RMS_T ({ranking} {unit}).").format(
+                    kind=c.recommended, basis=word(assess.honest_label(c.basis)),
+                    ranking=ranking, unit=sym))
+        else:
+            feedback.pushInfo(self.tr(
+                "No transformation has enough GCPs to be judged on independent residuals; "
+                "add GCPs."))
         for d in a.dropped:
-            feedback.pushWarning(self.tr("Refinement dropped GCP {0} (residual {1} {2}; "
-                                         "{3} left).").format(
-                d["id"], f"{d['residual']:.4f}", unit, d["n_after"]))
+            feedback.pushWarning(self.tr(
+                "Refinement dropped GCP {id} (residual {residual:.4f} {unit}; {left} "
+                "left).").format(id=d["id"], residual=d["residual"], unit=sym,
+                                 left=d["n_after"]))
+
 
 
 
@@ -495,9 +536,12 @@ class RectifyGcpAlgorithm(_GcpBase):
                 out.write_text(self.OUTPUT_HTML, self.report_html(a, parameters, context,
                                                                   extra))
                 outputs[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
-        feedback.pushInfo(self.tr("Wrote {0}: {1} × {2} px at {3} units/px, resampling "
-                                  "{4}.").format(outputs[self.OUTPUT], res.width, res.height,
-                                                 f"{res.resolution:.6g}", resampling))
+        label = self.tr(RESAMPLING_LABELS[resampling])  # i18n: noop-list
+        feedback.pushInfo(self.tr(
+            "Wrote {path}: {width} × {height} px at {resolution:.6g} {unit}/px, resampling "
+            "{resampling}.").format(path=outputs[self.OUTPUT], width=res.width,
+                                     height=res.height, resolution=res.resolution,
+                                     unit=unit_symbol(unit), resampling=label))
         feedback.setProgress(100)
         return outputs
 
@@ -599,10 +643,19 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
         return (int(w), int(h)) if w and h else None
 
     def log_summary(self, acc, order, unit, feedback):
-        """Push the RMS, verdict and recommendation to the log."""
+        """Push the RMS, verdict and recommended order to the log."""
         s = acc.selected.stats
-        qgis = "" if s.rms_t_qgis is None else f"{s.rms_t_qgis:.4f}"
-        feedback.pushInfo(self.tr("Order {0}: RMS_T = {1} {2} (divisor n), {3} (divisor "
-                                  "n − N); {4}/{5} within RMS_T; verdict {6}.").format(
-            order, f"{s.rms_t:.4f}", unit, qgis, s.n_within, s.n, acc.verdict))
-        feedback.pushInfo(self.tr("Recommendation: {0}").format(acc.recommendation))
+        sym = unit_symbol(unit)
+        qgis = "–" if s.rms_t_qgis is None else f"{s.rms_t_qgis:.4f}"
+        feedback.pushInfo(self.tr(
+            "Order {order}: RMS_T = {rms:.4f} {unit} (divisor n), {qgis} {unit} (divisor "
+            "n − N); {within}/{n} within RMS_T; verdict: {verdict}.").format(
+                order=order, rms=s.rms_t, unit=sym, qgis=qgis, within=s.n_within, n=s.n,
+                verdict=self.log_word(acc.verdict)))
+        if acc.recommended:
+            feedback.pushInfo(self.tr("Recommended polynomial order: {order}.").format(
+                order=acc.recommended))
+        else:
+            feedback.pushInfo(self.tr(
+                "No polynomial order has enough redundancy to be recommended (n ≥ 5, 9, "
+                "15 GCPs for orders 1, 2, 3)."))

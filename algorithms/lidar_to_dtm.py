@@ -200,6 +200,9 @@ class LidarToDtmAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
             if not qcrs.isValid():
                 qcrs = QgsCoordinateReferenceSystem.fromWkt(crs)
             ids, x, y, z = self.read_points(parameters, context, qcrs, feedback)
+            core_acc.check_points_not_degrees(
+                x, y, (info.mins[0], info.maxs[0], info.mins[1], info.maxs[1]),
+                crs_label=qcrs.authid() or qcrs.description())
             self.units = info.units if info.crs else crs_units(crs)
             self.log_units(feedback, self.units)
             core_acc.check_duplicates(ids, x, y, tolerance=0.001 / self.units.h)

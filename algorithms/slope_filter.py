@@ -307,6 +307,7 @@ class SlopeThresholdSweepAlgorithm(_SlopeCommon):
                        trend_window=kw["trend_window"], csv_output=csv or None,
                        html_output=html or None, output=out or None,
                        lang=self.report_lang(parameters, context),
+                       render=lambda rep: self.render_report(rep, parameters, context),
                        **self.core_callbacks(feedback))
         b = s.result.best
         for row in s.result.rows:

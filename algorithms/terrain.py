@@ -656,7 +656,8 @@ class DsmAlgorithm(_GridAlgorithm):
                 rep = core_dsm.dsm_report(
                     os.path.basename(path), info.count, grid, crs_source, surf, nd,
                     first_only=first, classes=classes, excluded=excl, clamp=clamp,
-                    elapsed=time.time() - t0, lang=self.report_lang(parameters, context))
+                    elapsed=time.time() - t0, lang=self.report_lang(parameters, context),
+                    units=units)
                 out.write_text(self.OUTPUT_HTML, self.render_report(rep, parameters, context))
                 results[self.OUTPUT_HTML] = out.final(self.OUTPUT_HTML)
         return results

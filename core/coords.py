@@ -134,3 +134,37 @@ def check_projected(x=None, y=None, z=None, *, crs: Optional[str] = None,
                          "y within ±90, a horizontal extent of a few units and heights in "
                          "metres); distances, tiles and slopes need metres. "
                          "{hint}", what=what, hint=REPROJECT_HINT)
+
+
+#: Largest mean point spacing (m) over a cloud's bounding box a ground filter accepts:
+#: airborne LiDAR has 0.5–50 points per m² (spacings of 0.14–1.4 m); one point per
+#: 50 m × 50 m is no terrain sample, and the filters' rasters would cover the whole box.
+MAX_MEAN_SPACING = 50.0
+
+
+def check_not_too_sparse(x, y, *, what: str = "The point cloud",
+                         max_spacing: float = MAX_MEAN_SPACING) -> None:
+    """Refuse a cloud whose points are spread far too thin over its bounding box.
+
+    A thousand points over 15 km² (or a few stray points kilometres away from the
+    survey) would make every grid cover the whole box — minutes and gigabytes for
+    nothing. Coordinates in metres.
+
+    Raises
+    ------
+    InputError
+        Naming the count, the area, the spacing and the fix.
+    """
+    x = np.asarray(x, dtype=np.float64)
+    y = np.asarray(y, dtype=np.float64)
+    if x.size < 2:
+        return
+    area = float(np.ptp(x)) * float(np.ptp(y))
+    spacing = (area / x.size) ** 0.5
+    if spacing > max_spacing:
+        raise InputError(
+            "{what} holds {n} points over {km2} km² of bounding box: a mean spacing of "
+            "{s} m, far sparser than airborne LiDAR (spacings under {max} m). Check for "
+            "stray points far from the survey or wrong coordinates, and crop the cloud "
+            "to the surveyed area. No output was written.", what=what, n=f"{x.size:,}",
+            km2=f"{area / 1e6:.2f}", s=f"{spacing:.0f}", max=f"{max_spacing:g}")

@@ -23,7 +23,8 @@ import numpy as np
 
 from .contract import atomic_output
 
-__all__ = ["cityjson_document", "write_cityjson", "write_obj", "triangulate"]
+__all__ = ["cityjson_document", "write_cityjson", "write_obj", "triangulate",
+           "newell_normal"]
 
 SCALE = 0.001
 
@@ -120,13 +121,21 @@ def write_cityjson(path, buildings: Sequence[dict], **kw) -> int:
     return len(doc["CityObjects"])
 
 
+def newell_normal(points) -> np.ndarray:
+    """Area-weighted normal of a polygon (Newell's method)."""
+    p = np.asarray(points, dtype=float)
+    q = np.roll(p, -1, axis=0)
+    return 0.5 * np.array([np.sum((p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2])),
+                           np.sum((p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0])),
+                           np.sum((p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1]))])
+
+
 def triangulate(face) -> list:
     """Triangles (index triples) of a planar polygon by ear clipping in its best plane."""
     p = np.asarray(face, dtype=float)
     n = len(p)
     if n == 3:
         return [(0, 1, 2)]
-    from ..lidar.citymodel import newell_normal
     nrm = newell_normal(p)
     drop = int(np.argmax(np.abs(nrm)))
     q = p[:, [(drop + 1) % 3, (drop + 2) % 3]]      # cyclic: counter-clockwise seen

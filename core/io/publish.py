@@ -137,8 +137,29 @@ def publish_files(files: Mapping[str, Tuple[str, Optional[str], str]], *,
     sources = {f"{k} (temporary)": v[0] for k, v in wanted.items()}
     with OutputContract({k: v[1] for k, v in wanted.items()},
                         inputs={**dict(inputs), **sources}) as out:
+        # the earlier steps' reports name the temporaries they read: name the
+        # published files instead ("input OUTPUT.laz" -> "input classified.laz")
+        names = {src: out.final(k) for k, (src, _d, kind) in wanted.items()
+                 if kind != "file"}
         for name, (src, _dst, kind) in wanted.items():
             if cancel is not None and cancel():
                 raise Cancelled()
             publish_file(kind, src, out.path(name))
+            if kind == "file" and Path(src).suffix.lower() in (".html", ".htm"):
+                relabel_html(out.path(name), names)
         return {k: out.final(k) for k in wanted}
+
+
+def relabel_html(path: str, names: Mapping[str, str]) -> None:
+    """Name the published files in the HTML file ``path``.
+
+    Each temporary's path, then its file name, is replaced by those of its published
+    file (``names``: temporary path -> final path).
+    """
+    import html as _html
+    text = Path(path).read_text(encoding="utf-8")
+    pairs = sorted(names.items(), key=lambda kv: -len(kv[0]))
+    for old, new in pairs + [(Path(o).name, Path(n).name) for o, n in pairs]:
+        for a, b in ((old, new), (_html.escape(old), _html.escape(new))):
+            text = text.replace(a, b)
+    Path(path).write_text(text, encoding="utf-8")

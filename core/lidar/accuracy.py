@@ -180,6 +180,25 @@ class CloudAssessment:
         return error_codes(self.predicted_ground, self.reference_ground)
 
 
+def _check_pair(classified, reference) -> None:
+    """Refuse a reference cloud in another CRS (compared by meaning, both named).
+
+    The same file as both is allowed: a reference assessed against itself is the
+    sanity check of a scoring setup (total error 0).
+    """
+    import os
+
+    from ..errors import InputError
+    from ..io.crs import crs_label, same_crs
+    from ..io.las import las_info
+    a, b = las_info(classified), las_info(reference)
+    if a.crs and b.crs and not same_crs(a.crs, b.crs):
+        raise InputError("The classified cloud {a} is in {crs_a} but the reference cloud "
+                         "{b} is in {crs_b}; give two files of the same points.",
+                         a=os.path.basename(os.fspath(classified)), crs_a=crs_label(a.crs),
+                         b=os.path.basename(os.fspath(reference)), crs_b=crs_label(b.crs))
+
+
 def assess_clouds(classified, reference=None, *, field: str = "classification",
                   ground_classes=(GROUND,), reference_field: str = "classification",
                   reference_ground_classes=(GROUND,), xy_tolerance: float | None = None,
@@ -231,6 +250,7 @@ def assess_clouds(classified, reference=None, *, field: str = "classification",
                       cancel=cancel)
         pred, ref = pd[field], pd[reference_field]
     else:
+        _check_pair(classified, reference)
         pd = read_las(classified, (field,), progress=mon.sub(0, .45).update, cancel=cancel)
         rd = read_las(reference, (reference_field,), progress=mon.sub(.45, .9).update,
                       cancel=cancel)

@@ -27,6 +27,8 @@ from typing import List, Optional
 
 import numpy as np
 
+from ..io.cityjson import newell_normal
+
 __all__ = ["Solid", "lod1_solid", "lod2_solid", "building_solids"]
 
 GROUND_S, WALL_S, ROOF_S = "GroundSurface", "WallSurface", "RoofSurface"
@@ -58,15 +60,6 @@ class Solid:
             if np.dot(newell_normal(f), f.mean(axis=0) - centre) < 0:
                 self.faces[i] = f[::-1].copy()
         return self
-
-
-def newell_normal(points) -> np.ndarray:
-    """Area-weighted normal of a polygon (Newell's method)."""
-    p = np.asarray(points, dtype=float)
-    q = np.roll(p, -1, axis=0)
-    return 0.5 * np.array([np.sum((p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2])),
-                           np.sum((p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0])),
-                           np.sum((p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1]))])
 
 
 def _ccw(ring) -> np.ndarray:

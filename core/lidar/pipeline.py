@@ -35,7 +35,7 @@ from typing import Any, Callable, Dict, Optional
 import numpy as np
 
 from .. import classes as asprs
-from ..coords import check_projected
+from ..coords import check_not_too_sparse, check_projected
 from ..errors import InputError
 from ..io.contract import OutputContract
 from ..io.las import PointData, las_info, read_las, write_las_like
@@ -221,6 +221,7 @@ def read_cloud(src, *, returns: bool = True, keep_records: bool = False,
     check_projected(pd.x, pd.y, pd.z, what=f"The point cloud {src}")
     # Every length parameter is in metres (DEVELOPERS.md, Units): filter in metres.
     pd.x, pd.y, pd.z = info.units.xyz_to_metres(pd.x, pd.y, pd.z)
+    check_not_too_sparse(pd.x, pd.y, what=f"The point cloud {src}")
     return pd
 
 

@@ -290,7 +290,7 @@ def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_C
                metric: str = "total", selection: Optional[SelectionOptions] = None,
                mode: str = "exact", trend_cell: float = 10.0, trend_window: float = 60.0,
                csv_output=None, html_output=None, output=None, names=None,
-               lang: str = "en", progress=None, cancel=None) -> SweepSummary:
+               lang: str = "en", render=None, progress=None, cancel=None) -> SweepSummary:
     """Threshold sweep of the slope filter on a labelled LAS/LAZ file.
 
     Parameters
@@ -317,6 +317,8 @@ def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_C
         Parameter names of the outputs for error messages.
     lang : str
         Report language.
+    render : callable, optional
+        ``render(report) -> html`` (default :func:`~..reporting.render_html` in ``lang``).
     progress, cancel : callable, optional
         Progress and cancel.
 
@@ -375,7 +377,8 @@ def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_C
         summary.seconds = time.perf_counter() - t0
         summary.report = sweep_report(summary, lang=lang)
         if html_output:
-            out.write_text(names["report"], render_html(summary.report, lang=lang))
+            render = render or (lambda rep: render_html(rep, lang=lang))
+            out.write_text(names["report"], render(summary.report))
         mon.check()
     mon.update(1.0)
     return summary

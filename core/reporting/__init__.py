@@ -6,7 +6,7 @@ renderer :func:`render_html` and the translator :func:`translator`.
 """
 from .content import Figure, Formula, KeyValues, Paragraph, Report, Section, T, Table
 from .i18n import direction, translator
-from .render import render_html
+from .render import about_rows, render_html
 
 __all__ = ["Figure", "Formula", "KeyValues", "Paragraph", "Report", "Section", "T", "Table",
-           "direction", "render_html", "translator"]
+           "about_rows", "direction", "render_html", "translator"]

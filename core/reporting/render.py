@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Optional, Sequence, Tuple
 
 import jinja2
 import markupsafe
@@ -37,7 +37,9 @@ caption{font-weight:bold;text-align:start;padding:.2em 0}
 .formula{font-family:monospace;unicode-bidi:isolate;direction:ltr;display:inline-block}
 figure{margin:.8em 0}figcaption{color:#444;font-size:.92em}
 svg{background:#fff;border:1px solid #ddd;max-width:100%;height:auto}
-td,th{overflow-wrap:anywhere}
+td,th{overflow-wrap:break-word}
+td.num,.qty{white-space:nowrap}
+table.about{font-size:.9em;color:#444}table.about th{background:#f6f6f6;text-align:start}
 """
 
 _TEMPLATE = """<!DOCTYPE html>
@@ -49,7 +51,10 @@ _TEMPLATE = """<!DOCTYPE html>
 </head>
 <body>
 <h1>{{ title }}</h1>
-{% for p in summary %}<p class="{{ p.kind }}">{{ p.html }}</p>
+{% if about %}<table class="about" id="report-about">
+{% for a in about %}<tr><th>{{ a.label }}</th><td>{{ a.value }}</td></tr>
+{% endfor %}</table>
+{% endif %}{% for p in summary %}<p class="{{ p.kind }}">{{ p.html }}</p>
 {% endfor %}
 {% for sec in sections %}<section>
 <h2>{{ sec.heading }}</h2>
@@ -188,7 +193,8 @@ class _Renderer:
 
 
 def render_html(report: Report, *, lang: str = "en",
-                tr: Optional[Callable[[str], str]] = None) -> str:
+                tr: Optional[Callable[[str], str]] = None,
+                about: Optional[Sequence[Tuple[str, Any]]] = None) -> str:
     """Render a :class:`~.content.Report` as one self-contained HTML page.
 
     Parameters
@@ -200,6 +206,9 @@ def render_html(report: Report, *, lang: str = "en",
         and the translator.
     tr : callable, optional
         Translator overriding the JSON dictionaries (e.g. Qt's in the plugin).
+    about : sequence of (label, value), optional
+        Who and what made the report (:func:`about_rows`: date, plugin version, project,
+        operator), shown under the title; labels are message ids, values data.
 
     Returns
     -------
@@ -211,6 +220,30 @@ def render_html(report: Report, *, lang: str = "en",
     sections = [{"heading": r.message(s.heading), "blocks": [r.block(b) for b in s.blocks]}
                 for s in report.sections]
     summary = [{"kind": p.kind, "html": r.message(p.text)} for p in report.summary]
+    rows = [{"label": r.message(label), "value": bdi(value)}
+            for label, value in (about or ()) if value not in (None, "")]
     return _PAGE.render(lang=lang, dir=direction(lang), title=r.message(report.title),
                         css=markupsafe.Markup(CSS), summary=summary, sections=sections,
+                        about=rows,
                         citation=r.message(report.citation) if report.citation else "")
+
+
+def about_rows(*, version: Optional[str] = None, project: Optional[str] = None,
+               operator: Optional[str] = None, when=None) -> list:
+    """Return the ``about`` rows of :func:`render_html`.
+
+    Date and time (local, with its UTC offset), plugin version, and the optional
+    project and operator.
+
+    >>> import datetime as dt
+    >>> when = dt.datetime(2026, 11, 25, 21, 5, tzinfo=dt.timezone.utc)
+    >>> about_rows(version="0.3.0", operator="S. Surveyor", when=when)
+    [('Date', '2026-11-25 21:05 UTC+00:00'), ('Plugin version', '0.3.0'), \
+('Operator', 'S. Surveyor')]
+    """
+    import datetime as dt
+    when = when or dt.datetime.now().astimezone()
+    offset = when.strftime("%z") or "+0000"
+    rows = [("Date", f"{when:%Y-%m-%d %H:%M} UTC{offset[:3]}:{offset[3:]}"),
+            ("Plugin version", version), ("Project", project), ("Operator", operator)]
+    return [(label, value) for label, value in rows if value not in (None, "")]

@@ -142,7 +142,7 @@ def ndsm(dsm: np.ndarray, dtm: np.ndarray, *, clamp_negative: bool = True) -> np
 def dsm_report(name: str, n_points: int, grid: GridSpec, grid_source: str,
                surface: np.ndarray, ndsm_grid: Optional[np.ndarray] = None, *,
                first_only: bool, classes, excluded, clamp: bool, elapsed: float,
-               lang: str = "en") -> Report:
+               lang: str = "en", units=None) -> Report:
     """Report content of a DSM (and nDSM) run.
 
     Parameters
@@ -164,6 +164,16 @@ def dsm_report(name: str, n_points: int, grid: GridSpec, grid_source: str,
               ("classes used", ", ".join(map(str, classes)) or T("all")),
               ("excluded classes", ", ".join(map(str, excluded)) or T("none"))]
     inputs = [("input", name), ("points in file", n_points), ("grid source", T(grid_source))]
+    if units is not None and not units.metric:
+        # the report speaks metres (DEVELOPERS.md, Units): grid and heights converted
+        from ..io.units import units_note
+        from .grid import GridSpec
+        inputs.append(("Linear units", units_note(units)))
+        grid = GridSpec(xmin=grid.xmin * units.h, ymax=grid.ymax * units.h,
+                        cell=grid.cell * units.h, ncols=grid.ncols, nrows=grid.nrows,
+                        crs=grid.crs, nodata=grid.nodata)
+        surface = surface * units.v
+        ndsm_grid = None if ndsm_grid is None else ndsm_grid * units.v
     rep = grid_report(
         "DSM / nDSM report", method_rows=method, input_rows=inputs, grid=grid,
         data=surface, stats=grid_stats(surface), elapsed=elapsed,

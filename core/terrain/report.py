@@ -103,8 +103,12 @@ def _map_transform(extent, width_px):
 
 def residual_map_figure(res: acc.AccuracyResult, ids: Sequence, dtm: np.ndarray,
                         geotransform: Sequence[float], *,
-                        tr: Translator = _identity) -> Figure:
-    """Return the check points coloured by error over the DTM (``'residual-map'``)."""
+                        tr: Translator = _identity, units=None) -> Figure:
+    """Return the check points coloured by error over the DTM (``'residual-map'``).
+
+    ``units`` (:class:`~..io.units.Units`) of a DTM in feet: its coordinates stay in
+    feet (the scale bar says so), its heights (``dtm``) are already metres.
+    """
     gt = geotransform
     rows, cols = dtm.shape
     extent = (gt[0], gt[0] + gt[1] * cols, gt[3] + gt[5] * rows, gt[3])
@@ -115,7 +119,8 @@ def residual_map_figure(res: acc.AccuracyResult, ids: Sequence, dtm: np.ndarray,
     scale, px, py = _map_transform(view, MAP_PX)
     w = (view[1] - view[0]) * scale
     h = (view[3] - view[2]) * scale
-    shade = _preview(hillshade(dtm, abs(gt[1])))
+    h_unit = units.horizontal if units is not None else None
+    shade = _preview(hillshade(dtm, abs(gt[1]) * (h_unit.metres if h_unit else 1.0)))
     grey = np.nan_to_num(shade, nan=1.0) * 120 + 120
     rgb = np.repeat(grey[:, :, None], 3, axis=2).astype(np.uint8)
     limit = float(np.nanmax(np.abs(res.error[used]))) if used.any() else 1.0
@@ -129,7 +134,8 @@ def residual_map_figure(res: acc.AccuracyResult, ids: Sequence, dtm: np.ndarray,
     parts = [svg.image(float(px(extent[0])), float(py(extent[3])),
                        (extent[1] - extent[0]) * scale, (extent[3] - extent[2]) * scale, rgb),
              svg.circles(px(res.x), py(res.y), colours, titles=tips),
-             svg.scale_bar(20, h + 5, min(w / 3, 150), 1.0 / scale),
+             svg.scale_bar(20, h + 5, min(w / 3, 150), 1.0 / scale,
+                           unit=h_unit.symbol if h_unit else "m"),
              svg.north_arrow(w - 5, 18),
              svg.legend(w + 30, 24, entries, title=tr("Error DTM − check (m)"),
                         shape="circle")]
@@ -267,7 +273,7 @@ def accuracy_report(res: acc.AccuracyResult, ids: Sequence, dtm: np.ndarray,
         ("vertical accuracy 95 % = 1.96·RMSE (ASPRS 2014)", s["accuracy_95"], "m"),
         ("95th percentile of |error|", s["p95_abs_error"], "m")], digits=4))
     figs = rep.section("Figures")
-    figs.add(residual_map_figure(res, ids, dtm, geotransform, tr=tr))
+    figs.add(residual_map_figure(res, ids, dtm, geotransform, tr=tr, units=units))
     figs.add(error_height_figure(res, tr=tr))
     order = np.argsort(-np.nan_to_num(np.abs(res.error), nan=-1.0))[:max_rows]
     ok = res.status == acc.OK

@@ -28,8 +28,9 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 PLUGIN = "geomatics_toolbox"
 SYSTEM_PYTHON = "/usr/bin/python3"
+#: the pinned wheels for the system Python, kept in the venv in use (one per Python)
 WHEELHOUSE = Path(os.environ.get("GEOMATICS_WHEELHOUSE",
-                                 ROOT / ".venv" / "wheelhouse-runtime"))
+                                 Path(sys.prefix) / "wheelhouse-runtime"))
 
 
 def _system_python_lacks_laspy() -> bool:
@@ -90,7 +91,7 @@ def demo(tmp_path_factory):
 def wheelhouse():
     """The pinned wheels for the system Python, downloaded once from the index."""
     stamp = WHEELHOUSE / ".complete"
-    req = (ROOT / "requirements.txt").read_bytes()
+    req = (ROOT / "requirements.txt").read_bytes() + sys.version.encode()
     if not (stamp.exists() and stamp.read_bytes() == req):
         WHEELHOUSE.mkdir(parents=True, exist_ok=True)
         out = subprocess.run([SYSTEM_PYTHON, "-m", "pip", "download", "--quiet",

@@ -36,7 +36,7 @@ def _tile(tmp_path):
 
 
 def _lsq(tmp_path):
-    return (dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "lsq.laz"), "OUTPUT_HTML",
+    return (dict(INPUT=_tile(tmp_path), OUTPUT=tmp_path / "lsq.laz", MODE=0), "OUTPUT_HTML",
             ["class-map", "tile-map"])
 
 

@@ -177,3 +177,19 @@ def test_vlr_count_is_what_was_really_read(tmp_path):
     write_las_like(lie, dst)
     assert _descriptors(dst)[1] == 1                          # no invented empty VLR
     assert [v.record_id for v in laspy.read(dst).header.vlrs] == [34735]
+
+
+# ----------------------------------------------------------------- 2. two clouds' CRSs
+def test_filter_accuracy_reference_in_another_crs_refused(tmp_path):
+    from geomatics_toolbox.core.io.las import write_las
+    from geomatics_toolbox.core.lidar.accuracy import assess_clouds
+    rng = np.random.default_rng(5)
+    x, y, z = 500_000 + rng.uniform(0, 20, 50), 4e6 + rng.uniform(0, 20, 50), rng.uniform(0, 2, 50)
+    cls = {"classification": np.full(50, 2, np.uint8)}
+    write_las(tmp_path / "a.las", x, y, z, dimensions=cls, crs="EPSG:32632", version="1.2",
+              point_format=1)
+    write_las(tmp_path / "b.las", x, y, z, dimensions=cls, crs="EPSG:32632")   # WKT: same
+    write_las(tmp_path / "c.las", x, y, z, dimensions=cls, crs="EPSG:32633")
+    assert assess_clouds(tmp_path / "a.las", tmp_path / "b.las").accuracy.total == 0.0
+    with pytest.raises(InputError, match=r"a\.las is in EPSG:32632.*c\.las is in EPSG:32633"):
+        assess_clouds(tmp_path / "a.las", tmp_path / "c.las")

@@ -154,3 +154,29 @@ def test_groundfilter_nonsense_numbers_refused(qgis_processing, data, tmp_path, 
     refused(qgis_processing, "geomatics:groundfilter", {
         "INPUT": str(data["laz"]), "OUTPUT": str(out), **params}, message, [data["laz"]],
         [out])
+
+
+# ----------------------------------------------------------------- 4. sparse over a huge box
+def test_sparse_cloud_over_a_huge_extent_refused(qgis_processing, tmp_path):
+    rng = np.random.default_rng(0)
+    n = 1065                                       # over 15.6 km², as the probe's file
+    src = tmp_path / "sparse.las"
+    write_las(src, 500_000 + rng.uniform(0, 3950, n), 4e6 + rng.uniform(0, 3950, n),
+              100 + rng.normal(0, 1, n), crs="EPSG:32632")
+    out = tmp_path / "c.laz"
+    refused(qgis_processing, "geomatics:groundfilter", {"INPUT": str(src), "OUTPUT": str(out)},
+            r"1,065 points over 15\.\d\d km² of bounding box: a mean spacing of 121 m", [src],
+            [out])
+
+
+def test_lidartodtm_lon_lat_check_points_clear_message(qgis_processing, data, tmp_path):
+    csv = tmp_path / "lonlat.csv"
+    csv.write_text("id,x,y,z\n" + "".join(
+        f"{i},{9.0 + 1e-6 * i:.7f},{48.0 + 1e-6 * i:.7f},{200 + i}\n" for i in range(8)),
+        encoding="utf-8")
+    outs = [tmp_path / "c.laz", tmp_path / "d.tif"]
+    text = refused(qgis_processing, "geomatics:lidartodtm", {
+        "INPUT": str(data["laz"]), "CHECKPOINTS_CSV": str(csv), "OUTPUT": str(outs[0]),
+        "OUTPUT_DTM": str(outs[1])},
+        r"look like longitude/latitude in degrees.*EPSG:32632", [data["laz"], csv], outs)
+    assert "Duplicated" not in text

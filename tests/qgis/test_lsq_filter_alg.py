@@ -49,7 +49,7 @@ def test_filter_writes_classes_and_preserves_everything_else(qgis_processing, ti
     out, gout, html = tmp_path / "c.laz", tmp_path / "g.las", tmp_path / "r.html"
     res = qgis_processing.run(ALG, {"INPUT": str(path), "OUTPUT": str(out),
                                     "GROUND_OUTPUT": str(gout), "OUTPUT_HTML": str(html),
-                                    "TILE_SIZE": 40, "THRESHOLD": 0.5})
+                                    "TILE_SIZE": 40, "THRESHOLD": 0.5, "MODE": 0})
     a, b = _all_dims_but(path, out)
     assert a.header.parse_crs() == b.header.parse_crs()
     cls = np.asarray(b.classification)

@@ -72,6 +72,9 @@ for mod in ("asyncio", "concurrent.futures", "ctypes", "ctypes.util", "email", "
             "socket", "ssl", "subprocess", "sysconfig", "tempfile", "urllib.request",
             "uuid", "webbrowser", "xml.sax.saxutils", "zipfile"):
     importlib.import_module(mod)
+import sysconfig
+sysconfig.get_config_vars()          # computed (and cached) for the real platform
+import numpy, scipy                  # QGIS's own compiled packages, imported as they are
 if PLATFORM:
     sys.platform = PLATFORM
 

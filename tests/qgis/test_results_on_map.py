@@ -274,7 +274,7 @@ def test_footprints_3d_guarded_without_3d_library(monkeypatch):
 def test_elevation_change_raster_and_polygons(qgis_processing, scene):
     import numpy as np
 
-    from geomatics_toolbox.core.io.raster import read_raster, write_geotiff
+    from geomatics_toolbox.core.io.raster import read_raster
     d = scene["dir"]
     dtm = qgis_processing.run("geomatics:idwdtm", {
         "INPUT": scene["laz"], "CELL_SIZE": 1.0, "FILL_GAPS": True,
@@ -283,7 +283,13 @@ def test_elevation_change_raster_and_polygons(qgis_processing, scene):
     z = r.masked().copy()
     z[10:30, 10:30] += 2.0      # fill
     z[40:60, 40:60] -= 1.5      # cut
-    after = write_geotiff(str(d / "after.tif"), z, geotransform=r.geotransform, crs=r.crs)
+    from osgeo import gdal
+    after = str(d / "after.tif")
+    gdal.Translate(after, dtm)          # same grid, CRS and band unit as the before DTM
+    ds = gdal.Open(after, gdal.GA_Update)
+    band = ds.GetRasterBand(1)
+    band.WriteArray(np.where(np.isfinite(z), z, band.GetNoDataValue()).astype("float32"))
+    ds = band = None
     res, ctx, project, rec, pending = gui_run(qgis_processing, "geomatics:elevationchange", {
         "INPUT": dtm, "INPUT_AFTER": after, "SIGMA1": 0.05, "SIGMA2": 0.05,
         "OUTPUT": "TEMPORARY_OUTPUT", "OUTPUT_POLYGONS": "TEMPORARY_OUTPUT"})
@@ -420,3 +426,16 @@ def test_copc_loads_without_pdal_where_qgis_has_copc(monkeypatch):
     assert not base.point_cloud_layers_supported("a.laz")
     _Registry.names = ["pdal"]
     assert base.point_cloud_layers_supported("a.laz")
+
+
+def test_rectified_image_loaded(qgis_processing, tmp_path):
+    """The rectified image (a raster destination) loads; QGIS's own RGB style fits it."""
+    import sys
+    sys.path.insert(0, os.path.dirname(__file__))
+    from test_reports_dialog_defects import _gcp_case
+    img, pts = _gcp_case(tmp_path)
+    res, ctx, project, rec, pending = gui_run(qgis_processing, "geomatics:rectifygcp", {
+        "INPUT": img, "GCP_FILE": pts, "OUTPUT": "TEMPORARY_OUTPUT"})
+    assert set(pending) == {res["OUTPUT"]}
+    lyr = layer_of(project, res["OUTPUT"])
+    assert lyr.isValid() and lyr.bandCount() >= 1

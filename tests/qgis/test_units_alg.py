@@ -8,6 +8,7 @@ which).
 """
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import laspy
@@ -20,6 +21,8 @@ from geomatics_toolbox.synthetic.hostile import unit_copy
 from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 
 FT = US_FOOT.metres
+#: Reports in English whatever the (shared) QGIS settings say the interface language is
+EN = {"REPORT_LANGUAGE": 1}
 REAL_USFT = Path(__file__).resolve().parents[3] / "shared" / "data" / "real" / "pdal_nm_usft.laz"
 
 
@@ -76,7 +79,7 @@ def test_ground_filter_same_classes_and_feet_in_report(qgis_processing, clouds):
     for k in ("m", "ft"):
         out[k] = qgis_processing.run("geomatics:groundfilter", {
             "INPUT": clouds[k], "OUTPUT": str(d / f"gf_{k}.las"),
-            "OUTPUT_HTML": str(d / f"gf_{k}.html")})
+            "OUTPUT_HTML": str(d / f"gf_{k}.html"), **EN})
     cm, cf = _classes(out["m"]["OUTPUT"]), _classes(out["ft"]["OUTPUT"])
     assert np.array_equal(cm, cf), int(np.count_nonzero(cm != cf))
     assert out["m"]["N_GROUND"] == out["ft"]["N_GROUND"] > 1000
@@ -98,7 +101,7 @@ def test_dtm_same_grid_converted(qgis_processing, clouds, alg, extra):
     for k in ("m", "ft"):
         res = qgis_processing.run(alg, {"INPUT": clouds[k], "CELL_SIZE": 2.0, **extra,
                                         "OUTPUT": str(d / f"{name}_{k}.tif"),
-                                        "OUTPUT_HTML": str(d / f"{name}_{k}.html")})
+                                        "OUTPUT_HTML": str(d / f"{name}_{k}.html"), **EN})
         paths[k] = res["OUTPUT"]
     _same_dtm(paths["m"], paths["ft"], tol=2e-3 if name == "krigingdtm" else 1e-3)
     assert "ftUS" in (d / f"{name}_ft.html").read_text(encoding="utf-8")
@@ -108,15 +111,21 @@ def test_dsm_same_grid_converted(qgis_processing, clouds):
     d = clouds["dir"]
     for k in ("m", "ft"):
         qgis_processing.run("geomatics:dsm", {"INPUT": clouds[k], "CELL_SIZE": 2.0,
-                                              "OUTPUT": str(d / f"dsm_{k}.tif")})
+                                              "OUTPUT": str(d / f"dsm_{k}.tif"),
+                                              "OUTPUT_HTML": str(d / f"dsm_{k}.html"), **EN})
     _same_dtm(d / "dsm_m.tif", d / "dsm_ft.tif")
+    # the report speaks metres for both: the same cell size and heights
+    html = {k: (d / f"dsm_{k}.html").read_text(encoding="utf-8") for k in ("m", "ft")}
+    assert "US survey foot" in html["ft"] and "US survey foot" not in html["m"]
+    for k in ("m", "ft"):
+        assert re.search(r"[Cc]ell size.{0,200}?>2(\.0+)?<", html[k], re.S), k
 
 
 def test_lidarqa_same_density(qgis_processing, clouds):
     d = clouds["dir"]
     res = {k: qgis_processing.run("geomatics:lidarqa", {
         "INPUT": clouds[k], "CELL_SIZE": 5.0, "OUTPUT": str(d / f"qa_{k}.tif"),
-        "OUTPUT_HTML": str(d / f"qa_{k}.html")}) for k in ("m", "ft")}
+        "OUTPUT_HTML": str(d / f"qa_{k}.html"), **EN}) for k in ("m", "ft")}
     for key in ("DENSITY", "GROUND_DENSITY", "GAP_SHARE", "GROUND_WINDOW", "DTM_CELL"):
         assert res["ft"][key] == pytest.approx(res["m"][key], rel=1e-6), key
     assert res["m"]["DENSITY"] == pytest.approx(3.0, rel=0.25)   # pts/m², not per ft²
@@ -139,12 +148,14 @@ def test_dtm_accuracy_in_metres_labelled(qgis_processing, clouds):
             "OUTPUT": str(d / f"acc_dtm_{k}.tif")})["OUTPUT"]
         res[k] = qgis_processing.run("geomatics:dtmaccuracy", {
             "DTM": dtm, "CHECKPOINTS_CSV": clouds[f"cp_{k}"],
-            "OUTPUT_HTML": str(d / f"acc_{k}.html")})
+            "OUTPUT_HTML": str(d / f"acc_{k}.html"), **EN})
     assert res["m"]["N"] == res["ft"]["N"] == 15
     for key in ("RMSE", "ME", "MAE", "MAX_ABS_ERROR"):
         assert res["ft"][key] == pytest.approx(res["m"][key], abs=2e-4), key
     html = (d / "acc_ft.html").read_text(encoding="utf-8")
     assert "US survey foot" in html
+    assert re.search(r"\d ftUS</text>", html)          # the residual map's scale bar
+    assert re.search(r"\d m</text>", (d / "acc_m.html").read_text(encoding="utf-8"))
 
 
 def test_lidar_to_dtm_same_rmse(qgis_processing, clouds):
@@ -152,7 +163,7 @@ def test_lidar_to_dtm_same_rmse(qgis_processing, clouds):
     res = {k: qgis_processing.run("geomatics:lidartodtm", {
         "INPUT": clouds[k], "CHECKPOINTS_CSV": clouds[f"cp_{k}"], "CELL_SIZE": 1.0,
         "OUTPUT": str(d / f"l2d_{k}.las"), "OUTPUT_DTM": str(d / f"l2d_{k}.tif"),
-        "OUTPUT_HTML": str(d / f"l2d_{k}.html")}) for k in ("m", "ft")}
+        "OUTPUT_HTML": str(d / f"l2d_{k}.html"), **EN}) for k in ("m", "ft")}
     assert np.array_equal(_classes(res["m"]["OUTPUT"]), _classes(res["ft"]["OUTPUT"]))
     _same_dtm(res["m"]["OUTPUT_DTM"], res["ft"]["OUTPUT_DTM"])
     assert res["ft"]["RMSE"] == pytest.approx(res["m"]["RMSE"], abs=2e-4)
