@@ -2,7 +2,8 @@
 
 ``qgis_process.bin`` runs the system Python, which has numpy, SciPy and GDAL but not
 laspy, lazrs, dask or distributed (the venv is deliberately NOT on ``PYTHONPATH``
-here). In a fresh temporary profile:
+here). In a fresh temporary profile, with the plugin unpacked from the zip of ``make
+package`` (as *Install from ZIP* does) for the offline case:
 
 1. the plugin loads with no error and ``geomatics:groundfilter`` refuses to start,
    naming the missing packages and ``geomatics:installdependencies``;
@@ -11,7 +12,9 @@ here). In a fresh temporary profile:
    --find-links``, the offline mode; filled once from the index) and, in a second
    profile, from the package index pip is configured with;
 3. ``geomatics:groundfilter`` then runs on the demo tile (every point kept in order,
-   total error against the tile's true classes below 2 %, as in the venv's test).
+   total error against the tile's true classes below 2 %, as in the venv's test), and
+   ``geomatics:catalog`` runs its Dask worker from the real interpreter with the
+   private folder on its path.
 """
 from __future__ import annotations
 
@@ -20,6 +23,7 @@ import os
 import shutil
 import subprocess
 import sys
+import zipfile
 from pathlib import Path
 
 import numpy as np
@@ -42,11 +46,15 @@ def _system_python_lacks_laspy() -> bool:
 class CleanProfile:
     """``qgis_process.bin`` in a new profile, with nothing of the venv on its path."""
 
-    def __init__(self, base: Path):
+    def __init__(self, base: Path, plugin_zip: Path | None = None):
         self.exe = shutil.which("qgis_process.bin")
         plugins = base / "plugins"
         plugins.mkdir(parents=True)
-        (plugins / PLUGIN).symlink_to(ROOT, target_is_directory=True)
+        if plugin_zip is None:
+            (plugins / PLUGIN).symlink_to(ROOT, target_is_directory=True)
+        else:                  # as Plugins > Install from ZIP does: unpacked in the profile
+            with zipfile.ZipFile(plugin_zip) as zf:
+                zf.extractall(plugins)
         self.profile = base / "profile"
         self.profile.mkdir()
         self.env = {k: v for k, v in os.environ.items()
@@ -103,6 +111,18 @@ def wheelhouse():
     return WHEELHOUSE
 
 
+@pytest.fixture(scope="module")
+def plugin_zip(tmp_path_factory):
+    """The installable zip of ``make package``."""
+    if not list((ROOT / "i18n").glob("*.qm")):
+        pytest.skip("no compiled translations (run 'make qm' first)")
+    out = tmp_path_factory.mktemp("dist")
+    subprocess.run([sys.executable, str(ROOT / "scripts" / "package.py"), "--out", str(out)],
+                   check=True, capture_output=True, cwd=ROOT)
+    (zip_path,) = out.glob(f"{PLUGIN}-*.zip")
+    return zip_path
+
+
 def _check_ground_filter(profile: CleanProfile, src: Path, out: Path) -> None:
     res = _results(profile.run("geomatics:groundfilter", INPUT=src, OUTPUT=out))
     import laspy
@@ -115,8 +135,11 @@ def _check_ground_filter(profile: CleanProfile, src: Path, out: Path) -> None:
     assert np.array_equal(np.asarray(a.x), np.asarray(b.x))       # same points, in order
 
 
-def test_clean_profile_offline_wheels_then_groundfilter(demo, wheelhouse, tmp_path):
-    profile = CleanProfile(tmp_path / "offline")
+def test_clean_profile_offline_wheels_then_groundfilter(demo, wheelhouse, plugin_zip,
+                                                        tmp_path):
+    """The plugin installed from its zip, packages from a local wheel folder."""
+    profile = CleanProfile(tmp_path / "offline", plugin_zip)
+    assert not (tmp_path / "offline" / "plugins" / PLUGIN).is_symlink()
     # 1. the plugin is there, the LiDAR algorithm refuses before running
     listed = profile.call("list")
     assert listed.returncode == 0 and "geomatics:gsdcalculator" in listed.stdout, \
