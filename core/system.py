@@ -205,6 +205,8 @@ def interpreter_candidates() -> List[str]:
     out: List[str] = []
     exe = sys.executable or ""
     if _is_python(exe):
+        if os.path.basename(exe).lower() == "pythonw.exe":      # no console: its sibling
+            out.append(os.path.join(os.path.dirname(exe), "python.exe"))
         out.append(exe)
     ver = f"{sys.version_info[0]}.{sys.version_info[1]}"
     prefixes = []

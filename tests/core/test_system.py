@@ -39,6 +39,15 @@ def test_osgeo4w_layout_finds_python_exe_not_qgis_bin(tmp_path, monkeypatch):
     assert system.python_executable(verify=False) == py
 
 
+def test_pythonw_prefers_its_console_sibling(tmp_path, monkeypatch):
+    root = tmp_path / "Python312"
+    pyw = _touch(root / "pythonw.exe")
+    py = _touch(root / "python.exe")
+    _fake_interpreter(monkeypatch, executable=pyw, prefix=root, platform="win32")
+    assert system.interpreter_candidates()[:2] == [py, pyw]
+    assert system.python_executable(verify=False) == py
+
+
 def test_macos_bundle_finds_bin_python3(tmp_path, monkeypatch):
     app = tmp_path / "QGIS.app" / "Contents"
     qgis = _touch(app / "MacOS" / "QGIS")
