@@ -80,10 +80,16 @@ in_root() {
             HTTP_PROXY HTTPS_PROXY NO_PROXY CI GEOMATICS_ISPRS_DIR; do
         if [ -n "${!var:-}" ]; then envs+=("$var=${!var}"); fi
     done
-    local shared_ro=""
+    local shared_ro="" gitdir=""
     if [ -d "$SHARED" ]; then shared_ro=$SHARED; fi
+    # a git worktree keeps its repository elsewhere (.git is a file): mount that too
+    # (read-only), so `git ls-files` works inside (package and i18n tests)
+    if [ -f "$CHECKOUT/.git" ]; then
+        gitdir=$(git -C "$CHECKOUT" rev-parse --path-format=absolute --git-common-dir 2>/dev/null || true)
+        case "$gitdir" in "$CHECKOUT"/*|"") gitdir="" ;; esac
+    fi
     unshare --mount --propagation private -- bash -eu -c '
-        root=$1 checkout=$2 shared=$3 workdir=$4; shift 4
+        root=$1 checkout=$2 shared=$3 workdir=$4 gitdir=$5; shift 5
         mount -t proc proc "$root/proc"
         mount --rbind /sys "$root/sys"
         mount --rbind /dev "$root/dev"
@@ -96,12 +102,17 @@ in_root() {
             mount --bind "$shared" "$root$shared"
             mount -o remount,bind,ro "$root$shared"
         fi
+        if [ -n "$gitdir" ]; then
+            mkdir -p "$root$gitdir"
+            mount --bind "$gitdir" "$root$gitdir"
+            mount -o remount,bind,ro "$root$gitdir"
+        fi
         envs=()
         while [ "$1" != "--" ]; do envs+=("$1"); shift; done
         shift
         exec chroot "$root" /usr/bin/env -i "${envs[@]}" \
             /bin/bash -c "cd \"\$0\" && exec \"\$@\"" "$workdir" "$@"
-    ' _ "$ROOT" "$CHECKOUT" "$shared_ro" "$workdir" "${envs[@]}" -- "$@"
+    ' _ "$ROOT" "$CHECKOUT" "$shared_ro" "$workdir" "$gitdir" "${envs[@]}" -- "$@"
 }
 
 build() {
