@@ -179,7 +179,9 @@ def footprints_3d(field: str = "height_m"):
     material = QgsPhongMaterialSettings()
     material.setDiffuse(QColor("#d9b38c"))
     material.setAmbient(QColor("#6b5a48"))
-    symbol.setMaterial(material)
+    # QGIS 3.40 names it setMaterialSettings; 3.22 has only setMaterial
+    set_material = getattr(symbol, "setMaterialSettings", None) or symbol.setMaterial
+    set_material(material)
     return QgsVectorLayer3DRenderer(symbol)
 
 

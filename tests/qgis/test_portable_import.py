@@ -75,6 +75,12 @@ for mod in ("asyncio", "concurrent.futures", "ctypes", "ctypes.util", "email", "
 import sysconfig
 sysconfig.get_config_vars()          # computed (and cached) for the real platform
 import numpy, scipy                  # QGIS's own compiled packages, imported as they are
+# pyproj (which laspy imports, Debian's build) looks for its tools with shutil.which when
+# imported; on Python 3.13 a simulated win32 sends that to the Windows-only _winapi
+try:
+    importlib.import_module("pyproj")
+except ImportError:
+    pass
 if PLATFORM:
     sys.platform = PLATFORM
 

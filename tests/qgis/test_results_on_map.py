@@ -80,7 +80,9 @@ def gui_run(processing, alg_id, params, *, project=None):
     res = processing.run(alg_id, params, feedback=rec.feedback, context=context)
     pending = {path: (details.outputName, details.postProcessor())
                for path, details in context.layersToLoadOnCompletion().items()}
-    ok = handleAlgorithmResults(alg, context, rec.feedback, False, params)
+    # QGIS 3.22: (alg, context, feedback, showResults, parameters); 3.40 dropped the
+    # unused showResults: pass the parameters by name
+    ok = handleAlgorithmResults(alg, context, rec.feedback, parameters=params)
     assert ok, rec.errors
     assert not [e for e in rec.errors if "not correctly generated" in e], rec.errors
     return res, context, project, rec, pending
