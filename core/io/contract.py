@@ -134,7 +134,8 @@ def check_paths(outputs: Mapping[str, Optional[PathLike]],
     ------
     InputError
         When an output is an input (also through a link), two outputs share a path,
-        an output is an existing folder, or its folder cannot be written.
+        an output is an existing folder or named ``*.copc.laz`` (the toolbox reads COPC
+        but writes plain LAS/LAZ), or its folder cannot be written.
     """
     outs = {k: Path(v) for k, v in dict(outputs).items() if v not in (None, "")}
     ins = list(_flatten(dict(inputs)))
@@ -151,6 +152,12 @@ def check_paths(outputs: Mapping[str, Optional[PathLike]],
                     path=path,
                     in_name=in_name,
                     src=src)
+        if path.name.lower().endswith(".copc.laz"):
+            raise InputError(
+                "The output {name} ({path}) is named as a COPC file, but point clouds are "
+                "written as plain LAS/LAZ (COPC inputs are read); QGIS would fail to open "
+                "it as COPC. Give a name ending in .laz without .copc.",
+                name=name, path=path)
         if real in seen:
             raise InputError(
                 "The outputs {other} and {name} are both {path}; give each output "

@@ -238,3 +238,15 @@ def test_las_input_help_says_what_this_qgis_loads(qgis_app):
         assert "no PDAL point-cloud provider" in text and "COPC files (.copc.laz) can" in text
     else:
         assert "no PDAL point-cloud provider" in text and "COPC needs QGIS 3.26" in text
+
+
+def test_a_copc_output_name_is_refused_before_anything_is_written(qgis_processing, clouds,
+                                                                   tmp_path):
+    """Outputs are plain LAZ: a .copc.laz name would be a LAZ QGIS cannot open as COPC."""
+    from qgis.core import QgsProcessingException
+    before = clouds["copc"].read_bytes()
+    with pytest.raises(QgsProcessingException, match="named as a COPC file"):
+        qgis_processing.run("geomatics:groundfilter", {
+            "INPUT": str(clouds["copc"]), "OUTPUT": str(tmp_path / "out.copc.laz")})
+    assert list(tmp_path.iterdir()) == []
+    assert clouds["copc"].read_bytes() == before
