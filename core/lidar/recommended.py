@@ -87,7 +87,7 @@ from ..reporting import T
 from . import _lowcells as L  # noqa: N812
 from . import _raster as R  # noqa: N812
 from . import _surface as S  # noqa: N812
-from ._filter import FunctionFilter, OptionsFilter
+from ._filter import OptionsFilter
 from ._filter import options_or_default as _options
 
 __all__ = ["RecommendedOptions", "classify", "derive", "recommended_filter", "OptionsFilter",
@@ -247,7 +247,7 @@ def derive(x, y, opt: RecommendedOptions) -> RecommendedOptions:
 
 
 def classify(x, y, z, *, return_number=None, number_of_returns=None, options=None,
-             progress=None, cancel=None, origin=None) -> np.ndarray:
+             progress=None, cancel=None, origin=None, info=None) -> np.ndarray:
     """Classify ground with the recommended, cloud-adaptive morphological filter.
 
     Parameters
@@ -265,6 +265,10 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     origin : (float, float), optional
         Anchors the raster on the lattice through this point (catalog chunks equal
         the merged cloud); default: the cloud's lower-left corner.
+
+    info : dict, optional
+        Filled with what was derived (options with the cell, grid, low cells, slope
+        tolerance, object cells) for the report (:mod:`._recommended_filter`).
 
     Returns
     -------
@@ -292,7 +296,9 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     zmin = pc.cell_min(z)
     rep(0.3)
     need = pc.read_mask()
-    dtm = surface(zmin, pc.grid, opt, rep, need=need)
+    if info is not None:
+        info.update(options=opt, n=int(x.size), grid=pc.grid)
+    dtm = surface(zmin, pc.grid, opt, rep, need=need, info=info)
     rep(0.8)
     cls = label_points(z, dtm, pc, opt)
     for k in range(int(opt.refine)):
@@ -303,7 +309,7 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     return cls
 
 
-def surface(zmin, grid, opt, rep, need=None):
+def surface(zmin, grid, opt, rep, need=None, info=None):
     """Provisional bare-earth raster from the minimum surface (steps 2-6).
 
     Object, low and empty cells are filled by :func:`fill_holes`.
@@ -320,6 +326,8 @@ def surface(zmin, grid, opt, rep, need=None):
         Progress step (checks cancel).
     need : ndarray of bool, optional
         Cells the caller reads (others may stay NaN).
+    info : dict, optional
+        Receives what was derived (``lows``, ``slope``, ``objects``).
 
     Returns
     -------
@@ -327,8 +335,9 @@ def surface(zmin, grid, opt, rep, need=None):
         The provisional DTM.
     """
     empty = np.isnan(zmin)
-    low = L.low_cells(zmin, grid.cell, step=opt.low_step, window=opt.low_window,
-                      share=opt.low_share).low
+    lows = L.low_cells(zmin, grid.cell, step=opt.low_step, window=opt.low_window,
+                       share=opt.low_share)
+    low = lows.low
     zf = R.fill(zmin, ~(low | empty))
     slope = opt.slope if opt.slope is not None else terrain_slope(zf, grid, opt)
     if opt.trend_window > 0 and opt.trend_smooth > 0:
@@ -338,6 +347,8 @@ def surface(zmin, grid, opt, rep, need=None):
         skip = low | empty
         obj = grow_ground(zmin, obj, skip, fill_holes(zmin, ~(obj | skip), grid, opt, ~empty),
                           grid.cell, opt)
+    if info is not None:
+        info.update(lows=lows, slope=slope, objects=obj)
     bad = obj | low | empty
     if bad.all():
         bad = low | empty
@@ -561,15 +572,8 @@ def label_points(z, dtm, pc, opt):
     return cls
 
 
-LABELS = {"cell": "Raster cell (m)", "max_window": "Largest window (m)",
-          "slope": "Slope tolerance (rise/run)", "threshold": "Height tolerance (m)",
-          "scaler": "Extra tolerance per unit of terrain slope (m)",
-          "low_noise_depth": "Low-noise depth (m)", "refine": "Refinement passes",
-          "trend_window": "Regional trend window (m)",
-          "grow": "Continuity growing of terrain crests"}
 
-
-def recommended_filter(options: Optional[RecommendedOptions] = None) -> FunctionFilter:
+def recommended_filter(options: Optional[RecommendedOptions] = None):
     """Return the recommended filter as a pipeline algorithm object.
 
     Parameters
@@ -579,8 +583,8 @@ def recommended_filter(options: Optional[RecommendedOptions] = None) -> Function
 
     Returns
     -------
-    FunctionFilter
-        Name ``groundfilter``.
+    RecommendedFilter
+        Name ``groundfilter`` (:mod:`._recommended_filter`: reports what was derived).
     """
-    return OptionsFilter(classify, options or RecommendedOptions(), name="groundfilter",
-                         title=TITLE, citation=CITATION, labels=LABELS)
+    from ._recommended_filter import RecommendedFilter
+    return RecommendedFilter(options or RecommendedOptions())

@@ -63,3 +63,45 @@ def test_low_cells_open_pit_flagged_canopy_specks_kept():
 def test_low_cells_empty_raster():
     res = _lowcells.low_cells(np.full((5, 5), np.nan), 1.0)
     assert not res.low.any() and res.pits == 0
+
+
+def test_lake_water_kept_out_of_ground():
+    """Input class 9 keeps its class; without it, flat sparse returns are candidates."""
+    from geomatics_toolbox.core.lidar._recommended_filter import water_candidates
+    s = landscapes.lake(seed=1)
+    water = s.classification == 9
+    flt = recommended.recommended_filter()
+    out = flt.classify(s.x, s.y, s.z, classification=s.classification)
+    assert (out.classes[water] == 9).all()
+    assert np.mean(out.classes[~water] == 2) > 0.99
+    assert out.details.water_input == water.sum()
+    cand = water_candidates(s.x, s.y, s.z)
+    assert cand[water].mean() > 0.4 and cand[~water].mean() < 0.001
+    out = flt.classify(s.x, s.y, s.z)                       # no classes in the input
+    assert not (out.classes[cand] == 2).any() and (out.classes[cand] == 1).all()
+    assert out.details.water_candidates == cand.sum()
+    assert np.mean(out.classes[~water] == 2) > 0.99
+
+
+def test_no_water_candidates_on_dry_land():
+    s = landscapes.steep_cliffs(seed=2)
+    from geomatics_toolbox.core.lidar._recommended_filter import water_candidates
+    assert not water_candidates(s.x, s.y, s.z).any()
+
+
+@pytest.mark.parametrize("lang", ["ar", "fa"])
+def test_derived_report_of_a_forest(lang):
+    """What ran is reported (cell, windows, canopy scale, ground share), translated."""
+    from geomatics_toolbox.core.reporting.i18n import has_translation
+    s = landscapes.closed_forest(ground_share=0.05, seed=1)
+    d = recommended.recommended_filter().classify(s.x, s.y, s.z).details
+    rows = dict(d.rows())
+    assert rows["Raster cell (m)"] == 1.0 and d.windows == [float(r) for r in range(1, 19)]
+    assert d.canopy_share > 0.9 and d.canopy_scale >= 2.0 and d.pits > 0
+    assert abs(d.ground_share - np.mean(s.classification == 2)) < 0.02
+    msgs = [w.text for w in d.warnings()]
+    assert any(m.startswith("Few ground returns") for m in msgs)
+    assert any(m.startswith("Ground seen through a canopy") for m in msgs)
+    labels = [k for k, _ in d.rows()] + msgs + ["Derived from the cloud (what ran)",
+                                                 rows["Opening windows (m)"].text]
+    assert not [m for m in labels if not has_translation(m, lang)]

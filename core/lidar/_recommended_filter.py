@@ -1,0 +1,253 @@
+"""The recommended filter as an algorithm object: water kept out, what ran reported.
+
+:class:`RecommendedFilter` wraps :func:`.recommended.classify` for the one engine of
+:mod:`.filters` and adds what the bare function cannot know or say:
+
+* **water** - points the input already classifies as water (ASPRS 9) keep class 9 and
+  take no part (a lake surface is not the terrain and pulls a DTM down at its shores).
+  In a cloud without class 9, *water candidates* are flagged: returns in cells with
+  less than a quarter of the cloud's median point count whose heights spread less than
+  0.15 m, in flat sparse patches of at least 400 m² (water reflects few pulses and lies
+  flat); they get class 1 and are reported, never ground.
+* **the report of what ran** (:class:`Derived`): density, cell, windows, slope
+  tolerance, thresholds, trend, low-outlier cells and canopy scale, the largest object,
+  ground share and class counts, with warnings where the cloud looks like a case the
+  filter is weak on (few ground returns, canopy, water, objects as wide as the largest
+  window, very low density).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import List, Optional
+
+import numpy as np
+from scipy import ndimage
+
+from ..progress import Monitor
+from ..reporting import KeyValues, Paragraph, T
+from . import _raster as R  # noqa: N812
+from ._filter import FilterOutcome, OptionsFilter, check_classes
+
+__all__ = ["Derived", "RecommendedFilter", "water_candidates", "LABELS"]
+
+WATER = 9
+LABELS = {"cell": "Raster cell (m)", "max_window": "Largest window (m)",
+          "slope": "Slope tolerance (rise/run)", "threshold": "Height tolerance (m)",
+          "scaler": "Extra tolerance per unit of terrain slope (m)",
+          "low_noise_depth": "Low-noise depth (m)", "refine": "Refinement passes",
+          "trend_window": "Regional trend window (m)",
+          "grow": "Continuity growing of terrain crests"}
+
+
+def water_candidates(x, y, z, *, sparse: float = 0.25, flat: float = 0.15,
+                     min_area: float = 400.0) -> np.ndarray:
+    """Flat, sparse returns in patches of at least ``min_area`` m² (likely water).
+
+    Cells are 3 mean point spacings wide (at least 2 m); a cell is a candidate when it
+    holds fewer than ``sparse`` x the median count of the occupied cells and the
+    heights of such cells in its 3 x 3 block (at least 3 points) spread less than
+    ``flat`` m; candidate cells that touch form patches, kept when their area reaches
+    ``min_area``.
+
+    Parameters
+    ----------
+    x, y, z : ndarray
+        Coordinates (m).
+    sparse, flat, min_area : float
+        Thresholds (share of the median count, m, m²).
+
+    Returns
+    -------
+    ndarray of bool
+        One flag per point.
+    """
+    n = np.size(x)
+    out = np.zeros(n, bool)
+    if n < 100:
+        return out
+    step = max(1, n // 500_000)
+    cell = max(2.0, 3.0 / np.sqrt(R.density(x[::step], y[::step]) * step))
+    grid = R.Grid.around(x, y, cell)
+    idx = grid.index(x, y)
+    size = grid.rows * grid.cols
+    cnt = np.bincount(idx, minlength=size)
+    occ = cnt > 0
+    cand = occ & (cnt < sparse * np.median(cnt[occ]))
+    if not cand.any():
+        return out
+    sel = np.flatnonzero(cand[idx])                  # points of the sparse cells only
+    zlo = np.full(size, np.inf)
+    np.minimum.at(zlo, idx[sel], z[sel])
+    zhi = np.full(size, -np.inf)
+    np.maximum.at(zhi, idx[sel], z[sel])
+    shape = (grid.rows, grid.cols)
+    box = np.ones((3, 3), bool)                      # heights and count over 3 x 3 cells
+    lo = ndimage.minimum_filter(zlo.reshape(shape), footprint=box, mode="constant",
+                                cval=np.inf)
+    hi = ndimage.maximum_filter(zhi.reshape(shape), footprint=box, mode="constant",
+                                cval=-np.inf)
+    n3 = ndimage.uniform_filter(np.where(cand, cnt, 0).reshape(shape).astype(float), 3,
+                                mode="constant") * 9
+    cand = cand.reshape(shape) & (hi - lo < flat) & (n3 >= 3)
+    if not cand.any():
+        return out
+    lab, k = ndimage.label(cand, structure=box)
+    area = np.bincount(lab.ravel(), minlength=k + 1) * cell * cell
+    keep = area >= min_area
+    keep[0] = False
+    return keep[lab.ravel()[idx]]
+
+
+@dataclass
+class Derived:
+    """What the recommended filter derived from the cloud and did (report content)."""
+
+    points: int = 0
+    density: float = 0.0
+    cell: float = 0.0
+    windows: List[float] = field(default_factory=list)
+    slope: tuple = (0.0, 0.0, 0.0)
+    threshold: float = 0.0
+    scaler: float = 0.0
+    low_step: float = 0.0
+    low_noise_depth: float = 0.0
+    trend_window: float = 0.0
+    pits: int = 0
+    low_cells: int = 0
+    canopy_share: float = 0.0
+    canopy_scale: float = 0.0
+    largest_object: float = 0.0
+    ground_share: float = 0.0
+    water_input: int = 0
+    water_candidates: int = 0
+    counts: dict = field(default_factory=dict)
+
+    def warnings(self) -> list:
+        """Return the warnings (translatable) where the filter is weak on the cloud."""
+        out = []
+        if self.ground_share < 0.15:
+            out.append(T("Few ground returns: {pct} % of the points are ground. The terrain "
+                         "rests on sparse points; check the DTM under dense vegetation.",
+                         pct=round(100.0 * self.ground_share, 1)))
+        if self.canopy_share > 0:
+            out.append(T("Ground seen through a canopy over {pct} % of the cloud: low "
+                         "outliers there were tested at the {scale} m spacing of the ground "
+                         "returns.", pct=round(100.0 * self.canopy_share, 1),
+                         scale=round(self.canopy_scale, 1)))
+        if self.water_input:
+            out.append(T("{n} water points (class 9 in the input) were kept out of the "
+                         "ground.", n=self.water_input))
+        if self.water_candidates:
+            out.append(T("{n} flat, sparse returns look like water: they were given class 1, "
+                         "not ground. Classify water as 9 to keep it out explicitly.",
+                         n=self.water_candidates))
+        if self.windows and self.largest_object >= self.windows[-1]:
+            out.append(T("An object as wide as the largest window ({w} m) was found: if a "
+                         "building is wider, raise the largest window.", w=self.windows[-1]))
+        if self.density < 0.5:
+            out.append(T("Low density ({rho} points/m²): small objects and breaklines are "
+                         "poorly sampled.", rho=round(self.density, 2)))
+        return out
+
+    def rows(self) -> list:
+        """Report rows ``(label, value)``."""
+        w = self.windows
+        return [("Points filtered", self.points),
+                ("Point density (points/m², occupied area)", round(self.density, 3)),
+                ("Raster cell (m)", self.cell),
+                ("Opening windows (m)", T("{a} to {b} m, {n} steps", a=w[0], b=w[-1], n=len(w))
+                 if w else None),
+                ("Slope tolerance, min / median / max (rise/run)",
+                 " / ".join(f"{v:.2f}" for v in self.slope)),
+                ("Height tolerance (m)", self.threshold),
+                ("Extra tolerance per unit of terrain slope (m)", self.scaler),
+                ("Regional trend window (m)", self.trend_window),
+                ("Low-outlier depth below the closing (m)", self.low_step),
+                ("Closing pits / low-outlier cells", f"{self.pits} / {self.low_cells}"),
+                ("Share under canopy (%)", round(100.0 * self.canopy_share, 1)),
+                ("Ground-return spacing under canopy (m)", self.canopy_scale or None),
+                ("Largest object found (m)", round(self.largest_object, 1)),
+                ("Low-noise depth (m)", self.low_noise_depth),
+                ("Ground share (%)", round(100.0 * self.ground_share, 1)),
+                ("Water points kept (input class 9)", self.water_input),
+                ("Water candidates (class 1)", self.water_candidates)]
+
+
+def _largest_object(obj, cell: float) -> float:
+    """Widest side (m) of the bounding boxes of the connected object regions."""
+    if obj is None or not obj.any():
+        return 0.0
+    lab, _ = ndimage.label(obj)
+    sides = [max(s[0].stop - s[0].start, s[1].stop - s[1].start)
+             for s in ndimage.find_objects(lab)]
+    return float(max(sides)) * cell
+
+
+def derived(info: dict, classes: np.ndarray, water_input: int, water_cand: int) -> Derived:
+    """:class:`Derived` from the ``info`` that :func:`.recommended.classify` filled."""
+    opt, lows, slope = info["options"], info["lows"], info["slope"]
+    cell = float(opt.cell)
+    radii = np.arange(1, max(1, int(np.ceil(opt.max_window / cell))) + 1)
+    s = np.broadcast_to(np.asarray(slope, float), (1,) if np.ndim(slope) == 0 else
+                        np.shape(slope))
+    vals, cnt = np.unique(classes, return_counts=True)
+    n = max(1, int(info["n"]))
+    return Derived(
+        points=int(info["n"]), density=float(info.get("density", 0.0)), cell=cell,
+        windows=[float(r * cell) for r in radii],
+        slope=(float(s.min()), float(np.median(s)), float(s.max())),
+        threshold=opt.threshold, scaler=opt.scaler, low_step=opt.low_step,
+        low_noise_depth=opt.low_noise_depth,
+        trend_window=opt.trend_window if opt.trend_smooth > 0 else 0.0,
+        pits=lows.pits, low_cells=int(np.count_nonzero(lows.low)),
+        canopy_share=lows.canopy_share, canopy_scale=lows.canopy_scale,
+        largest_object=_largest_object(info.get("objects"), cell),
+        ground_share=float(np.count_nonzero(classes == 2)) / n,
+        water_input=int(water_input), water_candidates=int(water_cand),
+        counts={int(k): int(c) for k, c in zip(vals, cnt)})
+
+
+class RecommendedFilter(OptionsFilter):
+    """The recommended filter (``groundfilter``) with water handling and its report.
+
+    Parameters
+    ----------
+    options : RecommendedOptions
+        Parameters (``None`` fields derived from the cloud).
+    """
+
+    def __init__(self, options):
+        from .recommended import CITATION, TITLE, classify
+        super().__init__(classify, options, name="groundfilter", title=TITLE,
+                         citation=CITATION, labels=LABELS)
+
+    def classify(self, x, y, z, *, return_number=None, number_of_returns=None,
+                 classification=None, origin=None,
+                 monitor: Optional[Monitor] = None) -> FilterOutcome:
+        """Classify; input water (9) kept, water candidates class 1; :class:`Derived`."""
+        mon = monitor or Monitor()
+        x, y, z = (np.asarray(a, dtype=np.float64) for a in (x, y, z))
+        n = x.size
+        water = (np.asarray(classification) == WATER if classification is not None
+                 else np.zeros(n, bool))
+        cand_water = np.zeros(n, bool) if water.any() else water_candidates(x, y, z)
+        take = ~(water | cand_water)
+        sub = (lambda a: a) if take.all() else (lambda a: a[take])
+        info: dict = {"density": R.density(x, y)}
+        cls = np.full(n, 1, np.uint8)
+        cls[take] = self.func(sub(x), sub(y), sub(z), options=self.options,
+                              progress=mon.update, cancel=mon.cancelled, origin=origin,
+                              info=info)
+        cls[water] = WATER
+        cls = check_classes(self.name, cls, n)
+        return FilterOutcome(cls, details=derived(info, cls, water.sum(), cand_water.sum()))
+
+    def report_sections(self, run, report, tr) -> None:
+        """Add "Derived from the cloud" (values that ran) and the warnings."""
+        d = run.outcome.details
+        if not isinstance(d, Derived):
+            return
+        sec = report.section("Derived from the cloud (what ran)")
+        sec.add(KeyValues(d.rows()))
+        for w in d.warnings():
+            sec.add(Paragraph(w))
