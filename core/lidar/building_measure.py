@@ -19,6 +19,9 @@ linear in the number of buildings:
   ``step`` m of the roof edge (no wall: the deck goes on) and that continuing surface
   comes down to within ``touch`` m of the DTM. A building's end walls drop to the
   ground; a terraced house's neighbour roof continues but stays high above the DTM.
+  A deck surrounded by water — at least half of the points in a 1.5 m band around it
+  in class 9, where the input has water — is refused too (a pier or jetty joins the
+  shore at one end only).
 """
 from __future__ import annotations
 
@@ -64,12 +67,25 @@ def _bridge_ends(win_xy, cells, zlow, dtm, model, *, step, touch, reach, cell):
     return True
 
 
+def _over_water(cells, water, win, *, share: float = 0.5, cell: float = 0.5) -> bool:
+    """Return True when most points around the structure (a 1.5 m band) are water (9)."""
+    from scipy import ndimage
+    if water is None:
+        return False
+    band = ndimage.binary_dilation(cells, np.ones((3, 3)),
+                                   iterations=max(1, int(math.ceil(1.5 / cell)))) & ~cells
+    n_all, n_water = water[0][win][band].sum(), water[1][win][band].sum()
+    return n_all > 0 and n_water >= share * n_all
+
+
 def measure_buildings(grid, lab, nlab, rects, x, y, z, keep, dtm, zlow, roof_f, *,
-                      min_height: float, flat_angle: float, storey_height: float):
+                      min_height: float, flat_angle: float, storey_height: float,
+                      water=None):
     """Measure every footprint; drop bridges. Returns (labels, buildings, roof, bridges).
 
     ``x, y, z, keep``: the candidate points and their roof-plane flag; ``zlow``: lowest
-    non-noise point per cell (NaN where none); ``roof_f``: highest roof point per cell,
+    non-noise point per cell (NaN where none); ``water``: (points, water points) per
+    cell, or None when the cloud has no class 9; ``roof_f``: highest roof point per cell,
     filled from the nearest. The returned ``roof`` raster holds the fitted roof height
     over each footprint (``roof_f`` elsewhere); ``bridges`` is a boolean raster of the
     refused decks.
@@ -81,6 +97,9 @@ def measure_buildings(grid, lab, nlab, rects, x, y, z, keep, dtm, zlow, roof_f, 
     b_lab = lab[row[inside], col[inside]]
     kx, ky, kz = x[keep][inside], y[keep][inside], z[keep][inside]
     order, starts = group_by_label(b_lab, nlab)
+    ra, ca, a_in = grid.cell_index(x, y)
+    z_all = z[a_in]
+    a_order, a_starts = group_by_label(lab[ra[a_in], ca[a_in]], nlab)
     objs = ndimage.find_objects(lab, max_label=nlab)
     mask = lab > 0
     roof = roof_f.copy()
@@ -101,7 +120,8 @@ def measure_buildings(grid, lab, nlab, rects, x, y, z, keep, dtm, zlow, roof_f, 
         xs, ys = np.meshgrid(xc[win[1]], yc[win[0]])
         d = dtm[win]
         if _bridge_ends((xs, ys), cells, zlow[win], d, model, step=1.0,
-                        touch=0.75 * min_height, reach=3.0, cell=grid.cell):
+                        touch=0.75 * min_height, reach=3.0, cell=grid.cell) or \
+                _over_water(cells, water, win, cell=grid.cell):
             bridges[win] |= cells
             drop[k] = True
             continue
@@ -109,8 +129,14 @@ def measure_buildings(grid, lab, nlab, rects, x, y, z, keep, dtm, zlow, roof_f, 
         g = float(np.nanmean(d[ring]) if np.isfinite(d[ring]).any()
                   else np.nanmean(d[cells]))
         if model.kind == "complex":
+            # no primitive fits: the points over the footprint up to 1 m above its
+            # highest roof-plane point (ridges and edges are not planar; canopy higher
+            # over the roof is left out)
             zr = roof_f[win][cells]
-            ridge = float(np.percentile(kz[sel], 99)) if sel.size else float(zr.max())
+            top = float(kz[sel].max()) if sel.size else float(zr.max())
+            za = z_all[a_order[a_starts[k]:a_starts[k + 1]]]
+            za = za[za <= top + 1.0]
+            ridge = float(np.percentile(za, 99)) if za.size else top
             eave = float(np.percentile(kz[sel], 5)) if sel.size else float(zr.min())
         else:
             zr = model.z(xs[cells], ys[cells])

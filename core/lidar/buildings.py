@@ -397,7 +397,7 @@ def _footprint_labels(grid, x, y, keep, rho, min_area, min_roof_share):
 
 
 def _footprints(grid, x, y, z, dtm, keep, min_area, flat_angle, rho, zlow, min_height,
-                storey_height=3.0):
+                storey_height=3.0, water=None):
     """Rasterise roof points (density ``rho``) into footprints; measure each one.
 
     Linear in the number of buildings: each one is measured on its own
@@ -417,7 +417,7 @@ def _footprints(grid, x, y, z, dtm, keep, min_area, flat_angle, rho, zlow, min_h
     roof_f = roof[near[0], near[1]]
     return measure_buildings(grid, lab, nlab, rects, x, y, z, keep, dtm, zlow, roof_f,
                              min_height=min_height, flat_angle=flat_angle,
-                             storey_height=storey_height)
+                             storey_height=storey_height, water=water)
 
 
 def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
@@ -492,7 +492,8 @@ def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
     rho = float(np.median(density[keep]))
     labels, blds, roof, bridges = _footprints(
         grid, x[cand], y[cand], z[cand], dtm, keep, min_area, flat_angle, rho,
-        _lowest(grid, x, y, z, cls), min_height, storey_height)
+        _lowest(grid, x, y, z, cls), min_height, storey_height,
+        water=_water_counts(grid, x, y, cls))
     # roof points: candidates over a footprint on its fitted roof
     r, c, inside = grid.cell_index(x[cand], y[cand])
     idx = np.flatnonzero(inside)
@@ -501,6 +502,20 @@ def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
     flag[cand[idx[on]]] = True
     mon.step(1.0)
     return BuildingResult(grid, labels, blds, flag, dtm, roof, bridges)
+
+
+def _water_counts(grid, x, y, cls):
+    """(non-noise points, water points) per cell, or None when the cloud has no class 9."""
+    water = cls == 9
+    if not water.any():
+        return None
+    ok = ~np.isin(cls, (7, 18))
+    r, c, inside = grid.cell_index(x[ok], y[ok])
+    idx = r[inside] * grid.shape[1] + c[inside]
+    n_all = np.bincount(idx, minlength=grid.size).reshape(grid.shape)
+    n_water = np.bincount(idx, weights=water[ok][inside],
+                          minlength=grid.size).reshape(grid.shape)
+    return n_all, n_water
 
 
 def _lowest(grid, x, y, z, cls) -> np.ndarray:

@@ -37,7 +37,7 @@ from typing import Dict, List
 
 import numpy as np
 
-__all__ = ["RoofModel", "fit_roof", "ROOF_TYPES"]
+__all__ = ["RoofModel", "fit_roof", "fit_roof_in_frame", "ROOF_TYPES"]
 
 ROOF_TYPES = ("flat", "shed", "gabled", "hipped", "complex")
 _C = 0.3            # truncation of the residual (m)
@@ -175,7 +175,34 @@ def _candidates(u, v, z, a, b) -> List[tuple]:
 
 
 def fit_roof(x, y, z, centre, axes, half, *, flat_angle: float = 10.0) -> RoofModel:
-    """Fit the roof primitives to roof points and choose one (see the module docstring).
+    """Fit the roof in the rectangle's frame, turned by up to ±10° when that fails.
+
+    When the first fit leaves many points off the roof (a frame from sparse points is a
+    few degrees off, which a steep roof turns into residuals of decimetres), frames
+    turned by ±3, ±6 and ±10° are tried too. See :func:`fit_roof_in_frame` for the
+    parameters; the model with the lowest truncated cost among the non-complex fits
+    wins.
+    """
+    model = fit_roof_in_frame(x, y, z, centre, axes, half, flat_angle=flat_angle)
+    if model.inliers >= 0.85 and model.kind != "complex" or np.size(z) < 6:
+        return model
+    best = model
+    xy = np.column_stack([np.asarray(x, float), np.asarray(y, float)])
+    for deg in (-10.0, -6.0, -3.0, 3.0, 6.0, 10.0):
+        a = np.radians(deg)
+        rot = np.array([[np.cos(a), -np.sin(a)], [np.sin(a), np.cos(a)]])
+        ax = np.asarray(axes, float) @ rot.T
+        d = xy - np.asarray(centre, float)
+        h = np.array([np.abs(d @ ax[0]).max(), np.abs(d @ ax[1]).max()])
+        m = fit_roof_in_frame(x, y, z, centre, ax, h, flat_angle=flat_angle)
+        if m.kind != "complex" and (best.kind == "complex" or m.cost < best.cost):
+            best = m
+    return best
+
+
+def fit_roof_in_frame(x, y, z, centre, axes, half, *,
+                      flat_angle: float = 10.0) -> RoofModel:
+    """Fit the roof primitives in one frame and choose one (see the module docstring).
 
     Parameters
     ----------

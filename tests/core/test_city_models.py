@@ -265,3 +265,21 @@ def test_city_models_of_real_files(name, tmp_path):
         for m in sc.geometry.values():
             m.merge_vertices()
             assert m.is_watertight and m.volume > 0
+
+
+def test_pier_over_water_is_not_a_building():
+    """A 4 m × 30 m deck 3 m above a lake (class 9 around it on three sides, the shore at
+    one end) is refused; the same deck over dry ground with walls is a building."""
+    rng = np.random.default_rng(2)
+    n = 60_000
+    x, y = rng.uniform(0, 100, n), rng.uniform(0, 100, n)
+    deck = (np.abs(x - 50) <= 2) & (y >= 40) & (y <= 70)
+    lake = (y > 35) & ~deck
+    z = np.where(deck, 3.0, 0.0) + rng.normal(0, 0.02, n)
+    cls = np.where(deck, 1, np.where(lake, 9, 2))
+    keep = ~lake | (rng.random(n) < 0.5)          # water returns only now and then
+    res = core_b.extract_buildings(x[keep], y[keep], z[keep], cls[keep])
+    assert not res.buildings and res.bridges.any()
+    dry = np.where(lake, 2, cls)
+    res = core_b.extract_buildings(x, y, z, dry)
+    assert len(res.buildings) == 1 and res.buildings[0]["roof_type"] == "flat"
