@@ -2589,10 +2589,6 @@
             <translation>الحد الأقصى للتكرارات</translation>
         </message>
         <message>
-            <source>Seed drop (%)</source>
-            <translation>نسبة البذور المُسقطة (%)</translation>
-        </message>
-        <message>
             <source>PTD: parcels {} m, distance {} m, angle {}°</source>
             <translation>PTD: قطع {} م، مسافة {} م، زاوية {}°</translation>
         </message>
@@ -2601,16 +2597,8 @@
             <translation>انعكاس مراعٍ للجروف</translation>
         </message>
         <message>
-            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest points of parcels larger than the largest building seed a TIN, which takes every point close enough to its facet until none is added. Its mean total error on the 8 ISPRS samples is 8.07 % at the defaults: use the recommended ground filter unless you need a TIN filter.</source>
-            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) بالتكثيف التدريجي لشبكة المثلثات TIN (Axelsson 2000): أدنى نقاط قطع أكبر من أكبر مبنى تكون بذور شبكة TIN، تضم كل نقطة قريبة بما يكفي من وجهها حتى لا تُضاف أي نقطة. متوسط خطئه الكلي على عينات ISPRS الثماني 8.07 % بالقيم الافتراضية: استخدم مرشح الأرض المُوصى به ما لم تحتج إلى مرشح TIN.</translation>
-        </message>
-        <message>
             <source>Lowest point per cell for the step filter and the seeds.</source>
             <translation>أدنى نقطة في كل خلية لمرشح الدرجات وللبذور.</translation>
-        </message>
-        <message>
-            <source>Larger than the largest building (30–50 m).</source>
-            <translation>أكبر من أكبر مبنى (30–50 م).</translation>
         </message>
         <message>
             <source>Densification limit: distance of a point to its facet.</source>
@@ -2629,16 +2617,44 @@
             <translation>النقاط الأعمق من ذلك تحت شبكة TIN النهائية تأخذ الفئة 7.</translation>
         </message>
         <message>
-            <source>Lowest share of each parcel skipped before picking its seed.</source>
-            <translation>الحصة الأدنى من كل قطعة التي تُتخطّى قبل اختيار بذرتها.</translation>
-        </message>
-        <message>
             <source>Points in a TIN facet that spans a cliff (steeper than 45° and higher than the distance to facet) are mirrored through nearby TIN vertices and accepted when the mirror lies on the cliff foot or top within the final distance, so the ground right at the cliff edge is kept.</source>
             <translation>النقاط الواقعة في وجه من شبكة TIN يمتد عبر جرف (أشد انحداراً من 45° وأعلى من المسافة إلى الوجه) تُعكس عبر رؤوس الشبكة القريبة وتُقبل إذا وقع انعكاسها على قاعدة الجرف أو قمته ضمن المسافة النهائية، فتُحفظ الأرض عند حافة الجرف تماماً.</translation>
         </message>
         <message>
             <source>&lt;p&gt;Reference: Axelsson, P. (2000). &lt;cite&gt;DEM generation from laser scanner data using adaptive TIN models&lt;/cite&gt;. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</source>
             <translation>&lt;p&gt;المرجع: &lt;bdi dir="ltr"&gt;Axelsson, P. (2000). &lt;cite&gt;DEM generation from laser scanner data using adaptive TIN models&lt;/cite&gt;. IAPRS XXXIII-B4, 110–117.&lt;/bdi&gt;&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest trusted point of each parcel larger than the largest building seeds a TIN, which takes the candidates (the lowest point per candidate cell) close enough to its facets until none is added; every other point is ground when it lies close to the final TIN. Its mean total error on the 8 ISPRS samples is 5.83 % at the defaults (Axelsson published 4.82 % over all 15 samples): use the recommended ground filter unless you need a TIN filter.</source>
+            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) بالتكثيف التدريجي لشبكة المثلثات TIN (Axelsson 2000): أدنى نقطة موثوقة في كل قطعة أكبر من أكبر مبنى تكون بذرةً لشبكة TIN، تضم النقاط المحتملة (أدنى نقطة في كل خلية للنقاط المحتملة) القريبة بما يكفي من أوجهها حتى لا تُضاف أي نقطة؛ وكل نقطة أخرى أرض إذا كانت قريبة من شبكة TIN النهائية. متوسط خطئه الكلي على عينات ISPRS الثماني 5.83 % بالقيم الافتراضية (نشر Axelsson ‏4.82 % على العينات الخمس عشرة كلها): استخدم مرشح الأرض المُوصى به ما لم تحتج إلى مرشح TIN.</translation>
+        </message>
+        <message>
+            <source>Larger than the largest building.</source>
+            <translation>أكبر من أكبر مبنى.</translation>
+        </message>
+        <message>
+            <source>A parcel's seed is its lowest point not more than the seed depth below this quantile of the parcel's lowest points per cell, so a cluster of low outliers never seeds the TIN.</source>
+            <translation>بذرة القطعة هي أدنى نقطة فيها لا تقع تحت هذا المئين من أدنى نقاط خلايا القطعة بأكثر من عمق البذرة، فلا تصير مجموعة من القيم الشاذة المنخفضة بذرةً لشبكة TIN أبدًا.</translation>
+        </message>
+        <message>
+            <source>See the seed quantile.</source>
+            <translation>انظر مئين البذرة.</translation>
+        </message>
+        <message>
+            <source>The lowest point per cell of this size is a candidate of the TIN; every other point is classified by its distance to the final TIN (0 = every point).</source>
+            <translation>أدنى نقطة في كل خلية بهذا الحجم نقطة محتملة لشبكة TIN؛ وتُصنَّف كل نقطة أخرى بمسافتها إلى شبكة TIN النهائية (0 = كل النقاط).</translation>
+        </message>
+        <message>
+            <source>Seed quantile (%)</source>
+            <translation>مئين البذرة (%)</translation>
+        </message>
+        <message>
+            <source>Seed depth (m)</source>
+            <translation>عمق البذرة (م)</translation>
+        </message>
+        <message>
+            <source>Candidate cell (m)</source>
+            <translation>خلية النقاط المحتملة (م)</translation>
         </message>
     </context>
     <context>

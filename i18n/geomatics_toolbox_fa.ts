@@ -370,12 +370,16 @@
             <translation>باید از بُرد فیلتر (حدود 100 متر برای فیلتر پیشنهادی، 240 متر برای LSQ بهبودیافته و 120 متر برای فیلتر شیب سازگار با عوارض) و فاصلهٔ جست‌وجوی مدل رقومی زمین بیشتر باشد.</translation>
         </message>
         <message>
-            <source>DTM mosaic (VRT)</source>
-            <translation>موزاییک مدل رقومی زمین (VRT)</translation>
+            <source>Ground filter (progressive TIN densification)</source>
+            <translation>فیلتر زمین (متراکم‌سازی تدریجی TIN)</translation>
         </message>
         <message>
             <source>Tiles: LAS/LAZ files, folders or a .vpc</source>
             <translation>کاشی‌ها: فایل‌های LAS/LAZ، پوشه‌ها یا یک ‎.vpc</translation>
+        </message>
+        <message>
+            <source>DTM mosaic (VRT)</source>
+            <translation>موزاییک مدل رقومی زمین (VRT)</translation>
         </message>
         <message>
             <source>Tile {key}: finished by an earlier run, kept.</source>
@@ -392,10 +396,6 @@
         <message>
             <source>Cancelled by the user. {n} finished tile(s) are kept in {folder}: run again with the same settings to resume; unfinished tiles left nothing.</source>
             <translation>کاربر لغو کرد. {n} کاشیِ تمام‌شده در {folder} نگه داشته شد: برای ادامه با همان تنظیمات دوباره اجرا کنید؛ کاشی‌های ناتمام چیزی به جا نگذاشتند.</translation>
-        </message>
-        <message>
-            <source>Ground filter (progressive TIN densification)</source>
-            <translation>فیلتر زمین (متراکم‌سازی تدریجی TIN)</translation>
         </message>
     </context>
     <context>
@@ -1303,6 +1303,42 @@
             <translation>RMS_T نقاط چک (وگرنه به روش یکی‌کنارگذاری) برای تبدیل به‌کاررفته</translation>
         </message>
         <message>
+            <source>Set-up</source>
+            <translation>تنظیمات</translation>
+        </message>
+        <message>
+            <source>Pick a loaded point-cloud layer or a .las, .laz or .copc.laz file.</source>
+            <translation>یک لایهٔ ابر نقاط بارشده یا یک فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ انتخاب کنید.</translation>
+        </message>
+        <message>
+            <source>This QGIS build has no PDAL point-cloud provider: .las/.laz files cannot be loaded as layers here, COPC files (.copc.laz) can (QGIS 3.26 and later read them without PDAL). Give the .las, .laz or .copc.laz file.</source>
+            <translation>این نسخهٔ QGIS ارائه‌دهندهٔ ابر نقاط PDAL ندارد: فایل‌های ‎.las/.laz‏ را اینجا نمی‌توان به‌صورت لایه بار کرد، اما فایل‌های COPC ‏(‎.copc.laz‏) را می‌توان (QGIS 3.26 و نسخه‌های بعدی آن‌ها را بدون PDAL می‌خوانند). فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ را بدهید.</translation>
+        </message>
+        <message>
+            <source>This QGIS build has no PDAL point-cloud provider, so point clouds cannot be loaded as layers (COPC needs QGIS 3.26 or later): give the .las, .laz or .copc.laz file.</source>
+            <translation>این نسخهٔ QGIS ارائه‌دهندهٔ ابر نقاط PDAL ندارد، پس ابرهای نقاط را نمی‌توان به‌صورت لایه بار کرد (COPC به QGIS 3.26 یا جدیدتر نیاز دارد): فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ را بدهید.</translation>
+        </message>
+        <message>
+            <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
+            <translation>داده‌ها در افق بر حسب {} و در ارتفاع بر حسب {} هستند؛ به متر تبدیل می‌شوند، پس هر طولی که می‌دهید و هر طول در این گزارش کار به متر است.</translation>
+        </message>
+        <message>
+            <source>Project name (shown in the report)</source>
+            <translation>نام پروژه (در گزارش نمایش داده می‌شود)</translation>
+        </message>
+        <message>
+            <source>Operator (shown in the report)</source>
+            <translation>کاربر عامل (در گزارش نمایش داده می‌شود)</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>دوخطی</translation>
+        </message>
+        <message>
+            <source>Average</source>
+            <translation>میانگین (average)</translation>
+        </message>
+        <message>
             <source>Colour ramp</source>
             <translation>طیف رنگی</translation>
         </message>
@@ -1341,42 +1377,6 @@
         <message>
             <source>Exponential</source>
             <translation>نمایی (exponential)</translation>
-        </message>
-        <message>
-            <source>Bilinear</source>
-            <translation>دوخطی</translation>
-        </message>
-        <message>
-            <source>Average</source>
-            <translation>میانگین (average)</translation>
-        </message>
-        <message>
-            <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
-            <translation>داده‌ها در افق بر حسب {} و در ارتفاع بر حسب {} هستند؛ به متر تبدیل می‌شوند، پس هر طولی که می‌دهید و هر طول در این گزارش کار به متر است.</translation>
-        </message>
-        <message>
-            <source>Project name (shown in the report)</source>
-            <translation>نام پروژه (در گزارش نمایش داده می‌شود)</translation>
-        </message>
-        <message>
-            <source>Operator (shown in the report)</source>
-            <translation>کاربر عامل (در گزارش نمایش داده می‌شود)</translation>
-        </message>
-        <message>
-            <source>Set-up</source>
-            <translation>تنظیمات</translation>
-        </message>
-        <message>
-            <source>Pick a loaded point-cloud layer or a .las, .laz or .copc.laz file.</source>
-            <translation>یک لایهٔ ابر نقاط بارشده یا یک فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ انتخاب کنید.</translation>
-        </message>
-        <message>
-            <source>This QGIS build has no PDAL point-cloud provider: .las/.laz files cannot be loaded as layers here, COPC files (.copc.laz) can (QGIS 3.26 and later read them without PDAL). Give the .las, .laz or .copc.laz file.</source>
-            <translation>این نسخهٔ QGIS ارائه‌دهندهٔ ابر نقاط PDAL ندارد: فایل‌های ‎.las/.laz‏ را اینجا نمی‌توان به‌صورت لایه بار کرد، اما فایل‌های COPC ‏(‎.copc.laz‏) را می‌توان (QGIS 3.26 و نسخه‌های بعدی آن‌ها را بدون PDAL می‌خوانند). فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ را بدهید.</translation>
-        </message>
-        <message>
-            <source>This QGIS build has no PDAL point-cloud provider, so point clouds cannot be loaded as layers (COPC needs QGIS 3.26 or later): give the .las, .laz or .copc.laz file.</source>
-            <translation>این نسخهٔ QGIS ارائه‌دهندهٔ ابر نقاط PDAL ندارد، پس ابرهای نقاط را نمی‌توان به‌صورت لایه بار کرد (COPC به QGIS 3.26 یا جدیدتر نیاز دارد): فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ را بدهید.</translation>
         </message>
     </context>
     <context>
@@ -2589,10 +2589,6 @@
             <translation>سقف تکرار</translation>
         </message>
         <message>
-            <source>Seed drop (%)</source>
-            <translation>کنارگذاری بذر (%)</translation>
-        </message>
-        <message>
             <source>PTD: parcels {} m, distance {} m, angle {}°</source>
             <translation>PTD: قطعه‌ها {} متر، فاصله {} متر، زاویه {}°</translation>
         </message>
@@ -2601,16 +2597,8 @@
             <translation>قرینه‌سازی با درنظرگرفتن پرتگاه</translation>
         </message>
         <message>
-            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest points of parcels larger than the largest building seed a TIN, which takes every point close enough to its facet until none is added. Its mean total error on the 8 ISPRS samples is 8.07 % at the defaults: use the recommended ground filter unless you need a TIN filter.</source>
-            <translation>ابر نقطهٔ LAS/LAZ را به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) با متراکم‌سازی تدریجی TIN (Axelsson 2000) طبقه‌بندی می‌کند: پایین‌ترین نقاط قطعه‌هایی بزرگ‌تر از بزرگ‌ترین ساختمان بذر یک TIN می‌شوند که هر نقطهٔ به‌قدر کافی نزدیک به وجه خود را می‌پذیرد تا جایی که نقطه‌ای افزوده نشود. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 8.07 % است: مگر به فیلتر TIN نیاز دارید، فیلتر زمین پیشنهادی را به کار ببرید.</translation>
-        </message>
-        <message>
             <source>Lowest point per cell for the step filter and the seeds.</source>
             <translation>پایین‌ترین نقطهٔ هر سلول برای فیلتر پله‌ای و بذرها.</translation>
-        </message>
-        <message>
-            <source>Larger than the largest building (30–50 m).</source>
-            <translation>بزرگ‌تر از بزرگ‌ترین ساختمان (30 تا 50 متر).</translation>
         </message>
         <message>
             <source>Densification limit: distance of a point to its facet.</source>
@@ -2629,16 +2617,44 @@
             <translation>نقاط عمیق‌تر از این زیر TIN نهایی کلاس 7 می‌گیرند.</translation>
         </message>
         <message>
-            <source>Lowest share of each parcel skipped before picking its seed.</source>
-            <translation>سهم پایین‌ترین بخش هر قطعه که پیش از برگزیدن بذرش کنار گذاشته می‌شود.</translation>
-        </message>
-        <message>
             <source>Points in a TIN facet that spans a cliff (steeper than 45° and higher than the distance to facet) are mirrored through nearby TIN vertices and accepted when the mirror lies on the cliff foot or top within the final distance, so the ground right at the cliff edge is kept.</source>
             <translation>نقاطی که در وجهی از TIN قرار دارند که از روی یک پرتگاه می‌گذرد (تندتر از 45° و بلندتر از فاصله تا وجه) نسبت به رأس‌های نزدیک TIN قرینه می‌شوند و اگر قرینه در فاصلهٔ نهایی روی پای پرتگاه یا بالای آن بیفتد پذیرفته می‌شوند، تا زمینِ درست لبهٔ پرتگاه حفظ شود.</translation>
         </message>
         <message>
             <source>&lt;p&gt;Reference: Axelsson, P. (2000). &lt;cite&gt;DEM generation from laser scanner data using adaptive TIN models&lt;/cite&gt;. IAPRS XXXIII-B4, 110–117.&lt;/p&gt;</source>
             <translation>&lt;p&gt;مرجع: &lt;bdi dir="ltr"&gt;Axelsson, P. (2000). &lt;cite&gt;DEM generation from laser scanner data using adaptive TIN models&lt;/cite&gt;. IAPRS XXXIII-B4, 110–117.&lt;/bdi&gt;&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest trusted point of each parcel larger than the largest building seeds a TIN, which takes the candidates (the lowest point per candidate cell) close enough to its facets until none is added; every other point is ground when it lies close to the final TIN. Its mean total error on the 8 ISPRS samples is 5.83 % at the defaults (Axelsson published 4.82 % over all 15 samples): use the recommended ground filter unless you need a TIN filter.</source>
+            <translation>ابر نقطهٔ LAS/LAZ را به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) با متراکم‌سازی تدریجی TIN (Axelsson 2000) طبقه‌بندی می‌کند: پایین‌ترین نقطهٔ مطمئن هر قطعهٔ بزرگ‌تر از بزرگ‌ترین ساختمان بذر یک TIN می‌شود که نقاط نامزد (پایین‌ترین نقطهٔ هر سلول نامزد) را که به‌قدر کافی به وجه‌هایش نزدیک‌اند می‌پذیرد تا جایی که نقطه‌ای افزوده نشود؛ هر نقطهٔ دیگر اگر به TIN نهایی نزدیک باشد زمین است. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 5.83 % است (Axelsson روی هر 15 نمونه 4.82 % گزارش کرد): مگر به پالایهٔ TIN نیاز دارید، پالایهٔ زمین پیشنهادی را به کار ببرید.</translation>
+        </message>
+        <message>
+            <source>Larger than the largest building.</source>
+            <translation>بزرگ‌تر از بزرگ‌ترین ساختمان.</translation>
+        </message>
+        <message>
+            <source>A parcel's seed is its lowest point not more than the seed depth below this quantile of the parcel's lowest points per cell, so a cluster of low outliers never seeds the TIN.</source>
+            <translation>بذر هر قطعه پایین‌ترین نقطهٔ آن است که بیش از عمق بذر زیر این چندکِ پایین‌ترین نقاط سلول‌های قطعه نباشد، تا خوشه‌ای از نقاط پرت پایین هرگز بذر TIN نشود.</translation>
+        </message>
+        <message>
+            <source>See the seed quantile.</source>
+            <translation>چندک بذر را ببینید.</translation>
+        </message>
+        <message>
+            <source>The lowest point per cell of this size is a candidate of the TIN; every other point is classified by its distance to the final TIN (0 = every point).</source>
+            <translation>پایین‌ترین نقطهٔ هر سلول به این اندازه نامزد TIN است؛ هر نقطهٔ دیگر با فاصله‌اش تا TIN نهایی طبقه‌بندی می‌شود (0 = همهٔ نقاط).</translation>
+        </message>
+        <message>
+            <source>Seed quantile (%)</source>
+            <translation>چندک بذر (%)</translation>
+        </message>
+        <message>
+            <source>Seed depth (m)</source>
+            <translation>عمق بذر (متر)</translation>
+        </message>
+        <message>
+            <source>Candidate cell (m)</source>
+            <translation>سلول نامزد (متر)</translation>
         </message>
     </context>
     <context>

@@ -18,30 +18,30 @@ SAMPLES = ["samp11", "samp12", "samp22", "samp31", "samp41", "samp53", "samp54",
 
 #: 8 ISPRS samples at the defaults: sha1 of the uint8 classes and the total error (%) of
 #: the recommended filter (research harness /work/scratch/g3: tangent-plane hole fill,
-#: detrending, continuity growing; identical totals), then of PTD (research code
-#: /work/scratch/ground, before the port;
-#: re-measured with the cliff-aware mirroring: mean 8.07 %, 8.05 % before it).
+#: detrending, continuity growing; identical totals), then of PTD at its defaults (1 m
+#: candidate cells, 60 m parcels with trusted seeds, cached facet tests: mean 5.83 %;
+#: also through qgis_process, tests/cli/test_ptd_filter_cli.py).
 #: Low-outlier cells read at the ground-return scale under canopy (``_lowcells``):
 #: samp41 2.5732 -> 2.6089, samp53 3.1997 -> 3.2259, the other six identical. Hole
 #: fill k-NN searched within a short radius first (ties at the 12th neighbour resolve
 #: differently): samp11/12/22/53/61 move by -0.012..+0.004 (mean 3.368).
 RESEARCH = {
     "samp11": ("ba1f3c1b41aed0746d4d40affaaa48d0689685f6", 8.9134,
-               "6e1e87dada2ddc6ea5895aaca62e6fe77b8d4c67", 14.5909),
+               "6aaf341d3e0b4caf6dc7ee49f5c243fe09fa76b6", 14.7645),
     "samp12": ("9002d44cfe968fde0edac8893d03108155640d21", 2.7130,
-               "4cc2fe02320d4d310afb6adce9fdc41a369ba1ff", 5.8577),
+               "4c190f7e34b4d6f196656641a151a20d23b1a056", 2.9740),
     "samp22": ("970e36774cb3a3d30d08863fa80ea5777532a26e", 2.9047,
-               "da7b30150e55c0baee260839929777b1eefa5dc1", 18.7336),
+               "ad6fd3c1239102ff680f7283bde6dd7c9583f364", 6.9314),
     "samp31": ("15aa21b1fafc2d8bf20935d0c0a92f9955b5077b", 1.9507,
-               "c439440fbe06d5086c9999b50d9d0b06d6f3b611", 1.5834),
+               "85aef58e831486de589b5580e36eda33635e2b58", 1.4795),
     "samp41": ("abf075402a9f47f36a12fba27ea648dc61072bbc", 2.6089,
-               "648d274242335fa3e2063639819420dc130bf4a2", 9.5717),
+               "cdf42b5ac3ff21d63c9dd079bb63548c25b6046f", 2.1458),
     "samp53": ("ccc174b9bf89cc5ba3d45d6ae491e1aafdd46edb", 3.2143,
-               "00592f576252742637e12c6e37c938b4b54f79c5", 8.3862),
+               "06acb142e53e78594531febef92f51e4fd72e7dd", 11.4405),
     "samp54": ("248c73e81f64485518c6dc4aedcf506ae054b6fd", 2.6487,
-               "1580381cbe70109c2e69d6cbc8bcebb45a34a5ec", 3.1599),
+               "5f57175b81aa241d185e16429ec6d47aafa8fc30", 3.4503),
     "samp61": ("b739a6f1fadf3cf7999d9a25ff85ffe876b62e1d", 1.9909,
-               "3034dc3b1d9c0daed521475e0b524de41a4e1e39", 2.7153),
+               "5f0cae6fcf89ba97b9581379c1f36f540e868525", 3.4313),
 }
 
 
@@ -115,7 +115,10 @@ def test_ptd_accepted_ground_within_limits_of_final_tin(seed, n, tilt, n_obj, di
     nrm = np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0])
     nrm /= np.linalg.norm(nrm, axis=1)[:, None]
     d = np.abs(np.einsum("ij,ij->i", np.column_stack((x[g], y[g], z[g])) - v[:, 0], nrm))
-    assert np.all(d <= opt.final_distance + 1e-6)
+    # or in a facet spanning a breakline, where the cliff-aware test accepted it
+    cliff = (np.abs(nrm[:, 2]) < np.cos(np.radians(ptd.BREAKLINE_SLOPE))) \
+        & (np.ptp(v[:, :, 2], axis=1) > opt.max_distance)
+    assert np.all((d <= opt.final_distance + 1e-6) | cliff)
 
 
 @pytest.mark.parametrize("mod", [ptd, recommended])

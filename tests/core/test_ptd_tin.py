@@ -1,4 +1,4 @@
-"""PTD's exact fast point location (core/lidar/_tin.find_simplex) and bench_ground's PTD merge."""
+"""PTD's TIN and point location (core/lidar/_tin.Tin) and bench_ground's PTD merge."""
 from __future__ import annotations
 
 import sys
@@ -13,34 +13,52 @@ from geomatics_toolbox.core.lidar import _tin
 BENCH = Path(__file__).resolve().parents[2] / "benchmarks"
 
 
+def _inside(tin, f, q, tol=1e-9):
+    """Whether each point of ``q`` lies in (or on the boundary of) facet ``f``."""
+    v = tin.xy[tin.simplices[f]]
+    o = np.stack([(v[:, (i + 2) % 3, 0] - v[:, (i + 1) % 3, 0]) * (q[:, 1] - v[:, (i + 1) % 3, 1])
+                  - (v[:, (i + 2) % 3, 1] - v[:, (i + 1) % 3, 1]) * (q[:, 0] - v[:, (i + 1) % 3, 0])
+                  for i in range(3)], axis=1)
+    return (o >= -tol).all(axis=1)
+
+
 @pytest.mark.parametrize("seed", [0, 1, 2])
-def test_find_simplex_equals_scipy_in_original_order_on_a_lattice(seed):
-    """Lattice points (like ISPRS: y on 0.5 m, x on 6 cm) put many queries on edges,
-    vertices and outside the hull, where scipy's answer depends on the query order."""
+def test_locate_finds_a_facet_holding_every_point_on_a_lattice(seed):
+    """Lattice points (like ISPRS: y on 0.5 m, x on 6 cm) put many queries on edges and
+    vertices: the walk returns a facet holding the point, scipy's own where that is
+    unique; points outside the hull get a hull facet."""
     rng = np.random.default_rng(seed)
     pts = np.column_stack((rng.integers(0, 400, 3000) * 0.06, rng.integers(0, 60, 3000) * 0.5))
     pts = np.unique(pts, axis=0)
+    tin = _tin.Tin(pts[:, 0], pts[:, 1], rng.normal(size=pts.shape[0]))
     tri = Delaunay(pts, qhull_options="Qbb Qc Qz Q12")
     q = np.column_stack((rng.integers(-20, 420, 20000) * 0.06,
                          rng.integers(-4, 64, 20000) * 0.25))
     q = np.r_[q, pts[rng.integers(0, pts.shape[0], 2000)]]      # on vertices too
-    q = q[rng.permutation(q.shape[0])]
     ref = tri.find_simplex(q)
-    got = _tin.find_simplex(tri, q)
-    on_edge = ~_tin._clear_inside(tri, q, ref, 1e-9)
-    assert on_edge.sum() > 1000 and (ref < 0).sum() > 100       # the hard cases occur
-    assert np.array_equal(got, ref)
-    # a different query order gives scipy another answer for some edge points
-    perm = _tin.z_order(q[:, 0], q[:, 1])
-    assert not np.array_equal(tri.find_simplex(q[perm]), ref[perm])
+    for start in (None, rng.integers(0, tin.simplices.shape[0], q.shape[0])):
+        f = tin.locate(q[:, 0], q[:, 1], start)
+        inside = ref >= 0
+        assert _inside(tin, f[inside], q[inside]).all()
+        # Qhull's facets in Qhull's order: where the point is strictly inside, same facet
+        strict = inside & _inside(tin, ref.clip(0), q, tol=-1e-9)
+        assert strict.sum() > 5000
+        assert np.array_equal(f[strict], ref[strict])
+        assert np.all(tin.neighbors[f[~inside]].min(axis=1) == -1)     # hull facets
 
 
-def test_locate_outside_points_get_nearest_centroid():
-    tri = Delaunay(np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]))
-    s = _tin.locate(tri, np.array([0.9, 5.0]), np.array([0.8, 5.0]))
-    cen = tri.points[tri.simplices].mean(axis=1)
-    assert s[1] == np.argmin(np.hypot(*(cen - [5.0, 5.0]).T))
-    assert s[0] == tri.find_simplex([[0.9, 0.8]])[0]
+def test_tin_facets_counter_clockwise_with_upward_normals():
+    rng = np.random.default_rng(4)
+    x, y = rng.uniform(0, 50, 400), rng.uniform(0, 50, 400)
+    tin = _tin.Tin(x, y, 0.3 * x - 0.1 * y)
+    c = tin.corners
+    area = ((c[:, 1, 0] - c[:, 0, 0]) * (c[:, 2, 1] - c[:, 0, 1])
+            - (c[:, 1, 1] - c[:, 0, 1]) * (c[:, 2, 0] - c[:, 0, 0]))
+    assert (area > 0).all()
+    assert np.allclose(tin.normal, np.array([-0.3, 0.1, 1.0]) / np.sqrt(1.1))
+    d, dz, ang, f = tin.distances(np.array([10.0]), np.array([20.0]), np.array([3.0]))
+    assert dz[0] == pytest.approx(3.0 - (3.0 - 2.0)) and d[0] == pytest.approx(2.0 / np.sqrt(1.1))
+    assert np.all(tin.neighbors[tin.neighbors >= 0] < tin.simplices.shape[0])
 
 
 def _bench():

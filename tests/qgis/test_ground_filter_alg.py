@@ -55,10 +55,11 @@ def test_defaults_classify_and_keep_everything_else(qgis_processing, tile, tmp_p
     assert set(np.unique(cls[~kept])) <= {1, 2, 7}
     assert res["N_GROUND"] == np.count_nonzero(cls == 2) > 0
     assert res["N_NOISE"] == np.count_nonzero(cls == 7)
-    if alg == REC:   # no pre-filter by default: exactly the core function's classes
-        x, y, z = (np.asarray(v, float)[~kept] for v in (a.x, a.y, a.z))
-        assert np.array_equal(cls[~kept], recommended.classify(x, y, z))
-    else:
+    # no pre-filter by default: exactly the core function's classes at its defaults
+    x, y, z = (np.asarray(v, float)[~kept] for v in (a.x, a.y, a.z))
+    core = recommended if alg == REC else ptd
+    assert np.array_equal(cls[~kept], core.classify(x, y, z))
+    if alg == PTD:
         assert ptd.TITLE in html.read_text(encoding="utf-8")
     assert fb.seen and fb.seen[-1] == pytest.approx(100.0)
     assert fb.seen == sorted(fb.seen)
