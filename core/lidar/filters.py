@@ -38,6 +38,7 @@ import numpy as np
 from ..progress import Monitor
 from ._filter import FilterOutcome, GroundFilter, KeepFilter, check_classes
 from ._selection import Selection, SelectionOptions, assemble_classes, select_points
+from .ptd import NOISE_PREFILTER as _PTD_NOISE
 
 __all__ = ["FilterSpec", "GROUND_FILTERS", "RECOMMENDED_FILTER", "register_ground_filter",
            "ground_filter", "default_ground_filter", "default_selection", "classify_points",
@@ -221,4 +222,5 @@ register_ground_filter("slope_adaptive", "Slope filter (terrain-adaptive)",
 register_ground_filter(RECOMMENDED_FILTER, "Ground filter (recommended)", _recommended,
                        selection=_NO_PREFILTER, algorithm="groundfilter", tiling=True)
 register_ground_filter("ptd", "Ground filter (progressive TIN densification)", _ptd,
-                       algorithm="ptdgroundfilter", tiling=True)
+                       selection=SelectionOptions(noise=_PTD_NOISE), algorithm="ptdgroundfilter",
+                       tiling=True)

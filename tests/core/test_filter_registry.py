@@ -38,7 +38,7 @@ ORIGIN = (500_000.0, 4_000_000.0)
 BUFFER = 120.0
 #: share of the inner points allowed to differ (see the module docstring); 0 = identical
 NEAR = {"groundfilter": 0.001, "ptd": 0.002}
-#: point density per filter: PTD (4,800 points/s) on a sparser cloud
+#: point density per filter: PTD on a sparser cloud
 DENSITY = {"ptd": 0.1}
 
 
