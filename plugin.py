@@ -47,19 +47,24 @@ def missing_packages_text(missing) -> str:
     """One translated sentence naming the missing packages and what needs them."""
     lidar = [r.name for r in missing if r.group == "lidar"]
     catalog = [r.name for r in missing if r.group != "lidar"]
+    try:
+        rtl = user_locale() in ("ar", "fa")
+    except Exception:  # noqa: BLE001 - punctuation only
+        rtl = False
+    comma, semicolon = ("، ", "؛ ") if rtl else (", ", "; ")
     parts = []
     if lidar:
         parts.append(QCoreApplication.translate(
             "GeomaticsToolboxPlugin", "{packages} for the LiDAR algorithms").format(
-                packages=", ".join(lidar)))
+                packages=comma.join(lidar)))
     if catalog:
         parts.append(QCoreApplication.translate(
             "GeomaticsToolboxPlugin", "{packages} for the tile catalog").format(
-                packages=", ".join(catalog)))
+                packages=comma.join(catalog)))
     return QCoreApplication.translate(
         "GeomaticsToolboxPlugin", "QGIS's Python lacks Python packages this toolbox "
         "needs: {missing}. The other algorithms work without them.").format(
-            missing="; ".join(parts))
+            missing=semicolon.join(parts))
 
 
 class GeomaticsToolboxPlugin:

@@ -71,6 +71,7 @@ def test_desktop_start_shows_the_missing_packages(tmp_path):
     assert len(res["items"]) == 1, res["items"]
     item = res["items"][0]
     assert item["title"] == "صندوق أدوات الجيوماتكس"
-    assert "laspy, lazrs" in item["text"] and "dask, distributed" in item["text"]
+    assert "laspy، lazrs" in item["text"] and "dask، distributed" in item["text"]
+    assert "؛ " in item["text"]                # Arabic punctuation between the groups
     assert "ليدار" in item["text"] and "فهرس البلاطات" in item["text"]
     assert item["buttons"] == ["ثبّتها…"]
