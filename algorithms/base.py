@@ -94,6 +94,8 @@ GROUPS = tuple(_groups())
 
 #: File filter of LAS/LAZ inputs given as files.
 LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
+#: file filter of a classified-cloud output (the one definition; imported by the algorithms)
+LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
 _LAS_EXTENSIONS = (".las", ".laz")
 
 

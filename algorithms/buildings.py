@@ -11,9 +11,8 @@ from qgis.core import (
 from ..core.errors import InputError
 from ..core.io.points import parse_classes
 from ..core.lidar.buildings_file import BuildingOutputs, buildings_file
-from .base import GeomaticsAlgorithm
+from .base import LAS_IN_FILTER, GeomaticsAlgorithm
 from .helptext import build_help
-from .terrain import LAS_FILTER
 
 CITYJSON_FILTER = "CityJSON (*.city.json *.json)"
 OBJ_FILTER = "Wavefront OBJ (*.obj)"
@@ -97,7 +96,7 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
                                                          self.tr("Building footprints")))
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_CLOUD, self.tr("Classified cloud (class 6 = building)"),
-            LAS_FILTER, optional=True, createByDefault=False))
+            LAS_IN_FILTER, optional=True, createByDefault=False))
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_CITYJSON, self.tr("3D city model (CityJSON, LOD1 and LOD2)"),
             CITYJSON_FILTER, optional=True, createByDefault=False))

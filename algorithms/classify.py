@@ -9,10 +9,8 @@ from qgis.core import (
 )
 
 from ..core.lidar import classify as core_c
-from .base import GeomaticsAlgorithm
+from .base import LAS_OUT_FILTER, GeomaticsAlgorithm
 from .helptext import build_help
-
-LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
 
 
 class ClassifyAlgorithm(GeomaticsAlgorithm):

@@ -11,13 +11,8 @@ from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 from ..core.io.las import write_las_like
 from ..core.lidar import accuracy as core_fa
 from ..core.progress import Cancelled
-from .base import GeomaticsAlgorithm
+from .base import LAS_OUT_FILTER, GeomaticsAlgorithm
 from .helptext import build_help
-
-LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
-LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
-
-
 
 
 class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):

@@ -14,11 +14,9 @@ from ..core.lidar import ptd as core_ptd
 from ..core.lidar import recommended as core_rec
 from ..core.lidar.filters import ground_filter
 from ..core.lidar.pipeline import SelectionOptions
+from .base import LAS_OUT_FILTER
 from .helptext import build_help
 from .lidar_common import LidarFilterMixin
-
-LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
-LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
 
 
 class _GroundCommon(LidarFilterMixin):

@@ -45,12 +45,10 @@ from ..core.terrain import dtm as core_dtm
 from ..core.terrain import idw as core_idw
 from ..core.terrain import report as terrain_report
 from ..core.terrain.grid import grid_from_points
-from .base import GeomaticsAlgorithm
+from .base import LAS_OUT_FILTER, GeomaticsAlgorithm
 from .dtm_accuracy import NUMBERS, CheckPointInputs, DtmAccuracyAlgorithm
 from .helptext import build_help
 from .terrain import _check_tif, _crs_string
-
-LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
 
 
 def ground_filter():

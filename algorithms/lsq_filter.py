@@ -15,11 +15,10 @@ from ..core.lidar import lsq as core_lsq
 from ..core.lidar.filters import default_selection, ground_filter
 from ..core.lidar.pipeline import classify_file
 from ..core.progress import Monitor
+from .base import LAS_OUT_FILTER
 from .helptext import build_help
 from .lidar_common import LidarFilterMixin
 
-LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
-LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
 MODE_KEYS = ["faithful", "improved"]
 SPARSE_KEYS = ["borrow", "unclassified"]
 REJECTION_KEYS = ["reweighted", "cumulative"]

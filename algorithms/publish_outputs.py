@@ -14,10 +14,8 @@ from qgis.core import (
 )
 
 from ..core.io.publish import publish_files
-from .base import GeomaticsAlgorithm
+from .base import LAS_OUT_FILTER, GeomaticsAlgorithm
 from .helptext import build_help
-
-LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
 
 
 class PublishOutputsAlgorithm(GeomaticsAlgorithm):

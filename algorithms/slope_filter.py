@@ -15,11 +15,10 @@ from ..core.lidar import slope as core_sf
 from ..core.lidar.filters import ground_filter
 from ..core.lidar.pipeline import SelectionOptions
 from ..core.lidar.sweep import sweep_file
+from .base import LAS_OUT_FILTER
 from .helptext import build_help
 from .lidar_common import LidarFilterMixin
 
-LAS_IN_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
-LAS_OUT_FILTER = "LAZ point cloud (*.laz);;LAS point cloud (*.las)"
 RETURN_KEYS = list(core_sp.RETURNS)            # all, last
 MODE_KEYS = list(core_sf.MODES)                # exact, adaptive
 METRIC_KEYS = ["total", "kappa", "type1", "type2"]

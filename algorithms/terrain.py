@@ -42,7 +42,6 @@ from .base import GeomaticsAlgorithm
 from .helptext import build_help
 
 NAN = float("nan")
-LAS_FILTER = "LAS/LAZ point clouds (*.las *.laz *.LAS *.LAZ)"
 
 
 

@@ -37,7 +37,7 @@ from .filters import (
 GROUND = 2
 __all__ = ["GROUND_FILTERS", "RECOMMENDED_FILTER", "DTM_METHODS", "register_ground_filter",
            "register_dtm_method", "default_ground_filter", "chunk_dtm", "ChunkTask",
-           "process_chunk", "read_chunk", "filter_chunk", "snap_grid", "is_done",
+           "process_chunk", "read_chunk", "read_strip", "filter_chunk", "snap_grid", "is_done",
            "neighbour_paths"]
 
 
@@ -83,6 +83,7 @@ class ChunkTask:
     cost: float = 0.0                                         # estimated points read
     outputs: Dict[str, str] = field(default_factory=dict)   # LAS, DTM, DONE
     fail_once: bool = False                                   # tests: first attempt fails
+    strip_shares: List[float] = field(default_factory=list)  # 1 / consumers per strip
 
     @property
     def neighbours(self) -> List[str]:
@@ -169,9 +170,44 @@ class PhaseClock:
         self._t = now
 
 
-def _read_tile_mode(task: ChunkTask):
-    own = read_las(task.tile, ("classification",))
-    nb, _ = read_box(task.neighbours, task.buffered_box(), ("classification",))
+def read_strip(tile: str, boxes, dims=("classification",)) -> dict:
+    """Points of ``tile`` inside any of ``boxes`` (its neighbours' buffered boxes).
+
+    One decode of the tile serves every neighbour (a chunk no longer decodes its
+    neighbours whole); ``phases`` holds the wall and CPU seconds of the read.
+    """
+    clock = PhaseClock()
+    pd = read_las(tile, dims)
+    keep = np.zeros(len(pd), bool)
+    for x0, y0, x1, y1 in boxes:
+        keep |= (pd.x >= x0) & (pd.x <= x1) & (pd.y >= y0) & (pd.y <= y1)
+    out = {"x": pd.x[keep], "y": pd.y[keep], "z": pd.z[keep]}
+    out.update({n: pd[n][keep] for n in dims})
+    clock.lap("strip")
+    out["phases"] = clock.phases
+    return out
+
+
+def _from_strips(strips, box):
+    """Return the points of the neighbours' strips inside the buffered ``box``."""
+    parts = []
+    for st in strips:
+        m = (st["x"] >= box[0]) & (st["x"] <= box[2]) & (st["y"] >= box[1]) & \
+            (st["y"] <= box[3])
+        parts.append({k: v[m] for k, v in st.items() if k != "phases"})
+    if not parts:
+        return PointData(np.empty(0), np.empty(0), np.empty(0),
+                         {"classification": np.empty(0, np.uint8)})
+    cat = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
+    return PointData(cat.pop("x"), cat.pop("y"), cat.pop("z"), cat)
+
+
+def _read_tile_mode(task: ChunkTask, strips=None):
+    own = read_las(task.tile, ("classification",), keep_records=True)
+    if strips is None:
+        nb, _ = read_box(task.neighbours, task.buffered_box(), ("classification",))
+    else:
+        nb = _from_strips(strips, task.buffered_box())
     x = np.concatenate([own.x, nb.x])
     y = np.concatenate([own.y, nb.y])
     z = np.concatenate([own.z, nb.z])
@@ -179,7 +215,7 @@ def _read_tile_mode(task: ChunkTask):
                           nb.dims.get("classification", np.empty(0, np.uint8))])
     core = np.zeros(x.size, bool)
     core[:len(own)] = True
-    return (x, y, z), {"classification": cls}, core
+    return (x, y, z), {"classification": cls}, core, own.records
 
 
 def _read_box_mode(task: ChunkTask):
@@ -193,7 +229,14 @@ def _read_box_mode(task: ChunkTask):
 
 def read_chunk(task: ChunkTask):
     """Read the chunk and its buffer: ``(x, y, z), dims, core`` (core = points owned)."""
-    return _read_tile_mode(task) if task.tile else _read_box_mode(task)
+    return _read(task)[:3]
+
+
+def _read(task: ChunkTask, strips=None):
+    """``read_chunk`` plus the decoded records of the chunk's own tile (tile mode)."""
+    if task.tile:
+        return _read_tile_mode(task, strips)
+    return (*_read_box_mode(task), None)
 
 
 def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
@@ -210,11 +253,12 @@ def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
                            default_selection(task.ground_filter), origin=task.origin)
 
 
-def _write_outputs(task: ChunkTask, xyz, dims, core, cls, dtm, grid) -> None:
+def _write_outputs(task: ChunkTask, xyz, dims, core, cls, dtm, grid, records=None) -> None:
     outputs = {k: task.outputs[k] for k in ("LAS", "DTM")}
     with OutputContract(outputs, inputs={"TILES": list(task.sources)}) as out:
         if task.tile:
-            write_las_like(task.tile, out.path("LAS"), dimensions={"classification": cls[core]})
+            write_las_like(task.tile, out.path("LAS"), dimensions={"classification": cls[core]},
+                           records=records)
         else:
             fmt = task.las_format
             new = {n: v[core] for n, v in dims.items()}
@@ -225,17 +269,21 @@ def _write_outputs(task: ChunkTask, xyz, dims, core, cls, dtm, grid) -> None:
         write_geotiff(out.path("DTM"), dtm, geotransform=grid.geotransform, crs=task.crs)
 
 
-def process_chunk(task: ChunkTask) -> dict:
+def process_chunk(task: ChunkTask, *strips) -> dict:
     """Process one chunk end to end; returns its stats (also stored in the done marker).
 
-    The stats carry wall and CPU seconds per phase (read, filter, dtm, write) so the
-    benchmark can separate the parallel work from the serial part of a run.
+    ``strips`` (tile mode): the neighbours' :func:`read_strip` results, so the chunk
+    decodes only its own tile, once (its classified copy is written from those
+    records); without them the neighbours' points are streamed from their files. The
+    stats carry wall and CPU seconds per phase (read, filter, dtm, write; ``strips``:
+    this chunk's share of its neighbours' strip reads) so the benchmark can separate the
+    parallel work from the serial part of a run.
     """
     single_threaded()
     clock = PhaseClock()
     if task.fail_once:
         _fail_first_attempt(task)
-    xyz, dims, core = read_chunk(task)
+    xyz, dims, core, records = _read(task, strips if task.tile and strips else None)
     clock.lap("read")
     n_own = int(core.sum())
     stats = dict(key=task.key, points=n_own, buffer_points=int(core.size - n_own),
@@ -248,10 +296,13 @@ def process_chunk(task: ChunkTask) -> dict:
         dtm = chunk_dtm(task.dtm_method, xyz[0][g], xyz[1][g], xyz[2][g], grid,
                         task.max_distance)
         clock.lap("dtm")
-        _write_outputs(task, xyz, dims, core, cls, dtm, grid)
+        _write_outputs(task, xyz, dims, core, cls, dtm, grid, records)
         clock.lap("write")
         stats.update(status="done", ground=int(np.count_nonzero(cls[core] == GROUND)))
     ph = clock.phases
+    if strips and task.strip_shares:
+        ph["strips"] = [sum(st["phases"]["strip"][i] * share for st, share in
+                            zip(strips, task.strip_shares)) for i in (0, 1)]
     stats.update(phases=ph, seconds=sum(v[0] for v in ph.values()),
                  cpu_seconds=sum(v[1] for v in ph.values()), worker=_worker_name(),
                  peak_rss_mb=peak_rss_mb())

@@ -32,10 +32,10 @@ import numpy as np
 from ..coords import REPROJECT_HINT, crs_is_geographic
 from ..errors import InputError
 from ..io.catalog import build_vrt, find_tiles, index_tiles
-from ..io.contract import OutputContract, check_paths, remove_temp
+from ..io.contract import OutputContract, check_paths
 from ..io.crs import crs_label, same_crs
 from ..io.las import LasInfo
-from ..progress import Cancelled, Monitor
+from ..progress import Cancelled, Monitor  # noqa: F401 - callers catch catalog.Cancelled
 from ..terrain.grid import check_grid_size
 from ._chunks import (
     DTM_METHODS,
@@ -45,17 +45,24 @@ from ._chunks import (
     default_ground_filter,
     is_done,
     neighbour_paths,
-    process_chunk,
     register_dtm_method,
     register_ground_filter,
 )
-from ._workers import SINGLE_THREAD_ENV, start_local_workers
+from ._dask_run import QUIET, _client, _collect, _run_dask, _sweep_temps  # noqa: F401
 
 __all__ = ["Catalog", "CatalogResult", "run_catalog", "GROUND_FILTERS", "DTM_METHODS",
            "register_ground_filter", "register_dtm_method", "default_ground_filter",
            "plan_tasks"]
 
 STATE_DIR = ".catalog"
+
+
+def _test_fail_once() -> set:
+    """Return the chunk keys whose first attempt fails on purpose (a test hook).
+
+    Tests of the retry set GEOMATICS_TEST_FAIL_ONCE (comma-separated keys); never in use.
+    """
+    return {k for k in os.environ.get("GEOMATICS_TEST_FAIL_ONCE", "").split(",") if k}
 
 
 # ============================================================================ catalog
@@ -468,42 +475,6 @@ class CatalogResult:
         return out
 
 
-# The local scheduler runs in this (the client) process and the nannies in the workers'
-# child process (`_workers.py`), next to the
-# workers on the same cores: their periodic callbacks (event-loop tick every 20 ms,
-# system monitor every 0.5 s, nanny memory monitor every 0.1 s, work stealing every
-# 0.1 s) cost 23 ms of CPU per second of run, measured; with these 7 ms. One chunk per
-# task and largest-first submission leave nothing for work stealing to improve.
-QUIET = {"distributed.admin.tick.interval": "1s",
-         "distributed.admin.system-monitor.interval": "5s",
-         "distributed.worker.memory.monitor-interval": "1s",
-         "distributed.scheduler.work-stealing": False}
-
-
-def _client(workers: int, scheduler: str, memory_limit):
-    try:
-        from distributed import Client
-    except ImportError as exc:  # pragma: no cover - install problem
-        raise InputError("The Python packages dask and distributed cannot be imported "
-                         "({exc}); run 'Install the Python packages this toolbox needs' "
-                         "(geomatics:installdependencies).", exc=exc) from exc
-    if scheduler:
-        try:
-            return Client(scheduler, timeout="20s"), None
-        except (OSError, TimeoutError) as exc:
-            raise InputError("Cannot reach the Dask scheduler {scheduler} ({exc}); start "
-                             "it with 'dask scheduler' or leave SCHEDULER empty.",
-                             scheduler=scheduler,
-                             exc=exc) from exc
-    import dask
-    environ = dict(dask.config.get("distributed.nanny.pre-spawn-environ", {}) or {})
-    environ.update(SINGLE_THREAD_ENV)    # one worker = one core (see single_threaded)
-    config = {"distributed.nanny.pre-spawn-environ": environ, **QUIET}
-    with dask.config.set(config):
-        workers_ = start_local_workers(workers, memory_limit=memory_limit, config=config)
-        return Client(workers_.cluster), workers_
-
-
 def finished_chunks(out_folder) -> List[str]:
     """Keys of the chunks whose done marker is in ``out_folder`` (kept for a resume)."""
     state = Path(out_folder) / STATE_DIR
@@ -512,67 +483,12 @@ def finished_chunks(out_folder) -> List[str]:
         if state.is_dir() else []
 
 
-def _pkg_name() -> str:
-    return __name__.split(".")[0]
-
-
-def _collect(futures: dict, mon: Monitor, n_total: int, done_before: int, failed: dict,
-             on_chunk=None):
-    """Wait for the chunk futures; cancel stops scheduling.
-
-    Progress per chunk, and ``on_chunk(stats)``: the stats of each finished chunk or
-    ``{"key", "status": "failed", "error"}``.
-    """
-    pending = set(futures)
-    results = []
-    while pending:
-        if mon.cancelled():
-            for f in pending:
-                f.cancel()
-            raise Cancelled()
-        finished, pending = _wait_pending(list(pending))
-        pending = set(pending)
-        for f in finished:
-            key = futures[f]
-            if f.status == "finished":
-                results.append(f.result())
-                event = results[-1]
-            else:
-                exc = f.exception()
-                failed[key] = f"{type(exc).__name__}: {exc}"
-                event = {"key": key, "status": "failed", "error": failed[key]}
-            if on_chunk is not None:
-                on_chunk(event)
-            mon.update((done_before + len(results) + len(failed)) / max(n_total, 1))
-    return results
-
-
-def _wait_pending(futures, timeout: float = 0.5):
-    from distributed import wait
-    try:
-        return wait(futures, timeout=timeout, return_when="FIRST_COMPLETED")
-    except TimeoutError:
-        return set(), set(futures)
-
-
-def _sweep_temps(folder: Path, tasks: Sequence[ChunkTask]) -> None:
-    """Remove unfinished chunk outputs (contract temporaries) left by cancelled chunks."""
-    for t in tasks:
-        for k in ("LAS", "DTM"):
-            final = Path(t.outputs[k])
-            for tmp in final.parent.glob(f".{final.stem}.part-*"):
-                remove_temp(tmp)
-        attempted = Path(t.outputs["DONE"] + ".attempted")
-        if attempted.exists():
-            attempted.unlink()
-
-
 def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
                 dtm_method: str = "idw", cell_size: float = 1.0, buffer: float = 100.0,
                 chunk_size: float = 0.0, workers: Optional[int] = None,
                 scheduler: str = "", cog: bool = False,
                 origin=None, max_distance: Optional[float] = None,
-                memory_limit="auto", fail_once: Sequence[str] = (),
+                memory_limit="auto",
                 on_chunk=None, progress=None, cancel=None) -> CatalogResult:
     """Process a tile catalog chunk by chunk on Dask (see the module docstring).
 
@@ -604,8 +520,6 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
         Global lattice origin (default: the catalog's lower-left corner floored to km).
     max_distance : float, optional
         DTM gap distance (m); default :meth:`Catalog.default_max_distance`.
-    fail_once : sequence of str
-        Tile stems whose first attempt raises (tests of the retry).
     on_chunk : callable, optional
         Called with the stats dict of every chunk as it finishes (``key``, ``status``
         'done'/'empty'/'failed', ``points``, ``seconds``, ``error``), and of every chunk
@@ -638,7 +552,7 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     previous = {t.key: is_done(t) for t in tasks}
     todo = [t for t in tasks if previous[t.key] is None]
     for t in todo:
-        t.fail_once = t.key in set(fail_once)
+        t.fail_once = t.key in _test_fail_once()
     nw = int(workers or os.cpu_count() or 1)
     chunks = [s for s in previous.values() if s is not None]
     failed: Dict[str, str] = {}
@@ -682,37 +596,3 @@ def _mosaic(cat, folder: Path, tasks, failed, chunks, cog: bool):
     with OutputContract({"VRT": vrt, "COG": cog_path}, inputs={"TILES": cat.paths}) as out:
         build_vrt(out.path("VRT"), rasters, cog_path=out.path("COG") if cog else None)
     return vrt, cog_path
-
-
-def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, failed,
-              clock, on_chunk=None):
-    client, cluster = _client(nw, scheduler, memory_limit)
-    clock.lap("cluster start")
-    try:
-        # largest chunks first (longest-processing-time order): the last chunk to
-        # finish is a small one, so workers idle less at the end of the run. Submitted
-        # in that order too: idle workers take the first tasks as they arrive.
-        order = sorted(todo, key=lambda t: -t.cost)
-        futures = {client.submit(process_chunk, t, key=f"chunk-{t.key}-{time.time_ns()}",
-                                 retries=1, pure=False, priority=int(t.cost)): t.key
-                   for t in order}
-        results = _collect(futures, mon, len(tasks), n_before, failed, on_chunk)
-        clock.lap("compute")
-        return results
-    except BaseException:
-        client.close()
-        if cluster is not None:
-            cluster.close()
-        client = cluster = None
-        _sweep_temps(folder, todo)
-        raise
-    finally:
-        if client is not None:
-            client.close()
-        if cluster is not None:
-            cluster.close()
-        clock.lap("cluster close")
-        for t in todo:
-            flag = Path(t.outputs["DONE"] + ".attempted")
-            if flag.exists():
-                flag.unlink()
