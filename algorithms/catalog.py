@@ -37,6 +37,7 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
     WORKERS = "WORKERS"
     SCHEDULER = "SCHEDULER"
     COG = "COG"
+    SKIP_UNREADABLE = "SKIP_UNREADABLE"
     OUTPUT_FOLDER = "OUTPUT_FOLDER"
     OUTPUT_HTML = "OUTPUT_HTML"
     OUTPUT_VRT = "OUTPUT_VRT"
@@ -85,6 +86,11 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                                       "the cell size) cuts the catalog into squares "
                                       "read from the tiles they overlap."),
              self.SCHEDULER: self.tr("e.g. tcp://host:8786."),
+             self.SKIP_UNREADABLE: self.tr("Off: a damaged or truncated tile stops the run "
+                                           "before anything is written, naming every such "
+                                           "tile. On: those tiles are left out (named in "
+                                           "the log) and their neighbours get no buffer "
+                                           "points from them."),
              self.OUTPUT_FOLDER: self.tr("Must not hold the input tiles; receives the "
                                          "classified tiles, one DTM per tile and a VRT "
                                          "mosaic."),
@@ -120,6 +126,8 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
             optional=True), advanced=True)
         self.add(QgsProcessingParameterBoolean(
             self.COG, self.tr("Also write one Cloud-Optimized GeoTIFF"), False))
+        self.add(QgsProcessingParameterBoolean(
+            self.SKIP_UNREADABLE, self.tr("Skip unreadable tiles"), False), advanced=True)
         self.add_report_language()
         self.add(QgsProcessingParameterFolderDestination(
             self.OUTPUT_FOLDER, self.tr("Output folder")))
@@ -169,7 +177,12 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
         dkey = list(core_cat.DTM_METHODS)[
             self.parameterAsEnum(parameters, self.DTM_METHOD, context)]
         workers = self.parameterAsInt(parameters, self.WORKERS, context)
-        cat = core_cat.Catalog.open(source)
+        cat = core_cat.Catalog.open(
+            source, skip_unreadable=self.parameterAsBool(parameters, self.SKIP_UNREADABLE,
+                                                         context))
+        for path, reason in cat.unreadable.items():
+            feedback.reportError(self.tr("Tile {path} skipped: {reason}").format(
+                path=path, reason=reason), False)
         done = []
         with self.output_contract(parameters, context, [self.OUTPUT_HTML],
                                   inputs={"INPUT": cat.paths}) as out:

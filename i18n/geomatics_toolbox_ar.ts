@@ -397,6 +397,18 @@
             <source>Ground filter (progressive TIN densification)</source>
             <translation>مرشح الأرض (التكثيف التدريجي لشبكة TIN)</translation>
         </message>
+        <message>
+            <source>Off: a damaged or truncated tile stops the run before anything is written, naming every such tile. On: those tiles are left out (named in the log) and their neighbours get no buffer points from them.</source>
+            <translation>معطّل: توقف أي بلاطة تالفة أو مبتورة التشغيل قبل كتابة أي شيء، مع تسمية كل بلاطة من هذا النوع. مفعّل: تُستبعد تلك البلاطات (وتُذكر في السجل) ولا تحصل جاراتها على نقاط حافة منها.</translation>
+        </message>
+        <message>
+            <source>Skip unreadable tiles</source>
+            <translation>تخطّي البلاطات غير المقروءة</translation>
+        </message>
+        <message>
+            <source>Tile {path} skipped: {reason}</source>
+            <translation>تم تخطّي البلاطة {path}: {reason}</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>

@@ -397,6 +397,18 @@
             <source>Cancelled by the user. {n} finished tile(s) are kept in {folder}: run again with the same settings to resume; unfinished tiles left nothing.</source>
             <translation>کاربر لغو کرد. {n} کاشیِ تمام‌شده در {folder} نگه داشته شد: برای ادامه با همان تنظیمات دوباره اجرا کنید؛ کاشی‌های ناتمام چیزی به جا نگذاشتند.</translation>
         </message>
+        <message>
+            <source>Off: a damaged or truncated tile stops the run before anything is written, naming every such tile. On: those tiles are left out (named in the log) and their neighbours get no buffer points from them.</source>
+            <translation>خاموش: هر کاشی آسیب‌دیده یا ناقص پیش از نوشتن هر چیزی اجرا را متوقف می‌کند و همهٔ این کاشی‌ها را نام می‌برد. روشن: آن کاشی‌ها کنار گذاشته می‌شوند (در گزارش کار نام برده می‌شوند) و همسایه‌هایشان از آن‌ها نقطهٔ حاشیه نمی‌گیرند.</translation>
+        </message>
+        <message>
+            <source>Skip unreadable tiles</source>
+            <translation>رد شدن از کاشی‌های ناخوانا</translation>
+        </message>
+        <message>
+            <source>Tile {path} skipped: {reason}</source>
+            <translation>از کاشی {path} گذشته شد: {reason}</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>

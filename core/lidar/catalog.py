@@ -31,10 +31,10 @@ import numpy as np
 
 from ..coords import REPROJECT_HINT, crs_is_geographic
 from ..errors import InputError
-from ..io.catalog import build_vrt, find_tiles, index_tiles
+from ..io.catalog import build_vrt, find_tiles
 from ..io.contract import OutputContract, check_paths
 from ..io.crs import crs_label, same_crs
-from ..io.las import LasInfo
+from ..io.las import LasInfo, las_info
 from ..progress import Cancelled, Monitor  # noqa: F401 - callers catch catalog.Cancelled
 from ..terrain.grid import check_grid_size
 from ._chunks import (
@@ -83,17 +83,36 @@ class Catalog:
     tiles: List[LasInfo]
     bounds: np.ndarray
     crs: Optional[str]
+    #: Tiles left out because they cannot be read (``skip_unreadable``): path -> reason.
+    unreadable: Dict[str, str] = field(default_factory=dict)
 
     @classmethod
-    def open(cls, source) -> Catalog:
+    def open(cls, source, *, skip_unreadable: bool = False) -> Catalog:
         """Index ``source`` (folder, glob, list or ``.vpc``) from the headers only.
+
+        Every header is read and checked (:func:`~..io.las.check_las_file`) before
+        anything runs. Unreadable tiles (damaged, truncated, lying headers) are all
+        named in one refusal; with ``skip_unreadable`` they are left out instead
+        (:attr:`unreadable`) and their neighbours' buffers simply lack their points.
 
         Raises
         ------
         InputError
-            No tile, an unreadable tile, an empty tile or tiles in different CRSs.
+            No tile, unreadable tiles, an empty tile or tiles in different CRSs.
         """
-        infos = index_tiles(find_tiles(source))
+        infos, unreadable = [], {}
+        for path in find_tiles(source):
+            try:
+                infos.append(las_info(path))
+            except ValueError as exc:           # InputError included: keep its text
+                unreadable[path] = str(exc)
+        if unreadable and (not skip_unreadable or not infos):
+            listing = "; ".join(f"{os.path.basename(p)}: {r}"
+                                for p, r in list(unreadable.items())[:4])
+            raise InputError("{n} tile(s) cannot be read ({listing}). Repair or remove them, "
+                             "or let the catalog skip unreadable tiles (SKIP_UNREADABLE; "
+                             "their neighbours then get no buffer points from them).",
+                             n=len(unreadable), listing=listing)
         empty = [t.path for t in infos if t.count == 0]
         if empty:
             raise InputError("Tile(s) without points: {tiles}; remove them "
@@ -108,7 +127,7 @@ class Catalog:
                              listing=listing)
         _check_tiles(infos)
         bounds = np.array([[t.mins[0], t.mins[1], t.maxs[0], t.maxs[1]] for t in infos])
-        return cls(infos, bounds, infos[0].crs)
+        return cls(infos, bounds, infos[0].crs, unreadable)
 
     @property
     def paths(self) -> List[str]:

@@ -182,9 +182,10 @@ def test_bad_inputs(tiles, tmp_path):
     bad = tmp_path / "bad"
     bad.mkdir()
     (bad / "junk.laz").write_bytes(b"not a point cloud" * 10)
-    with pytest.raises(InputError, match="junk.laz is not a LAS/LAZ file") as err:
+    with pytest.raises(InputError, match=r"1 tile\(s\) cannot be read \(junk\.laz: .*not "
+                                         r"a LAS/LAZ file") as err:
         cc.Catalog.open(str(bad))
-    assert err.value.template.startswith("{path} is not a LAS/LAZ file")
+    assert err.value.template.startswith("{n} tile(s) cannot be read")
 
 
 def test_vpc_input(tiles, tmp_path):

@@ -132,3 +132,18 @@ def test_truncated_laz_tile_named_before_any_worker(tmp_path):
     (d / "t1.laz").write_bytes(data[: len(data) // 2])
     _refused([str(d / "t0.laz"), str(d / "t1.laz")], tmp_path / "out",
              r"t1\.laz is truncated: its compressed points end before their chunk table")
+
+
+def test_unreadable_tiles_all_named_or_skipped_on_request(tiles, tmp_path):
+    from geomatics_toolbox.synthetic.hostile import huge_vlr_count
+    d = tmp_path / "tiles"
+    bad1 = huge_vlr_count(tiles[1], d / "c.las")
+    bad2 = d / "d.las"
+    bad2.write_bytes(b"junk" * 100)
+    with pytest.raises(InputError, match=r"2 tile\(s\) cannot be read \(c\.las: .*claims "
+                                         r"1,069,128,089 .*d\.las: .*SKIP_UNREADABLE"):
+        cc.Catalog.open([*tiles, str(bad1), str(bad2)])
+    cat = cc.Catalog.open([*tiles, str(bad1), str(bad2)], skip_unreadable=True)
+    assert cat.paths == tiles and sorted(cat.unreadable) == [str(bad1), str(bad2)]
+    with pytest.raises(InputError, match=r"2 tile\(s\) cannot be read"):
+        cc.Catalog.open([str(bad1), str(bad2)], skip_unreadable=True)     # nothing left
