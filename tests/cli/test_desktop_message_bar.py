@@ -67,10 +67,14 @@ def test_desktop_start_shows_the_missing_packages(tmp_path):
     assert out.exists(), run.stdout[-3000:] + run.stderr[-3000:]
     res = json.loads(out.read_text(encoding="utf-8"))
     assert PLUGIN in res["active"]
-    # one message, ours: no Python error bar from loading the plugin
-    assert len(res["items"]) == 1, res["items"]
-    item = res["items"][0]
-    assert item["title"] == "صندوق أدوات الجيوماتكس"
+    # ours once, and no Python error bar from loading the plugin (QGIS 3.40 adds its own
+    # "Open Sans font installation failed" offline: not ours, not a Python error)
+    ours = [i for i in res["items"] if i["title"] == "صندوق أدوات الجيوماتكس"]
+    others = [i for i in res["items"] if i not in ours]
+    assert len(ours) == 1, res["items"]
+    assert not [i for i in others if any(w in (i["title"] + i["text"]).lower() for w in
+                                         ("python", "plugin", "geomatics", "error"))], others
+    item = ours[0]
     assert "laspy، lazrs" in item["text"] and "dask، distributed" in item["text"]
     assert "؛ " in item["text"]                # Arabic punctuation between the groups
     assert "ليدار" in item["text"] and "فهرس البلاطات" in item["text"]
