@@ -125,7 +125,8 @@ class GroundFilterAlgorithm(_GroundCommon):
              self.CELL: self.tr("0 = derived from the point density (about 1 m)."),
              self.MAX_WINDOW: self.tr("Must exceed the largest building."),
              self.SLOPE: self.tr("0 = half the local terrain slope (0.10 to 0.60)."),
-             self.THRESHOLD: self.tr("Plus 1.0 m per unit of terrain slope."),
+             self.THRESHOLD: self.tr("0 = 0.3 × the mean point spacing, 0.25 to 0.5 m; "
+                                     "plus 1.0 m per unit of terrain slope."),
              self.REFINE: self.tr("Passes that rebuild the terrain from the accepted "
                                   "points.")}) + self.tr(
             "<p>References: Pingel, T. J., Clarke, K. C. &amp; McBride, W. A. (2013), ISPRS "
@@ -141,7 +142,7 @@ class GroundFilterAlgorithm(_GroundCommon):
                         d.max_window, minimum=0.0, advanced=True)
         self.add_number(self.SLOPE, self.tr("Slope tolerance, 0 = derived (rise/run)"),
                         0.0, minimum=0.0, advanced=True)
-        self.add_number(self.THRESHOLD, self.tr("Height tolerance (m)"), d.threshold,
+        self.add_number(self.THRESHOLD, self.tr("Height tolerance, 0 = derived (m)"), 0.0,
                         minimum=0.0, advanced=True)
         self.add_number(self.REFINE, self.tr("Refinement passes"), d.refine, minimum=0,
                         integer=True, advanced=True)
@@ -165,16 +166,16 @@ class GroundFilterAlgorithm(_GroundCommon):
                                  rule=">= 0 (0 = derived)" if zero_ok else "> 0")
             return value
         kw = dict(cell=num(self.CELL, True) or None, slope=num(self.SLOPE, True) or None,
+                  threshold=num(self.THRESHOLD, True) or None,
+                  max_window=num(self.MAX_WINDOW, False),
                   refine=self.parameterAsInt(parameters, self.REFINE, context))
-        for name, field in ((self.MAX_WINDOW, "max_window"), (self.THRESHOLD, "threshold")):
-            kw[field] = num(name, False)
         return core_rec.RecommendedOptions(**kw)
 
     def process(self, parameters, context, feedback):
         opts = self.options(parameters, context)
-        feedback.pushInfo(self.tr("Recommended ground filter: window {} m, threshold {} m, "
-                                  "{} refinement passes").format(
-            opts.max_window, opts.threshold, opts.refine))
+        feedback.pushInfo(self.tr("Recommended ground filter: window {} m, {} refinement "
+                                  "passes; cell and tolerances derived from the cloud "
+                                  "(see the report)").format(opts.max_window, opts.refine))
         return self.run_filter(parameters, context, feedback,
                                ground_filter("groundfilter", opts))
 

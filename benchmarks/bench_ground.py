@@ -332,6 +332,30 @@ def merge_ptd(text, rows, speed, quick):
     return text
 
 
+def _ground_extra(args):
+    """--real / --density / --loso12: one section each, merged into ground.md."""
+    import _ground_real as gr
+    text = RESULTS.read_text(encoding="utf-8") if RESULTS.exists() else ""
+    if args.real:
+        filters = args.real_filters.split(",")
+        rows = gr.real_section(filters)
+        if rows is None:
+            print(f"real files not found in {gr.REAL}; skipped")
+        else:
+            text = gr.merge_section(text, gr.real_md(rows, filters))
+            RESULTS.write_text(text, encoding="utf-8")
+    if args.loso12 and (ISPRS / "samp11.laz").exists():
+        combos, folds = gr.loso12_section(load, SAMPLES)
+        text = gr.merge_section(text, gr.loso12_md(combos, folds))
+        RESULTS.write_text(text, encoding="utf-8")
+    if args.density:
+        rows = gr.density_section(args.density)
+        text = gr.merge_section(text, gr.density_md(rows, args.density))
+        RESULTS.write_text(text, encoding="utf-8")
+    print(RESULTS.read_text(encoding="utf-8"))
+    return 0
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="1 M point tile")
@@ -343,8 +367,20 @@ def main(argv=None):
                          "rows of the existing speed table are kept and marked")
     ap.add_argument("--ptd", action="store_true",
                     help="re-measure PTD only (ISPRS rows and speed row) and merge them")
+    ap.add_argument("--real", action="store_true",
+                    help="score FILTERS on the real files only (merged into ground.md)")
+    ap.add_argument("--real-filters", default=",".join(FILTERS),
+                    help="comma-separated filters for --real")
+    ap.add_argument("--density", type=int, default=0, metavar="N",
+                    help="speed/memory of recommended and SMRF at 0.2/1/5/20 pts/m², N "
+                         "points each (merged into ground.md)")
+    ap.add_argument("--loso12", action="store_true",
+                    help="12-fold leave-one-sample-out (ISPRS + real) of the recommended "
+                         "defaults (merged into ground.md)")
     args = ap.parse_args(argv)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
+    if args.real or args.density or args.loso12:
+        return _ground_extra(args)
     if args.ptd:
         rows = _ptd_isprs_rows() if (ISPRS / "samp11.laz").exists() else None
         if rows:

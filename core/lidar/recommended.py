@@ -6,8 +6,7 @@ A simple-morphological-filter (SMRF) style pipeline on a minimum-surface raster
 itself (point density, terrain slope), never from labels:
 
 1. validate; density rho over occupied 5 m cells; cell = clip(1 / sqrt(rho), 1, 1) m
-   (leave-one-sample-out found no gain from cells other than 1 m between 0.17 and
-   20 pts/m²).
+   (no gain from other cells between 0.17 and 20 pts/m²).
 2. minimum-z raster; empty cells filled by a push-pull pyramid.
 3. low outliers: cells more than 5 m below their 3x3 closing are dropped; where such
    pits are more than 8 % of the occupied cells within 25 m they are ground seen
@@ -34,19 +33,18 @@ itself (point density, terrain slope), never from labels:
    Shepard 1968 and Franke & Nielson 1980). Unlike a linear TIN or a Laplace fill
    (Pingel et al. 2013), it does not cut the crest of a ridge or embankment that the
    opening removed.
-7. per point: ground when |z - DTM| <= 0.5 m + 1.0 x local DTM slope;
-   points more than max(tolerance, 1 m) below the DTM are low noise (class 7).
+7. per point: ground when |z - DTM| <= t + 1.0 x local DTM slope, the height tolerance
+   t = 0.3 x mean point spacing within 0.25-0.5 m (the DTM at a point is interpolated
+   over about one spacing); points more than max(tolerance, 1 m) below the DTM are low
+   noise (class 7).
 8. refine (3 passes): DTM rebuilt from the lowest ground point per cell (holes filled
-   as in step 6), step 7 repeated.
+   as in step 6, only where points read them), step 7 repeated.
 
-Measured on the 8 ISPRS filter-test samples (Sithole & Vosselman 2004 total error,
-``benchmarks/results/ground.md``): mean 3.36 % at these defaults, below SMRF with
-PDAL's defaults (5.75 % in the same script) on 7 of the 8 samples (not samp11:
-8.92 vs 8.52); leave-one-sample-out mean 3.50 % over the 112 sets of detrending
-(off, 3 x 2 sizes) x growing (off, 3 tolerances) x slope scaler (0.8-1.1).
-The defaults are the best set on all 8 samples, as every fold's choice is on its 7.
-Each step alone, over its own development grid: detrending 3.54 %, growing 3.53 %;
-neither 3.56 % in-sample and 3.70 % leave-one-sample-out (scaler x refine grid).
+Measured (``benchmarks/results/ground.md``): ISPRS total error (Sithole & Vosselman
+2004) mean 3.26 % at these defaults, below SMRF with PDAL's defaults (5.75 %) on 7 of
+the 8 samples (not samp11: 9.01 vs 8.52); on the 4 shared real files the DTM RMSE is
+at or below SMRF's on each; leave-one-sample-out over the 12 folds (8 ISPRS + 4 real)
+(table in ground.md). :mod:`._recommended_filter` adds water handling and the report.
 
 References
 ----------
@@ -121,8 +119,12 @@ class RecommendedOptions:
         Slope tolerance of the opening (rise/run); None derives it from the terrain.
     slope_factor, slope_min, slope_max : float
         Derived slope = ``slope_factor`` x local terrain slope, clipped.
-    threshold : float
-        Vertical tolerance of the final per-point test (m).
+    threshold : float or None
+        Vertical tolerance of the final per-point test (m). Derived:
+        ``threshold_factor`` x mean point spacing within [``threshold_min``,
+        ``threshold_max``] (the DTM at a point is interpolated over about one spacing).
+    threshold_factor, threshold_min, threshold_max : float
+        See ``threshold``.
     scaler : float
         Extra tolerance per unit of local DTM slope (m per rise/run).
     low_step : float
@@ -176,7 +178,10 @@ class RecommendedOptions:
     slope_factor: float = 0.5
     slope_min: float = 0.1
     slope_max: float = 0.6
-    threshold: float = 0.5
+    threshold: Optional[float] = None
+    threshold_factor: float = 0.3
+    threshold_min: float = 0.25
+    threshold_max: float = 0.5
     scaler: float = 1.0
     low_step: float = 5.0
     low_window: float = 25.0
@@ -203,19 +208,21 @@ class RecommendedOptions:
             raise InputError("RecommendedOptions.trend_window and trend_smooth must not be "
                              "negative.")
         for name in ("cell_factor", "cell_min", "cell_max", "max_window", "slope_factor",
-                     "slope_min", "slope_max", "threshold", "low_step", "low_noise_depth",
+                     "slope_min", "slope_max", "threshold_factor", "threshold_min", "threshold_max",
+                     "low_step", "low_noise_depth",
                      "low_window", "low_share",
                      "fill_radius", "fill_reach", "grow_window", "grow_rms", "grow_tol",
                      "grow_max_slope", "grow_max_rise"):
             if not getattr(self, name) > 0:
                 raise InputError("RecommendedOptions.{name} must be positive.", name=name)
-        for name in ("cell", "slope"):
+        for name in ("cell", "slope", "threshold"):
             v = getattr(self, name)
             if v is not None and not v > 0:
                 raise InputError("RecommendedOptions.{name} must be positive or None "
                                  "(derived from the cloud).", name=name)
-        if self.cell_min > self.cell_max:
-            raise InputError("RecommendedOptions.cell_min must not exceed cell_max.")
+        if self.cell_min > self.cell_max or self.threshold_min > self.threshold_max:
+            raise InputError("RecommendedOptions: cell_min must not exceed cell_max, nor "
+                             "threshold_min threshold_max.")
         if self.min_points < 4 or self.refine < 0 or self.grow_iters < 0:
             raise InputError("min_points must be at least 4, refine and grow_iters at "
                              "least 0.")
@@ -224,7 +231,7 @@ class RecommendedOptions:
 
 
 def derive(x, y, opt: RecommendedOptions) -> RecommendedOptions:
-    """Options with the cell size filled in from the point density.
+    """Options with the cell size and height tolerance filled in from the density.
 
     Parameters
     ----------
@@ -236,14 +243,17 @@ def derive(x, y, opt: RecommendedOptions) -> RecommendedOptions:
     Returns
     -------
     RecommendedOptions
-        ``opt`` with ``cell`` set.
+        ``opt`` with ``cell`` and ``threshold`` set.
     """
-    if opt.cell is not None:
+    if opt.cell is not None and opt.threshold is not None:
         return opt
     step = max(1, x.size // 500_000)           # a subsample suffices for density
-    rho = R.density(x[::step], y[::step]) * step
-    cell = float(np.clip(opt.cell_factor / np.sqrt(rho), opt.cell_min, opt.cell_max))
-    return replace(opt, cell=cell)
+    spacing = 1.0 / np.sqrt(R.density(x[::step], y[::step]) * step)
+    cell = float(np.clip(opt.cell_factor * spacing, opt.cell_min, opt.cell_max))
+    thr = float(np.clip(opt.threshold_factor * spacing, opt.threshold_min,
+                        opt.threshold_max))
+    return replace(opt, cell=opt.cell or cell,
+                   threshold=thr if opt.threshold is None else opt.threshold)
 
 
 def classify(x, y, z, *, return_number=None, number_of_returns=None, options=None,

@@ -105,3 +105,16 @@ def test_derived_report_of_a_forest(lang):
     labels = [k for k, _ in d.rows()] + msgs + ["Derived from the cloud (what ran)",
                                                  rows["Opening windows (m)"].text]
     assert not [m for m in labels if not has_translation(m, lang)]
+
+
+def test_steep_cliffs_ground_kept_at_the_edges():
+    """45° slopes cut by 12 m cliffs: the ground on both sides of each cliff is kept."""
+    s = landscapes.steep_cliffs(seed=1)
+    cls = recommended.classify(s.x, s.y, s.z)
+    ground = s.classification == 2
+    assert np.mean(cls[ground] != 2) < 0.01                       # Type I
+    for c in (50.0, 100.0):                                       # cliff lines (x)
+        near = ground & (np.abs(s.x - c) < 3.0) & (np.abs(s.x - c) > 0.5)
+        assert np.mean(cls[near] == 2) > 0.95
+    e = dtm_errors(s, cls == 2)
+    assert np.mean(np.abs(e) > 1.0) < 0.05
