@@ -117,9 +117,9 @@ def test_real_files(name, tmp_path):
 
 
 def test_height_above_ground_dimension(tmp_path):
-    """HAG extra bytes: the existing extra-bytes dimensions keep their values; the new one
-    equals the result's heights (float32, the data's vertical unit)."""
-    src = REAL / "pdal_ign_lambert93.laz"
+    """HAG extra bytes: the existing extra-bytes dimension (treeID) keeps its values; the
+    new one equals the result's heights (float32, the data's vertical unit)."""
+    src = REAL / "lidr_mixedconifer_terrain.laz"
     if not src.exists():
         pytest.skip(f"shared real data absent: {src}")
     out = tmp_path / "h.laz"
@@ -128,8 +128,10 @@ def test_height_above_ground_dimension(tmp_path):
     hag = np.asarray(b[core_c.HAG_DIMENSION])
     assert np.array_equal(hag, res.hag)
     got = np.asarray(b.classification)
+    assert "treeID" in a.point_format.dimension_names
     assert np.abs(hag[got == 2]).max() < 1.0
     assert hag[got == 5].min() > 1.5 - 1e-3 and hag[got == 3].max() <= 0.5 + 1e-3
+    assert hag.max() > 20          # conifers to 32 m
 
 
 def _scene(seed=3):
