@@ -6,8 +6,9 @@ Each building becomes closed, outward-facing solids (lists of planar faces):
   (Biljecki et al. 2016, LOD1.2: a block with the detailed footprint);
 * **LOD2** — the fitted roof primitive of :mod:`.roofs` over the footprint rectangle:
   flat, shed, gabled (pentagon gable walls) or hipped (trapezoids and triangles), walls
-  down to the ground, a ground face (LOD2.2 without superstructures). Complex roofs and
-  footprints that are not rectangles get LOD1 only.
+  down to the ground, a ground face (LOD2.2 without superstructures); a flat or shed
+  roof over any other outline too. Complex roofs, and gabled or hipped roofs over
+  outlines that are not rectangles, get LOD1 only.
 
 Faces carry the CityGML semantics GroundSurface, WallSurface, RoofSurface. Outward
 orientation is checked against the solid's centre (all these solids are convex in the
@@ -131,19 +132,43 @@ def lod2_solid(model, z0: float) -> Optional[Solid]:
     return s.orient_outward()
 
 
+def lod2_polygon(ring, model, z0: float) -> Optional[Solid]:
+    """Return a flat or shed roof over any footprint ``ring`` (LOD2).
+
+    The outline is lifted onto the roof plane, vertical walls go down to ``z0``; every
+    face is planar.
+    """
+    if model.kind not in ("flat", "shed"):
+        return None
+    r = _ccw(ring)
+    top = np.asarray(model.z(r[:, 0], r[:, 1]), dtype=float)
+    n = len(r)
+    s = Solid()
+    s.add(np.column_stack([r[::-1], np.full(n, z0)]), GROUND_S)
+    s.add(np.column_stack([r, top]), ROOF_S)
+    for i in range(n):
+        j = (i + 1) % n
+        s.add([[*r[i], z0], [*r[j], z0], [*r[j], top[j]], [*r[i], top[i]]], WALL_S)
+    return s
+
+
 def building_solids(b: dict, ring=None):
     """``(lod1, lod2)`` solids of a building dict of :func:`.buildings.extract_buildings`.
 
     ``ring``: the footprint outline (n, 2) in metres; the roof model's rectangle when
-    the footprint was regularised (or none is given). LOD2 only for regularised
-    footprints with a flat, shed, gabled or hipped roof.
+    the footprint was regularised (or none is given). LOD2 for regularised footprints
+    with a flat, shed, gabled or hipped roof, and for any other outline with a flat or
+    shed roof.
     """
     model = b["model"]
     z0, z1 = b["ground"], b["roof"]
     if b.get("regularised") or ring is None:
         ring = model.corners()
     lod1 = lod1_solid(ring, z0, z1)
-    lod2 = lod2_solid(model, z0) if b.get("regularised") else None
+    if b.get("regularised"):
+        lod2 = lod2_solid(model, z0)
+    else:
+        lod2 = lod2_polygon(ring, model, z0)
     return lod1, lod2
 
 

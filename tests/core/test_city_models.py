@@ -283,3 +283,39 @@ def test_pier_over_water_is_not_a_building():
     dry = np.where(lake, 2, cls)
     res = core_b.extract_buildings(x, y, z, dry)
     assert len(res.buildings) == 1 and res.buildings[0]["roof_type"] == "flat"
+
+
+def test_l_shaped_flat_roof_gets_lod2(tmp_path):
+    """An L-shaped flat-roofed block (not a rectangle, so not regularised): LOD2 is its
+    outline lifted to the roof, closed and outward, volume ≈ area × height."""
+    jsonschema = pytest.importorskip("jsonschema")
+    if not SCHEMA.exists():
+        pytest.skip(f"CityJSON schema absent: {SCHEMA}")
+    from geomatics_toolbox.core.io.las import write_las
+    from geomatics_toolbox.core.lidar.buildings_file import BuildingOutputs, buildings_file
+    rng = np.random.default_rng(5)
+    n = 40_000
+    x, y = rng.uniform(0, 80, n), rng.uniform(0, 80, n)
+    ell = ((x > 20) & (x < 60) & (y > 20) & (y < 32)) | ((x > 20) & (x < 32) & (y > 20)
+                                                          & (y < 60))
+    z = 100.0 + np.where(ell, 7.0, 0.0) + rng.normal(0, 0.02, n)
+    cls = np.where(ell, 1, 2).astype(np.uint8)
+    laz = tmp_path / "ell.laz"
+    write_las(laz, x + 500_000, y + 4_000_000, z, dimensions={"classification": cls},
+              crs="EPSG:32632")
+    res, _ = buildings_file(str(laz), BuildingOutputs(str(tmp_path / "b.gpkg"),
+                                                      cityjson=str(tmp_path / "b.json")))
+    assert len(res.buildings) == 1
+    b = res.buildings[0]
+    assert b["roof_type"] == "flat" and not b["regularised"]
+    assert b["area"] == pytest.approx(40 * 12 + 12 * 28, rel=0.06)
+    doc = json.loads((tmp_path / "b.json").read_text(encoding="utf-8"))
+    assert not list(jsonschema.Draft7Validator(json.loads(SCHEMA.read_text()))
+                    .iter_errors(doc))
+    t = doc["transform"]
+    verts = np.asarray(doc["vertices"], float) * t["scale"] + t["translate"]
+    geoms = {g["lod"]: g for g in doc["CityObjects"]["1"]["geometry"]}
+    assert set(geoms) == {"1.2", "2.2"}
+    vol = _check_solid(geoms["2.2"]["boundaries"][0], verts)
+    assert vol == pytest.approx(b["area"] * 7.0, rel=0.08)
+    assert len(geoms["2.2"]["boundaries"][0]) >= 8          # six walls or more
