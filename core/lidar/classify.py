@@ -5,8 +5,9 @@ One verb (:func:`classify_points`, arrays in, classes out) and its thin file run
 report content). The steps, in the order of the ELiT non-ground branch (Kostrikov et
 al. 2020):
 
-1. **Ground (2)** — the recommended ground filter (:mod:`.recommended`) on every
-   point but the input's noise (7, 18), with its low-outlier pre-filter (7); or, with
+1. **Ground (2)** — the registry's default ground filter (the recommended one,
+   :func:`.filters.default_ground_filter`) with its single-file point selection, as
+   ``geomatics:groundfilter`` runs it (input noise 7/18 kept, low outliers 7); or, with
    ``ground="keep"``, the input's own class 2 (and 7) as they are.
 2. **Height above ground** — a TIN DTM of the ground points (Delaunay, linear inside
    each triangle; :func:`~..terrain.tin.tin_grid`) on a ``dtm_cell`` grid, sampled
@@ -139,22 +140,19 @@ def _counts(classes) -> Dict[int, int]:
 def _ground_step(x, y, z, cls_in, opt, mon):
     """Classes 2/1/7 (input noise kept) from the recommended filter or the input."""
     from ..io.las import PointData
-    from .pipeline import assemble_classes, select_points
+    from .filters import default_ground_filter, default_selection, ground_filter, run_filter
     if opt.ground == "keep":
         out = np.where(np.isin(cls_in, (GROUND, LOW_NOISE, HIGH_NOISE)), cls_in, OTHER)
         if np.count_nonzero(out == GROUND) < 3:
             raise InputError("No ground points (class 2) in the cloud: run a ground filter "
                              "first (e.g. the slope-based or LSQ ground filter).")
         return out.astype(np.uint8), 0
-    from .recommended import recommended_filter
-    pd = PointData(x, y, z, {"classification": cls_in})
-    sel = select_points(pd, progress=mon.sub(0.0, 0.1).update, cancel=mon.cancelled)
-    cand = sel.candidates
-    take = (lambda a: a) if cand.all() else (lambda a: a[cand])
-    outcome = recommended_filter().classify(take(x), take(y), take(z),
-                                            monitor=mon.sub(0.1, 1.0))
-    cls = assemble_classes(sel, outcome.classes, cls_in)
-    return cls, int(np.count_nonzero(sel.low_outliers))
+    # the one registry's default filter (the recommended one) with its single-file
+    # point selection, exactly as geomatics:groundfilter runs it
+    key = default_ground_filter()
+    run = run_filter(PointData(x, y, z, {"classification": cls_in}), ground_filter(key),
+                     default_selection(key), monitor=mon)
+    return run.classes, int(np.count_nonzero(run.selection.low_outliers))
 
 
 def height_above_ground(x, y, grid, dtm) -> np.ndarray:

@@ -85,6 +85,17 @@ def test_demo_tile_gets_every_class(demo):
     veg = np.isin(got, (3, 4, 5))
     assert (truth[veg] == 5).mean() > 0.97
     assert (got[truth == 2] == 2).mean() > 0.97
+    # one engine: ground and low noise exactly as the default ground filter gives them
+    from geomatics_toolbox.core.lidar.filters import (
+        classify_points,
+        default_ground_filter,
+        default_selection,
+        ground_filter,
+    )
+    from geomatics_toolbox.core.lidar.pipeline import read_cloud
+    key = default_ground_filter()
+    ref = classify_points(read_cloud(laz), ground_filter(key), default_selection(key))
+    assert np.array_equal(got == 2, ref == 2) and np.array_equal(got == 7, ref == 7)
     html = (d / "c.html").read_text(encoding="utf-8")
     assert 'id="class-map"' in html and "ASPRS" in html
     assert 'id="footprint-map"' in html and res.buildings.buildings
