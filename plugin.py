@@ -45,14 +45,19 @@ def activate_private_packages() -> str:
 
 def missing_packages_text(missing) -> str:
     """One translated sentence naming the missing packages and what needs them."""
+    base = [r.name for r in missing if r.group == "base"]
     lidar = [r.name for r in missing if r.group == "lidar"]
-    catalog = [r.name for r in missing if r.group != "lidar"]
+    catalog = [r.name for r in missing if r.group == "catalog"]
     try:
         rtl = user_locale() in ("ar", "fa")
     except Exception:  # noqa: BLE001 - punctuation only
         rtl = False
     comma, semicolon = ("، ", "؛ ") if rtl else (", ", "; ")
     parts = []
+    if base:
+        parts.append(QCoreApplication.translate(
+            "GeomaticsToolboxPlugin", "{packages} for every algorithm").format(
+                packages=comma.join(base)))
     if lidar:
         parts.append(QCoreApplication.translate(
             "GeomaticsToolboxPlugin", "{packages} for the LiDAR algorithms").format(
@@ -64,6 +69,9 @@ def missing_packages_text(missing) -> str:
     return QCoreApplication.translate(
         "GeomaticsToolboxPlugin", "QGIS's Python lacks Python packages this toolbox "
         "needs: {missing}. The other algorithms work without them.").format(
+            missing=semicolon.join(parts)) if not base else QCoreApplication.translate(
+        "GeomaticsToolboxPlugin", "QGIS's Python lacks Python packages this toolbox "
+        "needs: {missing}. Until they are installed only the installer is offered.").format(
             missing=semicolon.join(parts))
 
 

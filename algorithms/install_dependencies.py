@@ -46,7 +46,8 @@ class InstallDependenciesAlgorithm(GeomaticsAlgorithm):
     def shortHelpString(self) -> str:  # noqa: N802
         return build_help(self, self.tr(
             "The LiDAR algorithms need laspy and lazrs, the tile catalog also dask and "
-            "distributed; QGIS ships the rest (numpy, SciPy, GDAL). This installs the "
+            "distributed; QGIS ships the rest (numpy, SciPy, GDAL), and where a QGIS build "
+            "lacks SciPy it is installed too, for QGIS's own numpy. This installs the "
             "versions the toolbox was tested with, only those QGIS's Python lacks, with "
             "that Python's pip into a folder of the current QGIS profile: QGIS's own "
             "packages are never changed or replaced, and removing the folder undoes it. "

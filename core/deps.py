@@ -54,6 +54,10 @@ PACKAGES: Dict[str, tuple] = {"laspy": ("laspy", "lidar"), "lazrs": ("lazrs", "l
                               "distributed": ("distributed", "catalog")}
 #: QGIS's own compiled packages: never installed privately (they would shadow QGIS's)
 NEVER_INSTALL = ("numpy", "scipy", "gdal", "pyqt5", "pyqt6", "qgis")
+#: what every algorithm needs besides numpy and GDAL (group 'base'). QGIS ships SciPy on
+#: Windows and Linux, but some macOS builds did not: when it is missing the installer adds
+#: it, unpinned and constrained to QGIS's own numpy (never replacing it)
+BASE_LINES = ("scipy",)
 #: the algorithm that installs them (named in every message about a missing package)
 INSTALLER_ID = "geomatics:installdependencies"
 
@@ -93,6 +97,12 @@ def requirements(path: Path = REQUIREMENTS_FILE) -> List[Requirement]:
     return out
 
 
+def base_requirements() -> List[Requirement]:
+    """Return what every algorithm needs beyond numpy and GDAL (SciPy), group 'base'."""
+    return [Requirement(_dist_name(line), line, _dist_name(line).replace("-", "_"), "base")
+            for line in BASE_LINES]
+
+
 def groups_closure(groups: Iterable[str]) -> List[str]:
     """Return the groups a use needs: the catalog needs the LiDAR packages too."""
     groups = set(groups)
@@ -102,10 +112,13 @@ def groups_closure(groups: Iterable[str]) -> List[str]:
 
 
 def missing(groups: Optional[Iterable[str]] = None) -> List[Requirement]:
-    """Return the requirements of ``groups`` (default: all) whose module is not found."""
-    wanted = None if groups is None else set(groups_closure(groups))
-    return [r for r in requirements() if (wanted is None or r.group in wanted)
-            and not r.importable()]
+    """Return the requirements of ``groups`` (default: all) whose module is not found.
+
+    The 'base' ones (SciPy) are always included: every algorithm needs them.
+    """
+    wanted = None if groups is None else set(groups_closure(groups)) | {"base"}
+    return [r for r in base_requirements() + requirements()
+            if (wanted is None or r.group in wanted) and not r.importable()]
 
 
 def check(groups: Iterable[str], *, load: bool = False) -> None:
@@ -178,10 +191,17 @@ def pip_base(python: str) -> List[str]:
 
 
 def resolve_command(python: str, report: str, *, wheel_dir: Optional[str] = None,
-                    requirements_file: os.PathLike = REQUIREMENTS_FILE) -> List[str]:
-    """Step 1: what pip would install for the pins, given what QGIS's Python has."""
+                    requirements_file: os.PathLike = REQUIREMENTS_FILE,
+                    extra: Sequence[str] = (), constraints: Optional[str] = None
+                    ) -> List[str]:
+    """Step 1: what pip would install for the pins, given what QGIS's Python has.
+
+    ``extra``: more requirements (SciPy when QGIS lacks it); ``constraints``: a pip
+    constraints file (QGIS's numpy version).
+    """
     return (pip_base(python) + ["--dry-run", "--quiet", "--report", str(report),
-                                "-r", str(requirements_file)] + _source_args(wheel_dir))
+                                "-r", str(requirements_file)] + list(extra)
+            + (["-c", str(constraints)] if constraints else []) + _source_args(wheel_dir))
 
 
 def install_command(python: str, target: os.PathLike, plan: Sequence[str], *,
@@ -205,19 +225,21 @@ def pip_environment(target: os.PathLike) -> Dict[str, str]:
     return env
 
 
-def read_plan(report_path: os.PathLike) -> List[str]:
+def read_plan(report_path: os.PathLike, allowed: Iterable[str] = ()) -> List[str]:
     """``name==version`` of every distribution a pip ``--report`` would install.
 
     Raises :class:`InputError` when the plan would replace one of QGIS's own compiled
-    packages (numpy, scipy, GDAL, PyQt).
+    packages (numpy, scipy, GDAL, PyQt) — except those in ``allowed`` (SciPy when QGIS
+    has none).
     """
+    allowed = {_dist_name(a) for a in allowed}
     with open(report_path, encoding="utf-8") as fh:
         report = json.load(fh)
     plan, refused = [], []
     for item in report.get("install", []):
         meta = item.get("metadata", {})
         name, version = meta.get("name", ""), meta.get("version", "")
-        if _dist_name(name) in NEVER_INSTALL:
+        if _dist_name(name) in NEVER_INSTALL and _dist_name(name) not in allowed:
             refused.append(f"{name} {version}")
         else:
             plan.append(f"{name}=={version}")
@@ -286,7 +308,7 @@ def format_command(cmd: Sequence[str]) -> str:
 
 
 def _install_with_old_pip(python, target, env, wheel_dir, requirements_file, commands, logs,
-                          log, cancel) -> List[str]:
+                          log, cancel, extra=(), constraints=None) -> List[str]:
     """Install in one step for pip < 22.2 (no ``--report``).
 
     The whole pinned closure goes into the folder, then QGIS's own compiled packages
@@ -296,14 +318,16 @@ def _install_with_old_pip(python, target, env, wheel_dir, requirements_file, com
     log("pip < 22.2 (no --report): installing every pin and its dependencies into the "
         "folder, then removing the packages QGIS ships from it.")
     cmd = (pip_base(python) + ["--target", str(target), "--upgrade", "--progress-bar", "off",
-                               "-r", str(requirements_file)] + _source_args(wheel_dir))
+                               "-r", str(requirements_file)] + list(extra)
+           + (["-c", str(constraints)] if constraints else []) + _source_args(wheel_dir))
+    keep = {_dist_name(e) for e in extra}
     commands.append(cmd)
     log(format_command(cmd))
     text = _run(cmd, env, log, cancel)
     logs.append(text)
     for entry in Path(target).iterdir():
         base = re.split(r"[-.]", entry.name, maxsplit=1)[0].lower()
-        if base in NEVER_INSTALL:
+        if base in NEVER_INSTALL and base not in keep:
             if entry.is_dir():
                 shutil.rmtree(entry, ignore_errors=True)
             else:
@@ -312,7 +336,7 @@ def _install_with_old_pip(python, target, env, wheel_dir, requirements_file, com
     done = re.findall(r"^Successfully installed (.+)$", text, re.M)
     pairs = done[-1].split() if done else []
     return [re.sub(r"-(?=[^-]+$)", "==", p) for p in pairs
-            if _dist_name(p.rsplit("-", 1)[0]) not in NEVER_INSTALL]
+            if _dist_name(p.rsplit("-", 1)[0]) not in set(NEVER_INSTALL) - keep]
 
 
 def install(target: os.PathLike, *, wheel_dir: Optional[str] = None,
@@ -348,8 +372,16 @@ def install(target: os.PathLike, *, wheel_dir: Optional[str] = None,
     report = target / ".install-report.json"
     step = progress or (lambda f: None)
     commands, logs = [], []
+    base = [r for r in base_requirements() if not r.importable()]
+    constraints = None
+    if base:      # SciPy missing (some macOS builds): added, built for QGIS's own numpy
+        import numpy
+        constraints = target / ".constraints.txt"
+        constraints.write_text(f"numpy=={numpy.__version__}\n", encoding="utf-8")
     cmd = resolve_command(python, str(report), wheel_dir=wheel_dir,
-                          requirements_file=requirements_file)
+                          requirements_file=requirements_file,
+                          extra=[r.line for r in base],
+                          constraints=str(constraints) if constraints else None)
     commands.append(cmd)
     log(format_command(cmd))
     step(0.05)
@@ -357,12 +389,15 @@ def install(target: os.PathLike, *, wheel_dir: Optional[str] = None,
         logs.append(_run(cmd, env, log, cancel))
     except _OldPipError:
         plan = _install_with_old_pip(python, target, env, wheel_dir, requirements_file,
-                                     commands, logs, log, cancel)
+                                     commands, logs, log, cancel,
+                                     extra=[r.line for r in base], constraints=constraints)
     else:
         try:
-            plan = read_plan(report)
+            plan = read_plan(report, allowed=[r.name for r in base])
         finally:
             report.unlink(missing_ok=True)
+            if constraints is not None:
+                constraints.unlink(missing_ok=True)
         step(0.3)
         if plan:
             cmd = install_command(python, target, plan, wheel_dir=wheel_dir)
@@ -376,6 +411,8 @@ def install(target: os.PathLike, *, wheel_dir: Optional[str] = None,
                     step(min(0.95, 0.3 + 0.65 * seen[0] / (len(plan) + 1)))
 
             logs.append(_run(cmd, env, log, cancel, on_line))
+    if constraints is not None:
+        constraints.unlink(missing_ok=True)
     activate(target)
     step(1.0)
     return InstallResult(folder=str(target), planned=plan, commands=commands,

@@ -1484,6 +1484,14 @@
             <source>Install them…</source>
             <translation>ثبّتها…</translation>
         </message>
+        <message>
+            <source>{packages} for every algorithm</source>
+            <translation>{packages} لكل الخوارزميات</translation>
+        </message>
+        <message>
+            <source>QGIS's Python lacks Python packages this toolbox needs: {missing}. Until they are installed only the installer is offered.</source>
+            <translation>تنقص Python الخاص بـ QGIS حزمُ Python يحتاجها صندوق الأدوات هذا: {missing}. إلى أن تُثبَّت لا يُعرض إلا المثبّت.</translation>
+        </message>
     </context>
     <context>
         <name>GroundFilterAccuracyAlgorithm</name>
@@ -1947,10 +1955,6 @@
             <translation>تثبيت,pip,اعتماديات,حزم,laspy,lazrs,dask,دون اتصال,wheels,إعداد</translation>
         </message>
         <message>
-            <source>The LiDAR algorithms need laspy and lazrs, the tile catalog also dask and distributed; QGIS ships the rest (numpy, SciPy, GDAL). This installs the versions the toolbox was tested with, only those QGIS's Python lacks, with that Python's pip into a folder of the current QGIS profile: QGIS's own packages are never changed or replaced, and removing the folder undoes it. The log shows every command and everything pip prints.</source>
-            <translation>تحتاج خوارزميات ليدار إلى laspy وlazrs، ويحتاج فهرس البلاطات أيضًا إلى dask وdistributed؛ أما الباقي (numpy وSciPy وGDAL) فيأتي مع QGIS. تثبّت هذه الخوارزمية الإصدارات التي اختُبر بها صندوق الأدوات، وفقط ما ينقص Python الخاص بـ QGIS، باستخدام pip التابع له في مجلد ضمن ملف تعريف QGIS الحالي: لا تُغيَّر حزم QGIS نفسها ولا تُستبدل أبدًا، وحذف المجلد يلغي التثبيت. يعرض السجل كل أمر وكل ما يطبعه pip.</translation>
-        </message>
-        <message>
             <source>For computers without internet: a folder of wheel files (.whl) downloaded elsewhere with pip download for the same Python version and system. Empty: the package index pip is configured with.</source>
             <translation>للحواسيب غير المتصلة بالإنترنت: مجلد ملفات wheel ‏(.whl) نُزّلت على جهاز آخر بالأمر pip download لإصدار Python نفسه ونظام التشغيل نفسه. فارغ: فهرس الحزم المضبوط في pip.</translation>
         </message>
@@ -1989,6 +1993,10 @@
         <message>
             <source>Nothing to install: QGIS's Python already has every package.</source>
             <translation>لا شيء للتثبيت: يحتوي Python الخاص بـ QGIS على كل الحزم.</translation>
+        </message>
+        <message>
+            <source>The LiDAR algorithms need laspy and lazrs, the tile catalog also dask and distributed; QGIS ships the rest (numpy, SciPy, GDAL), and where a QGIS build lacks SciPy it is installed too, for QGIS's own numpy. This installs the versions the toolbox was tested with, only those QGIS's Python lacks, with that Python's pip into a folder of the current QGIS profile: QGIS's own packages are never changed or replaced, and removing the folder undoes it. The log shows every command and everything pip prints.</source>
+            <translation>تحتاج خوارزميات ليدار إلى laspy وlazrs، ويحتاج فهرس البلاطات أيضًا إلى dask وdistributed؛ أما الباقي (numpy وSciPy وGDAL) فيأتي مع QGIS، وإن خلا إصدارٌ من QGIS من SciPy ثُبّتت هي أيضًا بما يوافق numpy الخاص بـ QGIS. تثبّت هذه الخوارزمية الإصدارات التي اختُبر بها صندوق الأدوات، وفقط ما ينقص Python الخاص بـ QGIS، باستخدام pip التابع له في مجلد ضمن ملف تعريف QGIS الحالي: لا تُغيَّر حزم QGIS نفسها ولا تُستبدل أبدًا، وحذف المجلد يلغي التثبيت. يعرض السجل كل أمر وكل ما يطبعه pip.</translation>
         </message>
     </context>
     <context>

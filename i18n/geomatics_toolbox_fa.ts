@@ -1484,6 +1484,14 @@
             <source>Install them…</source>
             <translation>نصب آن‌ها…</translation>
         </message>
+        <message>
+            <source>{packages} for every algorithm</source>
+            <translation>{packages} برای همهٔ الگوریتم‌ها</translation>
+        </message>
+        <message>
+            <source>QGIS's Python lacks Python packages this toolbox needs: {missing}. Until they are installed only the installer is offered.</source>
+            <translation>Python خودِ QGIS بسته‌هایی را که این جعبه‌ابزار لازم دارد ندارد: {missing}. تا نصب نشوند فقط نصب‌کننده در دسترس است.</translation>
+        </message>
     </context>
     <context>
         <name>GroundFilterAccuracyAlgorithm</name>
@@ -1947,10 +1955,6 @@
             <translation>نصب,pip,وابستگی‌ها,بسته‌ها,laspy,lazrs,dask,آفلاین,wheels,راه‌اندازی</translation>
         </message>
         <message>
-            <source>The LiDAR algorithms need laspy and lazrs, the tile catalog also dask and distributed; QGIS ships the rest (numpy, SciPy, GDAL). This installs the versions the toolbox was tested with, only those QGIS's Python lacks, with that Python's pip into a folder of the current QGIS profile: QGIS's own packages are never changed or replaced, and removing the folder undoes it. The log shows every command and everything pip prints.</source>
-            <translation>الگوریتم‌های لایدار به laspy و lazrs نیاز دارند و کاتالوگ کاشی‌ها افزون بر آن به dask و distributed؛ بقیه (numpy، SciPy، GDAL) همراه QGIS است. این الگوریتم نسخه‌هایی را که جعبه‌ابزار با آن‌ها آزموده شده، فقط آن‌هایی را که Python خودِ QGIS ندارد، با pip همان Python در پوشه‌ای از نمایهٔ کاربری کنونی QGIS نصب می‌کند: بسته‌های خودِ QGIS هرگز تغییر نمی‌کنند یا جایگزین نمی‌شوند و با حذف پوشه همه‌چیز به حالت پیش بازمی‌گردد. گزارش اجرا هر فرمان و هرچه pip چاپ می‌کند را نشان می‌دهد.</translation>
-        </message>
-        <message>
             <source>For computers without internet: a folder of wheel files (.whl) downloaded elsewhere with pip download for the same Python version and system. Empty: the package index pip is configured with.</source>
             <translation>برای رایانه‌های بدون اینترنت: پوشه‌ای از فایل‌های wheel ‏(.whl) که در جای دیگری با pip download برای همان نسخهٔ Python و همان سیستم‌عامل دریافت شده‌اند. خالی: نمایهٔ بسته‌ای که pip با آن پیکربندی شده است.</translation>
         </message>
@@ -1989,6 +1993,10 @@
         <message>
             <source>Nothing to install: QGIS's Python already has every package.</source>
             <translation>چیزی برای نصب نیست: Python خودِ QGIS همهٔ بسته‌ها را دارد.</translation>
+        </message>
+        <message>
+            <source>The LiDAR algorithms need laspy and lazrs, the tile catalog also dask and distributed; QGIS ships the rest (numpy, SciPy, GDAL), and where a QGIS build lacks SciPy it is installed too, for QGIS's own numpy. This installs the versions the toolbox was tested with, only those QGIS's Python lacks, with that Python's pip into a folder of the current QGIS profile: QGIS's own packages are never changed or replaced, and removing the folder undoes it. The log shows every command and everything pip prints.</source>
+            <translation>الگوریتم‌های لایدار به laspy و lazrs نیاز دارند و کاتالوگ کاشی‌ها افزون بر آن به dask و distributed؛ بقیه (numpy، SciPy، GDAL) همراه QGIS است و اگر نسخه‌ای از QGIS ‏SciPy نداشته باشد، آن هم متناسب با numpy خودِ QGIS نصب می‌شود. این الگوریتم نسخه‌هایی را که جعبه‌ابزار با آن‌ها آزموده شده، فقط آن‌هایی را که Python خودِ QGIS ندارد، با pip همان Python در پوشه‌ای از نمایهٔ کاربری کنونی QGIS نصب می‌کند: بسته‌های خودِ QGIS هرگز تغییر نمی‌کنند یا جایگزین نمی‌شوند و با حذف پوشه همه‌چیز به حالت پیش بازمی‌گردد. گزارش اجرا هر فرمان و هرچه pip چاپ می‌کند را نشان می‌دهد.</translation>
         </message>
     </context>
     <context>

@@ -31,7 +31,23 @@ class GeomaticsProvider(QgsProcessingProvider):
 
     def loadAlgorithms(self) -> None:  # noqa: N802 - QGIS API name
         from ..algorithms import all_algorithms
-        for alg in all_algorithms():
+        try:
+            algorithms = all_algorithms()
+        except ImportError as exc:
+            # a QGIS build without SciPy (some macOS ones): offer the installer alone,
+            # which adds it; the plugin's message bar says so
+            from ..core import deps
+            if (exc.name or "").split(".")[0] not in {r.import_name for r in
+                                                      deps.base_requirements()}:
+                raise
+            from qgis.core import Qgis, QgsMessageLog
+
+            from ..algorithms.install_dependencies import InstallDependenciesAlgorithm
+            QgsMessageLog.logMessage(f"{exc}: only {deps.INSTALLER_ID} is available until "
+                                     "it is installed.", "Geomatics Toolbox", Qgis.Warning)
+            self.addAlgorithm(InstallDependenciesAlgorithm())
+            return
+        for alg in algorithms:
             self.addAlgorithm(alg)
         self._load_models()
 

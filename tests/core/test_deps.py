@@ -143,3 +143,39 @@ def test_old_pip_without_report_installs_then_drops_qgis_packages(tmp_path):
     assert len(res.commands) == 2 and "--report" in res.commands[0]
     assert "--target" in res.commands[1] and "-r" in res.commands[1]
     assert any("removed numpy" in ln for ln in lines)
+
+
+FAKE_PIP = r"""#!/bin/sh
+# records its arguments; the dry run writes a report planning scipy and laspy
+echo "$@" >> "$ARGS_LOG"
+prev=""
+for a in "$@"; do
+  if [ "$prev" = "--report" ]; then
+    printf '{"version": "1", "install": [{"metadata": {"name": "scipy", "version": "1.10.1"}}, {"metadata": {"name": "laspy", "version": "2.7.0"}}]}' > "$a"
+  fi
+  if [ "$prev" = "-c" ]; then cat "$a" >> "$ARGS_LOG"; fi
+  prev="$a"
+done
+"""
+
+
+def test_missing_scipy_is_added_for_qgis_own_numpy(tmp_path, monkeypatch):
+    """A QGIS without SciPy (some macOS builds): scipy is planned, numpy held fixed."""
+    import numpy
+    fake = tmp_path / "python3"
+    fake.write_text(FAKE_PIP)
+    fake.chmod(0o755)
+    args = tmp_path / "args.log"
+    monkeypatch.setenv("ARGS_LOG", str(args))
+    monkeypatch.setattr(deps.Requirement, "importable", lambda self: self.group != "base")
+    assert [r.name for r in deps.missing(["lidar"])] == ["scipy"]
+    res = deps.install(tmp_path / "t", python=str(fake), log=lambda s: None)
+    resolve = args.read_text().splitlines()[0].split()
+    assert "scipy" in resolve and "-c" in resolve
+    assert f"numpy=={numpy.__version__}" in args.read_text()     # QGIS's numpy held
+    assert res.planned == ["scipy==1.10.1", "laspy==2.7.0"]
+    assert not list((tmp_path / "t").glob(".constraints.txt"))
+    report = tmp_path / "r.json"        # a scipy in the plan while QGIS has one: refused
+    report.write_text('{"install": [{"metadata": {"name": "scipy", "version": "1.10.1"}}]}')
+    with pytest.raises(InputError, match="scipy 1.10.1"):
+        deps.read_plan(report)

@@ -246,3 +246,49 @@ def test_message_bar_names_missing_packages_and_offers_install(qgis_app, blocked
     text = " ".join(res["texts"] + res["text"])
     assert "laspy, lazrs for the LiDAR algorithms" in text
     assert "dask, distributed for the tile catalog" in text
+
+
+NO_SCIPY = r"""
+import importlib.abc, importlib.util, json, os, sys
+os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+from qgis.core import QgsApplication
+app = QgsApplication([], False)
+app.initQgis()
+sys.path.append("/usr/share/qgis/python/plugins")
+from processing.core.Processing import Processing
+Processing.initialize()
+class Block(importlib.abc.MetaPathFinder):
+    def find_spec(self, name, path=None, target=None):
+        if name.split(".")[0] == "scipy":
+            raise ModuleNotFoundError(f"No module named {name!r}", name=name)
+for mod in [m for m in sys.modules if m.split(".")[0] == "scipy"]:
+    del sys.modules[mod]
+sys.meta_path.insert(0, Block())
+spec = importlib.util.spec_from_file_location(
+    "geomatics_toolbox", os.path.join(sys.argv[1], "__init__.py"),
+    submodule_search_locations=[sys.argv[1]])
+pkg = importlib.util.module_from_spec(spec)
+sys.modules["geomatics_toolbox"] = pkg
+spec.loader.exec_module(pkg)
+plugin = pkg.classFactory(None)
+plugin.initProcessing()
+provider = QgsApplication.processingRegistry().providerById("geomatics")
+from geomatics_toolbox.core import deps
+from geomatics_toolbox.plugin import missing_packages_text
+print("RESULT:" + json.dumps({"algs": sorted(a.id() for a in provider.algorithms()),
+                              "missing": [r.name for r in deps.missing()],
+                              "text": missing_packages_text(deps.missing())}))
+"""
+
+
+def test_without_scipy_the_plugin_loads_and_offers_the_installer(qgis_app):
+    """Some macOS QGIS builds had no SciPy: the plugin still loads, with the installer."""
+    out = subprocess.run([sys.executable, "-c", NO_SCIPY, str(ROOT)], capture_output=True,
+                         text=True, timeout=600)
+    lines = [ln for ln in out.stdout.splitlines() if ln.startswith("RESULT:")]
+    assert out.returncode == 0 and lines, f"{out.stdout}\n{out.stderr}"
+    res = json.loads(lines[-1][len("RESULT:"):])
+    assert res["algs"] == ["geomatics:installdependencies"]
+    assert res["missing"] == ["scipy"]
+    assert "scipy for every algorithm" in res["text"]
+    assert "only the installer" in res["text"]
