@@ -151,7 +151,9 @@ echo "$@" >> "$ARGS_LOG"
 prev=""
 for a in "$@"; do
   if [ "$prev" = "--report" ]; then
-    printf '{"version": "1", "install": [{"metadata": {"name": "scipy", "version": "1.10.1"}}, {"metadata": {"name": "laspy", "version": "2.7.0"}}]}' > "$a"
+    printf '{"version": "1", "install": [' > "$a"
+    printf '{"metadata": {"name": "scipy", "version": "1.10.1"}}, ' >> "$a"
+    printf '{"metadata": {"name": "laspy", "version": "2.7.0"}}]}' >> "$a"
   fi
   if [ "$prev" = "-c" ]; then cat "$a" >> "$ARGS_LOG"; fi
   prev="$a"
