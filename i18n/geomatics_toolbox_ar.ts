@@ -1591,10 +1591,6 @@
             <translation>سماحية الانحدار، 0 = مشتقة (ارتفاع/مسافة)</translation>
         </message>
         <message>
-            <source>Height tolerance (m)</source>
-            <translation>سماحية الارتفاع (م)</translation>
-        </message>
-        <message>
             <source>Refinement passes</source>
             <translation>تمريرات التحسين</translation>
         </message>
@@ -1609,10 +1605,6 @@
         <message>
             <source>Low-outlier depth below neighbours (m)</source>
             <translation>عمق القيمة الشاذة المنخفضة تحت الجيران (م)</translation>
-        </message>
-        <message>
-            <source>Recommended ground filter: window {} m, threshold {} m, {} refinement passes</source>
-            <translation>مرشح الأرض الموصى به: نافذة {} م، عتبة {} م، {} تمريرات تحسين</translation>
         </message>
         <message>
             <source>0 = derived from the point density (about 1 m).</source>
@@ -1635,8 +1627,16 @@
             <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) دون أي معامل يُضبط: مرشح مورفولوجي تدريجي (Pingel et al. 2013) يُشتق حجم خليته وتفاوت انحداره من السحابة، ويُطبَّق على التضاريس بعد إزالة انحدارها الإقليمي؛ وتُستعاد قمم التضاريس التي أزالها، ثم تمريرات تعيد بناء التضاريس وتختبر كل نقطة من جديد. على عينات اختبار المرشحات الثماني من ISPRS يبلغ خطؤه الكلي بالتحقق المتقاطع 3.50 % (SMRF بالقيم الافتراضية لـ PDAL: 5.75 %).</translation>
         </message>
         <message>
-            <source>Plus 1.0 m per unit of terrain slope.</source>
-            <translation>مضافًا إليه 1.0 م لكل وحدة من انحدار التضاريس.</translation>
+            <source>0 = 0.3 × the mean point spacing, 0.25 to 0.5 m; plus 1.0 m per unit of terrain slope.</source>
+            <translation>0 = ‏0.3 × متوسط تباعد النقاط، من 0.25 إلى 0.5 م؛ زائد 1.0 م لكل وحدة من انحدار التضاريس.</translation>
+        </message>
+        <message>
+            <source>Height tolerance, 0 = derived (m)</source>
+            <translation>سماحية الارتفاع، 0 = مشتقة (م)</translation>
+        </message>
+        <message>
+            <source>Recommended ground filter: window {} m, {} refinement passes; cell and tolerances derived from the cloud (see the report)</source>
+            <translation>مرشح الأرض الموصى به: النافذة {} م، {} تمريرات تحسين؛ الخلية والسماحيات مشتقة من السحابة (انظر التقرير)</translation>
         </message>
     </context>
     <context>

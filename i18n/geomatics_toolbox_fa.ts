@@ -1591,10 +1591,6 @@
             <translation>تلورانس شیب، 0 = برگرفته (ارتفاع/فاصله)</translation>
         </message>
         <message>
-            <source>Height tolerance (m)</source>
-            <translation>تلورانس ارتفاع (متر)</translation>
-        </message>
-        <message>
             <source>Refinement passes</source>
             <translation>گذرهای پالایش</translation>
         </message>
@@ -1609,10 +1605,6 @@
         <message>
             <source>Low-outlier depth below neighbours (m)</source>
             <translation>عمق نقطهٔ پرت پایین نسبت به همسایه‌ها (متر)</translation>
-        </message>
-        <message>
-            <source>Recommended ground filter: window {} m, threshold {} m, {} refinement passes</source>
-            <translation>فیلتر زمین پیشنهادی: پنجره {} متر، آستانه {} متر، {} گذر پالایش</translation>
         </message>
         <message>
             <source>0 = derived from the point density (about 1 m).</source>
@@ -1635,8 +1627,16 @@
             <translation>ابر نقطهٔ LAS/LAZ را بدون هیچ پارامتری به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) طبقه‌بندی می‌کند: یک فیلتر ریخت‌شناسی تدریجی (Pingel et al. 2013) که اندازهٔ سلول و رواداری شیب آن از خود ابر به دست می‌آید و روی زمینِ بدون شیب منطقه‌ای اعمال می‌شود؛ تیغه‌های زمین را که حذف کرده است باز می‌گرداند، سپس گذرهایی زمین را بازسازی و هر نقطه را دوباره آزمون می‌کنند. روی 8 نمونهٔ آزمون فیلترهای ISPRS خطای کل آن با اعتبارسنجی متقابل 3.50 % است (SMRF با پیش‌فرض‌های PDAL: 5.75 %).</translation>
         </message>
         <message>
-            <source>Plus 1.0 m per unit of terrain slope.</source>
-            <translation>به‌علاوهٔ 1.0 متر برای هر واحد شیب زمین.</translation>
+            <source>0 = 0.3 × the mean point spacing, 0.25 to 0.5 m; plus 1.0 m per unit of terrain slope.</source>
+            <translation>0 = ‏0.3 × میانگین فاصلهٔ نقاط، از 0.25 تا 0.5 متر؛ به‌علاوهٔ 1.0 متر به ازای هر واحد شیب زمین.</translation>
+        </message>
+        <message>
+            <source>Height tolerance, 0 = derived (m)</source>
+            <translation>تلورانس ارتفاع، 0 = برگرفته (متر)</translation>
+        </message>
+        <message>
+            <source>Recommended ground filter: window {} m, {} refinement passes; cell and tolerances derived from the cloud (see the report)</source>
+            <translation>فیلتر زمین پیشنهادی: پنجره {} متر، {} گذر پالایش؛ سلول و تلورانس‌ها برگرفته از ابر (گزارش را ببینید)</translation>
         </message>
     </context>
     <context>
