@@ -84,6 +84,9 @@ class ChunkTask:
     outputs: Dict[str, str] = field(default_factory=dict)   # LAS, DTM, DONE
     fail_once: bool = False                                   # tests: first attempt fails
     strip_shares: List[float] = field(default_factory=list)  # 1 / consumers per strip
+    #: Metres per horizontal / vertical unit of the tiles (feet tiles: the filter runs
+    #: on metres, the geometry above is in the tiles' units).
+    units: Tuple[float, float] = (1.0, 1.0)
 
     @property
     def neighbours(self) -> List[str]:
@@ -248,9 +251,14 @@ def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
     """
     if not core.any():
         return np.zeros(core.size, np.uint8)
+    h, v = task.units
+    origin = task.origin
+    if (h, v) != (1.0, 1.0):          # every length of the filters is metres
+        xyz = (np.asarray(xyz[0]) * h, np.asarray(xyz[1]) * h, np.asarray(xyz[2]) * v)
+        origin = (origin[0] * h, origin[1] * h)
     pts = PointData(*xyz, dims=dims)
     return classify_points(pts, ground_filter(task.ground_filter),
-                           default_selection(task.ground_filter), origin=task.origin)
+                           default_selection(task.ground_filter), origin=origin)
 
 
 def _write_outputs(task: ChunkTask, xyz, dims, core, cls, dtm, grid, records=None) -> None:

@@ -178,19 +178,12 @@ def _crs_groups(infos: Sequence[LasInfo]) -> List[List[LasInfo]]:
 
 
 def _check_tiles(infos: Sequence[LasInfo]) -> None:
-    """Refuse tiles in degrees or in feet, and duplicated tiles, from the headers."""
+    """Refuse tiles in degrees, and duplicated tiles, from the headers."""
     t = infos[0]
     if crs_is_geographic(t.crs):
         raise InputError("The tiles ({tile}, ...) are in a geographic CRS (longitude/"
                          "latitude in degrees); tiles, buffers and cells need metres. "
                          "{hint}", tile=os.path.basename(t.path), hint=REPROJECT_HINT)
-    if not t.units.metric:
-        raise InputError(
-            "The tiles ({tile}, ...) are in {units}; the catalog works on tiles in metres "
-            "only (single-file algorithms convert feet). Reproject them to a metre CRS "
-            "first, e.g. 'pdal translate in.laz out.laz reprojection "
-            "--filters.reprojection.out_srs=EPSG:26913'.", tile=os.path.basename(t.path),
-            units=t.units.describe())
     seen: Dict[tuple, str] = {}
     dups = []
     for info in infos:
@@ -264,8 +257,11 @@ MAX_CHUNK_POINTS = 200_000_000
 
 
 def _check_chunks(cat: Catalog, chunk_size: float, cell_size: float, buffer: float,
-                  origin) -> None:
-    """Refuse a plan with too many chunks, or chunks too big for a worker, up front."""
+                  origin, *, h: float = 1.0) -> None:
+    """Refuse a plan with too many chunks, or chunks too big for a worker, up front.
+
+    Lengths in the tiles' units; ``h`` metres per unit (the messages speak metres).
+    """
     e = cat.extent
     if chunk_size:
         ox, oy = origin
@@ -276,9 +272,9 @@ def _check_chunks(cat: Catalog, chunk_size: float, cell_size: float, buffer: flo
                 "CHUNK_SIZE {chunk_size} m cuts the catalog ({w} × {h} m) into up to {n} "
                 "chunks, more than {limit}; each chunk costs scheduling and reading "
                 "overhead. Use CHUNK_SIZE 0 (one chunk per tile) or at least {fit} m.",
-                chunk_size=f"{chunk_size:g}", w=f"{e[2] - e[0]:.0f}", h=f"{e[3] - e[1]:.0f}",
-                n=f"{nx * ny:,}", limit=f"{MAX_CHUNKS:,}",
-                fit=f"{math.ceil(math.sqrt((e[2] - e[0]) * (e[3] - e[1]) / MAX_CHUNKS)):g}")
+                chunk_size=f"{chunk_size * h:g}", w=f"{(e[2] - e[0]) * h:.0f}",
+                h=f"{(e[3] - e[1]) * h:.0f}", n=f"{nx * ny:,}", limit=f"{MAX_CHUNKS:,}",
+                fit=f"{math.ceil(h * math.sqrt((e[2] - e[0]) * (e[3] - e[1]) / MAX_CHUNKS)):g}")
         side = chunk_size
         check_grid_size(math.ceil((side + 2 * buffer) / cell_size),
                         math.ceil((side + 2 * buffer) / cell_size), cell_size)
@@ -437,15 +433,22 @@ def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
     _check_params(ground_filter, dtm_method, cell_size, buffer, chunk_size)
     folder = Path(folder)
     _check_folder(cat, folder)
-    if origin is None:
+    # Lengths are metres (DEVELOPERS.md, Units); tiles in feet: the geometry (buffer,
+    # cells, chunks, gap distance) in the tiles' units, the filter on metres (filter_chunk)
+    units = cat.tiles[0].units
+    h = units.h
+    if origin is None:      # a whole kilometre, in metres whatever the tiles' units
         e = cat.extent
-        origin = (math.floor(e[0] / 1000.0) * 1000.0, math.floor(e[1] / 1000.0) * 1000.0)
-    md = cat.default_max_distance() if max_distance is None else float(max_distance)
-    common = dict(buffer=float(buffer), origin=(float(origin[0]), float(origin[1])),
-                  cell_size=float(cell_size), crs=cat.crs, ground_filter=ground_filter,
-                  dtm_method=dtm_method, max_distance=md)
-    _check_chunks(cat, float(chunk_size), float(cell_size), float(buffer), origin)
-    tasks = (_box_tasks(cat, folder, float(chunk_size), common) if chunk_size
+        origin = (math.floor(e[0] * h / 1000.0) * 1000.0 / h,
+                  math.floor(e[1] * h / 1000.0) * 1000.0 / h)
+    buffer, cell_size, chunk_size = float(buffer) / h, float(cell_size) / h, \
+        float(chunk_size) / h
+    md = cat.default_max_distance() if max_distance is None else float(max_distance) / h
+    common = dict(buffer=buffer, origin=(float(origin[0]), float(origin[1])),
+                  cell_size=cell_size, crs=cat.crs, ground_filter=ground_filter,
+                  dtm_method=dtm_method, max_distance=md, units=(h, units.v))
+    _check_chunks(cat, chunk_size, cell_size, buffer, origin, h=h)
+    tasks = (_box_tasks(cat, folder, chunk_size, common) if chunk_size
              else _tile_tasks(cat, folder, common))
     outs = {f"{k}:{i}": v for i, t in enumerate(tasks) for k, v in t.outputs.items()
             if k != "DONE"}

@@ -68,13 +68,11 @@ def test_duplicate_tile_refused(tiles, tmp_path):
     _refused([*tiles, str(copy)], tmp_path / "out", r"Duplicated tiles.*a\.las = a_copy\.las")
 
 
-def test_degree_and_feet_tiles_refused(tmp_path):
+def test_degree_tiles_refused(tmp_path):
     d = tmp_path / "t"
     d.mkdir()
     geo = [_tile(d / "g.las", 9.0, 48.0, crs="EPSG:4326")]
     _refused(geo, tmp_path / "out", r"geographic CRS")
-    ft = [_tile(d / "f.las", 1_600_000, 13_000_000, crs="EPSG:2994")]
-    _refused(ft, tmp_path / "out2", r"are in foot \(ft\).*metres only")
 
 
 @pytest.mark.parametrize("chunk,message", [
@@ -147,3 +145,46 @@ def test_unreadable_tiles_all_named_or_skipped_on_request(tiles, tmp_path):
     assert cat.paths == tiles and sorted(cat.unreadable) == [str(bad1), str(bad2)]
     with pytest.raises(InputError, match=r"2 tile\(s\) cannot be read"):
         cc.Catalog.open([str(bad1), str(bad2)], skip_unreadable=True)     # nothing left
+
+
+def test_catalog_of_feet_tiles_equals_its_metre_copy(tmp_path):
+    """Tiles in US survey feet: the same classes, the same DTMs (converted) as metres."""
+    import laspy
+
+    from geomatics_toolbox.core.io.raster import read_raster
+    from geomatics_toolbox.core.io.units import US_FOOT
+    from geomatics_toolbox.synthetic.hostile import unit_copy
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+    ft_m = US_FOOT.metres
+    t = generate_tile(extent=(120.0, 80.0), origin=(500_000.37, 4_000_000.41), density=3.0,
+                      seed=11, n_buildings=1, n_halls=0, scale=0.0001)
+    src = tmp_path / "src"
+    src.mkdir()
+    write_tile(t, src / "all.las")
+    las = laspy.read(src / "all.las")
+    for k, half in enumerate((las.x < 500_060.37, las.x >= 500_060.37)):
+        sub = laspy.LasData(las.header)
+        sub.points = las.points[np.asarray(half)]
+        sub.write(src / f"t{k}.las")
+    dirs = {"m": tmp_path / "m", "ft": tmp_path / "ft"}
+    for d in dirs.values():
+        d.mkdir()
+    for k in range(2):
+        unit_copy(src / f"t{k}.las", dirs["m"] / f"t{k}.las", unit_metres=1.0,
+                  keys={1024: 1, 3072: 32632}, scale=0.0001)
+        unit_copy(src / f"t{k}.las", dirs["ft"] / f"t{k}.las", scale=0.0001)
+    res = {k: cc.run_catalog(str(d), tmp_path / f"out_{k}", workers=1, cell_size=2.0,
+                             buffer=30.0) for k, d in dirs.items()}
+    assert not res["m"].failed and not res["ft"].failed
+    for k in range(2):
+        cm = laspy.read(tmp_path / "out_m" / f"t{k}_classified.las").classification
+        cf = laspy.read(tmp_path / "out_ft" / f"t{k}_classified.las").classification
+        assert np.array_equal(cm, cf), int(np.count_nonzero(cm != cf))
+        rm = read_raster(tmp_path / "out_m" / f"t{k}_dtm.tif")
+        rf = read_raster(tmp_path / "out_ft" / f"t{k}_dtm.tif")
+        assert rm.shape == rf.shape
+        np.testing.assert_allclose(np.array(rf.geotransform) * ft_m, rm.geotransform,
+                                   atol=1e-6)
+        dm, df = rm.masked(), rf.masked() * ft_m
+        assert np.array_equal(np.isnan(dm), np.isnan(df))
+        assert np.nanmedian(np.abs(dm - df)) < 1e-4
