@@ -203,3 +203,25 @@ def test_elevation_change_in_feet_equals_metres(qgis_processing, clouds, tmp_pat
         assert res["ft"][key] == pytest.approx(res["m"][key], rel=1e-3, abs=1e-6), key
     assert res["m"]["FILL_VOLUME"] > 1000                        # ~50 m × 100 m × 1 m
     _same_dtm(res["m"]["OUTPUT"], res["ft"]["OUTPUT"], tol=1e-3)
+
+
+def test_mixed_units_feet_plan_metre_heights(qgis_processing, clouds, tmp_path):
+    """US data often has x, y in US survey feet and z in metres (VerticalUnitsGeoKey)."""
+    d = clouds["dir"]
+    mixed = unit_copy(d / "src.las", tmp_path / "mixed.las", scale=0.0001,
+                      vertical_metres=1.0,
+                      keys={1024: 1, 3072: 2903, 3076: 9003, 4096: 5703, 4099: 9001})
+    out = {}
+    for k, src in (("m", clouds["m"]), ("mixed", mixed)):
+        out[k] = qgis_processing.run("geomatics:groundfilter", {
+            "INPUT": src, "OUTPUT": str(tmp_path / f"gf_{k}.las")})["OUTPUT"]
+    assert np.array_equal(_classes(out["m"]), _classes(out["mixed"]))
+    dtm = {k: qgis_processing.run("geomatics:idwdtm", {
+        "INPUT": src, "CELL_SIZE": 2.0, "POWER": 2.0, "FILL_GAPS": True,
+        "OUTPUT": str(tmp_path / f"{k}.tif")})["OUTPUT"]
+        for k, src in (("m", clouds["m"]), ("mixed", mixed))}
+    am, gm, _ = _raster(dtm["m"])
+    af, gf, uf = _raster(dtm["mixed"])
+    assert uf == "m"                                   # heights stay metres
+    np.testing.assert_allclose(gf * FT, gm, atol=1e-6)  # the grid in ftUS
+    assert np.nanmedian(np.abs(af - am)) < 1e-4        # no vertical conversion
