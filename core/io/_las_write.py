@@ -19,6 +19,20 @@ from .crs import spatial_reference
 from .las import DEFAULT_CHUNK, LasInfo, _check_dims, _laspy, _open, las_info
 
 
+def check_las_name(dst) -> None:
+    """Refuse to write a point cloud under a name that is not .las/.laz (``c.tif``)."""
+    if not os.fspath(dst).lower().endswith((".las", ".laz")):
+        from .contract import TEMP_MARK, is_temp
+        if is_temp(dst):        # name the destination the user chose, not the temporary
+            name = os.path.basename(os.fspath(dst))
+            stem = name[1:name.index(TEMP_MARK)]
+            dst = os.path.join(os.path.dirname(os.fspath(dst)),
+                               stem + os.path.splitext(name)[1])
+        raise InputError("A point cloud cannot be written as {path}: LAS/LAZ content under "
+                         "another extension would be mistaken for another format. Choose "
+                         "a file name ending in .las or .laz.", path=os.fspath(dst))
+
+
 def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] = None,
                    mask: Optional[np.ndarray] = None, chunk_size: int = DEFAULT_CHUNK,
                    extra: Optional[Mapping[str, np.ndarray]] = None,
@@ -56,6 +70,7 @@ def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] =
     """
     laspy = _laspy()
     mon = Monitor(progress, cancel)
+    check_las_name(dst)
     check_not_input(dst, src)
     info = las_info(src)
     if info.count == 0:
@@ -249,6 +264,7 @@ def write_las(dst, x, y, z, *, dimensions: Optional[Mapping[str, np.ndarray]] = 
         Extra-bytes dimensions to declare, e.g. ``{"height_above_ground": "f4"}``.
     """
     laspy = _laspy()
+    check_las_name(dst)
     x, y, z = (np.asarray(v, dtype=np.float64) for v in (x, y, z))
     if not (x.shape == y.shape == z.shape) or x.ndim != 1:
         raise InputError("x, y and z must be 1-D arrays of equal length.")

@@ -180,3 +180,14 @@ def test_lidartodtm_lon_lat_check_points_clear_message(qgis_processing, data, tm
         "OUTPUT_DTM": str(outs[1])},
         r"look like longitude/latitude in degrees.*EPSG:32632", [data["laz"], csv], outs)
     assert "Duplicated" not in text
+
+
+# ----------------------------------------------------------------- 5. a cloud as c.tif
+@pytest.mark.parametrize("name", ["c.tif", "c.txt"])
+def test_buildings_cloud_output_with_a_wrong_extension_refused(qgis_processing, data,
+                                                               tmp_path, name):
+    outs = [tmp_path / "b.gpkg", tmp_path / name]
+    refused(qgis_processing, "geomatics:buildings", {
+        "INPUT": str(data["laz"]), "OUTPUT": str(outs[0]), "OUTPUT_CLOUD": str(outs[1])},
+        r"A point cloud cannot be written as .*" + name.replace(".", r"\.")
+        + r".*\.las or \.laz", [data["laz"]], outs)
