@@ -506,11 +506,32 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
             return False, message
         return super().checkParameterValues(parameters, context)
 
+    def check_numbers(self, parameters, context) -> None:
+        """Refuse a number parameter given as NaN or infinity (``THRESHOLD=nan``).
+
+        QGIS passes such text through as a float, which comparisons like ``> 0`` then
+        silently turn into "use the default"; refused before anything runs.
+        """
+        import math
+
+        from qgis.core import QgsProcessingParameterNumber
+        for definition in self.parameterDefinitions():
+            if not isinstance(definition, QgsProcessingParameterNumber):
+                continue
+            name = definition.name()
+            if parameters is None or parameters.get(name) in (None, ""):
+                continue
+            value = self.parameterAsDouble(parameters, name, context)
+            if not math.isfinite(value):
+                raise InputError("{name} must be a finite number, got {value}; give a value "
+                                 "or leave the default.", name=name, value=value)
+
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         try:
             message = self.missing_packages_message(parameters)
             if message:
                 raise QgsProcessingException(message)
+            self.check_numbers(parameters, context)
             return self.process(parameters, context, feedback)
         except QgsProcessingException:
             raise

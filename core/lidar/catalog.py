@@ -613,6 +613,11 @@ def _mosaic(cat, folder: Path, tasks, failed, chunks, cog: bool):
     """VRT (and COG) of the chunk DTMs that exist (failed and empty chunks left out)."""
     empty = {c["key"] for c in chunks if c.get("status") == "empty"}
     rasters = [t.outputs["DTM"] for t in tasks if t.key not in failed and t.key not in empty]
+    if not rasters and failed:
+        key, error = next(iter(failed.items()))
+        raise InputError("Every chunk failed ({n} of {total}); no DTM was made. First "
+                         "failure: {key}: {error}", n=len(failed), total=len(tasks),
+                         key=key, error=str(error)[:400])
     vrt = str(folder / "dtm.vrt")
     cog_path = str(folder / "dtm_cog.tif") if cog else None
     with OutputContract({"VRT": vrt, "COG": cog_path}, inputs={"TILES": cat.paths}) as out:

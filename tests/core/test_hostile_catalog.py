@@ -188,3 +188,23 @@ def test_catalog_of_feet_tiles_equals_its_metre_copy(tmp_path):
         dm, df = rm.masked(), rf.masked() * ft_m
         assert np.array_equal(np.isnan(dm), np.isnan(df))
         assert np.nanmedian(np.abs(dm - df)) < 1e-4
+
+
+def test_every_chunk_failed_is_an_error_naming_the_first(tmp_path):
+    import struct
+
+    from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+    d = tmp_path / "laz"
+    d.mkdir()
+    for k, x0 in enumerate((500_000.0, 500_060.0)):
+        p = d / f"t{k}.laz"
+        write_tile(generate_tile(extent=(60.0, 60.0), origin=(x0, 4e6), density=2.0, seed=k),
+                   p)
+        cut = bytearray(p.read_bytes())
+        cut = cut[: len(cut) // 2]          # damage the header cannot reveal (see test_catalog)
+        struct.pack_into("<q", cut, struct.unpack_from("<I", cut, 96)[0], -1)
+        p.write_bytes(bytes(cut))
+    with pytest.raises(InputError, match=r"Every chunk failed \(2 of 2\); no DTM was made. "
+                                         r"First failure: t\d: .*truncated or corrupt"):
+        cc.run_catalog(str(d), tmp_path / "out", workers=1, ground_filter="keep",
+                       buffer=0.0, cell_size=2.0)

@@ -145,8 +145,8 @@ def test_elevationchange_clouds_other_crs_and_same_file_refused(qgis_processing,
 # ----------------------------------------------------------------- 5. numbers that lie
 @pytest.mark.parametrize("params,message", [
     ({"MAX_WINDOW": 0}, r"MAX_WINDOW must be a number > 0, got 0"),
-    ({"THRESHOLD": float("nan")}, r"THRESHOLD must be a number > 0, got nan"),
-    ({"CELL": float("nan")}, r"CELL must be a number >= 0 \(0 = derived\), got nan"),
+    ({"THRESHOLD": float("nan")}, r"THRESHOLD must be a finite number, got nan"),
+    ({"CELL": float("nan")}, r"CELL must be a finite number, got nan"),
 ])
 def test_groundfilter_nonsense_numbers_refused(qgis_processing, data, tmp_path, params,
                                                message):
@@ -191,3 +191,15 @@ def test_buildings_cloud_output_with_a_wrong_extension_refused(qgis_processing, 
         "INPUT": str(data["laz"]), "OUTPUT": str(outs[0]), "OUTPUT_CLOUD": str(outs[1])},
         r"A point cloud cannot be written as .*" + name.replace(".", r"\.")
         + r".*\.las or \.laz", [data["laz"]], outs)
+
+
+@pytest.mark.parametrize("alg,param", [
+    ("geomatics:idwdtm", "POWER"), ("geomatics:idwdtm", "CELL_SIZE"),
+    ("geomatics:lsqgroundfilter", "THRESHOLD"), ("geomatics:slopegroundfilter", "RADIUS"),
+    ("geomatics:tindtm", "MAX_EDGE"),
+])
+def test_not_a_number_refused_everywhere(qgis_processing, data, tmp_path, alg, param):
+    out = tmp_path / ("o.tif" if "dtm" in alg else "o.laz")
+    refused(qgis_processing, alg, {"INPUT": str(data["laz"]), param: float("nan"),
+                                   "OUTPUT": str(out)},
+            param + r" must be a finite number, got nan", [data["laz"]], [out])
