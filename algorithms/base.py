@@ -29,7 +29,7 @@ from qgis.core import (
     QgsProcessingUtils,
     QgsProviderRegistry,
 )
-from qgis.PyQt.QtCore import QCoreApplication, QUrl
+from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QUrl
 from qgis.PyQt.QtGui import QIcon
 
 from ..core import deps
@@ -295,6 +295,17 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
     NOISE = "NOISE"
     NOISE_RADIUS = "NOISE_RADIUS"
     NOISE_THRESHOLD = "NOISE_THRESHOLD"
+
+    #: help note on the NOISE default (QT_TRANSLATE_NOOP: pylupdate5 files it)
+    NOISE_DEFAULT_NOTE = QT_TRANSLATE_NOOP(
+        "GeomaticsAlgorithm",
+        "Its default was chosen by leave-one-sample-out cross-validation over the ISPRS "
+        "samples and synthetic forest, cliff, lake and bridge scenes "
+        "(benchmarks/results/defaults.md).")
+
+    def noise_note(self) -> str:
+        """The translated :data:`NOISE_DEFAULT_NOTE`."""
+        return self.tr(self.NOISE_DEFAULT_NOTE)  # i18n: noop-list
 
     def add_noise_params(self, default: bool = True) -> None:
         """NOISE (default ``default``), NOISE_RADIUS (m, 5) and NOISE_THRESHOLD (m, 1)."""

@@ -47,7 +47,7 @@ class _GroundCommon(LidarFilterMixin):
                                      "and take no part."),
             self.NOISE: self.tr("Points far below their neighbours (multipath) get class 7 "
                                 "and take no part: one stray low point would reject every "
-                                "ground point around it."),
+                                "ground point around it.") + " " + self.noise_note(),
             self.NOISE_RADIUS: self.tr("Side of the cells searched for lower neighbours."),
             self.NOISE_THRESHOLD: self.tr("A point this far below the points around it is "
                                           "a low outlier."),

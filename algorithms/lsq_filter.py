@@ -88,7 +88,7 @@ class LsqGroundFilterAlgorithm(LidarFilterMixin):
                              "of the 8 ISPRS samples (mean 7.2 % against 21.3 %; 9.5 % "
                              "against 29.6 % on the four it was not tuned on)."),
              self.NOISE: self.tr("Points far below their neighbours (multipath) get class "
-                                 "7 and take no part in the fit."),
+                                 "7 and take no part in the fit.") + " " + self.noise_note(),
              self.SUBSET_SIZE: self.tr("The paper used 5000; every point is still "
                                        "classified."),
              self.SPARSE_TILES: self.tr("Tiles with too few points borrow the nearest "

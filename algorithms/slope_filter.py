@@ -49,7 +49,7 @@ class _SlopeCommon(LidarFilterMixin):
                                   "return numbers count every point as a last return."),
             self.NOISE: self.tr("Points far below their neighbours (multipath) get class 7 "
                                 "and take no part: one stray low point would reject every "
-                                "ground point around it."),
+                                "ground point around it.") + " " + self.noise_note(),
             self.MODE: self.tr("Terrain-adaptive (this toolbox's extension) applies the "
                                "rule to heights above a smooth low terrain trend, so "
                                "natural slopes steeper than θ are kept (ISPRS samp11: "

@@ -1390,6 +1390,10 @@
             <source>This QGIS build has no PDAL point-cloud provider, so point clouds cannot be loaded as layers (COPC needs QGIS 3.26 or later): give the .las, .laz or .copc.laz file.</source>
             <translation>نسخة QGIS هذه لا تحتوي على مزوّد سحب النقاط PDAL، لذا لا يمكن تحميل سحب النقاط كطبقات (يتطلب COPC الإصدار QGIS 3.26 أو أحدث): أعطِ ملف ‎.las‏ أو ‎.laz‏ أو ‎.copc.laz‏.</translation>
         </message>
+        <message>
+            <source>Its default was chosen by leave-one-sample-out cross-validation over the ISPRS samples and synthetic forest, cliff, lake and bridge scenes (benchmarks/results/defaults.md).</source>
+            <translation>اختير افتراضيه بالتحقق المتقاطع بترك عيّنة واحدة خارجاً على عيّنات ISPRS ومشاهد اصطناعية لغابة وجروف وبحيرة وجسر (benchmarks/results/defaults.md).</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>

@@ -370,16 +370,12 @@
             <translation>باید از بُرد فیلتر (حدود 100 متر برای فیلتر پیشنهادی، 240 متر برای LSQ بهبودیافته و 120 متر برای فیلتر شیب سازگار با عوارض) و فاصلهٔ جست‌وجوی مدل رقومی زمین بیشتر باشد.</translation>
         </message>
         <message>
-            <source>Ground filter (progressive TIN densification)</source>
-            <translation>فیلتر زمین (متراکم‌سازی تدریجی TIN)</translation>
+            <source>DTM mosaic (VRT)</source>
+            <translation>موزاییک مدل رقومی زمین (VRT)</translation>
         </message>
         <message>
             <source>Tiles: LAS/LAZ files, folders or a .vpc</source>
             <translation>کاشی‌ها: فایل‌های LAS/LAZ، پوشه‌ها یا یک ‎.vpc</translation>
-        </message>
-        <message>
-            <source>DTM mosaic (VRT)</source>
-            <translation>موزاییک مدل رقومی زمین (VRT)</translation>
         </message>
         <message>
             <source>Tile {key}: finished by an earlier run, kept.</source>
@@ -396,6 +392,10 @@
         <message>
             <source>Cancelled by the user. {n} finished tile(s) are kept in {folder}: run again with the same settings to resume; unfinished tiles left nothing.</source>
             <translation>کاربر لغو کرد. {n} کاشیِ تمام‌شده در {folder} نگه داشته شد: برای ادامه با همان تنظیمات دوباره اجرا کنید؛ کاشی‌های ناتمام چیزی به جا نگذاشتند.</translation>
+        </message>
+        <message>
+            <source>Ground filter (progressive TIN densification)</source>
+            <translation>فیلتر زمین (متراکم‌سازی تدریجی TIN)</translation>
         </message>
         <message>
             <source>Off: a damaged or truncated tile stops the run before anything is written, naming every such tile. On: those tiles are left out (named in the log) and their neighbours get no buffer points from them.</source>
@@ -1315,42 +1315,6 @@
             <translation>RMS_T نقاط چک (وگرنه به روش یکی‌کنارگذاری) برای تبدیل به‌کاررفته</translation>
         </message>
         <message>
-            <source>Set-up</source>
-            <translation>تنظیمات</translation>
-        </message>
-        <message>
-            <source>Pick a loaded point-cloud layer or a .las, .laz or .copc.laz file.</source>
-            <translation>یک لایهٔ ابر نقاط بارشده یا یک فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ انتخاب کنید.</translation>
-        </message>
-        <message>
-            <source>This QGIS build has no PDAL point-cloud provider: .las/.laz files cannot be loaded as layers here, COPC files (.copc.laz) can (QGIS 3.26 and later read them without PDAL). Give the .las, .laz or .copc.laz file.</source>
-            <translation>این نسخهٔ QGIS ارائه‌دهندهٔ ابر نقاط PDAL ندارد: فایل‌های ‎.las/.laz‏ را اینجا نمی‌توان به‌صورت لایه بار کرد، اما فایل‌های COPC ‏(‎.copc.laz‏) را می‌توان (QGIS 3.26 و نسخه‌های بعدی آن‌ها را بدون PDAL می‌خوانند). فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ را بدهید.</translation>
-        </message>
-        <message>
-            <source>This QGIS build has no PDAL point-cloud provider, so point clouds cannot be loaded as layers (COPC needs QGIS 3.26 or later): give the .las, .laz or .copc.laz file.</source>
-            <translation>این نسخهٔ QGIS ارائه‌دهندهٔ ابر نقاط PDAL ندارد، پس ابرهای نقاط را نمی‌توان به‌صورت لایه بار کرد (COPC به QGIS 3.26 یا جدیدتر نیاز دارد): فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ را بدهید.</translation>
-        </message>
-        <message>
-            <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
-            <translation>داده‌ها در افق بر حسب {} و در ارتفاع بر حسب {} هستند؛ به متر تبدیل می‌شوند، پس هر طولی که می‌دهید و هر طول در این گزارش کار به متر است.</translation>
-        </message>
-        <message>
-            <source>Project name (shown in the report)</source>
-            <translation>نام پروژه (در گزارش نمایش داده می‌شود)</translation>
-        </message>
-        <message>
-            <source>Operator (shown in the report)</source>
-            <translation>کاربر عامل (در گزارش نمایش داده می‌شود)</translation>
-        </message>
-        <message>
-            <source>Bilinear</source>
-            <translation>دوخطی</translation>
-        </message>
-        <message>
-            <source>Average</source>
-            <translation>میانگین (average)</translation>
-        </message>
-        <message>
             <source>Colour ramp</source>
             <translation>طیف رنگی</translation>
         </message>
@@ -1389,6 +1353,46 @@
         <message>
             <source>Exponential</source>
             <translation>نمایی (exponential)</translation>
+        </message>
+        <message>
+            <source>Bilinear</source>
+            <translation>دوخطی</translation>
+        </message>
+        <message>
+            <source>Average</source>
+            <translation>میانگین (average)</translation>
+        </message>
+        <message>
+            <source>The data are in {} horizontally and {} vertically; they are converted to metres, so every length you give and every length in this log is in metres.</source>
+            <translation>داده‌ها در افق بر حسب {} و در ارتفاع بر حسب {} هستند؛ به متر تبدیل می‌شوند، پس هر طولی که می‌دهید و هر طول در این گزارش کار به متر است.</translation>
+        </message>
+        <message>
+            <source>Project name (shown in the report)</source>
+            <translation>نام پروژه (در گزارش نمایش داده می‌شود)</translation>
+        </message>
+        <message>
+            <source>Operator (shown in the report)</source>
+            <translation>کاربر عامل (در گزارش نمایش داده می‌شود)</translation>
+        </message>
+        <message>
+            <source>Set-up</source>
+            <translation>تنظیمات</translation>
+        </message>
+        <message>
+            <source>Pick a loaded point-cloud layer or a .las, .laz or .copc.laz file.</source>
+            <translation>یک لایهٔ ابر نقاط بارشده یا یک فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ انتخاب کنید.</translation>
+        </message>
+        <message>
+            <source>This QGIS build has no PDAL point-cloud provider: .las/.laz files cannot be loaded as layers here, COPC files (.copc.laz) can (QGIS 3.26 and later read them without PDAL). Give the .las, .laz or .copc.laz file.</source>
+            <translation>این نسخهٔ QGIS ارائه‌دهندهٔ ابر نقاط PDAL ندارد: فایل‌های ‎.las/.laz‏ را اینجا نمی‌توان به‌صورت لایه بار کرد، اما فایل‌های COPC ‏(‎.copc.laz‏) را می‌توان (QGIS 3.26 و نسخه‌های بعدی آن‌ها را بدون PDAL می‌خوانند). فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ را بدهید.</translation>
+        </message>
+        <message>
+            <source>This QGIS build has no PDAL point-cloud provider, so point clouds cannot be loaded as layers (COPC needs QGIS 3.26 or later): give the .las, .laz or .copc.laz file.</source>
+            <translation>این نسخهٔ QGIS ارائه‌دهندهٔ ابر نقاط PDAL ندارد، پس ابرهای نقاط را نمی‌توان به‌صورت لایه بار کرد (COPC به QGIS 3.26 یا جدیدتر نیاز دارد): فایل ‎.las‏، ‎.laz‏ یا ‎.copc.laz‏ را بدهید.</translation>
+        </message>
+        <message>
+            <source>Its default was chosen by leave-one-sample-out cross-validation over the ISPRS samples and synthetic forest, cliff, lake and bridge scenes (benchmarks/results/defaults.md).</source>
+            <translation>پیش‌فرض آن با اعتبارسنجی متقابل حذف‌یک‌نمونه روی نمونه‌های ISPRS و صحنه‌های مصنوعی جنگل، صخره، دریاچه و پل انتخاب شده است (benchmarks/results/defaults.md).</translation>
         </message>
     </context>
     <context>
@@ -2646,7 +2650,7 @@
         </message>
         <message>
             <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest trusted point of each parcel larger than the largest building seeds a TIN, which takes the candidates (the lowest point per candidate cell) close enough to its facets until none is added; every other point is ground when it lies close to the final TIN. Its mean total error on the 8 ISPRS samples is 5.83 % at the defaults (Axelsson published 4.82 % over all 15 samples): use the recommended ground filter unless you need a TIN filter.</source>
-            <translation>ابر نقطهٔ LAS/LAZ را به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) با متراکم‌سازی تدریجی TIN (Axelsson 2000) طبقه‌بندی می‌کند: پایین‌ترین نقطهٔ مطمئن هر قطعهٔ بزرگ‌تر از بزرگ‌ترین ساختمان بذر یک TIN می‌شود که نقاط نامزد (پایین‌ترین نقطهٔ هر سلول نامزد) را که به‌قدر کافی به وجه‌هایش نزدیک‌اند می‌پذیرد تا جایی که نقطه‌ای افزوده نشود؛ هر نقطهٔ دیگر اگر به TIN نهایی نزدیک باشد زمین است. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 5.83 % است (Axelsson روی هر 15 نمونه 4.82 % گزارش کرد): مگر به پالایهٔ TIN نیاز دارید، پالایهٔ زمین پیشنهادی را به کار ببرید.</translation>
+            <translation>ابر نقطهٔ LAS/LAZ را به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) با متراکم‌سازی تدریجی TIN (Axelsson 2000) طبقه‌بندی می‌کند: پایین‌ترین نقطهٔ مطمئن هر قطعهٔ بزرگ‌تر از بزرگ‌ترین ساختمان بذر یک TIN می‌شود که نقاط نامزد (پایین‌ترین نقطهٔ هر سلول نامزد) را که به‌قدر کافی به وجه‌هایش نزدیک‌اند می‌پذیرد تا جایی که نقطه‌ای افزوده نشود؛ هر نقطهٔ دیگر اگر به TIN نهایی نزدیک باشد زمین است. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 5.83 % است (Axelsson روی هر 15 نمونه 4.82 % گزارش کرد): مگر به فیلتر TIN نیاز دارید، فیلتر زمین پیشنهادی را به کار ببرید.</translation>
         </message>
         <message>
             <source>Larger than the largest building.</source>

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-#: algorithm -> its LAS/LAZ inputs (catalog takes a folder and stays a string)
+#: algorithm -> its LAS/LAZ inputs (catalog takes a list of files and folders)
 LAS_INPUTS = {
     "lsqgroundfilter": ["INPUT"],
     "slopegroundfilter": ["INPUT"],

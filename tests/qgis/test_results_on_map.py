@@ -441,3 +441,24 @@ def test_rectified_image_loaded(qgis_processing, tmp_path):
     assert set(pending) == {res["OUTPUT"]}
     lyr = layer_of(project, res["OUTPUT"])
     assert lyr.isValid() and lyr.bandCount() >= 1
+
+
+#: layer outputs QGIS's own default style suits: a rectified image (RGB), a table
+UNSTYLED = {("rectifygcp", "OUTPUT"), ("gsdbatch", "OUTPUT")}
+
+
+def test_every_layer_output_declares_its_style(qgis_app):
+    """A new raster or vector output must say how it is drawn (OUTPUT_STYLES)."""
+    from geomatics_toolbox.algorithms import all_algorithms
+    from geomatics_toolbox.algorithms.base import LAYER_DESTINATIONS
+    from geomatics_toolbox.algorithms.styles import KINDS
+    missing, n = [], 0
+    for alg in all_algorithms():
+        alg.initAlgorithm()
+        for p in alg.destinationParameterDefinitions():
+            if p.type() not in LAYER_DESTINATIONS or (alg.name(), p.name()) in UNSTYLED:
+                continue
+            n += 1
+            if alg.OUTPUT_STYLES.get(p.name()) not in KINDS:
+                missing.append(f"{alg.name()} {p.name()}")
+    assert n >= 15 and not missing, missing
