@@ -10,7 +10,8 @@ al. 2020):
    ``geomatics:groundfilter`` runs it (input noise 7/18 kept, low outliers 7); or, with
    ``ground="keep"``, the input's own class 2 (and 7) as they are.
 2. **Height above ground** — a TIN DTM of the ground points (Delaunay, linear inside
-   each triangle; :func:`~..terrain.tin.tin_grid`) on a ``dtm_cell`` grid, sampled
+   each triangle; one point per cell where the ground is denser than the grid,
+   :func:`.buildings.ground_dtm`) on a ``dtm_cell`` grid, sampled
    bilinearly at every point (lidR ``normalize_height(las, tin())``, PDAL
    ``filters.hag_delaunay``).
 3. **Building (6)** — roof planes found by :func:`.buildings.extract_buildings` on the
@@ -213,8 +214,7 @@ def classify_points(x, y, z, classification=None, *, options: Optional[ClassifyO
     >>> res.counts[6], res.hag.max()                                   # doctest: +SKIP
     """
     from ..terrain.grid import grid_from_points
-    from ..terrain.tin import tin_grid
-    from .buildings import building_points, extract_buildings, fill_nearest
+    from .buildings import building_points, extract_buildings, ground_dtm
     opt = options or ClassifyOptions()
     mon = Monitor(progress, cancel)
     t0 = time.perf_counter()
@@ -233,7 +233,7 @@ def classify_points(x, y, z, classification=None, *, options: Optional[ClassifyO
         raise InputError("No point was classified as ground, so no height above ground "
                          "can be measured; check the input.")
     grid = grid_from_points(xm, ym, opt.dtm_cell, crs=crs)
-    dtm = fill_nearest(tin_grid(xm[ground], ym[ground], zm[ground], grid, fill=True).z)
+    dtm = ground_dtm(xm[ground], ym[ground], zm[ground], grid)
     hag = zm - height_above_ground(xm, ym, grid, dtm)
     mon.step(0.6)
     t_dtm = time.perf_counter()
