@@ -203,3 +203,20 @@ def test_not_a_number_refused_everywhere(qgis_processing, data, tmp_path, alg, p
     refused(qgis_processing, alg, {"INPUT": str(data["laz"]), param: float("nan"),
                                    "OUTPUT": str(out)},
             param + r" must be a finite number, got nan", [data["laz"]], [out])
+
+
+@pytest.mark.parametrize("param,source,dest,message", [
+    ("DTM", "dtm", "out.txt", r"raster output cannot be written as .*out\.txt.*\.tif"),
+    ("CLOUD", "cloud", "c.tif", r"cloud output cannot be written as .*c\.tif.*\.las or \.laz"),
+])
+def test_publishoutputs_wrong_format_refused(qgis_processing, data, tmp_path, param, source,
+                                             dest, message):
+    from geomatics_toolbox.core.io.raster import write_geotiff
+    dtm = write_geotiff(tmp_path / "src.tif", np.zeros((4, 4)),
+                        geotransform=(500_000, 1, 0, 4e6, 0, -1), crs="EPSG:32632")
+    src = {"dtm": dtm, "cloud": str(data["laz"])}[source]
+    out_param = {"DTM": "OUTPUT_DTM", "CLOUD": "OUTPUT"}[param]
+    out = tmp_path / dest
+    text = refused(qgis_processing, "geomatics:publishoutputs", {
+        param: src, out_param: str(out)}, message, [src], [out])
+    assert "Cannot guess driver" not in text and ".part-" not in text
