@@ -141,6 +141,8 @@ def build(filter_key: str = "auto"):
             continue
         name = d.name() if d.name() not in DTM_SETTINGS else f"FILTER_{d.name()}"
         sources["groundfilter"][d.name()] = Src.fromModelParameter(expose(d, name))
+    # 2b. project and operator, shown on every report of the chain (advanced, optional)
+    _expose_report_fields(algs, expose, sources)
     # 3. DTM settings
     idw = algs["dtm"]
     for name, default in DTM_SETTINGS.items():
@@ -184,6 +186,19 @@ def build(filter_key: str = "auto"):
         "FILTER": filter_id,
     })
     return m
+
+
+def _expose_report_fields(algs, expose, sources) -> None:
+    """REPORT_PROJECT / REPORT_OPERATOR as model inputs, passed to every child."""
+    from qgis.core import QgsProcessingModelChildParameterSource as Src
+    for name in ("REPORT_PROJECT", "REPORT_OPERATOR"):
+        defn = algs["groundfilter"].parameterDefinition(name)
+        if defn is None:
+            continue
+        model_name = expose(defn)
+        for child_id in ("groundfilter", "dtm", "accuracy"):
+            if algs[child_id].parameterDefinition(name) is not None:
+                sources[child_id][name] = Src.fromModelParameter(model_name)
 
 
 def _add_children(m, algs, sources) -> None:

@@ -89,7 +89,8 @@ def test_model_reports_name_the_published_files(qgis_processing, scene):
         "publish:Classified point cloud": str(d / "classified_2026.laz"),
         "publish:DTM": str(d / "dtm_2026.tif"),
         "publish:DTM report": str(d / "dtm_report.html"),
-        "publish:DTM accuracy report": str(d / "accuracy.html")})
+        "publish:DTM accuracy report": str(d / "accuracy.html"),
+        "REPORT_PROJECT": "Zagros 2026", "REPORT_OPERATOR": "S. Surveyor"})
     assert res["publish:DTM"] == str(d / "dtm_2026.tif")
     dtm_report = (d / "dtm_report.html").read_text(encoding="utf-8")
     accuracy = (d / "accuracy.html").read_text(encoding="utf-8")
@@ -97,6 +98,10 @@ def test_model_reports_name_the_published_files(qgis_processing, scene):
         assert "processing_" not in text and "OUTPUT." not in text
     assert "classified_2026.laz" in dtm_report
     assert "dtm_2026.tif" in accuracy
+    # the model's project and operator reach every report of the chain
+    for text in (dtm_report, accuracy):
+        about = _about(text)
+        assert about["Project"] == "Zagros 2026" and about["Operator"] == "S. Surveyor"
 
 
 def test_relabel_replaces_paths_then_names(tmp_path):
