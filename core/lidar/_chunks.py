@@ -17,6 +17,7 @@ from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
+from .. import classes as asprs
 from ..io.catalog import read_box
 from ..io.contract import OutputContract
 from ..io.las import PointData, read_las, write_las, write_las_like
@@ -34,7 +35,7 @@ from .filters import (
     register_ground_filter,
 )
 
-GROUND = 2
+GROUND = int(asprs.GROUND)
 __all__ = ["GROUND_FILTERS", "RECOMMENDED_FILTER", "DTM_METHODS", "register_ground_filter",
            "register_dtm_method", "default_ground_filter", "chunk_dtm", "ChunkTask",
            "process_chunk", "read_chunk", "read_strip", "filter_chunk", "snap_grid", "is_done",

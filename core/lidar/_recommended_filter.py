@@ -23,6 +23,7 @@ from typing import List, Optional
 import numpy as np
 from scipy import ndimage
 
+from .. import classes as asprs
 from ..progress import Monitor
 from ..reporting import KeyValues, Paragraph, T
 from . import _raster as R  # noqa: N812
@@ -30,7 +31,7 @@ from ._filter import FilterOutcome, OptionsFilter, check_classes
 
 __all__ = ["Derived", "RecommendedFilter", "water_candidates", "LABELS"]
 
-WATER = 9
+WATER = int(asprs.WATER)
 LABELS = {"cell": "Raster cell (m)", "max_window": "Largest window (m)",
           "slope": "Slope tolerance (rise/run)", "threshold": "Height tolerance (m)",
           "scaler": "Extra tolerance per unit of terrain slope (m)",

@@ -22,10 +22,11 @@ from typing import Optional, Sequence
 
 import numpy as np
 
+from .. import classes as asprs
 from ..errors import InputError
 from ..io.points import parse_classes as _parse_classes
 
-GROUND = 2
+GROUND = int(asprs.GROUND)
 
 
 @dataclass(frozen=True)

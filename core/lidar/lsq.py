@@ -75,6 +75,7 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
+from .. import classes as asprs
 from ..coords import as_xyz
 from ..errors import InputError
 from ..progress import Monitor
@@ -95,10 +96,10 @@ __all__ = ["lsq_ground_filter", "LsqResult", "TileGrid", "design_matrix", "n_coe
            "fit_tiles", "GROUND", "OTHER", "NOISE", "UNCLASSIFIED", "IMPROVED_DEFAULTS",
            "TERMS", "LsqOptions", "LsqFilter"]
 
-GROUND = 2
-OTHER = 1
+GROUND = int(asprs.GROUND)
+OTHER = int(asprs.UNCLASSIFIED)
 NOISE = NOISE_CLASS
-UNCLASSIFIED = 0
+UNCLASSIFIED = int(asprs.NEVER_CLASSIFIED)
 
 #: Faithful-mode iteration cap (the paper's tables end at iteration 5).
 FAITHFUL_MAX_ITERATIONS = 5

@@ -47,6 +47,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial import cKDTree
 
+from .. import classes as asprs
 from ..coords import as_xyz
 from ..errors import InputError
 from ..progress import Monitor
@@ -54,7 +55,7 @@ from ..progress import Monitor
 __all__ = ["flag_low_outliers", "NOISE_CLASS"]
 
 #: ASPRS class of low points (noise).
-NOISE_CLASS = 7
+NOISE_CLASS = int(asprs.LOW_NOISE)
 
 
 

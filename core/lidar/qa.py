@@ -22,6 +22,7 @@ from typing import Dict, List, Optional, Tuple
 
 import numpy as np
 
+from .. import classes as asprs
 from ..errors import InputError
 from ..reporting import Figure, KeyValues, Paragraph, Report, T, Table
 from ..reporting.svg import svg_bars, svg_raster
@@ -30,7 +31,7 @@ from ..terrain.grid import GridSpec, grid_from_points
 #: Candidate DTM cell sizes (m), smallest first.
 NICE_CELLS = (0.25, 0.5, 1.0, 2.0, 5.0, 10.0)
 #: ASPRS noise classes (low noise, high noise).
-NOISE_CLASSES = (7, 18)
+NOISE_CLASSES = tuple(int(c) for c in asprs.INPUT_NOISE)
 
 
 @dataclass

@@ -88,3 +88,15 @@ def test_lidar_surface_names_exist():
     import geomatics_toolbox.core.lidar as lidar
     assert len(lidar.__all__) >= 20
     assert all(hasattr(lidar, name) for name in lidar.__all__)
+
+
+def test_one_asprs_class_constant_set():
+    """ASPRS class codes are defined once (core/classes.py); other modules alias it."""
+    import re
+    root = Path(__file__).resolve().parents[2]
+    pattern = re.compile(r"^[A-Z_]*(GROUND|NOISE|OTHER|UNCLASSIFIED|BUILDING|VEGETATION|"
+                         r"WATER|OBJECT)[A-Z_]* = (np\.uint8\()?\(?[0-9]", re.M)
+    bad = [f"{p.relative_to(root)}: {m.group(0)}"
+           for p in sorted((root / "core").rglob("*.py")) if p.name != "classes.py"
+           for m in pattern.finditer(p.read_text(encoding="utf-8"))]
+    assert bad == []
