@@ -4,11 +4,12 @@ Generates a square catalog of LAZ tiles into a temporary folder (never committed
 removed at the end), runs the catalog with 1 and 2 local workers and reports:
 
 * wall time and points/s per run, peak memory (resident set) per worker;
-* CPU seconds per phase — inside the chunks (read, filter, dtm, write) and in the
-  client (index, plan, cluster start, compute, cluster close, mosaic) — and the
-  serial part (everything outside a chunk), its fraction of the 1-worker run, and the
-  2-worker speed-up it predicts on two idle cores (load-independent: chunk CPU
-  seconds, largest chunks first), next to the measured one;
+* CPU seconds per phase — inside the chunks (strips: their share of the neighbour
+  reads; read, filter, dtm, write) and in the client (index, plan, cluster start,
+  compute, cluster close, mosaic) — and the serial part (everything outside a chunk),
+  its fraction of the 1-worker run, and the 2-worker speed-up it predicts on two idle
+  cores (load-independent: chunk CPU seconds, largest chunks first), next to the
+  measured one;
 * a DTM seam check along every internal tile edge: each edge is recomputed from the
   points of a band of 2 x buffer on either side of it (a different decomposition) and
   compared with the catalog mosaic within 2 cells of the edge; and, when the catalog
@@ -68,7 +69,7 @@ def _classify(key, x, y, z, c0, origin):
 from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile  # noqa: E402
 
 DENSITY = 5.0
-CHUNK_PHASES = ("read", "filter", "dtm", "write")
+CHUNK_PHASES = ("strips", "read", "filter", "dtm", "write")   # strips: share of neighbour reads
 CLIENT_PHASES = ("index", "plan", "cluster start", "compute", "cluster close", "mosaic")
 
 
