@@ -32,7 +32,6 @@ from ..core.io.points import parse_classes, write_grid
 from ..core.io.raster import read_raster
 from ..core.io.units import Units, crs_units
 from ..core.progress import Monitor
-from ..core.reporting import translator
 from ..core.terrain import dsm as core_dsm
 from ..core.terrain import dtm as core_dtm
 from ..core.terrain import idw as core_idw
@@ -183,10 +182,6 @@ class _GridAlgorithm(GeomaticsAlgorithm):
                                     "distance."),
             self.OUTPUT: self.tr("GeoTIFF (float32, nodata −9999) in the cloud's CRS."),
         }
-
-    def tr_report(self, parameters, context):
-        """Translator of the report language (for the figures' text)."""
-        return translator(self.report_lang(parameters, context))
 
     # ---------------------------------------------------------------- helpers
     def resolve_crs(self, parameters, context, las_crs):
