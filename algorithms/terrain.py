@@ -138,7 +138,7 @@ class _GridAlgorithm(GeomaticsAlgorithm):
             name, label, options,
             allowMultiple=True, defaultValue=list(default), optional=True)
         # check boxes, not the chooser that only says "1 options selected"
-        param.setMetadata({"widget_wrapper": {"useCheckBoxes": True, "columns": 3}})
+        param.setMetadata({"widget_wrapper": {"useCheckBoxes": True, "columns": 2}})
         return param
 
     def classes(self, parameters, name, context):

@@ -83,6 +83,10 @@ def main(argv=None) -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     _setup()
+    # a throw-away QGIS profile: the locale set per language below never reaches the
+    # user's (or another process's) settings
+    profile = tempfile.mkdtemp(prefix="geomatics-screenshots-")
+    os.environ["QGIS_CUSTOM_CONFIG_PATH"] = profile
     from qgis.core import QgsApplication
     from qgis.PyQt.QtCore import Qt, QTranslator
     app = QgsApplication([], True)
@@ -104,6 +108,14 @@ def main(argv=None) -> int:
             QgsApplication.installTranslator(translator)
         QgsApplication.setLayoutDirection(Qt.RightToLeft if lang in ("ar", "fa")
                                           else Qt.LeftToRight)
+        # as QGIS started in that language: the plugin reads its locale setting
+        # (restored below: the profile's own setting is left as it was)
+        from qgis.core import QgsSettings
+        settings = QgsSettings()
+        saved = [(k, settings.value(k)) for k in ("locale/overrideFlag",
+                                                   "locale/userLocale")]
+        settings.setValue("locale/overrideFlag", lang != "en")
+        settings.setValue("locale/userLocale", lang)
         try:
             only = tuple(filter(None, args.only.split(",")))
             total += dialogs(out, lang, only)
@@ -112,6 +124,11 @@ def main(argv=None) -> int:
         finally:
             QgsApplication.removeTranslator(translator)
             QgsApplication.removeTranslator(qgis_translator)
+            for key, value in saved:
+                if value is None:
+                    settings.remove(key)
+                else:
+                    settings.setValue(key, value)
     print(f"wrote {total} screenshots to {out}")
     QgsApplication.processingRegistry().removeProvider(provider)
     return 0

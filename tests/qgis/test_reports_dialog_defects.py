@@ -196,8 +196,11 @@ def test_gcp_log_lines_translated_with_unit_symbol(qgis_processing, tmp_path, la
             feedback=log.feedback)
     finally:
         QCoreApplication.removeTranslator(translator)
-        settings.setValue("locale/overrideFlag", old[0] or False)
-        settings.setValue("locale/userLocale", old[1] or "")
+        for key, value in zip(("locale/overrideFlag", "locale/userLocale"), old):
+            if value is None:
+                settings.remove(key)
+            else:
+                settings.setValue(key, value)
     ours = [s for s in log.lines if ("RMS_T" in s or ".tif" in s)
             and not s.startswith("Results:")]      # (QGIS's own line)
     assert len(ours) >= 4, log.lines
