@@ -11,8 +11,8 @@ QGIS profile (:func:`packages_dir`), never into QGIS's site-packages, in two ste
 
 1. ``pip install --dry-run --report`` resolves the pins against what QGIS's Python
    already has (plus the private folder): only what is missing is planned — never
-   numpy, scipy or GDAL, which stay QGIS's own (a plan that would replace them is
-   refused);
+   numpy, SciPy or GDAL, which stay QGIS's own (a plan that would replace them is
+   refused; SciPy is added, for QGIS's numpy, only to a QGIS that has none);
 2. ``pip install --target <folder> --no-deps --upgrade name==version …`` installs
    exactly that plan.
 
