@@ -9,7 +9,7 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.io.las import write_las_like
-from ..core.lidar import accuracy as core_fa
+from ..core.lidar import accuracy_file as core_fa
 from ..core.progress import Cancelled
 from .base import LAS_OUT_FILTER, GeomaticsAlgorithm
 from .helptext import build_help

@@ -147,7 +147,7 @@ def test_geotiff_georeferencing_round_trip(tmp_path):
 
 def test_one_parse_classes_refuses_non_integers():
     from geomatics_toolbox.core.errors import InputError
-    from geomatics_toolbox.core.lidar.accuracy import parse_classes as lidar_parse
+    from geomatics_toolbox.core.lidar.accuracy_file import parse_classes as lidar_parse
     for parse in (parse_classes, lidar_parse):
         assert parse("2, 8;11 ") == (2, 8, 11) and parse([9, 2, 2]) == (2, 9)
         for bad in ("2.7", "ground", "300", "-1"):

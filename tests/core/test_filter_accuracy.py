@@ -7,12 +7,11 @@ import pytest
 from geomatics_toolbox.core.io.las import write_las
 from geomatics_toolbox.core.lidar.accuracy import (
     assess,
-    assess_clouds,
     error_codes,
     from_counts,
     ground_mask,
-    parse_classes,
 )
+from geomatics_toolbox.core.lidar.accuracy_file import assess_clouds, parse_classes
 
 
 def test_golden_paper_samp54_counts():
@@ -113,7 +112,7 @@ def test_isprs_reference_against_itself(isprs_dir):
 def test_accuracy_report_translated_with_error_map(tmp_path, lang):
     """The report holds the cross matrix, the errors and the error map, all in ar/fa."""
     from geomatics_toolbox.core.io.las import read_las, write_las_like
-    from geomatics_toolbox.core.lidar import accuracy as core_fa
+    from geomatics_toolbox.core.lidar import accuracy_file as core_fa
     from geomatics_toolbox.core.reporting import Figure, Table, render_html
     from geomatics_toolbox.core.reporting.i18n import has_translation
     from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
