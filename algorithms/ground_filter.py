@@ -115,17 +115,23 @@ class GroundFilterAlgorithm(_GroundCommon):
         return build_help(self, self.tr(
             "Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) "
             "and low noise (class 7) with no parameter to set: a progressive morphological "
-            "filter (Pingel et al. 2013) whose cell and slope tolerance are derived from "
-            "the cloud, applied to the terrain with its regional slope removed; terrain "
-            "crests it removed are grown back, then passes rebuild the terrain and re-test "
-            "every point. On the 8 ISPRS filter-test samples its cross-validated total "
-            "error is 3.50 % (SMRF with PDAL's defaults: 5.75 %)."),
+            "filter (Pingel et al. 2013) whose cell, slope and height tolerances are derived "
+            "from the cloud, applied to the terrain with its regional slope removed; "
+            "terrain crests it removed are grown back, then passes rebuild the terrain and "
+            "re-test every point. Under a closed canopy lone ground returns are kept, so "
+            "the terrain never climbs into the trees; water classified 9 in the input keeps "
+            "its class, and flat, sparse patches that look like water get class 1, never "
+            "ground. The report lists every value derived and warns on hard clouds. Total "
+            "error with each sample held out of the choice of the defaults (8 ISPRS "
+            "samples, 4 real vendor-classified files): 3.26 % on the ISPRS samples, "
+            "0.43 % on the real files (SMRF with PDAL's defaults: 5.75 % and 2.65 %); "
+            "ISPRS mean at the defaults 3.24 %."),
             "INPUT=tile.laz OUTPUT=classified.laz OUTPUT_HTML=groundfilter.html",
             {**self.common_notes(),
              self.CELL: self.tr("0 = derived from the point density (about 1 m)."),
              self.MAX_WINDOW: self.tr("Must exceed the largest building."),
              self.SLOPE: self.tr("0 = half the local terrain slope (0.10 to 0.60)."),
-             self.THRESHOLD: self.tr("0 = 0.3 × the mean point spacing, 0.25 to 0.5 m; "
+             self.THRESHOLD: self.tr("0 = 0.35 × the mean point spacing, 0.25 to 0.5 m; "
                                      "plus 1.0 m per unit of terrain slope."),
              self.REFINE: self.tr("Passes that rebuild the terrain from the accepted "
                                   "points.")}) + self.tr(

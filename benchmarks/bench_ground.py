@@ -335,23 +335,30 @@ def merge_ptd(text, rows, speed, quick):
 def _ground_extra(args):
     """--real / --density / --loso12: one section each, merged into ground.md."""
     import _ground_real as gr
-    text = RESULTS.read_text(encoding="utf-8") if RESULTS.exists() else ""
+
+    def merge(md):                       # re-read: other runs may have merged meanwhile
+        text = RESULTS.read_text(encoding="utf-8") if RESULTS.exists() else ""
+        RESULTS.write_text(gr.merge_section(text, md), encoding="utf-8")
+
     if args.real:
         filters = args.real_filters.split(",")
         rows = gr.real_section(filters)
         if rows is None:
             print(f"real files not found in {gr.REAL}; skipped")
         else:
-            text = gr.merge_section(text, gr.real_md(rows, filters))
-            RESULTS.write_text(text, encoding="utf-8")
+            merge(gr.real_md(rows, filters))
+    if args.isprs_recommended and (ISPRS / "samp11.laz").exists():
+        from geomatics_toolbox.core.lidar.accuracy import assess
+        rows = {s: assess(ground_mask("recommended", *load(s)[:3]), load(s)[3]).as_dict()
+                for s in SAMPLES}
+        text = RESULTS.read_text(encoding="utf-8")
+        RESULTS.write_text(gr.merge_recommended_isprs(text, rows, FILTERS, SAMPLES),
+                           encoding="utf-8")
     if args.loso12 and (ISPRS / "samp11.laz").exists():
         combos, folds = gr.loso12_section(load, SAMPLES)
-        text = gr.merge_section(text, gr.loso12_md(combos, folds))
-        RESULTS.write_text(text, encoding="utf-8")
+        merge(gr.loso12_md(combos, folds))
     if args.density:
-        rows = gr.density_section(args.density)
-        text = gr.merge_section(text, gr.density_md(rows, args.density))
-        RESULTS.write_text(text, encoding="utf-8")
+        merge(gr.density_md(gr.density_section(args.density), args.density))
     print(RESULTS.read_text(encoding="utf-8"))
     return 0
 
@@ -374,12 +381,14 @@ def main(argv=None):
     ap.add_argument("--density", type=int, default=0, metavar="N",
                     help="speed/memory of recommended and SMRF at 0.2/1/5/20 pts/m², N "
                          "points each (merged into ground.md)")
+    ap.add_argument("--isprs-recommended", action="store_true",
+                    help="re-measure the recommended filter's ISPRS rows only (merged)")
     ap.add_argument("--loso12", action="store_true",
                     help="12-fold leave-one-sample-out (ISPRS + real) of the recommended "
                          "defaults (merged into ground.md)")
     args = ap.parse_args(argv)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
-    if args.real or args.density or args.loso12:
+    if args.real or args.density or args.loso12 or args.isprs_recommended:
         return _ground_extra(args)
     if args.ptd:
         rows = _ptd_isprs_rows() if (ISPRS / "samp11.laz").exists() else None

@@ -34,17 +34,17 @@ itself (point density, terrain slope), never from labels:
    (Pingel et al. 2013), it does not cut the crest of a ridge or embankment that the
    opening removed.
 7. per point: ground when |z - DTM| <= t + 1.0 x local DTM slope, the height tolerance
-   t = 0.3 x mean point spacing within 0.25-0.5 m (the DTM at a point is interpolated
+   t = 0.35 x mean point spacing within 0.25-0.5 m (the DTM at a point is interpolated
    over about one spacing); points more than max(tolerance, 1 m) below the DTM are low
    noise (class 7).
 8. refine (3 passes): DTM rebuilt from the lowest ground point per cell (holes filled
    as in step 6, only where points read them), step 7 repeated.
 
 Measured (``benchmarks/results/ground.md``): ISPRS total error (Sithole & Vosselman
-2004) mean 3.26 % at these defaults, below SMRF with PDAL's defaults (5.75 %) on 7 of
-the 8 samples (not samp11: 9.01 vs 8.52); on the 4 shared real files the DTM RMSE is
-at or below SMRF's on each; leave-one-sample-out over the 12 folds (8 ISPRS + 4 real)
-(table in ground.md). :mod:`._recommended_filter` adds water handling and the report.
+2004) mean 3.24 % at these defaults, below SMRF with PDAL's defaults (5.75 %) on 7 of
+the 8 samples (not samp11: 8.79 vs 8.52); on the 4 shared real files the DTM RMSE is
+at or below SMRF's on each; leave-one-sample-out over the 12 folds (8 ISPRS + 4 real):
+3.26 % on the ISPRS folds, 0.43 % on the real ones. Water and report: :mod:`._recommended_filter`.
 
 References
 ----------
@@ -179,7 +179,7 @@ class RecommendedOptions:
     slope_min: float = 0.1
     slope_max: float = 0.6
     threshold: Optional[float] = None
-    threshold_factor: float = 0.3
+    threshold_factor: float = 0.35
     threshold_min: float = 0.25
     threshold_max: float = 0.5
     scaler: float = 1.0

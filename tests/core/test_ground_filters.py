@@ -25,17 +25,18 @@ SAMPLES = ["samp11", "samp12", "samp22", "samp31", "samp41", "samp53", "samp54",
 #: samp41 2.5732 -> 2.6089, samp53 3.1997 -> 3.2259, the other six identical. Hole
 #: fill k-NN searched within a short radius first (ties at the 12th neighbour resolve
 #: differently): samp11/12/22/53/61 move by -0.012..+0.004 (mean 3.368). Height
-#: tolerance 0.3 x mean point spacing within 0.25-0.5 m (was 0.5 m): mean 3.257.
+#: tolerance 0.35 x mean point spacing within 0.25-0.5 m (was 0.5 m; factor chosen by
+#: the 12-fold leave-one-sample-out, bench_ground.py --loso12): mean 3.240.
 RESEARCH = {
-    "samp11": ("39e90e3fe0073a5ab6287c93224dce97e4204c46", 9.0108,
+    "samp11": ("017355ad100a4cd4c37af36140fb6aacbe1e748e", 8.7924,
                "6aaf341d3e0b4caf6dc7ee49f5c243fe09fa76b6", 14.7645),
-    "samp12": ("8ed3873c3e61c3c116b35a2ee8ad730df0c53f15", 2.4636,
+    "samp12": ("f96239194c3be1bbb115f5061987217feb1e359c", 2.4502,
                "4c190f7e34b4d6f196656641a151a20d23b1a056", 2.9740),
-    "samp22": ("ed1fb9751fa3e390a7b58b6d3631ef9058b2a6a8", 2.8343,
+    "samp22": ("e18d4fd353ea725fef4cdafa771dde51eb5769fb", 2.7610,
                "ad6fd3c1239102ff680f7283bde6dd7c9583f364", 6.9314),
-    "samp31": ("2cebbc62d60ce27816c2f7de5bd603d9a1cb9205", 1.2057,
+    "samp31": ("8ef25a50b70a2c25fbc80158a87fd7dc0d2a4670", 1.4067,
                "85aef58e831486de589b5580e36eda33635e2b58", 1.4795),
-    "samp41": ("0aeb0c7c73670d3e109a65a78ea87fd7c2e68ba8", 2.6890,
+    "samp41": ("aa305c615796ac6a247601f71c66f92a77a9580d", 2.6534,
                "cdf42b5ac3ff21d63c9dd079bb63548c25b6046f", 2.1458),
     "samp53": ("ccc174b9bf89cc5ba3d45d6ae491e1aafdd46edb", 3.2143,
                "06acb142e53e78594531febef92f51e4fd72e7dd", 11.4405),
@@ -180,7 +181,7 @@ def test_recommended_isprs_golden_identical_to_research(isprs_dir, sample):
 
 def test_recommended_isprs_mean_and_wins(isprs_dir):
     totals = [RESEARCH[s][1] for s in SAMPLES]
-    assert np.mean(totals) == pytest.approx(3.257, abs=0.0005)
+    assert np.mean(totals) == pytest.approx(3.240, abs=0.0005)
     smrf = dict(samp11=8.52, samp12=3.60, samp22=3.59, samp31=3.55, samp41=12.20,
                 samp53=7.99, samp54=4.28, samp61=2.28)     # pysmrf, PDAL defaults
     assert sum(RESEARCH[s][1] < smrf[s] for s in SAMPLES) == 7
