@@ -62,8 +62,9 @@ __all__ = ["RETURNS", "GROUND_CLASS", "NONGROUND_CLASS", "NOISE_CLASS", "UNCLASS
 
 LAS_SUFFIXES = (".las", ".laz")
 #: largest cloud whose decoded records are kept to write the outputs from (points;
-#: about 35 bytes each): the input is decoded once, not once more per output
-KEEP_RECORDS_MAX = 60_000_000
+#: about 35 bytes each, ~0.7 GB at the limit): the input is decoded once, not once more
+#: per output; a larger cloud is decoded again rather than held twice in memory
+KEEP_RECORDS_MAX = 20_000_000
 RETURNS = _selection.RETURNS
 GROUND_CLASS = int(asprs.GROUND)
 NONGROUND_CLASS = int(asprs.UNCLASSIFIED)

@@ -134,6 +134,24 @@ class IdwOptions:
     min_points: int = 0
     tie_order: str = "gdal"
 
+    def __post_init__(self):
+        """Refuse an invalid option (the InputError templates of :mod:`.idw`)."""
+        from .idw import TIE_ORDERS
+        if not self.power > 0:
+            raise InputError("power must be > 0 (typically 2 or 3), got {value}.",
+                             value=self.power)
+        if int(self.neighbours) < 0:
+            raise InputError("max_points must be >= 0 (0 = every point within the radius), "
+                             "got {value}.", value=self.neighbours)
+        if self.radius is not None and not self.radius > 0:
+            raise InputError("radius must be > 0 (or None for no radius), got {value}.",
+                             value=self.radius)
+        if int(self.min_points) < 0:
+            raise InputError("min_points must be >= 0, got {value}.", value=self.min_points)
+        if self.tie_order not in TIE_ORDERS:
+            raise InputError("tie_order must be one of {choices}, got {value}.",
+                             choices=", ".join(TIE_ORDERS), value=self.tie_order)
+
 
 class IdwMethod(DtmMethod):
     """Inverse distance weighting over the nearest neighbours (Shepard 1968)."""
@@ -186,6 +204,21 @@ class KrigingOptions:
     max_lag: Any = "auto"
     cv_points: int = 0
     seed: int = 0
+
+    def __post_init__(self):
+        """Refuse an invalid option (the InputError templates of :mod:`.kriging`)."""
+        from .kriging import DRIFTS, MODELS
+        if self.model not in MODELS:
+            raise InputError("variogram model must be one of {choices}; got {model}.",
+                             choices=", ".join(MODELS), model=repr(self.model))
+        if self.drift not in DRIFTS:
+            raise InputError("drift must be one of {choices}; got {drift}.",
+                             choices=", ".join(DRIFTS), drift=repr(self.drift))
+        if int(self.fit_points) < 10:
+            raise InputError("fit_points must be at least 10, got {value}.",
+                             value=self.fit_points)
+        if int(self.nlags) < 2:
+            raise InputError("nlags must be at least 2, got {value}.", value=self.nlags)
 
 
 class KrigingMethod(DtmMethod):
@@ -246,6 +279,12 @@ class TinOptions:
     """Options of :class:`TinMethod`: the longest triangle edge kept (None = auto)."""
 
     max_edge: Optional[float] = None
+
+    def __post_init__(self):
+        """Refuse a non-positive edge limit (None = automatic)."""
+        if self.max_edge is not None and not self.max_edge > 0:
+            raise InputError("max_edge must be > 0 m (or None for the automatic limit), "
+                             "got {value}.", value=self.max_edge)
 
 
 class TinMethod(DtmMethod):
