@@ -83,26 +83,29 @@ def gdal_quadtree_rank(x, y, *, capacity: int = 8, ratio: float = 0.55) -> np.nd
         return np.empty(0, np.int64)
 
     def split(r):
-        """CPLQuadTreeSplitBounds on node rectangles r = (minx, maxx, miny, maxy)."""
         a0, a1, b0, b1 = r
         w, h = a1 - a0, b1 - b0
         sx = w > h
-        cut1 = np.where(sx, a0 + w * ratio, b0 + h * ratio)     # end of the first part
-        cut2 = np.where(sx, a1 - w * ratio, b1 - h * ratio)     # start of the second
+        cut1 = np.where(sx, a0 + w * ratio, b0 + h * ratio)
+        cut2 = np.where(sx, a1 - w * ratio, b1 - h * ratio)
         first = (a0, np.where(sx, cut1, a1), b0, np.where(sx, b1, cut1))
         second = (np.where(sx, cut2, a0), a1, np.where(sx, b0, cut2), b1)
         return sx, cut1, first, second
 
     rects = tuple(np.array([v]) for v in (x.min(), x.max(), y.min(), y.max()))
-    node = np.zeros(n, np.int64)
-    active = np.arange(n)
-    key = np.zeros(n, np.int64)          # quadrant digits, 2 bits per level
+    # the points still descending, compacted each level (contiguous arrays instead of
+    # gathers from the full ones); a point leaves with its key and depth when its node
+    # stops splitting (at most ``capacity`` points, or a degenerate rectangle)
+    ax, ay = x, y
+    ai = np.arange(n)
+    anode = np.zeros(n, np.int64)
+    akey = np.zeros(n, np.int64)
+    key = np.zeros(n, np.int64)
     depth = np.zeros(n, np.int64)
-    deep = []                            # digits beyond 30 levels (rare: duplicates)
+    deep = []
     level = 0
-    while active.size:
-        ids = node[active]
-        cnt = np.bincount(ids, minlength=rects[0].size)
+    while ai.size:
+        cnt = np.bincount(anode, minlength=rects[0].size)
         full_nodes = np.flatnonzero(cnt > capacity)
         if full_nodes.size == 0:
             break
@@ -112,34 +115,37 @@ def gdal_quadtree_rank(x, y, *, capacity: int = 8, ratio: float = 0.55) -> np.nd
         sx2, cut_2, q3, q4 = split(h2)
         quads = (q1, q2, q3, q4)
         same = np.zeros(full_nodes.size, bool)
-        for qd in quads:                 # a degenerate rectangle is never split
+        for qd in quads:
             same |= (qd[0] == r[0]) & (qd[1] == r[1]) & (qd[2] == r[2]) & (qd[3] == r[3])
         remap = np.full(cnt.size, -1, np.int64)
         ok_nodes = np.flatnonzero(~same)
         remap[full_nodes[ok_nodes]] = ok_nodes
-        sel = remap[ids] >= 0
-        a = active[sel]
-        if a.size == 0:
+        p = remap[anode]
+        sel = p >= 0
+        if not sel.all():
+            out = ~sel
+            key[ai[out]] = akey[out]
+            depth[ai[out]] = min(level, 30)
+            ax, ay, ai, akey, p = ax[sel], ay[sel], ai[sel], akey[sel], p[sel]
+        if ai.size == 0:
             break
-        p = remap[ids[sel]]
-        px, py = x[a], y[a]
-        second_half = ~(np.where(sx[p], px, py) <= cut[p])
+        second_half = ~(np.where(sx[p], ax, ay) <= cut[p])
         sxh = np.where(second_half, sx2[p], sx1[p])
         cuth = np.where(second_half, cut_2[p], cut_1[p])
-        second_quad = ~(np.where(sxh, px, py) <= cuth)
+        second_quad = ~(np.where(sxh, ax, ay) <= cuth)
         choice = 2 * second_half.astype(np.int64) + second_quad
         if level < 30:
-            key[a] = key[a] * 4 + choice
-            depth[a] += 1
+            akey = akey * 4 + choice
         else:
             d = np.zeros(n, np.uint8)
-            d[a] = choice
+            d[ai] = choice
             deep.append(d)
-        node[a] = p * 4 + choice
+        anode = p * 4 + choice
         rects = tuple(np.stack([qd[i] for qd in quads], axis=1).ravel() for i in range(4))
-        active = a
         level += 1
-    # leaves in depth-first order (a leaf path is never a prefix of another), then input
+    if ai.size:
+        key[ai] = akey
+        depth[ai] = min(level, 30)
     key = key << (2 * (depth.max() - depth))
     order = np.lexsort([np.arange(n)] + deep[::-1] + [key])
     rank = np.empty(n, np.int64)
