@@ -236,7 +236,8 @@ def merge_section(text: str, md: str) -> str:
 #: defaults are one of the 12 sets (the slope scaler, 1.0, was chosen by the 8-sample
 #: leave-one-sample-out of the previous grid and is not re-opened here).
 GRID12 = dict(low=[dict(low_share=v) for v in (0.05, 0.08, 0.12, 1.0)],
-              threshold=[dict(threshold=0.5), dict(), dict(threshold_factor=0.35)])
+              threshold=[dict(threshold=0.5), dict(threshold_factor=0.3),
+                         dict(threshold_factor=0.35)])
 
 
 def loso12_section(isprs_load, samples):
