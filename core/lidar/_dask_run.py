@@ -7,14 +7,56 @@ unfinished chunk outputs swept on cancel.
 from __future__ import annotations
 
 import time
+from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Sequence
+from typing import Dict, List, Optional, Sequence
 
 from ..errors import InputError
 from ..io.contract import remove_temp
 from ..progress import Cancelled, Monitor
 from ._chunks import ChunkTask, process_chunk, read_strip
 from ._workers import SINGLE_THREAD_ENV, start_local_workers
+
+
+@dataclass
+class CatalogResult:
+    """Outcome of :func:`run_catalog`: per-chunk stats, failures, mosaic, timing."""
+
+    chunks: List[dict]
+    failed: Dict[str, str]
+    skipped: List[str]
+    vrt: Optional[str]
+    cog: Optional[str]
+    seconds: float
+    workers: int
+    scheduler: str
+    settings: dict = field(default_factory=dict)
+    timings: Dict[str, list] = field(default_factory=dict)
+
+    @property
+    def points(self) -> int:
+        """Points processed in this run (skipped chunks excluded)."""
+        return int(sum(c["points"] for c in self.chunks if c["key"] not in self.skipped))
+
+    @property
+    def points_per_second(self) -> float:
+        """Overall throughput of this run (wall time)."""
+        return self.points / self.seconds if self.seconds > 0 else float("nan")
+
+    def per_worker(self) -> Dict[str, dict]:
+        """Points, chunks, busy seconds and points/s per worker."""
+        out: Dict[str, dict] = {}
+        for c in self.chunks:
+            if c["key"] in self.skipped:
+                continue
+            w = out.setdefault(c["worker"], dict(points=0, chunks=0, seconds=0.0))
+            w["points"] += c["points"]
+            w["chunks"] += 1
+            w["seconds"] += c["seconds"]
+        for w in out.values():
+            w["points_per_second"] = w["points"] / w["seconds"] if w["seconds"] else 0.0
+        return out
+
 
 # The local scheduler runs in this (the client) process and the nannies in the workers'
 # child process (`_workers.py`), next to the

@@ -48,7 +48,14 @@ from ._chunks import (
     register_dtm_method,
     register_ground_filter,
 )
-from ._dask_run import QUIET, _client, _collect, _run_dask, _sweep_temps  # noqa: F401
+from ._dask_run import (  # noqa: F401 - CatalogResult is this module's public result type
+    QUIET,
+    CatalogResult,
+    _client,
+    _collect,
+    _run_dask,
+    _sweep_temps,
+)
 
 __all__ = ["Catalog", "CatalogResult", "run_catalog", "GROUND_FILTERS", "DTM_METHODS",
            "register_ground_filter", "register_dtm_method", "default_ground_filter",
@@ -457,46 +464,6 @@ def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
 
 
 # ============================================================================ engine
-@dataclass
-class CatalogResult:
-    """Outcome of :func:`run_catalog`: per-chunk stats, failures, mosaic, timing."""
-
-    chunks: List[dict]
-    failed: Dict[str, str]
-    skipped: List[str]
-    vrt: Optional[str]
-    cog: Optional[str]
-    seconds: float
-    workers: int
-    scheduler: str
-    settings: dict = field(default_factory=dict)
-    timings: Dict[str, list] = field(default_factory=dict)
-
-    @property
-    def points(self) -> int:
-        """Points processed in this run (skipped chunks excluded)."""
-        return int(sum(c["points"] for c in self.chunks if c["key"] not in self.skipped))
-
-    @property
-    def points_per_second(self) -> float:
-        """Overall throughput of this run (wall time)."""
-        return self.points / self.seconds if self.seconds > 0 else float("nan")
-
-    def per_worker(self) -> Dict[str, dict]:
-        """Points, chunks, busy seconds and points/s per worker."""
-        out: Dict[str, dict] = {}
-        for c in self.chunks:
-            if c["key"] in self.skipped:
-                continue
-            w = out.setdefault(c["worker"], dict(points=0, chunks=0, seconds=0.0))
-            w["points"] += c["points"]
-            w["chunks"] += 1
-            w["seconds"] += c["seconds"]
-        for w in out.values():
-            w["points_per_second"] = w["points"] / w["seconds"] if w["seconds"] else 0.0
-        return out
-
-
 def finished_chunks(out_folder) -> List[str]:
     """Keys of the chunks whose done marker is in ``out_folder`` (kept for a resume)."""
     state = Path(out_folder) / STATE_DIR

@@ -100,3 +100,10 @@ def test_one_asprs_class_constant_set():
            for p in sorted((root / "core").rglob("*.py")) if p.name != "classes.py"
            for m in pattern.finditer(p.read_text(encoding="utf-8"))]
     assert bad == []
+
+
+def test_no_core_module_over_600_lines():
+    root = Path(__file__).resolve().parents[2]
+    long = {str(p.relative_to(root)): n for p in sorted((root / "core").rglob("*.py"))
+            if (n := len(p.read_text(encoding="utf-8").splitlines())) > 600}
+    assert long == {}, f"split these modules by concern: {long}"
