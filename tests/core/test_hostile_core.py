@@ -182,7 +182,7 @@ def test_vlr_count_is_what_was_really_read(tmp_path):
 # ----------------------------------------------------------------- 2. two clouds' CRSs
 def test_filter_accuracy_reference_in_another_crs_refused(tmp_path):
     from geomatics_toolbox.core.io.las import write_las
-    from geomatics_toolbox.core.lidar.accuracy import assess_clouds
+    from geomatics_toolbox.core.lidar.accuracy_file import assess_clouds
     rng = np.random.default_rng(5)
     x, y, z = 500_000 + rng.uniform(0, 20, 50), 4e6 + rng.uniform(0, 20, 50), rng.uniform(0, 2, 50)
     cls = {"classification": np.full(50, 2, np.uint8)}
