@@ -46,7 +46,8 @@ def snap_down(value: float, origin: float, period: float) -> float:
     >>> snap_down(1234.5, 1000.0, 10.0)
     1230.0
     """
-    return float(origin) + np.floor((float(value) - float(origin)) / period) * period
+    # a Python float, as annotated (numpy 2 prints its scalars as np.float64(...))
+    return float(float(origin) + np.floor((float(value) - float(origin)) / period) * period)
 
 
 @dataclass(frozen=True)
