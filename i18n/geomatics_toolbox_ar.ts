@@ -1465,6 +1465,14 @@
             <source>&lt;p&gt;Ground filter (recommended) → DTM by IDW → DTM accuracy against check points, as a Processing model you can open and change in the Model Designer. With its defaults it gives the same classified cloud, DTM and RMSE, bit for bit, as the one-step algorithm 'LiDAR to DTM with accuracy' and as the three algorithms run one after another. Its steps write temporary files and a last step publishes them all or none: when a step fails, nothing is left at any destination.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;: the point cloud (LAS/LAZ, projected CRS), the DTM cell size (m, default 1), the IDW power (default 2), fill data gaps (default no), a CRS for a cloud without one, and the check points (a point layer or a CSV/TXT file id,x,y,z).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified point cloud, DTM, DTM accuracy report; optionally the ground filter report, the DTM report and the check-point residuals.&lt;/p&gt;</source>
             <translation>&lt;p&gt;مرشح الأرض (الموصى به) ← نموذج التضاريس الرقمي بطريقة IDW ← دقة نموذج التضاريس الرقمي مقابل نقاط التحقق، في نموذج معالجة يمكنك فتحه وتغييره في مصمم النماذج. بقيمه الافتراضية يعطي سحابة النقاط المصنفة ونموذج التضاريس الرقمي وRMSE نفسها، بتاً ببت، التي تعطيها الخوارزمية ذات الخطوة الواحدة 'من LiDAR إلى نموذج تضاريس رقمي مع الدقة' والخوارزميات الثلاث مشغّلة الواحدة تلو الأخرى. تكتب خطواته ملفات مؤقتة وتنشرها خطوة أخيرة كلها أو لا شيء: إذا فشلت خطوة لا يبقى شيء في أي وجهة.&lt;/p&gt;&lt;p&gt;&lt;b&gt;المعاملات&lt;/b&gt;: سحابة النقاط (LAS/LAZ، نظام إحداثيات مسقط)، وحجم خلية نموذج التضاريس (م، الافتراضي 1)، وأس IDW (الافتراضي 2)، وملء فجوات البيانات (الافتراضي لا)، ونظام إحداثيات لسحابة بلا نظام، ونقاط التحقق (طبقة نقطية أو ملف CSV/TXT ‏id,x,y,z).&lt;/p&gt;&lt;p&gt;&lt;b&gt;المخرجات&lt;/b&gt;: سحابة النقاط المصنفة، ونموذج التضاريس الرقمي، وتقرير دقة نموذج التضاريس الرقمي؛ واختيارياً تقرير مرشح الأرض وتقرير نموذج التضاريس الرقمي وبواقي نقاط التحقق.&lt;/p&gt;</translation>
         </message>
+        <message>
+            <source>Project name (shown in the report)</source>
+            <translation>اسم المشروع (يظهر في التقرير)</translation>
+        </message>
+        <message>
+            <source>Operator (shown in the report)</source>
+            <translation>المشغّل (يظهر في التقرير)</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsToolboxPlugin</name>

@@ -1465,6 +1465,14 @@
             <source>&lt;p&gt;Ground filter (recommended) → DTM by IDW → DTM accuracy against check points, as a Processing model you can open and change in the Model Designer. With its defaults it gives the same classified cloud, DTM and RMSE, bit for bit, as the one-step algorithm 'LiDAR to DTM with accuracy' and as the three algorithms run one after another. Its steps write temporary files and a last step publishes them all or none: when a step fails, nothing is left at any destination.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Parameters&lt;/b&gt;: the point cloud (LAS/LAZ, projected CRS), the DTM cell size (m, default 1), the IDW power (default 2), fill data gaps (default no), a CRS for a cloud without one, and the check points (a point layer or a CSV/TXT file id,x,y,z).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Outputs&lt;/b&gt;: classified point cloud, DTM, DTM accuracy report; optionally the ground filter report, the DTM report and the check-point residuals.&lt;/p&gt;</source>
             <translation>&lt;p&gt;فیلتر زمین (پیشنهادی) ← مدل رقومی زمین با IDW ← دقت مدل رقومی زمین در برابر نقاط چک، به‌صورت یک مدل پردازش که می‌توانید آن را در طراح مدل باز کنید و تغییر دهید. با پیش‌فرض‌هایش همان ابر نقاط طبقه‌بندی‌شده، همان مدل رقومی زمین و همان RMSE را، بیت به بیت، می‌دهد که الگوریتم تک‌گامی 'از LiDAR تا DTM همراه با دقت' و سه الگوریتمِ اجراشده پشت سر هم می‌دهند. گام‌هایش فایل‌های موقت می‌نویسند و گامی پایانی همه را با هم منتشر می‌کند یا هیچ‌کدام را: اگر گامی شکست بخورد، در هیچ مقصدی چیزی نمی‌ماند.&lt;/p&gt;&lt;p&gt;&lt;b&gt;پارامترها&lt;/b&gt;: ابر نقاط (LAS/LAZ، سیستم مختصات تصویری)، اندازهٔ سلول DTM (متر، پیش‌فرض 1)، توان IDW (پیش‌فرض 2)، پر کردن شکاف‌های داده (پیش‌فرض خیر)، سیستم مختصات برای ابری که ندارد، و نقاط چک (لایهٔ نقطه‌ای یا فایل CSV/TXT ‏id,x,y,z).&lt;/p&gt;&lt;p&gt;&lt;b&gt;خروجی‌ها&lt;/b&gt;: ابر نقاط طبقه‌بندی‌شده، مدل رقومی زمین، گزارش دقت مدل رقومی زمین؛ و به‌اختیار گزارش فیلتر زمین، گزارش مدل رقومی زمین و باقیمانده‌های نقاط چک.&lt;/p&gt;</translation>
         </message>
+        <message>
+            <source>Project name (shown in the report)</source>
+            <translation>نام پروژه (در گزارش نمایش داده می‌شود)</translation>
+        </message>
+        <message>
+            <source>Operator (shown in the report)</source>
+            <translation>کاربر عامل (در گزارش نمایش داده می‌شود)</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsToolboxPlugin</name>

@@ -99,6 +99,8 @@ MODEL_LABELS = (
     QT_TRANSLATE_NOOP("GeomaticsProvider", "DTM report"),
     QT_TRANSLATE_NOOP("GeomaticsProvider", "Check-point residuals"),
     QT_TRANSLATE_NOOP("GeomaticsProvider", "DTM accuracy report"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "Project name (shown in the report)"),
+    QT_TRANSLATE_NOOP("GeomaticsProvider", "Operator (shown in the report)"),
 )
 
 
