@@ -423,11 +423,16 @@ class GsdBatchAlgorithm(GeomaticsAlgorithm):
         complete, and may not be the input table; other destinations (a temporary or
         memory layer, a database) are written directly once every row is computed.
         """
+        value = parameters.get(self.OUTPUT) if parameters else None
+        static = value.sink.staticValue() if hasattr(value, "sink") else value
+        if str(static or "") in ("", "TEMPORARY_OUTPUT") or \
+                not _is_file_destination(str(static).split("|")[0]):
+            # a temporary (memory) layer or a database: parameterAsSink alone names it,
+            # and puts it on the load list once (naming it twice loaded nothing)
+            return self.fill_sink(parameters, context, fields, geometry, crs, rows)
         final = self.parameterAsOutputLayer(parameters, self.OUTPUT, context)
         input_path = self.source_path(parameters, context)
         path = final.split("|")[0]
-        if not _is_file_destination(path):
-            return self.fill_sink(parameters, context, fields, geometry, crs, rows)
         inputs = {self.INPUT: input_path} if input_path else {}
         with OutputContract({self.OUTPUT: path}, inputs=inputs) as out:
             tmp = out.path(self.OUTPUT)

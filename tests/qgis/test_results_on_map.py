@@ -77,7 +77,10 @@ def gui_run(processing, alg_id, params, *, project=None):
     rec = Recorder()
     context = dataobjects.createContext(rec.feedback)
     context.setProject(project)
-    res = processing.run(alg_id, params, feedback=rec.feedback, context=context)
+    # onFinish: as the dialog, leave result layers (memory layers) in the context for
+    # handleAlgorithmResults instead of handing them to the caller
+    res = processing.run(alg_id, params, feedback=rec.feedback, context=context,
+                         onFinish=lambda *_: None)
     pending = {path: (details.outputName, details.postProcessor())
                for path, details in context.layersToLoadOnCompletion().items()}
     # QGIS 3.22: (alg, context, feedback, showResults, parameters); 3.40 dropped the
@@ -462,3 +465,18 @@ def test_every_layer_output_declares_its_style(qgis_app):
             if alg.OUTPUT_STYLES.get(p.name()) not in KINDS:
                 missing.append(f"{alg.name()} {p.name()}")
     assert n >= 15 and not missing, missing
+
+
+@pytest.mark.parametrize("dest", ["TEMPORARY_OUTPUT", "table.csv", "memory:"])
+def test_gsd_batch_table_loaded(qgis_processing, tmp_path, dest):
+    """The result table (a feature sink) loads once, with no "not correctly generated"."""
+    src = tmp_path / "cams.csv"
+    src.write_text("label,distance,sensor_width,image_width,focal_length\n"
+                   "paper,5.88,6.123,3648,4.6\n")
+    out = str(tmp_path / dest) if dest.endswith(".csv") else dest
+    res, ctx, project, rec, pending = gui_run(qgis_processing, "geomatics:gsdbatch", {
+        "INPUT": str(src), "OUTPUT": out})
+    assert len(pending) == 1
+    layers = list(project.mapLayers().values())
+    assert len(layers) == 1 and layers[0].featureCount() == 1
+    assert "gsd_cm" in layers[0].fields().names()
