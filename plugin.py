@@ -39,7 +39,12 @@ def activate_private_packages() -> str:
     """
     from .core import deps
     folder = deps.packages_dir(QgsApplication.qgisSettingsDirPath())
-    deps.activate(folder)
+    try:
+        deps.activate(folder)
+    except Exception as exc:  # noqa: BLE001 - the plugin must load to offer the installer
+        from qgis.core import Qgis, QgsMessageLog
+        QgsMessageLog.logMessage(f"Could not use the package folder {folder}: {exc!r}",
+                                 "Geomatics Toolbox", Qgis.Warning)
     return str(folder)
 
 

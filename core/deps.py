@@ -58,6 +58,10 @@ NEVER_INSTALL = ("numpy", "scipy", "gdal", "pyqt5", "pyqt6", "qgis")
 #: Windows and Linux, but some macOS builds did not: when it is missing the installer adds
 #: it, unpinned and constrained to QGIS's own numpy (never replacing it)
 BASE_LINES = ("scipy",)
+#: the private folders :func:`activate` put on ``sys.path``: the Dask workers started by
+#: ``core/lidar/_workers.py`` read this list when they start (plugin start-up must not
+#: import ``core.lidar``: it pulls in SciPy, which a QGIS may lack)
+WORKER_PATHS: List[str] = []
 #: the algorithm that installs them (named in every message about a missing package)
 INSTALLER_ID = "geomatics:installdependencies"
 
@@ -166,7 +170,8 @@ def activate(folder: os.PathLike) -> bool:
     """Append ``folder`` to ``sys.path`` and the Dask workers' path if it exists.
 
     Appended, not prepended: a package QGIS already has is never shadowed. Returns
-    True when the folder is (now) on the path.
+    True when the folder is (now) on the path. Runs at plugin start, so it imports
+    nothing: the workers read :data:`WORKER_PATHS` when they start.
     """
     folder = os.path.abspath(os.fspath(folder))
     if not os.path.isdir(folder):
@@ -174,9 +179,8 @@ def activate(folder: os.PathLike) -> bool:
     if folder not in sys.path:
         sys.path.append(folder)
         importlib.invalidate_caches()
-    from .lidar import _workers
-    if folder not in _workers.WORKER_PATHS:
-        _workers.WORKER_PATHS.append(folder)
+    if folder not in WORKER_PATHS:
+        WORKER_PATHS.append(folder)
     return True
 
 

@@ -22,14 +22,12 @@ import sys
 import tempfile
 import time
 from pathlib import Path
-from typing import Dict, List, Optional
+from typing import Dict, Optional
 
+from .. import deps
 from ..errors import InputError
 from ..system import no_window_flag, python_executable
 
-#: extra folders the workers need on ``PYTHONPATH`` (the plugin's private packages;
-#: :mod:`..deps` adds it when it activates the folder)
-WORKER_PATHS: List[str] = []
 #: one worker = one core: thread pools of the native libraries limited to one thread
 SINGLE_THREAD_ENV = {"RAYON_NUM_THREADS": "1", "OMP_NUM_THREADS": "1",
                      "OPENBLAS_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
@@ -48,7 +46,8 @@ def worker_environment(base: Optional[Dict[str, str]] = None,
     """Environment of the worker process (a new dict; ``os.environ`` is not changed)."""
     env = dict(os.environ if base is None else base)
     parts = [p for p in env.get("PYTHONPATH", "").split(os.pathsep) if p]
-    front = [p for p in [_package_parent(), *WORKER_PATHS] if p and p not in parts]
+    # the plugin's private package folder, activated at plugin start (:mod:`..deps`)
+    front = [p for p in [_package_parent(), *deps.WORKER_PATHS] if p and p not in parts]
     env["PYTHONPATH"] = os.pathsep.join(front + parts)
     env.update(SINGLE_THREAD_ENV)
     if config is not None:

@@ -3,13 +3,16 @@ from __future__ import annotations
 
 import json
 import os
+import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
 from geomatics_toolbox.core import deps
 from geomatics_toolbox.core.errors import InputError
-from geomatics_toolbox.core.lidar import _workers
+
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_requirements_are_the_shipped_pins_with_a_purpose():
@@ -72,12 +75,58 @@ def test_folder_is_per_profile_and_python_and_appended(tmp_path, monkeypatch):
     ver = f"python{sys.version_info[0]}.{sys.version_info[1]}"
     assert folder == tmp_path / "profiles" / "default" / "geomatics_toolbox" / ver
     monkeypatch.setattr(sys, "path", list(sys.path))
-    monkeypatch.setattr(_workers, "WORKER_PATHS", [])
+    monkeypatch.setattr(deps, "WORKER_PATHS", [])
     assert not deps.activate(folder)                    # absent: nothing added
     folder.mkdir(parents=True)
     assert deps.activate(folder) and deps.activate(folder)
     assert sys.path[-1] == str(folder) and sys.path.count(str(folder)) == 1
-    assert _workers.WORKER_PATHS == [str(folder)]
+    assert deps.WORKER_PATHS == [str(folder)]
+
+
+ACTIVATE = r"""
+import importlib.util, json, os, sys
+root, folder = sys.argv[1], sys.argv[2]
+spec = importlib.util.spec_from_file_location(
+    "geomatics_toolbox", os.path.join(root, "__init__.py"),
+    submodule_search_locations=[root])
+pkg = importlib.util.module_from_spec(spec)
+sys.modules["geomatics_toolbox"] = pkg
+spec.loader.exec_module(pkg)
+before = set(sys.modules)
+from geomatics_toolbox.core import deps
+ok = deps.activate(folder)
+print("RESULT:" + json.dumps({"ok": ok, "paths": deps.WORKER_PATHS,
+                              "new": sorted(set(sys.modules) - before)}))
+"""
+
+
+def test_activate_at_plugin_start_imports_nothing_heavy(tmp_path):
+    """Plugin start activates the folder: no core.lidar, no SciPy, no numpy (review N1)."""
+    folder = tmp_path / "packages"
+    folder.mkdir()
+    out = subprocess.run([sys.executable, "-c", ACTIVATE, str(ROOT), str(folder)],
+                         capture_output=True, text=True, timeout=300)
+    lines = [ln for ln in out.stdout.splitlines() if ln.startswith("RESULT:")]
+    assert out.returncode == 0 and lines, out.stdout + out.stderr
+    res = json.loads(lines[-1][len("RESULT:"):])
+    assert res["ok"] and res["paths"] == [str(folder)]
+    ours = [m for m in res["new"] if m.startswith("geomatics_toolbox")]
+    assert ours == ["geomatics_toolbox.core", "geomatics_toolbox.core.deps",
+                    "geomatics_toolbox.core.errors", "geomatics_toolbox.core.system"], ours
+    heavy = [m for m in res["new"]
+             if m.split(".")[0] in ("scipy", "numpy", "jinja2", "laspy", "dask")]
+    assert heavy == []
+
+
+def test_workers_read_the_activated_folder_when_they_start(tmp_path, monkeypatch):
+    from geomatics_toolbox.core.lidar import _workers
+    monkeypatch.setattr(deps, "WORKER_PATHS", [])
+    folder = tmp_path / "packages"
+    folder.mkdir()
+    monkeypatch.setattr(sys, "path", list(sys.path))
+    deps.activate(folder)
+    env = _workers.worker_environment({"PYTHONPATH": "/x"})
+    assert str(folder) in env["PYTHONPATH"].split(os.pathsep)
 
 
 def test_pip_environment_is_a_copy(tmp_path, monkeypatch):

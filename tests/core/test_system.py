@@ -9,7 +9,7 @@ import sys
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core import system
+from geomatics_toolbox.core import deps, system
 from geomatics_toolbox.core.lidar import _workers
 
 
@@ -127,7 +127,7 @@ def test_blas_threads_limited_inside_and_restored_after(monkeypatch):
 
 
 def test_worker_environment_is_a_copy_with_the_plugin_paths(monkeypatch, tmp_path):
-    monkeypatch.setattr(_workers, "WORKER_PATHS", [str(tmp_path / "packages")])
+    monkeypatch.setattr(deps, "WORKER_PATHS", [str(tmp_path / "packages")])
     monkeypatch.setattr(_workers, "_package_parent", lambda: str(tmp_path / "plugins"))
     before = dict(os.environ)
     env = _workers.worker_environment({"PYTHONPATH": "/x", "PATH": "/bin"},

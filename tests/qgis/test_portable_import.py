@@ -11,6 +11,7 @@ that the plugin loads with no error when every runtime package is missing.
 from __future__ import annotations
 
 import json
+import os
 import re
 import subprocess
 import sys
@@ -252,7 +253,8 @@ NO_SCIPY = r"""
 import importlib.abc, importlib.util, json, os, sys
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 from qgis.core import QgsApplication
-app = QgsApplication([], False)
+from qgis.gui import QgsMessageBar
+app = QgsApplication([], True)
 app.initQgis()
 sys.path.append("/usr/share/qgis/python/plugins")
 from processing.core.Processing import Processing
@@ -264,27 +266,53 @@ class Block(importlib.abc.MetaPathFinder):
 for mod in [m for m in sys.modules if m.split(".")[0] == "scipy"]:
     del sys.modules[mod]
 sys.meta_path.insert(0, Block())
+folder = os.path.join(QgsApplication.qgisSettingsDirPath(), "geomatics_toolbox",
+                      "python%d.%d" % sys.version_info[:2])
+if sys.argv[2] == "folder":           # a half-finished install: the folder, no SciPy
+    os.makedirs(folder)
+class Iface:
+    def __init__(self):
+        self.bar = QgsMessageBar()
+    def messageBar(self):
+        return self.bar
 spec = importlib.util.spec_from_file_location(
     "geomatics_toolbox", os.path.join(sys.argv[1], "__init__.py"),
     submodule_search_locations=[sys.argv[1]])
 pkg = importlib.util.module_from_spec(spec)
 sys.modules["geomatics_toolbox"] = pkg
+before = set(sys.modules)
 spec.loader.exec_module(pkg)
-plugin = pkg.classFactory(None)
-plugin.initProcessing()
+iface = Iface()
+plugin = pkg.classFactory(iface)
+at_start = sorted(set(sys.modules) - before)
+plugin.initGui()
 provider = QgsApplication.processingRegistry().providerById("geomatics")
 from geomatics_toolbox.core import deps
 from geomatics_toolbox.plugin import missing_packages_text
+from qgis.PyQt.QtWidgets import QPushButton
+items = iface.bar.items()
+buttons = [b.text() for item in items for b in item.findChildren(QPushButton)
+           if b.objectName() == "geomatics_install_button"]
 print("RESULT:" + json.dumps({"algs": sorted(a.id() for a in provider.algorithms()),
                               "missing": [r.name for r in deps.missing()],
-                              "text": missing_packages_text(deps.missing())}))
+                              "text": missing_packages_text(deps.missing()),
+                              "items": len(items), "buttons": buttons,
+                              "folder": folder, "on_path": folder in sys.path,
+                              "workers": deps.WORKER_PATHS, "at_start": at_start}))
+plugin.unload()
 """
 
 
-def test_without_scipy_the_plugin_loads_and_offers_the_installer(qgis_app):
-    """Some macOS QGIS builds had no SciPy: the plugin still loads, with the installer."""
-    out = subprocess.run([sys.executable, "-c", NO_SCIPY, str(ROOT)], capture_output=True,
-                         text=True, timeout=600)
+@pytest.mark.parametrize("folder", ["nofolder", "folder"])
+def test_without_scipy_the_plugin_loads_and_offers_the_installer(qgis_app, tmp_path, folder):
+    """Some macOS QGIS builds had no SciPy: the plugin still loads, with the installer.
+
+    Also with the private package folder already there (an install that stopped before
+    SciPy): plugin start imports nothing of core.lidar (review N1: it raised ImportError).
+    """
+    env = dict(os.environ, QGIS_CUSTOM_CONFIG_PATH=str(tmp_path / "profile"))
+    out = subprocess.run([sys.executable, "-c", NO_SCIPY, str(ROOT), folder],
+                         capture_output=True, text=True, timeout=600, env=env)
     lines = [ln for ln in out.stdout.splitlines() if ln.startswith("RESULT:")]
     assert out.returncode == 0 and lines, f"{out.stdout}\n{out.stderr}"
     res = json.loads(lines[-1][len("RESULT:"):])
@@ -292,3 +320,10 @@ def test_without_scipy_the_plugin_loads_and_offers_the_installer(qgis_app):
     assert res["missing"] == ["scipy"]
     assert "scipy for every algorithm" in res["text"]
     assert "only the installer" in res["text"]
+    assert res["items"] == 1 and res["buttons"] == ["Install them…"]
+    assert res["folder"].startswith(str(tmp_path / "profile"))
+    assert res["on_path"] is (folder == "folder")
+    assert res["workers"] == ([res["folder"]] if folder == "folder" else [])
+    heavy = [m for m in res["at_start"] if m.startswith("geomatics_toolbox.core.lidar")
+             or m.split(".")[0] in ("scipy", "numpy", "jinja2", "laspy", "dask")]
+    assert heavy == []
