@@ -90,7 +90,9 @@ def buildings_file(src, outputs: BuildingOutputs, *, ground_classes=(2,), params
     paths = dict(zip(n, (outputs.footprints, outputs.cloud, outputs.cityjson, outputs.obj,
                          outputs.report)))
     with OutputContract(paths, inputs={"INPUT": src}) as out:
-        pd = read_cloud(src, returns=False, monitor=mon.sub(0.0, 0.1))
+        # the decoded records are kept for the cloud copy: the input is decoded once
+        pd = read_cloud(src, returns=False, keep_records=out.requested(n[1]),
+                        monitor=mon.sub(0.0, 0.1))
         units = pd.info.units
         h, v = units.h, units.v
         cls = pd["classification"]
@@ -106,7 +108,7 @@ def buildings_file(src, outputs: BuildingOutputs, *, ground_classes=(2,), params
             flag = building_points(res, pd.x, pd.y, pd.z, hag, cls)
             write_las_like(src, out.path(n[1]), dimensions={
                 "classification": np.where(flag, 6, cls).astype(cls.dtype)},
-                progress=mon.sub(0.85, 0.95).update, cancel=mon.cancelled)
+                records=pd.records, progress=mon.sub(0.85, 0.95).update, cancel=mon.cancelled)
         if out.requested(n[2]) or out.requested(n[3]):
             irregular = np.isin(res.labels, [b["id"] for b in res.buildings
                                              if not b["regularised"]])

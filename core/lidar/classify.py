@@ -309,7 +309,8 @@ def classify_file_asprs(src, *, cloud: str, report: Optional[str] = None,
     outputs = {cloud_name: cloud, report_name: report}
     with OutputContract(outputs, inputs={"INPUT": src}) as out:
         t0 = time.perf_counter()
-        pd = read_cloud(src, returns=False, monitor=mon.sub(0.0, 0.1))
+        # records kept for the copy: the input is decoded once (up to KEEP_RECORDS_MAX)
+        pd = read_cloud(src, returns=False, keep_records=True, monitor=mon.sub(0.0, 0.1))
         t_read = time.perf_counter() - t0
         # read_cloud converts the coordinates to metres; heights go back to the data's
         # vertical unit for the HeightAboveGround dimension
@@ -324,7 +325,8 @@ def classify_file_asprs(src, *, cloud: str, report: Optional[str] = None,
                        dimensions={"classification": res.classes.astype(
                            pd["classification"].dtype)},
                        extra={HAG_DIMENSION: res.hag} if hag else None,
-                       progress=mon.sub(0.85, 0.98).update, cancel=mon.cancelled)
+                       records=pd.records, progress=mon.sub(0.85, 0.98).update,
+                       cancel=mon.cancelled)
         res.seconds.update(read=t_read, write=time.perf_counter() - t1)
         if out.requested(report_name):
             rep = classify_report(res, os.path.basename(os.fspath(src)), pd.x, pd.y,
