@@ -949,7 +949,7 @@
         </message>
         <message>
             <source>Order {order}: RMS_T = {rms:.4f} {unit} (divisor n), {qgis} {unit} (divisor n − N); {within}/{n} within RMS_T; verdict: {verdict}.</source>
-            <translation>الرتبة {order}: RMS_T = {rms:.4f} {unit} (المقسوم عليه n)، {qgis} {unit} (المقسوم عليه n − N)؛ {within}/{n} ضمن RMS_T؛ الحكم: {verdict}.</translation>
+            <translation>الرتبة {order}: ⁦RMS_T = {rms:.4f} {unit}⁩ (المقسوم عليه n)، {qgis} {unit} (المقسوم عليه n − N)؛ {within}/{n} ضمن RMS_T؛ الحكم: {verdict}.</translation>
         </message>
         <message>
             <source>Recommended polynomial order: {order}.</source>
@@ -3405,7 +3405,7 @@
         </message>
         <message>
             <source>{kind}: fit RMS_T = {fit:.4f} {unit}, {basis} RMS_T = {honest:.4f} {unit} (n = {n}); verdict: {verdict}.</source>
-            <translation>{kind}: RMS_T للملاءمة = {fit:.4f} {unit}، RMS_T ({basis}) = {honest:.4f} {unit} (n = {n})؛ الحكم: {verdict}.</translation>
+            <translation>{kind}: RMS_T للملاءمة = {fit:.4f} {unit}، RMS_T ({basis}) = {honest:.4f} {unit} (⁦n = {n}⁩)؛ الحكم: {verdict}.</translation>
         </message>
         <message>
             <source>Recommended transformation: {kind}, the fewest parameters among those within 10 % of the best {basis} RMS_T ({ranking} {unit}).</source>
