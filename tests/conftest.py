@@ -11,9 +11,16 @@ links it as).  Three tiers:
   enabled in a temporary profile (fixture ``qgis_process``).
 
 Tiers 2 and 3 skip, with the reason, only when QGIS is not installed.
+
+Every tier runs QGIS in a temporary profile: ``QGIS_CUSTOM_CONFIG_PATH`` is set to a
+fresh folder of this session before any ``QgsApplication`` exists (and inherited by the
+QGIS and ``qgis_process`` children the tests start), so a test run never reads or writes
+the user's QGIS settings (``~/.local/share/QGIS`` …) — a test that switches the interface
+to Arabic cannot leave a desktop QGIS, or another run, in Arabic.
 """
 from __future__ import annotations
 
+import atexit
 import importlib.util
 import json
 import os
@@ -45,6 +52,28 @@ def load_plugin_package() -> None:
 load_plugin_package()
 
 
+def use_temporary_qgis_profile() -> Path:
+    """Point ``QGIS_CUSTOM_CONFIG_PATH`` at a new folder, removed when the session ends.
+
+    Set at import of this file, i.e. before any test module or fixture can build a
+    ``QgsApplication``; a value from the caller's environment is replaced on purpose.
+    """
+    import tempfile
+    folder = Path(tempfile.mkdtemp(prefix="geomatics-test-qgis-profile-"))
+    atexit.register(shutil.rmtree, folder, True)
+    os.environ["QGIS_CUSTOM_CONFIG_PATH"] = str(folder)
+    return folder
+
+
+TEST_PROFILE = use_temporary_qgis_profile()
+
+
+@pytest.fixture(scope="session")
+def qgis_test_profile() -> Path:
+    """The session's temporary QGIS profile folder (``QGIS_CUSTOM_CONFIG_PATH``)."""
+    return TEST_PROFILE
+
+
 @pytest.fixture(scope="session")
 def isprs_dir() -> Path:
     """Folder of the ISPRS reference samples; skips when it is absent."""
@@ -65,11 +94,15 @@ def _have_qgis() -> str | None:
 
 @pytest.fixture(scope="session")
 def qgis_app():
-    """A headless QgsApplication with Processing and our provider registered."""
+    """A headless QgsApplication with Processing and our provider registered.
+
+    Its profile is the session's temporary one (:data:`TEST_PROFILE`).
+    """
     reason = _have_qgis()
     if reason:
         pytest.skip(reason)
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    os.environ["QGIS_CUSTOM_CONFIG_PATH"] = str(TEST_PROFILE)
     from qgis.core import QgsApplication
     sys.path.append("/usr/share/qgis/python/plugins")
     app = QgsApplication([], False)
