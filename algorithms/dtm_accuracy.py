@@ -31,6 +31,7 @@ from ..core.terrain import accuracy as core_acc
 from ..core.terrain import report as terrain_report
 from .base import GeomaticsAlgorithm
 from .helptext import build_help
+from .styles import residual_style
 
 NUMBERS = (
     ("N", "n", QT_TRANSLATE_NOOP("GeomaticsAlgorithm", "Check points used")),
@@ -49,36 +50,6 @@ NUMBERS = (
     ("ACCURACY_95", "accuracy_95", QT_TRANSLATE_NOOP("GeomaticsAlgorithm",
                                                      "Vertical accuracy at 95 % = 1.96·RMSE (m)")),
 )
-
-
-def residual_renderer(errors):
-    """Diverging graduated renderer on ``error`` (blue below, red above), symmetric
-    about zero up to the largest absolute error."""
-    from qgis.core import QgsGraduatedSymbolRenderer, QgsMarkerSymbol, QgsRendererRange
-
-    from ..core.reporting import svg
-    err = np.asarray(errors, dtype=float)
-    limit = float(np.nanmax(np.abs(err))) if np.isfinite(err).any() else 1.0
-    edges = svg.class_edges(limit)
-    edges[0], edges[-1] = -1e9, 1e9
-    ranges = []
-    for i, (colour, label) in enumerate(svg.diverging_legend_entries(limit)):
-        symbol = QgsMarkerSymbol.createSimple({"name": "circle", "color": colour,
-                                              "size": "3", "outline_color": "#222222"})
-        ranges.append(QgsRendererRange(float(edges[i]), float(edges[i + 1]), symbol, label))
-    return QgsGraduatedSymbolRenderer("error", ranges)
-
-
-def residual_style(errors) -> str:
-    """QML of :func:`residual_renderer` (stored in the GeoPackage as its default style)."""
-    from qgis.core import QgsVectorLayer
-    from qgis.PyQt.QtXml import QDomDocument
-
-    layer = QgsVectorLayer("Point?field=error:double", "residuals", "memory")
-    layer.setRenderer(residual_renderer(errors))
-    doc = QDomDocument()
-    layer.exportNamedStyle(doc)
-    return doc.toString()
 
 
 class CheckPointInputs:

@@ -12,9 +12,11 @@ attaches a :class:`LayerStyler` to each, which styles the layer once QGIS has lo
   layer's style manager (Layer ▸ Styles);
 * ``height`` (nDSM / canopy height), ``variance`` (kriging variance), ``density``
   (point density, band 1), ``change`` (after − before, a diverging ramp symmetric about
-  zero);
+  zero); ``change`` and ``density`` are the report's own ramps (``svg.RAMPS``), so a
+  layer and the report's map of the same raster have the same colours;
 * ``footprints`` (graduated by ``height_m`` and extruded by it in 3D views),
-  ``change_polygons`` (cut red, fill blue), ``residuals`` (diverging by ``error``);
+  ``change_polygons`` (cut red, fill blue), ``residuals`` (diverging by ``error``: the
+  style the writer stored in the GeoPackage, :func:`residual_style`);
 * ``classes`` — a point cloud with the ASPRS classification renderer.
 
 QGIS keeps only a raw pointer to a post-processor: :data:`_KEEP` holds the Python
@@ -24,6 +26,7 @@ from __future__ import annotations
 
 import collections
 
+import numpy as np
 from qgis.core import (
     QgsCategorizedSymbolRenderer,
     QgsColorRampShader,
@@ -33,17 +36,35 @@ from qgis.core import (
     QgsGraduatedSymbolRenderer,
     QgsHillshadeRenderer,
     QgsMapLayerType,
+    QgsMarkerSymbol,
     QgsProcessingLayerPostProcessorInterface,
     QgsRasterBandStats,
     QgsRasterShader,
     QgsRendererCategory,
+    QgsRendererRange,
     QgsSingleBandPseudoColorRenderer,
 )
 from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QColor
 
+from ..core.reporting import svg
+
 #: post-processors handed to QGIS (which keeps raw pointers): kept alive here
 _KEEP: collections.deque = collections.deque(maxlen=1024)
+
+#: the report's ramp (``core/reporting/svg.py`` RAMPS) of each kind that a report also
+#: maps: the layer and the report's figure of the same raster share one colour table
+REPORT_RAMPS = {"change": "diverging", "density": "viridis"}
+
+
+def _report_ramp(name: str) -> tuple:
+    """``svg.RAMPS[name]`` (evenly spaced RGB anchors, interpolated linearly as
+    :func:`svg.colourise` does) as (position 0–1, "#rrggbb") stops."""
+    anchors = svg.RAMPS[name]
+    last = len(anchors) - 1
+    return tuple((i / last, "#" + "".join(f"{c:02x}" for c in rgb))
+                 for i, rgb in enumerate(anchors))
+
 
 #: colour ramps by layer kind: (position 0–1, colour)
 RAMPS = {
@@ -56,12 +77,9 @@ RAMPS = {
     # kriging variance: yellow-orange-red (more uncertain = darker)
     "variance": ((0.0, "#ffffb2"), (0.25, "#fecc5c"), (0.5, "#fd8d3c"),
                  (0.75, "#f03b20"), (1.0, "#bd0026")),
-    # after - before: red = loss (cut), white = no change, blue = gain (fill)
-    "change": ((0.0, "#b2182b"), (0.25, "#ef8a62"), (0.5, "#f7f7f7"),
-               (0.75, "#67a9cf"), (1.0, "#2166ac")),
-    # point density: viridis
-    "density": ((0.0, "#440154"), (0.25, "#3b528b"), (0.5, "#21918c"),
-                (0.75, "#5ec962"), (1.0, "#fde725")),
+    # after - before: red = loss (cut), white = no change, blue = gain (fill);
+    # point density: viridis — both the report's own ramps
+    **{kind: _report_ramp(name) for kind, name in REPORT_RAMPS.items()},
 }
 RASTER_KINDS = ("elevation", "height", "variance", "change", "density")
 VECTOR_KINDS = ("footprints", "change_polygons", "residuals")
@@ -105,11 +123,10 @@ def raster_range(layer, kind: str, band: int = 1):
     return float(lo), float(hi)
 
 
-def pseudocolor_renderer(layer, kind: str, band: int = 1):
-    """A single-band pseudocolour renderer with the kind's ramp over its range."""
-    lo, hi = raster_range(layer, kind, band)
-    ramp = color_ramp(kind)
-    shader_fn = QgsColorRampShader(lo, hi, ramp.clone(), QgsColorRampShader.Interpolated)
+def ramp_shader(kind: str, lo: float, hi: float) -> QgsRasterShader:
+    """A raster shader interpolating the kind's ramp linearly from ``lo`` to ``hi``
+    (values outside take the end colours)."""
+    shader_fn = QgsColorRampShader(lo, hi, color_ramp(kind), QgsColorRampShader.Interpolated)
     items = []
     for pos, colour in RAMPS[kind]:
         value = lo + pos * (hi - lo)
@@ -121,7 +138,14 @@ def pseudocolor_renderer(layer, kind: str, band: int = 1):
     shader.setRasterShaderFunction(shader_fn)
     shader.setMinimumValue(lo)
     shader.setMaximumValue(hi)
-    renderer = QgsSingleBandPseudoColorRenderer(layer.dataProvider(), band, shader)
+    return shader
+
+
+def pseudocolor_renderer(layer, kind: str, band: int = 1):
+    """A single-band pseudocolour renderer with the kind's ramp over its range."""
+    lo, hi = raster_range(layer, kind, band)
+    renderer = QgsSingleBandPseudoColorRenderer(layer.dataProvider(), band,
+                                                ramp_shader(kind, lo, hi))
     renderer.setClassificationMin(lo)
     renderer.setClassificationMax(hi)
     return renderer
@@ -185,6 +209,55 @@ def footprints_3d(field: str = "height_m"):
     return QgsVectorLayer3DRenderer(symbol)
 
 
+def residual_renderer(errors) -> QgsGraduatedSymbolRenderer:
+    """Graduated renderer on ``error``: the report's diverging classes
+    (``svg.DIVERGING``, blue below zero, red above), symmetric about zero up to the
+    largest absolute error, with the report's legend labels."""
+    err = np.asarray(errors, dtype=float)
+    limit = float(np.nanmax(np.abs(err))) if np.isfinite(err).any() else 1.0
+    edges = svg.class_edges(limit)
+    edges[0], edges[-1] = -1e9, 1e9
+    ranges = []
+    for i, (colour, label) in enumerate(svg.diverging_legend_entries(limit)):
+        symbol = QgsMarkerSymbol.createSimple({"name": "circle", "color": colour,
+                                              "size": "3", "outline_color": "#222222"})
+        ranges.append(QgsRendererRange(float(edges[i]), float(edges[i + 1]), symbol, label))
+    return QgsGraduatedSymbolRenderer("error", ranges)
+
+
+def residual_style(errors) -> str:
+    """QML of :func:`residual_renderer`, which the residual writer stores in the
+    GeoPackage as the layer's default style (QGIS draws it so whenever the file is
+    opened; :func:`style_residuals` applies it to the layer a run loads)."""
+    from qgis.core import QgsVectorLayer
+    from qgis.PyQt.QtXml import QDomDocument
+
+    layer = QgsVectorLayer("Point?field=error:double", "residuals", "memory")
+    layer.setRenderer(residual_renderer(errors))
+    doc = QDomDocument()
+    layer.exportNamedStyle(doc)
+    return doc.toString()
+
+
+def _is_residual_renderer(renderer) -> bool:
+    return (renderer is not None and renderer.type() == "graduatedSymbol"
+            and renderer.classAttribute() == "error" and len(renderer.ranges()) > 0)
+
+
+def style_residuals(layer) -> None:
+    """The residual style on a loaded residual layer, computed once: the default style
+    the writer stored in the GeoPackage (Processing loads results without it); only
+    an output without one (GeoJSON) is classed here from its features."""
+    if _is_residual_renderer(layer.renderer()):
+        return                                  # loaded with its default style already
+    _msg, ok = layer.loadDefaultStyle()
+    if ok and _is_residual_renderer(layer.renderer()):
+        return
+    errors = [f["error"] for f in layer.getFeatures()
+              if isinstance(f["error"], (int, float))]
+    layer.setRenderer(residual_renderer(errors))
+
+
 def style_vector(layer, kind: str) -> None:
     """Renderer (and 3D renderer for footprints) of a vector output."""
     if kind == "footprints":
@@ -206,10 +279,7 @@ def style_vector(layer, kind: str) -> None:
             cats.append(QgsRendererCategory(value, symbol, names[value]))
         layer.setRenderer(QgsCategorizedSymbolRenderer("kind", cats))
     elif kind == "residuals":
-        from .dtm_accuracy import residual_renderer
-        errors = [f["error"] for f in layer.getFeatures()
-                  if isinstance(f["error"], (int, float))]
-        layer.setRenderer(residual_renderer(errors))
+        style_residuals(layer)
     layer.triggerRepaint()
 
 

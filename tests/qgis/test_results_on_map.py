@@ -219,10 +219,55 @@ def test_lidarqa_density(qgis_processing, scene):
     assert lyr.renderer().band() == 1
 
 
-def test_dtmaccuracy_residuals(qgis_processing, scene):
+def renderer_classes(renderer):
+    """(lower, upper, colour, label) of each class of a graduated renderer."""
+    return [(round(r.lowerValue(), 9), round(r.upperValue(), 9),
+             r.symbol().color().name(), r.label()) for r in renderer.ranges()]
+
+
+@pytest.mark.parametrize("kind", ["change", "density"])
+def test_layer_ramp_is_the_report_ramp(qgis_app, kind):
+    """A change / density layer and the report's map of the same raster show the same
+    colour for every value: the QGIS shader against ``svg.colourise`` (±1 of 255:
+    QGIS rounds, the report truncates), inside and outside the range."""
+    import numpy as np
+
+    from geomatics_toolbox.algorithms import styles
+    from geomatics_toolbox.core.reporting import svg
+    name = styles.REPORT_RAMPS[kind]
+    assert [c for _, c in styles.RAMPS[kind]] == [
+        "#" + "".join(f"{v:02x}" for v in rgb) for rgb in svg.RAMPS[name]]
+    lo, hi = (-2.0, 2.0) if kind == "change" else (0.0, 17.5)
+    shader = styles.ramp_shader(kind, lo, hi)
+    values = np.linspace(lo - 1.0, hi + 1.0, 97)
+    qgis = np.array([shader.shade(float(v))[1:4] for v in values])
+    report = svg.colourise(values[None, :], lo, hi, name)[0, :, :3].astype(int)
+    assert np.abs(qgis - report).max() <= 1
+
+
+@pytest.fixture
+def count_residual_renderers(monkeypatch):
+    """Counts how often the residual renderer is computed in the run."""
+    from geomatics_toolbox.algorithms import styles
+    calls = []
+    real = styles.residual_renderer
+
+    def counted(errors):
+        calls.append(len(errors))
+        return real(errors)
+
+    monkeypatch.setattr(styles, "residual_renderer", counted)
+    return calls
+
+
+def test_dtmaccuracy_residuals(qgis_processing, scene, count_residual_renderers):
+    from qgis.core import QgsVectorLayer
+
+    from geomatics_toolbox.core.reporting import svg
     d = scene["dir"]
     dtm = qgis_processing.run("geomatics:idwdtm", {
         "INPUT": scene["laz"], "CELL_SIZE": 1.0, "OUTPUT": str(d / "dtm_acc.tif")})["OUTPUT"]
+    count_residual_renderers.clear()
     res, ctx, project, rec, pending = gui_run(qgis_processing, "geomatics:dtmaccuracy", {
         "DTM": dtm, "CHECKPOINTS_CSV": scene["csv"], "OUTPUT": "TEMPORARY_OUTPUT"})
     assert set(pending) == {res["OUTPUT"]}
@@ -237,6 +282,35 @@ def test_dtmaccuracy_residuals(qgis_processing, scene):
     errors = [f["error"] for f in lyr.getFeatures() if f["error"] is not None]
     assert max(abs(e) for e in errors) == pytest.approx(inner[-1][1] * len(ranges)
                                                         / (len(ranges) - 2), rel=1e-6)
+    # the report's classes and colours
+    assert [x.symbol().color().name() for x in ranges] == list(svg.DIVERGING)
+    # styled once: the renderer computed when the GeoPackage was written (its default
+    # style) is the one on the loaded layer — no second pass over the features
+    assert count_residual_renderers == [lyr.featureCount()]
+    later = QgsVectorLayer(res["OUTPUT"], "opened later", "ogr")
+    assert later.renderer().type() == "graduatedSymbol"
+    assert renderer_classes(later.renderer()) == renderer_classes(r)
+
+
+def test_dtmaccuracy_residuals_geojson_styled_from_features(qgis_processing, scene,
+                                                            count_residual_renderers):
+    """A GeoJSON output stores no style: the loaded layer is classed from its
+    features, with the same classes as the report."""
+    from geomatics_toolbox.core.reporting import svg
+    d = scene["dir"]
+    dtm = qgis_processing.run("geomatics:idwdtm", {
+        "INPUT": scene["laz"], "CELL_SIZE": 1.0, "OUTPUT": str(d / "dtm_gj.tif")})["OUTPUT"]
+    out = str(d / "residuals.geojson")
+    res, ctx, project, rec, pending = gui_run(qgis_processing, "geomatics:dtmaccuracy", {
+        "DTM": dtm, "CHECKPOINTS_CSV": scene["csv"], "OUTPUT": out})
+    lyr = layer_of(project, out)
+    r = lyr.renderer()
+    assert r.type() == "graduatedSymbol" and r.classAttribute() == "error"
+    errors = [f["error"] for f in lyr.getFeatures() if f["error"] is not None]
+    limit = max(abs(e) for e in errors)
+    assert [x.label() for x in r.ranges()] == [
+        label for _, label in svg.diverging_legend_entries(limit)]
+    assert count_residual_renderers[-1] == len(errors)
 
 
 def test_buildings_footprints_extruded(qgis_processing, scene):
