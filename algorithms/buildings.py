@@ -149,8 +149,8 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
         self.load_cloud_on_completion(context, results.get(self.OUTPUT_CLOUD),
                                       self.tr("Classified cloud (class 6 = building)"),
                                       self.OUTPUT_CLOUD)
-        feedback.pushInfo(self.tr("{} buildings; data units: {}").format(
-            len(res.buildings), units.describe()))
+        feedback.pushInfo(self.tr("{} buildings; data units (horizontal / vertical): "
+                                  "{}").format(len(res.buildings), units.symbols))
         results.update(N_BUILDINGS=len(res.buildings),
                        TOTAL_AREA=float(sum(b["area"] for b in res.buildings)),
                        TOTAL_VOLUME=float(sum(b["volume"] for b in res.buildings)))

@@ -182,7 +182,7 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                                                          context))
         for path, reason in cat.unreadable.items():
             feedback.reportError(self.tr("Tile {path} skipped: {reason}").format(
-                path=path, reason=reason), False)
+                path=path, reason=self.input_error_message(reason)), False)
         done = []
         with self.output_contract(parameters, context, [self.OUTPUT_HTML],
                                   inputs={"INPUT": cat.paths}) as out:

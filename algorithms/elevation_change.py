@@ -70,10 +70,11 @@ def check_same_crs(crs_a, crs_b, path_a, path_b, units_a=None, units_b=None) -> 
                          a=os.path.basename(path_a), crs_a=crs_label(crs_a),
                          b=os.path.basename(path_b), crs_b=crs_label(crs_b))
     if units_a is not None and units_b is not None and units_a != units_b:
-        raise InputError("The two epochs have different linear units: {a} is in {ua}, {b} "
-                         "in {ub}. Convert one into the other's units first.",
-                         a=os.path.basename(path_a), ua=units_a.describe(),
-                         b=os.path.basename(path_b), ub=units_b.describe())
+        raise InputError("The two epochs have different linear units (horizontal / "
+                         "vertical): {a} is in {ua}, {b} in {ub}. Convert one into the "
+                         "other's units first.",
+                         a=os.path.basename(path_a), ua=units_a.symbols,
+                         b=os.path.basename(path_b), ub=units_b.symbols)
 
 
 class ElevationChangeAlgorithm(GeomaticsAlgorithm):

@@ -29,6 +29,7 @@ from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP
 
 from ..core.errors import InputError
 from ..core.io import gcp as gcp_io
+from ..core.io.units import EPSG_UNITS, UNIT_ALIASES, LinearUnit, crs_units
 from ..core.rectification import assess, export, report, warp
 from .base import GeomaticsAlgorithm
 from .helptext import build_help
@@ -79,11 +80,13 @@ TRANSFORMATIONS = (None, "polynomial1", "polynomial2", "polynomial3", "linear", 
                    "projective", "tps", assess.RECOMMENDED)
 
 def unit_symbol(unit: str) -> str:
-    """The symbol of a linear unit name ("metre" -> "m"); the name if unknown."""
-    from ..core.io import units
-    known = getattr(units, "_ALIASES", {})
+    """The symbol of a linear unit name ("metre" -> "m", "US survey foot" -> "ftUS").
+
+    The one unit table of ``core/io/units.py``; an unknown name is returned as is.
+    """
     key = str(unit or "").strip().lower()
-    return known[key].symbol if key in known else unit
+    known = {u.name.lower(): u for u in EPSG_UNITS.values()}
+    return (known.get(key) or UNIT_ALIASES.get(key) or LinearUnit(unit, 1.0, unit)).symbol
 
 
 class TransformationParams:
@@ -381,20 +384,20 @@ class _GcpBase(TransformationParams, GeomaticsAlgorithm):
             raise QgsProcessingException(self.tr(
                 "The GCP map coordinates have no CRS: the file has no '#CRS:' line and "
                 "GCP_CRS is not set. Set GCP_CRS (e.g. EPSG:22780) and run again."))
-        proj, unit, _ = warp.linear_units(gcps.crs)
-        if not proj:
-            if target_crs and warp.linear_units(target_crs)[0]:
+        unit = crs_units(gcps.crs).horizontal
+        if unit.angular:
+            if target_crs and not crs_units(target_crs).horizontal.angular:
                 g = gcps.with_crs(target_crs)
                 g.map = warp.to_crs(gcps.map, gcps.crs, target_crs)
                 g.notes.append("GCP map coordinates transformed from the geographic GCP CRS "
                                "to the target CRS before fitting (as the QGIS "
                                "Georeferencer does).")
-                return g, warp.linear_units(target_crs)[1]
+                return g, crs_units(target_crs).horizontal.name
             raise QgsProcessingException(self.tr(
                 "The GCP CRS is geographic (degrees): the accuracy criteria need map units "
                 "of length. Set TARGET_CRS (or GCP_CRS) to a projected CRS, e.g. the UTM "
                 "zone of the image."))
-        return gcps, unit
+        return gcps, unit.name
 
     def numbers(self, a):
         """Processing outputs of an :class:`~..core.rectification.assess.Assessment`."""

@@ -39,7 +39,7 @@ from ..core.lidar import filters as core_filters
 from ..core.lidar.filters import default_ground_filter
 from ..core.lidar.pipeline import FilterOutputs, classify_file
 from ..core.progress import Monitor
-from ..core.reporting import translator
+from ..core.reporting import T, translator
 from ..core.terrain import accuracy as core_acc
 from ..core.terrain import dtm as core_dtm
 from ..core.terrain import idw as core_idw
@@ -160,7 +160,7 @@ class LidarToDtmAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
             raise InputError(self.tr(
                 "The point cloud has no CRS record and no CRS was given; set the CRS "
                 "parameter (e.g. EPSG:32632). No output was written."))
-        check_projected(crs=crs, what=f"The point cloud {info.path}")
+        check_projected(crs=crs, what=T("The point cloud {path}", path=info.path))
         return crs
 
     def check_extent(self, info, ids, x, y) -> None:

@@ -39,6 +39,40 @@ class _Formatter(string.Formatter):
         return self.before + super().format_field(value, format_spec) + self.after
 
 
+def _field_text(value, lang: str):
+    """Return a field in ``lang``: nested errors and ``T`` sentences translated, data as is.
+
+    A field may be an :class:`InputError` (its own message), a list or tuple of them
+    (joined by ``'; '``) or a :class:`~.reporting.content.T` (a translatable sentence
+    around data, e.g. ``T("The point cloud {path}", path=p)``); anything else is data
+    (paths, numbers, unit symbols) and is shown as given.
+    """
+    if isinstance(value, InputError):
+        return value.message(lang)
+    if isinstance(value, (list, tuple)) and value and all(
+            isinstance(v, InputError) or _is_t(v) for v in value):
+        return "; ".join(_field_text(v, lang) for v in value)
+    if _is_t(value):
+        from .reporting.i18n import normalise_lang, translator
+        lang = normalise_lang(lang)
+        text = translator(lang)(value.text) if lang != "en" else value.text
+        args = {k: _field_text(v, lang) for k, v in value.args.items()}
+        if not args:
+            return text
+        fmt = _Formatter() if lang == "en" else _Formatter(FSI, PDI)
+        try:
+            return fmt.vformat(text, (), args)
+        except (KeyError, IndexError, ValueError):  # a broken translation: English
+            return _Formatter().vformat(value.text, (), args)
+    return value
+
+
+def _is_t(value) -> bool:
+    """Return True for a :class:`~.reporting.content.T` (without importing reporting)."""
+    cls = type(value)
+    return cls.__name__ == "T" and cls.__module__.endswith("reporting.content")
+
+
 def _rebuild(cls, template, fields):
     return cls(template, **fields)
 
@@ -57,7 +91,8 @@ class InputError(ValueError):
     def __init__(self, template: str = "", **fields):
         self.template = str(template)
         self.fields = fields
-        super().__init__(self._fill(self.template, _Formatter()))
+        super().__init__(self._fill(self.template, _Formatter(),
+                                    {k: _field_text(v, "en") for k, v in fields.items()}))
 
     def _fill(self, template: str, formatter: _Formatter, values=None) -> str:
         if not self.fields:
@@ -80,7 +115,7 @@ class InputError(ValueError):
             return str(self)
         tr = translator(lang)
         values = {k: tr(v) if isinstance(v, str) and " " in v and has_translation(v, lang)
-                  else v for k, v in self.fields.items()}
+                  else _field_text(v, lang) for k, v in self.fields.items()}
         try:
             return self._fill(tr(self.template), _Formatter(FSI, PDI), values)
         except (KeyError, IndexError, ValueError):  # a broken translation: English

@@ -227,8 +227,8 @@
             <translation>نموذج ثلاثي الأبعاد للعارضات (OBJ)</translation>
         </message>
         <message>
-            <source>{} buildings; data units: {}</source>
-            <translation>{} مبانٍ؛ وحدات البيانات: {}</translation>
+            <source>{} buildings; data units (horizontal / vertical): {}</source>
+            <translation>{} مبانٍ؛ وحدات البيانات (أفقية / رأسية): {}</translation>
         </message>
     </context>
     <context>

@@ -227,8 +227,8 @@
             <translation>مدل سه‌بعدی برای نمایشگرها (OBJ)</translation>
         </message>
         <message>
-            <source>{} buildings; data units: {}</source>
-            <translation>{} ساختمان؛ یکای داده: {}</translation>
+            <source>{} buildings; data units (horizontal / vertical): {}</source>
+            <translation>{} ساختمان؛ یکای داده (افقی / قائم): {}</translation>
         </message>
     </context>
     <context>

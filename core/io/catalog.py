@@ -155,6 +155,12 @@ def build_vrt(vrt_path: str, rasters: Sequence[str], *, cog_path: Optional[str] 
     vrt = gdal.BuildVRT(os.fspath(vrt_path), [os.fspath(r) for r in rasters])
     if vrt is None:  # pragma: no cover - GDAL raises with UseExceptions
         raise InputError("GDAL could not build {path}.", path=vrt_path)
+    first = gdal.Open(os.fspath(rasters[0]))
+    for i in range(1, vrt.RasterCount + 1):   # BuildVRT drops the heights' band unit type
+        unit = first.GetRasterBand(i).GetUnitType() if i <= first.RasterCount else ""
+        if unit:
+            vrt.GetRasterBand(i).SetUnitType(unit)
+    first = None
     vrt.FlushCache()
     if cog_path:
         gdal.Translate(os.fspath(cog_path), vrt, format="COG",

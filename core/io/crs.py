@@ -81,11 +81,3 @@ def is_geographic(crs: Optional[str]) -> bool:
         return False
 
 
-def linear_unit(crs: Optional[str]) -> tuple:
-    """Return ``(name, metres per unit)`` of a projected CRS, ``('metre', 1.0)`` if none."""
-    if not crs:
-        return ("metre", 1.0)
-    srs = spatial_reference(crs)
-    if srs.IsGeographic():
-        return ("degree", float("nan"))
-    return (srs.GetLinearUnitsName() or "metre", float(srs.GetLinearUnits() or 1.0))

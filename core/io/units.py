@@ -46,14 +46,31 @@ from typing import Optional
 import numpy as np
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class LinearUnit:
-    """A linear unit: English name (as PROJ spells it), metres per unit, symbol."""
+    """A linear unit: English name (as PROJ spells it), metres per unit, symbol.
+
+    Two units are equal when they mean the same length (metres per unit within 1e-9,
+    or both degrees): PROJ, GeoTIFF keys and band unit types name one unit several
+    ways, and ``LinearUnit("metre", 1.0, "m")`` is the metre whatever its EPSG code.
+    """
 
     name: str
     metres: float
     symbol: str
     epsg: Optional[int] = None
+
+    def __eq__(self, other) -> bool:
+        """Return True when both units mean the same length."""
+        if not isinstance(other, LinearUnit):
+            return NotImplemented
+        if self.angular or other.angular:
+            return self.angular and other.angular
+        return math.isclose(self.metres, other.metres, rel_tol=1e-9)
+
+    def __hash__(self) -> int:
+        """Hash by meaning (metres per unit)."""
+        return hash("°") if self.angular else hash(float(f"{self.metres:.8g}"))
 
     @property
     def angular(self) -> bool:
@@ -98,7 +115,7 @@ EPSG_UNITS = {u.epsg: u for u in (
 )}
 
 #: Band unit types (GDAL ``GetUnitType``) and names seen in files, lower case.
-_ALIASES = {
+UNIT_ALIASES = {
     "m": METRE, "metre": METRE, "meter": METRE, "metres": METRE, "meters": METRE,
     "ft": FOOT, "foot": FOOT, "feet": FOOT, "international foot": FOOT,
     "foot (international)": FOOT, "intl foot": FOOT,
@@ -117,22 +134,25 @@ def linear_unit(name: Optional[str] = None, metres: Optional[float] = None,
     """
     if epsg is not None and int(epsg) in EPSG_UNITS:
         return EPSG_UNITS[int(epsg)]
-    if name and str(name).strip().lower() in _ALIASES and metres is None:
-        return _ALIASES[str(name).strip().lower()]
+    if name and str(name).strip().lower() in UNIT_ALIASES and metres is None:
+        return UNIT_ALIASES[str(name).strip().lower()]
     if metres is not None and math.isfinite(metres) and metres > 0:
         for unit in EPSG_UNITS.values():
             if abs(unit.metres - metres) <= 1e-9 * unit.metres:
                 return unit
         label = str(name or "unit")
         return LinearUnit(label, float(metres), label)
-    if name and str(name).strip().lower() in _ALIASES:
-        return _ALIASES[str(name).strip().lower()]
+    if name and str(name).strip().lower() in UNIT_ALIASES:
+        return UNIT_ALIASES[str(name).strip().lower()]
     return METRE
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Units:
     """Horizontal and vertical linear units of a dataset.
+
+    Equal when both units mean the same lengths (:class:`LinearUnit` equality), wherever
+    they were read from: a metre DTM with band unit type "m" equals one without.
 
     Attributes
     ----------
@@ -147,6 +167,21 @@ class Units:
     horizontal: LinearUnit = METRE
     vertical: LinearUnit = METRE
     vertical_source: str = "none"
+
+    def __eq__(self, other) -> bool:
+        """Return True when both horizontal and vertical units mean the same lengths."""
+        if not isinstance(other, Units):
+            return NotImplemented
+        return self.horizontal == other.horizontal and self.vertical == other.vertical
+
+    def __hash__(self) -> int:
+        """Hash by meaning."""
+        return hash((self.horizontal, self.vertical))
+
+    @property
+    def symbols(self) -> str:
+        """``'ftUS / m'``: horizontal / vertical unit symbols (data for any language)."""
+        return f"{self.horizontal.symbol} / {self.vertical.symbol}"
 
     @property
     def h(self) -> float:
@@ -196,13 +231,6 @@ class Units:
         return (np.asarray(x, dtype=np.float64) * self.h,
                 np.asarray(y, dtype=np.float64) * self.h,
                 np.asarray(z, dtype=np.float64) * self.v)
-
-    def describe(self) -> str:
-        """English one-liner for logs: ``'US survey foot (ftUS)'`` or both units."""
-        if not self.mixed:
-            return f"{self.horizontal.name} ({self.horizontal.symbol})"
-        return (f"horizontal {self.horizontal.name} ({self.horizontal.symbol}), "
-                f"vertical {self.vertical.name} ({self.vertical.symbol})")
 
 
 #: Units of data with no CRS (metres assumed).
@@ -334,13 +362,8 @@ def raster_units(path_or_dataset, band: int = 1) -> Units:
     unit_type = ""
     if 1 <= band <= ds.RasterCount:
         unit_type = (ds.GetRasterBand(band).GetUnitType() or "").strip()
-    vertical = _ALIASES.get(unit_type.lower()) if unit_type else None
+    vertical = UNIT_ALIASES.get(unit_type.lower()) if unit_type else None
     return crs_units(wkt or None, vertical=vertical, vertical_source="band")
-
-
-def band_unit_type(units: Units) -> str:
-    """Return the band unit type to write on a height raster (``'m'``, ``'ft'``, ``'ftUS'``)."""
-    return units.vertical.symbol
 
 
 # --------------------------------------------------------------------------- labels
@@ -376,9 +399,11 @@ def units_note(units: Units):
              vs=units.vertical.symbol)
 
 
-def to_metres_message(units: Units, what: str) -> str:
-    """English log line: the data's units and the conversion (``''`` when metric)."""
-    if units.metric:
-        return ""
-    return (f"{what} is in {units.describe()}; its coordinates are converted to metres "
-            "(every length parameter is in metres).")
+def units_rows(units: Optional[Units]) -> list:
+    """Return the report row(s) stating the data's units: ``[("Linear units", note)]``.
+
+    One row for every report (filters, DTMs, DSM, QA, classification, buildings): empty
+    for metric data or unknown units (nothing to say), else :func:`units_note`.
+    """
+    note = units_note(units) if units is not None else None
+    return [("Linear units", note)] if note is not None else []

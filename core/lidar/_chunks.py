@@ -22,6 +22,7 @@ from ..io.catalog import read_box
 from ..io.contract import OutputContract
 from ..io.las import PointData, read_las, write_las, write_las_like
 from ..io.raster import write_geotiff
+from ..io.units import METRIC, Units
 from ..system import peak_rss_mb
 from ..terrain.dtm import DTM_METHODS, IdwOptions, dtm_method, register_dtm_method
 from ..terrain.grid import GridSpec
@@ -85,9 +86,9 @@ class ChunkTask:
     outputs: Dict[str, str] = field(default_factory=dict)   # LAS, DTM, DONE
     fail_once: bool = False                                   # tests: first attempt fails
     strip_shares: List[float] = field(default_factory=list)  # 1 / consumers per strip
-    #: Metres per horizontal / vertical unit of the tiles (feet tiles: the filter runs
-    #: on metres, the geometry above is in the tiles' units).
-    units: Tuple[float, float] = (1.0, 1.0)
+    #: Linear units of the tiles (feet tiles: the filter runs on metres, the geometry
+    #: above and the chunk's outputs are in the tiles' units).
+    units: Units = METRIC
 
     @property
     def neighbours(self) -> List[str]:
@@ -252,11 +253,11 @@ def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
     """
     if not core.any():
         return np.zeros(core.size, np.uint8)
-    h, v = task.units
+    units = task.units
     origin = task.origin
-    if (h, v) != (1.0, 1.0):          # every length of the filters is metres
-        xyz = (np.asarray(xyz[0]) * h, np.asarray(xyz[1]) * h, np.asarray(xyz[2]) * v)
-        origin = (origin[0] * h, origin[1] * h)
+    if not units.metric:              # every length of the filters is metres
+        xyz = units.xyz_to_metres(*xyz)
+        origin = (units.h_to_metres(origin[0]), units.h_to_metres(origin[1]))
     pts = PointData(*xyz, dims=dims)
     return classify_points(pts, ground_filter(task.ground_filter),
                            default_selection(task.ground_filter), origin=origin)
@@ -275,7 +276,9 @@ def _write_outputs(task: ChunkTask, xyz, dims, core, cls, dtm, grid, records=Non
             write_las(out.path("LAS"), *(v[core] for v in xyz), dimensions=new,
                       crs=task.crs, point_format=fmt["point_format"], version=fmt["version"],
                       scale=fmt["scale"], extra_dims=fmt.get("extra_dims"))
-        write_geotiff(out.path("DTM"), dtm, geotransform=grid.geotransform, crs=task.crs)
+        # heights in the tiles' vertical unit, named on the band as single-file DTMs do
+        write_geotiff(out.path("DTM"), dtm, geotransform=grid.geotransform, crs=task.crs,
+                      unit_type=task.units.vertical.symbol)
 
 
 def process_chunk(task: ChunkTask, *strips) -> dict:

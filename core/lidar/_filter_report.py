@@ -8,6 +8,7 @@ computation, outputs) plus the method's own sections
 from __future__ import annotations
 
 from ..classes import NAMES as CLASS_NAMES
+from ..io.units import units_rows
 from ..reporting import KeyValues, Paragraph, Report, T, Table, translator
 
 __all__ = ["filter_report"]
@@ -39,7 +40,7 @@ def filter_report(run, algorithm, *, lang: str = "en") -> Report:
     rep.section("Input").add(KeyValues([
         ("Point cloud", run.input), ("Points", n),
         ("CRS", _crs_label(run.points) or T("none")),
-        *_units_rows(run.points)]))
+        *units_rows(run.points.info.units if run.points.info else None)]))
     rows = [(k, T(CLASS_NAMES.get(k, "other class")), c, 100.0 * c / n)
             for k, c in sorted(run.counts().items())]
     rep.section("Output classes (ASPRS)").add(
@@ -81,12 +82,6 @@ def _selection_rows(run) -> list:
                  ("Points without return information (taken as last)",
                   run.selection.unknown_returns)]
     return rows
-
-
-def _units_rows(pd) -> list:
-    from ..io.units import units_note
-    note = units_note(pd.info.units) if pd.info else None
-    return [("Linear units", note)] if note is not None else []
 
 
 def _crs_label(pd) -> str:

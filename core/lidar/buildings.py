@@ -554,7 +554,7 @@ def buildings_report(res: BuildingResult, name: str, params: dict, *, units=None
     """Build the report: parameters, footprint map, per-building table, bridges refused."""
     from scipy import ndimage
 
-    from ..io.units import unit_label
+    from ..io.units import units_rows
     from ..reporting import KeyValues, Paragraph, Report, T
     rep = Report("Building footprints report",
                  citation="Kostrikov et al. (2020), ELiT non-ground branch; Rabbani et al. "
@@ -565,8 +565,7 @@ def buildings_report(res: BuildingResult, name: str, params: dict, *, units=None
                    Paragraph(T("{n} bridges or decks refused (their surface runs on into "
                                "the ground at both ends).", n=n_bridges))]
     rows = [("Input", name)]
-    if units is not None:
-        rows.append(("Units of the data", unit_label(units.horizontal, lang)))
+    rows += units_rows(units)
     rows += [("Minimum height above ground (m)", params["min_height"]),
              ("Maximum angle between roof normals (°)", params["max_angle"]),
              ("Minimum roof patch area (m²)", params["min_patch_area"]),

@@ -36,6 +36,7 @@ from ..io.contract import OutputContract, check_paths
 from ..io.crs import crs_label, same_crs
 from ..io.las import LasInfo, las_info
 from ..progress import Cancelled, Monitor  # noqa: F401 - callers catch catalog.Cancelled
+from ..reporting.content import T
 from ..terrain.grid import check_grid_size
 from ._chunks import (
     DTM_METHODS,
@@ -91,7 +92,7 @@ class Catalog:
     bounds: np.ndarray
     crs: Optional[str]
     #: Tiles left out because they cannot be read (``skip_unreadable``): path -> reason.
-    unreadable: Dict[str, str] = field(default_factory=dict)
+    unreadable: Dict[str, Exception] = field(default_factory=dict)
 
     @classmethod
     def open(cls, source, *, skip_unreadable: bool = False) -> Catalog:
@@ -111,11 +112,11 @@ class Catalog:
         for path in find_tiles(source):
             try:
                 infos.append(las_info(path))
-            except ValueError as exc:           # InputError included: keep its text
-                unreadable[path] = str(exc)
+            except ValueError as exc:           # InputError included: keep it (translated)
+                unreadable[path] = exc
         if unreadable and (not skip_unreadable or not infos):
-            listing = "; ".join(f"{os.path.basename(p)}: {r}"
-                                for p, r in list(unreadable.items())[:4])
+            listing = [T("{tile}: {reason}", tile=os.path.basename(p), reason=r)
+                       for p, r in list(unreadable.items())[:4]]
             raise InputError("{n} tile(s) cannot be read ({listing}). Repair or remove them, "
                              "or let the catalog skip unreadable tiles (SKIP_UNREADABLE; "
                              "their neighbours then get no buffer points from them).",
@@ -453,7 +454,7 @@ def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
     md = cat.default_max_distance() if max_distance is None else float(max_distance) / h
     common = dict(buffer=buffer, origin=(float(origin[0]), float(origin[1])),
                   cell_size=cell_size, crs=cat.crs, ground_filter=ground_filter,
-                  dtm_method=dtm_method, max_distance=md, units=(h, units.v))
+                  dtm_method=dtm_method, max_distance=md, units=units)
     _check_chunks(cat, chunk_size, cell_size, buffer, origin, h=h)
     tasks = (_box_tasks(cat, folder, chunk_size, common) if chunk_size
              else _tile_tasks(cat, folder, common))

@@ -339,7 +339,7 @@ def classify_file_asprs(src, *, cloud: str, report: Optional[str] = None,
 
 def classify_report(res: Classification, name: str, x, y, *, lang: str = "en"):
     """Report content: summary, class counts (input and output), class map, settings."""
-    from ..io.units import unit_label
+    from ..io.units import units_rows
     from ..reporting import KeyValues, Paragraph, Report, T, Table, translator
     from .figures import class_map
     tr = translator(lang)
@@ -355,8 +355,7 @@ def classify_report(res: Classification, name: str, x, y, *, lang: str = "en"):
         b=c.get(BUILDING, 0), z=c.get(LOW_NOISE, 0))))
     nb = len(res.buildings.buildings) if res.buildings is not None else 0
     rep.section("Input").add(KeyValues([("Point cloud", name), ("Points", n),
-                                        ("Vertical unit", unit_label(res.units.vertical, lang)),
-                                        ("Buildings", nb)]))
+                                        *units_rows(res.units), ("Buildings", nb)]))
     keys = sorted(set(res.input_counts) | set(c))
     rows = [(k, T(ASPRS_NAMES.get(k, "other class")), res.input_counts.get(k, 0),
              c.get(k, 0), 100.0 * c.get(k, 0) / max(n, 1)) for k in keys]

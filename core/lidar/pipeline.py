@@ -41,7 +41,7 @@ from ..io.contract import OutputContract
 from ..io.las import PointData, las_info, read_las, write_las_like
 from ..parsing import parse_number_list
 from ..progress import Monitor
-from ..reporting import Report, render_html
+from ..reporting import Report, T, render_html
 from . import _selection
 from ._filter import FilterOutcome, FunctionFilter, GroundFilter, OptionsFilter
 from ._filter_report import filter_report
@@ -214,15 +214,16 @@ def read_cloud(src, *, returns: bool = True, keep_records: bool = False,
         The points.
     """
     info = las_info(src)
-    check_projected(crs=info.crs, what=f"The point cloud {src}")
+    what = T("The point cloud {path}", path=src)
+    check_projected(crs=info.crs, what=what)
     dims = ["classification"] + (["return_number", "number_of_returns"] if returns else [])
     mon = monitor or Monitor()
     pd = read_las(src, dims, keep_records=keep_records and info.count <= KEEP_RECORDS_MAX,
                   progress=mon.update, cancel=mon.cancelled)
-    check_projected(pd.x, pd.y, pd.z, what=f"The point cloud {src}")
+    check_projected(pd.x, pd.y, pd.z, what=what)
     # Every length parameter is in metres (DEVELOPERS.md, Units): filter in metres.
     pd.x, pd.y, pd.z = info.units.xyz_to_metres(pd.x, pd.y, pd.z)
-    check_not_too_sparse(pd.x, pd.y, what=f"The point cloud {src}")
+    check_not_too_sparse(pd.x, pd.y, what=what)
     return pd
 
 

@@ -226,8 +226,7 @@ def qa_report(res: QaResult, name: str, *, units=None) -> Report:
     ``units`` (:class:`~..io.units.Units`) are the cloud's when it is not in metres:
     the report then says that densities and areas were computed in metres.
     """
-    from ..io.units import units_note
-    note = units_note(units) if units is not None else None
+    from ..io.units import units_rows
     rep = Report("Point density and quality report",
                  citation="Kostrikov et al. (2020), ELiT, ISPRS IJGI 9(11):650; "
                  "ASPRS LAS 1.4.")
@@ -235,7 +234,7 @@ def qa_report(res: QaResult, name: str, *, units=None) -> Report:
     sa = res.scan_angle
     rep.section("Summary").add(KeyValues([
         ("Input", name),
-        *([("Linear units", note)] if note is not None else []),
+        *units_rows(units),
         ("Points", res.n_points), ("Last returns", res.n_last),
         ("Ground points", res.n_ground),
         ("Covered area (m²)", res.covered_area),

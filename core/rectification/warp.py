@@ -27,7 +27,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..io.contract import atomic_output, check_not_input
-from ..io.crs import linear_unit, same_crs, spatial_reference
+from ..io.crs import same_crs, spatial_reference
 from ..io.gcp import GCPSet, check_in_image, make_gcps
 from ..progress import Cancelled, Monitor
 from .polynomial import MAX_CONDITION, fit_polynomial
@@ -82,12 +82,6 @@ def ground_resolution(gcps: GCPSet, crs: Optional[str] = None) -> float:
     if crs and gcps.crs and not same_crs(crs, gcps.crs):
         mp = to_crs(mp, gcps.crs, crs)
     return fit_polynomial(gcps.pixel[m], mp, order=1).pixel_size()
-
-
-def linear_units(crs: str) -> tuple:
-    """``(is_projected, unit_name, metres_per_unit)`` of a CRS."""
-    name, per_unit = linear_unit(crs)
-    return name != "degree", name, per_unit
 
 
 def gcps_vrt(src_path: str, gcps: GCPSet, crs: str):

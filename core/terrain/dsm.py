@@ -166,9 +166,9 @@ def dsm_report(name: str, n_points: int, grid: GridSpec, grid_source: str,
     inputs = [("input", name), ("points in file", n_points), ("grid source", T(grid_source))]
     if units is not None and not units.metric:
         # the report speaks metres (DEVELOPERS.md, Units): grid and heights converted
-        from ..io.units import units_note
+        from ..io.units import units_rows
         from .grid import GridSpec
-        inputs.append(("Linear units", units_note(units)))
+        inputs += units_rows(units)
         grid = GridSpec(xmin=grid.xmin * units.h, ymax=grid.ymax * units.h,
                         cell=grid.cell * units.h, ncols=grid.ncols, nrows=grid.nrows,
                         crs=grid.crs, nodata=grid.nodata)

@@ -36,7 +36,7 @@ import numpy as np
 from ..coords import check_projected
 from ..errors import InputError
 from ..io.points import ClassPoints, read_class_points, write_grid
-from ..io.units import units_note
+from ..io.units import units_rows
 from ..progress import Monitor
 from ..reporting import Report, T, translator
 from . import report as terrain_report
@@ -455,8 +455,7 @@ def _input_rows(run: DtmRun, name: str) -> list:
             ("classes present (class: count)", classes), ("points used", len(pts)),
             ("classes used", ", ".join(map(str, pts.classes)) or T("all")),
             ("CRS source", T(run.crs_source))]
-    note = units_note(pts.units)
-    return rows + ([("Linear units", note)] if note is not None else [])
+    return rows + units_rows(pts.units)
 
 
 def dtm_report(run: DtmRun, *, lang: str = "en", name: Optional[str] = None,

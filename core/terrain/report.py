@@ -23,6 +23,7 @@ from typing import Callable, Sequence
 
 import numpy as np
 
+from ..io.units import units_rows
 from ..reporting import Figure, KeyValues, Paragraph, Report, T, Table, svg
 from . import accuracy as acc
 
@@ -237,12 +238,6 @@ def kriging_sections(rep: Report, result, *, tr: Translator = _identity) -> Repo
     return rep
 
 
-def _units_rows(units) -> list:
-    from ..io.units import units_note
-    note = units_note(units) if units is not None else None
-    return [("Linear units", note)] if note is not None else []
-
-
 def accuracy_report(res: acc.AccuracyResult, ids: Sequence, dtm: np.ndarray,
                     geotransform: Sequence[float], *, dtm_name: str, crs_label: str,
                     tr: Translator = _identity, max_rows: int = 500, units=None) -> Report:
@@ -259,7 +254,7 @@ def accuracy_report(res: acc.AccuracyResult, ids: Sequence, dtm: np.ndarray,
                                    n=s["n"], rmse=round(s["rmse"], 4), me=round(s["me"], 4))))
     rep.section("Input").add(KeyValues([
         ("DTM", dtm_name), ("CRS", crs_label),
-        *_units_rows(units), ("sampling", T(res.method)),
+        *units_rows(units), ("sampling", T(res.method)),
         ("check points given", res.n_total), ("used", res.n_used),
         ("outside the DTM (excluded)", res.n_outside),
         ("on DTM nodata or without height (excluded)", res.n_nodata),
@@ -299,7 +294,7 @@ def tin_report(res, name: str, n_in_file: int, grid, *, units=None) -> Report:
         library="Qhull", command="gdal_grid -a linear"))
     rep.section("Input and grid").add(KeyValues([
         ("Input", name),
-        *_units_rows(units),
+        *units_rows(units),
         ("Points in file", n_in_file),
         ("Points triangulated", res.n_points),
         ("Grid (columns × rows)", f"{grid.ncols} × {grid.nrows}"),

@@ -16,8 +16,12 @@ def test_label_parse_and_compare():
 def test_geographic_and_units():
     assert crs.is_geographic("EPSG:4326") and not crs.is_geographic("EPSG:32632")
     assert not crs.is_geographic("not a crs")
-    assert crs.linear_unit("EPSG:2263")[1] == pytest.approx(0.3048006096, rel=1e-9)  # US ft
-    assert crs.linear_unit("EPSG:32632") == ("metre", 1.0)
+    # one unit vocabulary: core/io/units.py (crs.linear_unit / warp.linear_units retired)
+    from geomatics_toolbox.core.io.units import crs_units
+    assert crs_units("EPSG:2263").h == pytest.approx(0.3048006096, rel=1e-9)  # US ft
+    assert crs_units("EPSG:32632").horizontal.name == "metre"
+    assert crs_units("EPSG:4326").horizontal.angular
+    assert not hasattr(crs, "linear_unit")
 
 
 def test_unknown_crs_is_a_clear_input_error():

@@ -152,7 +152,7 @@ def test_catalog_of_feet_tiles_equals_its_metre_copy(tmp_path):
     import laspy
 
     from geomatics_toolbox.core.io.raster import read_raster
-    from geomatics_toolbox.core.io.units import US_FOOT
+    from geomatics_toolbox.core.io.units import US_FOOT, raster_units
     from geomatics_toolbox.synthetic.hostile import unit_copy
     from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
     ft_m = US_FOOT.metres
@@ -188,6 +188,14 @@ def test_catalog_of_feet_tiles_equals_its_metre_copy(tmp_path):
         dm, df = rm.masked(), rf.masked() * ft_m
         assert np.array_equal(np.isnan(dm), np.isnan(df))
         assert np.nanmedian(np.abs(dm - df)) < 1e-4
+        # heights named on the band as a single-file DTM's (review H5: chunks had none)
+        assert raster_units(tmp_path / "out_ft" / f"t{k}_dtm.tif").vertical.symbol == "ftUS"
+        assert raster_units(tmp_path / "out_m" / f"t{k}_dtm.tif").vertical.symbol == "m"
+        from osgeo import gdal
+        ds = gdal.Open(str(tmp_path / "out_ft" / f"t{k}_dtm.tif"))
+        assert ds.GetRasterBand(1).GetUnitType() == "ftUS"
+    vrt = res["ft"].vrt
+    assert vrt and raster_units(vrt).vertical.symbol == "ftUS", vrt   # the mosaic too
 
 
 def test_every_chunk_failed_is_an_error_naming_the_first(tmp_path):

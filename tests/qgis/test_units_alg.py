@@ -225,3 +225,43 @@ def test_mixed_units_feet_plan_metre_heights(qgis_processing, clouds, tmp_path):
     assert uf == "m"                                   # heights stay metres
     np.testing.assert_allclose(gf * FT, gm, atol=1e-6)  # the grid in ftUS
     assert np.nanmedian(np.abs(af - am)) < 1e-4        # no vertical conversion
+
+
+def _metre_dtm(path, z, unit_type):
+    from geomatics_toolbox.core.io.raster import write_geotiff
+    write_geotiff(path, z.astype(np.float32),
+                  geotransform=(500_000.0, 2.0, 0.0, 4_000_060.0, 0.0, -2.0),
+                  crs="EPSG:32632", unit_type=unit_type)
+    return str(path)
+
+
+@pytest.mark.parametrize("units", [("m", None), (None, "m"), ("metre", "m")])
+def test_elevation_change_two_metre_dtms_one_without_band_unit(qgis_processing, tmp_path,
+                                                               units):
+    """Review H1: a DTM with band unit "m" and one without are both metres (either way
+    round); they were refused as "metre (m) vs metre (m)"."""
+    rng = np.random.default_rng(5)
+    z = 100.0 + rng.normal(0.0, 0.01, (30, 30))
+    before = _metre_dtm(tmp_path / "before.tif", z, units[0])
+    after = _metre_dtm(tmp_path / "after.tif", z + 1.0, units[1])
+    res = qgis_processing.run("geomatics:elevationchange", {
+        "INPUT": before, "INPUT_AFTER": after, "SIGMA1": 0.05, "SIGMA2": 0.05, **EN,
+        "OUTPUT": str(tmp_path / "chg.tif")})
+    assert res["FILL_VOLUME"] == pytest.approx(30 * 30 * 4.0 * 1.0, rel=0.02)   # m³
+    assert res["CUT_VOLUME"] == pytest.approx(0.0, abs=1e-6)
+
+
+@pytest.mark.parametrize("lang", ["ar", "fa"])
+def test_elevation_change_units_refusal_in_arabic_and_persian_is_data_only(lang):
+    """Review H2: the units in the refusal are symbols (data), not English names."""
+    from geomatics_toolbox.algorithms.elevation_change import check_same_crs
+    from geomatics_toolbox.core.errors import InputError
+    from geomatics_toolbox.core.io.units import crs_units
+    with pytest.raises(InputError) as err:
+        check_same_crs(None, None, "/d/before.tif", "/d/after.tif",
+                       crs_units("EPSG:2903"), crs_units("EPSG:2903+5703"))
+    assert "before.tif is in ftUS / ftUS, after.tif in ftUS / m" in str(err.value)
+    msg = err.value.message(lang)
+    assert "ftUS / m" in msg and "before.tif" in msg
+    words = re.findall(r"[A-Za-z]{2,}", msg)
+    assert set(words) <= {"before", "after", "tif", "ftUS", "m"}, msg
