@@ -10,6 +10,7 @@ from qgis.core import (
 
 from ..core.errors import InputError
 from ..core.io.points import parse_classes
+from ..core.lidar.buildings import DEFAULTS as BUILDING_DEFAULTS
 from ..core.lidar.buildings_file import BuildingOutputs, buildings_file
 from .base import LAS_IN_FILTER, GeomaticsAlgorithm
 from .helptext import build_help
@@ -80,18 +81,19 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
         self.add_las_input(self.INPUT, self.tr("Point cloud (LAS/LAZ)"))
         self.add(QgsProcessingParameterString(
             self.GROUND_CLASSES, self.tr("Ground classes"), defaultValue="2"), advanced=True)
-        self.add_number(self.MIN_HEIGHT, self.tr("Minimum height above ground (m)"), 2.0,
-                        minimum=0.0)
+        d = BUILDING_DEFAULTS
+        self.add_number(self.MIN_HEIGHT, self.tr("Minimum height above ground (m)"),
+                        d["min_height"], minimum=0.0)
         self.add_number(self.MAX_ANGLE, self.tr("Maximum angle between roof normals (°)"),
-                        20.0, minimum=1.0, maximum=90.0)
-        self.add_number(self.MIN_PATCH_AREA, self.tr("Minimum roof patch area (m²)"), 15.0,
-                        minimum=0.0)
-        self.add_number(self.MIN_AREA, self.tr("Minimum building area (m²)"), 15.0,
-                        minimum=0.0)
-        self.add_number(self.CELL_SIZE, self.tr("Cell size (m)"), 0.5, minimum=0.0,
+                        d["max_angle"], minimum=1.0, maximum=90.0)
+        self.add_number(self.MIN_PATCH_AREA, self.tr("Minimum roof patch area (m²)"),
+                        d["min_patch_area"], minimum=0.0)
+        self.add_number(self.MIN_AREA, self.tr("Minimum building area (m²)"),
+                        d["min_area"], minimum=0.0)
+        self.add_number(self.CELL_SIZE, self.tr("Cell size (m)"), d["cell"], minimum=0.0,
                         advanced=True)
-        self.add_number(self.STOREY_HEIGHT, self.tr("Storey height (m)"), 3.0, minimum=2.0,
-                        maximum=5.0)
+        self.add_number(self.STOREY_HEIGHT, self.tr("Storey height (m)"),
+                        d["storey_height"], minimum=2.0, maximum=5.0)
         self.add(QgsProcessingParameterVectorDestination(self.OUTPUT,
                                                          self.tr("Building footprints")))
         self.add(QgsProcessingParameterFileDestination(

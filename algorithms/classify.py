@@ -71,14 +71,15 @@ class ClassifyAlgorithm(GeomaticsAlgorithm):
             self.GROUND, self.tr("Ground"),
             [self.tr("Recommended ground filter"), self.tr("Keep the input's class 2")],
             defaultValue=0))
-        self.add_number(self.LOW_VEGETATION, self.tr("Low vegetation up to (m)"), 0.5,
+        d = core_c.ClassifyOptions()
+        self.add_number(self.LOW_VEGETATION, self.tr("Low vegetation up to (m)"), d.low_max,
                         minimum=0.0)
-        self.add_number(self.MEDIUM_VEGETATION, self.tr("Medium vegetation up to (m)"), 1.5,
-                        minimum=0.0)
+        self.add_number(self.MEDIUM_VEGETATION, self.tr("Medium vegetation up to (m)"),
+                        d.medium_max, minimum=0.0)
         self.add(QgsProcessingParameterBoolean(
             self.BUILDINGS, self.tr("Find buildings (class 6)"), True))
         self.add_number(self.MIN_HEIGHT, self.tr("Minimum building height above ground (m)"),
-                        2.0, minimum=0.0, advanced=True)
+                        d.min_height, minimum=0.0, advanced=True)
         self.add(QgsProcessingParameterBoolean(
             self.KEEP_OTHER, self.tr("Keep other input classes"), False), advanced=True)
         self.add(QgsProcessingParameterBoolean(

@@ -15,6 +15,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import Delaunay, cKDTree
 
+from ..terrain.grid import pick_per_cell
+
 __all__ = ["Tin", "cell_index", "lowest_per_cell", "dedupe_xy", "cKDTree"]
 
 #: Points per block of the vectorised per-point steps (bounds temporary memory).
@@ -32,10 +34,7 @@ def cell_index(x, y, x0, y0, cell, ncols):
 
 def lowest_per_cell(idx, z):
     """Return the indices of the lowest point of every occupied cell (``idx`` = flat cell ids)."""
-    order = np.lexsort((z, idx))
-    first = np.ones(order.size, dtype=bool)
-    first[1:] = idx[order[1:]] != idx[order[:-1]]
-    return order[first]
+    return pick_per_cell(idx, z, "lowest")
 
 
 def dedupe_xy(x, y, z, resolution: float = 0.01):

@@ -34,15 +34,17 @@ multivariate density function. Ann. Math. Statist. 36(3), 1049–1051.
 """
 from __future__ import annotations
 
+import inspect
 import math
 from dataclasses import dataclass, field
-from typing import List
+from typing import List, Optional
 
 import numpy as np
 
 from ..errors import InputError
 from ..progress import Monitor
-from ..terrain.grid import GridSpec, grid_from_points
+from ..terrain.dsm import accumulate_max, fill_nearest
+from ..terrain.grid import GridSpec, grid_from_points, pick_per_cell
 from ..terrain.tin import tin_grid
 
 #: Classes never taken as building candidates (ground, low/high noise, water).
@@ -65,6 +67,8 @@ class BuildingResult:
     roof: np.ndarray = None
     #: Cells of the structures refused as bridges (decks joining the ground at both ends).
     bridges: np.ndarray = None
+    #: The options the extraction ran with (metres, degrees), as reported.
+    params: dict = field(default_factory=dict)
 
 
 def building_points(res: BuildingResult, x, y, z, hag, classification, *,
@@ -104,29 +108,12 @@ def ground_dtm(x, y, z, grid: GridSpec) -> np.ndarray:
     the median, 4 cm at the 99th percentile).
     """
     r, c, inside = grid.cell_index(x, y)
-    key = np.where(inside, r * grid.shape[1] + c, -1)
-    order = np.lexsort((z, key))
-    k = key[order]
-    starts = np.flatnonzero(np.r_[True, k[1:] != k[:-1]])
-    if starts.size < 0.8 * x.size:
-        counts = np.diff(np.r_[starts, k.size])
-        pick = order[starts + counts // 2]
+    pick = pick_per_cell(np.where(inside, r * grid.shape[1] + c, -1), z, "median")
+    if pick.size < 0.8 * x.size:
         x, y, z = x[pick], y[pick], z[pick]
-    return fill_nearest(tin_grid(x, y, z, grid, fill=True).z)
-
-
-def fill_nearest(a: np.ndarray) -> np.ndarray:
-    """Return ``a`` with every NaN cell given the value of the nearest finite cell.
-
-    A TIN DTM is NaN outside the hull of the ground points (tile edges, a building
-    on the edge); heights above ground need a value there.
-    """
-    from scipy import ndimage
-    bad = ~np.isfinite(a)
-    if not bad.any() or bad.all():
-        return a
-    idx = ndimage.distance_transform_edt(bad, return_distances=False, return_indices=True)
-    return a[idx[0], idx[1]]
+    # NaN outside the hull of the ground points (tile edges, a building on the edge):
+    # heights above ground need a value there, the nearest cell's
+    return fill_nearest(tin_grid(x, y, z, grid, fill=True).z, 1.0, np.inf)
 
 
 def normals(xyz: np.ndarray, k: int = 10):
@@ -425,17 +412,12 @@ def _footprints(grid, x, y, z, dtm, keep, min_area, flat_angle, rho, zlow, min_h
     ``find_objects`` window of the raster and its own points
     (:func:`.building_measure.measure_buildings`).
     """
-    from scipy import ndimage
-
     from .building_measure import measure_buildings
     lab, nlab, rects = _footprint_labels(grid, x, y, keep, rho, min_area, 0.5)
     # roof heights of the cells, closed cells from the nearest roof point
-    row, col, inside = grid.cell_index(x[keep], y[keep])
-    roof = np.full(grid.shape, -np.inf)
-    np.maximum.at(roof, (row[inside], col[inside]), z[keep][inside])
-    near = ndimage.distance_transform_edt(~np.isfinite(roof), return_distances=False,
-                                          return_indices=True)
-    roof_f = roof[near[0], near[1]]
+    roof = np.full(grid.shape, np.nan)
+    accumulate_max(grid, roof, x[keep], y[keep], z[keep])
+    roof_f = fill_nearest(roof, 1.0, np.inf)
     return measure_buildings(grid, lab, nlab, rects, x, y, z, keep, dtm, zlow, roof_f,
                              min_height=min_height, flat_angle=flat_angle,
                              storey_height=storey_height, water=water)
@@ -479,6 +461,10 @@ def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
     BuildingResult
     """
     mon = Monitor(progress, cancel)
+    used = {"min_height": min_height, "max_angle": max_angle,
+            "min_patch_area": min_patch_area, "min_area": min_area,
+            "storey_height": storey_height, "cell": cell, "k": k, "radius": radius,
+            "flat_angle": flat_angle}
     cls = np.asarray(classification).astype(np.int64)
     ground = np.isin(cls, ground_classes)
     if ground.sum() < 3:
@@ -494,7 +480,8 @@ def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
     cand = np.flatnonzero(~np.isin(cls, EXCLUDED) & (hag > min_height))
     flag = np.zeros(len(x), bool)
     if cand.size < k:
-        return BuildingResult(grid, np.zeros(grid.shape, np.int32), [], flag, dtm)
+        return BuildingResult(grid, np.zeros(grid.shape, np.int32), [], flag, dtm,
+                              params=used)
     xyz = np.column_stack([x[cand] - x.mean(), y[cand] - y.mean(), z[cand]])
     fit = normals(xyz, k)
     lab = roof_patches(xyz, k=k, radius=radius, max_angle=max_angle, fit=fit)
@@ -509,7 +496,8 @@ def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
                          min_points=k)
     keep = _patch_filter(lab, groups, min_patch_area, density, k)
     if not keep.any():
-        return BuildingResult(grid, np.zeros(grid.shape, np.int32), [], flag, dtm)
+        return BuildingResult(grid, np.zeros(grid.shape, np.int32), [], flag, dtm,
+                              params=used)
     rho = float(np.median(density[keep]))
     labels, blds, roof, bridges = _footprints(
         grid, x[cand], y[cand], z[cand], dtm, keep, min_area, flat_angle, rho,
@@ -522,7 +510,14 @@ def extract_buildings(x, y, z, classification, *, ground_classes=(2,),
     on = np.abs(z[cand[idx]] - roof[r[idx], c[idx]]) <= ROOF_TOLERANCE
     flag[cand[idx[on]]] = True
     mon.step(1.0)
-    return BuildingResult(grid, labels, blds, flag, dtm, roof, bridges)
+    return BuildingResult(grid, labels, blds, flag, dtm, roof, bridges, used)
+
+
+#: Keyword defaults of :func:`extract_buildings` (metres, degrees): the one source of
+#: the algorithms' defaults and of :class:`.classify.ClassifyOptions`'.
+DEFAULTS = {name: p.default for name, p in
+            inspect.signature(extract_buildings).parameters.items()
+            if p.kind is p.KEYWORD_ONLY and type(p.default) in (int, float)}
 
 
 def _water_counts(grid, x, y, cls):
@@ -543,15 +538,21 @@ def _lowest(grid, x, y, z, cls) -> np.ndarray:
     """Lowest non-noise point of every cell (NaN where none)."""
     ok = ~np.isin(cls, (7, 18))
     r, c, inside = grid.cell_index(x[ok], y[ok])
-    low = np.full(grid.shape, np.inf)
-    np.minimum.at(low, (r[inside], c[inside]), z[ok][inside])
-    low[~np.isfinite(low)] = np.nan
+    key, zz = r[inside] * grid.shape[1] + c[inside], z[ok][inside]
+    pick = pick_per_cell(key, zz, "lowest")
+    low = np.full(grid.shape, np.nan)
+    low.reshape(-1)[key[pick]] = zz[pick]
     return low
 
 
-def buildings_report(res: BuildingResult, name: str, params: dict, *, units=None,
-                     lang: str = "en"):
-    """Build the report: parameters, footprint map, per-building table, bridges refused."""
+def buildings_report(res: BuildingResult, name: str, params: Optional[dict] = None, *,
+                     units=None, lang: str = "en"):
+    """Build the report: parameters, footprint map, per-building table, bridges refused.
+
+    The parameters reported are those the extraction ran with (``res.params``);
+    ``params`` overrides some of them (e.g. values as the user typed them).
+    """
+    params = {**res.params, **(params or {})}
     from scipy import ndimage
 
     from ..io.units import units_rows
@@ -570,7 +571,7 @@ def buildings_report(res: BuildingResult, name: str, params: dict, *, units=None
              ("Maximum angle between roof normals (°)", params["max_angle"]),
              ("Minimum roof patch area (m²)", params["min_patch_area"]),
              ("Minimum building area (m²)", params["min_area"]),
-             ("Storey height (m)", params.get("storey_height", 3.0)),
+             ("Storey height (m)", params["storey_height"]),
              ("Cell size (m)", res.grid.cell)]
     rep.section("Parameters").add(KeyValues(rows))
     buildings_section(rep, res)

@@ -121,13 +121,8 @@ def buildings_file(src, outputs: BuildingOutputs, *, ground_classes=(2,), params
             if out.requested(n[3]):
                 write_obj(out.path(n[3]), objs, h=h, v=v)
         if out.requested(n[4]):
-            rep = buildings_report(res, os.path.basename(os.fspath(src)),
-                                   {"min_height": params.get("min_height", 2.0),
-                                    "max_angle": params.get("max_angle", 20.0),
-                                    "min_patch_area": params.get("min_patch_area", 15.0),
-                                    "min_area": params.get("min_area", 15.0),
-                                    "storey_height": params.get("storey_height", 3.0)},
-                                   units=units, lang=lang)
+            rep = buildings_report(res, os.path.basename(os.fspath(src)), units=units,
+                                   lang=lang)
             out.write_text(n[4], (render or (lambda r: render_html(r, lang=lang)))(rep))
         mon.check()
     mon.update(1.0)

@@ -51,6 +51,7 @@ import numpy as np
 from ..errors import InputError
 from ..io.units import METRIC, Units
 from ..progress import Monitor
+from .buildings import DEFAULTS as BUILDING_DEFAULTS
 
 __all__ = ["ClassifyOptions", "Classification", "classify_points", "classify_file_asprs",
            "classify_report", "ASPRS_NAMES", "HAG_DIMENSION"]
@@ -94,9 +95,9 @@ class ClassifyOptions:
     medium_max: float = 1.5
     buildings: bool = True
     keep_other: bool = False
-    dtm_cell: float = 0.5
-    min_height: float = 2.0
-    storey_height: float = 3.0
+    dtm_cell: float = BUILDING_DEFAULTS["cell"]
+    min_height: float = BUILDING_DEFAULTS["min_height"]
+    storey_height: float = BUILDING_DEFAULTS["storey_height"]
 
     def __post_init__(self):
         """Validate the options (translated errors)."""

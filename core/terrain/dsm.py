@@ -25,7 +25,7 @@ import numpy as np
 from ..errors import InputError
 from ..progress import Monitor
 from ..reporting import Report
-from .grid import GridSpec, check_memory
+from .grid import GridSpec, check_memory, pick_per_cell
 
 
 def accumulate_max(grid: GridSpec, out: np.ndarray, x, y, z) -> int:
@@ -40,11 +40,8 @@ def accumulate_max(grid: GridSpec, out: np.ndarray, x, y, z) -> int:
         return 0
     lin = row[ok] * grid.ncols + col[ok]
     zz = z[ok]
-    order = np.lexsort((zz, lin))          # by cell, then by height
-    lin, zz = lin[order], zz[order]
-    last = np.ones(lin.size, bool)
-    last[:-1] = lin[1:] != lin[:-1]        # highest point of each cell
-    cells, top = lin[last], zz[last]
+    top = pick_per_cell(lin, zz, "highest")   # highest point of each cell
+    cells, top = lin[top], zz[top]
     flat = out.reshape(-1)
     flat[cells] = np.fmax(flat[cells], top)
     return int(ok.sum())

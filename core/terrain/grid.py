@@ -352,3 +352,48 @@ def row_blocks(nrows: int, ncols: int, cells_per_block: int):
     rows = max(1, int(cells_per_block) // max(ncols, 1))
     for r0 in range(0, nrows, rows):
         yield r0, min(nrows, r0 + rows)
+
+
+def pick_per_cell(key, z, which: str = "lowest") -> np.ndarray:
+    """Return the index of one point per distinct ``key`` (cell id), chosen by height.
+
+    The one per-cell picker of the toolbox (PTD's seeds and de-duplication, the
+    DSM's highest point, the buildings' ground DTM): points are sorted by (cell,
+    height) — ties in height keep their input order — and of each cell's run the
+    ``"lowest"``, the ``"median"`` (the middle one, ``count // 2`` from the lowest) or
+    the ``"highest"`` point is taken.
+
+    Parameters
+    ----------
+    key : array of int
+        Cell id of every point (any integers, e.g. a row-major flat index; -1 is a
+        cell like any other).
+    z : array of float
+        Heights.
+    which : {"lowest", "median", "highest"}
+
+    Returns
+    -------
+    ndarray of int
+        Indices into ``key``/``z``, one per occupied cell, in increasing cell order.
+
+    Examples
+    --------
+    >>> pick_per_cell(np.array([3, 1, 3, 3, 1]), np.array([5., 2., 1., 3., 0.]))
+    array([4, 2])
+    >>> pick_per_cell(np.array([3, 1, 3, 3, 1]), np.array([5., 2., 1., 3., 0.]), "median")
+    array([1, 3])
+    """
+    key = np.asarray(key)
+    if key.size == 0:
+        return np.zeros(0, dtype=np.int64)
+    order = np.lexsort((z, key))
+    k = key[order]
+    starts = np.flatnonzero(np.r_[True, k[1:] != k[:-1]])
+    if which == "lowest":
+        return order[starts]
+    ends = np.r_[starts[1:], k.size]
+    if which == "highest":
+        return order[ends - 1]
+    assert which == "median", which           # a programming error, not the user's
+    return order[starts + (ends - starts) // 2]

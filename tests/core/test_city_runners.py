@@ -77,3 +77,44 @@ def test_buildings_decodes_the_input_once(scene_laz, tmp_path, decodes):
     assert decodes == [scene_laz]
     _same_points(tmp_path / "b.laz", tmp_path / "b2.laz")
     assert (classes == 6).sum() > 1000
+
+
+@pytest.mark.parametrize("which", ["lowest", "median", "highest"])
+def test_pick_per_cell_against_brute_force(which):
+    """The one per-cell picker (PTD, DSM, buildings' DTM) = a loop over the cells, with
+    ties in height broken by input order."""
+    from geomatics_toolbox.core.terrain.grid import pick_per_cell
+    rng = np.random.default_rng(7)
+    key = rng.integers(-1, 40, 2000)
+    z = rng.integers(0, 12, 2000).astype(float)          # many equal heights
+    got = pick_per_cell(key, z, which)
+    want = []
+    for k in np.unique(key):
+        idx = np.flatnonzero(key == k)
+        idx = idx[np.argsort(z[idx], kind="stable")]
+        want.append(idx[{"lowest": 0, "median": idx.size // 2, "highest": -1}[which]])
+    assert np.array_equal(got, want)
+    assert pick_per_cell(np.zeros(0, int), np.zeros(0), which).size == 0
+
+
+def test_report_states_the_options_the_extraction_ran_with():
+    """The buildings report's parameters come from the result (no restated defaults):
+    defaults of extract_buildings, or the values it was called with."""
+    from geomatics_toolbox.core.lidar import buildings as core_b
+    from geomatics_toolbox.core.lidar.classify import ClassifyOptions
+    from geomatics_toolbox.core.reporting import KeyValues
+    assert core_b.DEFAULTS["min_height"] == 2.0 and core_b.DEFAULTS["storey_height"] == 3.0
+    assert ClassifyOptions().min_height == core_b.DEFAULTS["min_height"]
+    assert ClassifyOptions().dtm_cell == core_b.DEFAULTS["cell"]
+    scene = city_scene(density=2.0)
+    cls = scene.classification.copy()
+    cls[np.isin(cls, (5, 6, 17))] = 1
+    res = core_b.extract_buildings(scene.x, scene.y, scene.z, cls, min_height=2.5,
+                                   storey_height=2.8)
+    assert res.params == {**core_b.DEFAULTS, "min_height": 2.5, "storey_height": 2.8}
+    rep = core_b.buildings_report(res, "city.laz")
+    sec = next(s for s in rep.sections if s.heading == "Parameters")
+    rows = {r[0]: r[1] for b in sec.blocks if isinstance(b, KeyValues) for r in b.rows}
+    assert rows["Minimum height above ground (m)"] == 2.5
+    assert rows["Storey height (m)"] == 2.8
+    assert rows["Maximum angle between roof normals (°)"] == 20.0
