@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import importlib.util
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -10,6 +11,8 @@ import pytest
 from geomatics_toolbox.core.io.raster import read_raster
 
 ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tests"))
+from cityjson_check import assert_valid_cityjson  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -98,8 +101,7 @@ def test_buildings_defaults(qgis_process, demo):
                            OUTPUT_CLOUD=str(d / "b.laz"), OUTPUT_HTML=str(d / "b.html"),
                            OUTPUT_CITYJSON=str(d / "b.city.json"),
                            OUTPUT_OBJ=str(d / "b.obj"), REPORT_LANGUAGE=3)["results"]
-    import json
-    doc = json.loads((d / "b.city.json").read_text("utf-8"))
+    doc = assert_valid_cityjson(d / "b.city.json")        # schema + cjval's checks
     assert len(doc["CityObjects"]) == res["N_BUILDINGS"]
     assert res["OUTPUT_OBJ"].endswith("b.obj")
     polys = read_polygons(d / "b.gpkg")

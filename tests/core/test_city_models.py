@@ -2,8 +2,8 @@
 flat with parapet) at 2 and 10 pts/m², and their LOD1/LOD2 CityJSON and OBJ models."""
 from __future__ import annotations
 
-import json
 import math
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -12,8 +12,10 @@ import pytest
 from geomatics_toolbox.core.lidar import buildings as core_b
 from geomatics_toolbox.synthetic.city import city_scene, write_scene
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from cityjson_check import SCHEMA, assert_valid_cityjson, check_solid  # noqa: E402
+
 ROOT = Path(__file__).resolve().parents[2]
-SCHEMA = ROOT.parent / "shared" / "data" / "cityjson" / "cityjson-2.0.2.min.schema.json"
 
 
 def _extract(scene, **kw):
@@ -117,26 +119,9 @@ def test_classify_labels_bridge_deck_and_buildings():
 
 # ------------------------------------------------------------------ 3D city models
 def _check_solid(shell, vertices):
-    """Closed 2-manifold, consistently outward (positive volume), planar faces."""
-    edges = {}
-    vol = 0.0
-    for surface in shell:
-        ring = surface[0]
-        assert len(ring) >= 3 and all(0 <= i < len(vertices) for i in ring)
-        p = vertices[ring]
-        # planarity: distance of every vertex to the face's plane
-        n = np.cross(p[1] - p[0], p[2] - p[0])
-        from geomatics_toolbox.core.io.cityjson import newell_normal
-        n = newell_normal(p)
-        n = n / np.linalg.norm(n)
-        assert np.abs((p - p.mean(axis=0)) @ n).max() < 0.01
-        for a, b in zip(ring, ring[1:] + ring[:1]):
-            edges[(a, b)] = edges.get((a, b), 0) + 1
-        for k in range(1, len(p) - 1):
-            vol += np.dot(p[0], np.cross(p[k], p[k + 1])) / 6.0
-    for (a, b), c in edges.items():
-        assert c == 1 and edges.get((b, a)) == 1, (a, b)
-    assert vol > 0
+    """Closed 2-manifold, consistently outward, planar faces (tests/cityjson_check.py)."""
+    problems, vol = check_solid(shell, vertices)
+    assert not problems, problems
     return vol
 
 
@@ -144,7 +129,7 @@ def test_cityjson_lod1_lod2_valid(tmp_path):
     """CityJSON 2.0 from the scene: zero schema errors (official 2.0.2 schema), every
     solid closed and outward, LOD2 for the modelled roofs, volumes as measured; the OBJ
     loads in trimesh with one watertight, positive-volume object per building."""
-    jsonschema = pytest.importorskip("jsonschema")
+    pytest.importorskip("jsonschema")
     if not SCHEMA.exists():
         pytest.skip(f"CityJSON schema absent: {SCHEMA}")
     from geomatics_toolbox.core.lidar.buildings_file import BuildingOutputs, buildings_file
@@ -156,9 +141,7 @@ def test_cityjson_lod1_lod2_valid(tmp_path):
     outs = BuildingOutputs(str(tmp_path / "b.gpkg"), cityjson=str(tmp_path / "b.city.json"),
                            obj=str(tmp_path / "b.obj"))
     res, _units = buildings_file(laz, outs)
-    doc = json.loads((tmp_path / "b.city.json").read_text(encoding="utf-8"))
-    errors = list(jsonschema.Draft7Validator(json.loads(SCHEMA.read_text())).iter_errors(doc))
-    assert not errors, [e.message for e in errors[:5]]
+    doc = assert_valid_cityjson(tmp_path / "b.city.json")      # schema + cjval's checks
     assert doc["metadata"]["referenceSystem"].endswith("/EPSG/0/32632")
     t = doc["transform"]
     verts = np.asarray(doc["vertices"], float) * t["scale"] + t["translate"]
@@ -223,8 +206,8 @@ def test_feet_tile_gives_the_same_buildings(tmp_path):
     assert np.allclose(np.asarray(pf) * ftus ** 2, pm, rtol=0.03)
     attrs = sorted((a["height_m"] for a, _w in read_polygons(tmp_path / "f.gpkg")))
     assert np.allclose(attrs, sorted(b["height"] for b in rm.buildings), atol=0.05)
-    jm = json.loads((tmp_path / "m.json").read_text())
-    jf = json.loads((tmp_path / "f.json").read_text())
+    jm = assert_valid_cityjson(tmp_path / "m.json")
+    jf = assert_valid_cityjson(tmp_path / "f.json")
     em, ef = jm["metadata"]["geographicalExtent"], jf["metadata"]["geographicalExtent"]
     assert ef[3] - ef[0] == pytest.approx((em[3] - em[0]) / ftus, rel=0.01)
     assert ef[5] - ef[2] == pytest.approx((em[5] - em[2]) / ftus, rel=0.01)
@@ -236,7 +219,7 @@ def test_city_models_of_real_files(name, tmp_path):
     """Real suburban houses (irregular footprints, complex roofs) and a feet forest tile:
     the CityJSON validates against the schema and every solid is closed and outward;
     the OBJ loads watertight."""
-    jsonschema = pytest.importorskip("jsonschema")
+    pytest.importorskip("jsonschema")
     trimesh = pytest.importorskip("trimesh")
     src = ROOT.parent / "shared" / "data" / "real" / name
     if not src.exists() or not SCHEMA.exists():
@@ -245,9 +228,7 @@ def test_city_models_of_real_files(name, tmp_path):
     outs = BuildingOutputs(str(tmp_path / "b.gpkg"), cityjson=str(tmp_path / "b.json"),
                            obj=str(tmp_path / "b.obj"))
     res, units = buildings_file(str(src), outs)
-    doc = json.loads((tmp_path / "b.json").read_text(encoding="utf-8"))
-    errors = list(jsonschema.Draft7Validator(json.loads(SCHEMA.read_text())).iter_errors(doc))
-    assert not errors, [e.message for e in errors[:5]]
+    doc = assert_valid_cityjson(tmp_path / "b.json")           # schema + cjval's checks
     assert len(doc["CityObjects"]) == len(res.buildings)
     if name.startswith("lastools"):
         assert len(res.buildings) >= 20 and not res.bridges.any()
@@ -288,7 +269,7 @@ def test_pier_over_water_is_not_a_building():
 def test_l_shaped_flat_roof_gets_lod2(tmp_path):
     """An L-shaped flat-roofed block (not a rectangle, so not regularised): LOD2 is its
     outline lifted to the roof, closed and outward, volume ≈ area × height."""
-    jsonschema = pytest.importorskip("jsonschema")
+    pytest.importorskip("jsonschema")
     if not SCHEMA.exists():
         pytest.skip(f"CityJSON schema absent: {SCHEMA}")
     from geomatics_toolbox.core.io.las import write_las
@@ -309,9 +290,7 @@ def test_l_shaped_flat_roof_gets_lod2(tmp_path):
     b = res.buildings[0]
     assert b["roof_type"] == "flat" and not b["regularised"]
     assert b["area"] == pytest.approx(40 * 12 + 12 * 28, rel=0.06)
-    doc = json.loads((tmp_path / "b.json").read_text(encoding="utf-8"))
-    assert not list(jsonschema.Draft7Validator(json.loads(SCHEMA.read_text()))
-                    .iter_errors(doc))
+    doc = assert_valid_cityjson(tmp_path / "b.json")           # schema + cjval's checks
     t = doc["transform"]
     verts = np.asarray(doc["vertices"], float) * t["scale"] + t["translate"]
     geoms = {g["lod"]: g for g in doc["CityObjects"]["1"]["geometry"]}

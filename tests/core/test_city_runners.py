@@ -1,11 +1,17 @@
 """File runners of classify and buildings: the input is decoded once; refusals up front."""
 from __future__ import annotations
 
+import sys
+from pathlib import Path
+
 import numpy as np
 import pytest
 
 from geomatics_toolbox.core.io import las as las_io
 from geomatics_toolbox.synthetic.city import city_scene, write_scene
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from cityjson_check import assert_valid_cityjson  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -70,6 +76,7 @@ def test_buildings_decodes_the_input_once(scene_laz, tmp_path, decodes):
     res, _units = buildings_file(scene_laz, outs)
     assert decodes == [scene_laz]
     assert len(res.buildings) == 5
+    assert len(assert_valid_cityjson(tmp_path / "b.json")["CityObjects"]) == 5
     decodes.clear()
     classes = np.asarray(laspy.read(tmp_path / "b.laz").classification)
     las_io.write_las_like(scene_laz, tmp_path / "b2.laz",

@@ -1,11 +1,17 @@
 """geomatics:classify through processing.run: classes, preserved attributes, errors."""
 from __future__ import annotations
 
+import sys
+from pathlib import Path
+
 import numpy as np
 import pytest
 from qgis.core import QgsProcessingException
 
 from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from cityjson_check import assert_valid_cityjson  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -63,8 +69,6 @@ def test_classify_keep_ground_and_bad_options(qgis_processing, scene):
 def test_buildings_city_models(qgis_processing, tmp_path):
     """geomatics:buildings on the city scene: no bridge building, roof types, CityJSON
     and OBJ written, storey height applied; the footprints keep their attributes."""
-    import json
-
     from geomatics_toolbox.core.io.vector import read_polygons
     from geomatics_toolbox.synthetic.city import city_scene, write_scene
     scene = city_scene(density=4.0)
@@ -80,7 +84,7 @@ def test_buildings_city_models(qgis_processing, tmp_path):
     assert types == ["flat", "flat", "flat", "gabled", "hipped"]
     assert all(a["storeys"] == max(1, int(a["volume_m3"] / a["area_m2"] // 2.5))
                for a, _ in polys)
-    doc = json.loads((tmp_path / "b.city.json").read_text(encoding="utf-8"))
+    doc = assert_valid_cityjson(tmp_path / "b.city.json")  # schema + cjval's checks
     assert doc["type"] == "CityJSON" and len(doc["CityObjects"]) == 5
     assert (tmp_path / "b.obj").read_text().count("\no building_") == 5
     html = (tmp_path / "b.html").read_text(encoding="utf-8")
