@@ -422,7 +422,36 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
             path = self.output_path(parameters, context, name)
             if path:
                 paths[name] = path
-        return OutputContract(paths, inputs=dict(inputs))
+        return OutputContract(paths, inputs=dict(inputs),
+                              point_clouds=self.las_destinations())
+
+    def las_destinations(self) -> list:
+        """Names of the file destinations that are LAS/LAZ point clouds (by file filter)."""
+        import re
+
+        from qgis.core import QgsProcessingParameterFileDestination
+        names = []
+        for d in self.parameterDefinitions():
+            if isinstance(d, QgsProcessingParameterFileDestination):
+                exts = {e.lower() for e in re.findall(r"\*\.(\w+)", d.fileFilter() or "")}
+                if exts and exts <= {"las", "laz"}:
+                    names.append(d.name())
+        return names
+
+    def check_outputs(self, parameters, context) -> None:
+        """Refuse a point-cloud output not named .las/.laz before anything runs.
+
+        ``OUTPUT_CLOUD=c.tif`` would otherwise be found by the writer, after the whole
+        computation. The one check of every algorithm (:func:`check_las_output`).
+        """
+        from ..core.io.contract import check_las_output
+        for name in self.las_destinations():
+            value = parameters.get(name) if parameters else None
+            if value in (None, ""):
+                continue
+            path = self.parameterAsFileOutput(parameters, name, context)
+            if path:
+                check_las_output(name, path)
 
     #: style kind (:data:`.styles.KINDS`) of each layer output, by parameter name
     OUTPUT_STYLES: dict = {}
@@ -543,6 +572,7 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
             if message:
                 raise QgsProcessingException(message)
             self.check_numbers(parameters, context)
+            self.check_outputs(parameters, context)
             return self.process(parameters, context, feedback)
         except QgsProcessingException:
             raise

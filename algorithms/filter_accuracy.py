@@ -110,9 +110,6 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
         rgc = core_fa.parse_classes(
             self.parameterAsString(parameters, self.REFERENCE_GROUND_CLASSES, context),
             name="reference ground classes")
-        if err_out and not err_out.lower().endswith((".las", ".laz")):
-            raise ValueError(self.tr("The error layer must end in .las or .laz: {p}").format(
-                p=err_out))
         contract = self.output_contract(parameters, context,
                                          [self.OUTPUT_HTML, self.ERROR_OUTPUT],
                                          inputs={self.INPUT: src, self.REFERENCE: ref})

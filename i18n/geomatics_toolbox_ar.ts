@@ -1548,10 +1548,6 @@
             <translation>طبقة الخطأ لكل نقطة (user_data: 0 صحيح، 1 النوع الأول، 2 النوع الثاني)</translation>
         </message>
         <message>
-            <source>The error layer must end in .las or .laz: {p}</source>
-            <translation>يجب أن ينتهي اسم ملف طبقة الخطأ بالامتداد .las أو .laz: {p}</translation>
-        </message>
-        <message>
             <source>Compares a filtered point cloud with reference labels using the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix, Type I = b/(a+b), Type II = c/(c+d), total error and Cohen's kappa. An optional per-point error cloud shows where the filter fails.</source>
             <translation>يقارن سحابة نقاط مرشَّحة بتصنيفات مرجعية وفق مقاييس اختبار المرشحات لـ ISPRS ‏(Sithole &amp;amp; Vosselman 2004): المصفوفة المتقاطعة، والنوع الأول = b/(a+b)، والنوع الثاني = c/(c+d)، والخطأ الكلي، ومعامل كابا لكوهين. وتُظهر سحابة أخطاء اختيارية لكل نقطة أين يخفق المرشح.</translation>
         </message>

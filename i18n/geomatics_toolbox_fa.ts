@@ -1548,10 +1548,6 @@
             <translation>لایهٔ خطای نقطه‌به‌نقطه (user_data: 0 درست، 1 نوع اول، 2 نوع دوم)</translation>
         </message>
         <message>
-            <source>The error layer must end in .las or .laz: {p}</source>
-            <translation>پروندهٔ لایهٔ خطا باید پسوند .las یا .laz داشته باشد: {p}</translation>
-        </message>
-        <message>
             <source>Compares a filtered point cloud with reference labels using the measures of the ISPRS filter test (Sithole &amp;amp; Vosselman 2004): the cross matrix, Type I = b/(a+b), Type II = c/(c+d), total error and Cohen's kappa. An optional per-point error cloud shows where the filter fails.</source>
             <translation>ابر نقاط فیلترشده را با برچسب‌های مرجع و با سنجه‌های آزمون فیلتر ISPRS ‏(Sithole &amp;amp; Vosselman 2004) مقایسه می‌کند: ماتریس متقاطع، نوع اول = b/(a+b)، نوع دوم = c/(c+d)، خطای کل و ضریب کاپای کوهن. ابر خطای اختیاریِ نقطه‌به‌نقطه نشان می‌دهد فیلتر کجا شکست می‌خورد.</translation>
         </message>

@@ -14,23 +14,22 @@ import numpy as np
 from ..errors import InputError
 from ..progress import Monitor
 from . import las as _las
-from .contract import atomic_output, check_not_input
+from .contract import atomic_output, check_not_input, final_path
 from .crs import spatial_reference
 from .las import DEFAULT_CHUNK, LasInfo, _check_dims, _laspy, _open, las_info
 
 
 def check_las_name(dst) -> None:
-    """Refuse to write a point cloud under a name that is not .las/.laz (``c.tif``)."""
-    if not os.fspath(dst).lower().endswith((".las", ".laz")):
-        from .contract import TEMP_MARK, is_temp
-        if is_temp(dst):        # name the destination the user chose, not the temporary
-            name = os.path.basename(os.fspath(dst))
-            stem = name[1:name.index(TEMP_MARK)]
-            dst = os.path.join(os.path.dirname(os.fspath(dst)),
-                               stem + os.path.splitext(name)[1])
+    """Last guard: never write LAS/LAZ content under another extension (``c.tif``).
+
+    Runs check their point-cloud outputs up front (``OutputContract(...,
+    point_clouds=...)``, the algorithms' parameter check); this catches direct callers.
+    """
+    if not os.fspath(dst).lower().endswith(_las.LAS_SUFFIXES):
         raise InputError("A point cloud cannot be written as {path}: LAS/LAZ content under "
                          "another extension would be mistaken for another format. Choose "
-                         "a file name ending in .las or .laz.", path=os.fspath(dst))
+                         "a file name ending in .las or .laz.",
+                         path=os.fspath(final_path(dst)))
 
 
 def write_las_like(src, dst, *, dimensions: Optional[Mapping[str, np.ndarray]] = None,

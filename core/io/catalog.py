@@ -22,11 +22,10 @@ from typing import Iterable, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from ..errors import InputError
-from .las import DEFAULT_CHUNK, LasInfo, PointData, iter_las_chunks, las_info
+from .las import DEFAULT_CHUNK, LAS_SUFFIXES, LasInfo, PointData, iter_las_chunks, las_info
 
 __all__ = ["find_tiles", "index_tiles", "read_box", "build_vrt", "LAS_SUFFIXES"]
 
-LAS_SUFFIXES = (".las", ".laz")
 Box = Tuple[float, float, float, float]
 
 

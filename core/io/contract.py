@@ -55,6 +55,18 @@ def is_temp(path: PathLike) -> bool:
     return name.startswith(".") and TEMP_MARK in name
 
 
+def final_path(path: PathLike) -> Path:
+    """Return the final name a temporary name stands for (``path`` itself otherwise).
+
+    ``.dtm.part-1a2b3c4d.tif`` -> ``dtm.tif`` (the inverse of :func:`temp_path`).
+    """
+    path = Path(path)
+    if not is_temp(path):
+        return path
+    name = path.name
+    return path.with_name(name[1:name.index(TEMP_MARK)] + path.suffix)
+
+
 def temp_path(final: PathLike) -> Path:
     """Return a fresh temporary name beside ``final`` keeping its extension.
 
@@ -115,7 +127,8 @@ def _flatten(inputs: Mapping[str, object]) -> Iterator:
 
 
 def check_paths(outputs: Mapping[str, Optional[PathLike]],
-                inputs: Mapping[str, object] = ()) -> Dict[str, Path]:
+                inputs: Mapping[str, object] = (), *,
+                point_clouds: Iterable[str] = ()) -> Dict[str, Path]:
     """Validate output paths against every input and against each other.
 
     Parameters
@@ -124,6 +137,9 @@ def check_paths(outputs: Mapping[str, Optional[PathLike]],
         Output parameter name -> path (``None``/empty: output not requested).
     inputs : mapping of str to path, sequence of paths or None
         Input parameter name -> path(s) of every file the run reads.
+    point_clouds : iterable of str
+        Names of the outputs that are LAS/LAZ point clouds: refused up front unless
+        they end in .las or .laz (:func:`check_las_output`).
 
     Returns
     -------
@@ -138,6 +154,9 @@ def check_paths(outputs: Mapping[str, Optional[PathLike]],
         but writes plain LAS/LAZ), or its folder cannot be written.
     """
     outs = {k: Path(v) for k, v in dict(outputs).items() if v not in (None, "")}
+    for name in point_clouds:
+        if name in outs:
+            check_las_output(name, outs[name])
     ins = list(_flatten(dict(inputs)))
     seen: Dict[Path, str] = {}
     for name, path in outs.items():
@@ -171,6 +190,20 @@ def check_paths(outputs: Mapping[str, Optional[PathLike]],
     return outs
 
 
+def check_las_output(name: str, path: PathLike) -> None:
+    """Refuse a point-cloud output ``name`` whose ``path`` is not .las/.laz (``c.tif``).
+
+    A temporary name of this module is checked as the final name it stands for.
+    """
+    from .las import LAS_SUFFIXES
+    path = final_path(path)
+    if not os.fspath(path).lower().endswith(LAS_SUFFIXES):
+        raise InputError("The output {name} is a point cloud and cannot be written as "
+                         "{path}: LAS/LAZ content under another extension would be mistaken "
+                         "for another format. Choose a file name ending in .las or .laz.",
+                         name=name, path=os.fspath(path))
+
+
 def _check_writable(folder: Path, name: str) -> None:
     """Probe the output folder (or its nearest existing parent) with a temporary file."""
     while not folder.exists() and folder != folder.parent:
@@ -202,11 +235,13 @@ class OutputContract:
         Output parameter name -> final path; ``None`` or ``""`` = not requested.
     inputs : mapping of str to path, sequence of paths or None, optional
         Every file the run reads, by parameter name (checked, never written).
+    point_clouds : iterable of str, optional
+        Names of the LAS/LAZ outputs (their extension is checked before anything runs).
     """
 
     def __init__(self, outputs: Mapping[str, Optional[PathLike]], *,
-                 inputs: Mapping[str, object] = ()):
-        self.finals = check_paths(outputs, inputs)
+                 inputs: Mapping[str, object] = (), point_clouds: Iterable[str] = ()):
+        self.finals = check_paths(outputs, inputs, point_clouds=point_clouds)
         self._temps: Dict[str, Path] = {}
         self._old_handler = None
         self.committed = False

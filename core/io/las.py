@@ -27,6 +27,9 @@ from ..progress import Monitor
 from .units import METRIC, Units, header_units
 
 DEFAULT_CHUNK = 2_000_000
+
+#: File name endings of LAS/LAZ files (the one list: readers, catalogs, output checks).
+LAS_SUFFIXES = (".las", ".laz")
 #: LAS versions laspy reads (1.0 is not among them: refused up front, with the fix).
 _SUPPORTED_VERSIONS = {(1, 1), (1, 2), (1, 3), (1, 4)}
 #: Bytes of a VLR header / an EVLR header (LAS 1.4 R15, 2.5 and 2.6).

@@ -265,7 +265,8 @@ def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
 
 def _write_outputs(task: ChunkTask, xyz, dims, core, cls, dtm, grid, records=None) -> None:
     outputs = {k: task.outputs[k] for k in ("LAS", "DTM")}
-    with OutputContract(outputs, inputs={"TILES": list(task.sources)}) as out:
+    with OutputContract(outputs, inputs={"TILES": list(task.sources)},
+                        point_clouds=["LAS"]) as out:
         if task.tile:
             write_las_like(task.tile, out.path("LAS"), dimensions={"classification": cls[core]},
                            records=records)

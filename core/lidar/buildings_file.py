@@ -89,7 +89,7 @@ def buildings_file(src, outputs: BuildingOutputs, *, ground_classes=(2,), params
     n = outputs.names
     paths = dict(zip(n, (outputs.footprints, outputs.cloud, outputs.cityjson, outputs.obj,
                          outputs.report)))
-    with OutputContract(paths, inputs={"INPUT": src}) as out:
+    with OutputContract(paths, inputs={"INPUT": src}, point_clouds=[n[1]]) as out:
         # the decoded records are kept for the cloud copy: the input is decoded once
         pd = read_cloud(src, returns=False, keep_records=out.requested(n[1]),
                         monitor=mon.sub(0.0, 0.1))

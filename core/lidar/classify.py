@@ -308,7 +308,7 @@ def classify_file_asprs(src, *, cloud: str, report: Optional[str] = None,
     mon = Monitor(progress, cancel)
     cloud_name, report_name = names or ("OUTPUT", "OUTPUT_HTML")
     outputs = {cloud_name: cloud, report_name: report}
-    with OutputContract(outputs, inputs={"INPUT": src}) as out:
+    with OutputContract(outputs, inputs={"INPUT": src}, point_clouds=[cloud_name]) as out:
         t0 = time.perf_counter()
         # records kept for the copy: the input is decoded once (up to KEEP_RECORDS_MAX)
         pd = read_cloud(src, returns=False, keep_records=True, monitor=mon.sub(0.0, 0.1))

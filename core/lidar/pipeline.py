@@ -38,7 +38,7 @@ from .. import classes as asprs
 from ..coords import check_not_too_sparse, check_projected
 from ..errors import InputError
 from ..io.contract import OutputContract
-from ..io.las import PointData, las_info, read_las, write_las_like
+from ..io.las import LAS_SUFFIXES, PointData, las_info, read_las, write_las_like
 from ..parsing import parse_number_list
 from ..progress import Monitor
 from ..reporting import Report, T, render_html
@@ -60,7 +60,6 @@ __all__ = ["RETURNS", "GROUND_CLASS", "NONGROUND_CLASS", "NOISE_CLASS", "UNCLASS
            "FunctionFilter", "OptionsFilter", "FilterOutputs", "ClassifyRun", "LAS_SUFFIXES",
            "assemble_classes", "read_cloud", "filter_report"]
 
-LAS_SUFFIXES = (".las", ".laz")
 #: largest cloud whose decoded records are kept to write the outputs from (points;
 #: about 35 bytes each, ~0.7 GB at the limit): the input is decoded once, not once more
 #: per output; a larger cloud is decoded again rather than held twice in memory
@@ -181,12 +180,6 @@ def _check_request(outputs: FilterOutputs) -> Dict[str, str]:
     if not roles:
         raise InputError("Give at least one output: the classified cloud, the ground "
                          "cloud or the report.")
-    for role in ("cloud", "ground"):
-        if role in roles and not roles[role].lower().endswith(LAS_SUFFIXES):
-            raise InputError("The output {name} must end in .las or .laz "
-                             "(got {path}).",
-                             name=outputs.name(role),
-                             path=roles[role])
     return roles
 
 
@@ -265,7 +258,8 @@ def classify_file(src, algorithm: GroundFilter, outputs: FilterOutputs,
     sel_opt = (selection or SelectionOptions()).validate()
     roles = _check_request(outputs)
     contract = OutputContract({outputs.name(r): p for r, p in roles.items()},
-                              inputs={"INPUT": src, **outputs.inputs})
+                              inputs={"INPUT": src, **outputs.inputs},
+                              point_clouds=[outputs.name(r) for r in ("cloud", "ground")])
     with contract as out:
         pd = read_cloud(src, keep_records=bool({"cloud", "ground"} & set(roles)),
                         monitor=mon.sub(0.0, 0.1))

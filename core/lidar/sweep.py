@@ -46,7 +46,6 @@ from .accuracy import assess, error_codes, ground_mask
 from .figures import error_map, sweep_plot
 from .pipeline import (
     GROUND_CLASS,
-    LAS_SUFFIXES,
     SelectionOptions,
     assemble_classes,
     read_cloud,
@@ -331,15 +330,13 @@ def sweep_file(src, *, reference=None, ground_classes: Sequence[int] = (GROUND_C
     mon = Monitor(progress, cancel)
     names = {"csv": "OUTPUT_CSV", "report": "OUTPUT_HTML", "cloud": "OUTPUT", **(names or {})}
     sel_opt = (selection or SelectionOptions(keep_noise_classes=False)).validate()
-    if output and not str(output).lower().endswith(LAS_SUFFIXES):
-        raise InputError("The output {name} must end in .las or .laz "
-                         "(got {output}).", name=names['cloud'], output=output)
     slopes, radii, hs = _check_grid(slopes, radii, height_tolerances, metric, mode)
     roles = {k: os.fspath(v) for k, v in (("csv", csv_output), ("report", html_output),
                                           ("cloud", output)) if v}
     ref_in = None if reference in (None, "", "input") else reference
     with OutputContract({names[k]: v for k, v in roles.items()},
-                        inputs={"INPUT": src, "REFERENCE": ref_in}) as out:
+                        inputs={"INPUT": src, "REFERENCE": ref_in},
+                        point_clouds=[names["cloud"]]) as out:
         pd = read_cloud(src, monitor=mon.sub(0.0, 0.05))
         ref = _load_reference(ref_in, ground_classes, pd, mon.sub(0.05, 0.1))
         if not ref.any():

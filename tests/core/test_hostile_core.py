@@ -193,3 +193,39 @@ def test_filter_accuracy_reference_in_another_crs_refused(tmp_path):
     assert assess_clouds(tmp_path / "a.las", tmp_path / "b.las").accuracy.total == 0.0
     with pytest.raises(InputError, match=r"a\.las is in EPSG:32632.*c\.las is in EPSG:32633"):
         assess_clouds(tmp_path / "a.las", tmp_path / "c.las")
+
+
+# ----------------------------------------------------------------- 5. cloud names up front
+def test_point_cloud_outputs_checked_where_the_contract_is_built(tmp_path):
+    """Review H7: one check, up front, by the contract (which knows the final names)."""
+    from geomatics_toolbox.core.io import contract
+    with pytest.raises(InputError, match=r"The output CLOUD is a point cloud and cannot be "
+                                         r"written as .*c\.tif: .*\.las or \.laz"):
+        contract.OutputContract({"CLOUD": tmp_path / "c.tif", "R": tmp_path / "r.html"},
+                                point_clouds=["CLOUD"])
+    assert list(tmp_path.iterdir()) == []
+    ok = contract.OutputContract({"CLOUD": tmp_path / "c.LAZ", "DTM": tmp_path / "d.tif"},
+                                 point_clouds=["CLOUD", "OTHER"])
+    assert ok.final("CLOUD") == str(tmp_path / "c.LAZ")
+    tmp = contract.temp_path(tmp_path / "c.LAZ")
+    assert contract.final_path(tmp) == tmp_path / "c.LAZ"           # inverse of temp_path
+    contract.check_las_output("CLOUD", tmp)                        # temp checked as final
+    tif = contract.temp_path(tmp_path / "c.tif")
+    with pytest.raises(InputError, match=r"written as .*[/\\]c\.tif:"):   # not .c.part-…
+        contract.check_las_output("CLOUD", tif)
+
+
+def test_ground_filter_refuses_a_tif_cloud_before_reading(tmp_path, monkeypatch):
+    from geomatics_toolbox.core.lidar import pipeline
+    from geomatics_toolbox.core.lidar.filters import default_ground_filter, ground_filter
+
+    def never(*a, **k):
+        raise AssertionError("the input was read before the output name was checked")
+    monkeypatch.setattr(pipeline, "read_cloud", never)
+    outs = pipeline.FilterOutputs(cloud=str(tmp_path / "c.laz"),
+                                  ground=str(tmp_path / "g.tif"))
+    with pytest.raises(InputError, match=r"is a point cloud and cannot be written as "
+                                         r".*g\.tif"):
+        pipeline.classify_file(tmp_path / "in.laz", ground_filter(default_ground_filter()),
+                               outs)
+    assert list(tmp_path.iterdir()) == []

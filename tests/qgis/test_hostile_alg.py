@@ -183,14 +183,29 @@ def test_lidartodtm_lon_lat_check_points_clear_message(qgis_processing, data, tm
 
 
 # ----------------------------------------------------------------- 5. a cloud as c.tif
+@pytest.mark.parametrize("alg,cloud,extra", [
+    ("geomatics:buildings", "OUTPUT_CLOUD", {"OUTPUT": "b.gpkg"}),
+    ("geomatics:classify", "OUTPUT", {}),
+    ("geomatics:groundfilter", "GROUND_OUTPUT", {"OUTPUT": "g.laz"}),
+    ("geomatics:groundfilteraccuracy", "ERROR_OUTPUT", {}),
+])
 @pytest.mark.parametrize("name", ["c.tif", "c.txt"])
-def test_buildings_cloud_output_with_a_wrong_extension_refused(qgis_processing, data,
-                                                               tmp_path, name):
-    outs = [tmp_path / "b.gpkg", tmp_path / name]
-    refused(qgis_processing, "geomatics:buildings", {
-        "INPUT": str(data["laz"]), "OUTPUT": str(outs[0]), "OUTPUT_CLOUD": str(outs[1])},
-        r"A point cloud cannot be written as .*" + name.replace(".", r"\.")
-        + r".*\.las or \.laz", [data["laz"]], outs)
+def test_cloud_output_with_a_wrong_extension_refused_before_any_work(
+        qgis_processing, data, tmp_path, monkeypatch, name, alg, cloud, extra):
+    """Review H7: refused up front (the algorithms' one output check), not by the writer
+    after the computation: the reader is never reached."""
+    from qgis.core import QgsApplication
+
+    def never(*a, **k):
+        raise AssertionError("process() ran before the output name was checked")
+    cls = type(QgsApplication.processingRegistry().algorithmById(alg))
+    monkeypatch.setattr(cls, "process", never)
+    outs = [tmp_path / v for v in extra.values()] + [tmp_path / name]
+    refused(qgis_processing, alg, {
+        "INPUT": str(data["laz"]), cloud: str(outs[-1]),
+        **{k: str(tmp_path / v) for k, v in extra.items()}},
+        rf"The output {cloud} is a point cloud and cannot be written as .*"
+        + name.replace(".", r"\.") + r".*\.las or \.laz", [data["laz"]], outs)
 
 
 @pytest.mark.parametrize("alg,param", [
@@ -207,7 +222,8 @@ def test_not_a_number_refused_everywhere(qgis_processing, data, tmp_path, alg, p
 
 @pytest.mark.parametrize("param,source,dest,message", [
     ("DTM", "dtm", "out.txt", r"raster output cannot be written as .*out\.txt.*\.tif"),
-    ("CLOUD", "cloud", "c.tif", r"cloud output cannot be written as .*c\.tif.*\.las or \.laz"),
+    ("CLOUD", "cloud", "c.tif",
+     r"The output OUTPUT is a point cloud and cannot be written as .*c\.tif.*\.las or \.laz"),
 ])
 def test_publishoutputs_wrong_format_refused(qgis_processing, data, tmp_path, param, source,
                                              dest, message):
