@@ -21,7 +21,7 @@ from geomatics_toolbox.synthetic.hostile import unit_copy
 from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 
 FT = US_FOOT.metres
-#: Reports in English whatever the (shared) QGIS settings say the interface language is
+#: Reports in English whatever the interface language (QLocale follows the system LANG)
 EN = {"REPORT_LANGUAGE": 1}
 REAL_USFT = Path(__file__).resolve().parents[3] / "shared" / "data" / "real" / "pdal_nm_usft.laz"
 
