@@ -22,8 +22,10 @@ Writes ``benchmarks/results/ground.md``:
    100 iterations, make the full tile take too long for a benchmark run); the table
    says so.
 
-``--ptd`` re-measures only PTD (its ISPRS rows and its speed row) and merges them into
-the existing ``ground.md``, leaving every other row as it was and noting when.
+``--ptd`` re-measures only PTD (its ISPRS rows, its rows on the real files scored by
+``_ground_real``, its leave-one-sample-out over PTD_GRID on those 12 files, and its
+speed row) and merges them into the existing ``ground.md``, leaving every other row
+as it was and noting when.
 """
 from __future__ import annotations
 
@@ -267,6 +269,105 @@ def write_md(isprs, msg, lo, speed, quick, keep_head=None, kept=()):
     print(RESULTS.read_text())
 
 
+#: PTD's leave-one-sample-out grid over the 8 ISPRS samples and the 4 real files (the
+#: shipped defaults are one of its sets): each a dict of PtdOptions fields
+PTD_GRID = [dict(max_angle=a, max_distance=d) for a in (21.0, 24.0)
+            for d in (1.0, 1.2, 1.5)]
+
+
+def _ptd_real(options=None):
+    """PTD on the real files (``_ground_real`` scoring) plus cells > 1 m above the vendor DTM."""
+    import _ground_real as gr
+
+    from geomatics_toolbox.core.lidar import ptd
+    rows, data = {}, {}
+    for name in gr.FILES:
+        d = data[name] = gr.load_real(name)
+        take = ~np.isin(d["vclass"], (7, 18))
+        t = time.process_time()
+        g = np.zeros(d["x"].size, bool)
+        g[take] = ptd.classify(d["x"][take], d["y"][take], d["z"][take],
+                               options=options) == 2
+        cpu = time.process_time() - t
+        e = gr.idw(d["x"][g], d["y"][g], d["z"][g], d["cx"], d["cy"]) - d["vdtm"]
+        rows[name] = dict(gr.score_real(d, g), up=int(np.sum(e > 1.0)), above=float(e.max()),
+                          cpu=cpu, n=int(d["x"].size))
+        print(name, {k: round(v, 2) for k, v in rows[name].items()}, flush=True)
+    return rows, data
+
+
+def _ptd_loso(real_data):
+    """Leave-one-sample-out of PTD's defaults over PTD_GRID, 12 folds (8 ISPRS + 4 real).
+
+    Each fold picks the set with the lowest mean total error (%) on the other 11 files
+    (ISPRS: Sithole & Vosselman; real: ``_ground_real.score_real``) and is scored on the
+    held-out one.
+    """
+    import _ground_real as gr
+
+    from geomatics_toolbox.core.lidar import ptd
+    from geomatics_toolbox.core.lidar.accuracy import assess
+    data = {s: load(s) for s in SAMPLES}
+    names = SAMPLES + list(real_data)
+    tot = np.empty((len(PTD_GRID), len(names)))
+    for i, kw in enumerate(PTD_GRID):
+        opt = ptd.PtdOptions(**kw)
+        for j, n in enumerate(names):
+            if n in data:
+                x, y, z, ref = data[n]
+                tot[i, j] = assess(ptd.classify(x, y, z, options=opt) == 2, ref).total
+            else:
+                d = real_data[n]
+                take = ~np.isin(d["vclass"], (7, 18))
+                g = np.zeros(d["x"].size, bool)
+                g[take] = ptd.classify(d["x"][take], d["y"][take], d["z"][take],
+                                       options=opt) == 2
+                tot[i, j] = gr.score_real(d, g)["total"]
+        print(kw, np.round(tot[i], 2), flush=True)
+    folds = []
+    for j, n in enumerate(names):
+        others = np.delete(tot, j, axis=1).mean(axis=1)
+        best = int(np.argmin(others))
+        folds.append((n, PTD_GRID[best], float(others[best]), float(tot[best, j])))
+    default = next(i for i, kw in enumerate(PTD_GRID)
+                   if ptd.PtdOptions(**kw) == ptd.PtdOptions())
+    return folds, tot[default]
+
+
+def ptd_real_md(real, loso):
+    """Markdown of PTD's real-file rows and its 12-fold leave-one-sample-out."""
+    now = datetime.datetime.now().isoformat(timespec="minutes")
+    L = ["## PTD on the real files and its leave-one-sample-out", "",
+         f"`bench_ground.py --ptd` on {now}, {platform.node()} (2 cores shared with other "
+         "jobs; CPU seconds are the process's own). PTD at its core defaults (= the "
+         "algorithm's) on the real files, scored as in the real-file section "
+         "(`_ground_real`: vendor points, ambiguous ones out; 1 m IDW DTMs inside the "
+         "vendor ground's hull); *cells > 1 m up* = DTM cells more than 1 m above the "
+         "vendor DTM, *highest* = the highest of them.", "",
+         "| file | points | total % | Type I % | Type II % | DTM RMSE m | cells off > 1 m % "
+         "| cells > 1 m up | highest above m | CPU s |",
+         "|---|---|---|---|---|---|---|---|---|---|"]
+    for n, r in real.items():
+        L.append(f"| {n} | {r['n']:,} | {r['total']:.2f} | {r['type1']:.2f} | "
+                 f"{r['type2']:.2f} | {r['rmse']:.2f} | {r['bad']:.2f} | {r['up']} | "
+                 f"{r['above']:.2f} | {r['cpu']:.1f} |")
+    L.append("")
+    if loso:
+        folds, default = loso
+        L += [f"Leave-one-sample-out over {len(PTD_GRID)} sets {PTD_GRID}: each fold picks "
+              "the set with the lowest mean total error on the other 11 files.", "",
+              "| held out | chosen set | mean total, other 11 | held-out total | shipped "
+              "defaults on it |", "|---|---|---|---|---|"]
+        for (n, kw, other, held), d in zip(folds, default):
+            L.append(f"| {n} | {kw} | {other:.2f} | {held:.2f} | {d:.2f} |")
+        isprs = [f[3] for f in folds if f[0] in SAMPLES]
+        L += ["", f"**PTD leave-one-sample-out: {np.mean([f[3] for f in folds]):.2f} % over "
+              f"the 12 files, {np.mean(isprs):.2f} % over the 8 ISPRS folds** (shipped "
+              f"defaults in-sample: {np.mean(default):.2f} % / "
+              f"{np.mean(default[:len(SAMPLES)]):.2f} %).", ""]
+    return "\n".join(L) + "\n"
+
+
 def _ptd_isprs_rows():
     """PTD's total and Type I / II / kappa rows on the ISPRS samples."""
     from geomatics_toolbox.core.lidar.accuracy import assess
@@ -373,7 +474,10 @@ def main(argv=None):
                     help="comma-separated filters to time with --speed-only; the other "
                          "rows of the existing speed table are kept and marked")
     ap.add_argument("--ptd", action="store_true",
-                    help="re-measure PTD only (ISPRS rows and speed row) and merge them")
+                    help="re-measure PTD only (ISPRS rows, real-file rows, its 12-fold "
+                         "leave-one-sample-out and speed row) and merge them")
+    ap.add_argument("--no-loso", action="store_true",
+                    help="with --ptd: skip PTD's leave-one-sample-out grid")
     ap.add_argument("--real", action="store_true",
                     help="score FILTERS on the real files only (merged into ground.md)")
     ap.add_argument("--real-filters", default=",".join(FILTERS),
@@ -391,10 +495,18 @@ def main(argv=None):
     if args.real or args.density or args.loso12 or args.isprs_recommended:
         return _ground_extra(args)
     if args.ptd:
+        import _ground_real as gr
         rows = _ptd_isprs_rows() if (ISPRS / "samp11.laz").exists() else None
         if rows:
             RESULTS.write_text(merge_ptd(RESULTS.read_text(encoding="utf-8"), rows, None,
                                          args.quick), encoding="utf-8")
+        if (gr.REAL / f"{gr.FILES[0]}.laz").exists():
+            real, real_data = _ptd_real()
+            loso = _ptd_loso(real_data) if rows and not args.no_loso else None
+            RESULTS.write_text(gr.merge_section(RESULTS.read_text(encoding="utf-8"),
+                                                ptd_real_md(real, loso)), encoding="utf-8")
+        else:
+            print(f"real files not found in {gr.REAL}; PTD real rows skipped", flush=True)
         speed = None
         if not args.no_speed:
             with tempfile.TemporaryDirectory() as tmp:

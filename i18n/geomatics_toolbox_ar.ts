@@ -2653,10 +2653,6 @@
             <translation>&lt;p&gt;المرجع: &lt;bdi dir="ltr"&gt;Axelsson, P. (2000). &lt;cite&gt;DEM generation from laser scanner data using adaptive TIN models&lt;/cite&gt;. IAPRS XXXIII-B4, 110–117.&lt;/bdi&gt;&lt;/p&gt;</translation>
         </message>
         <message>
-            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest trusted point of each parcel larger than the largest building seeds a TIN, which takes the candidates (the lowest point per candidate cell) close enough to its facets until none is added; every other point is ground when it lies close to the final TIN. Its mean total error on the 8 ISPRS samples is 5.83 % at the defaults (Axelsson published 4.82 % over all 15 samples): use the recommended ground filter unless you need a TIN filter.</source>
-            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) بالتكثيف التدريجي لشبكة المثلثات TIN (Axelsson 2000): أدنى نقطة موثوقة في كل قطعة أكبر من أكبر مبنى تكون بذرةً لشبكة TIN، تضم النقاط المحتملة (أدنى نقطة في كل خلية للنقاط المحتملة) القريبة بما يكفي من أوجهها حتى لا تُضاف أي نقطة؛ وكل نقطة أخرى أرض إذا كانت قريبة من شبكة TIN النهائية. متوسط خطئه الكلي على عينات ISPRS الثماني 5.83 % بالقيم الافتراضية (نشر Axelsson ‏4.82 % على العينات الخمس عشرة كلها): استخدم مرشح الأرض المُوصى به ما لم تحتج إلى مرشح TIN.</translation>
-        </message>
-        <message>
             <source>Larger than the largest building.</source>
             <translation>أكبر من أكبر مبنى.</translation>
         </message>
@@ -2683,6 +2679,10 @@
         <message>
             <source>Candidate cell (m)</source>
             <translation>خلية النقاط المحتملة (م)</translation>
+        </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest trusted point of each parcel larger than the largest building seeds a TIN, which takes the candidates (the lowest point per candidate cell) close enough to its facets until none is added; every other point is ground when it lies close to the final TIN. Its mean total error on the 8 ISPRS samples is 4.50 % at the defaults (Axelsson published 4.82 % over all 15 samples): use the recommended ground filter unless you need a TIN filter.</source>
+            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) بالتكثيف التدريجي لشبكة المثلثات TIN (Axelsson 2000): أدنى نقطة موثوقة في كل قطعة أكبر من أكبر مبنى تكون بذرةً لشبكة TIN، تضم النقاط المحتملة (أدنى نقطة في كل خلية للنقاط المحتملة) القريبة بما يكفي من أوجهها حتى لا تُضاف أي نقطة؛ وكل نقطة أخرى أرض إذا كانت قريبة من شبكة TIN النهائية. متوسط خطئه الكلي على عينات ISPRS الثماني 4.50 % بالقيم الافتراضية (نشر Axelsson ‏4.82 % على العينات الخمس عشرة كلها): استخدم مرشح الأرض المُوصى به ما لم تحتج إلى مرشح TIN.</translation>
         </message>
     </context>
     <context>

@@ -2653,10 +2653,6 @@
             <translation>&lt;p&gt;مرجع: &lt;bdi dir="ltr"&gt;Axelsson, P. (2000). &lt;cite&gt;DEM generation from laser scanner data using adaptive TIN models&lt;/cite&gt;. IAPRS XXXIII-B4, 110–117.&lt;/bdi&gt;&lt;/p&gt;</translation>
         </message>
         <message>
-            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest trusted point of each parcel larger than the largest building seeds a TIN, which takes the candidates (the lowest point per candidate cell) close enough to its facets until none is added; every other point is ground when it lies close to the final TIN. Its mean total error on the 8 ISPRS samples is 5.83 % at the defaults (Axelsson published 4.82 % over all 15 samples): use the recommended ground filter unless you need a TIN filter.</source>
-            <translation>ابر نقطهٔ LAS/LAZ را به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) با متراکم‌سازی تدریجی TIN (Axelsson 2000) طبقه‌بندی می‌کند: پایین‌ترین نقطهٔ مطمئن هر قطعهٔ بزرگ‌تر از بزرگ‌ترین ساختمان بذر یک TIN می‌شود که نقاط نامزد (پایین‌ترین نقطهٔ هر سلول نامزد) را که به‌قدر کافی به وجه‌هایش نزدیک‌اند می‌پذیرد تا جایی که نقطه‌ای افزوده نشود؛ هر نقطهٔ دیگر اگر به TIN نهایی نزدیک باشد زمین است. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 5.83 % است (Axelsson روی هر 15 نمونه 4.82 % گزارش کرد): مگر به فیلتر TIN نیاز دارید، فیلتر زمین پیشنهادی را به کار ببرید.</translation>
-        </message>
-        <message>
             <source>Larger than the largest building.</source>
             <translation>بزرگ‌تر از بزرگ‌ترین ساختمان.</translation>
         </message>
@@ -2683,6 +2679,10 @@
         <message>
             <source>Candidate cell (m)</source>
             <translation>سلول نامزد (متر)</translation>
+        </message>
+        <message>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) by progressive TIN densification (Axelsson 2000): the lowest trusted point of each parcel larger than the largest building seeds a TIN, which takes the candidates (the lowest point per candidate cell) close enough to its facets until none is added; every other point is ground when it lies close to the final TIN. Its mean total error on the 8 ISPRS samples is 4.50 % at the defaults (Axelsson published 4.82 % over all 15 samples): use the recommended ground filter unless you need a TIN filter.</source>
+            <translation>ابر نقطهٔ LAS/LAZ را به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) با متراکم‌سازی تدریجی TIN (Axelsson 2000) طبقه‌بندی می‌کند: پایین‌ترین نقطهٔ مطمئن هر قطعهٔ بزرگ‌تر از بزرگ‌ترین ساختمان بذر یک TIN می‌شود که نقاط نامزد (پایین‌ترین نقطهٔ هر سلول نامزد) را که به‌قدر کافی به وجه‌هایش نزدیک‌اند می‌پذیرد تا جایی که نقطه‌ای افزوده نشود؛ هر نقطهٔ دیگر اگر به TIN نهایی نزدیک باشد زمین است. میانگین خطای کل آن روی 8 نمونهٔ ISPRS با پیش‌فرض‌ها 4.50 % است (Axelsson روی هر 15 نمونه 4.82 % گزارش کرد): مگر به فیلتر TIN نیاز دارید، فیلتر زمین پیشنهادی را به کار ببرید.</translation>
         </message>
     </context>
     <context>

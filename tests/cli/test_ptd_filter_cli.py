@@ -14,14 +14,14 @@ SAMPLES = ["samp11", "samp12", "samp22", "samp31", "samp41", "samp53", "samp54",
 #: sha1 of the uint8 classes and total error (%) of ``ptd.classify`` at its defaults (the
 #: same as RESEARCH in tests/core/test_ground_filters.py).
 GOLDEN = {
-    "samp11": ("6aaf341d3e0b4caf6dc7ee49f5c243fe09fa76b6", 14.7645),
-    "samp12": ("4c190f7e34b4d6f196656641a151a20d23b1a056", 2.9740),
-    "samp22": ("ad6fd3c1239102ff680f7283bde6dd7c9583f364", 6.9314),
-    "samp31": ("85aef58e831486de589b5580e36eda33635e2b58", 1.4795),
-    "samp41": ("cdf42b5ac3ff21d63c9dd079bb63548c25b6046f", 2.1458),
-    "samp53": ("06acb142e53e78594531febef92f51e4fd72e7dd", 11.4405),
-    "samp54": ("5f57175b81aa241d185e16429ec6d47aafa8fc30", 3.4503),
-    "samp61": ("5f0cae6fcf89ba97b9581379c1f36f540e868525", 3.4313),
+    "samp11": ("eb74f4d97c49d7315bea7b45274d038775819844", 9.0108),
+    "samp12": ("7984a75a1a948f262cee25cb0d09456ef5408b87", 3.3500),
+    "samp22": ("bcd9758928efff5c6287927440836cad17dddddb", 6.1426),
+    "samp31": ("0ac7d976f5bfd602ff8f11f803e7ec49c3f23f47", 2.0927),
+    "samp41": ("78144b761d04118a85e80e27655a330882fe5314", 2.6178),
+    "samp53": ("53ae907716fd725532950d5ea35fd3ec3bed579c", 6.7340),
+    "samp54": ("0d4d684fe523b6cff88a63e3282113144004da87", 3.1947),
+    "samp61": ("5060bef3cc5e3cefa26877e0d8c71d90f3dd87f5", 2.8950),
 }
 
 
