@@ -540,5 +540,6 @@ class LsqFilter(GroundFilter):
         lsq_sections(run.outcome.details, report, tr)
 
     def text_outputs(self, run) -> Dict[str, str]:
-        """``{"csv": per-tile iteration table}``."""
-        return {"csv": tile_csv(run.outcome.details)}
+        """``{"csv": per-tile iteration table}`` in the cloud's units (header says them)."""
+        info = getattr(run.points, "info", None)
+        return {"csv": tile_csv(run.outcome.details, units=info.units if info else None)}

@@ -120,33 +120,42 @@ def _tile_map(res, sec, tr) -> None:
     sec.add(tile_map(res.grid, res.tile_status, tr, STATUS_NAMES))
 
 
-def tile_csv(res) -> str:
+def tile_csv(res, units=None) -> str:
     """One row per tile and step (the paper's Tables 1–2 for every tile).
 
     Parameters
     ----------
     res : LsqResult
-        The filter's result.
+        The filter's result (computed in metres: DEVELOPERS.md, Units).
+    units : Units, optional
+        The cloud's linear units: tile centres are written in its horizontal unit and
+        heights in its vertical unit (so they sit on the cloud), and every length column
+        names its unit (``centre_x_ftUS``, ``zmean_m``). None: metres.
 
     Returns
     -------
     str
-        CSV text with the tile's final coefficients (tile coordinates, paper's term
-        order).
+        CSV text with the tile's final coefficients (paper's term order; the fit of
+        heights in metres on tile coordinates in metres, whatever the data's units:
+        ``b*_m`` columns).
     """
+    from ..io.units import METRIC
+    units = units or METRIC
+    hs, vs = units.horizontal.symbol, units.vertical.symbol
     fh = io.StringIO()
     w = csv.writer(fh, lineterminator="\n")
     terms = TERMS[res.params["order"]]
-    w.writerow(["tile_col", "tile_row", "centre_x", "centre_y", "status", "step",
-                "points", "zmin", "zmax", "zmean", "std"]
-               + [f"b{i}_{t}" for i, t in enumerate(terms)])
-    centres = res.grid.centres
+    w.writerow(["tile_col", "tile_row", f"centre_x_{hs}", f"centre_y_{hs}", "status",
+                "step", "points", f"zmin_{vs}", f"zmax_{vs}", f"zmean_{vs}", f"std_{vs}"]
+               + [f"b{i}_{t}_m" for i, t in enumerate(terms)])
+    centres = units.h_from_metres(res.grid.centres)
     for t in range(res.grid.count):
         head = [int(res.grid.ix[t]), int(res.grid.iy[t]), f"{centres[t, 0]:.3f}",
                 f"{centres[t, 1]:.3f}", STATUS_NAMES[int(res.tile_status[t])]]
         coef = [f"{c:.6g}" for c in res.coefficients[t]]
         for k in range(int(res.tile_iterations[t]) + 1):
             st = res.tile_stats[k, t]
+            heights = units.v_from_metres(np.asarray(st[1:], dtype=np.float64))
             w.writerow(head + [k, int(np.nan_to_num(st[0]))]
-                       + [f"{v:.3f}" if np.isfinite(v) else "" for v in st[1:]] + coef)
+                       + [f"{v:.3f}" if np.isfinite(v) else "" for v in heights] + coef)
     return fh.getvalue()

@@ -106,7 +106,7 @@ def test_improved_mode_and_advanced_parameters(qgis_processing, tile, tmp_path):
     first = [r for r in rows if r["step"] == "0"]
     assert len(first) == core.grid.count
     assert sum(int(r["points"]) for r in first) == core.iteration_stats[0]["points"]
-    assert "b1_x²" in rows[0]
+    assert "b1_x²_m" in rows[0] and "centre_x_m" in rows[0] and "zmean_m" in rows[0]
 
 
 class _CancelAfter:

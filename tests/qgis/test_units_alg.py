@@ -265,3 +265,26 @@ def test_elevation_change_units_refusal_in_arabic_and_persian_is_data_only(lang)
     assert "ftUS / m" in msg and "before.tif" in msg
     words = re.findall(r"[A-Za-z]{2,}", msg)
     assert set(words) <= {"before", "after", "tif", "ftUS", "m"}, msg
+
+
+def test_lsq_tile_stats_of_a_feet_cloud_in_its_units(qgis_processing, clouds):
+    """The LSQ per-tile CSV of a ftUS cloud: centres and heights in ftUS (they sit on the
+    cloud), the unit in every length column's name; the metre copy's says m. The same
+    tiles and fits: values equal once converted."""
+    import csv
+    d = clouds["dir"]
+    rows = {}
+    for k in ("m", "ft"):
+        qgis_processing.run("geomatics:lsqgroundfilter", {
+            "INPUT": clouds[k], "OUTPUT": str(d / f"lsq_{k}.las"),
+            "TILE_STATS": str(d / f"lsq_{k}.csv")})
+        rows[k] = list(csv.DictReader((d / f"lsq_{k}.csv").open(encoding="utf-8")))
+    assert len(rows["m"]) == len(rows["ft"]) > 4
+    for col in ("centre_x", "centre_y", "zmin", "zmax", "zmean", "std"):
+        assert f"{col}_m" in rows["m"][0] and f"{col}_ftUS" in rows["ft"][0], col
+        vm = np.array([float(r[f"{col}_m"] or "nan") for r in rows["m"]])
+        vf = np.array([float(r[f"{col}_ftUS"] or "nan") for r in rows["ft"]])
+        np.testing.assert_allclose(vf * FT, vm, atol=2e-3, err_msg=col)   # 3-decimal CSV
+    las = laspy.read(clouds["ft"])
+    cx = np.array([float(r["centre_x_ftUS"]) for r in rows["ft"]])
+    assert np.asarray(las.x).min() - 300 < cx.min() and cx.max() < np.asarray(las.x).max() + 300
