@@ -125,3 +125,27 @@ def test_report_states_the_options_the_extraction_ran_with():
     assert rows["Minimum height above ground (m)"] == 2.5
     assert rows["Storey height (m)"] == 2.8
     assert rows["Maximum angle between roof normals (°)"] == 20.0
+
+
+@pytest.mark.parametrize("runner", ["buildings", "classify"])
+def test_wrong_cloud_extension_refused_before_reading(scene_laz, tmp_path, monkeypatch,
+                                                      decodes, runner):
+    """OUTPUT_CLOUD=c.tif is refused up front: the cloud is never read (no header read for
+    points, no decode, no computation) and nothing is written."""
+    from geomatics_toolbox.core.errors import InputError
+    from geomatics_toolbox.core.lidar import pipeline
+    from geomatics_toolbox.core.lidar.buildings_file import BuildingOutputs, buildings_file
+    from geomatics_toolbox.core.lidar.classify import classify_file_asprs
+    reads = []
+    monkeypatch.setattr(pipeline, "read_cloud", lambda *a, **k: reads.append(a) or 1 / 0)
+    with pytest.raises(InputError, match=r"c\.tif.*\.las or \.laz") as exc:
+        if runner == "buildings":
+            buildings_file(scene_laz, BuildingOutputs(str(tmp_path / "b.gpkg"),
+                                                      cloud=str(tmp_path / "c.tif")))
+        else:
+            classify_file_asprs(scene_laz, cloud=str(tmp_path / "c.tif"),
+                                report=str(tmp_path / "r.html"))
+    assert reads == [] and decodes == []
+    name = "OUTPUT_CLOUD" if runner == "buildings" else "OUTPUT"
+    assert f"output {name} is a point cloud" in exc.value.message("en")
+    assert sorted(p.name for p in tmp_path.iterdir()) == []
