@@ -1,6 +1,9 @@
 """geomatics:groundfilter and geomatics:ptdgroundfilter through processing.run."""
 from __future__ import annotations
 
+import re
+from pathlib import Path
+
 import laspy
 import numpy as np
 import pytest
@@ -84,4 +87,10 @@ def test_groundfilter_has_no_required_parameter_but_input_and_output(qgis_app):
                 if not p.flags() & QgsProcessingParameterDefinition.FlagOptional
                 and p.defaultValue() is None}
     assert required == {"INPUT", "OUTPUT"}
-    assert "3.50" in alg.shortHelpString() and "INPUT=tile.laz" in alg.shortHelpString()
+    text = alg.shortHelpString()
+    assert "INPUT=tile.laz" in text
+    # the help's ISPRS figure is the README's (one measured figure, stated twice)
+    helped = re.search(r"ISPRS mean at the defaults (\d\.\d\d) %", text)
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text(encoding="utf-8")
+    stated = re.search(r"ISPRS mean total error (\d\.\d\d) %", readme)
+    assert helped and stated and helped.group(1) == stated.group(1)
