@@ -20,8 +20,8 @@ candidate per ``thin`` cell, and a candidate rejected in a facet that survives t
 rebuild (same three vertices) is not tested again; the others are located by a
 vectorised walk from their previous facet (:class:`~._tin.Tin`, no scipy barycentric
 transform). The loop stops when fewer than ``stop_fraction`` of the TIN's vertex
-count pass an iteration. On one core 83,500 points/s on a 1 M-point synthetic tile
-at 20 pts/m² (``benchmarks/results/ground.md``; was 4,810 points/s).
+count pass an iteration. On one core 49,600 points/s (CPU time, loaded machine) on a
+1 M-point synthetic tile at 20 pts/m² (``benchmarks/results/ground.md``; was 4,810).
 
 Measured on the 8 ISPRS filter-test samples at the defaults: mean total error
 4.50 % (was 8.07 %; Axelsson published 4.82 % over all 15 samples, 6.32 % over
