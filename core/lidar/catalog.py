@@ -29,15 +29,24 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
-from ..coords import REPROJECT_HINT, crs_is_geographic
 from ..errors import InputError
 from ..io.catalog import build_vrt, find_tiles
 from ..io.contract import OutputContract, check_paths
-from ..io.crs import crs_label, same_crs
 from ..io.las import LasInfo, las_info
 from ..progress import Cancelled, Monitor  # noqa: F401 - callers catch catalog.Cancelled
-from ..reporting.content import T
-from ..terrain.grid import check_grid_size
+from ._catalog_checks import (  # noqa: F401 - MAX_*, check_scheduler: public names
+    MAX_CHUNK_POINTS,
+    MAX_CHUNKS,
+    SETTINGS_FILE,
+    STATE_DIR,
+    _check_chunks,
+    _check_folder,
+    _check_params,
+    _check_resume,
+    _overlap_points,
+    check_index,
+    check_scheduler,
+)
 from ._chunks import (
     DTM_METHODS,
     GROUND_FILTERS,
@@ -61,9 +70,6 @@ from ._dask_run import (  # noqa: F401 - CatalogResult is this module's public r
 __all__ = ["Catalog", "CatalogResult", "run_catalog", "GROUND_FILTERS", "DTM_METHODS",
            "register_ground_filter", "register_dtm_method", "default_ground_filter",
            "plan_tasks"]
-
-STATE_DIR = ".catalog"
-
 
 def _test_fail_once() -> set:
     """Return the chunk keys whose first attempt fails on purpose (a test hook).
@@ -114,26 +120,7 @@ class Catalog:
                 infos.append(las_info(path))
             except ValueError as exc:           # InputError included: keep it (translated)
                 unreadable[path] = exc
-        if unreadable and (not skip_unreadable or not infos):
-            listing = [T("{tile}: {reason}", tile=os.path.basename(p), reason=r)
-                       for p, r in list(unreadable.items())[:4]]
-            raise InputError("{n} tile(s) cannot be read ({listing}). Repair or remove them, "
-                             "or let the catalog skip unreadable tiles (SKIP_UNREADABLE; "
-                             "their neighbours then get no buffer points from them).",
-                             n=len(unreadable), listing=listing)
-        empty = [t.path for t in infos if t.count == 0]
-        if empty:
-            raise InputError("Tile(s) without points: {tiles}; remove them "
-                             "from the catalog.", tiles=', '.join(empty))
-        groups = _crs_groups(infos)
-        if len(groups) > 1:
-            listing = "; ".join(f"{os.path.basename(g[0].path)}: {crs_label(g[0].crs) or 'none'}"
-                                for g in groups[:6])
-            raise InputError("The tiles are in {n_crs} different CRSs ({listing}); "
-                             "reproject them to one CRS (e.g. pdal translate) first.",
-                             n_crs=len(groups),
-                             listing=listing)
-        _check_tiles(infos)
+        check_index(infos, unreadable, skip_unreadable)
         bounds = np.array([[t.mins[0], t.mins[1], t.maxs[0], t.maxs[1]] for t in infos])
         return cls(infos, bounds, infos[0].crs, unreadable)
 
@@ -168,44 +155,6 @@ class Catalog:
         return 10.0 * math.sqrt(area / max(self.n_points, 1))
 
 
-def _crs_groups(infos: Sequence[LasInfo]) -> List[List[LasInfo]]:
-    """Tiles grouped by CRS meaning (PROJ equivalence), not by text.
-
-    A LAS 1.4 tile's WKT and a LAS 1.2 tile's GeoTIFF keys of the same EPSG:32632 are
-    one CRS; the vertical units (GeoKeys / compound CRS) must agree too.
-    """
-    groups: List[List[LasInfo]] = []
-    for t in infos:
-        for g in groups:
-            if (g[0].crs == t.crs or same_crs(g[0].crs, t.crs)) and g[0].units == t.units:
-                g.append(t)
-                break
-        else:
-            groups.append([t])
-    return groups
-
-
-def _check_tiles(infos: Sequence[LasInfo]) -> None:
-    """Refuse tiles in degrees, and duplicated tiles, from the headers."""
-    t = infos[0]
-    if crs_is_geographic(t.crs):
-        raise InputError("The tiles ({tile}, ...) are in a geographic CRS (longitude/"
-                         "latitude in degrees); tiles, buffers and cells need metres. "
-                         "{hint}", tile=os.path.basename(t.path), hint=REPROJECT_HINT)
-    seen: Dict[tuple, str] = {}
-    dups = []
-    for info in infos:
-        key = (info.count, tuple(round(v, 6) for v in (*info.mins, *info.maxs)))
-        if key in seen:
-            dups.append(f"{os.path.basename(seen[key])} = {os.path.basename(info.path)}")
-        else:
-            seen[key] = info.path
-    if dups:
-        raise InputError("Duplicated tiles (same number of points and same extent): {pairs}. "
-                         "Their points would be counted twice; remove the copies from the "
-                         "catalog.", pairs="; ".join(dups[:5]))
-
-
 # ============================================================================ planning
 def _output_names(folder: Path, tile: str) -> Dict[str, str]:
     stem = Path(tile).stem
@@ -215,156 +164,12 @@ def _output_names(folder: Path, tile: str) -> Dict[str, str]:
             "DONE": str(folder / STATE_DIR / f"{stem}.done.json")}
 
 
-def _check_folder(cat: Catalog, folder: Path) -> None:
-    root = folder.resolve()
-    inside = [p for p in cat.paths if root in Path(p).resolve().parents]
-    if inside:
-        raise InputError("The output folder {folder} contains input tiles "
-                         "({tile}, ...); choose another folder.",
-                         folder=folder,
-                         tile=os.path.basename(inside[0]))
-    stems = [Path(p).stem for p in cat.paths]
-    if len(set(stems)) != len(stems):
-        raise InputError("Two tiles have the same file name; their outputs would collide. "
-                         "Rename them.")
-
-
-def _check_params(ground_filter, dtm_method, cell_size, buffer, chunk_size) -> None:
-    if ground_filter not in GROUND_FILTERS:
-        raise InputError("Unknown ground filter {ground_filter!r}; choose one of "
-                         "{choices}.",
-                         ground_filter=ground_filter,
-                         choices=', '.join(GROUND_FILTERS))
-    if dtm_method not in DTM_METHODS:
-        raise InputError("Unknown DTM method {dtm_method!r}; choose one of "
-                         "{choices}.",
-                         dtm_method=dtm_method,
-                         choices=', '.join(DTM_METHODS))
-    if not (cell_size > 0 and math.isfinite(cell_size)):
-        raise InputError("CELL_SIZE must be > 0 metres (e.g. 1), got {cell_size}.",
-                         cell_size=cell_size)
-    if not (buffer >= 0 and math.isfinite(buffer)):
-        raise InputError("BUFFER must be >= 0 metres (e.g. 100), got {buffer}.", buffer=buffer)
-    if not (chunk_size >= 0 and math.isfinite(chunk_size)):
-        raise InputError("CHUNK_SIZE must be >= 0 metres (0 = the tiles), got {chunk_size}.",
-                         chunk_size=chunk_size)
-    ratio = chunk_size / cell_size
-    if chunk_size and (ratio < 1 or abs(ratio - round(ratio)) > 1e-6):
-        raise InputError("CHUNK_SIZE ({chunk_size} m) must be a whole multiple of CELL_SIZE "
-                         "({cell_size} m) so the chunk DTMs tile the mosaic exactly; e.g. "
-                         "{example}.", chunk_size=f"{chunk_size:g}",
-                         cell_size=f"{cell_size:g}",
-                         example=f"{max(round(ratio), 1) * cell_size:g}")
-
-
-#: Most chunks a catalog run plans (the scheduler keeps one task each).
-MAX_CHUNKS = 10_000
-#: Most points one chunk (with its buffer) may hold in a worker's memory (about 60 B
-#: per point for coordinates, classes and the filter's arrays: 12 GB).
-MAX_CHUNK_POINTS = 200_000_000
-
-
-def _check_chunks(cat: Catalog, chunk_size: float, cell_size: float, buffer: float,
-                  origin, *, h: float = 1.0) -> None:
-    """Refuse a plan with too many chunks, or chunks too big for a worker, up front.
-
-    Lengths in the tiles' units; ``h`` metres per unit (the messages speak metres).
-    """
-    e = cat.extent
-    if chunk_size:
-        ox, oy = origin
-        nx = math.floor((e[2] - ox) / chunk_size) - math.floor((e[0] - ox) / chunk_size) + 1
-        ny = math.floor((e[3] - oy) / chunk_size) - math.floor((e[1] - oy) / chunk_size) + 1
-        if nx * ny > MAX_CHUNKS:
-            raise InputError(
-                "CHUNK_SIZE {chunk_size} m cuts the catalog ({w} × {h} m) into up to {n} "
-                "chunks, more than {limit}; each chunk costs scheduling and reading "
-                "overhead. Use CHUNK_SIZE 0 (one chunk per tile) or at least {fit} m.",
-                chunk_size=f"{chunk_size * h:g}", w=f"{(e[2] - e[0]) * h:.0f}",
-                h=f"{(e[3] - e[1]) * h:.0f}", n=f"{nx * ny:,}", limit=f"{MAX_CHUNKS:,}",
-                fit=f"{math.ceil(h * math.sqrt((e[2] - e[0]) * (e[3] - e[1]) / MAX_CHUNKS)):g}")
-        side = chunk_size
-        check_grid_size(math.ceil((side + 2 * buffer) / cell_size),
-                        math.ceil((side + 2 * buffer) / cell_size), cell_size)
-        boxes = [(e[0] - buffer, e[1] - buffer, e[0] + side + buffer, e[1] + side + buffer)]
-    else:
-        boxes = [(b[0] - buffer, b[1] - buffer, b[2] + buffer, b[3] + buffer)
-                 for b in cat.bounds]
-        for b in boxes:
-            check_grid_size(math.ceil((b[2] - b[0]) / cell_size),
-                            math.ceil((b[3] - b[1]) / cell_size), cell_size)
-    worst = max(_overlap_points(cat, b) for b in boxes)
-    if worst > MAX_CHUNK_POINTS:
-        raise InputError(
-            "A chunk with its buffer would hold about {n} points, more than the {limit} a "
-            "worker can keep in memory. Use a smaller CHUNK_SIZE (or 0 for the tiles) or "
-            "a smaller BUFFER.", n=f"{worst:,.0f}", limit=f"{MAX_CHUNK_POINTS:,}")
-
-
-def check_scheduler(address: str, *, timeout: float = 5.0) -> None:
-    """Refuse a malformed or unreachable Dask scheduler address before anything is made.
-
-    Accepts ``tcp://host:port``, ``tls://host:port`` or ``host:port``.
-    """
-    import re
-    import socket
-    m = re.fullmatch(r"(?:(tcp|tls)://)?(\[[0-9a-fA-F:]+\]|[A-Za-z0-9_.\-]+):(\d{1,5})",
-                     address.strip())
-    if not m or not 0 < int(m.group(3)) < 65536:
-        raise InputError("SCHEDULER {scheduler!r} is not a Dask scheduler address; give "
-                         "tcp://host:port (e.g. tcp://10.0.0.5:8786) or leave it empty for "
-                         "local workers.", scheduler=address)
-    host, port = m.group(2).strip("[]"), int(m.group(3))
-    try:
-        with socket.create_connection((host, port), timeout=timeout):
-            pass
-    except OSError as exc:
-        raise InputError("Cannot reach the Dask scheduler {scheduler} ({exc}); start "
-                         "it with 'dask scheduler' or leave SCHEDULER empty.",
-                         scheduler=address, exc=exc) from exc
-
-
-SETTINGS_FILE = "settings.json"
-
-
 def _run_settings(tasks: Sequence[ChunkTask], cat: Catalog) -> dict:
     t = tasks[0]
     return dict(ground_filter=t.ground_filter, dtm_method=t.dtm_method,
                 cell_size=t.cell_size, buffer=t.buffer, origin=list(t.origin),
                 max_distance=t.max_distance, chunks=sorted(x.key for x in tasks),
                 tiles=sorted([os.path.basename(i.path), i.count] for i in cat.tiles))
-
-
-def _check_resume(folder: Path, settings: dict) -> None:
-    """Refuse to resume into a folder whose earlier run used other settings."""
-    path = folder / STATE_DIR / SETTINGS_FILE
-    if not path.exists():
-        return
-    import json
-    try:
-        old = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        old = {}
-    diff = [f"{k}: {old.get(k)!r} → {v!r}" for k, v in settings.items()
-            if k not in ("chunks", "tiles") and old.get(k) != v]
-    if old.get("tiles") != settings["tiles"]:
-        diff.append("tiles")
-    if diff:
-        raise InputError(
-            "The output folder {folder} holds the results of an earlier run with other "
-            "settings ({diff}); resuming would mix them. Choose another output folder, or "
-            "delete that folder's outputs and its .catalog folder to start again.",
-            folder=folder, diff="; ".join(diff[:6]))
-
-
-def _overlap_points(cat: Catalog, box) -> float:
-    """Points of the catalog expected in ``box`` (header counts x area share)."""
-    b = cat.bounds
-    w = np.clip(np.minimum(b[:, 2], box[2]) - np.maximum(b[:, 0], box[0]), 0, None)
-    h = np.clip(np.minimum(b[:, 3], box[3]) - np.maximum(b[:, 1], box[1]), 0, None)
-    area = np.maximum((b[:, 2] - b[:, 0]) * (b[:, 3] - b[:, 1]), 1e-9)
-    counts = np.array([t.count for t in cat.tiles], float)
-    return float(np.sum(counts * np.minimum(w * h / area, 1.0)))
 
 
 def _cost(cat: Catalog, task: ChunkTask) -> float:
