@@ -21,9 +21,11 @@ GDAL's behaviour exactly.
 Ties: with LiDAR coordinates quantised to 1 cm, a node often has two points at exactly
 the same distance at the ``max_points`` cut-off, and which one is used changes the
 result by millimetres to centimetres. GDAL keeps equidistant points in the order its
-point quadtree returns them; :func:`gdal_quadtree_rank` rebuilds that quadtree
-(vectorised, only when a tie actually occurs) so that ties are broken exactly as in
-GDAL (``tie_order='gdal'``, default; ``'input'`` = lower input index first).
+point quadtree returns them; the order of the few points a tied node compares is
+rebuilt from that quadtree (only when a tie actually occurs, only for those points:
+``_quadtree.gdal_quadtree_order``; :func:`gdal_quadtree_rank` ranks every point) so
+that ties are broken exactly as in GDAL (``tie_order='gdal'``, default; ``'input'`` =
+lower input index first).
 
 Implementation: one :class:`scipy.spatial.cKDTree` k-nearest query per block of grid
 rows (all cores), then vectorised weights; memory is bounded by the block size, not by
@@ -51,7 +53,11 @@ from scipy.spatial import cKDTree
 from ..coords import as_xyz
 from ..errors import InputError
 from ..progress import Monitor
+from ._quadtree import gdal_quadtree_order, gdal_quadtree_rank
 from .grid import GridSpec, check_memory, resolve_max_distance, row_blocks
+
+__all__ = ["IDW", "idw_grid", "gdal_quadtree_rank", "COINCIDENT_R2", "TIE_ORDERS",
+           "DEFAULT_POWER", "DEFAULT_BLOCK_CELLS"]
 
 #: squared distance below which a node "is on" a point (GDAL's constant)
 COINCIDENT_R2 = 1e-13
@@ -61,96 +67,6 @@ TIE_ORDERS = ("gdal", "input", "xy")
 #: invdistnn default
 DEFAULT_POWER = 2.0
 DEFAULT_BLOCK_CELLS = 262_144
-
-
-def gdal_quadtree_rank(x, y, *, capacity: int = 8, ratio: float = 0.55) -> np.ndarray:
-    """Rank of every point in the order GDAL's point quadtree returns them.
-
-    ``gdal_grid`` inserts the points, in input order, into a ``CPLQuadTree`` over the
-    points' bounding box (bucket capacity 8; a full leaf splits into four quadrants
-    made by two successive splits of the longer side, each part 55 % of its parent so
-    that they overlap; a point goes to the first quadrant that contains it). A
-    search returns the features leaf by leaf in depth-first order, and within a leaf
-    in input order. GDAL keeps equidistant neighbours in that order, so it decides
-    which of two equidistant points is used at the ``max_points`` cut-off. Because a
-    leaf splits exactly when a 9th point reaches it, the final tree depends only on
-    the point set, and this vectorised level-by-level construction reproduces it.
-    """
-    x = np.asarray(x, np.float64)
-    y = np.asarray(y, np.float64)
-    n = x.size
-    if n == 0:
-        return np.empty(0, np.int64)
-
-    def split(r):
-        a0, a1, b0, b1 = r
-        w, h = a1 - a0, b1 - b0
-        sx = w > h
-        cut1 = np.where(sx, a0 + w * ratio, b0 + h * ratio)
-        cut2 = np.where(sx, a1 - w * ratio, b1 - h * ratio)
-        first = (a0, np.where(sx, cut1, a1), b0, np.where(sx, b1, cut1))
-        second = (np.where(sx, cut2, a0), a1, np.where(sx, b0, cut2), b1)
-        return sx, cut1, first, second
-
-    rects = tuple(np.array([v]) for v in (x.min(), x.max(), y.min(), y.max()))
-    # the points still descending, compacted each level (contiguous arrays instead of
-    # gathers from the full ones); a point leaves with its key and depth when its node
-    # stops splitting (at most ``capacity`` points, or a degenerate rectangle)
-    ax, ay = x, y
-    ai = np.arange(n)
-    anode = np.zeros(n, np.int64)
-    akey = np.zeros(n, np.int64)
-    key = np.zeros(n, np.int64)
-    depth = np.zeros(n, np.int64)
-    deep = []
-    level = 0
-    while ai.size:
-        cnt = np.bincount(anode, minlength=rects[0].size)
-        full_nodes = np.flatnonzero(cnt > capacity)
-        if full_nodes.size == 0:
-            break
-        r = tuple(v[full_nodes] for v in rects)
-        sx, cut, h1, h2 = split(r)
-        sx1, cut_1, q1, q2 = split(h1)
-        sx2, cut_2, q3, q4 = split(h2)
-        quads = (q1, q2, q3, q4)
-        same = np.zeros(full_nodes.size, bool)
-        for qd in quads:
-            same |= (qd[0] == r[0]) & (qd[1] == r[1]) & (qd[2] == r[2]) & (qd[3] == r[3])
-        remap = np.full(cnt.size, -1, np.int64)
-        ok_nodes = np.flatnonzero(~same)
-        remap[full_nodes[ok_nodes]] = ok_nodes
-        p = remap[anode]
-        sel = p >= 0
-        if not sel.all():
-            out = ~sel
-            key[ai[out]] = akey[out]
-            depth[ai[out]] = min(level, 30)
-            ax, ay, ai, akey, p = ax[sel], ay[sel], ai[sel], akey[sel], p[sel]
-        if ai.size == 0:
-            break
-        second_half = ~(np.where(sx[p], ax, ay) <= cut[p])
-        sxh = np.where(second_half, sx2[p], sx1[p])
-        cuth = np.where(second_half, cut_2[p], cut_1[p])
-        second_quad = ~(np.where(sxh, ax, ay) <= cuth)
-        choice = 2 * second_half.astype(np.int64) + second_quad
-        if level < 30:
-            akey = akey * 4 + choice
-        else:
-            d = np.zeros(n, np.uint8)
-            d[ai] = choice
-            deep.append(d)
-        anode = p * 4 + choice
-        rects = tuple(np.stack([qd[i] for qd in quads], axis=1).ravel() for i in range(4))
-        level += 1
-    if ai.size:
-        key[ai] = akey
-        depth[ai] = min(level, 30)
-    key = key << (2 * (depth.max() - depth))
-    order = np.lexsort([np.arange(n)] + deep[::-1] + [key])
-    rank = np.empty(n, np.int64)
-    rank[order] = np.arange(n)
-    return rank
 
 
 def _validate(x, y, z, power, max_points, radius, min_points, smoothing):
@@ -250,8 +166,26 @@ class IDW:
             d[tied], idx[tied] = self._break_ties(q[tied], k, ub)
         return d, idx
 
+    def tie_keys(self, ids) -> np.ndarray:
+        """Sort keys of the points ``ids`` in the tie order (any shape).
+
+        The keys order these points among themselves exactly as :meth:`tie_rank`
+        does, but only these points are ranked (GDAL's quadtree is not built for the
+        whole cloud: a few hundred tied nodes of a million need a few thousand points).
+        """
+        ids = np.asarray(ids, np.int64)
+        if self._rank is not None or self.tie_order == "input":
+            return self.tie_rank()[ids] if self._rank is not None else ids
+        u, inv = np.unique(ids, return_inverse=True)
+        if self.tie_order == "gdal":
+            rank = gdal_quadtree_order(self.x, self.y, u, tree=self.tree)
+        else:                                   # "xy": coordinates, then input order
+            rank = np.empty(u.size, np.int64)
+            rank[np.lexsort((u, self.z[u], self.y[u], self.x[u]))] = np.arange(u.size)
+        return rank[inv.ravel()].reshape(ids.shape)
+
     def tie_rank(self) -> np.ndarray:
-        """Order used between equidistant points (computed once, when first needed)."""
+        """Order used between equidistant points, for every point (computed once)."""
         if self._rank is None:
             if self.tie_order == "gdal":
                 self._rank = gdal_quadtree_rank(self.x, self.y)
@@ -282,7 +216,8 @@ class IDW:
         dx = self.x[safe] - q[:, :1]
         dy = self.y[safe] - q[:, 1:2]
         r2 = np.where(valid, dx * dx + dy * dy, np.inf)
-        key_idx = np.where(valid, self.tie_rank()[safe], np.iinfo(np.int64).max)
+        key_idx = np.full(idx.shape, np.iinfo(np.int64).max)
+        key_idx[valid] = self.tie_keys(idx[valid])
         order = np.lexsort((key_idx, r2), axis=-1)
         rows = np.arange(d.shape[0])[:, None]
         return d[rows, order][:, :k], idx[rows, order][:, :k]
@@ -316,7 +251,8 @@ class IDW:
         if hit.any():
             ch = coincident[hit]
             if (ch.sum(axis=1) > 1).any():   # several coincident points: GDAL's first
-                rk = np.where(ch, self.tie_rank()[idx_safe[hit]], np.iinfo(np.int64).max)
+                rk = np.full(ch.shape, np.iinfo(np.int64).max)
+                rk[ch] = self.tie_keys(idx_safe[hit][ch])
                 first = np.argmin(rk, axis=1)
             else:
                 first = np.argmax(ch, axis=1)

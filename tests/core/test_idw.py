@@ -11,7 +11,7 @@ from geomatics_toolbox.core.terrain.grid import (
     grid_from_points,
     grid_like,
 )
-from geomatics_toolbox.core.terrain.idw import IDW, idw_grid
+from geomatics_toolbox.core.terrain.idw import IDW, gdal_quadtree_rank, idw_grid
 
 gdal = pytest.importorskip("osgeo.gdal")
 ogr = pytest.importorskip("osgeo.ogr")
@@ -157,3 +157,49 @@ def test_equidistant_neighbours_ordered_like_gdal_quadtree():
         by_index = idw_grid(x, y, z, grid, power=2, max_points=k, radius=3.0, fill=True,
                             tie_order="input")
         assert np.nanmax(np.abs(ref - by_index)) > 1e-3     # the ties do matter here
+
+
+@pytest.mark.parametrize("kind", ["uniform", "lattice", "coincident", "line"])
+def test_quadtree_order_of_a_few_points_equals_the_whole_tree(kind):
+    # the tied nodes rank only the points they compare (gdal_quadtree_order); their
+    # order must be the one of GDAL's quadtree over every point (gdal_quadtree_rank)
+    from scipy.spatial import cKDTree
+
+    from geomatics_toolbox.core.terrain._quadtree import gdal_quadtree_order
+    rng = np.random.default_rng(7)
+    n = 6000
+    if kind == "uniform":
+        x, y = rng.uniform(0, 100, n), rng.uniform(0, 40, n)
+    elif kind == "lattice":
+        x = rng.integers(0, 25, n) * 0.5 + 700000.0
+        y = rng.integers(0, 40, n) * 0.5 + 3000000.0
+    elif kind == "coincident":            # 2,000 points on one spot: the deepest tree
+        x, y = rng.uniform(0, 30, n).round(2), rng.uniform(0, 10, n).round(2)
+        x[:2000], y[:2000] = 5.0, 5.0
+    else:                                 # zero height: every split along x
+        x, y = rng.normal(0, 1, n), np.zeros(n)
+    full = gdal_quadtree_rank(x, y)
+    tree = cKDTree(np.column_stack([x, y]))
+    for m in (1, 9, 300, n):
+        ids = np.sort(rng.choice(n, m, replace=False))
+        local = gdal_quadtree_order(x, y, ids, tree=tree)
+        assert np.array_equal(np.argsort(local), np.argsort(full[ids]))
+
+
+@pytest.mark.parametrize("tie_order", ["gdal", "xy"])
+def test_ties_rank_only_the_tied_points(tie_order):
+    rng = np.random.default_rng(3)
+    gx, gy = np.meshgrid(np.arange(0, 30.01, 0.5), np.arange(0, 20.01, 0.5))
+    x, y = gx.ravel() + 700000, gy.ravel() + 3000000
+    x[:-1:5], y[:-1:5] = x[1::5], y[1::5]   # duplicated positions: "xy" orders them by z
+    z = rng.normal(100, 2, x.size)
+    interp = IDW(x, y, z, max_points=5, radius=3.0, tie_order=tie_order)
+    gx, gy = np.meshgrid(700000.125 + 0.25 * np.arange(120), 3000000.125 + 0.25 * np.arange(80))
+    d, _ = interp.tree.query(np.column_stack([gx.ravel(), gy.ravel()]), k=6)
+    assert (d[:, 5] == d[:, 4]).sum() > 1000        # many nodes tied at the cut-off
+    got = interp.predict(gx.ravel(), gy.ravel())
+    assert interp._rank is None                     # the whole quadtree never built
+    full = interp.tie_rank()
+    ties = np.arange(0, x.size, 7)
+    assert np.array_equal(np.argsort(interp.tie_keys(ties)), np.argsort(full[ties]))
+    assert np.array_equal(interp.predict(gx.ravel(), gy.ravel()), got)  # full-rank path
