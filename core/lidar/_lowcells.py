@@ -65,7 +65,7 @@ class LowCells:
     canopy_scale: float
 
 
-def closing_pits(zmin, step: float):
+def closing_pits(zmin, step: float, anchor=(0, 0)):
     """Occupied cells more than ``step`` below the 3 x 3 closing of the filled raster.
 
     Parameters
@@ -74,6 +74,8 @@ def closing_pits(zmin, step: float):
         Minimum raster (NaN where empty).
     step : float
         Depth (m).
+    anchor : (int, int)
+        Lattice index of cell (0, 0) (``_raster.Grid.anchor``).
 
     Returns
     -------
@@ -84,30 +86,35 @@ def closing_pits(zmin, step: float):
     empty = np.isnan(zmin)
     if empty.all():
         return np.zeros(zmin.shape, bool), zmin.copy()
-    zf = R.fill(zmin, ~empty)
+    zf = R.fill(zmin, ~empty, anchor)
     clo = -R.opening(-zf, 1)
     with np.errstate(invalid="ignore"):
         return ((clo - zmin) > step) & ~empty, clo
 
 
-def _block_min(z, f: int):
-    """Minimum over f x f blocks (NaN where a block is empty)."""
+def _block_min(z, f: int, anchor=(0, 0)):
+    """Minimum over f x f blocks aligned on the lattice (NaN where a block is empty).
+
+    Returns the block raster and the lattice index of its corner block.
+    """
     rows, cols = z.shape
-    r2, c2 = -(-rows // f), -(-cols // f)
+    pr, pc = anchor[0] % f, anchor[1] % f
+    r2, c2 = -(-(rows + pr) // f), -(-(cols + pc) // f)
     zp = np.full((r2 * f, c2 * f), np.inf)
-    zp[:rows, :cols] = np.where(np.isnan(z), np.inf, z)
+    zp[pr:pr + rows, pc:pc + cols] = np.where(np.isnan(z), np.inf, z)
     out = zp.reshape(r2, f, c2, f).min(axis=(1, 3))
     out[np.isinf(out)] = np.nan
-    return out
+    return out, (anchor[0] // f, anchor[1] // f)
 
 
-def _expand(a, f: int, shape):
-    """Block raster ``a`` back on the fine grid of ``shape``."""
-    return np.repeat(np.repeat(a, f, axis=0), f, axis=1)[:shape[0], :shape[1]]
+def _expand(a, f: int, shape, anchor=(0, 0)):
+    """Block raster ``a`` (blocks aligned as in :func:`_block_min`) back on the fine grid."""
+    pr, pc = anchor[0] % f, anchor[1] % f
+    return np.repeat(np.repeat(a, f, axis=0), f, axis=1)[pr:pr + shape[0], pc:pc + shape[1]]
 
 
 def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
-              share: float = 0.08, share_coarse: float = 0.03) -> LowCells:
+              share: float = 0.08, share_coarse: float = 0.03, anchor=(0, 0)) -> LowCells:
     """Low-outlier cells: closing pits, read at the ground-return scale under canopy.
 
     Parameters
@@ -124,13 +131,16 @@ def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
         Pits above this share of the occupied cells mark a canopy area.
     share_coarse : float
         The coarse scale is the first at which pits fall below this share there.
+    anchor : (int, int)
+        Lattice index of cell (0, 0) (``_raster.Grid.anchor``): the coarse blocks
+        are aligned on the lattice, whatever the raster's extent.
 
     Returns
     -------
     LowCells
         The mask and what was derived.
     """
-    pits, _ = closing_pits(zmin, step)
+    pits, _ = closing_pits(zmin, step, anchor)
     occupied = ~np.isnan(zmin)
     n_occ = max(1, int(np.count_nonzero(occupied)))
     if not pits.any():
@@ -143,14 +153,14 @@ def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
     if not canopy.any():
         return LowCells(pits, n_pits, 0.0, 0.0)
     for f in FACTORS:
-        coarse = _block_min(zmin, f)
-        cpits, clo = closing_pits(coarse, step)
-        area = _block_min(np.where(canopy, 0.0, np.nan), f) == 0.0
+        coarse, canchor = _block_min(zmin, f, anchor)
+        cpits, clo = closing_pits(coarse, step, canchor)
+        area = _block_min(np.where(canopy, 0.0, np.nan), f, anchor)[0] == 0.0
         n_area = np.count_nonzero(area & ~np.isnan(coarse))
         if np.count_nonzero(cpits & area) < share_coarse * max(1, n_area):
             break
     with np.errstate(invalid="ignore"):
-        under = ((_expand(clo, f, zmin.shape) - zmin) > step) & occupied
+        under = ((_expand(clo, f, zmin.shape, anchor) - zmin) > step) & occupied
     low = np.where(canopy, under, pits)
     return LowCells(low, n_pits, float(np.count_nonzero(canopy & occupied)) / n_occ,
                     float(f * cell))

@@ -56,13 +56,20 @@ def snap_down(value: float, origin: float, period: float) -> float:
 
 @dataclass(frozen=True)
 class Grid:
-    """A regular grid: lower-left origin, cell size (m) and shape (rows, cols)."""
+    """A regular grid: lower-left origin, cell size (m) and shape (rows, cols).
+
+    ``anchor`` is the ``(row, col)`` of the corner cell on the lattice through the
+    catalog origin ((0, 0) without one): block structures (the :func:`fill` pyramid,
+    coarse blocks) are aligned on that lattice, so a catalog chunk and the merged cloud
+    share them whatever their extents.
+    """
 
     x0: float
     y0: float
     cell: float
     rows: int
     cols: int
+    anchor: tuple = (0, 0)
 
     @classmethod
     def around(cls, x, y, cell, origin=None):
@@ -73,12 +80,15 @@ class Grid:
         and the blocks of the :func:`fill` pyramid up to that size.
         """
         x0, y0 = float(x.min()), float(y.min())
+        anchor = (0, 0)
         if origin is not None:
             period = cell * ALIGN
             x0, y0 = snap_down(x0, origin[0], period), snap_down(y0, origin[1], period)
+            anchor = (int(round((y0 - float(origin[1])) / cell)),
+                      int(round((x0 - float(origin[0])) / cell)))
         cols = int((float(x.max()) - x0) // cell) + 1
         rows = int((float(y.max()) - y0) // cell) + 1
-        return cls(x0, y0, float(cell), rows, cols)
+        return cls(x0, y0, float(cell), rows, cols, anchor)
 
     def index(self, x, y):
         """Flat row-major cell index of every point (int64)."""
@@ -111,15 +121,20 @@ class PointCells:
         self.starts = np.flatnonzero(np.r_[True, sidx[1:] != sidx[:-1]])
         self.cells = sidx[self.starts]
         del sidx
-        fx = ((x - grid.x0) / grid.cell - 0.5).astype(np.float32)
-        fy = ((y - grid.y0) / grid.cell - 0.5).astype(np.float32)
+        # the fractions are taken in float64 and stored in float32: rounded once, from
+        # the offset inside the cell, so they do not depend on where the grid starts
+        fx = (x - grid.x0) / grid.cell - 0.5
         np.clip(fx, 0.0, grid.cols - 1.0, out=fx)
-        np.clip(fy, 0.0, grid.rows - 1.0, out=fy)
         c0 = np.minimum(fx.astype(np.int64), max(grid.cols - 2, 0))
-        r0 = np.minimum(fy.astype(np.int64), max(grid.rows - 2, 0))
         fx -= c0
+        self.fx = fx.astype(np.float32)
+        del fx
+        fy = (y - grid.y0) / grid.cell - 0.5
+        np.clip(fy, 0.0, grid.rows - 1.0, out=fy)
+        r0 = np.minimum(fy.astype(np.int64), max(grid.rows - 2, 0))
         fy -= r0
-        self.fx, self.fy = fx, fy
+        self.fy = fy.astype(np.float32)
+        del fy
         r0 *= grid.cols
         r0 += c0
         self.i00 = r0
@@ -175,7 +190,7 @@ class PointCells:
         return raster.ravel()[self.idx]
 
 
-def fill(z, valid):
+def fill(z, valid, anchor=(0, 0)):
     """Fill cells where ``valid`` is False by a push-pull pyramid (smooth, O(cells)).
 
     Parameters
@@ -184,6 +199,10 @@ def fill(z, valid):
         Raster.
     valid : ndarray of bool
         Cells to keep.
+    anchor : (int, int)
+        Lattice index of cell (0, 0) (``Grid.anchor``): the pyramid's 2 x 2 blocks
+        are aligned on the lattice, not on the raster's corner, so the fill of a cell
+        does not depend on where the raster starts.
 
     Returns
     -------
@@ -196,25 +215,62 @@ def fill(z, valid):
         raise InputError("No valid cell to interpolate from.")
     w = valid.astype(np.float64)
     v = np.where(valid, z, 0.0)
-    return _pushpull(v * w, w)
+    return _pushpull(v * w, w, int(anchor[0]), int(anchor[1]))
 
 
-def _pushpull(vw, w):
-    """Recursive push-pull on weighted values ``vw`` and weights ``w``."""
+def _pushpull(vw, w, r0=0, c0=0):
+    """Recursive push-pull on weighted values ``vw`` and weights ``w`` (corner at lattice
+    index ``(r0, c0)``)."""
     rows, cols = w.shape
     if rows <= 2 and cols <= 2 or (w > 0).all():
         out = np.divide(vw, w, out=np.zeros_like(vw), where=w > 0)
         if not (w > 0).all():
             out[w == 0] = vw.sum() / w.sum()
         return out
-    r2, c2 = (rows + 1) // 2, (cols + 1) // 2
-    pad = ((0, 2 * r2 - rows), (0, 2 * c2 - cols))
+    pr, pc = r0 % 2, c0 % 2
+    r2, c2 = (rows + pr + 1) // 2, (cols + pc + 1) // 2
+    pad = ((pr, 2 * r2 - rows - pr), (pc, 2 * c2 - cols - pc))
     cvw = np.pad(vw, pad).reshape(r2, 2, c2, 2).sum(axis=(1, 3))
     cw = np.pad(w, pad).reshape(r2, 2, c2, 2).sum(axis=(1, 3))
-    coarse = _pushpull(cvw, cw)
-    up = ndimage.zoom(coarse, 2, order=1, mode="nearest", grid_mode=True)[:rows, :cols]
+    coarse = _pushpull(cvw, cw, r0 // 2, c0 // 2)
+    up = ndimage.zoom(coarse, 2, order=1, mode="nearest", grid_mode=True)
+    up = up[pr:pr + rows, pc:pc + cols]
     out = np.divide(vw, w, out=up.copy(), where=w > 0)
     return out
+
+
+#: resolution of :func:`box_mean` (2**-20 of the unit, about 1 micrometre)
+_BOX_SCALE = float(2 ** 20)
+
+
+def box_mean(a, size: int):
+    """Mean over a ``size`` x ``size`` box, edges repeated (like ``uniform_filter``, mode
+    "nearest"), computed exactly at a resolution of 2**-20.
+
+    scipy's ``uniform_filter`` keeps a running sum along each line, so the rounding of
+    a cell's mean depends on where the line starts: a catalog chunk and the merged cloud
+    would differ in the last bits. Here the values are rounded to 2**-20 and summed as
+    integers, so each mean depends only on the cells in its box.
+
+    >>> float(box_mean(np.arange(9.0).reshape(3, 3), 3)[1, 1])
+    4.0
+    """
+    size = int(size)
+    if size <= 1:
+        return np.asarray(a, dtype=np.float64).copy()
+    q = np.rint(np.asarray(a, dtype=np.float64) * _BOX_SCALE).astype(np.int64)
+    h = size // 2
+    for axis in (0, 1):
+        n = q.shape[axis]
+        idx = np.clip(np.arange(-h, n + size - h - 1), 0, n - 1)
+        qp = np.take(q, idx, axis=axis)
+        cs = np.cumsum(qp, axis=axis)
+        zero = np.zeros_like(np.take(cs, [0], axis=axis))
+        cs = np.concatenate((zero, cs), axis=axis)
+        q = np.take(cs, np.arange(size, size + n), axis=axis) - np.take(cs, np.arange(n),
+                                                                         axis=axis)
+        del qp, cs
+    return q / (_BOX_SCALE * size * size)
 
 
 def opening(z, radius):

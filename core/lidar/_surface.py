@@ -37,15 +37,17 @@ def _window_planes(z, valid, radius: int, *, spread: bool = False):
     """Moments and least-squares plane of the valid cells of every (2r+1)² window.
 
     Returns a dict: ``n`` (valid cells), ``mx, my, mz`` (means of column, row and z
-    offset; z relative to ``zc``, the mean of all valid cells), ``det`` (of the
+    offset), ``det`` (of the
     coordinate covariance), ``gx, gy`` (rise per cell) and, with ``spread``, ``czz``
-    (variance of z) and the covariances ``cxz, cyz``.
+    (variance of z) and the covariances ``cxz, cyz``. ``zc`` is 0: a reference taken
+    from the raster (its mean) would change the rounding with the extent, and a chunk
+    of a catalog would differ from the merged cloud in the last bits.
     """
     r = int(radius)
     off = np.arange(-r, r + 1, dtype=np.float64)
     box = np.ones(2 * r + 1)
     w = valid.astype(np.float64)
-    zc = float(np.mean(z[valid])) if valid.any() else 0.0
+    zc = 0.0
     zw = np.where(valid, z - zc, 0.0)
 
     def corr(a, kx, ky):
@@ -128,19 +130,72 @@ def plane_fit(z, valid, radius: int):
     return rms, centre, gx, gy
 
 
-def _knn(tree, q, k: int):
-    """``k`` nearest neighbours: first within a short radius, then unbounded.
+def _knn(tree, q, k: int, lattice):
+    """The ``k`` nearest lattice cells of every query cell, ties broken by offset.
 
-    Most hole cells have their border close by; the bounded search prunes the tree.
+    On an integer lattice many cells are equidistant, and a KD-tree returns the tied
+    ones in tree order, which depends on the raster's extent (a catalog chunk and the
+    merged cloud would pick different cells). Here the tree is asked for ``k + 16``
+    (more where the ties reach that far), and the ``k`` kept are the first by
+    (squared distance, row offset, column offset) from the query cell: the choice and
+    its order depend only on the cells around the query, not on the extent.
+
+    Parameters
+    ----------
+    tree : cKDTree
+        Tree of the lattice cells ``lattice`` (``(col, row)`` integers).
+    q : ndarray of int, shape (m, 2)
+        Query cells ``(col, row)``.
+    k : int
+        Neighbours kept (at most the number of lattice cells).
+    lattice : ndarray of int, shape (n, 2)
+        The cells of the tree.
+
+    Returns
+    -------
+    tuple of ndarray
+        ``(d2, dc, dr, j)`` of shape (m, k): squared distance (cells²), column and row
+        offset of the neighbour from the query cell, and its index in ``lattice``.
     """
-    bound = 2.0 * np.sqrt(k)
-    d, j = tree.query(q, k=k, distance_upper_bound=bound)
-    d, j = d.reshape(len(q), k), j.reshape(len(q), k)
-    far = np.isinf(d[:, -1])
-    if far.any():
-        df, jf = tree.query(q[far], k=k)
-        d[far], j[far] = df.reshape(-1, k), jf.reshape(-1, k)
-    return d, j
+    n = lattice.shape[0]
+    m = q.shape[0]
+    big = np.iinfo(np.int64).max // 4
+    kk = min(n, k + 16)
+    d2 = np.empty((m, k), np.int64)
+    dc = np.empty((m, k), np.int64)
+    dr = np.empty((m, k), np.int64)
+    jj = np.empty((m, k), np.int64)
+    todo = np.arange(m)
+    bound = 2.0 * np.sqrt(kk)                # most hole cells have their border close by
+    while todo.size:
+        qq = q[todo]
+        d, j = tree.query(qq, k=kk, distance_upper_bound=bound)
+        d, j = d.reshape(-1, kk), j.reshape(-1, kk)
+        far = np.isinf(d[:, k - 1])
+        if far.any():
+            df, jf = tree.query(qq[far], k=kk)
+            d[far], j[far] = df.reshape(-1, kk), jf.reshape(-1, kk)
+        # a tie at the k-th distance that may go on past the kk-th: ask for more
+        more = (d[:, kk - 1] == d[:, k - 1]) if kk < n else np.zeros(len(qq), bool)
+        ok = ~more
+        if ok.any():
+            jo = j[ok]
+            miss = jo >= n
+            jo = np.where(miss, 0, jo)
+            ddc = lattice[jo, 0] - qq[ok, :1]
+            ddr = lattice[jo, 1] - qq[ok, 1:]
+            key = np.where(miss, big, ddc * ddc + ddr * ddr)
+            # lexsort along rows: primary key last
+            o = np.lexsort((ddc, ddr, key), axis=-1)[:, :k]
+            sel = todo[ok]
+            d2[sel] = np.take_along_axis(key, o, 1)
+            dc[sel] = np.take_along_axis(ddc, o, 1)
+            dr[sel] = np.take_along_axis(ddr, o, 1)
+            jj[sel] = np.take_along_axis(jo, o, 1)
+        todo = todo[more]
+        kk = min(n, 2 * kk)
+        bound = 2.0 * np.sqrt(kk)
+    return d2, dc, dr, jj
 
 
 def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12,
@@ -179,22 +234,23 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         return R.fill_tin(z, valid)
     gx, gy = plane_gradient(z, valid, radius, cell)
     bz, bgx, bgy = z[rr, cc], gx[rr, cc], gy[rr, cc]
-    bs = bgx * cc + bgy * rr               # plane term at the border cell itself
     del gx, gy
-    tree = cKDTree(np.column_stack((cc, rr)))
+    lattice = np.column_stack((cc, rr))
+    tree = cKDTree(lattice)
     k = min(int(neighbours), rr.size)
     out = np.where(valid, z, np.nan)
     hr, hc = np.nonzero(~valid if need is None else ~valid & need)
     for s in range(0, hr.size, BATCH):
         r, c = hr[s:s + BATCH], hc[s:s + BATCH]
-        d, j = _knn(tree, np.column_stack((c, r)), k)
-        d *= cell
+        d2, dc, dr, j = _knn(tree, np.column_stack((c, r)), k, lattice)
+        d = np.sqrt(d2) * cell
         np.maximum(d, 1e-9, out=d)
         damp = np.minimum(1.0, reach / d)
         damp *= cell
-        gxj, gyj = bgx[j], bgy[j]
-        plane = gxj * c[:, None] + gyj * r[:, None]
-        plane -= bs[j]
+        # tangent plane of border cell j at the hole cell: offsets are integers, so the
+        # value does not depend on where the raster starts
+        plane = bgx[j] * -dc
+        plane -= bgy[j] * dr
         plane *= damp
         plane += bz[j]
         np.multiply(d, d, out=d)

@@ -6,11 +6,11 @@ the same classes as :func:`classify_file` on the merged cloud (same lattice orig
 the filter's single-file default selection) for every point farther than the buffer
 from the catalog's outer edge, and input class 18 stays 18 in both.
 
-Two filters are not strictly local, so a few points far inside may differ (measured,
-bounded below): the recommended filter's hole filling takes the 12 nearest border
-cells of a KD-tree, whose choice among equidistant cells depends on the raster's
-extent; PTD's Delaunay triangulation (Qhull) of co-circular points changes far from
-the points added. Both see the same neighbourhood up to those ties.
+The recommended filter gives exactly the same classes (its hole fill takes the 12
+nearest border cells ordered by distance and offset, its pyramids and block structures
+are aligned on the origin's lattice: nothing depends on the raster's extent). PTD is not
+strictly local: its Delaunay triangulation (Qhull) of co-circular points changes far from
+the points added, so a few points far inside may differ (measured, bounded below).
 """
 from __future__ import annotations
 
@@ -36,11 +36,11 @@ from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 SIDE = 250.0
 ORIGIN = (500_000.0, 4_000_000.0)
 BUFFER = 120.0
-#: share of the inner points allowed to differ (see the module docstring); 0 = identical.
+#: share of the inner points allowed to differ (see the module docstring); absent = 0, identical.
 #: PTD's seed parcels are sized to fit the cloud's extent (no sliver parcel: closed-canopy
 #: fix), so a chunk and the whole cloud seed differently: 330 of 7,126 inner points differ
 #: at 0.1 pts/m² (was <= 0.2 % with parcels anchored at the cloud's corner) - known gap.
-NEAR = {"groundfilter": 0.001, "ptd": 0.05}
+NEAR = {"ptd": 0.05}
 #: point density per filter: PTD on a sparser cloud
 DENSITY = {"ptd": 0.1}
 

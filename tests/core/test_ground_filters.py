@@ -27,23 +27,27 @@ SAMPLES = ["samp11", "samp12", "samp22", "samp31", "samp41", "samp53", "samp54",
 #: fill k-NN searched within a short radius first (ties at the 12th neighbour resolve
 #: differently): samp11/12/22/53/61 move by -0.012..+0.004 (mean 3.368). Height
 #: tolerance 0.35 x mean point spacing within 0.25-0.5 m (was 0.5 m; factor chosen by
-#: the 12-fold leave-one-sample-out, bench_ground.py --loso12): mean 3.240.
+#: the 12-fold leave-one-sample-out, bench_ground.py --loso12): mean 3.240. Catalog =
+#: single file (translation-invariant hole fill: the 12 nearest border cells by (distance,
+#: row, col offset); push-pull and coarse blocks aligned on the origin lattice; exact box
+#: means; plane moments without a raster-wide mean): samp11 +0.055, samp53 +0.017,
+#: samp54 -0.023, samp12/61 -0.003 (mean 3.251).
 RESEARCH = {
-    "samp11": ("017355ad100a4cd4c37af36140fb6aacbe1e748e", 8.7924,
+    "samp11": ("7aff48dfda37681a78ef49464760b715957fc623", 8.8477,
                "eb74f4d97c49d7315bea7b45274d038775819844", 9.0108),
-    "samp12": ("f96239194c3be1bbb115f5061987217feb1e359c", 2.4502,
+    "samp12": ("08f5cb63ff8a9aef88e9da147ae8534706e2d42c", 2.4789,
                "7984a75a1a948f262cee25cb0d09456ef5408b87", 3.3500),
-    "samp22": ("e18d4fd353ea725fef4cdafa771dde51eb5769fb", 2.7610,
+    "samp22": ("26ac53f93047357b26fea8b043a8618f33ece3ea", 2.7671,
                "bcd9758928efff5c6287927440836cad17dddddb", 6.1426),
-    "samp31": ("8ef25a50b70a2c25fbc80158a87fd7dc0d2a4670", 1.4067,
+    "samp31": ("803ef9f26b8d67da8ff1d956d15e9ca961c8f257", 1.4136,
                "0ac7d976f5bfd602ff8f11f803e7ec49c3f23f47", 2.0927),
     "samp41": ("aa305c615796ac6a247601f71c66f92a77a9580d", 2.6534,
                "78144b761d04118a85e80e27655a330882fe5314", 2.6178),
-    "samp53": ("ccc174b9bf89cc5ba3d45d6ae491e1aafdd46edb", 3.2143,
+    "samp53": ("36abec64fb195b776bbbf41f90920770ebd687ca", 3.2317,
                "53ae907716fd725532950d5ea35fd3ec3bed579c", 6.7340),
-    "samp54": ("248c73e81f64485518c6dc4aedcf506ae054b6fd", 2.6487,
+    "samp54": ("70702d516e3d58de1a800490fec65741765a9ca0", 2.6255,
                "0d4d684fe523b6cff88a63e3282113144004da87", 3.1947),
-    "samp61": ("b739a6f1fadf3cf7999d9a25ff85ffe876b62e1d", 1.9909,
+    "samp61": ("0193d36008e43283e97b962033ed5909ef152a3e", 1.9880,
                "5060bef3cc5e3cefa26877e0d8c71d90f3dd87f5", 2.8950),
 }
 
@@ -205,7 +209,7 @@ def test_recommended_isprs_golden_identical_to_research(isprs_dir, sample):
 
 def test_recommended_isprs_mean_and_wins(isprs_dir):
     totals = [RESEARCH[s][1] for s in SAMPLES]
-    assert np.mean(totals) == pytest.approx(3.240, abs=0.0005)
+    assert np.mean(totals) == pytest.approx(3.251, abs=0.0005)
     smrf = dict(samp11=8.52, samp12=3.60, samp22=3.59, samp31=3.55, samp41=12.20,
                 samp53=7.99, samp54=4.28, samp61=2.28)     # pysmrf, PDAL defaults
     assert sum(RESEARCH[s][1] < smrf[s] for s in SAMPLES) == 7

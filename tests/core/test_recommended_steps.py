@@ -78,3 +78,44 @@ def test_grow_stops_at_the_rise_limit_and_the_iteration_reach():
 def test_new_options_are_validated():
     with pytest.raises(InputError, match="trend_window"):
         rec.RecommendedOptions(trend_window=-1.0)
+
+
+def test_hole_fill_neighbours_do_not_depend_on_tree_order():
+    """Equidistant lattice cells: the 12 chosen and their order depend on the offsets
+    only (review G2: a KD-tree's own tie order follows the raster's extent)."""
+    from scipy.spatial import cKDTree
+
+    from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
+    rng = np.random.default_rng(3)
+    lat = np.unique(rng.integers(0, 40, size=(300, 2)), axis=0)
+    q = rng.integers(0, 40, size=(200, 2))
+    ref = S._knn(cKDTree(lat), q, 12, lat)
+    for seed in range(3):
+        perm = np.random.default_rng(seed).permutation(len(lat))
+        got = S._knn(cKDTree(lat[perm]), q, 12, lat[perm])
+        for a, b in zip(ref[:3], got[:3]):               # d2, col and row offsets
+            np.testing.assert_array_equal(a, b)
+        np.testing.assert_array_equal(lat[perm][got[3]], lat[ref[3]])
+    d2 = ref[0]
+    brute = np.sort(((lat[None, :, :] - q[:, None, :]) ** 2).sum(-1), axis=1)[:, :12]
+    np.testing.assert_array_equal(d2, brute)             # the 12 nearest distances
+
+
+def test_fill_and_box_mean_of_a_crop_equal_the_full_raster_inside():
+    """A raster cut at any corner (a catalog chunk) fills and box-averages to the same
+    values as the whole raster, bit for bit, away from the cut."""
+    rng = np.random.default_rng(5)
+    z = 100.0 + rng.normal(0, 3, (200, 230)).cumsum(axis=1) * 0.01
+    valid = rng.random(z.shape) < 0.15
+    full = R.fill(np.where(valid, z, np.nan), valid, (0, 0))
+    box = R.box_mean(full, 11)
+    for r0, c0 in ((64, 128), (37, 91)):
+        sub = np.s_[r0:, c0:]
+        part = R.fill(np.where(valid, z, np.nan)[sub], valid[sub], (r0, c0))
+        inner = np.s_[40:-40, 40:-40]
+        np.testing.assert_array_equal(part[inner], full[sub][inner])
+        np.testing.assert_array_equal(R.box_mean(part, 11)[inner], box[sub][inner])
+    for r0, c0 in ((3, 5), (7, 1)):                          # any offset, same lattice
+        sub = np.s_[r0:, c0:]
+        np.testing.assert_array_equal(R.box_mean(full[sub], 11)[20:-20, 20:-20],
+                                      box[sub][20:-20, 20:-20])
