@@ -219,8 +219,10 @@ def fill(z, valid, anchor=(0, 0)):
 
 
 def _pushpull(vw, w, r0=0, c0=0):
-    """Recursive push-pull on weighted values ``vw`` and weights ``w`` (corner at lattice
-    index ``(r0, c0)``)."""
+    """Recursive push-pull on weighted values ``vw`` and weights ``w``.
+
+    The raster's corner is at lattice index ``(r0, c0)``.
+    """
     rows, cols = w.shape
     if rows <= 2 and cols <= 2 or (w > 0).all():
         out = np.divide(vw, w, out=np.zeros_like(vw), where=w > 0)
@@ -244,8 +246,9 @@ _BOX_SCALE = float(2 ** 20)
 
 
 def box_mean(a, size: int):
-    """Mean over a ``size`` x ``size`` box, edges repeated (like ``uniform_filter``, mode
-    "nearest"), computed exactly at a resolution of 2**-20.
+    """Mean over a ``size`` x ``size`` box, computed exactly at a resolution of 2**-20.
+
+    Edges are repeated (like ``uniform_filter`` with mode "nearest").
 
     scipy's ``uniform_filter`` keeps a running sum along each line, so the rounding of
     a cell's mean depends on where the line starts: a catalog chunk and the merged cloud

@@ -131,7 +131,7 @@ def plane_fit(z, valid, radius: int):
 
 
 def _knn(tree, q, k: int, lattice):
-    """The ``k`` nearest lattice cells of every query cell, ties broken by offset.
+    """Find the ``k`` nearest lattice cells of every query cell, ties broken by offset.
 
     On an integer lattice many cells are equidistant, and a KD-tree returns the tied
     ones in tree order, which depends on the raster's extent (a catalog chunk and the
