@@ -193,6 +193,8 @@ class LidarToDtmAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
             _check_tif(out.final(self.OUTPUT_DTM))
             # 1. everything that can be checked before the first write
             info = las_info(src)
+            if info.count == 0:           # before the check points are set against it
+                raise InputError("{path} holds no points (empty point cloud).", path=src)
             crs = self.resolve_crs(parameters, context, info)
             qcrs = QgsCoordinateReferenceSystem(crs)
             if not qcrs.isValid():

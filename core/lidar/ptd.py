@@ -46,7 +46,7 @@ from dataclasses import dataclass
 from typing import Optional
 
 import numpy as np
-from scipy.spatial import Delaunay
+from scipy.spatial import Delaunay, QhullError
 
 from ..classes import GROUND, LOW_NOISE
 from ..classes import UNCLASSIFIED as OBJECT
@@ -227,11 +227,16 @@ def classify_with_tin(x, y, z, *, options=None, progress=None, cancel=None, orig
         period = 2.0 * opt.max_building * opt.cell
         x0, y0 = R.snap_down(x0, origin[0], period), R.snap_down(y0, origin[1], period)
     xs, ys = x - x0, y - y0                       # local coordinates for Qhull
-    cand = candidates(xs, ys, z, opt)
-    seeds, pool = initial_ground(xs, ys, z, cand, opt)
-    rep(0.1)
-    ground, tin = densify(xs, ys, z, seeds, pool, opt, rep)
-    cls, tin = final_pass(xs, ys, z, ground, opt, tin)
+    try:
+        cand = candidates(xs, ys, z, opt)
+        seeds, pool = initial_ground(xs, ys, z, cand, opt)
+        rep(0.1)
+        ground, tin = densify(xs, ys, z, seeds, pool, opt, rep)
+        cls, tin = final_pass(xs, ys, z, ground, opt, tin)
+    except QhullError as exc:          # a profile: every Delaunay step needs an area
+        raise InputError("The {n} points lie on one line: progressive TIN densification "
+                         "needs points spread over an area. Use the recommended ground "
+                         "filter for a profile or a single scan line.", n=x.size) from exc
     rep(1.0)
     return cls, np.column_stack((tin.xy[:, 0] + x0, tin.xy[:, 1] + y0, tin.z))
 

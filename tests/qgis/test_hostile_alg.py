@@ -236,3 +236,18 @@ def test_publishoutputs_wrong_format_refused(qgis_processing, data, tmp_path, pa
     text = refused(qgis_processing, "geomatics:publishoutputs", {
         param: src, out_param: str(out)}, message, [src], [out])
     assert "Cannot guess driver" not in text and ".part-" not in text
+
+
+def test_ptd_on_a_profile_refused_with_a_message(qgis_processing, tmp_path):
+    """500 points on one straight line (a profile): Qhull's 'initial simplex is flat'
+    came out raw ('QhullError: QH6154 ...'); now a translated refusal naming the fix."""
+    t = np.linspace(0, 100, 500)
+    src = tmp_path / "profile.las"
+    write_las(src, 500_000 + t, np.full(t.size, 4e6), 100 + 0.01 * t,
+              dimensions={"classification": np.full(t.size, 2, np.uint8)}, crs="EPSG:32632")
+    out = tmp_path / "c.laz"
+    text = refused(qgis_processing, "geomatics:ptdgroundfilter", {
+        "INPUT": str(src), "OUTPUT": str(out), "OUTPUT_HTML": str(tmp_path / "r.html")},
+        r"The 500 points lie on one line: progressive TIN densification needs points spread "
+        r"over an area\. Use the recommended ground filter", [src], [out, tmp_path / "r.html"])
+    assert "Qhull" not in text and "QH6154" not in text

@@ -288,3 +288,30 @@ def test_lsq_tile_stats_of_a_feet_cloud_in_its_units(qgis_processing, clouds):
     las = laspy.read(clouds["ft"])
     cx = np.array([float(r["centre_x_ftUS"]) for r in rows["ft"]])
     assert np.asarray(las.x).min() - 300 < cx.min() and cx.max() < np.asarray(las.x).max() + 300
+
+
+def test_buildings_and_classify_same_in_feet_and_reports_say_feet(qgis_processing, clouds):
+    """Done-when 1 through processing.run: classify and buildings of the ftUS cloud equal
+    those of its metre copy (classes, building count, areas in m², volumes in m³), and
+    only the feet cloud's reports name US survey feet."""
+    d = clouds["dir"]
+    cls, bld = {}, {}
+    for k in ("m", "ft"):
+        cls[k] = qgis_processing.run("geomatics:classify", {
+            "INPUT": clouds[k], "OUTPUT": str(d / f"cls_{k}.las"),
+            "OUTPUT_HTML": str(d / f"cls_{k}.html"), **EN})
+        bld[k] = qgis_processing.run("geomatics:buildings", {
+            "INPUT": clouds[k], "OUTPUT": str(d / f"bld_{k}.gpkg"),
+            "OUTPUT_HTML": str(d / f"bld_{k}.html"), **EN})
+    cm, cf = _classes(cls["m"]["OUTPUT"]), _classes(cls["ft"]["OUTPUT"])
+    assert np.mean(cm != cf) < 0.001, int(np.count_nonzero(cm != cf))
+    for key in ("N_GROUND", "N_BUILDING", "N_VEGETATION"):
+        assert cls["ft"][key] == pytest.approx(cls["m"][key], rel=0.002, abs=2), key
+    assert bld["m"]["N_BUILDINGS"] == bld["ft"]["N_BUILDINGS"] == 2
+    assert bld["ft"]["TOTAL_AREA"] == pytest.approx(bld["m"]["TOTAL_AREA"], rel=0.03)
+    assert bld["ft"]["TOTAL_VOLUME"] == pytest.approx(bld["m"]["TOTAL_VOLUME"], rel=0.05)
+    assert 50 < bld["m"]["TOTAL_AREA"] < 100 * 100                # m², not ft²
+    for name in ("cls", "bld"):
+        html = {k: (d / f"{name}_{k}.html").read_text(encoding="utf-8") for k in ("m", "ft")}
+        assert "US survey foot" in html["ft"], name
+        assert "US survey foot" not in html["m"], name
