@@ -335,6 +335,19 @@ def iter_las_chunks(path, dimensions: Sequence[str] = (), *,
             start += len(data)
 
 
+def _scaled_into(view, out: np.ndarray) -> None:
+    """Write laspy's scaled coordinates ``view`` into ``out`` without a temporary.
+
+    Same arithmetic as laspy (``X * scale + offset`` in float64), hence the same bits.
+    """
+    raw, scale, offset = (getattr(view, a, None) for a in ("array", "scale", "offset"))
+    if isinstance(raw, np.ndarray) and np.ndim(scale) == 0 and np.ndim(offset) == 0:
+        np.multiply(raw, scale, out=out)
+        np.add(out, offset, out=out)
+    else:                                       # another laspy: its own arithmetic
+        out[:] = np.asarray(view, dtype=np.float64)
+
+
 class _Records(list):
     """Decoded point records of a file, chunk by chunk, with the file's EVLRs."""
 
@@ -388,12 +401,13 @@ def read_las(path, dimensions: Sequence[str] = (), *, chunk_size: int = DEFAULT_
     with _open(path) as reader:
         for raw in _chunks(reader, path, chunk_size):
             mon.check()
-            chunk = _extract(raw, dimensions)
-            start, stop = filled, filled + len(chunk)
+            start, stop = filled, filled + len(raw)
             if stop > n:
                 break
-            x[start:stop], y[start:stop], z[start:stop] = chunk.x, chunk.y, chunk.z
-            for name, values in chunk.dims.items():
+            for view, out in ((raw.x, x), (raw.y, y), (raw.z, z)):
+                _scaled_into(view, out[start:stop])
+            for name in dimensions:
+                values = np.asarray(raw[name])
                 if name not in dims:
                     dims[name] = np.empty(n, values.dtype)
                 dims[name][start:stop] = values

@@ -233,11 +233,25 @@ class IDW:
             return np.empty(0)
         d, idx = self._neighbours(q)
         valid = np.isfinite(d)
-        r2 = np.where(valid, d * d, 1.0) + self.smoothing ** 2
-        idx_safe = np.where(valid, idx, 0)
+        everywhere = bool(valid.all())  # no radius, or all neighbours within it
+        # r2 = d² (1 where no neighbour) + s², w = 1 / r2^(p/2) (0 where no neighbour):
+        # in place, and without the masks when every neighbour exists (same values)
+        r2 = d * d
+        if not everywhere:
+            r2[~valid] = 1.0
+        if self.smoothing:
+            r2 += self.smoothing ** 2
+        idx_safe = idx if everywhere else np.where(valid, idx, 0)
         zn = self.z[idx_safe]
+        half = 0.5 * self.power
         with np.errstate(divide="ignore", over="ignore"):
-            w = np.where(valid, 1.0 / r2 ** (0.5 * self.power), 0.0)
+            if half == 1.0:                 # r2 ** 1.0 is r2
+                w = np.divide(1.0, r2)
+            else:
+                w = r2 ** half
+                np.divide(1.0, w, out=w)
+        if not everywhere:
+            w[~valid] = 0.0
         num = np.einsum("ij,ij->i", w, zn)
         den = w.sum(axis=1)
         n = valid.sum(axis=1)
