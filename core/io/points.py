@@ -217,8 +217,14 @@ def _delimited_rows(path: str) -> List[List[str]]:
     """Return the non-comment rows of a delimited text file, delimiter detected."""
     if not os.path.exists(path):
         raise InputError("Check point file not found: {path}.", path=path)
-    with open(path, encoding="utf-8-sig") as fh:
-        text = fh.read()
+    with open(path, "rb") as fh:
+        raw = fh.read()
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        raise InputError("{path} is not UTF-8 text (byte {offset} cannot be read): save the "
+                         "check points as CSV UTF-8 (in Excel: Save As, CSV UTF-8) and run "
+                         "again.", path=path, offset=exc.start) from exc
     lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
     if not lines:
         raise InputError("{path} holds no check points.", path=path)

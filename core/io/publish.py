@@ -20,8 +20,8 @@ from typing import Dict, Mapping, Optional, Tuple
 from ..errors import InputError
 from ..progress import Cancelled
 from .contract import OutputContract
-from .las import write_las_like
-from .raster import _gdal
+from .las import las_info, write_las_like
+from .raster import _gdal, _open_band
 
 #: kinds of published file and how a different destination format is produced
 KINDS = ("file", "cloud", "raster", "vector")
@@ -88,6 +88,32 @@ def check_destination(kind: str, src: str, dst: str) -> None:
                          wanted=wanted)
 
 
+def check_source(kind: str, src: str) -> None:
+    """Refuse, before anything is written, a file to publish that is not its kind.
+
+    A zero-byte or garbled temporary (an earlier step killed half-way, a wrong file
+    wired into the model) would otherwise be copied to the destination as a result.
+    """
+    if not Path(src).is_file():
+        raise InputError("The file to publish {src} does not exist; the step that "
+                         "should have written it failed or was skipped.", src=src)
+    if kind == "cloud":
+        if las_info(src).count == 0:        # las_info: not LAS, truncated, lying header
+            raise InputError("{path} holds no points (empty point cloud).", path=src)
+    elif kind == "raster":
+        _open_band(src, 1)
+    elif kind == "vector":
+        gdal = _gdal()
+        try:
+            ds = gdal.OpenEx(src, gdal.OF_VECTOR)
+        except RuntimeError:
+            ds = None
+        if ds is None or ds.GetLayerCount() == 0:
+            raise InputError("{path} is not a vector file GDAL/OGR can read; the step that "
+                             "should have written it failed. Run the chain again.",
+                             path=src)
+
+
 def publish_file(kind: str, src: str, dst: str) -> None:
     """Copy ``src`` to ``dst`` (a contract temporary), converting when needed."""
     if kind not in KINDS:
@@ -128,12 +154,15 @@ def publish_files(files: Mapping[str, Tuple[str, Optional[str], str]], *,
     ------
     InputError
         A destination is an input, a source or another destination, its folder cannot
-        be written, or a source is missing; nothing is left at any destination.
+        be written, or a source is missing or not its kind (a raster GDAL cannot
+        open, a cloud that is not LAS/LAZ or holds no points, an unreadable vector
+        file); nothing is left at any destination.
     """
     wanted = {k: v for k, v in files.items() if v[1] not in (None, "")}
     for src, dst, kind in wanted.values():
         if kind in KINDS:
             check_destination(kind, src, dst)
+            check_source(kind, src)
     sources = {f"{k} (temporary)": v[0] for k, v in wanted.items()}
     with OutputContract({k: v[1] for k, v in wanted.items()},
                         inputs={**dict(inputs), **sources}) as out:

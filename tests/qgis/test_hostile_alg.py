@@ -251,3 +251,39 @@ def test_ptd_on_a_profile_refused_with_a_message(qgis_processing, tmp_path):
         r"The 500 points lie on one line: progressive TIN densification needs points spread "
         r"over an area\. Use the recommended ground filter", [src], [out, tmp_path / "r.html"])
     assert "Qhull" not in text and "QH6154" not in text
+
+
+@pytest.mark.parametrize("param,dest,content,message", [
+    ("DTM", "out.tif", b"", r"zero\.tif is not a raster GDAL can read"),
+    ("DTM", "out.tif", b"II*\x00junk" * 50, r"zero\.tif is not a raster GDAL can read"),
+    ("CLOUD", "out.laz", b"x,y,z\n1,2,3\n", r"zero\.tif is not a LAS/LAZ file"),
+    ("RESIDUALS", "out.gpkg", b"SQLite format 3\x00" + b"\x00" * 100,
+     r"zero\.tif is not a vector file GDAL/OGR can read"),
+])
+def test_publishoutputs_refuses_a_file_that_is_not_its_kind(qgis_processing, tmp_path, param,
+                                                            dest, content, message):
+    """A zero-byte or garbled temporary (a step killed half-way, a wrong file wired into
+    the model) was copied to the destination and reported as published."""
+    src = tmp_path / "zero.tif"
+    src.write_bytes(content)
+    out = tmp_path / dest
+    out_param = {"DTM": "OUTPUT_DTM", "CLOUD": "OUTPUT", "RESIDUALS": "OUTPUT_RESIDUALS"}
+    refused(qgis_processing, "geomatics:publishoutputs", {
+        param: str(src), out_param[param]: str(out)}, message, [src], [out])
+
+
+def test_dtmaccuracy_check_points_not_utf8_refused_with_the_fix(qgis_processing, data,
+                                                                tmp_path):
+    """A Windows-1256 (Excel 'CSV') file with Arabic ids: was "'utf-8' codec can't decode
+    byte 0xc1 in position 8" (Python's words, no file, no fix)."""
+    dtm = qgis_processing.run("geomatics:idwdtm", {
+        "INPUT": str(data["laz"]), "CELL_SIZE": 1.0, "FILL_GAPS": True,
+        "OUTPUT": str(tmp_path / "dtm.tif")})["OUTPUT"]
+    csv = tmp_path / "cp.csv"
+    csv.write_bytes("id,x,y,z\nنقطة1,500010,4000010,100\n".encode("cp1256"))
+    out = tmp_path / "acc.html"
+    text = refused(qgis_processing, "geomatics:dtmaccuracy", {
+        "DTM": dtm, "CHECKPOINTS_CSV": str(csv), "OUTPUT_HTML": str(out)},
+        r"cp\.csv is not UTF-8 text \(byte 9 cannot be read\): save the check points as CSV "
+        r"UTF-8", [dtm, csv], [out])
+    assert "codec" not in text
