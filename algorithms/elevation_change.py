@@ -213,6 +213,12 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
         ra, rb = read_raster(before), read_raster(after)
         check_same_crs(ra.crs, rb.crs, before, after, raster_units(before),
                        raster_units(after))
+        if bool(ra.crs) != bool(rb.crs):    # nothing to compare: say which one is taken
+            feedback.pushWarning(self.tr(
+                "{0} has no CRS: it is taken to be in the CRS of {1} ({2}); check that "
+                "it is.").format(os.path.basename(after if ra.crs else before),
+                                 os.path.basename(before if ra.crs else after),
+                                 crs_label(ra.crs or rb.crs)))
         if abs(ra.geotransform[2]) > 0 or abs(ra.geotransform[4]) > 0:
             raise InputError("The first raster is rotated; warp it north-up first.")
         grid = grid_like(ra.geotransform, ra.shape, crs=ra.crs)

@@ -121,6 +121,14 @@ def elevation_change(before: np.ndarray, after: np.ndarray, cell: float, *,
                          "cells); resample one onto the other's grid first.",
                          a_shape=a.shape,
                          b_shape=b.shape)
+    both = np.isfinite(a) & np.isfinite(b)
+    if not both.any():          # an all-nodata epoch, or no overlap: no change is no answer
+        raise InputError("The two epochs share no cell with a height in both ({n_a} cells "
+                         "with a height before, {n_b} after, on a common grid of {n} "
+                         "cells): one of them is empty (all nodata) or they do not overlap. "
+                         "Check the two rasters, their nodata values and their extents.",
+                         n_a=int(np.isfinite(a).sum()), n_b=int(np.isfinite(b).sum()),
+                         n=a.size)
     lod = lod95(sigma1, sigma2)
     diff = b - a
     min_cells = max(1, int(math.ceil(min_area / (cell * cell)))) if min_area > 0 \

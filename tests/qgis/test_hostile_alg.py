@@ -287,3 +287,47 @@ def test_dtmaccuracy_check_points_not_utf8_refused_with_the_fix(qgis_processing,
         r"cp\.csv is not UTF-8 text \(byte 9 cannot be read\): save the check points as CSV "
         r"UTF-8", [dtm, csv], [out])
     assert "codec" not in text
+
+
+@pytest.mark.parametrize("kind", ["nodata", "nan"])
+def test_elevationchange_with_an_empty_epoch_refused(qgis_processing, tmp_path, kind):
+    """An all-nodata (or all-NaN) after-epoch gave 'FILL 0, CUT 0, 0 regions' and an
+    all-nodata difference raster without a word."""
+    from geomatics_toolbox.core.io.raster import write_geotiff
+    a = _grid_dem(tmp_path / "a.tif", "EPSG:32632")
+    b = write_geotiff(tmp_path / "b.tif",
+                      np.full((20, 20), -9999.0 if kind == "nodata" else np.nan),
+                      geotransform=(500_000, 1, 0, 4_000_020, 0, -1), crs="EPSG:32632",
+                      nodata=-9999.0)
+    outs = [tmp_path / "d.tif", tmp_path / "p.gpkg", tmp_path / "r.html"]
+    refused(qgis_processing, "geomatics:elevationchange", {
+        "INPUT": str(a), "INPUT_AFTER": str(b), "OUTPUT": str(outs[0]),
+        "OUTPUT_POLYGONS": str(outs[1]), "OUTPUT_HTML": str(outs[2])},
+        r"The two epochs share no cell with a height in both \(400 cells with a height "
+        r"before, 0 after, on a common grid of 400 cells\)", [a, b], outs)
+
+
+def test_elevationchange_raster_without_crs_is_named_in_a_warning(qgis_processing,
+                                                                  tmp_path):
+    from qgis.core import QgsProcessingFeedback
+
+    from geomatics_toolbox.core.io.raster import write_geotiff
+
+    class Warnings(QgsProcessingFeedback):
+        def __init__(self):
+            super().__init__()
+            self.seen = []
+
+        def pushWarning(self, text):  # noqa: N802
+            self.seen.append(text)
+
+    a = _grid_dem(tmp_path / "a.tif", "EPSG:32632")
+    b = write_geotiff(tmp_path / "b.tif", np.full((20, 20), 101.0),
+                      geotransform=(500_000, 1, 0, 4_000_020, 0, -1), crs=None)
+    fb = Warnings()
+    res = qgis_processing.run("geomatics:elevationchange", {
+        "INPUT": str(a), "INPUT_AFTER": str(b), "OUTPUT": str(tmp_path / "d.tif")},
+        feedback=fb)
+    assert res["FILL_VOLUME"] == pytest.approx(400.0, rel=1e-6)
+    assert any("b.tif has no CRS: it is taken to be in the CRS of a.tif (EPSG:32632" in w
+               for w in fb.seen), fb.seen
