@@ -539,9 +539,42 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
             return self.input_error_message(exc)
         return ""
 
+    def unreadable_layer_message(self, parameters) -> str:
+        """'' when every raster/vector layer given as a file opens, else the message.
+
+        QGIS would say "Could not load source layer for DTM: … not found" of a file
+        that exists but is empty, damaged or of another format.
+        """
+        from qgis.core import (
+            QgsProcessingParameterFeatureSource,
+            QgsProcessingParameterRasterLayer,
+            QgsProcessingParameterVectorLayer,
+        )
+
+        from ..core.io.raster import check_raster_file
+        from ..core.io.vector import check_vector_file
+        vector = (QgsProcessingParameterVectorLayer, QgsProcessingParameterFeatureSource)
+        for definition in self.parameterDefinitions():
+            if isinstance(definition, QgsProcessingParameterRasterLayer):
+                check = check_raster_file
+            elif isinstance(definition, vector):
+                check = check_vector_file
+            else:
+                continue
+            value = (parameters or {}).get(definition.name())
+            path = value.split("|")[0] if isinstance(value, str) else ""
+            if not os.path.isfile(path):       # a layer id, a URI or a missing file
+                continue
+            try:
+                check(path)
+            except InputError as exc:
+                return f"{definition.name()}: {self.input_error_message(exc)}"  # i18n: data
+        return ""
+
     def checkParameterValues(self, parameters, context):  # noqa: N802
-        """Refuse the run before it starts when a runtime package is missing."""
-        message = self.missing_packages_message(parameters)
+        """Refuse the run before it starts: a missing package, an unreadable layer file."""
+        message = (self.missing_packages_message(parameters)
+                   or self.unreadable_layer_message(parameters))
         if message:
             return False, message
         return super().checkParameterValues(parameters, context)

@@ -21,7 +21,8 @@ from ..errors import InputError
 from ..progress import Cancelled
 from .contract import OutputContract
 from .las import las_info, write_las_like
-from .raster import _gdal, _open_band
+from .raster import _gdal, check_raster_file
+from .vector import check_vector_file
 
 #: kinds of published file and how a different destination format is produced
 KINDS = ("file", "cloud", "raster", "vector")
@@ -101,17 +102,9 @@ def check_source(kind: str, src: str) -> None:
         if las_info(src).count == 0:        # las_info: not LAS, truncated, lying header
             raise InputError("{path} holds no points (empty point cloud).", path=src)
     elif kind == "raster":
-        _open_band(src, 1)
+        check_raster_file(src)
     elif kind == "vector":
-        gdal = _gdal()
-        try:
-            ds = gdal.OpenEx(src, gdal.OF_VECTOR)
-        except RuntimeError:
-            ds = None
-        if ds is None or ds.GetLayerCount() == 0:
-            raise InputError("{path} is not a vector file GDAL/OGR can read; the step that "
-                             "should have written it failed. Run the chain again.",
-                             path=src)
+        check_vector_file(src)
 
 
 def publish_file(kind: str, src: str, dst: str) -> None:

@@ -153,6 +153,14 @@ def _open_band(path, band: int):
     return ds, ds.GetRasterBand(band)
 
 
+def check_raster_file(path) -> None:
+    """Refuse a file GDAL cannot open as a raster (zero-byte, garbled, another format).
+
+    Raises :class:`~..errors.InputError` naming the file; reads the header only.
+    """
+    _open_band(path, 1)
+
+
 def read_raster(path, band: int = 1) -> Raster:
     """Read one band of a GDAL raster with its geotransform, CRS and nodata."""
     ds, b = _open_band(path, band)

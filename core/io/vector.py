@@ -111,6 +111,25 @@ def write_label_polygons(path, labels: np.ndarray, geotransform: Sequence[float]
     return n
 
 
+def check_vector_file(path) -> None:
+    """Refuse a file GDAL/OGR cannot open as a vector layer (zero-byte, garbled, other).
+
+    Raises :class:`~..errors.InputError` naming the file; reads the header only.
+    """
+    from osgeo import gdal
+
+    from ..errors import InputError
+    path = os.fspath(path)
+    try:
+        ds = gdal.OpenEx(path, gdal.OF_VECTOR)
+    except RuntimeError:                 # gdal.UseExceptions() in effect
+        ds = None
+    if ds is None or ds.GetLayerCount() == 0:
+        raise InputError("{path} is not a vector file GDAL/OGR can read (empty, damaged or "
+                         "of another format); choose a valid file (e.g. GeoPackage, "
+                         "shapefile or CSV).", path=path)
+
+
 def read_polygons(path, layer: Optional[str] = None):
     """Read a polygon layer: list of (attributes dict, WKT) (for tests and reports)."""
     from osgeo import ogr

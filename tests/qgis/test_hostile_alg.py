@@ -258,7 +258,7 @@ def test_ptd_on_a_profile_refused_with_a_message(qgis_processing, tmp_path):
     ("DTM", "out.tif", b"II*\x00junk" * 50, r"zero\.tif is not a raster GDAL can read"),
     ("CLOUD", "out.laz", b"x,y,z\n1,2,3\n", r"zero\.tif is not a LAS/LAZ file"),
     ("RESIDUALS", "out.gpkg", b"SQLite format 3\x00" + b"\x00" * 100,
-     r"zero\.tif is not a vector file GDAL/OGR can read"),
+     r"zero\.tif is not a vector file GDAL/OGR can read \(empty, damaged"),
 ])
 def test_publishoutputs_refuses_a_file_that_is_not_its_kind(qgis_processing, tmp_path, param,
                                                             dest, content, message):
@@ -331,3 +331,30 @@ def test_elevationchange_raster_without_crs_is_named_in_a_warning(qgis_processin
     assert res["FILL_VOLUME"] == pytest.approx(400.0, rel=1e-6)
     assert any("b.tif has no CRS: it is taken to be in the CRS of a.tif (EPSG:32632" in w
                for w in fb.seen), fb.seen
+
+
+@pytest.mark.parametrize("alg,param,name,content,message", [
+    ("geomatics:dtmaccuracy", "DTM", "dtm.tif", b"",
+     r"DTM: .*dtm\.tif is not a raster GDAL can read"),
+    ("geomatics:dtmaccuracy", "DTM", "dtm.tif", b"II*\x00" + b"junk" * 64,
+     r"dtm\.tif is not a raster GDAL can read"),
+    ("geomatics:gsdbatch", "INPUT", "cameras.csv", b"",
+     r"cameras\.csv is not a vector file GDAL/OGR can read \(empty, damaged or of another "
+     r"format\); choose a valid file"),
+    ("geomatics:rectifygcp", "INPUT", "image.tif", b"\x89PNG garbage",
+     r"image\.tif is not a raster GDAL can read"),
+])
+def test_layer_file_that_cannot_be_opened_named_before_the_run(qgis_processing, tmp_path, alg,
+                                                               param, name, content, message):
+    """QGIS said "Could not load source layer for DTM: …/dtm.tif not found" of a file that
+    exists but is empty or damaged."""
+    src = tmp_path / name
+    src.write_bytes(content)
+    before = sorted(p.name for p in tmp_path.iterdir())
+    with pytest.raises(QgsProcessingException, match=message) as info:
+        qgis_processing.run(alg, {param: str(src), "CHECKPOINTS_CSV": str(tmp_path / "x.csv"),
+                                  "GCP_FILE": str(tmp_path / "x.points")}
+                            if alg != "geomatics:gsdbatch" else {param: str(src)})
+    assert "not found" not in str(info.value)
+    assert sorted(p.name for p in tmp_path.iterdir()) == before
+    assert src.read_bytes() == content
