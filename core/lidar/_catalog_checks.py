@@ -44,6 +44,7 @@ def check_index(infos: List[LasInfo], unreadable: Dict[str, Exception],
     if empty:
         raise InputError("Tile(s) without points: {tiles}; remove them "
                          "from the catalog.", tiles=', '.join(empty))
+    _check_bounds(infos)
     groups = _crs_groups(infos)
     if len(groups) > 1:
         listing = "; ".join(f"{os.path.basename(g[0].path)}: {crs_label(g[0].crs) or 'none'}"
@@ -53,6 +54,39 @@ def check_index(infos: List[LasInfo], unreadable: Dict[str, Exception],
                          n_crs=len(groups),
                          listing=listing)
     _check_tiles(infos)
+
+
+#: the range of a LAS point record's scaled integer coordinate (int32), one unit of slack
+_INT32 = (-2.0 ** 31 - 1.0, 2.0 ** 31)
+
+
+def _check_bounds(infos: Sequence[LasInfo]) -> None:
+    """Refuse tiles whose header bounds cannot be true, from the headers alone.
+
+    The catalog places tiles, neighbours and chunks by these bounds: bounds left at zero
+    (never filled in), inverted, or outside what the scaled int32 coordinates can hold
+    (a damaged header) would put a tile kilometres away or plan an absurd grid.
+    """
+    for t in infos:
+        if not any(t.mins) and not any(t.maxs):
+            raise InputError("The header of {tile} declares its bounds as all zero (never "
+                             "filled in); the catalog places tiles by them. Recompute them "
+                             "(e.g. 'lasinfo -repair_bb' or 'pdal translate') or remove the "
+                             "tile.", tile=os.path.basename(t.path))
+        for axis, name in enumerate("xyz"):
+            scale, offset = t.scales[axis], t.offsets[axis]
+            lo, hi = t.mins[axis], t.maxs[axis]
+            ok = scale > 0 and lo <= hi and all(
+                math.isfinite(v) and _INT32[0] <= (v - offset) / scale <= _INT32[1]
+                for v in (lo, hi))
+            if not ok:
+                raise InputError(
+                    "The header of {tile} declares {axis} bounds {lo} to {hi}, which its "
+                    "coordinates cannot hold (scale {scale}, offset {offset}): the header is "
+                    "damaged, and the catalog places tiles by it. Recompute the bounds "
+                    "(e.g. 'lasinfo -repair_bb' or 'pdal translate') or remove the tile.",
+                    tile=os.path.basename(t.path), axis=name, lo=f"{lo:.10g}",
+                    hi=f"{hi:.10g}", scale=f"{scale:g}", offset=f"{offset:.10g}")
 
 
 def _crs_groups(infos: Sequence[LasInfo]) -> List[List[LasInfo]]:

@@ -216,3 +216,25 @@ def test_every_chunk_failed_is_an_error_naming_the_first(tmp_path):
                                          r"First failure: t\d: .*truncated or corrupt"):
         cc.run_catalog(str(d), tmp_path / "out", workers=1, ground_filter="keep",
                        buffer=0.0, cell_size=2.0)
+
+
+@pytest.mark.parametrize("damage,message", [
+    ("max_x", r"The header of c\.las declares x bounds 500200\.\d* to 9000000000, which its "
+              r"coordinates cannot hold \(scale 0\.\d+, offset"),
+    ("zeros", r"The header of c\.las declares its bounds as all zero \(never filled in\)"),
+    ("inverted", r"The header of c\.las declares y bounds 4000099\.76 to 4000000\.21"),
+])
+def test_tile_whose_header_bounds_lie_named(tiles, tmp_path, damage, message):
+    """The catalog places tiles by their header bounds: a damaged max x was refused as
+    "The grid would have 4,499,749,910 × 60 cells ... use a cell size of at least 65.73"
+    (the wrong fix); zero bounds put the tile at (0, 0)."""
+    import struct
+    c = _tile(tmp_path / "tiles" / "c.las", 500_200, 4_000_000, version="1.2", seed=2)
+    with open(c, "r+b") as fh:         # LAS 1.2 header: max x, min x, max y, min y, ...
+        fh.seek(179)
+        old = struct.unpack("<6d", fh.read(48))
+        new = {"max_x": (9e9, *old[1:]), "zeros": (0.0,) * 6,
+               "inverted": (old[0], old[1], old[3], old[2], *old[4:])}[damage]
+        fh.seek(179)
+        fh.write(struct.pack("<6d", *new))
+    _refused([*tiles, c], tmp_path / "out", message)
