@@ -100,6 +100,12 @@ CITATION = T("References: {ref}", ref=(
     "872–882."))
 
 
+#: Largest ``max_window`` accepted (m): more than any building (an aircraft factory is
+#: about 1 km); the progressive opening makes ``max_window / cell`` passes, and a window of
+#: 1e9 m exhausted the memory before the first one.
+MAX_WINDOW_LIMIT = 2000.0
+
+
 @dataclass(frozen=True)
 class RecommendedOptions:
     """Parameters of :func:`classify` (lengths in metres, slopes as rise/run).
@@ -220,6 +226,13 @@ class RecommendedOptions:
             if v is not None and not v > 0:
                 raise InputError("RecommendedOptions.{name} must be positive or None "
                                  "(derived from the cloud).", name=name)
+        if self.max_window > MAX_WINDOW_LIMIT:
+            raise InputError(
+                "The largest window (MAX_WINDOW, {value} m) must be at most {limit} m: it "
+                "needs only to exceed the largest building, and every cell of it costs one "
+                "more pass over the raster. Give e.g. 18 (the default) or the size of the "
+                "largest building plus a margin.", value=f"{self.max_window:g}",
+                limit=f"{MAX_WINDOW_LIMIT:g}")
         if self.cell_min > self.cell_max or self.threshold_min > self.threshold_max:
             raise InputError("RecommendedOptions: cell_min must not exceed cell_max, nor "
                              "threshold_min threshold_max.")

@@ -147,6 +147,9 @@ def test_elevationchange_clouds_other_crs_and_same_file_refused(qgis_processing,
     ({"MAX_WINDOW": 0}, r"MAX_WINDOW must be a number > 0, got 0"),
     ({"THRESHOLD": float("nan")}, r"THRESHOLD must be a finite number, got nan"),
     ({"CELL": float("nan")}, r"CELL must be a finite number, got nan"),
+    # grew past the machine's memory (np.arange of 2e9 radii) instead of a message
+    ({"MAX_WINDOW": 1e9}, r"The largest window \(MAX_WINDOW, 1e\+09 m\) must be at most "
+                          r"2000 m"),
 ])
 def test_groundfilter_nonsense_numbers_refused(qgis_processing, data, tmp_path, params,
                                                message):
