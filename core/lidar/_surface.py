@@ -130,15 +130,24 @@ def plane_fit(z, valid, radius: int):
     return rms, centre, gx, gy
 
 
+#: Offsets of the query point (cells, powers of two: exact in float64) that order
+#: equidistant lattice cells by row offset, then column offset (see :func:`_knn`).
+_TIE_ROW = 2.0 ** -14
+_TIE_COL = 2.0 ** -28
+
+
 def _knn(tree, q, k: int, lattice):
     """Find the ``k`` nearest lattice cells of every query cell, ties broken by offset.
 
     On an integer lattice many cells are equidistant, and a KD-tree returns the tied
     ones in tree order, which depends on the raster's extent (a catalog chunk and the
-    merged cloud would pick different cells). Here the tree is asked for ``k + 16``
-    (more where the ties reach that far), and the ``k`` kept are the first by
-    (squared distance, row offset, column offset) from the query cell: the choice and
-    its order depend only on the cells around the query, not on the extent.
+    merged cloud would pick different cells). Here the query point is moved by
+    ``(-2**-28, -2**-14)`` cells (column, row): its squared distance to a cell at
+    offset ``(dc, dr)`` is ``d² + 2**-27 dc + 2**-13 dr`` (+ a constant), so the
+    tree itself returns the cells ordered by (squared distance, row offset, column
+    offset) - exactly so up to 4,096 cells away (beyond, still a function of the
+    offsets only). Every difference ``cell - query`` is exact in float64, hence the
+    choice and its order depend only on the cells around the query, not on the extent.
 
     Parameters
     ----------
@@ -157,49 +166,22 @@ def _knn(tree, q, k: int, lattice):
         ``(d2, dc, dr, j)`` of shape (m, k): squared distance (cells²), column and row
         offset of the neighbour from the query cell, and its index in ``lattice``.
     """
-    n = lattice.shape[0]
-    m = q.shape[0]
-    big = np.iinfo(np.int64).max // 4
-    kk = min(n, k + 16)
-    d2 = np.empty((m, k), np.int64)
-    dc = np.empty((m, k), np.int64)
-    dr = np.empty((m, k), np.int64)
-    jj = np.empty((m, k), np.int64)
-    todo = np.arange(m)
-    bound = 2.0 * np.sqrt(kk)                # most hole cells have their border close by
-    while todo.size:
-        qq = q[todo]
-        d, j = tree.query(qq, k=kk, distance_upper_bound=bound)
-        d, j = d.reshape(-1, kk), j.reshape(-1, kk)
-        far = np.isinf(d[:, k - 1])
-        if far.any():
-            df, jf = tree.query(qq[far], k=kk)
-            d[far], j[far] = df.reshape(-1, kk), jf.reshape(-1, kk)
-        # a tie at the k-th distance that may go on past the kk-th: ask for more
-        more = (d[:, kk - 1] == d[:, k - 1]) if kk < n else np.zeros(len(qq), bool)
-        ok = ~more
-        if ok.any():
-            jo = j[ok]
-            miss = jo >= n
-            jo = np.where(miss, 0, jo)
-            ddc = lattice[jo, 0] - qq[ok, :1]
-            ddr = lattice[jo, 1] - qq[ok, 1:]
-            key = np.where(miss, big, ddc * ddc + ddr * ddr)
-            # lexsort along rows: primary key last
-            o = np.lexsort((ddc, ddr, key), axis=-1)[:, :k]
-            sel = todo[ok]
-            d2[sel] = np.take_along_axis(key, o, 1)
-            dc[sel] = np.take_along_axis(ddc, o, 1)
-            dr[sel] = np.take_along_axis(ddr, o, 1)
-            jj[sel] = np.take_along_axis(jo, o, 1)
-        todo = todo[more]
-        kk = min(n, 2 * kk)
-        bound = 2.0 * np.sqrt(kk)
-    return d2, dc, dr, jj
+    qf = q.astype(np.float64)
+    qf[:, 0] -= _TIE_COL
+    qf[:, 1] -= _TIE_ROW
+    bound = 2.0 * np.sqrt(k + 1.0)           # most hole cells have their border close by
+    d, j = tree.query(qf, k=k, distance_upper_bound=bound)
+    d, j = d.reshape(-1, k), j.reshape(-1, k)
+    far = np.isinf(d[:, -1])
+    if far.any():
+        j[far] = tree.query(qf[far], k=k)[1].reshape(-1, k)
+    dc = lattice[j, 0] - q[:, :1]
+    dr = lattice[j, 1] - q[:, 1:]
+    return dc * dc + dr * dr, dc, dr, j
 
 
 def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12,
-                 reach: float = 10.0, need=None):
+                 reach: float = 10.0, need=None, cache=None):
     """Fill invalid cells with the weighted tangent planes of the hole borders.
 
     Parameters
@@ -219,6 +201,11 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     need : ndarray of bool, optional
         Cells that will be read; invalid cells outside it are left NaN (at low
         density most cells are empty and only those near a point are ever read).
+    cache : dict, optional
+        Shared by successive fills of one raster (the refine passes): a hole cell
+        keeps the previous call's value when no cell changed (valid or height) within
+        its ``neighbours``-th border distance plus the plane window
+        (:func:`_unchanged`) - the value a new computation would give, bit for bit.
 
     Returns
     -------
@@ -226,23 +213,36 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         The filled raster; with fewer than 3 border cells, the linear TIN fill
         (:func:`._raster.fill_tin`).
     """
+    prev = cache.copy() if cache else None
+    if cache is not None:
+        cache.clear()
     if valid.all():
         return z.copy()
     ring = valid & ndimage.binary_dilation(~valid, structure=np.ones((3, 3), bool))
     rr, cc = np.nonzero(ring)
     if rr.size < 3:
         return R.fill_tin(z, valid)
-    gx, gy = plane_gradient(z, valid, radius, cell)
-    bz, bgx, bgy = z[rr, cc], gx[rr, cc], gy[rr, cc]
-    del gx, gy
-    lattice = np.column_stack((cc, rr))
-    tree = cKDTree(lattice)
     k = min(int(neighbours), rr.size)
     out = np.where(valid, z, np.nan)
     hr, hc = np.nonzero(~valid if need is None else ~valid & need)
+    key = (z.shape, k, int(radius), float(cell), float(reach))
+    d2k = np.full(z.shape, _NONE, np.uint32) if cache is not None else None
+    same = _unchanged(prev, key, z, valid, hr, hc, radius)
+    if same is not None:
+        out[hr[same], hc[same]] = prev["out"][hr[same], hc[same]]
+        d2k[hr[same], hc[same]] = prev["d2k"][hr[same], hc[same]]
+        hr, hc = hr[~same], hc[~same]
+    if hr.size:
+        gx, gy = plane_gradient(z, valid, radius, cell)
+        bz, bgx, bgy = z[rr, cc], gx[rr, cc], gy[rr, cc]
+        del gx, gy
+        lattice = np.column_stack((cc, rr))
+        tree = cKDTree(lattice)
     for s in range(0, hr.size, BATCH):
         r, c = hr[s:s + BATCH], hc[s:s + BATCH]
         d2, dc, dr, j = _knn(tree, np.column_stack((c, r)), k, lattice)
+        if d2k is not None:
+            d2k[r, c] = np.minimum(d2[:, -1], _NONE - 1)
         d = np.sqrt(d2) * cell
         np.maximum(d, 1e-9, out=d)
         damp = np.minimum(1.0, reach / d)
@@ -257,4 +257,43 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         np.divide(1.0, d, out=d)                     # weights 1 / d²
         plane *= d
         out[r, c] = plane.sum(axis=1) / d.sum(axis=1)
+    if cache is not None:
+        cache.update(key=key, valid=valid.copy(), out=out, d2k=d2k)
     return out
+
+
+#: "Not computed" in a fill cache's raster of squared k-th neighbour distances.
+_NONE = np.iinfo(np.uint32).max
+
+
+def _unchanged(prev, key, z, valid, hr, hc, radius):
+    """Hole cells whose value in the previous fill (``prev``) is still exact.
+
+    A hole cell's value depends on the border cells up to its ``k``-th distance
+    ``D`` (which are borders, hence the choice), their heights and their plane
+    windows: on the valid flag and height of cells within ``D + 1.5 max(radius, 1)``
+    (1.5 > sqrt 2: a window's corner). When none of those cells changed since the
+    previous fill and the cell was computed there, the old value is the new one.
+
+    Returns
+    -------
+    ndarray of bool or None
+        Per hole cell ``(hr, hc)``: the previous value can be kept.
+    """
+    if not prev or prev.get("key") != key or hr.size == 0:
+        return None
+    old_valid, old_out = prev["valid"], prev["out"]
+    with np.errstate(invalid="ignore"):
+        changed = (valid != old_valid) | (valid & (z != old_out))
+    d2k = prev["d2k"][hr, hc]
+    ok = d2k != _NONE
+    if not ok.any():
+        return ok
+    moved = np.argwhere(changed)
+    if moved.size:
+        i = np.flatnonzero(ok)
+        reach = np.sqrt(d2k[i].astype(np.float64)) + 1.5 * max(int(radius), 1)
+        dist = cKDTree(moved).query(np.column_stack((hr[i], hc[i])), k=1,
+                                    distance_upper_bound=float(reach.max()) + 1.0)[0]
+        ok[i] = dist > reach
+    return ok

@@ -321,18 +321,20 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     need = pc.read_mask()
     if info is not None:
         info.update(options=opt, n=int(x.size), grid=pc.grid)
-    dtm = surface(zmin, pc.grid, opt, rep, need=need, info=info)
+    cache = {}                      # hole-fill neighbours shared by the five fills
+    dtm = surface(zmin, pc.grid, opt, rep, need=need, info=info, cache=cache)
     rep(0.8)
     cls = label_points(z, dtm, pc, opt)
     for k in range(int(opt.refine)):
         rep(0.8 + 0.2 * (k + 1) / (opt.refine + 1))
         zg = pc.cell_min(z, cls == GROUND)
-        cls = label_points(z, fill_holes(zg, ~np.isnan(zg), pc.grid, opt, need), pc, opt)
+        cls = label_points(z, fill_holes(zg, ~np.isnan(zg), pc.grid, opt, need, cache),
+                           pc, opt)
     rep(1.0)
     return cls
 
 
-def surface(zmin, grid, opt, rep, need=None, info=None):
+def surface(zmin, grid, opt, rep, need=None, info=None, cache=None):
     """Provisional bare-earth raster from the minimum surface (steps 2-6).
 
     Object, low and empty cells are filled by :func:`fill_holes`.
@@ -351,6 +353,8 @@ def surface(zmin, grid, opt, rep, need=None, info=None):
         Cells the caller reads (others may stay NaN).
     info : dict, optional
         Receives what was derived (``lows``, ``slope``, ``objects``).
+    cache : dict, optional
+        Hole-fill neighbour cache shared with later fills (:func:`fill_holes`).
 
     Returns
     -------
@@ -368,14 +372,15 @@ def surface(zmin, grid, opt, rep, need=None, info=None):
     obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep)
     if opt.grow and opt.grow_iters > 0:
         skip = low | empty
-        obj = grow_ground(zmin, obj, skip, fill_holes(zmin, ~(obj | skip), grid, opt, ~empty),
+        obj = grow_ground(zmin, obj, skip,
+                          lambda read: fill_holes(zmin, ~(obj | skip), grid, opt, read, cache),
                           grid.cell, opt)
     if info is not None:
         info.update(lows=lows, slope=slope, objects=obj)
     bad = obj | low | empty
     if bad.all():
         bad = low | empty
-    return fill_holes(zmin, ~bad, grid, opt, need)
+    return fill_holes(zmin, ~bad, grid, opt, need, cache)
 
 
 def grow_ground(zmin, obj, skip, dtm, cell, opt):
@@ -399,8 +404,10 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
         Object cells of the opening.
     skip : ndarray of bool
         Cells neither ground nor candidates (empty, low outliers).
-    dtm : ndarray
-        Provisional DTM filled from the ground cells.
+    dtm : ndarray or callable
+        Provisional DTM filled from the ground cells, or ``dtm(read)`` returning it
+        filled at least in the cells ``read`` (the candidates: the other cells are
+        never read).
     cell : float
         Cell size (m).
     opt : RecommendedOptions
@@ -420,8 +427,10 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
     with np.errstate(invalid="ignore"):
         tol = opt.grow_tol + opt.scaler * np.hypot(gx, gy) / cell
         cand = (obj & ~skip & (rms <= opt.grow_rms) & (np.abs(zmin - centre) <= tol)
-                & (np.hypot(gx, gy) <= opt.grow_max_slope * cell)
-                & (zmin - dtm <= opt.grow_max_rise))
+                & (np.hypot(gx, gy) <= opt.grow_max_slope * cell))
+        if callable(dtm):
+            dtm = dtm(cand)
+        cand &= zmin - dtm <= opt.grow_max_rise
     offs = [(dr, dc) for dr in range(-rad, rad + 1) for dc in range(-rad, rad + 1)
             if (dr, dc) != (0, 0)]
     fp = np.ones((2 * rad + 1, 2 * rad + 1), bool)
@@ -447,7 +456,7 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
     return obj & ~ground
 
 
-def fill_holes(z, valid, grid, opt, need=None):
+def fill_holes(z, valid, grid, opt, need=None, cache=None):
     """Fill the non-ground cells of a DTM raster with border tangent planes.
 
     Parameters
@@ -462,6 +471,10 @@ def fill_holes(z, valid, grid, opt, need=None):
         Options (``fill_radius``, ``fill_neighbours``, ``fill_reach``).
     need : ndarray of bool, optional
         Cells that are read; other invalid cells stay NaN.
+    cache : dict, optional
+        Shared by the fills of one run: a hole cell keeps the neighbours of the
+        previous fill where no border changed near it (identical values, fewer
+        KD-tree searches).
 
     Returns
     -------
@@ -470,7 +483,8 @@ def fill_holes(z, valid, grid, opt, need=None):
     """
     return S.tangent_fill(z, valid, grid.cell,
                           radius=max(1, int(round(opt.fill_radius / grid.cell))),
-                          neighbours=opt.fill_neighbours, reach=opt.fill_reach, need=need)
+                          neighbours=opt.fill_neighbours, reach=opt.fill_reach, need=need,
+                          cache=cache)
 
 
 def trend_surface(zf, grid, opt):
