@@ -42,7 +42,7 @@ Photogramm. Remote Sens. 59(1-2), 85-101 (accuracy measures).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Optional
 
 import numpy as np
@@ -160,12 +160,18 @@ class PtdOptions:
         """Refuse invalid parameters."""
         if self.mirror not in ("none", "below", "all"):
             raise InputError("PtdOptions.mirror must be 'none', 'below' or 'all'")
+        defaults = {f.name: f.default for f in fields(self)}
         for name in ("cell", "max_building", "max_distance", "max_angle",
                      "final_distance", "low_noise_depth", "pit_step"):
-            if not getattr(self, name) > 0:
-                raise InputError("PtdOptions.{name} must be positive", name=name)
+            if not getattr(self, name) > 0:     # the algorithm's parameter: the name upper
+                raise InputError("{param} must be > 0, got {value}; give a positive value "
+                                 "or leave the default ({default}).", param=name.upper(),
+                                 value=getattr(self, name), default=defaults[name])
         if self.final_distance > self.max_distance:
-            raise InputError("final_distance must not exceed max_distance")
+            raise InputError("FINAL_DISTANCE ({final} m) must not exceed MAX_DISTANCE "
+                             "({max} m): the final pass cannot accept points farther from "
+                             "the TIN than the densification did.",
+                             final=self.final_distance, max=self.max_distance)
         if not (self.thin >= 0 and 0 <= self.stop_fraction < 1):
             raise InputError("PtdOptions.thin >= 0 and 0 <= stop_fraction < 1 are required")
         if self.max_iterations < 1 or self.min_points < 4:

@@ -361,3 +361,16 @@ def test_layer_file_that_cannot_be_opened_named_before_the_run(qgis_processing, 
     assert "not found" not in str(info.value)
     assert sorted(p.name for p in tmp_path.iterdir()) == before
     assert src.read_bytes() == content
+
+
+@pytest.mark.parametrize("params,message", [
+    ({"MAX_BUILDING": 0}, r"MAX_BUILDING must be > 0, got 0\.0; give a positive value or leave "
+                          r"the default \(60"),
+    ({"FINAL_DISTANCE": 3.0, "MAX_DISTANCE": 1.0},
+     r"FINAL_DISTANCE \(3\.0 m\) must not exceed MAX_DISTANCE \(1\.0 m\)"),
+])
+def test_ptd_bad_numbers_name_the_parameter(qgis_processing, data, tmp_path, params, message):
+    """Were 'PtdOptions.max_building must be positive' (the core's field, no fix)."""
+    out = tmp_path / "c.laz"
+    refused(qgis_processing, "geomatics:ptdgroundfilter", {
+        "INPUT": str(data["laz"]), "OUTPUT": str(out), **params}, message, [data["laz"]], [out])
