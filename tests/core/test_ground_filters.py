@@ -175,8 +175,13 @@ def test_bad_options():
         recommended.RecommendedOptions(fill_neighbours=0)
     with pytest.raises(InputError, match="fill_reach"):
         recommended.RecommendedOptions(fill_reach=0.0)
-    with pytest.raises(InputError, match="final_distance"):
+    with pytest.raises(InputError, match=r"FINAL_DISTANCE \(2\.0 m\) must not exceed "
+                                         r"MAX_DISTANCE \(1\.0 m\)"):
         ptd.PtdOptions(max_distance=1.0, final_distance=2.0)
+    with pytest.raises(InputError, match=r"MAX_BUILDING must be > 0, got 0"):
+        ptd.PtdOptions(max_building=0)
+    with pytest.raises(InputError, match=r"MAX_WINDOW, 3000 m\) must be at most 2000 m"):
+        recommended.RecommendedOptions(max_window=3000.0)
 
 
 @pytest.mark.parametrize("mod", [ptd, recommended])
