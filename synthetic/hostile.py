@@ -107,6 +107,28 @@ def las10_copy(src, dst) -> str:
     return os.fspath(dst)
 
 
+def extra_bytes_descriptors(path) -> tuple:
+    """``({name: descriptor bytes}, VLR count)`` of a LAS file, read byte by byte."""
+    out = {}
+    with open(os.fspath(path), "rb") as fh:
+        fh.seek(94)
+        header_size, _, count = struct.unpack("<HII", fh.read(10))
+        pos = header_size
+        for _ in range(count):
+            fh.seek(pos)
+            head = fh.read(54)
+            user = head[2:18].split(b"\0", 1)[0]
+            record, length = struct.unpack("<HH", head[18:22])
+            if user == b"LASF_Spec" and record == 4:
+                fh.seek(pos + 54)
+                data = fh.read(length)
+                for k in range(length // 192):
+                    raw = data[k * 192:(k + 1) * 192]
+                    out[raw[4:36].split(b"\0", 1)[0].decode()] = raw
+            pos += 54 + length
+    return out, count
+
+
 def write_extra_bytes_las(dst, *, n: int = 50) -> dict:
     """LAS 1.4 with two extra-bytes dimensions whose descriptors declare their own
     min/max/no-data/scale/offset (option bits 0b11111 and 0b00111), as producers write.

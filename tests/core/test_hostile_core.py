@@ -123,25 +123,8 @@ def test_publish_to_a_wrong_format_refused_before_any_copy(tmp_path, kind, src, 
 
 # ----------------------------------------------------------------- 6. foreign metadata
 def _descriptors(path):
-    import struct
-    out = {}
-    with open(path, "rb") as fh:
-        fh.seek(94)
-        header_size, _, count = struct.unpack("<HII", fh.read(10))
-        pos = header_size
-        for _ in range(count):
-            fh.seek(pos)
-            head = fh.read(54)
-            user = head[2:18].split(b"\0", 1)[0]
-            record, length = struct.unpack("<HH", head[18:22])
-            if user == b"LASF_Spec" and record == 4:
-                fh.seek(pos + 54)
-                data = fh.read(length)
-                for k in range(length // 192):
-                    raw = data[k * 192:(k + 1) * 192]
-                    out[raw[4:36].split(b"\0", 1)[0].decode()] = raw
-            pos += 54 + length
-    return out, count
+    from geomatics_toolbox.synthetic.hostile import extra_bytes_descriptors
+    return extra_bytes_descriptors(path)
 
 
 @pytest.mark.parametrize("extra", [False, True])

@@ -374,3 +374,21 @@ def test_ptd_bad_numbers_name_the_parameter(qgis_processing, data, tmp_path, par
     out = tmp_path / "c.laz"
     refused(qgis_processing, "geomatics:ptdgroundfilter", {
         "INPUT": str(data["laz"]), "OUTPUT": str(out), **params}, message, [data["laz"]], [out])
+
+
+def test_groundfilter_keeps_extra_bytes_descriptors_byte_for_byte(qgis_processing, tmp_path):
+    """Issue 22 item 6 through processing.run: the declared min/max/no-data/scale/offset
+    and option bits of each ExtraBytes descriptor (laspy rewrites them as ±DBL_MAX on a
+    plain round trip) come out of the ground filter exactly as read."""
+    from geomatics_toolbox.synthetic.hostile import (
+        extra_bytes_descriptors,
+        write_extra_bytes_las,
+    )
+    src = tmp_path / "eb.las"
+    declared = write_extra_bytes_las(src, n=400)
+    out = qgis_processing.run("geomatics:groundfilter", {
+        "INPUT": str(src), "OUTPUT": str(tmp_path / "c.las")})["OUTPUT"]
+    got, _ = extra_bytes_descriptors(out)
+    assert set(declared) == {"hag", "amp"} and set(declared) <= set(got)
+    for name, raw in declared.items():
+        assert got[name] == raw, name      # options, min/max, no-data, scale, offset
