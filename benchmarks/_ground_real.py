@@ -166,6 +166,12 @@ truth = t.classification == 2
 del t
 from _probe import Probe
 from bench_ground import ground_mask
+# modules imported before the probe, for every filter alike: the row times the filter,
+# not Python's first import of the plugin, scipy.spatial or pysmrf
+import geomatics_toolbox.core.lidar.lsq, geomatics_toolbox.core.lidar.ptd
+import geomatics_toolbox.core.lidar.recommended, geomatics_toolbox.core.lidar.slope
+if {what!r} == "smrf":
+    import pysmrf
 p = Probe(); g = ground_mask({what!r}, x, y, z); r = p.result()
 r.update(n=int(x.size), total=float(100.0 * np.mean(g != truth)))
 print(json.dumps(r))
@@ -197,7 +203,8 @@ def density_md(rows, n_points):
     L = [f"## Speed and memory at every density ({n_points:,} synthetic points each, one "
          "core)", "",
          "`synthetic.lidar.generate_tile` at each density; every run in a fresh process "
-         "with one thread (`_probe.run_python`); CPU time is the process's own, wall time "
+         "with one thread (`_probe.run_python`), the filters' modules (ours and pysmrf) "
+         "imported before the probe; CPU time is the process's own, wall time "
          "was taken on a loaded machine (2 cores shared by 8 engineers; load average "
          f"{load[0]:.1f} at the end). Peak = VmHWM after a reset, including the resident "
          "baseline (Python, numpy, the coordinates).", "",
