@@ -100,6 +100,47 @@ def plane_gradient(z, valid, radius: int, cell: float):
     return gx / cell, gy / cell
 
 
+#: Rows per band of :func:`gradient_at` (bounds the moment rasters' memory).
+BAND = 256
+
+
+def gradient_at(z, valid, radius: int, cell: float, rr, cc):
+    """:func:`plane_gradient` at the cells ``(rr, cc)`` only, band by band.
+
+    Each band of :data:`BAND` rows is computed with ``radius`` rows of margin on either
+    side (the windows of its cells see exactly the rows they see in the whole raster,
+    and a window's sums do not depend on where the raster starts), so the values are
+    those of :func:`plane_gradient`, bit for bit, without a dozen full-raster moment
+    rasters at once.
+
+    Parameters
+    ----------
+    z, valid, radius, cell
+        As for :func:`plane_gradient`.
+    rr, cc : ndarray of int
+        Rows and columns of the cells wanted, sorted by row (``np.nonzero`` order).
+
+    Returns
+    -------
+    tuple of ndarray
+        ``(gx, gy)`` at those cells.
+    """
+    r = int(radius)
+    rows = z.shape[0]
+    gx = np.empty(rr.size)
+    gy = np.empty(rr.size)
+    cut = np.searchsorted(rr, np.arange(0, rows + BAND, BAND))
+    for b0 in range(0, rows, BAND):
+        i0, i1 = cut[b0 // BAND], cut[b0 // BAND + 1]
+        if i0 == i1:
+            continue
+        lo, hi = max(0, b0 - r), min(rows, b0 + BAND + r)
+        bx, by = plane_gradient(z[lo:hi], valid[lo:hi], r, cell)
+        gx[i0:i1] = bx[rr[i0:i1] - lo, cc[i0:i1]]
+        gy[i0:i1] = by[rr[i0:i1] - lo, cc[i0:i1]]
+    return gx, gy
+
+
 def plane_fit(z, valid, radius: int):
     """Least-squares plane over the valid cells of every (2r+1)² window, with its fit.
 
@@ -226,23 +267,23 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     out = np.where(valid, z, np.nan)
     hr, hc = np.nonzero(~valid if need is None else ~valid & need)
     key = (z.shape, k, int(radius), float(cell), float(reach))
-    d2k = np.full(z.shape, _NONE, np.uint32) if cache is not None else None
+    d2k = np.full(z.shape, _NONE, np.uint16) if cache is not None else None
     same = _unchanged(prev, key, z, valid, hr, hc, radius)
     if same is not None:
         out[hr[same], hc[same]] = prev["out"][hr[same], hc[same]]
         d2k[hr[same], hc[same]] = prev["d2k"][hr[same], hc[same]]
         hr, hc = hr[~same], hc[~same]
     if hr.size:
-        gx, gy = plane_gradient(z, valid, radius, cell)
-        bz, bgx, bgy = z[rr, cc], gx[rr, cc], gy[rr, cc]
-        del gx, gy
+        bz = z[rr, cc]
+        bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
         lattice = np.column_stack((cc, rr))
         tree = cKDTree(lattice)
     for s in range(0, hr.size, BATCH):
         r, c = hr[s:s + BATCH], hc[s:s + BATCH]
         d2, dc, dr, j = _knn(tree, np.column_stack((c, r)), k, lattice)
         if d2k is not None:
-            d2k[r, c] = np.minimum(d2[:, -1], _NONE - 1)
+            last = d2[:, -1]
+            d2k[r, c] = np.where(last < _NONE, last, _NONE)     # too far: not kept
         d = np.sqrt(d2) * cell
         np.maximum(d, 1e-9, out=d)
         damp = np.minimum(1.0, reach / d)
@@ -266,8 +307,9 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
 #: growing step or the first refine pass, 1-3 % of the cells change and under 7 % of
 #: the holes could be kept: the check would cost more than it saves).
 _FEW = 0.01
-#: "Not computed" in a fill cache's raster of squared k-th neighbour distances.
-_NONE = np.iinfo(np.uint32).max
+#: "Not computed" in a fill cache's raster of squared k-th neighbour distances (farther
+#: cells are not kept either).
+_NONE = np.iinfo(np.uint16).max
 
 
 def _unchanged(prev, key, z, valid, hr, hc, radius):

@@ -321,10 +321,10 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     need = pc.read_mask()
     if info is not None:
         info.update(options=opt, n=int(x.size), grid=pc.grid)
-    cache = {}                      # hole-fill neighbours shared by the five fills
-    dtm = surface(zmin, pc.grid, opt, rep, need=need, info=info, cache=cache)
+    dtm = surface(zmin, pc.grid, opt, rep, need=need, info=info)
     rep(0.8)
     cls = label_points(z, dtm, pc, opt)
+    cache = {}            # the refine fills change few cells: each keeps most of the last
     for k in range(int(opt.refine)):
         rep(0.8 + 0.2 * (k + 1) / (opt.refine + 1))
         zg = pc.cell_min(z, cls == GROUND)

@@ -152,3 +152,22 @@ def test_fill_cache_gives_the_values_of_a_fresh_fill():
         S._unchanged = real
     kept = kept[0::2]                                    # the calls with the cache
     assert kept[0] == 0 and min(kept[1:]) > 0.3 * np.count_nonzero(~valid & need)
+
+
+def test_gradient_by_bands_equals_the_whole_raster():
+    """gradient_at (bands of rows with a margin) gives plane_gradient's values bit for bit,
+    whatever the band size, next to holes and at the raster's edges."""
+    from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
+    rng = np.random.default_rng(2)
+    z = 300.0 + rng.normal(0, 1, (230, 170)).cumsum(axis=1) * 0.1
+    valid = rng.random(z.shape) < 0.6
+    gx, gy = S.plane_gradient(z, valid, 3, 1.5)
+    rr, cc = np.nonzero(valid)
+    band = S.BAND
+    try:
+        for S.BAND in (7, 50, 256):
+            bx, by = S.gradient_at(z, valid, 3, 1.5, rr, cc)
+            np.testing.assert_array_equal(bx, gx[rr, cc])
+            np.testing.assert_array_equal(by, gy[rr, cc])
+    finally:
+        S.BAND = band
