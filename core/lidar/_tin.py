@@ -55,9 +55,10 @@ def dedupe_xy(x, y, z, resolution: float = 0.01):
     ndarray of int
         Indices of the kept points.
     """
-    x0, y0 = x.min(), y.min()
-    ncols = int((x.max() - x0) // resolution) + 2
-    idx = cell_index(x, y, x0, y0, resolution, ncols)
+    # rounded, not floored: positions on a centimetre grid (LAS scale 0.01) fall in the
+    # same cell whatever the local origin (floor(x / 0.01) flips on rounding)
+    idx = ((np.round(y / resolution).astype(np.int64) << 32)
+           + np.round(x / resolution).astype(np.int64))
     return lowest_per_cell(idx, z)
 
 

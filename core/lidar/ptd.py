@@ -4,9 +4,10 @@ Pipeline (ground branch of the ELiT spec, Kostrikov et al. 2020): duplicates out
 candidates = lowest point per ``thin`` cell (1 m) -> step filter on the TIN of the
 ``cell`` minima (pits and spikes out) -> seeds: the minima of ``SEED_CELLS`` x
 ``cell`` cells (6 m: under a closed canopy they still hold ground), and per parcel
-(at most ``max_building`` wide, four grids offset by half a parcel) the lowest of
-them not more than ``seed_depth`` below the parcel's ``seed_quantile`` quantile (so
-clusters of low outliers never seed the TIN) -> densify the TIN (distance-to-facet
+(at most ``max_building`` wide, 3 x 3 grids offset by a third of a parcel) the
+lowest of them not more than ``seed_depth`` below the parcel's ``seed_quantile``
+quantile (so clusters of low outliers never seed the TIN) -> densify the TIN
+until no candidate passes (distance-to-facet
 and angle-to-vertex limits, one candidate per facet per iteration; Axelsson's
 mirroring for candidates below their facet, and a cliff-aware mirroring for
 candidates in facets that span a breakline) -> final pass of every point against
@@ -15,20 +16,29 @@ continuing a cliff foot or top) ground, far below it low noise (class 7). Virtua
 points on a frame around the cloud (every ``frame`` m) keep the TIN's edge facets
 from being slivers, whose planes tilt into the vegetation.
 
+Translation-invariant, so a catalog chunk gives the merged cloud's classes beyond
+its buffer (``tests/core/test_filter_registry.py``: identical at 0.1 pts/m²): every
+grid (candidate, step-filter and seed cells, parcels, frame points) lies on a
+lattice fixed in world coordinates (through ``origin``, else through 0; only the
+parcels at the cloud's edge adapt to it), the points are taken in one order by
+position, ties of the triangulation (co-circular points, points on an edge or above
+a vertex) are broken by a sub-millimetre offset hashed from each point's position
+(:func:`jitter`), and no decision depends on the whole cloud (the densification
+stops when no candidate passes anywhere, not on a global count).
+
 Speed: the Delaunay TIN (Qhull) is rebuilt once per iteration, but only from one
 candidate per ``thin`` cell, and a candidate rejected in a facet that survives the
 rebuild (same three vertices) is not tested again; the others are located by a
 vectorised walk from their previous facet (:class:`~._tin.Tin`, no scipy barycentric
-transform). The loop stops when fewer than ``stop_fraction`` of the TIN's vertex
-count pass an iteration. On one core 49,600 points/s (CPU time, loaded machine) on a
+transform). On one core 49,600 points/s (CPU time, loaded machine) on a
 1 M-point synthetic tile at 20 pts/m² (``benchmarks/results/ground.md``; was 4,810).
 
 Measured on the 8 ISPRS filter-test samples at the defaults: mean total error
-4.50 % (was 8.07 %; Axelsson published 4.82 % over all 15 samples, 6.32 % over
-these 8); see ``benchmarks/results/ground.md``. A closed canopy with 5 % ground
-returns (``synthetic.landscapes.closed_forest``): no canopy point is ground. Known
-gap: on a flat scene cut by a 5 m cliff the top edge (4 m wide) stays unclassified
-since the frame points came in (tests/core/test_ground_filters.py, strict xfail).
+4.66 % (was 8.07 %; Axelsson published 4.82 % over all 15 samples, 6.32 % over
+these 8); see ``benchmarks/results/ground.md``. The figure depends on where the
+lattice falls on a sample (samp22 3.8-7.7 %, samp41 2.4-5.4 % over three lattice
+origins). A closed canopy with 5 % ground returns
+(``synthetic.landscapes.closed_forest``): no canopy point is ground.
 
 References
 ----------
@@ -75,6 +85,9 @@ NOISE_PREFILTER = False
 
 #: Seeds are picked among the minima of cells this many ``cell`` wide.
 SEED_CELLS = 3
+
+#: Seed parcels lie in this many grids per axis, offset by 1/PARCEL_OFFSETS of a parcel.
+PARCEL_OFFSETS = 3
 
 #: Ground points whose lowest gives a virtual corner its height (:func:`with_corners`).
 CORNER_NEIGHBOURS = 1
@@ -127,7 +140,9 @@ class PtdOptions:
         other point is classified against the final TIN (m; 0 = every point).
     stop_fraction : float
         The densification stops when fewer candidates than this fraction of the
-        TIN's vertices pass an iteration's tests.
+        TIN's vertices pass an iteration's tests (default 0: only when none passes;
+        a fraction of the whole cloud's count makes a catalog chunk stop at another
+        iteration than the merged cloud).
     frame : float
         Spacing of the virtual points on a frame around the cloud (m; 0 = its four
         corners only), :func:`with_corners`.
@@ -152,7 +167,7 @@ class PtdOptions:
     mirror: str = "below"
     breakline: bool = True
     thin: float = 1.0
-    stop_fraction: float = 0.002
+    stop_fraction: float = 0.0
     frame: float = 15.0
     final_slope: float = 0.5
 
@@ -195,8 +210,9 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     cancel : callable() -> bool, optional
         Polled between steps; when it returns True, :class:`Cancelled` is raised.
     origin : (float, float), optional
-        Anchors the cells and parcels on the lattice through this point (catalog
-        chunks equal the merged cloud); default: the cloud's lower-left corner.
+        Anchors the cells, parcels and frame points on the lattice through this
+        point (catalog chunks equal the merged cloud); default: through (0, 0), so
+        the classes do not depend on the cloud's extent away from its edges.
 
     Returns
     -------
@@ -228,15 +244,24 @@ def classify_with_tin(x, y, z, *, options=None, progress=None, cancel=None, orig
     x, y, z = R.checked_xyz(x, y, z, opt.min_points)
     rep = Monitor(progress, cancel).step
     rep(0.0)
-    x0, y0 = x.min(), y.min()
-    if origin is not None:     # a period holding whole cells, parcels and half parcels
-        period = 2.0 * opt.max_building * opt.cell
-        x0, y0 = R.snap_down(x0, origin[0], period), R.snap_down(y0, origin[1], period)
+    # one canonical order (by world position): every tie (equal heights in a cell, equal
+    # distances in a facet) is broken by where the points are, not by the input order,
+    # which differs between a catalog chunk and the merged cloud
+    order = np.lexsort((z, y, x))
+    x, y, z = x[order], y[order], z[order]
+    # every grid (candidate, step-filter and seed cells, parcels) on one lattice fixed in
+    # world coordinates: through ``origin``, else through 0; a period holding whole
+    # cells, parcels and half parcels
+    ox, oy = (0.0, 0.0) if origin is None else (float(origin[0]), float(origin[1]))
+    period = 2.0 * opt.max_building * opt.cell
+    x0, y0 = R.snap_down(x.min(), ox, period), R.snap_down(y.min(), oy, period)
     xs, ys = x - x0, y - y0                       # local coordinates for Qhull
     try:
         cand = candidates(xs, ys, z, opt)
         seeds, pool = initial_ground(xs, ys, z, cand, opt)
         rep(0.1)
+        jx, jy = jitter(x, y, z)
+        xs, ys = xs + jx, ys + jy
         ground, tin = densify(xs, ys, z, seeds, pool, opt, rep)
         cls, tin = final_pass(xs, ys, z, ground, opt, tin)
     except QhullError as exc:          # a profile: every Delaunay step needs an area
@@ -244,7 +269,40 @@ def classify_with_tin(x, y, z, *, options=None, progress=None, cancel=None, orig
                          "needs points spread over an area. Use the recommended ground "
                          "filter for a profile or a single scan line.", n=x.size) from exc
     rep(1.0)
-    return cls, np.column_stack((tin.xy[:, 0] + x0, tin.xy[:, 1] + y0, tin.z))
+    out = np.empty_like(cls)
+    out[order] = cls
+    return out, np.column_stack((tin.xy[:, 0] + x0, tin.xy[:, 1] + y0, tin.z))
+
+
+#: Amplitude (m) of :func:`jitter`.
+JITTER = 1e-4
+
+
+def jitter(x, y, z):
+    """Return a tiny xy offset of every point, a fixed function of its world position.
+
+    Points on a centimetre grid are often exactly co-circular, on a facet's edge or
+    right above a TIN vertex; Qhull's triangulation of such ties, and the facet such a
+    point is located in, would depend on the other points (the extent of the cloud,
+    the order Qhull meets them). Offsets of at most ``JITTER`` / 2 hashed from the
+    position (x, y, z) rounded to a millimetre break every tie the same way in a
+    catalog chunk and in the whole cloud.
+    """
+    kx, ky, kz = (np.round(np.asarray(v) * 1000.0).astype(np.int64).view(np.uint64)
+                  for v in (x, y, z))
+    with np.errstate(over="ignore"):
+        h = _mix(kx * np.uint64(0x9E3779B97F4A7C15) ^ _mix(ky ^ _mix(kz)))
+        u = (h >> np.uint64(11)).astype(np.float64) / float(1 << 53) - 0.5
+        v = (_mix(h) >> np.uint64(11)).astype(np.float64) / float(1 << 53) - 0.5
+    return JITTER * u, JITTER * v
+
+
+def _mix(h):
+    """SplitMix64 finaliser of uint64 ``h`` (wrapping)."""
+    with np.errstate(over="ignore"):
+        h = (h ^ (h >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
+        h = (h ^ (h >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
+        return h ^ (h >> np.uint64(31))
 
 
 def candidates(x, y, z, opt):
@@ -257,25 +315,25 @@ def candidates(x, y, z, opt):
     uniq = _tin.dedupe_xy(x, y, z)
     if opt.thin <= 0.01:
         return uniq
-    ncols = int(np.ptp(x) // opt.thin) + 2
-    return uniq[_tin.lowest_per_cell(_tin.cell_index(x[uniq], y[uniq], 0.0, 0.0, opt.thin,
-                                                     ncols), z[uniq])]
+    return uniq[_tin.lowest_per_cell(_cells(x[uniq], y[uniq], opt.thin), z[uniq])]
+
+
+def _cells(x, y, size):
+    """Cell key of every point on the ``size`` lattice through the local origin."""
+    return (np.floor(y / size).astype(np.int64) << 32) + np.floor(x / size).astype(np.int64)
 
 
 def initial_ground(x, y, z, uniq, opt):
     """Seeds and the densification pool (candidates minus pits and spikes)."""
-    ncols = int(np.ptp(x) // opt.cell) + 2
-    minima = uniq[_tin.lowest_per_cell(_tin.cell_index(x[uniq], y[uniq], 0.0, 0.0, opt.cell,
-                                                       ncols), z[uniq])]
+    minima = uniq[_tin.lowest_per_cell(_cells(x[uniq], y[uniq], opt.cell), z[uniq])]
     bad = step_filter(x[minima], y[minima], z[minima], opt)
     keep = minima[~bad]
     # seeds come from the minima of coarser cells, which under a closed canopy still
     # hold ground (a parcel's quantile of them is a ground height)
     c3 = SEED_CELLS * opt.cell
-    keep = keep[_tin.lowest_per_cell(_tin.cell_index(x[keep], y[keep], 0.0, 0.0, c3,
-                                                     int(np.ptp(x) // c3) + 2), z[keep])]
+    keep = keep[_tin.lowest_per_cell(_cells(x[keep], y[keep], c3), z[keep])]
     kx, ky, kz = x[keep], y[keep], z[keep]
-    seeds = parcel_seeds(kx, ky, kz, opt)
+    seeds = parcel_seeds(kx, ky, kz, opt, (x.min(), x.max(), y.min(), y.max()))
     bad_idx = minima[bad]
     pool = np.setdiff1d(uniq, bad_idx, assume_unique=True)
     return keep[seeds], pool
@@ -308,27 +366,33 @@ def step_filter(x, y, z, opt, passes: int = 2):
     return bad
 
 
-def parcel_seeds(x, y, z, opt):
+def parcel_seeds(x, y, z, opt, extent=None):
     """Return the indices of the seeds: the lowest trusted point of overlapping parcels.
 
-    Parcels are at most ``max_building`` wide, sized to fit the extent (each edge
-    holds at least two), in four grids offset by half a parcel. ``x, y, z`` are
-    cell minima; in each parcel the seed is the lowest of them that lies no more than
-    ``seed_depth`` below the parcel's ``seed_quantile`` height quantile, so a cluster
-    of low outliers (multipath) smaller than that share of the parcel never seeds the
-    TIN.
+    Parcels are ``max_building`` wide (half the cloud's larger side if that is
+    smaller), on the lattice through the local origin (fixed in world coordinates), in
+    ``PARCEL_OFFSETS`` x ``PARCEL_OFFSETS`` grids offset by a fraction of a parcel. A
+    parcel that covers less than half a parcel (or the whole cloud, when narrower) of
+    ``extent`` (x0, x1, y0, y1) along x or y joins its inner neighbour: such a sliver at
+    the cloud's edge may hold only canopy or a roof. Only the parcels at the edge
+    depend on the extent, so a catalog chunk seeds as the whole cloud does farther
+    than 1.5 parcels from its cut edges. ``x, y, z`` are cell minima; in each parcel
+    the seed is the lowest of them that lies no more than ``seed_depth`` below the
+    parcel's ``seed_quantile`` height quantile, so a cluster of low outliers
+    (multipath) smaller than that share of the parcel never seeds the TIN.
     """
-    size = min(opt.max_building, max(np.ptp(x), np.ptp(y)) / 2.0)
+    if extent is None:
+        extent = (x.min(), x.max(), y.min(), y.max())
+    ex0, ex1, ey0, ey1 = (float(v) for v in extent)
+    size = min(opt.max_building, max(ex1 - ex0, ey1 - ey0) / 2.0)
     size = max(size, 2.0 * opt.cell)
-    # parcels fit the extent (no sliver at its far edge), the offset grids' edge
-    # parcels are half parcels: every parcel holds a fair share of cell minima
-    sx, sy = (max(float(np.ptp(v)), 1e-9) / max(np.ceil(np.ptp(v) / size), 1.0)
-              * (1.0 + 1e-9) for v in (x, y))
     out = []
-    for ox in (0.0, sx / 2.0):
-        for oy in (0.0, sy / 2.0):
-            idx = ((np.floor((y - y.min() + oy) / sy).astype(np.int64) << 32)
-                   + np.floor((x - x.min() + ox) / sx).astype(np.int64))
+    offsets = [size * k / PARCEL_OFFSETS for k in range(PARCEL_OFFSETS)]
+    for off_x in offsets:
+        for off_y in offsets:
+            col = _parcel_index(x, off_x, size, ex0, ex1)
+            row = _parcel_index(y, off_y, size, ey0, ey1)
+            idx = (row << 32) + col
             order = np.lexsort((z, idx))
             starts = np.flatnonzero(np.r_[True, idx[order[1:]] != idx[order[:-1]]])
             counts = np.diff(np.r_[starts, order.size])
@@ -337,6 +401,22 @@ def parcel_seeds(x, y, z, opt):
             skip = np.add.reduceat(low, starts)
             out.append(order[starts + np.minimum(skip, counts - 1)])
     return np.unique(np.concatenate(out))
+
+
+def _parcel_index(v, off, size, e0, e1):
+    """Parcel column of ``v`` on the lattice ``off + k * size``.
+
+    A parcel that covers less than half a parcel of [e0, e1] (a sliver at the edge)
+    joins its inner neighbour.
+    """
+    col = np.floor((v - off) / size).astype(np.int64)
+    lo, hi = int(np.floor((e0 - off) / size)), int(np.floor((e1 - off) / size))
+    need = min(size / 2.0, e1 - e0) * (1.0 - 1e-9)
+    if hi > lo and min((lo + 1) * size + off, e1) - e0 < need:
+        lo += 1
+    if hi > lo and e1 - max(hi * size + off, e0) < need:
+        hi -= 1
+    return np.clip(col, lo, hi)
 
 
 def with_corners(x, y, z, ground, spacing=None):
@@ -351,15 +431,25 @@ def with_corners(x, y, z, ground, spacing=None):
     gx, gy, gz = x[ground], y[ground], z[ground]
     pad = 1.0
     x0, x1, y0, y1 = x.min() - pad, x.max() + pad, y.min() - pad, y.max() + pad
-    nx = max(int(np.ceil((x1 - x0) / spacing)), 1) if spacing else 1
-    ny = max(int(np.ceil((y1 - y0) / spacing)), 1) if spacing else 1
-    tx, ty = np.linspace(x0, x1, nx + 1)[:-1], np.linspace(y0, y1, ny + 1)[:-1]
-    cx = np.r_[tx, np.full(ny, x1), tx[::-1] + (x1 - x0) / nx, np.full(ny, x0)]
-    cy = np.r_[np.full(nx, y0), ty, np.full(nx, y1), ty[::-1] + (y1 - y0) / ny]
+    # along each side at the multiples of ``spacing`` of the local lattice (not spaced to
+    # fit the extent): a catalog chunk that shares a side with the whole cloud has the
+    # same frame points along it
+    tx = _frame_ticks(x0, x1, spacing)
+    ty = _frame_ticks(y0, y1, spacing)
+    cx = np.r_[x0, tx, x1, np.full(ty.size, x1), x1, tx[::-1], x0, np.full(ty.size, x0)]
+    cy = np.r_[y0, np.full(tx.size, y0), y0, ty, y1, np.full(tx.size, y1), y1, ty[::-1]]
     k = min(CORNER_NEIGHBOURS, gx.size)
     near = _tin.cKDTree(np.column_stack((gx, gy))).query(np.column_stack((cx, cy)), k=k)[1]
     return (np.r_[gx, cx], np.r_[gy, cy],
             np.r_[gz, gz[near.reshape(cx.size, k)].min(axis=1)])
+
+
+def _frame_ticks(a, b, spacing):
+    """Multiples of ``spacing`` strictly inside (a, b), none closer than spacing / 4 to an end."""
+    if not spacing:
+        return np.zeros(0)
+    t = np.arange(np.ceil(a / spacing), np.floor(b / spacing) + 1) * spacing
+    return t[(t > a + spacing / 4.0) & (t < b - spacing / 4.0)]
 
 
 def _facet_keys(tin, vid):

@@ -14,14 +14,14 @@ SAMPLES = ["samp11", "samp12", "samp22", "samp31", "samp41", "samp53", "samp54",
 #: sha1 of the uint8 classes and total error (%) of ``ptd.classify`` at its defaults (the
 #: same as RESEARCH in tests/core/test_ground_filters.py).
 GOLDEN = {
-    "samp11": ("eb74f4d97c49d7315bea7b45274d038775819844", 9.0108),
-    "samp12": ("7984a75a1a948f262cee25cb0d09456ef5408b87", 3.3500),
-    "samp22": ("bcd9758928efff5c6287927440836cad17dddddb", 6.1426),
-    "samp31": ("0ac7d976f5bfd602ff8f11f803e7ec49c3f23f47", 2.0927),
-    "samp41": ("78144b761d04118a85e80e27655a330882fe5314", 2.6178),
-    "samp53": ("53ae907716fd725532950d5ea35fd3ec3bed579c", 6.7340),
-    "samp54": ("0d4d684fe523b6cff88a63e3282113144004da87", 3.1947),
-    "samp61": ("5060bef3cc5e3cefa26877e0d8c71d90f3dd87f5", 2.8950),
+    "samp11": ("7f17415a797e10feddea1ec1cfa955a20946ff6d", 12.5572),
+    "samp12": ("faf2b5ca1e85237a65c334af1973a2e2efd65fb6", 3.3078),
+    "samp22": ("dbd610b413169c0e2d5c5a4631d26339dc2c45cd", 3.7914),
+    "samp31": ("bd3519bd8fe56b252f57b13d2cb3db5b20f6610d", 2.0685),
+    "samp41": ("7fa0b24c8c8973c3179969b1f14c4dce0cd645ae", 5.3691),
+    "samp53": ("109d2f324b9efec24c326874213f19a8e0ebc849", 4.3633),
+    "samp54": ("0b17ecbe5410050229e43a6bc717649725984bfc", 3.2993),
+    "samp61": ("b88d850d46b17a01bdf957f7c13be612bd1ad762", 2.5128),
 }
 
 
