@@ -75,20 +75,25 @@ def find_tiles(source: Union[str, os.PathLike, Sequence]) -> List[str]:
         items = [s.strip() for s in text.replace("\n", ";").split(";") if s.strip()]
     files: List[str] = []
     for item in items:
-        if os.path.isdir(item):
-            files += sorted(str(p) for p in Path(item).iterdir()
-                            if p.is_file() and _is_las(p.name))
-        elif item.lower().endswith(".vpc"):
+        if item.lower().endswith(".vpc") and not os.path.isdir(item):
             files += _vpc_files(item)
+            continue
+        if os.path.isdir(item):
+            found = sorted(str(p) for p in Path(item).iterdir()
+                           if p.is_file() and _is_las(p.name))
         elif any(c in item for c in "*?["):
-            files += sorted(p for p in glob.glob(item) if _is_las(p))
+            found = sorted(p for p in glob.glob(item) if _is_las(p))
         elif _is_las(item):
             if not os.path.exists(item):
                 raise InputError("Tile not found: {item}. Check the path.", item=item)
-            files.append(item)
+            found = [item]
         else:
             raise InputError("{item} is neither a folder, a LAS/LAZ file nor a .vpc "
                              "virtual point cloud.", item=item)
+        if not found and len(items) > 1:        # one entry of a list yields nothing
+            raise InputError("{item} holds no LAS/LAZ tile; correct that entry of the "
+                             "list or remove it.", item=item)
+        files += found
     unique = list(dict.fromkeys(os.path.abspath(f) for f in files))
     if not unique:
         raise InputError("No LAS/LAZ tile found in {source}; give a folder of .las/.laz "

@@ -238,3 +238,18 @@ def test_tile_whose_header_bounds_lie_named(tiles, tmp_path, damage, message):
         fh.seek(179)
         fh.write(struct.pack("<6d", *new))
     _refused([*tiles, c], tmp_path / "out", message)
+
+
+@pytest.mark.parametrize("entry", ["folder", "glob"])
+def test_list_entry_that_yields_no_tile_named(tiles, tmp_path, entry):
+    """A folder (or pattern) in a list of sources that holds no tile was skipped without a
+    word: the catalog ran on the other entries."""
+    empty = tmp_path / "typo.las"            # a folder, as a mistyped export path makes
+    empty.mkdir()
+    item = str(empty) if entry == "folder" else str(tmp_path / "tiles" / "*.laz")
+    before = _digests(tiles)
+    with pytest.raises(InputError, match=r"(typo\.las|\*\.laz) holds no LAS/LAZ tile; "
+                                         r"correct that entry of the list or remove it"):
+        cc.run_catalog([*tiles, item], tmp_path / "out", workers=1)
+    assert not (tmp_path / "out").exists() and _digests(tiles) == before
+    assert len(cc.Catalog.open([*tiles]).tiles) == 2
