@@ -245,6 +245,13 @@ class DtmAccuracyAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
                                       "{} outside, {} on nodata").format(
                 res.n_used, summary["rmse"], summary["me"], summary["r"], res.n_outside,
                 res.n_nodata))
+            if core_acc.few_check_points(res.n_used):
+                feedback.pushWarning(self.tr(   # = core_acc.FEW_CHECK_POINTS
+                    "Only {n} check points were compared with the DTM: ASPRS (2014) asks "
+                    "for at least {minimum} check points before a vertical accuracy is "
+                    "stated, so these statistics are indicative only. Add check points (at "
+                    "least {minimum}) to state an accuracy.").format(
+                    n=res.n_used, minimum=core_acc.ASPRS_MIN_CHECK_POINTS))
             if out.requested(self.OUTPUT):
                 self.write_residuals(out.path(self.OUTPUT), res, ids, dtm_crs)
                 results[self.OUTPUT] = out.final(self.OUTPUT)

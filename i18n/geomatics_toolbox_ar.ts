@@ -753,6 +753,10 @@
             <source>DTM accuracy report</source>
             <translation>تقرير دقة نموذج التضاريس الرقمي</translation>
         </message>
+        <message>
+            <source>Only {n} check points were compared with the DTM: ASPRS (2014) asks for at least {minimum} check points before a vertical accuracy is stated, so these statistics are indicative only. Add check points (at least {minimum}) to state an accuracy.</source>
+            <translation>قورن {n} نقطة تحقق فقط بنموذج التضاريس الرقمي (DTM): تشترط ASPRS (2014) ما لا يقل عن {minimum} نقطة تحقق قبل التصريح بدقة رأسية، لذا فهذه الإحصاءات استرشادية فقط. أضف نقاط تحقق (على الأقل {minimum}) للتصريح بالدقة.</translation>
+        </message>
     </context>
     <context>
         <name>ElevationChangeAlgorithm</name>
@@ -887,6 +891,10 @@
         <message>
             <source>Change regions</source>
             <translation>مناطق التغيّر</translation>
+        </message>
+        <message>
+            <source>{0} has no CRS: it is taken to be in the CRS of {1} ({2}); check that it is.</source>
+            <translation>{0} بلا نظام إحداثيات: يُعدّ في نظام إحداثيات {1} ({2})؛ تحقّق من ذلك.</translation>
         </message>
     </context>
     <context>

@@ -753,6 +753,10 @@
             <source>DTM accuracy report</source>
             <translation>گزارش دقت مدل رقومی زمین</translation>
         </message>
+        <message>
+            <source>Only {n} check points were compared with the DTM: ASPRS (2014) asks for at least {minimum} check points before a vertical accuracy is stated, so these statistics are indicative only. Add check points (at least {minimum}) to state an accuracy.</source>
+            <translation>فقط {n} نقطهٔ چک با مدل رقومی زمین (DTM) مقایسه شد: ASPRS (2014) پیش از اعلام دقت ارتفاعی دست‌کم {minimum} نقطهٔ چک می‌خواهد، پس این آماره‌ها فقط جنبهٔ راهنما دارند. برای اعلام دقت، نقاط چک بیشتری (دست‌کم {minimum}) اضافه کنید.</translation>
+        </message>
     </context>
     <context>
         <name>ElevationChangeAlgorithm</name>
@@ -887,6 +891,10 @@
         <message>
             <source>Change regions</source>
             <translation>نواحی تغییر</translation>
+        </message>
+        <message>
+            <source>{0} has no CRS: it is taken to be in the CRS of {1} ({2}); check that it is.</source>
+            <translation>{0} سیستم مختصات ندارد: در سیستم مختصات {1} ({2}) فرض می‌شود؛ درستی آن را بررسی کنید.</translation>
         </message>
     </context>
     <context>

@@ -106,6 +106,20 @@ def sample_raster(data: np.ndarray, geotransform: Sequence[float], x, y, *,
     return values, status, partial
 
 
+#: ASPRS Positional Accuracy Standards (2014): fewer check points than this do not
+#: support a stated vertical accuracy (the statistics are then only indicative).
+ASPRS_MIN_CHECK_POINTS = 20
+FEW_CHECK_POINTS = (
+    "Only {n} check points were compared with the DTM: ASPRS (2014) asks for at least "
+    "{minimum} check points before a vertical accuracy is stated, so these statistics are "
+    "indicative only. Add check points (at least {minimum}) to state an accuracy.")
+
+
+def few_check_points(n_used: int) -> bool:
+    """Return whether ``n_used`` check points are too few for a stated accuracy (ASPRS)."""
+    return 0 < n_used < ASPRS_MIN_CHECK_POINTS
+
+
 def accuracy_stats(z_dtm, z_check) -> Dict[str, float]:
     """Error statistics of ``e = z_dtm − z_check`` (finite pairs only)."""
     a = np.asarray(z_dtm, dtype=np.float64).ravel()

@@ -252,6 +252,9 @@ def accuracy_report(res: acc.AccuracyResult, ids: Sequence, dtm: np.ndarray,
                           "(2014); NMAD after Höhle & Höhle (2009), ISPRS J. 64(4), 398–406.")
     rep.summary.append(Paragraph(T("N = {n}, RMSE = {rmse} m, mean error = {me} m.",
                                    n=s["n"], rmse=round(s["rmse"], 4), me=round(s["me"], 4))))
+    if acc.few_check_points(res.n_used):
+        rep.summary.append(Paragraph(T(acc.FEW_CHECK_POINTS, n=res.n_used,
+                                       minimum=acc.ASPRS_MIN_CHECK_POINTS), kind="fail"))
     rep.section("Input").add(KeyValues([
         ("DTM", dtm_name), ("CRS", crs_label),
         *units_rows(units), ("sampling", T(res.method)),

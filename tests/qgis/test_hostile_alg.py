@@ -3,6 +3,7 @@ message, byte-identical inputs and nothing at any output path or temporary name.
 from __future__ import annotations
 
 import hashlib
+import re
 
 import numpy as np
 import pytest
@@ -392,3 +393,48 @@ def test_groundfilter_keeps_extra_bytes_descriptors_byte_for_byte(qgis_processin
     assert set(declared) == {"hag", "amp"} and set(declared) <= set(got)
     for name, raw in declared.items():
         assert got[name] == raw, name      # options, min/max, no-data, scale, offset
+
+
+# ----------------------------------------------------------------- dtmaccuracy, few points
+@pytest.mark.parametrize("n", [1, 2, 25])
+def test_dtmaccuracy_few_check_points_warned_asprs(qgis_processing, tmp_path, n):
+    from qgis.core import QgsProcessingFeedback
+
+    class Warnings(QgsProcessingFeedback):
+        def __init__(self):
+            super().__init__()
+            self.seen = []
+
+        def pushWarning(self, text):  # noqa: N802
+            self.seen.append(text)
+
+    dtm = _grid_dem(tmp_path / "dtm.tif", "EPSG:32632")
+    csv = tmp_path / "cp.csv"
+    csv.write_text("id,x,y,z\n" + "".join(
+        f"{i},{500_002.5 + (i % 5) * 3},{4_000_002.5 + (i // 5) * 3},100.1\n"
+        for i in range(n)), encoding="utf-8")
+    fb = Warnings()
+    res = qgis_processing.run("geomatics:dtmaccuracy", {
+        "DTM": str(dtm), "CHECKPOINTS_CSV": str(csv),
+        "OUTPUT_HTML": str(tmp_path / "acc.html")}, feedback=fb)
+    assert res["N"] == n
+    html = re.sub(r"</?bdi[^>]*>", "", (tmp_path / "acc.html").read_text(encoding="utf-8"))
+    warned = [w for w in fb.seen if "ASPRS (2014) asks for at least 20 check points" in w]
+    if n < 20:
+        assert warned and warned[0].startswith(f"Only {n} check points"), fb.seen
+        assert "at least 20 check points before a vertical accuracy" in html
+    else:
+        assert not warned and "at least 20 check points" not in html
+
+
+def test_dtmaccuracy_few_check_points_warning_in_arabic_report(tmp_path):
+    from geomatics_toolbox.core.reporting.render import render_html
+    from geomatics_toolbox.core.terrain import accuracy as acc
+    from geomatics_toolbox.core.terrain import report as tr_report
+    dtm = np.full((10, 10), 100.0)
+    gt = (0.0, 1.0, 0.0, 10.0, 0.0, -1.0)
+    res = acc.dtm_accuracy(dtm, gt, [2.5, 5.5], [2.5, 5.5], [100.1, 99.9])
+    html = render_html(tr_report.accuracy_report(res, ["a", "b"], dtm, gt, dtm_name="d.tif",
+                                                 crs_label="EPSG:32632"), lang="ar")
+    html = re.sub(r"</?bdi[^>]*>", "", html)
+    assert "تشترط ASPRS (2014) ما لا يقل عن 20 نقطة تحقق" in html
