@@ -14,14 +14,14 @@ SAMPLES = ["samp11", "samp12", "samp22", "samp31", "samp41", "samp53", "samp54",
 #: sha1 of the uint8 classes and total error (%) of ``ptd.classify`` at its defaults (the
 #: same as RESEARCH in tests/core/test_ground_filters.py).
 GOLDEN = {
-    "samp11": ("7f17415a797e10feddea1ec1cfa955a20946ff6d", 12.5572),
-    "samp12": ("faf2b5ca1e85237a65c334af1973a2e2efd65fb6", 3.3078),
-    "samp22": ("dbd610b413169c0e2d5c5a4631d26339dc2c45cd", 3.7914),
-    "samp31": ("bd3519bd8fe56b252f57b13d2cb3db5b20f6610d", 2.0685),
-    "samp41": ("7fa0b24c8c8973c3179969b1f14c4dce0cd645ae", 5.3691),
-    "samp53": ("109d2f324b9efec24c326874213f19a8e0ebc849", 4.3633),
+    "samp11": ("88005880827f34f175a72ba706904e1c3661137f", 12.1073),
+    "samp12": ("893367d8abfffd331ec539dc07dfa0862a00fad5", 3.2579),
+    "samp22": ("bced947985aa01718d06edf889ca701706843495", 3.7027),
+    "samp31": ("cc6cbc919c59bfcae9d4a18eb7a230f8000266ac", 2.0061),
+    "samp41": ("8fc28f6c7d15b6ab7d63de0fb94a4901ecdcc0a2", 5.3245),
+    "samp53": ("316f8a9f1dab66a0898c2f1294123e51d370e2c5", 4.3982),
     "samp54": ("0b17ecbe5410050229e43a6bc717649725984bfc", 3.2993),
-    "samp61": ("b88d850d46b17a01bdf957f7c13be612bd1ad762", 2.5128),
+    "samp61": ("c1d38c4f89aeb685b3b04a5dd2bb5538dc2d810c", 2.5043),
 }
 
 
