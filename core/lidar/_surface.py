@@ -30,7 +30,7 @@ from . import _raster as R  # noqa: N812
 __all__ = ["plane_fit", "plane_gradient", "tangent_fill"]
 
 #: Hole cells processed per batch (bounds the k-neighbour arrays' memory).
-BATCH = 65_536
+BATCH = 16_384
 
 
 def _window_planes(z, valid, radius: int, *, spread: bool = False):
@@ -100,8 +100,8 @@ def plane_gradient(z, valid, radius: int, cell: float):
     return gx / cell, gy / cell
 
 
-#: Rows per band of :func:`gradient_at` (bounds the moment rasters' memory).
-BAND = 256
+#: Rows per band of :func:`gradient_at` and :func:`plane_fit` (bounds the moment rasters' memory).
+BAND = 128
 
 
 def gradient_at(z, valid, radius: int, cell: float, rr, cc):
@@ -160,6 +160,20 @@ def plane_fit(z, valid, radius: int):
         window centre and its rise per cell along columns and rows; rms and centre
         are NaN where fewer than 6 valid cells or a degenerate layout.
     """
+    r = int(radius)
+    rows = z.shape[0]
+    out = [np.empty(z.shape) for _ in range(4)]
+    for b0 in range(0, rows, BAND):        # bands with r rows of margin: same values,
+        lo, hi = max(0, b0 - r), min(rows, b0 + BAND + r)   # bounded moment rasters
+        band = _plane_fit(z[lo:hi], valid[lo:hi], r)
+        n = min(BAND, rows - b0)
+        for o, v in zip(out, band):
+            o[b0:b0 + n] = v[b0 - lo:b0 - lo + n]
+    return tuple(out)
+
+
+def _plane_fit(z, valid, radius: int):
+    """:func:`plane_fit` of one raster at once."""
     m = _window_planes(z, valid, radius, spread=True)
     gx, gy = m["gx"], m["gy"]
     with np.errstate(invalid="ignore"):

@@ -171,3 +171,19 @@ def test_gradient_by_bands_equals_the_whole_raster():
             np.testing.assert_array_equal(by, gy[rr, cc])
     finally:
         S.BAND = band
+
+
+def test_plane_fit_by_bands_equals_the_whole_raster():
+    """plane_fit in bands of rows gives the whole raster's rms, centre and gradients."""
+    from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
+    rng = np.random.default_rng(4)
+    z = 80.0 + rng.normal(0, 1, (140, 120)).cumsum(axis=0) * 0.2
+    valid = rng.random(z.shape) < 0.7
+    ref = S._plane_fit(z, valid, 3)
+    band = S.BAND
+    try:
+        for S.BAND in (5, 33, 256):
+            for a, b in zip(S.plane_fit(z, valid, 3), ref):
+                np.testing.assert_array_equal(a, b)
+    finally:
+        S.BAND = band
