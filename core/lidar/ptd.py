@@ -30,8 +30,9 @@ Speed: the Delaunay TIN (Qhull) is rebuilt once per iteration, but only from one
 candidate per ``thin`` cell, and a candidate rejected in a facet that survives the
 rebuild (same three vertices) is not tested again; the others are located by a
 vectorised walk from their previous facet (:class:`~._tin.Tin`, no scipy barycentric
-transform). On one core 49,600 points/s (CPU time, loaded machine) on a
-1 M-point synthetic tile at 20 pts/m² (``benchmarks/results/ground.md``; was 4,810).
+transform). On one core 56,000-60,000 points/s (CPU time, shared machine at load
+2.5-2.9) on a 1 M-point synthetic tile at 20 pts/m² (``benchmarks/results/ground.md``;
+was 4,810).
 
 Measured on the 8 ISPRS filter-test samples at the defaults: mean total error
 4.58 % (was 8.07 %; Axelsson published 4.82 % over all 15 samples, 6.32 % over
