@@ -46,7 +46,8 @@ from .idw import DEFAULT_POWER
 __all__ = ["DtmOutcome", "DtmMethod", "IdwOptions", "IdwMethod", "KrigingOptions",
            "KrigingMethod", "TinOptions", "TinMethod", "DtmSpec", "DTM_METHODS",
            "register_dtm_method", "dtm_method", "DtmRun", "read_ground", "make_dtm",
-           "write_dtm", "dtm_report", "grid_stats"]
+           "write_dtm", "dtm_report", "grid_stats", "check_dtm_input",
+           "MIN_DISTINCT_POINTS"]
 
 
 @dataclass
@@ -410,6 +411,41 @@ def read_ground(path, classes: Sequence[int], *, cell: float, units, extent=None
     return pts, grid_from_points(pts.x, pts.y, cell, extent=box, crs=crs)
 
 
+#: fewest points at distinct positions a DTM is interpolated from (a plane needs three)
+MIN_DISTINCT_POINTS = 3
+
+
+def check_dtm_input(points: ClassPoints, cell: float, path) -> None:
+    """Refuse points a DTM cannot be made of: fewer than :data:`MIN_DISTINCT_POINTS`
+    distinct positions, or a cell size larger than the points' extent (a one-cell DTM).
+
+    Raises
+    ------
+    InputError
+        With the counts / the cell size and the extent (m), and the fix.
+    """
+    x = np.asarray(points.x, dtype=np.float64)
+    y = np.asarray(points.y, dtype=np.float64)
+    if x.size == 0:
+        return                                  # read_ground has refused already
+    distinct = int(np.unique(np.round(np.column_stack([x, y]), 3), axis=0).shape[0])
+    if distinct < MIN_DISTINCT_POINTS:
+        raise InputError(
+            "The {n} point(s) of {path} lie at only {distinct} distinct position(s): a "
+            "DTM needs at least {minimum} points at different positions. Use a cloud with "
+            "more ground points (check CLASSES, or run a ground filter first). No output "
+            "was written.", n=int(x.size), path=path, distinct=distinct,
+            minimum=MIN_DISTINCT_POINTS)
+    width, height = float(x.max() - x.min()), float(y.max() - y.min())
+    if cell > max(width, height):
+        raise InputError(
+            "CELL_SIZE {cell} m is larger than the extent of the points of {path} "
+            "({width} m x {height} m): the DTM would be a single cell. Give a cell size "
+            "smaller than the extent (typically 0.5 to 2 m for a LiDAR DTM). No output "
+            "was written.", cell=f"{cell:g}", path=path, width=f"{width:.3f}",
+            height=f"{height:.3f}")
+
+
 def make_dtm(path, points: ClassPoints, grid: GridSpec, method: DtmMethod, *,
              max_distance: Optional[float] = None, fill: bool = False,
              crs_source: str = "LAS file", monitor: Optional[Monitor] = None) -> DtmRun:
@@ -420,6 +456,7 @@ def make_dtm(path, points: ClassPoints, grid: GridSpec, method: DtmMethod, *,
     InputError
         No cell with a value (too few points, too far apart, on one line).
     """
+    check_dtm_input(points, grid.cell, path)
     t0 = time.perf_counter()
     outcome = method.interpolate(points.x, points.y, points.z, grid,
                                  max_distance=max_distance, fill=fill, monitor=monitor)

@@ -63,7 +63,8 @@ def test_tindtm_without_a_valid_cell_refused(qgis_processing, tmp_path, kind):
     refused(qgis_processing, "geomatics:tindtm", {
         "INPUT": str(src), "CELL_SIZE": 1.0, "OUTPUT": str(out),
         "OUTPUT_HTML": str(tmp_path / "tin.html")},
-        r"has no cell with a value.*No output was written", [src],
+        r"has no cell with a value.*No output was written" if kind == "collinear" else
+        r"CELL_SIZE 1 m is larger than the extent of the points.*single cell", [src],
         [out, tmp_path / "tin.html"])
 
 
@@ -438,3 +439,41 @@ def test_dtmaccuracy_few_check_points_warning_in_arabic_report(tmp_path):
                                                  crs_label="EPSG:32632"), lang="ar")
     html = re.sub(r"</?bdi[^>]*>", "", html)
     assert "تشترط ASPRS (2014) ما لا يقل عن 20 نقطة تحقق" in html
+
+
+# ----------------------------------------------------------------- DTM: 1e9 m cells, 1 point
+@pytest.mark.parametrize("alg", ["idwdtm", "krigingdtm", "tindtm"])
+def test_dtm_cell_size_larger_than_the_cloud_refused(qgis_processing, data, tmp_path, alg):
+    out = tmp_path / "dtm.tif"
+    text = refused(qgis_processing, f"geomatics:{alg}", {
+        "INPUT": str(data["laz"]), "CELL_SIZE": 1e9, "OUTPUT": str(out),
+        "OUTPUT_HTML": str(tmp_path / "dtm.html")},
+        r"CELL_SIZE 1e\+09 m is larger than the extent of the points of .*tile\.laz "
+        r"\(\d+\.\d{3} m x \d+\.\d{3} m\): the DTM would be a single cell\. Give a cell "
+        r"size smaller than the extent", [data["laz"]], [out, tmp_path / "dtm.html"])
+    assert "59." in text                  # the 60 m tile's extent
+
+
+@pytest.mark.parametrize("alg", ["idwdtm", "krigingdtm", "tindtm"])
+@pytest.mark.parametrize("n", [1, 500])
+def test_dtm_of_points_at_one_position_refused(qgis_processing, tmp_path, alg, n):
+    src = tmp_path / "one.las"
+    write_las(src, np.full(n, 500_000.0), np.full(n, 4_000_000.0), np.full(n, 100.0),
+              dimensions={"classification": np.full(n, 2, np.uint8)}, crs="EPSG:32632")
+    out = tmp_path / "dtm.tif"
+    refused(qgis_processing, f"geomatics:{alg}", {
+        "INPUT": str(src), "CELL_SIZE": 1.0, "OUTPUT": str(out)},
+        rf"The {n} point\(s\) of .*one\.las lie at only 1 distinct position\(s\): a DTM "
+        r"needs at least 3 points at different positions", [src], [out])
+
+
+def test_dtm_refusals_in_arabic():
+    from geomatics_toolbox.core.errors import InputError
+    from geomatics_toolbox.core.terrain import dtm as core_dtm
+    pts = core_dtm.ClassPoints(np.array([0.0, 10.0, 0.0]), np.array([0.0, 0.0, 5.0]),
+                               np.zeros(3), None, (2,), 3, {})
+    with pytest.raises(InputError) as info:
+        core_dtm.check_dtm_input(pts, 50.0, "c.laz")
+    assert "CELL_SIZE 50 m" in str(info.value)
+    assert "أكبر من امتداد نقاط \u2068c.laz\u2069 (" in info.value.message("ar")
+    core_dtm.check_dtm_input(pts, 5.0, "c.laz")         # 5 m < the 10 m extent: accepted
