@@ -416,8 +416,10 @@ MIN_DISTINCT_POINTS = 3
 
 
 def check_dtm_input(points: ClassPoints, cell: float, path) -> None:
-    """Refuse points a DTM cannot be made of: fewer than :data:`MIN_DISTINCT_POINTS`
-    distinct positions, or a cell size larger than the points' extent (a one-cell DTM).
+    """Refuse points a DTM cannot be made of (too few positions, too large a cell).
+
+    Fewer than :data:`MIN_DISTINCT_POINTS` distinct positions, or a cell size larger
+    than the points' extent (a one-cell DTM).
 
     Raises
     ------
