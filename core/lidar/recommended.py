@@ -425,9 +425,11 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
     rad = max(1, int(round(opt.grow_window / cell)))
     rms, centre, gx, gy = S.plane_fit(zmin, ~skip, rad)
     with np.errstate(invalid="ignore"):
-        tol = opt.grow_tol + opt.scaler * np.hypot(gx, gy) / cell
+        steep = np.hypot(gx, gy)
+        tol = opt.grow_tol + opt.scaler * steep / cell
         cand = (obj & ~skip & (rms <= opt.grow_rms) & (np.abs(zmin - centre) <= tol)
-                & (np.hypot(gx, gy) <= opt.grow_max_slope * cell))
+                & (steep <= opt.grow_max_slope * cell))
+        del rms, steep                               # not needed by the fill below
         if callable(dtm):
             dtm = dtm(cand)
         cand &= zmin - dtm <= opt.grow_max_rise
