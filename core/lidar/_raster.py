@@ -364,11 +364,28 @@ def checked_xyz(x, y, z, min_points: int):
         Too few points, a single xy position, or coordinates in degrees.
     """
     from ..coords import as_xyz
-    from ..errors import InputError
     x, y, z = as_xyz(x, y, z, projected=True)
+    check_filter_points(x, y, min_points)
+    return x, y, z
+
+
+def check_filter_points(x, y, min_points: int) -> None:
+    """Refuse fewer than ``min_points`` points, or points all at one x/y position.
+
+    The one check of every ground filter (:func:`checked_xyz`, the slope filter).
+
+    Raises
+    ------
+    InputError
+        With the counts and the fix.
+    """
+    x = np.asarray(x)
+    y = np.asarray(y)
     if x.size < min_points:
         raise InputError("A ground filter needs at least {min_points} points, got "
-                         "{n}.", min_points=min_points, n=x.size)
+                         "{n}: give a cloud that covers the ground area, or select more "
+                         "returns / classes.", min_points=min_points, n=x.size)
     if max(float(np.ptp(x)), float(np.ptp(y))) <= 0.0:
-        raise InputError("All points share one x/y position; nothing to filter.")
-    return x, y, z
+        raise InputError("All {n} points share one x/y position, so there is no terrain "
+                         "to compare them with: give a cloud whose points cover the ground "
+                         "area.", n=x.size)

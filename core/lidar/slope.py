@@ -73,6 +73,7 @@ from ..errors import InputError
 from ..progress import Monitor
 from ..reporting import KeyValues, Paragraph, T, Table
 from ._filter import FilterOutcome, GroundFilter
+from ._raster import check_filter_points
 from ._slope_kernel import (
     _bounded_max_slope,
     _check_height,
@@ -98,6 +99,8 @@ __all__ = [
 #: to remove: 10 m handles houses and medium blocks (ISPRS best-of-sweep radii
 #: were 8-20 m; the forest study's 3 m suits forest without buildings).
 DEFAULT_RADIUS = 10.0
+#: fewest points the slope rule compares (two: one may reject the other)
+MIN_POINTS = 2
 #: Default slope threshold (degrees): the best single value over the four ISPRS
 #: samples at r = 10 m (mean total error); the forest study chose 44 at r = 3 m.
 DEFAULT_SLOPE = 40.0
@@ -345,6 +348,7 @@ def slope_filter(x, y, z, *, radius: float = DEFAULT_RADIUS, slope: float = DEFA
     [True, True]
     """
     x, y, z = _xyz(x, y, z)
+    check_filter_points(x, y, MIN_POINTS)
     r = _check_radius(radius)
     theta = _check_slope(slope)
     h = _check_height(height_tolerance)

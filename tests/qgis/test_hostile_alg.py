@@ -477,3 +477,33 @@ def test_dtm_refusals_in_arabic():
     assert "CELL_SIZE 50 m" in str(info.value)
     assert "أكبر من امتداد نقاط \u2068c.laz\u2069 (" in info.value.message("ar")
     core_dtm.check_dtm_input(pts, 5.0, "c.laz")         # 5 m < the 10 m extent: accepted
+
+
+# ----------------------------------------------------------------- slope filter, one position
+@pytest.mark.parametrize("n,message", [
+    (1, r"A ground filter needs at least 2 points, got 1: give a cloud that covers the "
+        r"ground area"),
+    (500, r"All 500 points share one x/y position, so there is no terrain to compare them "
+          r"with: give a cloud whose points cover the ground area"),
+])
+def test_slopegroundfilter_one_position_refused(qgis_processing, tmp_path, n, message):
+    src = tmp_path / "one.las"
+    rng = np.random.default_rng(3)
+    write_las(src, np.full(n, 500_000.0), np.full(n, 4_000_000.0),
+              100 + rng.uniform(0, 20, n), crs="EPSG:32632")
+    out, ground = tmp_path / "c.laz", tmp_path / "g.laz"
+    refused(qgis_processing, "geomatics:slopegroundfilter", {
+        "INPUT": str(src), "OUTPUT": str(out), "GROUND_OUTPUT": str(ground),
+        "OUTPUT_HTML": str(tmp_path / "r.html")}, message, [src],
+        [out, ground, tmp_path / "r.html"])
+
+
+def test_slope_filter_refusal_in_persian_and_two_points_still_classified():
+    from geomatics_toolbox.core.errors import InputError
+    from geomatics_toolbox.core.lidar.slope import slope_filter
+    with pytest.raises(InputError) as info:
+        slope_filter(np.zeros(3), np.zeros(3), np.arange(3.0))
+    assert "یک موقعیت x/y دارند، پس زمینی برای مقایسه" in info.value.message("fa")
+    x = np.array([0.0, 3.0])
+    assert slope_filter(x, np.zeros(2), np.array([0.0, 2.0]), radius=3.0, slope=30.0,
+                        height_tolerance=0).ground.tolist() == [True, False]
