@@ -68,6 +68,12 @@ from . import _raster as R  # noqa: N812
 from . import _tin
 from ._filter import OptionsFilter
 from ._filter import options_or_default as _options
+from ._tin import (
+    BREAKLINE_SLOPE,  # noqa: F401  (re-exported: ptd.BREAKLINE_SLOPE)
+    breakline_facets,
+    breakline_test,
+    mirror_test,
+)
 
 __all__ = ["PtdOptions", "classify", "classify_with_tin", "ptd_filter", "Cancelled",
            "CITATION", "TITLE", "NOISE_PREFILTER"]
@@ -92,10 +98,6 @@ PARCEL_OFFSETS = 3
 
 #: Ground points whose lowest gives a virtual corner its height (:func:`with_corners`).
 CORNER_NEIGHBOURS = 1
-
-#: Facets steeper than this (degrees) and rising more than ``max_distance`` span a
-#: breakline (cliff foot to cliff top) for :func:`breakline_test`.
-BREAKLINE_SLOPE = 45.0
 
 
 @dataclass(frozen=True)
@@ -520,73 +522,6 @@ def _accepted(tin, cx, cy, cz, start, opt):
     ok &= tin.edge[s] >= opt.min_edge if steep is None else \
         (tin.edge[s] >= opt.min_edge) | steep[s]
     return np.flatnonzero(ok), s, d
-
-
-def mirror_test(tin, cx, cy, cz, s, d, ok, opt, steep=None):
-    """Axelsson's mirroring for candidates near breaklines (in place).
-
-    A rejected candidate is mirrored through the nearest vertex of
-    the facet (M = 2 V - P); when M passes the distance and angle tests the
-    candidate is accepted and its distance set to M's. Candidates in a steep facet
-    (a facet spanning a cliff) get :func:`breakline_test` as well.
-    """
-    test = np.flatnonzero(~ok)
-    if test.size == 0 or opt.mirror == "none":
-        return
-    if steep is not None:
-        breakline_test(tin, cx, cy, cz, s, d, ok, opt, steep)
-        test = np.flatnonzero(~ok)
-    v = tin.corners[s[test]]
-    p = np.column_stack((cx[test], cy[test], cz[test]))
-    if opt.mirror == "below":
-        below = np.einsum("ij,ij->i", p - v[:, 0], tin.normal[s[test]]) < 0
-        test, v, p = test[below], v[below], p[below]
-        if test.size == 0:
-            return
-    near = np.argmin(((p[:, None, :] - v) ** 2).sum(axis=2), axis=1)
-    m = 2.0 * v[np.arange(test.size), near] - p
-    start = tin.vertex_facet[tin.simplices[s[test], near]]
-    dm, _, am, _ = tin.distances(m[:, 0], m[:, 1], m[:, 2], tin.locate(m[:, 0], m[:, 1], start))
-    good = (np.abs(dm) <= opt.max_distance) & (am <= opt.max_angle)
-    ok[test[good]] = True
-    d[test[good]] = np.abs(dm[good])
-
-
-def breakline_facets(tin, opt):
-    """Flag facets steeper than ``BREAKLINE_SLOPE`` that rise more than ``max_distance``."""
-    rise = np.ptp(tin.z[tin.simplices], axis=1)
-    return (tin.normal[:, 2] < np.cos(np.radians(BREAKLINE_SLOPE))) & (rise > opt.max_distance)
-
-
-def breakline_test(tin, cx, cy, cz, s, d, ok, opt, steep):
-    """Mirroring at cliffs: accept a candidate that continues the terrain beyond a vertex.
-
-    A facet that spans a breakline (:func:`breakline_facets`: cliff foot to cliff
-    top) says nothing about the candidates inside it. Such a rejected candidate P
-    is mirrored (M = 2 V - P, Axelsson 2000, who uses the nearest facet vertex only)
-    through each of the facet's three vertices and through the three TIN vertices
-    nearest to it in 3D, which at a cliff are often not vertices of its facet; only
-    vertices within two cells of P count. P is accepted when some M falls in a
-    facet that does not span a breakline and lies within ``final_distance`` of it
-    vertically, i.e. P continues the cliff foot or cliff top surface through V.
-    In place, like :func:`mirror_test`.
-    """
-    test = np.flatnonzero(~ok & steep[s])
-    if test.size == 0:
-        return
-    p = np.column_stack((cx[test], cy[test], cz[test]))
-    vert = np.column_stack((tin.xy, tin.z))
-    near = _tin.cKDTree(vert).query(p, k=min(3, tin.z.size))[1].reshape(test.size, -1)
-    vid = np.concatenate((tin.simplices[s[test]], near), axis=1)
-    v = vert[vid]
-    far = (np.linalg.norm(v - p[:, None, :], axis=2) > 2.0 * opt.cell).ravel()
-    m = (2.0 * v - p[:, None, :]).reshape(-1, 3)
-    sm = tin.locate(m[:, 0], m[:, 1], tin.vertex_facet[vid.ravel()])
-    _, dz, _, _ = tin.distances(m[:, 0], m[:, 1], m[:, 2], sm)
-    off = np.where(steep[sm] | far, np.inf, np.abs(dz)).reshape(test.size, -1).min(axis=1)
-    good = off <= opt.final_distance
-    ok[test[good]] = True
-    d[test[good]] = off[good]
 
 
 def final_pass(x, y, z, ground, opt, tin=None):

@@ -87,6 +87,7 @@ from . import _raster as R  # noqa: N812
 from . import _surface as S  # noqa: N812
 from ._filter import OptionsFilter
 from ._filter import options_or_default as _options
+from ._surface import terrain_slope, trend_surface
 
 __all__ = ["RecommendedOptions", "classify", "derive", "recommended_filter", "OptionsFilter",
            "Cancelled", "CITATION", "TITLE"]
@@ -487,65 +488,6 @@ def fill_holes(z, valid, grid, opt, need=None, cache=None):
                           radius=max(1, int(round(opt.fill_radius / grid.cell))),
                           neighbours=opt.fill_neighbours, reach=opt.fill_reach, need=need,
                           cache=cache)
-
-
-def trend_surface(zf, grid, opt):
-    """Smooth large-scale terrain trend removed before the progressive opening.
-
-    Opening ``z - trend`` and adding the trend back is an opening whose flat
-    structuring element is tilted along the regional slope (a plane is removed
-    exactly, objects keep their height above it), so on hillsides the opening and its
-    slope tolerance act on the height above the regional terrain rather than the
-    height above a horizontal. The trend is the opening of radius ``trend_window``
-    (1.5 x the default largest window, wider than any object), box-averaged over
-    ``2 * trend_smooth + 1`` cells. Measured on the ISPRS samples it mostly helps the
-    steep urban samp11 (at the defaults Type II 13.7 % instead of 17.2 %, total
-    8.92 % instead of 9.89 %).
-
-    Parameters
-    ----------
-    zf : ndarray
-        Filled minimum raster.
-    grid : Grid
-        Its grid.
-    opt : RecommendedOptions
-        Options (``trend_window``, ``trend_smooth``).
-
-    Returns
-    -------
-    ndarray
-        The trend raster.
-    """
-    r = max(1, int(np.ceil(opt.trend_window / grid.cell)))
-    k = 2 * max(1, int(np.ceil(opt.trend_smooth / grid.cell))) + 1
-    return R.box_mean(R.opening(zf, r), k)
-
-
-def terrain_slope(zf, grid, opt):
-    """Per-cell slope tolerance from the terrain under a large-window opening.
-
-    The opening with the largest window removes objects; its gradient, averaged over
-    that window, is the local terrain slope t. Tolerance = clip(slope_factor * t,
-    slope_min, slope_max): flat towns keep ``slope_min``, steep terrain gets more.
-
-    Parameters
-    ----------
-    zf : ndarray
-        Filled minimum raster.
-    grid : Grid
-        Its grid.
-    opt : RecommendedOptions
-        Options.
-
-    Returns
-    -------
-    ndarray
-        Slope tolerance per cell (rise/run).
-    """
-    r = max(1, int(np.ceil(opt.max_window / grid.cell)))
-    base = R.opening(zf, r)
-    t = R.box_mean(R.slope(base, grid.cell), 2 * r + 1)
-    return np.clip(opt.slope_factor * t, opt.slope_min, opt.slope_max)
 
 
 def progressive_objects(zf, cell, max_window, slope, rep):
