@@ -111,22 +111,31 @@ def extra_bytes_descriptors(path) -> tuple:
     """``({name: descriptor bytes}, VLR count)`` of a LAS file, read byte by byte."""
     out = {}
     with open(os.fspath(path), "rb") as fh:
-        fh.seek(94)
-        header_size, _, count = struct.unpack("<HII", fh.read(10))
-        pos = header_size
-        for _ in range(count):
-            fh.seek(pos)
-            head = fh.read(54)
-            user = head[2:18].split(b"\0", 1)[0]
-            record, length = struct.unpack("<HH", head[18:22])
-            if user == b"LASF_Spec" and record == 4:
-                fh.seek(pos + 54)
-                data = fh.read(length)
-                for k in range(length // 192):
-                    raw = data[k * 192:(k + 1) * 192]
-                    out[raw[4:36].split(b"\0", 1)[0].decode()] = raw
-            pos += 54 + length
-    return out, count
+        vlrs = list(_extra_bytes_vlrs(fh))
+        for pos, length in vlrs:
+            if pos is None:
+                continue
+            fh.seek(pos + 54)
+            data = fh.read(length)
+            for k in range(length // 192):
+                raw = data[k * 192:(k + 1) * 192]
+                out[raw[4:36].split(b"\0", 1)[0].decode()] = raw
+    return out, len(vlrs)
+
+
+def _extra_bytes_vlrs(fh):
+    """Walk the VLRs of an open LAS file: one ``(pos, length)`` per VLR, ``pos`` None
+    unless it is the ExtraBytes VLR (LASF_Spec, record 4)."""
+    fh.seek(94)
+    header_size, _, count = struct.unpack("<HII", fh.read(10))
+    pos = header_size
+    for _ in range(count):
+        fh.seek(pos)
+        head = fh.read(54)
+        user = head[2:18].split(b"\0", 1)[0]
+        record, length = struct.unpack("<HH", head[18:22])
+        yield (pos if user == b"LASF_Spec" and record == 4 else None), length
+        pos += 54 + length
 
 
 def write_extra_bytes_las(dst, *, n: int = 50) -> dict:
@@ -154,29 +163,22 @@ def write_extra_bytes_las(dst, *, n: int = 50) -> dict:
                 b"amp": (0b00111, 0, 60000, 65535)}
     out = {}
     with open(dst, "r+b") as fh:
-        fh.seek(94)
-        header_size, _, count = struct.unpack("<HII", fh.read(10))
-        pos = header_size
-        for _ in range(count):
-            fh.seek(pos)
-            head = fh.read(54)
-            user = head[2:18].split(b"\0", 1)[0]
-            record, length = struct.unpack("<HH", head[18:22])
-            if user == b"LASF_Spec" and record == 4:
-                for k in range(length // 192):
-                    off = pos + 54 + k * 192
-                    fh.seek(off)
-                    raw = bytearray(fh.read(192))
-                    name = bytes(raw[4:36]).split(b"\0", 1)[0]
-                    opts, lo, hi, nodata = declared[name]
-                    raw[3] = opts
-                    raw[40:48] = struct.pack("<q" if name == b"hag" else "<Q", nodata)
-                    raw[64:72] = struct.pack("<q" if name == b"hag" else "<Q", lo)
-                    raw[88:96] = struct.pack("<q" if name == b"hag" else "<Q", hi)
-                    fh.seek(off)
-                    fh.write(bytes(raw))
-                    out[name.decode()] = bytes(raw)
-            pos += 54 + length
+        for pos, length in list(_extra_bytes_vlrs(fh)):
+            if pos is None:
+                continue
+            for k in range(length // 192):
+                off = pos + 54 + k * 192
+                fh.seek(off)
+                raw = bytearray(fh.read(192))
+                name = bytes(raw[4:36]).split(b"\0", 1)[0]
+                opts, lo, hi, nodata = declared[name]
+                raw[3] = opts
+                raw[40:48] = struct.pack("<q" if name == b"hag" else "<Q", nodata)
+                raw[64:72] = struct.pack("<q" if name == b"hag" else "<Q", lo)
+                raw[88:96] = struct.pack("<q" if name == b"hag" else "<Q", hi)
+                fh.seek(off)
+                fh.write(bytes(raw))
+                out[name.decode()] = bytes(raw)
     return out
 
 
