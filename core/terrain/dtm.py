@@ -415,6 +415,32 @@ def read_ground(path, classes: Sequence[int], *, cell: float, units, extent=None
 MIN_DISTINCT_POINTS = 3
 
 
+def _distinct_positions(x, y, limit: int) -> int:
+    """Count the distinct (x, y) positions (to the millimetre), up to ``limit``.
+
+    O(n) with an early stop, no sort: a DTM's millions of ground points pass after
+    looking for ``limit`` different positions (``np.unique`` over the rows took 1.6 s
+    CPU for 2.5 M points).
+
+    >>> _distinct_positions([0.0, 0.0, 1.0, 0.0004], [0.0, 0.0, 0.0, 0.0], 3)
+    2
+    >>> _distinct_positions([0.0, 1.0, 2.0, 3.0], [0.0, 0.0, 0.0, 0.0], 3)
+    3
+    """
+    x, y = np.asarray(x, dtype=np.float64), np.asarray(y, dtype=np.float64)
+    if len(x) > 4096:       # a subset's count never exceeds the whole's: stop early
+        head = _distinct_positions(x[:4096], y[:4096], limit)
+        if head >= limit:
+            return head
+    xy = np.round(np.column_stack([x, y]), 3)
+    other = np.ones(len(xy), dtype=bool)
+    found = 0
+    while found < limit and other.any():
+        found += 1
+        other &= np.any(xy != xy[np.argmax(other)], axis=1)
+    return found
+
+
 def check_dtm_input(points: ClassPoints, cell: float, path) -> None:
     """Refuse points a DTM cannot be made of (too few positions, too large a cell).
 
@@ -430,7 +456,7 @@ def check_dtm_input(points: ClassPoints, cell: float, path) -> None:
     y = np.asarray(points.y, dtype=np.float64)
     if x.size == 0:
         return                                  # read_ground has refused already
-    distinct = int(np.unique(np.round(np.column_stack([x, y]), 3), axis=0).shape[0])
+    distinct = _distinct_positions(x, y, MIN_DISTINCT_POINTS)
     if distinct < MIN_DISTINCT_POINTS:
         raise InputError(
             "The {n} point(s) of {path} lie at only {distinct} distinct position(s): a "
