@@ -49,15 +49,7 @@ class Kriging:
             raise InputError("drift must be one of {choices}; got {drift}.",
                              choices=", ".join(DRIFTS), drift=repr(drift))
         n_closest = int(n_closest)
-        n_min = 4 if drift == "linear" else 2
-        if n_closest < n_min:
-            raise InputError("n_closest must be at least {n_min} for {kind} kriging, got "
-                             "{value}.", n_min=n_min, value=n_closest,
-                             kind="universal" if drift == "linear" else "ordinary")
-        if n_closest > x.size:
-            raise InputError("Only {n} distinct point(s) to krige from but n_closest "
-                             "= {k} neighbours were asked for; lower the number "
-                             "of neighbours or use more points.", n=int(x.size), k=n_closest)
+        check_neighbours(n_closest, int(x.size), drift)
         self.x0, self.y0 = float(x.mean()), float(y.mean())
         self.x, self.y, self.z = x - self.x0, y - self.y0, z
         self.variogram = variogram
@@ -191,6 +183,22 @@ class Kriging:
             mon.step(s1 / qx.size)
         return out, var
 
+    def check_cross_validation(self) -> None:
+        """Refuse leave-one-out cross-validation when no point can be left out.
+
+        Raises
+        ------
+        InputError
+            Naming NEIGHBOURS and CV_POINTS (the kriging algorithm's parameters).
+        """
+        if self.n_closest >= self.n_points:
+            # the algorithm's parameters (NEIGHBOURS, CV_POINTS), as the user sets them
+            raise InputError("Cross-validation (CV_POINTS) leaves each point out, so "
+                             "Neighbours per cell (NEIGHBOURS = {k}) must be fewer than the "
+                             "{n} distinct point positions: set NEIGHBOURS to {m} or fewer, "
+                             "or CV_POINTS to 0.", k=self.n_closest, n=self.n_points,
+                             m=self.n_points - 1)
+
     def cross_validate(self, n: int = 1000, *, seed: int = 0) -> Dict[str, float]:
         """Leave-one-out cross-validation on a random subsample of ``n`` points.
 
@@ -202,9 +210,7 @@ class Kriging:
         n = int(min(n, self.n_points))
         if n < 1:
             raise InputError("cross-validation needs at least one point.")
-        if self.n_closest >= self.n_points:
-            raise InputError("Leave-one-out needs n_closest smaller than the number of "
-                             "points.")
+        self.check_cross_validation()
         rng = np.random.default_rng(seed)
         sel = np.sort(rng.choice(self.n_points, n, replace=False))
         qx, qy = self.x[sel], self.y[sel]
@@ -232,6 +238,49 @@ class Kriging:
                 "mae": float(np.mean(np.abs(err))),
                 "mse_std": float(zs.mean()) if zs.size else float("nan"),
                 "rmsse": float(np.sqrt(np.mean(zs ** 2))) if zs.size else float("nan")}
+
+
+def check_neighbours(n_closest: int, n_points: int, drift: str) -> None:
+    """Refuse a neighbourhood kriging cannot be solved with, naming the user's parameters.
+
+    The messages name the kriging algorithm's parameters (Neighbours per cell,
+    ``NEIGHBOURS``; ``KRIGING_TYPE``), which is what the user can change; ``n_closest``
+    is the same number in this module.
+
+    Raises
+    ------
+    InputError
+        Fewer neighbours than the kriging system needs (2 ordinary, 4 universal), fewer
+        distinct points than that, or more neighbours than distinct points.
+
+    Examples
+    --------
+    >>> check_neighbours(16, 100, "none")
+    >>> try:
+    ...     check_neighbours(16, 10, "none")
+    ... except InputError as e:
+    ...     print(e)
+    Only 10 distinct point positions to krige from, but Neighbours per cell (NEIGHBOURS) is 16: set NEIGHBOURS to 10 or fewer, or use a cloud with more ground points.
+    """
+    if drift == "linear":
+        if n_points < 4:
+            raise InputError("Universal kriging (KRIGING_TYPE 1) needs at least 4 distinct "
+                             "point positions, got {n}: choose ordinary kriging "
+                             "(KRIGING_TYPE 0) or use a cloud with more ground points.",
+                             n=n_points)
+        if n_closest < 4:
+            raise InputError("Universal kriging (KRIGING_TYPE 1) needs at least 4 "
+                             "Neighbours per cell (NEIGHBOURS), got {value}: set NEIGHBOURS "
+                             "to 4 or more, or choose ordinary kriging (KRIGING_TYPE 0).",
+                             value=n_closest)
+    elif n_closest < 2:
+        raise InputError("Ordinary kriging needs at least 2 Neighbours per cell "
+                         "(NEIGHBOURS), got {value}: set NEIGHBOURS to 2 or more.",
+                         value=n_closest)
+    if n_closest > n_points:
+        raise InputError("Only {n} distinct point positions to krige from, but Neighbours "
+                         "per cell (NEIGHBOURS) is {k}: set NEIGHBOURS to {n} or fewer, or "
+                         "use a cloud with more ground points.", n=n_points, k=n_closest)
 
 
 def single_threaded_blas():

@@ -349,9 +349,11 @@ def kriging_grid(x, y, z, grid: GridSpec, *, model: str = "spherical",
     mon.step(0.05)
     kr = Kriging(x, y, z, variogram=variogram, drift=drift, n_closest=n_closest,
                  workers=workers)
-    max_distance = resolve_max_distance(grid, kr.n_points, max_distance, fill=fill)
     cv = None
     cv_points = int(cv_points)
+    if cv_points > 0:
+        kr.check_cross_validation()         # before the grid, not after it
+    max_distance = resolve_max_distance(grid, kr.n_points, max_distance, fill=fill)
     sub = mon.sub(0.1, 0.95 if cv_points else 1.0)
     zg = np.full(grid.shape, np.nan)
     vg = np.full(grid.shape, np.nan)

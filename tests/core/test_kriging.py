@@ -129,7 +129,7 @@ def test_parse_parameters_and_bad_input():
     with pytest.raises(ValueError, match="name=value"):
         parse_variogram_parameters("2, 50", "spherical")
     x, y, z = terrain(10)
-    with pytest.raises(ValueError, match="n_closest = 16 neighbours"):
+    with pytest.raises(ValueError, match=r"Neighbours per cell \(NEIGHBOURS\) is 16"):
         Kriging(x, y, z, variogram=v, n_closest=16)
     with pytest.raises(ValueError, match="variogram model must be one of"):
         fit_variogram(x, y, z, model="cubic")
@@ -150,3 +150,24 @@ def test_flat_ground_gives_flat_dtm_with_zero_variance():
     assert ok.sum() > 1000 and np.all(res.z[ok] == 7.5)
     assert np.array_equal(ok, np.isfinite(res.variance)) and np.all(res.variance[ok] == 0)
     assert res.variogram.as_dict()["sill"] == 0 and res.cross_validation["rmse"] == 0
+
+
+def test_neighbour_refusals_name_the_algorithm_parameters():
+    """NEIGHBOURS / KRIGING_TYPE / CV_POINTS (what the user sets), never n_closest."""
+    v = given_variogram("spherical", nugget=0.0, sill=2.0, range_=50.0)
+    x, y, z = terrain(3)
+    with pytest.raises(ValueError, match=r"Universal kriging \(KRIGING_TYPE 1\) needs at "
+                                         r"least 4 distinct point positions, got 3"):
+        Kriging(x, y, z, variogram=v, n_closest=3, drift="linear")
+    with pytest.raises(ValueError, match=r"Ordinary kriging needs at least 2 Neighbours per "
+                                         r"cell \(NEIGHBOURS\), got 1"):
+        Kriging(x, y, z, variogram=v, n_closest=1)
+    x, y, z = terrain(10)
+    grid = grid_from_extent((x.min(), x.max(), y.min(), y.max()), 5.0)
+    calls = []
+    with pytest.raises(ValueError, match=r"set NEIGHBOURS to 9 or fewer, or CV_POINTS to 0"):
+        kriging_grid(x, y, z, grid, variogram=v, n_closest=10, cv_points=5,
+                     progress=calls.append)
+    assert max(calls) < 0.1                 # refused before the grid was kriged
+    cv = Kriging(x, y, z, variogram=v, n_closest=9).cross_validate(5)
+    assert cv["n"] == 5 and np.isfinite(cv["rmse"])

@@ -50,3 +50,30 @@ def test_core_error_in_arabic_through_processing_run(qgis_processing, arabic_ui,
             "DTM": dtm, "CHECKPOINTS_CSV": str(missing), "OUTPUT_HTML": str(report)})
     assert str(info.value) == f"ملف نقاط التحقق غير موجود: {FSI}{missing}{PDI}."
     assert not report.exists()
+
+
+def test_kriging_neighbours_refusal_in_arabic_names_the_dialog_label(qgis_processing,
+                                                                     arabic_ui, tmp_path):
+    """The Arabic message names the label of the dialog and the qgis_process id."""
+    import numpy as np
+
+    from geomatics_toolbox.core.io.las import write_las
+    rng = np.random.default_rng(5)
+    src = tmp_path / "ten.las"
+    write_las(src, 500_000 + rng.uniform(0, 20, 10), 4_000_000 + rng.uniform(0, 20, 10),
+              100 + rng.uniform(0, 2, 10), dimensions={"classification": np.full(10, 2, "u1")},
+              crs="EPSG:32632")
+    with pytest.raises(QgsProcessingException) as info:
+        qgis_processing.run("geomatics:krigingdtm", {
+            "INPUT": str(src), "CELL_SIZE": 1.0, "NEIGHBOURS": 16,
+            "OUTPUT": str(tmp_path / "dtm.tif")})
+    assert str(info.value) == (
+        f"لا توجد إلا {FSI}10{PDI} مواضع متمايزة للنقاط للكريغينغ، لكن «عدد الجيران لكل "
+        f"خلية» (NEIGHBOURS) هو {FSI}16{PDI}: اجعل قيمة NEIGHBOURS \u200f{FSI}10{PDI} أو "
+        "أقل، أو استخدم سحابة نقاط فيها نقاط أرض أكثر.")
+    # the label as the Arabic dialog shows it (the translation of the parameter's label)
+    import json
+    from pathlib import Path
+    base = Path(__file__).resolve().parents[2] / "i18n" / "strings" / "base.json"
+    label = json.loads(base.read_text(encoding="utf-8"))["Neighbours per cell"]["ar"]
+    assert f"«{label}» (NEIGHBOURS)" in str(info.value)

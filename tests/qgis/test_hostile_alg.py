@@ -507,3 +507,51 @@ def test_slope_filter_refusal_in_persian_and_two_points_still_classified():
     x = np.array([0.0, 3.0])
     assert slope_filter(x, np.zeros(2), np.array([0.0, 2.0]), radius=3.0, slope=30.0,
                         height_tolerance=0).ground.tolist() == [True, False]
+
+
+# ----------------------------------------------------------------- kriging: NEIGHBOURS named
+def _ten_ground_points(path):
+    """12 ground points at 10 distinct positions (two repeated), heights 0–2 m."""
+    rng = np.random.default_rng(5)
+    x = 500_000.0 + rng.uniform(0, 20, 10)
+    y = 4_000_000.0 + rng.uniform(0, 20, 10)
+    x, y = np.r_[x, x[:2]], np.r_[y, y[:2]]
+    z = 100.0 + rng.uniform(0, 2, 12)
+    write_las(path, x, y, z, dimensions={"classification": np.full(12, 2, np.uint8)},
+              crs="EPSG:32632")
+
+
+@pytest.mark.parametrize("params,message", [
+    ({}, r"Only 10 distinct point positions to krige from, but Neighbours per cell "
+         r"\(NEIGHBOURS\) is 16: set NEIGHBOURS to 10 or fewer, or use a cloud with more "
+         r"ground points\."),
+    ({"KRIGING_TYPE": 1, "NEIGHBOURS": 3},
+     r"Universal kriging \(KRIGING_TYPE 1\) needs at least 4 Neighbours per cell "
+     r"\(NEIGHBOURS\), got 3: set NEIGHBOURS to 4 or more, or choose ordinary kriging "
+     r"\(KRIGING_TYPE 0\)\."),
+    ({"NEIGHBOURS": 10, "CV_POINTS": 5},
+     r"Cross-validation \(CV_POINTS\) leaves each point out, so Neighbours per cell "
+     r"\(NEIGHBOURS = 10\) must be fewer than the 10 distinct point positions: set "
+     r"NEIGHBOURS to 9 or fewer, or CV_POINTS to 0\."),
+], ids=["neighbours>points", "universal<4", "cv-global"])
+def test_krigingdtm_too_few_points_names_neighbours(qgis_processing, tmp_path, params,
+                                                    message):
+    src = tmp_path / "ten.las"
+    _ten_ground_points(src)
+    out, var = tmp_path / "dtm.tif", tmp_path / "var.tif"
+    text = refused(qgis_processing, "geomatics:krigingdtm", {
+        "INPUT": str(src), "CELL_SIZE": 1.0, "OUTPUT": str(out), "OUTPUT_VARIANCE": str(var),
+        **params}, message, [src], [out, var])
+    assert "n_closest" not in text
+
+
+def test_krigingdtm_the_named_fix_works(qgis_processing, tmp_path):
+    """What the refusals say to do runs: NEIGHBOURS 10 (global), 9 with CV_POINTS."""
+    src = tmp_path / "ten.las"
+    _ten_ground_points(src)
+    for k, cv in ((10, 0), (9, 5), (4, 0)):
+        res = qgis_processing.run("geomatics:krigingdtm", {
+            "INPUT": str(src), "CELL_SIZE": 1.0, "NEIGHBOURS": k, "CV_POINTS": cv,
+            "KRIGING_TYPE": int(k == 4), "OUTPUT": str(tmp_path / f"d{k}.tif")})
+        assert res["N_POINTS"] == 10 and res["VALID_CELLS"] > 100, (k, res)
+        assert np.isfinite(res["CV_RMSE"]) == (cv > 0)
