@@ -259,8 +259,8 @@ def check_neighbours(n_closest: int, n_points: int, drift: str) -> None:
     >>> try:
     ...     check_neighbours(16, 10, "none")
     ... except InputError as e:
-    ...     print(e)
-    Only 10 distinct point positions to krige from, but Neighbours per cell (NEIGHBOURS) is 16: set NEIGHBOURS to 10 or fewer, or use a cloud with more ground points.
+    ...     print(str(e).split(": ")[1])
+    set NEIGHBOURS to 10 or fewer, or use a cloud with more ground points.
     """
     if drift == "linear":
         if n_points < 4:
