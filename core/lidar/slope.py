@@ -186,6 +186,7 @@ def max_slope(x, y, z, *, radius: float = DEFAULT_RADIUS,
         ``v`` per point (``nan`` for points not evaluated).
     """
     x, y, z = _xyz(x, y, z)
+    check_filter_points(x, y, MIN_POINTS)
     r = _check_radius(radius)
     h = _check_height(height_tolerance)
     lo, hi = sorted(float(a) for a in slope_range)

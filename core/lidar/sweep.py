@@ -30,6 +30,7 @@ from ..reporting import (
     translator,
 )
 from . import slope as sf
+from ._raster import check_filter_points
 from ._slope_kernel import (
     _bounded_max_slope,
     _check_height,
@@ -165,8 +166,15 @@ def threshold_sweep(x, y, z, reference_ground, *, slopes: Sequence[float] = (
     Returns
     -------
     SweepResult
+
+    Raises
+    ------
+    InputError
+        Fewer than 2 points or every point at one x/y position (as :func:`slope_filter`),
+        reference labels that do not match, an invalid option.
     """
     x, y, z = _xyz(x, y, z)
+    check_filter_points(x, y, sf.MIN_POINTS)        # the slope filter's own refusals
     ref = np.asarray(reference_ground, dtype=bool).ravel()
     if ref.size != x.size:
         raise InputError("The reference has {labels} labels but the cloud has {n} "

@@ -415,3 +415,24 @@ def test_isprs_adaptive_mode_improves_steep_sample(isprs_dir):
                             neighbours=sel.candidates)
         tot[mode] = assess(r.ground, ref).total
     assert tot["adaptive"] < tot["exact"] - 2.0, tot
+
+
+@pytest.mark.parametrize("n,message", [
+    (1, r"A ground filter needs at least 2 points, got 1"),
+    (500, r"All 500 points share one x/y position, so there is no terrain to compare them "
+          r"with"),
+])
+def test_sweep_and_max_slope_refuse_one_position_as_the_filter_does(n, message):
+    """The sweep scored every setting 'all ground' on one x/y position; now refused."""
+    x, y = np.full(n, 7.0), np.full(n, 3.0)
+    z = np.random.default_rng(1).uniform(0, 20, n)
+    with pytest.raises(InputError, match=message):
+        sw.threshold_sweep(x, y, z, np.ones(n, bool), slopes=[40.0], radii=[3.0])
+    with pytest.raises(InputError, match=message):
+        sf.max_slope(x, y, z)
+    with pytest.raises(InputError) as info:
+        sw.threshold_sweep(x, y, z, np.ones(n, bool), slopes=[40.0], radii=[3.0])
+    assert info.value.message("ar") != str(info.value)          # translated
+    two = sw.threshold_sweep([0.0, 3.0], [0.0, 0.0], [0.0, 2.0], [True, False],
+                             slopes=[30.0], radii=[3.0], height_tolerance=0.0)
+    assert two.best.n_ground == 1 and two.best.total == 0.0     # 2 points still swept

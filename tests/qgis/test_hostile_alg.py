@@ -555,3 +555,23 @@ def test_krigingdtm_the_named_fix_works(qgis_processing, tmp_path):
             "KRIGING_TYPE": int(k == 4), "OUTPUT": str(tmp_path / f"d{k}.tif")})
         assert res["N_POINTS"] == 10 and res["VALID_CELLS"] > 100, (k, res)
         assert np.isfinite(res["CV_RMSE"]) == (cv > 0)
+
+
+# ----------------------------------------------------------------- sweep, one position
+@pytest.mark.parametrize("n,message", [
+    (1, r"A ground filter needs at least 2 points, got 1: give a cloud that covers the "
+        r"ground area"),
+    (500, r"All 500 points share one x/y position, so there is no terrain to compare them "
+          r"with: give a cloud whose points cover the ground area"),
+])
+def test_slopethresholdsweep_one_position_refused(qgis_processing, tmp_path, n, message):
+    src = tmp_path / "one.las"
+    rng = np.random.default_rng(3)
+    write_las(src, np.full(n, 500_000.0), np.full(n, 4_000_000.0),
+              100 + rng.uniform(0, 20, n),
+              dimensions={"classification": np.where(np.arange(n) % 2, 6, 2).astype("u1")},
+              crs="EPSG:32632")
+    csv, html, out = tmp_path / "sweep.csv", tmp_path / "sweep.html", tmp_path / "c.laz"
+    refused(qgis_processing, "geomatics:slopethresholdsweep", {
+        "INPUT": str(src), "SLOPES": "40, 50", "RADII": "3", "OUTPUT_CSV": str(csv),
+        "OUTPUT_HTML": str(html), "OUTPUT": str(out)}, message, [src], [csv, html, out])
