@@ -48,6 +48,9 @@ spaces/underscores ignored), optional leading ``# CRS: …`` line:
 * optional ``enabled`` (``enable``, ``use``: 1/0, true/false, yes/no), ``role``
   (``gcp`` or ``check`` — check points are kept apart from the fit) and ``weight``.
 
+Both kinds of file are decoded by :mod:`.text` (UTF-16 with a BOM, UTF-8, else the
+machine's Windows code page), the same rule as check-point files.
+
 ``pixel_origin="center"`` says that the image coordinates are pixel-centre indices
 (e.g. 0-based array indices ``[row, col]`` of the pixel holding the feature); 0.5 is
 then added to both to reach the corner convention.
@@ -63,6 +66,7 @@ from typing import List, Optional, Sequence
 import numpy as np
 
 from ..errors import InputError
+from .text import read_text
 
 ROLES = ("gcp", "check")
 _ROLE_ALIASES = {"gcp": "gcp", "control": "gcp", "gcps": "gcp", "cp": "gcp", "": "gcp",
@@ -257,14 +261,7 @@ def _read_text(path) -> str:
     path = os.fspath(path)
     if not os.path.exists(path):
         raise InputError("GCP file not found: {path}. Check the path.", path=path)
-    with open(path, "rb") as fh:
-        raw = fh.read()
-    for enc in ("utf-8-sig", "cp1252"):
-        try:
-            return raw.decode(enc)
-        except UnicodeDecodeError:
-            continue
-    raise InputError("{path} is not a text file.", path=path)
+    return read_text(path)          # the one rule of GCP and check-point files
 
 
 def _crs_line(line: str) -> Optional[str]:

@@ -19,6 +19,7 @@ from ..errors import InputError
 from ..progress import Monitor
 from .las import LasInfo, iter_las_chunks, las_info
 from .raster import write_geotiff
+from .text import read_text
 from .units import METRIC, Units
 
 
@@ -179,6 +180,8 @@ def read_checkpoints_csv(path, *, x_field: str = "", y_field: str = "",
     columns are found by name (x/east/easting, y/north/northing, z/h/height/elevation,
     optional id/name), or given by ``x_field``/``y_field``/``z_field``; without a
     header the columns are ``id, x, y, z`` (4+ columns) or ``x, y, z`` (3 columns).
+    The text is decoded by :func:`.text.read_text`, the rule of GCP files too (UTF-16
+    with a BOM, UTF-8, else the machine's Windows code page).
     """
     path = os.fspath(path)
     rows = _delimited_rows(path)
@@ -217,14 +220,7 @@ def _delimited_rows(path: str) -> List[List[str]]:
     """Return the non-comment rows of a delimited text file, delimiter detected."""
     if not os.path.exists(path):
         raise InputError("Check point file not found: {path}.", path=path)
-    with open(path, "rb") as fh:
-        raw = fh.read()
-    try:
-        text = raw.decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        raise InputError("{path} is not UTF-8 text (byte {offset} cannot be read): save the "
-                         "check points as CSV UTF-8 (in Excel: Save As, CSV UTF-8) and run "
-                         "again.", path=path, offset=exc.start) from exc
+    text = read_text(path)          # the one rule of GCP and check-point files
     lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
     if not lines:
         raise InputError("{path} holds no check points.", path=path)

@@ -277,20 +277,48 @@ def test_publishoutputs_refuses_a_file_that_is_not_its_kind(qgis_processing, tmp
         param: str(src), out_param[param]: str(out)}, message, [src], [out])
 
 
-def test_dtmaccuracy_check_points_not_utf8_refused_with_the_fix(qgis_processing, data,
-                                                                tmp_path):
-    """A Windows-1256 (Excel 'CSV') file with Arabic ids: was "'utf-8' codec can't decode
-    byte 0xc1 in position 8" (Python's words, no file, no fix)."""
+@pytest.mark.parametrize("page,names", [
+    ("cp1252", ["Château-1", "Müller-Süd 2"]),       # Western Windows, Excel "CSV"
+    ("cp1256", ["نقطة1", "چک 2"]),                   # Arabic / Persian Windows
+])
+def test_dtmaccuracy_check_points_in_the_windows_code_page(qgis_processing, data, tmp_path,
+                                                          monkeypatch, page, names):
+    """An Excel 'CSV' (the machine's ANSI code page) with non-ASCII names: was refused
+    ("not UTF-8") while GCP files of the same bytes were read as cp1252; now both
+    readers share core.io.text and the names come out as written."""
+    from osgeo import ogr
+
+    from geomatics_toolbox.core.io import text as text_io
+    monkeypatch.setattr(text_io, "legacy_encoding", lambda: page)
     dtm = qgis_processing.run("geomatics:idwdtm", {
         "INPUT": str(data["laz"]), "CELL_SIZE": 1.0, "FILL_GAPS": True,
         "OUTPUT": str(tmp_path / "dtm.tif")})["OUTPUT"]
     csv = tmp_path / "cp.csv"
-    csv.write_bytes("id,x,y,z\nنقطة1,500010,4000010,100\n".encode("cp1256"))
+    csv.write_bytes(("id,x,y,z\n" + "".join(
+        f"{n},{500010 + 9 * k},{4000010 + 7 * k},100\n" for k, n in enumerate(names))
+    ).encode(page))
+    res = qgis_processing.run("geomatics:dtmaccuracy", {
+        "DTM": dtm, "CHECKPOINTS_CSV": str(csv), "OUTPUT": str(tmp_path / "res.gpkg"),
+        "OUTPUT_HTML": str(tmp_path / "acc.html")})
+    ds = ogr.Open(str(res["OUTPUT"]).split("|")[0])
+    assert [f.GetField("id") for f in ds.GetLayer(0)] == names
+    ds = None
+    assert all(n in (tmp_path / "acc.html").read_text(encoding="utf-8") for n in names)
+
+
+def test_dtmaccuracy_binary_check_point_file_refused_with_the_fix(qgis_processing, data,
+                                                                  tmp_path):
+    """Was "'utf-8' codec can't decode byte …" (Python's words, no file, no fix)."""
+    dtm = qgis_processing.run("geomatics:idwdtm", {
+        "INPUT": str(data["laz"]), "CELL_SIZE": 1.0, "FILL_GAPS": True,
+        "OUTPUT": str(tmp_path / "dtm.tif")})["OUTPUT"]
+    csv = tmp_path / "cp.csv"
+    csv.write_bytes(b"id,x,y,z\nA,500010,4000010,100\n\x00\x00PK\x03\x04")
     out = tmp_path / "acc.html"
     text = refused(qgis_processing, "geomatics:dtmaccuracy", {
         "DTM": dtm, "CHECKPOINTS_CSV": str(csv), "OUTPUT_HTML": str(out)},
-        r"cp\.csv is not UTF-8 text \(byte 9 cannot be read\): save the check points as CSV "
-        r"UTF-8", [dtm, csv], [out])
+        r"cp\.csv is not a text file in UTF-8 or cp125\d \(byte 30 cannot be read\): save "
+        r"it as text in UTF-8 \(in Excel: Save As, CSV UTF-8\)", [dtm, csv], [out])
     assert "codec" not in text
 
 
