@@ -129,6 +129,24 @@ def _metric_key(row: SweepRow, metric: str) -> float:
     return -val if SLOPE_METRICS[metric] else val
 
 
+def _sweep_settings(slopes, radii, height_tolerance, metric, mode):
+    """Return the checked ``(slopes, radii, tolerances)`` lists of a sweep."""
+    if metric not in SLOPE_METRICS:
+        raise InputError("metric must be one of {choices}, got {metric}.",
+                         choices=", ".join(SLOPE_METRICS), metric=repr(metric))
+    if mode not in MODES:
+        raise InputError("mode must be one of {choices}, got {mode}.",
+                         choices=", ".join(MODES), mode=repr(mode))
+    slopes = [_check_slope(s) for s in np.atleast_1d(np.asarray(slopes, dtype=float))]
+    radii = [_check_radius(r) for r in np.atleast_1d(np.asarray(radii, dtype=float))]
+    if not slopes or not radii:
+        raise InputError("Give at least one slope threshold and one radius to sweep.")
+    hs = [_check_height(v) for v in np.atleast_1d(np.asarray(height_tolerance, dtype=float))]
+    if not hs:
+        raise InputError("Give at least one height tolerance (e.g. 0).")
+    return slopes, radii, hs
+
+
 def threshold_sweep(x, y, z, reference_ground, *, slopes: Sequence[float] = (
         40, 44, 48, 52, 56, 60), radii: Sequence[float] = (DEFAULT_RADIUS,),
         height_tolerance=DEFAULT_HEIGHT_TOLERANCE, classify=None, neighbours=None,
@@ -180,19 +198,7 @@ def threshold_sweep(x, y, z, reference_ground, *, slopes: Sequence[float] = (
         raise InputError("The reference has {labels} labels but the cloud has {n} "
                          "points; the reference must label the same points in the same "
                          "order.", labels=int(ref.size), n=int(x.size))
-    if metric not in SLOPE_METRICS:
-        raise InputError("metric must be one of {choices}, got {metric}.",
-                         choices=", ".join(SLOPE_METRICS), metric=repr(metric))
-    if mode not in MODES:
-        raise InputError("mode must be one of {choices}, got {mode}.",
-                         choices=", ".join(MODES), mode=repr(mode))
-    slopes = [_check_slope(s) for s in np.atleast_1d(np.asarray(slopes, dtype=float))]
-    radii = [_check_radius(r) for r in np.atleast_1d(np.asarray(radii, dtype=float))]
-    if not slopes or not radii:
-        raise InputError("Give at least one slope threshold and one radius to sweep.")
-    hs = [_check_height(v) for v in np.atleast_1d(np.asarray(height_tolerance, dtype=float))]
-    if not hs:
-        raise InputError("Give at least one height tolerance (e.g. 0).")
+    slopes, radii, hs = _sweep_settings(slopes, radii, height_tolerance, metric, mode)
     cm = _mask(classify, x.size, "classify")
     nm = _mask(neighbours, x.size, "neighbours")
     mon = Monitor(progress, cancel)
