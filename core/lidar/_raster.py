@@ -92,11 +92,49 @@ class Grid:
 
     def index(self, x, y):
         """Flat row-major cell index of every point (int64)."""
-        col = np.minimum(((x - self.x0) / self.cell).astype(np.int64), self.cols - 1)
-        row = np.minimum(((y - self.y0) / self.cell).astype(np.int64), self.rows - 1)
-        row *= self.cols
-        row += col
-        return row
+        out = np.empty(np.size(x), np.int64)
+        for s in range(0, out.size, CHUNK):          # temporaries stay in the cache
+            col = _axis(x[s:s + CHUNK], self.x0, self.cell, self.cols)[0]
+            row = _axis(y[s:s + CHUNK], self.y0, self.cell, self.rows)[0]
+            row *= self.cols
+            row += col
+            out[s:s + CHUNK] = row
+        return out
+
+
+#: points per block of the per-point raster look-ups (:class:`PointCells`,
+#: :meth:`Grid.index`): the temporaries of a block stay in the processor's cache
+CHUNK = 1 << 16
+
+
+def _axis(v, origin, cell, n, fractions=False):
+    """Cell index along one axis and, with ``fractions``, the bilinear lower index and weight.
+
+    ``(v - origin) / cell`` is computed once for both, in the same float64 operations
+    as the plain expressions (same bits).
+    """
+    u = v - origin
+    u /= cell
+    i = u.astype(np.int64)
+    np.minimum(i, n - 1, out=i)
+    if not fractions:
+        return i, None, None
+    u -= 0.5
+    np.clip(u, 0.0, n - 1.0, out=u)
+    i0 = u.astype(np.int64)
+    np.minimum(i0, max(n - 2, 0), out=i0)
+    u -= i0
+    return i, i0, u
+
+
+def changed(a, b):
+    """Cells whose values differ bit for bit (a NaN equals a NaN of the same bits).
+
+    >>> changed(np.array([1.0, np.nan, 0.0]), np.array([1.0, np.nan, -0.0])).tolist()
+    [False, False, True]
+    """
+    a, b = np.ascontiguousarray(a, np.float64), np.ascontiguousarray(b, np.float64)
+    return a.view(np.int64) != b.view(np.int64)
 
 
 class PointCells:
@@ -115,29 +153,26 @@ class PointCells:
 
     def __init__(self, x, y, grid):
         self.grid = grid
-        self.idx = grid.index(x, y)
+        n = np.size(x)
+        self.idx, self.i00 = np.empty(n, np.int64), np.empty(n, np.int64)
+        # the fractions are taken in float64 and stored in float32: rounded once, from
+        # the offset inside the cell, so they do not depend on where the grid starts
+        self.fx, self.fy = np.empty(n, np.float32), np.empty(n, np.float32)
+        for s in range(0, n, CHUNK):
+            e = s + CHUNK
+            col, c0, self.fx[s:e] = _axis(x[s:e], grid.x0, grid.cell, grid.cols, True)
+            row, r0, self.fy[s:e] = _axis(y[s:e], grid.y0, grid.cell, grid.rows, True)
+            row *= grid.cols
+            row += col
+            self.idx[s:e] = row
+            r0 *= grid.cols
+            r0 += c0
+            self.i00[s:e] = r0
         self.order = np.argsort(self.idx, kind="stable")
         sidx = self.idx[self.order]
         self.starts = np.flatnonzero(np.r_[True, sidx[1:] != sidx[:-1]])
         self.cells = sidx[self.starts]
         del sidx
-        # the fractions are taken in float64 and stored in float32: rounded once, from
-        # the offset inside the cell, so they do not depend on where the grid starts
-        fx = (x - grid.x0) / grid.cell - 0.5
-        np.clip(fx, 0.0, grid.cols - 1.0, out=fx)
-        c0 = np.minimum(fx.astype(np.int64), max(grid.cols - 2, 0))
-        fx -= c0
-        self.fx = fx.astype(np.float32)
-        del fx
-        fy = (y - grid.y0) / grid.cell - 0.5
-        np.clip(fy, 0.0, grid.rows - 1.0, out=fy)
-        r0 = np.minimum(fy.astype(np.int64), max(grid.rows - 2, 0))
-        fy -= r0
-        self.fy = fy.astype(np.float32)
-        del fy
-        r0 *= grid.cols
-        r0 += c0
-        self.i00 = r0
 
     def cell_min(self, z, mask=None):
         """Lowest z per cell (NaN where empty or no masked point)."""
@@ -150,18 +185,54 @@ class PointCells:
         out[self.cells] = m
         return out.reshape(self.grid.rows, self.grid.cols)
 
-    def bilinear(self, raster):
-        """Bilinear value of a cell-centred raster at every point (float64)."""
+    def bilinear(self, raster, points=None):
+        """Bilinear value of a cell-centred raster at every point (float64).
+
+        ``points`` (a slice or indices) restricts it to those points.
+        """
         g, flat = self.grid, raster.ravel()
         c1 = 1 if g.cols > 1 else 0
         r1 = g.cols if g.rows > 1 else 0
-        fx, fy, i = self.fx, self.fy, self.i00
-        top = flat[i] + (flat[i + c1] - flat[i]) * fx
-        bot = flat[i + r1] + (flat[i + r1 + c1] - flat[i + r1]) * fx
-        bot -= top
-        bot *= fy
-        bot += top
-        return bot
+        i00, fx, fy = self.i00, self.fx, self.fy
+        if points is not None:
+            i00, fx, fy = i00[points], fx[points], fy[points]
+        out = np.empty(i00.size)
+        for s in range(0, out.size, CHUNK):          # in blocks: same values, in cache
+            e = s + CHUNK
+            i, f = i00[s:e], fx[s:e]
+            top = flat[i]
+            d = flat[i + c1]
+            d -= top                             # top + (right - top) * fx
+            d *= f
+            top += d
+            bot = flat[i + r1]
+            d = flat[i + (r1 + c1)]
+            d -= bot
+            d *= f
+            bot += d
+            bot -= top                           # top + (bot - top) * fy
+            bot *= fy[s:e]
+            bot += top
+            out[s:e] = bot
+        return out
+
+    def reading(self, cells, slope_cells):
+        """Return the points (indices) whose values can differ after flagged cells changed.
+
+        A point reads the four cells of its bilinear interpolation and the slope at its
+        own cell (:meth:`bilinear`, :meth:`nearest`): it is listed when one of those four
+        is flagged in ``cells`` or its own cell in ``slope_cells``.
+        """
+        g = self.grid
+        c1 = 1 if g.cols > 1 else 0
+        r1 = g.cols if g.rows > 1 else 0
+        d = cells.ravel()
+        corner = d.copy()                 # corner[j]: a cell read from lower-left j changed
+        for off in {c1, r1, r1 + c1} - {0}:
+            corner[:d.size - off] |= d[off:]
+        hit = corner[self.i00]
+        hit |= slope_cells.ravel()[self.idx]
+        return np.flatnonzero(hit)
 
     def read_mask(self):
         """Cells read by :meth:`bilinear` or by a central-difference slope at a point's cell.
@@ -185,9 +256,9 @@ class PointCells:
         m[cells[cells < (g.rows - 1) * g.cols] + g.cols] = True
         return m.reshape(g.rows, g.cols)
 
-    def nearest(self, raster):
-        """Value of the cell holding each point."""
-        return raster.ravel()[self.idx]
+    def nearest(self, raster, points=None):
+        """Value of the cell holding each point (or each of ``points``)."""
+        return raster.ravel()[self.idx if points is None else self.idx[points]]
 
 
 def fill(z, valid, anchor=(0, 0)):

@@ -324,13 +324,14 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
         info.update(options=opt, n=int(x.size), grid=pc.grid)
     dtm = surface(zmin, pc.grid, opt, rep, need=need, info=info)
     rep(0.8)
-    cls = label_points(z, dtm, pc, opt)
+    last = {}             # the refine passes change few cells: few points relabelled
+    cls = label_points(z, dtm, pc, opt, last)
     cache = {}            # the refine fills change few cells: each keeps most of the last
     for k in range(int(opt.refine)):
         rep(0.8 + 0.2 * (k + 1) / (opt.refine + 1))
         zg = pc.cell_min(z, cls == GROUND)
         cls = label_points(z, fill_holes(zg, ~np.isnan(zg), pc.grid, opt, need, cache),
-                           pc, opt)
+                           pc, opt, last)
     rep(1.0)
     return cls
 
@@ -522,7 +523,7 @@ def progressive_objects(zf, cell, max_window, slope, rep):
     return obj
 
 
-def label_points(z, dtm, pc, opt):
+def label_points(z, dtm, pc, opt, last=None):
     """Per-point classes against the DTM with a slope-dependent tolerance.
 
     Parameters
@@ -535,23 +536,40 @@ def label_points(z, dtm, pc, opt):
         Per-point cell look-ups.
     opt : RecommendedOptions
         Options.
+    last : dict, optional
+        The previous call's DTM, slope raster and classes (filled here when empty):
+        only the points reading a cell whose value changed are labelled again
+        (:meth:`._raster.PointCells.reading`), the others keep their class - the same
+        classes as labelling every point.
 
     Returns
     -------
     ndarray of uint8
         2 ground, 1 object, 7 low noise.
     """
-    dz = pc.bilinear(dtm)
-    np.subtract(z, dz, out=dz)
-    tol = pc.nearest(R.slope(dtm, pc.grid.cell))
-    tol *= opt.scaler
-    tol += opt.threshold
-    cls = np.full(z.size, OBJECT, dtype=np.uint8)
-    cls[np.abs(dz) <= tol] = GROUND
-    np.maximum(tol, opt.low_noise_depth, out=tol)
-    cls[dz < -tol] = LOW_NOISE
+    slope = R.slope(dtm, pc.grid.cell)
+    if last:
+        pts = pc.reading(R.changed(last["dtm"], dtm), R.changed(last["slope"], slope))
+        cls = last["classes"].copy()
+    else:
+        pts = None
+        cls = np.empty(z.size, dtype=np.uint8)
+    n = z.size if pts is None else pts.size
+    for s in range(0, n, R.CHUNK):                   # in blocks: same values, in cache
+        p = slice(s, s + R.CHUNK) if pts is None else pts[s:s + R.CHUNK]
+        dz = pc.bilinear(dtm, p)
+        np.subtract(z[p], dz, out=dz)
+        tol = pc.nearest(slope, p)
+        tol *= opt.scaler
+        tol += opt.threshold
+        c = np.full(dz.size, OBJECT, dtype=np.uint8)
+        c[np.abs(dz) <= tol] = GROUND
+        np.maximum(tol, opt.low_noise_depth, out=tol)
+        c[dz < -tol] = LOW_NOISE
+        cls[p] = c
+    if last is not None:
+        last.update(dtm=dtm.copy(), slope=slope, classes=cls)
     return cls
-
 
 
 def recommended_filter(options: Optional[RecommendedOptions] = None):

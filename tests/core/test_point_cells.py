@@ -1,0 +1,109 @@
+"""Per-point raster look-ups of the recommended filter (core/lidar/_raster.PointCells).
+
+The look-ups run in blocks of points and the refine passes relabel only the points that
+read a changed cell; both must give bit for bit what the plain whole-array expressions
+give (the filter's class sha1 goldens rest on it).
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from geomatics_toolbox.core.lidar import _raster as R  # noqa: N812
+from geomatics_toolbox.core.lidar import recommended as rec
+
+
+def _plain(x, y, grid):
+    """The whole-array expressions the blocked code replaced (reference)."""
+    col = np.minimum(((x - grid.x0) / grid.cell).astype(np.int64), grid.cols - 1)
+    row = np.minimum(((y - grid.y0) / grid.cell).astype(np.int64), grid.rows - 1)
+    fx = np.clip((x - grid.x0) / grid.cell - 0.5, 0.0, grid.cols - 1.0)
+    c0 = np.minimum(fx.astype(np.int64), max(grid.cols - 2, 0))
+    fy = np.clip((y - grid.y0) / grid.cell - 0.5, 0.0, grid.rows - 1.0)
+    r0 = np.minimum(fy.astype(np.int64), max(grid.rows - 2, 0))
+    return (row * grid.cols + col, r0 * grid.cols + c0, (fx - c0).astype(np.float32),
+            (fy - r0).astype(np.float32))
+
+
+def _plain_bilinear(pc, raster):
+    g, flat, i = pc.grid, raster.ravel(), pc.i00
+    c1 = 1 if g.cols > 1 else 0
+    r1 = g.cols if g.rows > 1 else 0
+    top = flat[i] + (flat[i + c1] - flat[i]) * pc.fx
+    bot = flat[i + r1] + (flat[i + r1 + c1] - flat[i + r1]) * pc.fx
+    return top + (bot - top) * pc.fy
+
+
+def _cloud(n, w, h, seed):
+    rng = np.random.default_rng(seed)
+    x, y = rng.uniform(0, w, n), rng.uniform(0, h, n)
+    x[:3], y[:3] = w, h                           # points on the far edges
+    return x, y
+
+
+@pytest.mark.parametrize("chunk", [7, 1000, 1 << 16])
+@pytest.mark.parametrize("shape", [(300.0, 200.0), (300.0, 0.4), (0.3, 50.0)])
+def test_blocks_equal_the_whole_array_expressions(monkeypatch, chunk, shape):
+    monkeypatch.setattr(R, "CHUNK", chunk)
+    x, y = _cloud(5000, *shape, seed=1)
+    grid = R.Grid.around(x, y, 0.7)
+    pc = R.PointCells(x, y, grid)
+    idx, i00, fx, fy = _plain(x, y, grid)
+    np.testing.assert_array_equal(pc.idx, idx)
+    np.testing.assert_array_equal(grid.index(x, y), idx)
+    np.testing.assert_array_equal(pc.i00, i00)
+    assert pc.fx.dtype == np.float32 and np.array_equal(pc.fx, fx)
+    assert pc.fy.dtype == np.float32 and np.array_equal(pc.fy, fy)
+    raster = np.random.default_rng(2).normal(size=(grid.rows, grid.cols)) * 100
+    want = _plain_bilinear(pc, raster)
+    got = pc.bilinear(raster)
+    assert np.array_equal(got.view(np.int64), want.view(np.int64))        # same bits
+    sub = np.flatnonzero(np.arange(x.size) % 3 == 1)
+    assert np.array_equal(pc.bilinear(raster, sub), want[sub])
+    assert np.array_equal(pc.nearest(raster, sub), raster.ravel()[idx[sub]])
+
+
+def test_reading_lists_every_point_whose_inputs_changed():
+    """Brute force: a point is listed iff one of its 4 bilinear cells or its slope
+    cell is flagged."""
+    x, y = _cloud(20000, 120.0, 90.0, seed=4)
+    pc = R.PointCells(x, y, R.Grid.around(x, y, 1.0))
+    rng = np.random.default_rng(5)
+    size = pc.grid.rows * pc.grid.cols
+    for share in (0.0, 0.001, 0.05):
+        cells = rng.random(size) < share
+        slope_cells = rng.random(size) < share
+        g = pc.grid
+        corners = [pc.i00, pc.i00 + 1, pc.i00 + g.cols, pc.i00 + g.cols + 1]
+        want = np.zeros(x.size, bool)
+        for c in corners:
+            want |= cells[c]
+        want |= slope_cells[pc.idx]
+        got = pc.reading(cells.reshape(g.rows, g.cols), slope_cells.reshape(g.rows, g.cols))
+        np.testing.assert_array_equal(got, np.flatnonzero(want))
+
+
+def test_relabelling_changed_points_only_gives_the_full_labels():
+    """Over a sequence of DTMs changed in a few places (as the refine passes), the
+    incremental labels equal labelling every point; labels do change on the way."""
+    rng = np.random.default_rng(6)
+    x, y = _cloud(30000, 150.0, 100.0, seed=7)
+    z = 20 + 0.05 * x + rng.normal(0, 0.4, x.size)
+    pc = R.PointCells(x, y, R.Grid.around(x, y, 1.0))
+    opt = rec.derive(x, y, rec.RecommendedOptions())
+    dtm = 20 + 0.05 * (pc.grid.x0 + 0.5 + np.arange(pc.grid.cols))[None, :] + np.zeros(
+        (pc.grid.rows, 1))
+    last: dict = {}
+    first = rec.label_points(z, dtm, pc, opt, last)
+    assert np.array_equal(first, rec.label_points(z, dtm, pc, opt))
+    prev = first
+    for step in range(4):
+        dtm = dtm.copy()
+        r, c = rng.integers(0, pc.grid.rows, 40), rng.integers(0, pc.grid.cols, 40)
+        dtm[r, c] += rng.normal(0, 0.8, 40)
+        dtm[0, 0] = np.nan if step == 2 else dtm[0, 0]
+        got = rec.label_points(z, dtm, pc, opt, last)
+        full = rec.label_points(z, dtm, pc, opt)
+        np.testing.assert_array_equal(got, full)
+        assert (got != prev).any()
+        prev = got
