@@ -234,13 +234,14 @@ def check_options(*, order, tile_size, threshold, max_iterations, tolerance, sub
         raise InputError("max_iterations must be at least 1, got {value}.",
                          value=max_iterations)
     if not np.isfinite(tolerance) or tolerance <= 0:
-        raise InputError("tolerance must be a positive number of metres, got {value}.",
-                         value=tolerance)
+        raise InputError("The stop tolerance (TOLERANCE) must be a positive number of "
+                         "metres, got {value}: give e.g. 0.01.", value=tolerance)
     p = n_coefficients(order)
     if subset_size is not None and int(subset_size) < p:
-        raise InputError("subset_size must be at least {p} points for order {order} "
-                         "(or None to fit all points), got {value}.", p=p, order=order,
-                         value=subset_size)
+        raise InputError("The random fitting subset per tile (SUBSET_SIZE) must be at "
+                         "least {p} points for a polynomial of order {order} (ORDER), got "
+                         "{value}: give {p} or more, or 0 to fit every point.", p=p,
+                         order=order, value=subset_size)
     if mode not in ("faithful", "improved"):
         raise InputError("mode must be one of {choices}, got {mode}.",
                          choices="faithful, improved", mode=repr(mode))

@@ -85,18 +85,20 @@ def _validate(x, y, z, power, max_points, radius, min_points, smoothing):
             raise InputError("radius must be > 0 (or None for no radius), got {value}.",
                              value=radius)
     if max_points == 0 and radius is None:
-        raise InputError("max_points = 0 (all points) needs a search radius; give a radius "
-                         "or a number of neighbours such as 12.")
+        raise InputError("Neighbours (NEIGHBOURS) 0 means every point within the search "
+                         "radius, but no Search radius (RADIUS) was given: give RADIUS in "
+                         "metres, or NEIGHBOURS such as 12.")
     if max_points > x.size:
-        raise InputError("Only {n} point(s) to interpolate from but max_points = "
-                         "{k} neighbours were asked for; lower the number of "
-                         "neighbours or use more points.", n=int(x.size), k=max_points)
+        raise InputError("Only {n} points to interpolate from, but Neighbours (NEIGHBOURS) "
+                         "is {k}: set NEIGHBOURS to {n} or fewer, or use a cloud with more "
+                         "ground points.", n=int(x.size), k=max_points)
     min_points = int(min_points)
     if min_points < 0:
         raise InputError("min_points must be >= 0, got {value}.", value=min_points)
     if max_points and min_points > max_points:
-        raise InputError("min_points ({min_points}) cannot exceed max_points "
-                         "({max_points}); every cell would be nodata.",
+        raise InputError("Minimum points (MIN_POINTS = {min_points}) cannot exceed "
+                         "Neighbours (NEIGHBOURS = {max_points}): every cell would be nodata. "
+                         "Lower MIN_POINTS or raise NEIGHBOURS.",
                          min_points=min_points, max_points=max_points)
     smoothing = float(smoothing)
     if not math.isfinite(smoothing) or smoothing < 0:

@@ -99,8 +99,10 @@ def _bin_and_fit(d, g, used_lag, nlags, model, func, weight):
     ok = cnt > 0
     lags, semi = lags[ok] / cnt[ok], semi[ok] / cnt[ok]
     if lags.size < 3:
-        raise InputError("Too few non-empty lag bins to fit a variogram; increase max_lag, "
-                         "nlags or fit_points.")
+        raise InputError("Only {n} of the {nlags} lag classes hold point pairs, too few "
+                         "to fit a variogram (3 are needed): give a larger Maximum lag "
+                         "(MAX_LAG), more Lag classes (NLAGS) or more Points for the "
+                         "variogram fit (FIT_POINTS).", n=int(lags.size), nlags=nlags)
     return lags, semi, variogram_models.fit_model(lags, semi, model, func, weight)
 
 
@@ -225,9 +227,11 @@ def fit_variogram(x, y, z, *, model: str = "spherical", fit_points: int = 3000,
         used_lag = _resolve_lag(xy, sel, mode, max_lag, n_neighbours)
         d, g, used_lag = _sample_pairs(xy, z, sel, mode, used_lag)
         if d.size < nlags:
-            raise InputError("Only {n} point pairs are closer than max_lag = "
-                             "{lag}; increase max_lag or fit_points.", n=int(d.size),
-                             lag=f"{used_lag:g}")
+            raise InputError("Only {n} point pairs are closer than the maximum lag "
+                             "({lag} m), fewer than the {nlags} lag classes: give a larger "
+                             "Maximum lag (MAX_LAG) or more Points for the variogram fit "
+                             "(FIT_POINTS), or give the variogram's sill and range.",
+                             n=int(d.size), lag=f"{used_lag:g}", nlags=nlags)
         if not np.any(g > 0):
             raise InputError("The heights do not vary between the sampled point pairs, so "
                              "no variogram can be fitted; give the variogram parameters or "

@@ -171,3 +171,20 @@ def test_neighbour_refusals_name_the_algorithm_parameters():
     assert max(calls) < 0.1                 # refused before the grid was kriged
     cv = Kriging(x, y, z, variogram=v, n_closest=9).cross_validate(5)
     assert cv["n"] == 5 and np.isfinite(cv["rmse"])
+
+
+def test_variogram_fit_refusals_name_the_algorithm_parameters():
+    """MAX_LAG / NLAGS / FIT_POINTS (the dialog's), not max_lag / nlags / fit_points."""
+    from geomatics_toolbox.core.errors import InputError
+    g = np.arange(20.0)
+    x, y = (a.ravel() for a in np.meshgrid(g, g))     # a 1 m lattice: pairs at 1, 1.41, 2 …
+    z = np.sin(x) + np.cos(y)
+    with pytest.raises(InputError, match=r"Only 1 of the 12 lag classes hold point pairs, too "
+                                         r"few to fit a variogram \(3 are needed\): give a "
+                                         r"larger Maximum lag \(MAX_LAG\)") as info:
+        fit_variogram(x, y, z, max_lag=1.2, nlags=12)    # every pair within 1.2 m is at 1 m
+    assert "(NLAGS)" in info.value.message("fa") and "MAX_LAG" in info.value.message("ar")
+    with pytest.raises(InputError, match=r"Only 0 point pairs are closer than the maximum lag "
+                                         r"\(0\.5 m\), fewer than the 12 lag classes"):
+        fit_variogram(x, y, z, max_lag=0.5, nlags=12)
+    assert fit_variogram(x, y, z, max_lag=5.0, nlags=12).fitted   # the named fix works

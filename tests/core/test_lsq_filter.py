@@ -213,7 +213,7 @@ def test_progress_and_cancel():
     (dict(threshold=float("nan")), "THRESHOLD"),
     (dict(tile_size=0), "TILE_SIZE"), (dict(tile_size=-5), "TILE_SIZE"),
     (dict(order=3), "ORDER"), (dict(mode="magic"), "mode"),
-    (dict(max_iterations=0), "max_iterations"), (dict(subset_size=3), "subset_size"),
+    (dict(max_iterations=0), "max_iterations"), (dict(subset_size=3), "SUBSET_SIZE"),
     (dict(sparse_tiles="drop"), "sparse_tiles"), (dict(rejection="x"), "rejection"),
     (dict(tile_size=1e-9), "TILE_SIZE"),
 ])

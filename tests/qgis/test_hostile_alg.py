@@ -603,3 +603,58 @@ def test_slopethresholdsweep_one_position_refused(qgis_processing, tmp_path, n, 
     refused(qgis_processing, "geomatics:slopethresholdsweep", {
         "INPUT": str(src), "SLOPES": "40, 50", "RADII": "3", "OUTPUT_CSV": str(csv),
         "OUTPUT_HTML": str(html), "OUTPUT": str(out)}, message, [src], [csv, html, out])
+
+
+# ----------------------------------------------------------------- DTM options named as shown
+@pytest.mark.parametrize("alg,params,message", [
+    ("idwdtm", {"NEIGHBOURS": 0, "RADIUS": 0.0},
+     r"Neighbours \(NEIGHBOURS\) 0 means every point within the search radius, but no Search "
+     r"radius \(RADIUS\) was given: give RADIUS in metres, or NEIGHBOURS such as 12\."),
+    ("idwdtm", {"NEIGHBOURS": 12, "MIN_POINTS": 20},
+     r"Minimum points \(MIN_POINTS = 20\) cannot exceed Neighbours \(NEIGHBOURS = 12\): every "
+     r"cell would be nodata\. Lower MIN_POINTS or raise NEIGHBOURS\."),
+    ("idwdtm", {"NEIGHBOURS": 10 ** 7},
+     r"Only \d+ points to interpolate from, but Neighbours \(NEIGHBOURS\) is 10000000: set "
+     r"NEIGHBOURS to \d+ or fewer"),
+    ("lidartodtm", {"NEIGHBOURS": 10 ** 7},
+     r"Only \d+ points to interpolate from, but Neighbours \(NEIGHBOURS\) is 10000000"),
+    ("krigingdtm", {"MAX_LAG": 0.001},
+     r"Only 0 point pairs are closer than the maximum lag \(0\.001 m\), fewer than the 12 lag "
+     r"classes: give a larger Maximum lag \(MAX_LAG\) or more Points for the variogram fit "
+     r"\(FIT_POINTS\)"),
+], ids=["idw-no-radius", "idw-min>neighbours", "idw-neighbours>points",
+        "lidartodtm-neighbours>points", "kriging-max-lag"])
+def test_dtm_option_refusals_name_the_parameters(qgis_processing, data, tmp_path, alg, params,
+                                                 message):
+    """Were 'max_points = 0 …', 'min_points (20) cannot exceed max_points (12)', 'max_lag =
+    0.001; increase max_lag or fit_points': core keywords the dialog does not show."""
+    out = tmp_path / "dtm.tif"
+    outputs = {"OUTPUT": str(out)}
+    if alg == "lidartodtm":
+        cp = tmp_path / "cp.csv"
+        cp.write_text("id,x,y,z\n1,500010,4000010,100\n", encoding="utf-8")
+        outputs = {"OUTPUT_DTM": str(out), "OUTPUT": str(tmp_path / "c.laz"),
+                   "CHECKPOINTS_CSV": str(cp)}
+    text = refused(qgis_processing, f"geomatics:{alg}", {
+        "INPUT": str(data["laz"]), "CELL_SIZE": 1.0, **outputs, **params}, message,
+        [data["laz"]], [out, tmp_path / "c.laz"])
+    assert not re.search(r"\b(max_points|min_points|max_lag|fit_points|nlags)\b", text)
+
+
+@pytest.mark.parametrize("params,message", [
+    ({"SUBSET_SIZE": 3, "ORDER": 2},
+     r"The random fitting subset per tile \(SUBSET_SIZE\) must be at least 6 points for a "
+     r"polynomial of order 2 \(ORDER\), got 3: give 6 or more, or 0 to fit every point\."),
+    ({"TOLERANCE": 0.0},
+     r"The stop tolerance \(TOLERANCE\) must be a positive number of metres, got 0\.0: give "
+     r"e\.g\. 0\.01\."),
+], ids=["subset", "tolerance"])
+def test_lsqgroundfilter_option_refusals_name_the_parameters(qgis_processing, data, tmp_path,
+                                                             params, message):
+    """Were 'subset_size must be at least 6 points for order 2 (or None …)' and 'tolerance
+    must be …': a keyword and a Python value the dialog does not show."""
+    out, ground = tmp_path / "c.laz", tmp_path / "g.laz"
+    text = refused(qgis_processing, "geomatics:lsqgroundfilter", {
+        "INPUT": str(data["laz"]), "OUTPUT": str(out), "GROUND_OUTPUT": str(ground),
+        **params}, message, [data["laz"]], [out, ground])
+    assert "None" not in text and "subset_size" not in text
