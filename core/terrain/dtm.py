@@ -139,8 +139,8 @@ class IdwOptions:
         """Refuse an invalid option (the InputError templates of :mod:`.idw`)."""
         from .idw import TIE_ORDERS
         if not self.power > 0:
-            raise InputError("power must be > 0 (typically 2 or 3), got {value}.",
-                             value=self.power)
+            raise InputError("The IDW power (POWER) must be > 0, got {value}: give 2 "
+                             "(GDAL's default) or 3.", value=self.power)
         if int(self.neighbours) < 0:
             raise InputError("max_points must be >= 0 (0 = every point within the radius), "
                              "got {value}.", value=self.neighbours)

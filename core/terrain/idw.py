@@ -74,7 +74,8 @@ def _validate(x, y, z, power, max_points, radius, min_points, smoothing):
         "No points to interpolate from (check the class filter and the extent)."))
     power = float(power)
     if not math.isfinite(power) or power <= 0:
-        raise InputError("power must be > 0 (typically 2 or 3), got {value}.", value=power)
+        raise InputError("The IDW power (POWER) must be > 0, got {value}: give 2 "
+                         "(GDAL's default) or 3.", value=power)
     max_points = int(max_points)
     if max_points < 0:
         raise InputError("max_points must be >= 0 (0 = every point within the radius), "

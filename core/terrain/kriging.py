@@ -261,20 +261,29 @@ def given_variogram(model: str, *, nugget: float = 0.0, sill: Optional[float] = 
         raise InputError("nugget must be >= 0, got {value}.", value=nugget)
     if model == "linear":
         if slope is None or not slope >= 0:
-            raise InputError("The linear variogram needs slope >= 0.")
+            raise InputError("The linear variogram needs a slope (VARIOGRAM_SLOPE) of 0 or "
+                             "more: give VARIOGRAM_SLOPE in m²/m, or leave every variogram "
+                             "number empty to fit the variogram.")
         return Variogram(model, [float(slope), nugget])
     if model == "power":
         if scale is None or not scale > 0 or exponent is None or not 0 < exponent < 2:
-            raise InputError("The power variogram needs scale > 0 and 0 < exponent < 2.")
+            raise InputError("The power variogram needs a scale (VARIOGRAM_SCALE) above 0 "
+                             "and an exponent (VARIOGRAM_EXPONENT) between 0 and 2, both "
+                             "excluded: give both, or leave every variogram number empty to "
+                             "fit the variogram.")
         return Variogram(model, [float(scale), float(exponent), nugget])
     if sill is None or range_ is None:
-        raise InputError("The {model} variogram needs sill and range (and nugget).",
-                         model=model)
+        raise InputError("This variogram model needs both the sill (VARIOGRAM_SILL) and the "
+                         "range (VARIOGRAM_RANGE), the nugget (VARIOGRAM_NUGGET) being "
+                         "optional: give both, or leave every variogram number empty to fit "
+                         "the variogram.")
     if not sill > nugget:
-        raise InputError("sill ({sill}) must be larger than the nugget ({nugget}); the "
-                         "sill includes the nugget.", sill=sill, nugget=nugget)
+        raise InputError("The sill (VARIOGRAM_SILL = {sill}) must be larger than the nugget "
+                         "(VARIOGRAM_NUGGET = {nugget}): the sill includes the nugget.",
+                         sill=sill, nugget=nugget)
     if not range_ > 0:
-        raise InputError("range must be > 0, got {value}.", value=range_)
+        raise InputError("The range (VARIOGRAM_RANGE) must be > 0 m, got {value}.",
+                         value=range_)
     return Variogram(model, [float(sill) - nugget, float(range_), nugget])
 
 

@@ -622,8 +622,20 @@ def test_slopethresholdsweep_one_position_refused(qgis_processing, tmp_path, n, 
      r"Only 0 point pairs are closer than the maximum lag \(0\.001 m\), fewer than the 12 lag "
      r"classes: give a larger Maximum lag \(MAX_LAG\) or more Points for the variogram fit "
      r"\(FIT_POINTS\)"),
+    ("idwdtm", {"POWER": 0.0},
+     r"The IDW power \(POWER\) must be > 0, got 0\.0: give 2 \(GDAL's default\) or 3\."),
+    ("krigingdtm", {"VARIOGRAM_SILL": 1.0},
+     r"This variogram model needs both the sill \(VARIOGRAM_SILL\) and the range "
+     r"\(VARIOGRAM_RANGE\), the nugget \(VARIOGRAM_NUGGET\) being optional"),
+    ("krigingdtm", {"VARIOGRAM_SILL": 1.0, "VARIOGRAM_NUGGET": 2.0, "VARIOGRAM_RANGE": 30.0},
+     r"The sill \(VARIOGRAM_SILL = 1\.0\) must be larger than the nugget "
+     r"\(VARIOGRAM_NUGGET = 2\.0\): the sill includes the nugget\."),
+    ("krigingdtm", {"VARIOGRAM": 1, "VARIOGRAM_SCALE": 0.5},
+     r"The power variogram needs a scale \(VARIOGRAM_SCALE\) above 0 and an exponent "
+     r"\(VARIOGRAM_EXPONENT\) between 0 and 2"),
 ], ids=["idw-no-radius", "idw-min>neighbours", "idw-neighbours>points",
-        "lidartodtm-neighbours>points", "kriging-max-lag"])
+        "lidartodtm-neighbours>points", "kriging-max-lag", "idw-power", "kriging-no-range",
+        "kriging-sill<nugget", "kriging-power-no-exponent"])
 def test_dtm_option_refusals_name_the_parameters(qgis_processing, data, tmp_path, alg, params,
                                                  message):
     """Were 'max_points = 0 …', 'min_points (20) cannot exceed max_points (12)', 'max_lag =
@@ -639,6 +651,7 @@ def test_dtm_option_refusals_name_the_parameters(qgis_processing, data, tmp_path
         "INPUT": str(data["laz"]), "CELL_SIZE": 1.0, **outputs, **params}, message,
         [data["laz"]], [out, tmp_path / "c.laz"])
     assert not re.search(r"\b(max_points|min_points|max_lag|fit_points|nlags)\b", text)
+    assert not re.match(r"(power|sill|range) ", text)        # the old keyword openings
 
 
 @pytest.mark.parametrize("params,message", [
