@@ -107,8 +107,9 @@ class ClassifyOptions:
                              value=self.ground)
         if not (np.isfinite(self.low_max) and np.isfinite(self.medium_max)
                 and 0 < self.low_max < self.medium_max):
-            raise InputError("Vegetation heights must satisfy 0 < low ({low} m) < medium "
-                             "({medium} m); give e.g. 0.5 and 1.5.",
+            raise InputError("Vegetation heights must satisfy 0 < Low vegetation up to "
+                             "(LOW_VEGETATION = {low} m) < Medium vegetation up to "
+                             "(MEDIUM_VEGETATION = {medium} m): give e.g. 0.5 and 1.5.",
                              low=self.low_max, medium=self.medium_max)
         if not (np.isfinite(self.dtm_cell) and self.dtm_cell > 0):
             raise InputError("Cell size must be > 0 (m); give e.g. 0.5.")

@@ -202,8 +202,11 @@ def test_feet_copy_gives_the_same_classes(tmp_path):
 
 
 def test_bad_options_are_translated_errors():
-    with pytest.raises(InputError, match="Vegetation heights must satisfy"):
+    with pytest.raises(InputError, match=r"\(LOW_VEGETATION = 2\.0 m\) < Medium vegetation up "
+                                         r"to \(MEDIUM_VEGETATION = 1\.0 m\)") as info:
         core_c.ClassifyOptions(low_max=2.0, medium_max=1.0)
+    assert "«الغطاء النباتي المنخفض حتى» (\u2066LOW_VEGETATION = \u20682.0\u2069 m" in \
+        info.value.message("ar")
     with pytest.raises(InputError, match="Ground must be"):
         core_c.ClassifyOptions(ground="maybe")
     x = np.arange(10.0)

@@ -59,7 +59,9 @@ def test_classify_keep_ground_and_bad_options(qgis_processing, scene):
     assert np.array_equal(got == 2, tile.classification == 2)
     assert not (got == 6).any()
     bad = d / "bad.laz"
-    with pytest.raises(QgsProcessingException, match="Vegetation heights must satisfy"):
+    with pytest.raises(QgsProcessingException, match=r"Vegetation heights must satisfy 0 < "
+                       r"Low vegetation up to \(LOW_VEGETATION = 3\.0 m\) < Medium vegetation "
+                       r"up to \(MEDIUM_VEGETATION = 1\.0 m\): give e\.g\. 0\.5 and 1\.5\."):
         qgis_processing.run("geomatics:classify", {"INPUT": laz, "LOW_VEGETATION": 3.0,
                                                    "MEDIUM_VEGETATION": 1.0,
                                                    "OUTPUT": str(bad)})
