@@ -154,7 +154,9 @@ class PointCells:
     def __init__(self, x, y, grid):
         self.grid = grid
         n = np.size(x)
-        self.idx, self.i00 = np.empty(n, np.int64), np.empty(n, np.int64)
+        # int32 where cell and point counts allow: half the memory, the same indices
+        it = np.int32 if max(grid.rows * grid.cols, n) < 2 ** 31 else np.int64
+        self.idx, self.i00 = np.empty(n, it), np.empty(n, it)
         # the fractions are taken in float64 and stored in float32: rounded once, from
         # the offset inside the cell, so they do not depend on where the grid starts
         self.fx, self.fy = np.empty(n, np.float32), np.empty(n, np.float32)
@@ -168,9 +170,9 @@ class PointCells:
             r0 *= grid.cols
             r0 += c0
             self.i00[s:e] = r0
-        self.order = np.argsort(self.idx, kind="stable")
+        self.order = np.argsort(self.idx, kind="stable").astype(it)
         sidx = self.idx[self.order]
-        self.starts = np.flatnonzero(np.r_[True, sidx[1:] != sidx[:-1]])
+        self.starts = np.flatnonzero(np.r_[True, sidx[1:] != sidx[:-1]]).astype(it)
         self.cells = sidx[self.starts]
         del sidx
 
@@ -324,27 +326,42 @@ def box_mean(a, size: int):
     scipy's ``uniform_filter`` keeps a running sum along each line, so the rounding of
     a cell's mean depends on where the line starts: a catalog chunk and the merged cloud
     would differ in the last bits. Here the values are rounded to 2**-20 and summed as
-    integers, so each mean depends only on the cells in its box.
+    integers, so each mean depends only on the cells in its box (and is computed in
+    bands of :data:`BAND` rows: integer sums do not depend on the band either).
 
     >>> float(box_mean(np.arange(9.0).reshape(3, 3), 3)[1, 1])
     4.0
     """
     size = int(size)
+    a = np.asarray(a, dtype=np.float64)
     if size <= 1:
-        return np.asarray(a, dtype=np.float64).copy()
-    q = np.rint(np.asarray(a, dtype=np.float64) * _BOX_SCALE).astype(np.int64)
+        return a.copy()
+    rows, cols = a.shape
     h = size // 2
-    for axis in (0, 1):
-        n = q.shape[axis]
-        idx = np.clip(np.arange(-h, n + size - h - 1), 0, n - 1)
-        qp = np.take(q, idx, axis=axis)
-        cs = np.cumsum(qp, axis=axis)
-        zero = np.zeros_like(np.take(cs, [0], axis=axis))
-        cs = np.concatenate((zero, cs), axis=axis)
-        q = np.take(cs, np.arange(size, size + n), axis=axis) - np.take(cs, np.arange(n),
-                                                                         axis=axis)
-        del qp, cs
-    return q / (_BOX_SCALE * size * size)
+    cidx = np.clip(np.arange(-h, cols + size - h - 1), 0, cols - 1)
+    out = np.empty(a.shape)
+    for b0 in range(0, rows, BAND):
+        n = min(BAND, rows - b0)
+        ridx = np.clip(np.arange(b0 - h, b0 + n + size - h - 1), 0, rows - 1)
+        q = np.rint(a[ridx] * _BOX_SCALE).astype(np.int64)
+        q = _window_sums(q, size, n, axis=0)
+        q = _window_sums(np.take(q, cidx, axis=1), size, cols, axis=1)
+        out[b0:b0 + n] = q / (_BOX_SCALE * size * size)
+    return out
+
+
+#: Rows per band of :func:`box_mean` and :func:`slope` (bounds their temporaries).
+BAND = 128
+
+
+def _window_sums(q, size: int, n: int, axis: int):
+    """Return the sums of ``size`` consecutive entries of ``q`` along ``axis`` (n of them)."""
+    cs = np.cumsum(q, axis=axis)
+    shape = list(cs.shape)
+    shape[axis] = 1
+    cs = np.concatenate((np.zeros(shape, cs.dtype), cs), axis=axis)
+    return (np.take(cs, np.arange(size, size + n), axis=axis)
+            - np.take(cs, np.arange(n), axis=axis))
 
 
 def opening(z, radius):
@@ -361,8 +378,14 @@ def slope(z, cell):
         gy = np.gradient(z, cell, axis=0) if rows > 1 else np.zeros_like(z)
         gx = np.gradient(z, cell, axis=1) if cols > 1 else np.zeros_like(z)
         return np.hypot(gx, gy)
-    gy, gx = np.gradient(z, cell)
-    return np.hypot(gx, gy)
+    rows = z.shape[0]
+    out = np.empty(z.shape)
+    for b0 in range(0, rows, BAND):           # bands with a row of margin: same differences
+        n = min(BAND, rows - b0)
+        lo, hi = max(0, b0 - 1), min(rows, b0 + n + 1)
+        gy, gx = np.gradient(z[lo:hi], cell)
+        np.hypot(gx[b0 - lo:b0 - lo + n], gy[b0 - lo:b0 - lo + n], out=out[b0:b0 + n])
+    return out
 
 
 def fill_tin(z, valid):

@@ -27,7 +27,7 @@ from scipy.spatial import cKDTree
 
 from . import _raster as R  # noqa: N812
 
-__all__ = ["plane_fit", "plane_gradient", "tangent_fill"]
+__all__ = ["plane_fit", "plane_fit_where", "plane_gradient", "tangent_fill"]
 
 #: Hole cells processed per batch (bounds the k-neighbour arrays' memory).
 BATCH = 16_384
@@ -101,7 +101,7 @@ def plane_gradient(z, valid, radius: int, cell: float):
 
 
 #: Rows per band of :func:`gradient_at` and :func:`plane_fit` (bounds the moment rasters' memory).
-BAND = 128
+BAND = 64
 
 
 def gradient_at(z, valid, radius: int, cell: float, rr, cc):
@@ -172,6 +172,41 @@ def plane_fit(z, valid, radius: int):
     return tuple(out)
 
 
+def plane_fit_where(z, valid, radius: int, select):
+    """:func:`plane_fit` band by band, keeping the planes only at the cells ``select`` picks.
+
+    Parameters
+    ----------
+    z, valid, radius
+        As for :func:`plane_fit`.
+    select : callable
+        ``select(rows, rms, centre, gx, gy)`` with ``rows`` a slice of the raster's rows
+        and the band's values there; returns ``(mask, extra)``: the cells kept and one
+        more array of values of the band (same shape).
+
+    Returns
+    -------
+    tuple
+        ``(mask, (centre, gx, gy, extra))``: the raster of kept cells and the values at
+        them in row-major order (``np.flatnonzero(mask)``), those of :func:`plane_fit`
+        bit for bit, without its four full-size rasters.
+    """
+    r = int(radius)
+    rows = z.shape[0]
+    mask = np.zeros(z.shape, bool)
+    parts = ([], [], [], [])
+    for b0 in range(0, rows, BAND):
+        lo, hi = max(0, b0 - r), min(rows, b0 + BAND + r)
+        n = min(BAND, rows - b0)
+        rms, centre, gx, gy = (v[b0 - lo:b0 - lo + n]
+                               for v in _plane_fit(z[lo:hi], valid[lo:hi], r))
+        m, extra = select(slice(b0, b0 + n), rms, centre, gx, gy)
+        mask[b0:b0 + n] = m
+        for p, v in zip(parts, (centre, gx, gy, extra)):
+            p.append(v[m])
+    return mask, tuple(np.concatenate(p) for p in parts)
+
+
 def _plane_fit(z, valid, radius: int):
     """:func:`plane_fit` of one raster at once."""
     m = _window_planes(z, valid, radius, spread=True)
@@ -212,8 +247,8 @@ def _knn(tree, q, k: int, lattice):
         Query cells ``(col, row)``.
     k : int
         Neighbours kept (at most the number of lattice cells).
-    lattice : ndarray of int, shape (n, 2)
-        The cells of the tree.
+    lattice : ndarray of float, shape (n, 2)
+        The cells of the tree (integer values).
 
     Returns
     -------
@@ -221,7 +256,8 @@ def _knn(tree, q, k: int, lattice):
         ``(d2, dc, dr, j)`` of shape (m, k): squared distance (cells²), column and row
         offset of the neighbour from the query cell, and its index in ``lattice``.
     """
-    qf = q.astype(np.float64)
+    q = q.astype(np.float64)
+    qf = q.copy()
     qf[:, 0] -= _TIE_COL
     qf[:, 1] -= _TIE_ROW
     bound = 2.0 * np.sqrt(k + 1.0)           # most hole cells have their border close by
@@ -230,7 +266,7 @@ def _knn(tree, q, k: int, lattice):
     far = np.isinf(d[:, -1])
     if far.any():
         j[far] = tree.query(qf[far], k=k)[1].reshape(-1, k)
-    dc = lattice[j, 0] - q[:, :1]
+    dc = lattice[j, 0] - q[:, :1]            # integers held exactly in float64
     dr = lattice[j, 1] - q[:, 1:]
     return dc * dc + dr * dr, dc, dr, j
 
@@ -279,7 +315,8 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         return R.fill_tin(z, valid)
     k = min(int(neighbours), rr.size)
     out = np.where(valid, z, np.nan)
-    hr, hc = np.nonzero(~valid if need is None else ~valid & need)
+    hr, hc = (v.astype(_index_type(z.shape)) for v in   # half the memory of int64 (same cells)
+              np.nonzero(~valid if need is None else ~valid & need))
     key = (z.shape, k, int(radius), float(cell), float(reach))
     d2k = np.full(z.shape, _NONE, np.uint16) if cache is not None else None
     same = _unchanged(prev, key, z, valid, hr, hc, radius)
@@ -290,8 +327,11 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     if hr.size:
         bz = z[rr, cc]
         bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
-        lattice = np.column_stack((cc, rr))
+        lattice = np.empty((rr.size, 2))             # float64: the tree keeps it, no copy
+        lattice[:, 0] = cc
+        lattice[:, 1] = rr
         tree = cKDTree(lattice)
+    del rr, cc, ring
     for s in range(0, hr.size, BATCH):
         r, c = hr[s:s + BATCH], hc[s:s + BATCH]
         d2, dc, dr, j = _knn(tree, np.column_stack((c, r)), k, lattice)
@@ -315,6 +355,11 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     if cache is not None:
         cache.update(key=key, valid=valid.copy(), out=out, d2k=d2k)
     return out
+
+
+def _index_type(shape):
+    """int32 when every row and column index of a raster of ``shape`` fits, else int64."""
+    return np.int32 if max(shape) < 2 ** 31 else np.int64
 
 
 #: Share of changed cells above which :func:`_unchanged` keeps nothing (after the
@@ -353,11 +398,14 @@ def _unchanged(prev, key, z, valid, hr, hc, radius):
         return None                                  # too many changes to be worth a check
     moved = np.argwhere(changed)
     if moved.size:
-        i = np.flatnonzero(ok)
-        reach = np.sqrt(d2k[i].astype(np.float64)) + 1.5 * max(int(radius), 1)
-        dist = cKDTree(moved).query(np.column_stack((hr[i], hc[i])), k=1,
-                                    distance_upper_bound=float(reach.max()) + 1.0)[0]
-        ok[i] = dist > reach
+        tree = cKDTree(moved)
+        kept = np.flatnonzero(ok)
+        for s in range(0, kept.size, BATCH):         # batches: bounded query arrays
+            i = kept[s:s + BATCH]
+            reach = np.sqrt(d2k[i].astype(np.float64)) + 1.5 * max(int(radius), 1)
+            dist = tree.query(np.column_stack((hr[i], hc[i])), k=1,
+                              distance_upper_bound=float(reach.max()) + 1.0)[0]
+            ok[i] = dist > reach
     return ok
 
 

@@ -323,9 +323,11 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     if info is not None:
         info.update(options=opt, n=int(x.size), grid=pc.grid)
     dtm = surface(zmin, pc.grid, opt, rep, need=need, info=info)
+    del zmin
     rep(0.8)
     last = {}             # the refine passes change few cells: few points relabelled
     cls = label_points(z, dtm, pc, opt, last)
+    del dtm
     cache = {}            # the refine fills change few cells: each keeps most of the last
     for k in range(int(opt.refine)):
         rep(0.8 + 0.2 * (k + 1) / (opt.refine + 1))
@@ -372,6 +374,10 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None):
     if opt.trend_window > 0 and opt.trend_smooth > 0:
         zf = zf - trend_surface(zf, grid, opt)
     obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep)
+    del zf
+    if np.ndim(slope):                               # the report reads min / median / max
+        slope = np.array((slope.min(), np.median(slope), slope.max())) if info is not None \
+            else None
     if opt.grow and opt.grow_iters > 0:
         skip = low | empty
         obj = grow_ground(zmin, obj, skip,
@@ -425,16 +431,17 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
         return obj
     rows, cols = zmin.shape
     rad = max(1, int(round(opt.grow_window / cell)))
-    rms, centre, gx, gy = S.plane_fit(zmin, ~skip, rad)
+    # candidates and their planes, band by band: only the candidate cells' values are kept
+    cand, (centre, gx, gy, tol) = S.plane_fit_where(
+        zmin, ~skip, rad, lambda b, rms, centre, gx, gy: _grow_candidates(
+            b, rms, centre, gx, gy, zmin, obj, skip, cell, opt))
+    if callable(dtm):
+        dtm = dtm(cand)
+    at = np.flatnonzero(cand)                        # cells of the kept values, sorted
     with np.errstate(invalid="ignore"):
-        steep = np.hypot(gx, gy)
-        tol = opt.grow_tol + opt.scaler * steep / cell
-        cand = (obj & ~skip & (rms <= opt.grow_rms) & (np.abs(zmin - centre) <= tol)
-                & (steep <= opt.grow_max_slope * cell))
-        del rms, steep                               # not needed by the fill below
-        if callable(dtm):
-            dtm = dtm(cand)
-        cand &= zmin - dtm <= opt.grow_max_rise
+        keep = zmin.ravel()[at] - dtm.ravel()[at] <= opt.grow_max_rise
+    del dtm
+    cand.ravel()[at[~keep]] = False
     offs = [(dr, dc) for dr in range(-rad, rad + 1) for dc in range(-rad, rad + 1)
             if (dr, dc) != (0, 0)]
     fp = np.ones((2 * rad + 1, 2 * rad + 1), bool)
@@ -443,14 +450,16 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
         rr, cc = np.nonzero(front)
         if rr.size == 0:
             break
+        i = np.searchsorted(at, rr * cols + cc)
+        ce, ex, ey = centre[i], gx[i], gy[i]
         best = np.full(rr.size, np.inf)
         for dr, dc in offs:
             nr, nc = rr + dr, cc + dc
             inb = (nr >= 0) & (nr < rows) & (nc >= 0) & (nc < cols)
             nr, nc = np.where(inb, nr, 0), np.where(inb, nc, 0)
-            e = np.abs(zmin[nr, nc] - centre[rr, cc] - gx[rr, cc] * dc - gy[rr, cc] * dr)
+            e = np.abs(zmin[nr, nc] - ce - ex * dc - ey * dr)
             best = np.minimum(best, np.where(inb & ground[nr, nc], e, np.inf))
-        acc = best <= tol[rr, cc]
+        acc = best <= tol[i]
         if not acc.any():
             break
         front[:] = False
@@ -458,6 +467,17 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
         ground |= front
         front = cand & ~ground & ndimage.binary_dilation(front, structure=fp)
     return obj & ~ground
+
+
+def _grow_candidates(b, rms, centre, gx, gy, zmin, obj, skip, cell, opt):
+    """Candidate cells of :func:`grow_ground` in rows ``b`` (a slice), and their tolerance."""
+    with np.errstate(invalid="ignore"):
+        steep = np.hypot(gx, gy)
+        tol = opt.grow_tol + opt.scaler * steep / cell
+        z = zmin[b]
+        cand = (obj[b] & ~skip[b] & (rms <= opt.grow_rms) & (np.abs(z - centre) <= tol)
+                & (steep <= opt.grow_max_slope * cell))
+    return cand, tol
 
 
 def fill_holes(z, valid, grid, opt, need=None, cache=None):
@@ -523,6 +543,10 @@ def progressive_objects(zf, cell, max_window, slope, rep):
     return obj
 
 
+#: Stencil of a central-difference slope cell (:func:`._raster.slope`).
+_CROSS = ndimage.generate_binary_structure(2, 1)
+
+
 def label_points(z, dtm, pc, opt, last=None):
     """Per-point classes against the DTM with a slope-dependent tolerance.
 
@@ -537,10 +561,12 @@ def label_points(z, dtm, pc, opt, last=None):
     opt : RecommendedOptions
         Options.
     last : dict, optional
-        The previous call's DTM, slope raster and classes (filled here when empty):
-        only the points reading a cell whose value changed are labelled again
-        (:meth:`._raster.PointCells.reading`), the others keep their class - the same
-        classes as labelling every point.
+        The previous call's DTM and classes (filled here when empty): only the points
+        reading a cell whose value changed are labelled again
+        (:meth:`._raster.PointCells.reading`; a slope cell can change only where the DTM
+        changed in it or its 4 neighbours, the central differences' stencil), the others
+        keep their class - the same classes as labelling every point. The DTM is kept,
+        not copied: the caller must not change it in place afterwards.
 
     Returns
     -------
@@ -549,7 +575,9 @@ def label_points(z, dtm, pc, opt, last=None):
     """
     slope = R.slope(dtm, pc.grid.cell)
     if last:
-        pts = pc.reading(R.changed(last["dtm"], dtm), R.changed(last["slope"], slope))
+        moved = R.changed(last["dtm"], dtm)
+        pts = pc.reading(moved, ndimage.binary_dilation(moved, structure=_CROSS))
+        del moved
         cls = last["classes"].copy()
     else:
         pts = None
@@ -568,7 +596,7 @@ def label_points(z, dtm, pc, opt, last=None):
         c[dz < -tol] = LOW_NOISE
         cls[p] = c
     if last is not None:
-        last.update(dtm=dtm.copy(), slope=slope, classes=cls)
+        last.update(dtm=dtm, classes=cls)
     return cls
 
 
