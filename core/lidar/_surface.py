@@ -11,6 +11,9 @@ Nielson 1980).  The border gradients are least-squares planes over the valid
 cells of a small window, and the slope term is damped beyond ``reach`` metres so
 that a large hole (a building) is not extrapolated far.
 
+The continuity growing of the recommended filter (:func:`grow_ground`) is built on
+the same window planes (:func:`plane_fit_where`).
+
 References
 ----------
 Shepard, D. (1968). A two-dimensional interpolation function for irregularly-spaced
@@ -27,7 +30,7 @@ from scipy.spatial import cKDTree
 
 from . import _raster as R  # noqa: N812
 
-__all__ = ["plane_fit", "plane_fit_where", "plane_gradient", "tangent_fill"]
+__all__ = ["grow_ground", "plane_fit", "plane_fit_where", "plane_gradient", "tangent_fill"]
 
 #: Hole cells processed per batch (bounds the k-neighbour arrays' memory).
 BATCH = 16_384
@@ -407,6 +410,95 @@ def _unchanged(prev, key, z, valid, hr, hc, radius):
                               distance_upper_bound=float(reach.max()) + 1.0)[0]
             ok[i] = dist > reach
     return ok
+
+
+def grow_ground(zmin, obj, skip, dtm, cell, opt):
+    """Object cells left after growing the ground along continuous surfaces (step 5b).
+
+    A terrain crest (terrace edge, embankment, ridge) that the opening removed is
+    continuous with the ground beside it; a roof is separated from it by a wall.
+    A flagged cell becomes ground when the least-squares plane over the occupied
+    cells of its window fits them within ``grow_rms`` (one continuous surface, no
+    wall or vegetation in it), the cell and one of its already accepted neighbours
+    both lie within ``grow_tol + scaler x slope`` of that plane, the plane is no
+    steeper than ``grow_max_slope`` and the cell no more than ``grow_max_rise``
+    above the provisional DTM. Repeated ``grow_iters`` times from the cells just
+    accepted (whole-raster vectorised steps).
+
+    Parameters
+    ----------
+    zmin : ndarray
+        Minimum-z raster (NaN where empty).
+    obj : ndarray of bool
+        Object cells of the opening.
+    skip : ndarray of bool
+        Cells neither ground nor candidates (empty, low outliers).
+    dtm : ndarray or callable
+        Provisional DTM filled from the ground cells, or ``dtm(read)`` returning it
+        filled at least in the cells ``read`` (the candidates: the other cells are
+        never read).
+    cell : float
+        Cell size (m).
+    opt : RecommendedOptions
+        Options (``grow_*``, ``scaler``).
+
+    Returns
+    -------
+    ndarray of bool
+        ``obj`` without the cells grown into.
+    """
+    ground = ~(obj | skip)
+    if not ground.any() or not (obj & ~skip).any():
+        return obj
+    rows, cols = zmin.shape
+    rad = max(1, int(round(opt.grow_window / cell)))
+    # candidates and their planes, band by band: only the candidate cells' values are kept
+    cand, (centre, gx, gy, tol) = plane_fit_where(
+        zmin, ~skip, rad, lambda b, rms, centre, gx, gy: _grow_candidates(
+            b, rms, centre, gx, gy, zmin, obj, skip, cell, opt))
+    if callable(dtm):
+        dtm = dtm(cand)
+    at = np.flatnonzero(cand)                        # cells of the kept values, sorted
+    with np.errstate(invalid="ignore"):
+        keep = zmin.ravel()[at] - dtm.ravel()[at] <= opt.grow_max_rise
+    del dtm
+    cand.ravel()[at[~keep]] = False
+    offs = [(dr, dc) for dr in range(-rad, rad + 1) for dc in range(-rad, rad + 1)
+            if (dr, dc) != (0, 0)]
+    fp = np.ones((2 * rad + 1, 2 * rad + 1), bool)
+    front = cand & ndimage.binary_dilation(ground, structure=fp)
+    for _ in range(int(opt.grow_iters)):
+        rr, cc = np.nonzero(front)
+        if rr.size == 0:
+            break
+        i = np.searchsorted(at, rr * cols + cc)
+        ce, ex, ey = centre[i], gx[i], gy[i]
+        best = np.full(rr.size, np.inf)
+        for dr, dc in offs:
+            nr, nc = rr + dr, cc + dc
+            inb = (nr >= 0) & (nr < rows) & (nc >= 0) & (nc < cols)
+            nr, nc = np.where(inb, nr, 0), np.where(inb, nc, 0)
+            e = np.abs(zmin[nr, nc] - ce - ex * dc - ey * dr)
+            best = np.minimum(best, np.where(inb & ground[nr, nc], e, np.inf))
+        acc = best <= tol[i]
+        if not acc.any():
+            break
+        front[:] = False
+        front[rr[acc], cc[acc]] = True                   # the cells just accepted
+        ground |= front
+        front = cand & ~ground & ndimage.binary_dilation(front, structure=fp)
+    return obj & ~ground
+
+
+def _grow_candidates(b, rms, centre, gx, gy, zmin, obj, skip, cell, opt):
+    """Candidate cells of :func:`grow_ground` in rows ``b`` (a slice), and their tolerance."""
+    with np.errstate(invalid="ignore"):
+        steep = np.hypot(gx, gy)
+        tol = opt.grow_tol + opt.scaler * steep / cell
+        z = zmin[b]
+        cand = (obj[b] & ~skip[b] & (rms <= opt.grow_rms) & (np.abs(z - centre) <= tol)
+                & (steep <= opt.grow_max_slope * cell))
+    return cand, tol
 
 
 def trend_surface(zf, grid, opt):
