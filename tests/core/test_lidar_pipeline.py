@@ -68,6 +68,9 @@ def test_classes_bookkeeping_and_attributes(cloud, tmp_path):
     assert len(laspy.read(gout).x) == run.n_ground
     assert a.header.parse_crs() == b.header.parse_crs()
     assert "Dummy filter" in html.read_text(encoding="utf-8")
+    vals, cnt = np.unique(cls, return_counts=True)                # oracle of counts()
+    assert run.counts() == {int(v): int(c) for v, c in zip(vals, cnt)}
+    assert list(run.counts()) == [1, 2, 7, 18]
 
 
 def test_outputs_checked_against_inputs_and_each_other(cloud, tmp_path):
