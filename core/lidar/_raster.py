@@ -171,10 +171,11 @@ class PointCells:
             r0 += c0
             self.i00[s:e] = r0
         self.order = np.argsort(self.idx, kind="stable").astype(it)
-        sidx = self.idx[self.order]
-        self.starts = np.flatnonzero(np.r_[True, sidx[1:] != sidx[:-1]]).astype(it)
-        self.cells = sidx[self.starts]
-        del sidx
+        # runs of the sorted cell ids from their counts (no sorted copy of the ids)
+        count = np.bincount(self.idx, minlength=grid.rows * grid.cols)
+        self.cells = np.flatnonzero(count).astype(it)
+        self.starts = np.zeros(self.cells.size, it)
+        self.starts[1:] = np.cumsum(count[self.cells][:-1])
 
     def cell_min(self, z, mask=None):
         """Lowest z per cell (NaN where empty or no masked point)."""
