@@ -44,6 +44,12 @@ from geomatics_toolbox.core.lidar.pipeline import FilterOutputs, classify_file
 from geomatics_toolbox.core.io.points import ClassPoints
 from geomatics_toolbox.core.terrain import dtm as core_dtm
 from geomatics_toolbox.core.terrain.grid import grid_from_points
+# modules the job imports lazily, imported before the probe as the floor's are (laspy
+# alone, with pyproj and requests, is 0.3-0.4 s CPU): the rows compare work on points
+import laspy, osgeo.gdal
+from geomatics_toolbox.core.lidar import recommended, _recommended_filter
+from geomatics_toolbox.core.io import _las_write
+from geomatics_toolbox.core.terrain import idw
 decodes = []
 real = las_io._chunks
 def counting(reader, path, chunk_size):
