@@ -1,6 +1,7 @@
 """GSD / photogrammetric accuracy calculator (single camera, and batch over a table)."""
 from __future__ import annotations
 
+import inspect
 import math
 import os
 
@@ -251,8 +252,11 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
         camera = self.camera_inputs(parameters, context)
         distance = self.parameterAsDouble(parameters, self.DISTANCE, context)
         with self.output_contract(parameters, context, [self.OUTPUT_HTML]) as out:
-            result = core_gsd.compute(distance=distance, **camera,
-                                      **self.options(parameters, context))
+            try:
+                result = core_gsd.compute(distance=distance, **camera,
+                                          **self.options(parameters, context))
+            except InputError as exc:
+                raise named_as_parameter(exc) from None
             values = result.as_dict()
             outputs = {}
             for attr, name, unit in NUMERIC_OUTPUTS:
@@ -288,6 +292,18 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
             stereo_base=_optional(parameters, self.STEREO_BASE),
             forward_overlap=_optional(parameters, self.FORWARD_OVERLAP),
             side_overlap=_optional(parameters, self.SIDE_OVERLAP))
+
+
+def named_as_parameter(error: InputError) -> InputError:
+    """The core's refusal with the keyword it names as this dialog's parameter.
+
+    :func:`core_gsd.compute` names its keyword (``k_m``), which is the column name of a
+    ``gsdbatch`` table; here the user typed the parameter ``K_M``.
+    """
+    name = error.fields.get("name")
+    if name not in inspect.signature(core_gsd.compute).parameters:
+        return error
+    return InputError(error.template, **{**error.fields, "name": name.upper()})
 
 
 class GsdBatchAlgorithm(GeomaticsAlgorithm):

@@ -39,18 +39,35 @@ def test_camera_preset(qgis_processing):
 
 
 @pytest.mark.parametrize("params, name", [
-    ({**P100, "FOCAL_LENGTH": 0}, "focal_length"),
-    ({**P100, "DISTANCE": 0}, "distance"),
-    ({**P100, "IMAGE_WIDTH": 0}, "image_width"),
-    ({**P100, "PYRAMID_LEVEL": 1.5}, "pyramid_level"),
-    ({**P100, "SUBSAMPLING_STEP": 0.5}, "subsampling_step"),
+    ({**P100, "FOCAL_LENGTH": 0}, "FOCAL_LENGTH"),
+    ({**P100, "DISTANCE": 0}, "DISTANCE"),
+    ({**P100, "IMAGE_WIDTH": 0}, "IMAGE_WIDTH"),
+    ({**P100, "PYRAMID_LEVEL": 1.5}, "PYRAMID_LEVEL"),
+    ({**P100, "SUBSAMPLING_STEP": 0.5}, "SUBSAMPLING_STEP"),
+    ({**P100, "K_M": 0.0}, "K_M"),
+    ({**P100, "K_S": 0.0}, "K_S"),
     ({"DISTANCE": 5.88, "SENSOR_WIDTH": 6.123, "IMAGE_WIDTH": 3648}, "FOCAL_LENGTH"),
 ])
 def test_bad_input_raises_processing_exception(qgis_processing, params, name):
+    """The calculator names its parameter (K_M), not the core keyword (k_m) that the
+    batch table's columns use."""
     from qgis.core import QgsProcessingException
     with pytest.raises(QgsProcessingException) as err:
         qgis_processing.run("geomatics:gsdcalculator", params)
-    assert name.lower() in str(err.value).lower()
+    assert name in str(err.value) and name.lower() not in str(err.value)
+
+
+def test_bad_option_named_as_the_parameter_in_arabic():
+    from geomatics_toolbox.algorithms.gsd_calculator import named_as_parameter
+    from geomatics_toolbox.core.errors import FSI, PDI, InputError
+    from geomatics_toolbox.core.photogrammetry import gsd as core_gsd
+    with pytest.raises(InputError) as err:
+        core_gsd.compute(distance=5.88, sensor_width=6.123, image_width=3648,
+                         focal_length=4.6, k_m=0.0)
+    assert str(err.value) == "k_m must be > 0 px, got 0 px."     # gsdbatch: the column
+    named = named_as_parameter(err.value)
+    assert str(named) == "K_M must be > 0 px, got 0 px."
+    assert f"{FSI}K_M{PDI}" in named.message("ar")
 
 
 def test_negative_focal_length_refused_by_qgis(qgis_processing):
