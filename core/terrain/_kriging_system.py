@@ -184,20 +184,8 @@ class Kriging:
         return out, var
 
     def check_cross_validation(self) -> None:
-        """Refuse leave-one-out cross-validation when no point can be left out.
-
-        Raises
-        ------
-        InputError
-            Naming NEIGHBOURS and CV_POINTS (the kriging algorithm's parameters).
-        """
-        if self.n_closest >= self.n_points:
-            # the algorithm's parameters (NEIGHBOURS, CV_POINTS), as the user sets them
-            raise InputError("Cross-validation (CV_POINTS) leaves each point out, so "
-                             "Neighbours per cell (NEIGHBOURS = {k}) must be fewer than the "
-                             "{n} distinct point positions: set NEIGHBOURS to {m} or fewer, "
-                             "or CV_POINTS to 0.", k=self.n_closest, n=self.n_points,
-                             m=self.n_points - 1)
+        """Refuse leave-one-out cross-validation here (:func:`check_cross_validation`)."""
+        check_cross_validation(self.n_closest, self.n_points)
 
     def cross_validate(self, n: int = 1000, *, seed: int = 0) -> Dict[str, float]:
         """Leave-one-out cross-validation on a random subsample of ``n`` points.
@@ -281,6 +269,21 @@ def check_neighbours(n_closest: int, n_points: int, drift: str) -> None:
         raise InputError("Only {n} distinct point positions to krige from, but Neighbours "
                          "per cell (NEIGHBOURS) is {k}: set NEIGHBOURS to {n} or fewer, or "
                          "use a cloud with more ground points.", n=n_points, k=n_closest)
+
+
+def check_cross_validation(n_closest: int, n_points: int) -> None:
+    """Refuse leave-one-out cross-validation when no point can be left out.
+
+    Raises
+    ------
+    InputError
+        Naming NEIGHBOURS and CV_POINTS (the kriging algorithm's parameters).
+    """
+    if n_closest >= n_points:
+        raise InputError("Cross-validation (CV_POINTS) leaves each point out, so "
+                         "Neighbours per cell (NEIGHBOURS = {k}) must be fewer than the "
+                         "{n} distinct point positions: set NEIGHBOURS to {m} or fewer, "
+                         "or CV_POINTS to 0.", k=n_closest, n=n_points, m=n_points - 1)
 
 
 def single_threaded_blas():

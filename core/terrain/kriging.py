@@ -80,7 +80,12 @@ from ._kriging_base import (  # noqa: F401 - the public names of this module
     merge_duplicates,
     variogram_function,
 )
-from ._kriging_system import Kriging, single_threaded_blas  # noqa: F401
+from ._kriging_system import (  # noqa: F401
+    Kriging,
+    check_cross_validation,
+    check_neighbours,
+    single_threaded_blas,
+)
 from .grid import GridSpec, check_memory, distance_mask, resolve_max_distance, row_blocks
 
 
@@ -355,6 +360,14 @@ def kriging_grid(x, y, z, grid: GridSpec, *, model: str = "spherical",
         return _flat_result(x, y, z, grid, model=model, drift=drift, n_closest=n_closest,
                             max_distance=max_distance, fill=fill, cv_points=cv_points,
                             workers=workers, mon=mon)
+    # the neighbourhood before the variogram fit, whose own refusal would hide it; the
+    # distinct positions are counted only when they may matter (few points)
+    n_closest = int(n_closest)
+    few = n_closest >= x.size
+    n_distinct = merge_duplicates(x, y, z)[0].size if few else x.size
+    check_neighbours(n_closest, n_distinct, drift)
+    if int(cv_points) > 0:
+        check_cross_validation(n_closest, n_distinct)
     if variogram is None:
         variogram = fit_variogram(x, y, z, model=model, fit_points=fit_points, nlags=nlags,
                                   max_lag=max_lag, n_neighbours=n_closest, weight=weight,

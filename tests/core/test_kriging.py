@@ -162,6 +162,10 @@ def test_neighbour_refusals_name_the_algorithm_parameters():
     with pytest.raises(ValueError, match=r"Ordinary kriging needs at least 2 Neighbours per "
                                          r"cell \(NEIGHBOURS\), got 1"):
         Kriging(x, y, z, variogram=v, n_closest=1)
+    grid3 = grid_from_extent((x.min(), x.max(), y.min(), y.max()), 5.0)
+    with pytest.raises(ValueError, match=r"Only 3 distinct point positions to krige from, "
+                                         r"but Neighbours per cell \(NEIGHBOURS\) is 16"):
+        kriging_grid(x, y, z, grid3, n_closest=16)       # before the variogram fit's refusal
     x, y, z = terrain(10)
     grid = grid_from_extent((x.min(), x.max(), y.min(), y.max()), 5.0)
     calls = []
