@@ -101,10 +101,21 @@ def _block_min(z, f: int, anchor=(0, 0)):
     pr, pc = anchor[0] % f, anchor[1] % f
     r2, c2 = -(-(rows + pr) // f), -(-(cols + pc) // f)
     zp = np.full((r2 * f, c2 * f), np.inf)
-    zp[pr:pr + rows, pc:pc + cols] = np.where(np.isnan(z), np.inf, z)
+    zp[pr:pr + rows, pc:pc + cols] = z
+    zp[np.isnan(zp)] = np.inf
     out = zp.reshape(r2, f, c2, f).min(axis=(1, 3))
     out[np.isinf(out)] = np.nan
     return out, (anchor[0] // f, anchor[1] // f)
+
+
+def _block_any(mask, f: int, anchor=(0, 0)):
+    """Blocks (aligned as in :func:`_block_min`) holding at least one True cell of ``mask``."""
+    rows, cols = mask.shape
+    pr, pc = anchor[0] % f, anchor[1] % f
+    r2, c2 = -(-(rows + pr) // f), -(-(cols + pc) // f)
+    mp = np.zeros((r2 * f, c2 * f), bool)
+    mp[pr:pr + rows, pc:pc + cols] = mask
+    return mp.reshape(r2, f, c2, f).any(axis=(1, 3))
 
 
 def _expand(a, f: int, shape, anchor=(0, 0)):
@@ -140,7 +151,7 @@ def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
     LowCells
         The mask and what was derived.
     """
-    pits, _ = closing_pits(zmin, step, anchor)
+    pits = closing_pits(zmin, step, anchor)[0]          # the closing itself is not kept
     occupied = ~np.isnan(zmin)
     n_occ = max(1, int(np.count_nonzero(occupied)))
     if not pits.any():
@@ -155,7 +166,7 @@ def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
     for f in FACTORS:
         coarse, canchor = _block_min(zmin, f, anchor)
         cpits, clo = closing_pits(coarse, step, canchor)
-        area = _block_min(np.where(canopy, 0.0, np.nan), f, anchor)[0] == 0.0
+        area = _block_any(canopy, f, anchor)
         n_area = np.count_nonzero(area & ~np.isnan(coarse))
         if np.count_nonzero(cpits & area) < share_coarse * max(1, n_area):
             break

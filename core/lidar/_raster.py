@@ -287,9 +287,9 @@ def fill(z, valid, anchor=(0, 0)):
         return z.copy()
     if not valid.any():
         raise InputError("No valid cell to interpolate from.")
-    w = valid.astype(np.float64)
-    v = np.where(valid, z, 0.0)
-    return _pushpull(v * w, w, int(anchor[0]), int(anchor[1]))
+    # weights 0/1: the weighted values are the values (0 where invalid), and the boolean
+    # mask sums to the same integer block weights - no float64 weight raster
+    return _pushpull(np.where(valid, z, 0.0), valid, int(anchor[0]), int(anchor[1]))
 
 
 def _pushpull(vw, w, r0=0, c0=0):
@@ -311,8 +311,7 @@ def _pushpull(vw, w, r0=0, c0=0):
     coarse = _pushpull(cvw, cw, r0 // 2, c0 // 2)
     up = ndimage.zoom(coarse, 2, order=1, mode="nearest", grid_mode=True)
     up = up[pr:pr + rows, pc:pc + cols]
-    out = np.divide(vw, w, out=up.copy(), where=w > 0)
-    return out
+    return np.divide(vw, w, out=up, where=w > 0)       # the upsampled array is ours
 
 
 #: resolution of :func:`box_mean` (2**-20 of the unit, about 1 micrometre)
@@ -368,8 +367,10 @@ def _window_sums(q, size: int, n: int, axis: int):
 def opening(z, radius):
     """Grey opening with a (2r+1)² square window (separable min/max filters)."""
     size = 2 * int(radius) + 1
-    return ndimage.maximum_filter(ndimage.minimum_filter(z, size=size, mode="nearest"),
-                                  size=size, mode="nearest")
+    out = ndimage.minimum_filter(z, size=size, mode="nearest")
+    # in place: scipy's separable filter already runs its second axis from its output
+    # into itself (each line is buffered), so the dilation may too - one raster, not two
+    return ndimage.maximum_filter(out, size=size, mode="nearest", output=out)
 
 
 def slope(z, cell):

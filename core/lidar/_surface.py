@@ -275,7 +275,7 @@ def _knn(tree, q, k: int, lattice):
 
 
 def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12,
-                 reach: float = 10.0, need=None, cache=None):
+                 reach: float = 10.0, need=None, cache=None, overwrite: bool = False):
     """Fill invalid cells with the weighted tangent planes of the hole borders.
 
     Parameters
@@ -300,6 +300,9 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         keeps the previous call's value when no cell changed (valid or height) within
         its ``neighbours``-th border distance plus the plane window
         (:func:`_unchanged`) - the value a new computation would give, bit for bit.
+    overwrite : bool
+        Fill ``z`` itself (float64) and return it, sparing a raster: only its invalid
+        cells are written, after the valid ones were read.
 
     Returns
     -------
@@ -317,7 +320,11 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     if rr.size < 3:
         return R.fill_tin(z, valid)
     k = min(int(neighbours), rr.size)
-    out = np.where(valid, z, np.nan)
+    if overwrite:
+        out = z
+        out[~valid] = np.nan
+    else:
+        out = np.where(valid, z, np.nan)
     hr, hc = (v.astype(_index_type(z.shape)) for v in   # half the memory of int64 (same cells)
               np.nonzero(~valid if need is None else ~valid & need))
     key = (z.shape, k, int(radius), float(cell), float(reach))
@@ -555,6 +562,7 @@ def terrain_slope(zf, grid, opt):
         Slope tolerance per cell (rise/run).
     """
     r = max(1, int(np.ceil(opt.max_window / grid.cell)))
-    base = R.opening(zf, r)
-    t = R.box_mean(R.slope(base, grid.cell), 2 * r + 1)
-    return np.clip(opt.slope_factor * t, opt.slope_min, opt.slope_max)
+    t = R.slope(R.opening(zf, r), grid.cell)
+    t = R.box_mean(t, 2 * r + 1)
+    t *= opt.slope_factor
+    return np.clip(t, opt.slope_min, opt.slope_max, out=t)

@@ -332,8 +332,8 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     for k in range(int(opt.refine)):
         rep(0.8 + 0.2 * (k + 1) / (opt.refine + 1))
         zg = pc.cell_min(z, cls == GROUND)
-        cls = label_points(z, fill_holes(zg, ~np.isnan(zg), pc.grid, opt, need, cache),
-                           pc, opt, last)
+        zg = fill_holes(zg, ~np.isnan(zg), pc.grid, opt, need, cache, overwrite=True)
+        cls = label_points(z, zg, pc, opt, last)
     rep(1.0)
     return cls
 
@@ -372,7 +372,7 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None):
     zf = R.fill(zmin, ~(low | empty), grid.anchor)
     slope = opt.slope if opt.slope is not None else terrain_slope(zf, grid, opt)
     if opt.trend_window > 0 and opt.trend_smooth > 0:
-        zf = zf - trend_surface(zf, grid, opt)
+        zf -= trend_surface(zf, grid, opt)          # zf is the fill's own array
     obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep)
     del zf
     if np.ndim(slope):                               # the report reads min / median / max
@@ -391,7 +391,7 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None):
     return fill_holes(zmin, ~bad, grid, opt, need, cache)
 
 
-def fill_holes(z, valid, grid, opt, need=None, cache=None):
+def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False):
     """Fill the non-ground cells of a DTM raster with border tangent planes.
 
     Parameters
@@ -410,6 +410,8 @@ def fill_holes(z, valid, grid, opt, need=None, cache=None):
         Shared by the fills of one run: a hole cell keeps the neighbours of the
         previous fill where no border changed near it (identical values, fewer
         KD-tree searches).
+    overwrite : bool
+        Fill ``z`` in place (its invalid cells).
 
     Returns
     -------
@@ -419,7 +421,7 @@ def fill_holes(z, valid, grid, opt, need=None, cache=None):
     return S.tangent_fill(z, valid, grid.cell,
                           radius=max(1, int(round(opt.fill_radius / grid.cell))),
                           neighbours=opt.fill_neighbours, reach=opt.fill_reach, need=need,
-                          cache=cache)
+                          cache=cache, overwrite=overwrite)
 
 
 def progressive_objects(zf, cell, max_window, slope, rep):
@@ -449,7 +451,10 @@ def progressive_objects(zf, cell, max_window, slope, rep):
     for k, r in enumerate(radii):
         rep(0.3 + 0.5 * k / radii.size)
         opened = R.opening(cur, r)
-        obj |= (cur - opened) > slope * r * cell
+        for b0 in range(0, zf.shape[0], R.BAND):    # bands: no full-size temporaries
+            b = slice(b0, b0 + R.BAND)
+            s = slope[b] if np.ndim(slope) else slope
+            obj[b] |= (cur[b] - opened[b]) > s * r * cell
         cur = opened
     return obj
 
