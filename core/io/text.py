@@ -7,7 +7,8 @@ this order:
 2. UTF-8, with or without a byte-order mark (QGIS, Excel's "CSV UTF-8");
 3. otherwise the machine's Windows ANSI code page — what Excel's plain "CSV" writes
    on that machine: Windows-1252 in Western locales, Windows-1256 for Arabic and
-   Persian — or Windows-1252 where the system encoding is UTF-8 (Linux, macOS).
+   Persian, cp932 in Japan … — or Windows-1252 where the system encoding is UTF-8
+   (Linux, macOS).
 
 A file with NUL bytes (binary) or with bytes the code page does not define is
 refused naming the file, the byte and the fix (save as CSV UTF-8). Only names and
@@ -39,8 +40,8 @@ def legacy_encoding() -> str:
     """Return the Windows ANSI code page of this machine (``cp1252``, ``cp1256`` …).
 
     ``locale.getencoding`` (Python ≥ 3.11) ignores UTF-8 mode; older Pythons use the
-    preferred encoding. Anything that is not a ``cp125x`` page (UTF-8 systems) gives
-    :data:`LEGACY_DEFAULT`.
+    preferred encoding. A UTF or ASCII system encoding (Linux, macOS) gives
+    :data:`LEGACY_DEFAULT`; any other page is kept (``cp932`` on Japanese Windows).
     """
     getter = getattr(locale, "getencoding", None)
     try:
@@ -48,7 +49,7 @@ def legacy_encoding() -> str:
         enc = codecs.lookup(enc).name if enc else ""
     except (LookupError, ValueError):
         enc = ""
-    return enc if enc.startswith("cp125") else LEGACY_DEFAULT
+    return enc if enc and not enc.startswith(("utf", "ascii")) else LEGACY_DEFAULT
 
 
 def _not_text(path, offset: int, encoding: str) -> InputError:

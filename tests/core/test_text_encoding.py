@@ -56,7 +56,8 @@ def test_unicode_files_read_alike_whatever_the_machine(tmp_path, monkeypatch, en
 
 def test_default_legacy_page_is_the_machines_windows_code_page(monkeypatch):
     for system, page in (("cp1256", "cp1256"), ("cp1252", "cp1252"), ("UTF-8", "cp1252"),
-                         ("ANSI_X3.4-1968", "cp1252"), ("", "cp1252")):
+                         ("ANSI_X3.4-1968", "cp1252"), ("", "cp1252"), ("cp932", "cp932"),
+                         ("utf-8-sig", "cp1252"), ("no-such-codec", "cp1252")):
         monkeypatch.setattr(text_io.locale, "getencoding", lambda s=system: s, raising=False)
         assert text_io.legacy_encoding() == page, system
 
