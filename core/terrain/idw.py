@@ -66,7 +66,10 @@ TIE_ORDERS = ("gdal", "input", "xy")
 #: IDW power of every entry point (idwdtm, lidartodtm, the model, catalogs): GDAL's
 #: invdistnn default
 DEFAULT_POWER = 2.0
-DEFAULT_BLOCK_CELLS = 262_144
+#: cells per block of :func:`idw_grid` (each cell's value does not depend on it): 65,536
+#: keeps the neighbour arrays near 8 MB, reused from block to block (262,144 faulted
+#: in fresh pages each time: 3.12 -> 2.94 s CPU for 801,025 cells, same DTM bits)
+DEFAULT_BLOCK_CELLS = 65_536
 
 
 def _validate(x, y, z, power, max_points, radius, min_points, smoothing):

@@ -203,3 +203,22 @@ def test_ties_rank_only_the_tied_points(tie_order):
     ties = np.arange(0, x.size, 7)
     assert np.array_equal(np.argsort(interp.tie_keys(ties)), np.argsort(full[ties]))
     assert np.array_equal(interp.predict(gx.ravel(), gy.ravel()), got)  # full-rank path
+
+
+@pytest.mark.parametrize("tie_order", ["gdal", "xy"])
+def test_dtm_bits_do_not_depend_on_the_block_size(tie_order):
+    """A cell's value depends on its neighbours only: blocks of 7 cells, the default and
+    one block give the same bits, ties (a lattice cloud: every cell has tied 12th and
+    13th neighbours) and a radius with empty cells included."""
+    xx, yy = np.meshgrid(np.arange(0.0, 60.0, 1.5), np.arange(0.0, 45.0, 1.5))
+    x, y = xx.ravel(), yy.ravel()
+    z = 10 + np.sin(x / 7.0) + np.cos(y / 5.0)
+    keep = ~((x > 40) & (y > 30))                                     # a gap
+    x, y, z = x[keep], y[keep], z[keep]
+    grid = grid_from_extent((0, 60, 0, 45), 0.5)
+    for radius in (None, 2.0):
+        runs = [idw_grid(x, y, z, grid, radius=radius, fill=True, tie_order=tie_order,
+                         block_cells=b) for b in (7, 65_536, grid.size)]
+        assert np.isfinite(runs[0]).sum() > 1000
+        for r in runs[1:]:
+            assert np.array_equal(r.view(np.int64), runs[0].view(np.int64))
