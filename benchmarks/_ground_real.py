@@ -205,7 +205,7 @@ def density_md(rows, n_points):
          "`synthetic.lidar.generate_tile` at each density; every run in a fresh process "
          "with one thread (`_probe.run_python`), the filters' modules (ours and pysmrf) "
          "imported before the probe; CPU time is the process's own, wall time "
-         "was taken on a loaded machine (2 cores shared by 8 engineers; load average "
+         "was taken on a loaded machine (2 cores shared with other engineers' jobs; load average "
          f"{load[0]:.1f} at the end). Peak = VmHWM after a reset, including the resident "
          "baseline (Python, numpy, the coordinates).", "",
          "| density (pts/m²) | filter | points | CPU s | points/s (CPU) | × SMRF (CPU) | "

@@ -1,0 +1,129 @@
+"""Banded and in-place raster steps of the recommended filter equal the plain expressions.
+
+The filter's memory was cut (issue 21: at most 200 bytes per point) by computing the
+large rasters in bands of rows, in place, or only at the cells that are read. Each form
+must give bit for bit what the whole-raster expression it replaced gives (the class sha1
+goldens of tests/core/test_ground_filters.py rest on it); the references below are
+those expressions.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy import ndimage
+
+from geomatics_toolbox.core.lidar import _lowcells as L  # noqa: N812
+from geomatics_toolbox.core.lidar import _raster as R  # noqa: N812
+from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
+from geomatics_toolbox.core.lidar import recommended as rec
+
+#: shapes around the band sizes (64 and 128 rows), thin rasters and a single row
+SHAPES = [(1, 9), (2, 5), (3, 3), (63, 7), (129, 40), (257, 31), (300, 2)]
+
+
+def _terrain(shape, seed, holes=0.3):
+    rng = np.random.default_rng(seed)
+    r, c = np.mgrid[:shape[0], :shape[1]]
+    z = 100 + 0.3 * c - 0.2 * r + 2 * np.sin(r / 7.0) + rng.normal(0, 0.3, shape)
+    z[rng.random(shape) < 0.05] += 15                  # objects
+    valid = rng.random(shape) > holes
+    return z, valid
+
+
+def _plain_box_mean(a, size):
+    q = np.rint(np.asarray(a, np.float64) * 2.0 ** 20).astype(np.int64)
+    h = size // 2
+    for axis in (0, 1):
+        n = q.shape[axis]
+        cs = np.cumsum(np.take(q, np.clip(np.arange(-h, n + size - h - 1), 0, n - 1),
+                               axis=axis), axis=axis)
+        cs = np.concatenate((np.zeros_like(np.take(cs, [0], axis=axis)), cs), axis=axis)
+        q = np.take(cs, np.arange(size, size + n), axis=axis) - np.take(cs, np.arange(n),
+                                                                         axis=axis)
+    return q / (2.0 ** 20 * size * size)
+
+
+@pytest.mark.parametrize("shape", SHAPES)
+def test_box_mean_slope_and_opening_equal_the_whole_raster_expressions(shape):
+    z, _ = _terrain(shape, 1)
+    for size in (3, 37, 55, 301):
+        np.testing.assert_array_equal(R.box_mean(z, size), _plain_box_mean(z, size))
+    for cell in (1.0, 0.3):
+        if min(shape) >= 2:
+            gy, gx = np.gradient(z, cell)
+            np.testing.assert_array_equal(R.slope(z, cell), np.hypot(gx, gy))
+    for r in (1, 3, 18):
+        size = 2 * r + 1
+        want = ndimage.maximum_filter(ndimage.minimum_filter(z, size=size, mode="nearest"),
+                                      size=size, mode="nearest")
+        np.testing.assert_array_equal(R.opening(z, r), want)
+
+
+@pytest.mark.parametrize("shape", SHAPES[2:])
+def test_push_pull_with_boolean_weights_equals_float_weights(shape):
+    z, valid = _terrain(shape, 2, holes=0.6)
+    w = valid.astype(np.float64)
+    for anchor in ((0, 0), (3, 5)):
+        want = R._pushpull(np.where(valid, z, 0.0) * w, w, *anchor)
+        np.testing.assert_array_equal(R.fill(z, valid, anchor), want)
+
+
+def test_plane_fit_where_equals_plane_fit_at_the_kept_cells():
+    z, valid = _terrain((300, 45), 3)
+    rms, centre, gx, gy = S.plane_fit(z, valid, 3)
+
+    def select(b, rms_b, centre_b, gx_b, gy_b):
+        return (rms_b < 0.6) & (np.arange(b.start, b.start + rms_b.shape[0]) % 3 != 0)[:, None], \
+            np.hypot(gx_b, gy_b)
+
+    mask, (c, x, y, extra) = S.plane_fit_where(z, valid, 3, select)
+    want = (rms < 0.6) & (np.arange(300) % 3 != 0)[:, None]
+    np.testing.assert_array_equal(mask, want)
+    assert want.sum() > 1000
+    for got, ref in ((c, centre), (x, gx), (y, gy), (extra, np.hypot(gx, gy))):
+        np.testing.assert_array_equal(got, ref[want])
+
+
+def test_growing_step_equals_the_whole_raster_candidates():
+    """grow_ground's banded candidates against the plain whole-raster expressions."""
+    z, valid = _terrain((200, 60), 4, holes=0.1)
+    skip = ~valid
+    obj = np.zeros(z.shape, bool)
+    obj[40:160, 10:50] = True                        # a wide object area over terrain
+    obj &= valid
+    opt = rec.RecommendedOptions()
+    dtm = np.full(z.shape, 100.0)
+    rms, centre, gx, gy = S.plane_fit(z, valid, 3)
+    with np.errstate(invalid="ignore"):
+        steep = np.hypot(gx, gy)
+        tol = opt.grow_tol + opt.scaler * steep
+        cand = (obj & ~skip & (rms <= opt.grow_rms) & (np.abs(z - centre) <= tol)
+                & (steep <= opt.grow_max_slope) & (z - dtm <= opt.grow_max_rise))
+    got_cand, (c, x, y, t) = S.plane_fit_where(
+        z, valid, 3, lambda b, *m: S._grow_candidates(b, *m, z, obj, skip, 1.0, opt))
+    got_cand &= z - dtm <= opt.grow_max_rise
+    np.testing.assert_array_equal(got_cand, cand)
+    assert cand.sum() > 100
+    left = rec.grow_ground(z, obj, skip, dtm, 1.0, opt)
+    assert (left <= obj).all() and left.sum() < obj.sum()
+
+
+def test_tangent_fill_in_place_equals_a_new_raster():
+    z, valid = _terrain((150, 70), 5, holes=0.4)
+    zg = np.where(valid, z, np.nan)
+    need = np.random.default_rng(0).random(z.shape) < 0.7
+    want = S.tangent_fill(zg.copy(), valid, 1.0, need=need)
+    own = zg.copy()
+    got = S.tangent_fill(own, valid, 1.0, need=need, overwrite=True)
+    assert got is own
+    np.testing.assert_array_equal(got, want)
+    assert np.isfinite(want[need]).all()
+
+
+def test_block_any_equals_the_block_minimum_test():
+    rng = np.random.default_rng(6)
+    mask = rng.random((61, 47)) < 0.02
+    for f in (2, 3, 16):
+        for anchor in ((0, 0), (5, 9)):
+            want = L._block_min(np.where(mask, 0.0, np.nan), f, anchor)[0] == 0.0
+            np.testing.assert_array_equal(L._block_any(mask, f, anchor), want)
