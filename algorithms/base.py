@@ -33,7 +33,7 @@ from qgis.PyQt.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QUrl
 from qgis.PyQt.QtGui import QIcon
 
 from ..core import deps
-from ..core.errors import InputError
+from ..core.errors import InputError, message_text
 from ..core.io.contract import OutputContract, Terminated, atomic_output
 from ..core.progress import Cancelled
 from ..core.reporting import about_rows, render_html
@@ -518,6 +518,16 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
             lang = "en"
         message = getattr(exc, "message", None)
         return message(lang) if callable(message) else str(exc)
+
+    @staticmethod
+    def core_message(message) -> str:
+        """A core sentence (:class:`~..core.reporting.content.T`, e.g. a warning) in the
+        QGIS interface language (English if untranslated)."""
+        try:
+            lang = user_locale()
+        except Exception:  # noqa: BLE001 - the message language is cosmetic
+            lang = "en"
+        return message_text(message, lang)
 
     # ---------------------------------------------------------------- packages
     def required_packages(self, parameters) -> list:

@@ -16,7 +16,7 @@ from qgis.core import (
 )
 
 from ..core.lidar import catalog as core_cat
-from ..core.lidar.catalog_report import catalog_report
+from ..core.lidar.catalog_report import catalog_report, catalog_warnings
 from ..core.progress import Cancelled
 from .base import GeomaticsAlgorithm
 from .helptext import build_help
@@ -197,6 +197,8 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                     "Cancelled by the user. {n} finished tile(s) are kept in {folder}: run "
                     "again with the same settings to resume; unfinished tiles left "
                     "nothing.").format(n=len(kept), folder=folder)) from None
+            for warning in catalog_warnings(res):
+                feedback.pushWarning(self.core_message(warning))
             if out.requested(self.OUTPUT_HTML):
                 report = catalog_report(res, np.asarray(res.settings["bounds"]),
                                         lang=self.report_lang(parameters, context))
@@ -214,7 +216,7 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                   done):
         """run_catalog with the parameters, a log line per tile."""
         return core_cat.run_catalog(
-            cat.paths, folder, ground_filter=fkey, dtm_method=dkey,
+            cat, folder, ground_filter=fkey, dtm_method=dkey,
             cell_size=self.parameterAsDouble(parameters, self.CELL_SIZE, context),
             buffer=self.parameterAsDouble(parameters, self.BUFFER, context),
             chunk_size=self.parameterAsDouble(parameters, self.CHUNK_SIZE, context),

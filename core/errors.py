@@ -67,6 +67,19 @@ def _field_text(value, lang: str):
     return value
 
 
+def message_text(message, lang: str) -> str:
+    """Return a :class:`~.reporting.content.T` sentence (or plain text) in ``lang``.
+
+    Warnings the core returns as ``T`` (e.g. a catalog run's) are shown in the log in
+    the interface language, fields bidi-isolated as in :meth:`InputError.message`.
+
+    >>> from geomatics_toolbox.core.reporting.content import T
+    >>> message_text(T("Tile {tile} failed.", tile="t1"), "en")
+    'Tile t1 failed.'
+    """
+    return str(_field_text(message, lang))
+
+
 def _is_t(value) -> bool:
     """Return True for a :class:`~.reporting.content.T` (without importing reporting)."""
     cls = type(value)

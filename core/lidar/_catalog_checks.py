@@ -31,8 +31,12 @@ STATE_DIR = ".catalog"
 
 
 def check_index(infos: List[LasInfo], unreadable: Dict[str, Exception],
-                skip_unreadable: bool) -> None:
-    """Refuse unreadable (unless skipped), empty, mixed-CRS, degree or duplicated tiles."""
+                skip_unreadable: bool, empty: Sequence[str] = ()) -> None:
+    """Refuse unreadable (unless skipped), mixed-CRS, degree or duplicated tiles.
+
+    ``infos``: the tiles with points; ``empty``: those without (left out), refused
+    only when no tile has a point.
+    """
     if unreadable and (not skip_unreadable or not infos):
         listing = [T("{tile}: {reason}", tile=os.path.basename(p), reason=r)
                    for p, r in list(unreadable.items())[:4]]
@@ -40,10 +44,11 @@ def check_index(infos: List[LasInfo], unreadable: Dict[str, Exception],
                          "or let the catalog skip unreadable tiles (SKIP_UNREADABLE; "
                          "their neighbours then get no buffer points from them).",
                          n=len(unreadable), listing=listing)
-    empty = [t.path for t in infos if t.count == 0]
-    if empty:
-        raise InputError("Tile(s) without points: {tiles}; remove them "
-                         "from the catalog.", tiles=', '.join(empty))
+    if not infos:
+        raise InputError("Every tile of the catalog is without points ({tiles}): there is "
+                         "nothing to process. Check the tiles given (INPUT): an export "
+                         "that failed, or the wrong folder.",
+                         tiles=", ".join(os.path.basename(p) for p in list(empty)[:6]))
     _check_bounds(infos)
     groups = _crs_groups(infos)
     if len(groups) > 1:
@@ -269,3 +274,32 @@ def _overlap_points(cat: Catalog, box) -> float:
     area = np.maximum((b[:, 2] - b[:, 0]) * (b[:, 3] - b[:, 1]), 1e-9)
     counts = np.array([t.count for t in cat.tiles], float)
     return float(np.sum(counts * np.minimum(w * h / area, 1.0)))
+
+
+def class_listing(counts: Dict[str, int], most: int = 4) -> str:
+    """``'9: 41000, 7: 3'``: classes and counts, the most frequent first (data, no words).
+
+    >>> class_listing({"2": 5, "9": 41000, "7": 3})
+    '9: 41000, 2: 5, 7: 3'
+    """
+    ranked = sorted(counts.items(), key=lambda kv: (-kv[1], int(kv[0])))
+    return ", ".join(f"{c}: {n}" for c, n in ranked[:most]) + (
+        ", …" if len(ranked) > most else "")
+
+
+def no_ground_error(chunks: Sequence[dict], n_tiles: int, n_points: int,
+                    ground_filter: str) -> InputError:
+    """Return the refusal of a catalog in which no tile has a ground point."""
+    counts: Dict[str, int] = {}
+    for c in chunks:
+        for k, n in (c.get("classes") or {}).items():
+            counts[k] = counts.get(k, 0) + int(n)
+    fix = (T("The classes already in the files are kept (GROUND_FILTER) and none is ground "
+             "(class 2): choose a ground filter (GROUND_FILTER) instead, or classify the "
+             "tiles first.") if ground_filter == "keep" else
+           T("Check that the tiles hold terrain (not only water, noise or vegetation) and "
+             "are in the right units, or choose another ground filter (GROUND_FILTER)."))
+    return InputError("No tile of the catalog has a ground point ({tiles} tiles, {points} "
+                      "points, by class: {classes}): there is no terrain to make a DTM of. "
+                      "{fix} Nothing was written.", tiles=n_tiles,
+                      points=n_points, classes=class_listing(counts) or "-", fix=fix)

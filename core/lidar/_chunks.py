@@ -24,7 +24,14 @@ from ..io.las import PointData, read_las, write_las, write_las_like
 from ..io.raster import write_geotiff
 from ..io.units import METRIC, Units
 from ..system import peak_rss_mb
-from ..terrain.dtm import DTM_METHODS, IdwOptions, dtm_method, register_dtm_method
+from ..terrain.dtm import (
+    DTM_METHODS,
+    MIN_DISTINCT_POINTS,
+    IdwOptions,
+    distinct_positions,
+    dtm_method,
+    register_dtm_method,
+)
 from ..terrain.grid import GridSpec
 from .filters import (
     GROUND_FILTERS,
@@ -38,7 +45,7 @@ from .filters import (
 
 GROUND = int(asprs.GROUND)
 __all__ = ["GROUND_FILTERS", "RECOMMENDED_FILTER", "DTM_METHODS", "register_ground_filter",
-           "register_dtm_method", "default_ground_filter", "chunk_dtm", "ChunkTask",
+           "register_dtm_method", "default_ground_filter", "chunk_dtm", "dtm_in_reach", "ChunkTask",
            "process_chunk", "read_chunk", "read_strip", "filter_chunk", "snap_grid", "is_done",
            "neighbour_paths"]
 
@@ -53,8 +60,26 @@ CHUNK_IDW = IdwOptions(tie_order="xy")
 
 def chunk_dtm(key: str, x, y, z, grid, max_distance: float) -> np.ndarray:
     """DTM of a chunk's ground points with the registered method ``key`` (one thread)."""
+    return dtm_in_reach(key, x, y, z, grid, max_distance)[0]
+
+
+def dtm_in_reach(key: str, x, y, z, grid, max_distance: float):
+    """DTM of the ground a chunk has within reach, and the neighbours used if cut.
+
+    A part of a catalog may hold little or no ground (a lake, the sea at the coast, a
+    tile of vegetation or noise only). Fewer than :data:`MIN_DISTINCT_POINTS` ground
+    positions in the tile and its buffer: every cell is nodata (the merged cloud's DTM
+    has no ground within the gap distance there when the buffer is wider than it; a
+    single-file DTM refuses such a cloud). Fewer points than the method's neighbours:
+    those points (:meth:`~..terrain.dtm.DtmMethod.within`). Returns ``(z, k)``, ``k``
+    the neighbours used when cut, else None.
+    """
+    if distinct_positions(x, y, MIN_DISTINCT_POINTS) < MIN_DISTINCT_POINTS:
+        return np.full(grid.shape, np.nan), None
     method = dtm_method(key, CHUNK_IDW if key == "idw" else None)
-    return method.interpolate(x, y, z, grid, max_distance=max_distance, workers=1).z
+    fitted = method.within(x, y)
+    used = None if fitted is method else int(fitted.options.neighbours)
+    return fitted.interpolate(x, y, z, grid, max_distance=max_distance, workers=1).z, used
 
 
 # ============================================================================ the task
@@ -306,12 +331,17 @@ def process_chunk(task: ChunkTask, *strips) -> dict:
         clock.lap("filter")
         grid = snap_grid(task.bounds, task.origin, task.cell_size, task.crs)
         g = cls == GROUND
-        dtm = chunk_dtm(task.dtm_method, xyz[0][g], xyz[1][g], xyz[2][g], grid,
-                        task.max_distance)
+        dtm, used = dtm_in_reach(task.dtm_method, xyz[0][g], xyz[1][g], xyz[2][g], grid,
+                                 task.max_distance)
         clock.lap("dtm")
         _write_outputs(task, xyz, dims, core, cls, dtm, grid, records)
         clock.lap("write")
-        stats.update(status="done", ground=int(np.count_nonzero(cls[core] == GROUND)))
+        counts = np.bincount(cls[core])
+        # ground of the tile, and within reach (tile and buffer): the run's warnings
+        stats.update(status="done", ground=int(counts[GROUND]) if counts.size > GROUND else 0,
+                     ground_reach=int(np.count_nonzero(g)), neighbours_used=used,
+                     dtm_cells=int(np.count_nonzero(np.isfinite(dtm))),
+                     classes={str(c): int(counts[c]) for c in np.flatnonzero(counts)})
     ph = clock.phases
     if strips and task.strip_shares:
         ph["strips"] = [sum(st["phases"]["strip"][i] * share for st, share in

@@ -46,6 +46,7 @@ from ._catalog_checks import (  # noqa: F401 - MAX_*, check_scheduler: public na
     _overlap_points,
     check_index,
     check_scheduler,
+    no_ground_error,
 )
 from ._chunks import (
     DTM_METHODS,
@@ -99,6 +100,8 @@ class Catalog:
     crs: Optional[str]
     #: Tiles left out because they cannot be read (``skip_unreadable``): path -> reason.
     unreadable: Dict[str, Exception] = field(default_factory=dict)
+    #: Tiles left out because they hold no point (a header only): paths.
+    empty: List[str] = field(default_factory=list)
 
     @classmethod
     def open(cls, source, *, skip_unreadable: bool = False) -> Catalog:
@@ -108,21 +111,25 @@ class Catalog:
         anything runs. Unreadable tiles (damaged, truncated, lying headers) are all
         named in one refusal; with ``skip_unreadable`` they are left out instead
         (:attr:`unreadable`) and their neighbours' buffers simply lack their points.
+        Tiles without points (a header only, as tiling tools write over water) hold
+        nothing for the merged cloud: left out (:attr:`empty`, named in the warnings).
 
         Raises
         ------
         InputError
-            No tile, unreadable tiles, an empty tile or tiles in different CRSs.
+            No tile, unreadable tiles, no tile with points or tiles in different CRSs.
         """
-        infos, unreadable = [], {}
+        infos, unreadable, empty = [], {}, []
         for path in find_tiles(source):
             try:
-                infos.append(las_info(path))
+                info = las_info(path)
             except ValueError as exc:           # InputError included: keep it (translated)
                 unreadable[path] = exc
-        check_index(infos, unreadable, skip_unreadable)
+                continue
+            (infos if info.count else empty).append(info)
+        check_index(infos, unreadable, skip_unreadable, [t.path for t in empty])
         bounds = np.array([[t.mins[0], t.mins[1], t.maxs[0], t.maxs[1]] for t in infos])
-        return cls(infos, bounds, infos[0].crs, unreadable)
+        return cls(infos, bounds, infos[0].crs, unreadable, [t.path for t in empty])
 
     @property
     def paths(self) -> List[str]:
@@ -289,8 +296,8 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
 
     Parameters
     ----------
-    source : str, path or list
-        Folder, glob, list of files or ``.vpc``.
+    source : str, path, list or Catalog
+        Folder, glob, list of files, ``.vpc`` or an opened :class:`Catalog`.
     out_folder : path
         Receives ``<tile>_classified.las|laz``, ``<tile>_dtm.tif``, ``dtm.vrt``
         (and ``dtm_cog.tif``) and the resume markers in ``.catalog/``. Must not
@@ -330,7 +337,7 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     t0 = time.perf_counter()
     clock = PhaseClock()
     mon = Monitor(progress, cancel)
-    cat = Catalog.open(source)
+    cat = source if isinstance(source, Catalog) else Catalog.open(source)
     clock.lap("index")
     folder = Path(out_folder)
     gf = ground_filter or default_ground_filter()
@@ -342,6 +349,7 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     run_settings = _run_settings(tasks, cat)
     _check_resume(folder, run_settings)
     # everything is validated: only now is anything created
+    made = [p for p in (folder, folder / STATE_DIR) if not p.exists()]
     (folder / STATE_DIR).mkdir(parents=True, exist_ok=True)
     _write_settings(folder, run_settings)
     previous = {t.key: is_done(t) for t in tasks}
@@ -359,6 +367,9 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     if todo:
         chunks += _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon,
                             len(chunks), failed, clock, on_chunk)
+    if not failed and not any(c.get("ground") for c in chunks):
+        _undo_run(todo, made)
+        raise no_ground_error(chunks, len(tasks), cat.n_points, gf)
     vrt, cog_path = _mosaic(cat, folder, tasks, failed, chunks, cog)
     clock.lap("mosaic")
     order = {t.key: i for i, t in enumerate(tasks)}
@@ -366,7 +377,8 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     settings = dict(ground_filter=gf, dtm_method=dtm_method, cell_size=float(cell_size),
                     buffer=float(buffer), chunk_size=float(chunk_size), tiles=len(tasks),
                     points_total=cat.n_points, crs=cat.crs or "", origin=tasks[0].origin,
-                    keys=[t.key for t in tasks], bounds=[list(t.bounds) for t in tasks])
+                    keys=[t.key for t in tasks], bounds=[list(t.bounds) for t in tasks],
+                    empty_tiles=[os.path.basename(p) for p in cat.empty])
     return CatalogResult(chunks=chunks, failed=failed,
                          skipped=[k for k, v in previous.items() if v is not None],
                          vrt=vrt, cog=cog_path, seconds=time.perf_counter() - t0,
@@ -380,6 +392,20 @@ def _write_settings(folder: Path, settings: dict) -> None:
     tmp = path.with_suffix(".tmp")
     tmp.write_text(json.dumps(settings, indent=1), encoding="utf-8")
     os.replace(tmp, path)
+
+
+def _undo_run(todo: Sequence[ChunkTask], made: Sequence[Path]) -> None:
+    """Remove what this run wrote (chunk outputs, markers, folders it created)."""
+    for t in todo:
+        for path in t.outputs.values():
+            if os.path.exists(path):
+                os.remove(path)
+    for p in reversed(made):
+        if p.name == STATE_DIR:
+            for f in p.iterdir():
+                f.unlink()
+        if p.is_dir() and not any(p.iterdir()):
+            p.rmdir()
 
 
 def _mosaic(cat, folder: Path, tasks, failed, chunks, cog: bool):

@@ -7,7 +7,7 @@ shaded by processing time, tiles of an earlier run grey, failed tiles red.
 from __future__ import annotations
 
 from html import escape
-from typing import Callable, Optional
+from typing import Callable, List, Optional
 
 from ..reporting import Figure, KeyValues, Paragraph, Report, T, Table, svg, translator
 
@@ -68,6 +68,50 @@ def tile_status_svg(result, tiles_bounds, *, width: int = 520,
     return "".join(parts)
 
 
+def _tile_warning(c: dict, buffer: float) -> Optional[T]:
+    """Why a finished tile's DTM lacks ground (None: it has its own, enough)."""
+    from ._catalog_checks import class_listing
+    key, reach = c["key"], c.get("ground_reach")
+    if reach is None:                   # a marker written before these counts existed
+        return None
+    classes = class_listing(c.get("classes") or {})
+    if reach == 0:
+        return T("Tile {tile}: no ground point in the tile nor within its {buffer} m buffer "
+                 "(its points by class: {classes}); its DTM is nodata.", tile=key,
+                 buffer=f"{buffer:g}", classes=classes)
+    if c.get("dtm_cells") == 0:
+        return T("Tile {tile}: only {n} ground point(s) in the tile and its buffer, at "
+                 "fewer than 3 distinct positions; its DTM is nodata.", tile=key, n=reach)
+    if c.get("neighbours_used"):
+        return T("Tile {tile}: only {n} ground points in the tile and its buffer, fewer "
+                 "than the DTM method's neighbours; its cells are interpolated from those "
+                 "{n} points.", tile=key, n=reach)
+    if c.get("ground") == 0:
+        return T("Tile {tile}: no ground point of its own (its points by class: {classes}); "
+                 "its DTM has values only within reach of the ground in its buffer "
+                 "({cells} cells), elsewhere nodata.", tile=key, classes=classes,
+                 cells=c.get("dtm_cells", 0))
+    return None
+
+
+def catalog_warnings(result) -> List[T]:
+    """Warnings of a run: tiles without points (left out) and tiles without ground.
+
+    Tiles of water, sea, vegetation or noise only have no ground of their own: their
+    DTM cells are nodata where no ground is within reach (as the merged cloud's DTM),
+    and the warning says why (the classes of their points).
+    """
+    s = result.settings
+    out = [T("{tile} has no points (a header only); it is left out of the catalog.",
+             tile=name) for name in s.get("empty_tiles", [])]
+    for c in result.chunks:
+        if c.get("status") in ("done", "skipped") or c["key"] in result.skipped:
+            w = _tile_warning(c, s["buffer"])
+            if w is not None:
+                out.append(w)
+    return out
+
+
 def catalog_report(result, tiles_bounds, *, lang: str = "en") -> Report:
     """Build the :class:`Report` of a :class:`~.catalog.CatalogResult`."""
     s = result.settings
@@ -80,6 +124,10 @@ def catalog_report(result, tiles_bounds, *, lang: str = "en") -> Report:
                                    "{failed} failed.", done=n_done,
                                    skipped=len(result.skipped), failed=len(result.failed)),
                                  "fail" if result.failed else "ok"))
+    warnings = catalog_warnings(result)
+    if warnings:
+        rep.summary.append(Paragraph(T("{n} warning(s): tiles without points or without "
+                                       "ground (see Warnings).", n=len(warnings)), "note"))
     rep.section(T("Run")).add(KeyValues([
         (T("Ground filter"), s["ground_filter"]), (T("DTM method"), s["dtm_method"]),
         (T("Cell size"), s["cell_size"], "m"), (T("Buffer"), s["buffer"], "m"),
@@ -96,6 +144,10 @@ def catalog_report(result, tiles_bounds, *, lang: str = "en") -> Report:
                 c["points"], c["ground"], c["seconds"], c["worker"]] for c in result.chunks]
               + [[k, T("failed"), "", "", "", msg] for k, msg in result.failed.items()],
               digits=1))
+    if warnings:
+        sec = rep.section(T("Warnings"))
+        for w in warnings:
+            sec.add(Paragraph(w, "note"))
     rep.section(T("Workers")).add(Table(
         [T("Worker"), T("Tiles"), T("Points"), T("Busy seconds"), T("Points per second")],
         [[w, v["chunks"], v["points"], v["seconds"], v["points_per_second"]]

@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import os
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Dict, Optional, Sequence
 
 import numpy as np
@@ -47,7 +47,7 @@ __all__ = ["DtmOutcome", "DtmMethod", "IdwOptions", "IdwMethod", "KrigingOptions
            "KrigingMethod", "TinOptions", "TinMethod", "DtmSpec", "DTM_METHODS",
            "register_dtm_method", "dtm_method", "DtmRun", "read_ground", "make_dtm",
            "write_dtm", "dtm_report", "grid_stats", "check_dtm_input",
-           "MIN_DISTINCT_POINTS"]
+           "MIN_DISTINCT_POINTS", "distinct_positions"]
 
 
 @dataclass
@@ -95,6 +95,13 @@ class DtmMethod:
                     monitor: Optional[Monitor] = None) -> DtmOutcome:
         """Interpolate points (metres) onto ``grid``."""
         raise NotImplementedError
+
+    def within(self, x, y) -> DtmMethod:
+        """Return the method for only the points ``x, y`` (default: unchanged).
+
+        E.g. a catalog chunk's ground within reach: neighbourhoods cut to the points there.
+        """
+        return self
 
     def metadata(self, outcome: DtmOutcome) -> Dict[str, str]:
         """GeoTIFF metadata of the DTM (``method`` and more)."""
@@ -175,6 +182,16 @@ class IdwMethod(DtmMethod):
                       progress=mon.update, cancel=mon.cancelled)
         return DtmOutcome(zz, n_points=int(np.size(x)))
 
+    def within(self, x, y):
+        """Fewer points than NEIGHBOURS: all of them.
+
+        As ``gdal_grid invdistnn`` uses the neighbours it finds.
+        """
+        n, o = int(np.size(x)), self.options
+        if not 0 < n < o.neighbours:
+            return self
+        return IdwMethod(replace(o, neighbours=n, min_points=min(o.min_points, n)))
+
     def metadata(self, outcome):
         """``IDW p=… k=… radius=… min_points=…``."""
         o = self.options
@@ -249,6 +266,12 @@ class KrigingMethod(DtmMethod):
                            progress=mon.update, cancel=mon.cancelled)
         return DtmOutcome(res.z, {"variance": res.variance, "std": res.std}, res,
                           res.n_points)
+
+    def within(self, x, y):
+        """Fewer distinct positions than NEIGHBOURS: all of them."""
+        k = self.options.neighbours
+        n = distinct_positions(x, y, k) if np.size(x) else k
+        return self if n >= k else KrigingMethod(replace(self.options, neighbours=n))
 
     def metadata(self, outcome):
         """Kind, model, neighbours and the variogram."""
@@ -415,21 +438,21 @@ def read_ground(path, classes: Sequence[int], *, cell: float, units, extent=None
 MIN_DISTINCT_POINTS = 3
 
 
-def _distinct_positions(x, y, limit: int) -> int:
+def distinct_positions(x, y, limit: int) -> int:
     """Count the distinct (x, y) positions (to the millimetre), up to ``limit``.
 
     O(n) with an early stop, no sort: a DTM's millions of ground points pass after
     looking for ``limit`` different positions (``np.unique`` over the rows took 1.6 s
     CPU for 2.5 M points).
 
-    >>> _distinct_positions([0.0, 0.0, 1.0, 0.0004], [0.0, 0.0, 0.0, 0.0], 3)
+    >>> distinct_positions([0.0, 0.0, 1.0, 0.0004], [0.0, 0.0, 0.0, 0.0], 3)
     2
-    >>> _distinct_positions([0.0, 1.0, 2.0, 3.0], [0.0, 0.0, 0.0, 0.0], 3)
+    >>> distinct_positions([0.0, 1.0, 2.0, 3.0], [0.0, 0.0, 0.0, 0.0], 3)
     3
     """
     x, y = np.asarray(x, dtype=np.float64), np.asarray(y, dtype=np.float64)
     if len(x) > 4096:       # a subset's count never exceeds the whole's: stop early
-        head = _distinct_positions(x[:4096], y[:4096], limit)
+        head = distinct_positions(x[:4096], y[:4096], limit)
         if head >= limit:
             return head
     xy = np.round(np.column_stack([x, y]), 3)
@@ -456,7 +479,7 @@ def check_dtm_input(points: ClassPoints, cell: float, path) -> None:
     y = np.asarray(points.y, dtype=np.float64)
     if x.size == 0:
         return                                  # read_ground has refused already
-    distinct = _distinct_positions(x, y, MIN_DISTINCT_POINTS)
+    distinct = distinct_positions(x, y, MIN_DISTINCT_POINTS)
     if distinct < MIN_DISTINCT_POINTS:
         raise InputError(
             "The {n} point(s) of {path} lie at only {distinct} distinct position(s): a "

@@ -1,0 +1,209 @@
+"""Catalog chunks on real-world sparse tiles: water, no ground within reach, few ground
+points, a header-only tile, and a catalog with no ground at all.
+
+The reference is the merged cloud's IDW DTM on the same global lattice (as in
+test_catalog): where no ground is within the gap distance it is nodata, and so must the
+mosaic be; everywhere else the cells are equal.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from geomatics_toolbox.core.errors import InputError
+from geomatics_toolbox.core.io.catalog import build_vrt, find_tiles
+from geomatics_toolbox.core.io.las import read_las, write_las
+from geomatics_toolbox.core.io.raster import read_raster
+from geomatics_toolbox.core.lidar import catalog as cc
+from geomatics_toolbox.core.lidar._chunks import process_chunk, snap_grid
+from geomatics_toolbox.core.lidar.catalog_report import catalog_report
+from geomatics_toolbox.core.reporting import render_html
+from geomatics_toolbox.core.terrain.idw import idw_grid
+from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
+
+SIDE = 250.0
+ORIGIN = (500_000.0, 4_000_000.0)
+BUFFER = 120.0
+CELL = 2.0
+WATER = 9
+
+
+def _catalog(d: Path, lake: float, *, islet: int = 0, everywhere: bool = False) -> Path:
+    """2 x 2 tiles of 250 m; a lake (class 9, flat) over the upper-right corner.
+
+    ``lake``: side of the lake square measured from the catalog's upper-right corner
+    (250 = tile t11 exactly; 380 = t11 and a 130 m band of its neighbours, so no ground
+    is within t11's 120 m buffer). ``islet``: that many ground points of t11 kept on a
+    rock in the lake. ``everywhere``: every point is water (no ground in the catalog).
+    """
+    d.mkdir(parents=True, exist_ok=True)
+    for i in range(2):
+        for j in range(2):
+            t = generate_tile(extent=(SIDE, SIDE), origin=(ORIGIN[0] + SIDE * i,
+                                                           ORIGIN[1] + SIDE * j),
+                              density=0.8, seed=10 * i + j)
+            wet = ((t.x >= ORIGIN[0] + 2 * SIDE - lake) & (t.y >= ORIGIN[1] + 2 * SIDE - lake)
+                   ) | everywhere
+            if islet and (i, j) == (1, 1):
+                rock = np.flatnonzero(t.classification == 2)
+                near = np.hypot(t.x[rock] - (ORIGIN[0] + 1.6 * SIDE),
+                                t.y[rock] - (ORIGIN[1] + 1.6 * SIDE))
+                wet[rock[np.argsort(near)[:islet]]] = False
+            t.classification[wet] = WATER
+            t.z[wet] = 190.0
+            write_tile(t, d / f"t{i}{j}.laz")
+    return d
+
+
+def _dtm(path) -> np.ndarray:
+    r = read_raster(path)
+    data = r.data.astype(np.float64)
+    data[data == r.nodata] = np.nan
+    return data
+
+
+def _merged_ground(d: Path):
+    parts = [read_las(p, ("classification",)) for p in find_tiles(str(d))]
+    x, y, z = (np.concatenate([getattr(p, a) for p in parts]) for a in "xyz")
+    g = np.concatenate([p["classification"] for p in parts]) == 2
+    return x[g], y[g], z[g]
+
+
+def _chunks(d: Path, out: Path, method: str = "idw"):
+    """Every chunk run in this process (no Dask), as the workers run them."""
+    cat = cc.Catalog.open(str(d))
+    tasks = cc.plan_tasks(cat, out, ground_filter="keep", dtm_method=method,
+                          cell_size=CELL, buffer=BUFFER)
+    (out / cc.STATE_DIR).mkdir(parents=True)
+    stats = {t.key: process_chunk(t) for t in tasks}
+    build_vrt(str(out / "m.vrt"), [t.outputs["DTM"] for t in tasks])
+    return cat, tasks, stats
+
+
+def _inside(grid, extent, margin):
+    cx, cy = (v.reshape(grid.shape) for v in grid.block_centers(0, grid.nrows))
+    return np.minimum.reduce([cx - extent[0], cy - extent[1], extent[2] - cx,
+                              extent[3] - cy]) > margin
+
+
+@pytest.mark.parametrize("lake,reach", [(250.0, "buffer"), (380.0, "none")])
+def test_water_tile_mosaic_equals_the_merged_cloud(tmp_path, lake, reach):
+    """t11 all water: its chunk finishes; its cells are the merged cloud's, nodata where
+    no ground is within the gap distance (the whole tile when none is within reach)."""
+    d = _catalog(tmp_path / "tiles", lake)
+    cat, tasks, stats = _chunks(d, tmp_path / "out")
+    s = stats["t11"]
+    assert s["status"] == "done" and s["ground"] == 0
+    assert (s["ground_reach"] == 0) == (reach == "none")
+    mosaic = _dtm(tmp_path / "out" / "m.vrt")
+    x, y, z = _merged_ground(d)
+    grid = snap_grid(cat.extent, tasks[0].origin, CELL)
+    ref = idw_grid(x, y, z, grid, max_distance=cat.default_max_distance(), workers=1,
+                   tie_order="xy")
+    assert mosaic.shape == ref.shape
+    assert np.array_equal(np.isfinite(mosaic), np.isfinite(ref))
+    sel = _inside(grid, cat.extent, 10.0) & np.isfinite(ref)
+    assert sel.sum() > (40_000 if reach == "buffer" else 20_000)
+    assert np.max(np.abs(mosaic[sel] - ref[sel])) <= 1e-4
+    t11 = _dtm(tmp_path / "out" / "t11_dtm.tif")
+    assert s["dtm_cells"] == int(np.isfinite(t11).sum())
+    if reach == "none":
+        assert s["dtm_cells"] == 0 and t11.shape == (125, 125)
+    else:
+        assert 0 < s["dtm_cells"] < t11.size // 2
+    # the classified copy of the water tile is written, its classes kept
+    got = read_las(tmp_path / "out" / "t11_classified.laz", ("classification",))
+    assert np.all(got["classification"] == WATER) and len(got) == s["points"]
+
+
+def test_few_ground_points_within_reach_use_the_points_there(tmp_path):
+    """5 ground points on a rock in the lake, none else within t11's buffer: the chunk's
+    IDW uses those 5 (neighbours clamped, as gdal_grid invdistnn uses what it finds)."""
+    d = _catalog(tmp_path / "tiles", 380.0, islet=5)
+    cat, tasks, stats = _chunks(d, tmp_path / "out")
+    s = stats["t11"]
+    assert s["status"] == "done" and s["ground"] == 5 and s["ground_reach"] == 5
+    assert s["neighbours_used"] == 5
+    own = read_las(d / "t11.laz", ("classification",))
+    g = own["classification"] == 2
+    task = next(t for t in tasks if t.key == "t11")
+    grid = snap_grid(task.bounds, task.origin, CELL)
+    ref = idw_grid(own.x[g], own.y[g], own.z[g], grid, max_points=5, workers=1,
+                   max_distance=task.max_distance, tie_order="xy")
+    got = _dtm(tmp_path / "out" / "t11_dtm.tif")
+    assert np.array_equal(np.isfinite(got), np.isfinite(ref)) and np.isfinite(ref).sum() > 50
+    assert np.nanmax(np.abs(got - ref)) <= 1e-4
+
+
+@pytest.mark.parametrize("method", ["kriging", "tin"])
+def test_few_or_no_ground_within_reach_other_methods(tmp_path, method):
+    """Kriging and TIN chunks finish on a water tile with 5 / 0 ground points in reach."""
+    for islet in (5, 0):
+        d = _catalog(tmp_path / f"tiles{islet}", 380.0, islet=islet)
+        _, _, stats = _chunks(d, tmp_path / f"out{islet}", method)
+        s = stats["t11"]
+        assert s["status"] == "done" and s["ground_reach"] == islet
+        t11 = _dtm(tmp_path / f"out{islet}" / "t11_dtm.tif")
+        assert s["dtm_cells"] == int(np.isfinite(t11).sum())
+        if not islet:                       # no ground within reach: nodata
+            assert s["dtm_cells"] == 0
+        elif method == "kriging":           # 5 neighbours, the rock's cells kriged
+            assert s["dtm_cells"] > 50 and s["neighbours_used"] == 5
+
+
+def _write_header_only(path):
+    e = np.empty(0)
+    write_las(path, e, e, e, dimensions={"classification": np.empty(0, np.uint8)},
+              crs="EPSG:32632", point_format=6, version="1.4", scale=0.01)
+
+
+def test_run_warns_naming_the_tiles_without_ground_and_a_header_only_tile(tmp_path):
+    """Through run_catalog (Dask): the run finishes, warnings name t11 and why (en, ar,
+    fa), the report carries them; a header-only tile is left out and named."""
+    from geomatics_toolbox.core.lidar.catalog_report import catalog_warnings
+    d = _catalog(tmp_path / "tiles", 380.0)
+    _write_header_only(d / "t20.laz")
+    out = tmp_path / "out"
+    res = cc.run_catalog(str(d), out, ground_filter="keep", cell_size=CELL, buffer=BUFFER,
+                         workers=1)
+    assert not res.failed and len(res.chunks) == 4
+    assert res.settings["empty_tiles"] == ["t20.laz"]
+    warnings = catalog_warnings(res)
+    en = [str(InputError(w.text, **w.args)) for w in warnings]
+    assert any("t20.laz has no points (a header only); it is left out" in w for w in en), en
+    t11 = [w for w in en if w.startswith("Tile t11:")]
+    assert len(t11) == 1, en
+    assert ("no ground point in the tile nor within its 120 m buffer" in t11[0]
+            and "(its points by class: 9: " in t11[0] and "its DTM is nodata" in t11[0]), t11
+    assert not any(w.startswith(("Tile t00", "Tile t01", "Tile t10")) for w in en), en
+    for lang in ("ar", "fa"):
+        text = [InputError(w.text, **w.args).message(lang) for w in warnings]
+        assert all(not t.startswith("Tile ") and "t11" in " ".join(text) for t in text), text
+    html = render_html(catalog_report(res, np.asarray(res.settings["bounds"]), lang="en"),
+                       lang="en")
+    assert "no ground point in the tile nor within its" in html and "t20.laz" in html
+    assert np.isfinite(_dtm(out / "dtm.vrt")).sum() > 25_000
+
+
+def test_catalog_without_any_ground_is_refused_and_leaves_nothing(tmp_path):
+    d = _catalog(tmp_path / "tiles", 0.0, everywhere=True)
+    out = tmp_path / "out"
+    with pytest.raises(InputError, match=r"No tile of the catalog has a ground point \(4 "
+                       r"tiles, 199995 points, by class: 9: 199995\).*choose a ground filter "
+                       r"\(GROUND_FILTER\)") as err:
+        cc.run_catalog(str(d), out, ground_filter="keep", cell_size=CELL, buffer=BUFFER,
+                       workers=1)
+    assert err.value.message("ar") != str(err.value)
+    assert not out.exists() or not any(out.rglob("*"))
+
+
+def test_catalog_of_header_only_tiles_is_refused(tmp_path):
+    d = tmp_path / "tiles"
+    d.mkdir()
+    for name in ("a.laz", "b.laz"):
+        _write_header_only(d / name)
+    with pytest.raises(InputError, match=r"Every tile of the catalog is without points "
+                                         r"\(a\.laz, b\.laz\)"):
+        cc.Catalog.open(str(d))
