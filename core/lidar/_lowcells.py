@@ -87,9 +87,16 @@ def closing_pits(zmin, step: float, anchor=(0, 0)):
     if empty.all():
         return np.zeros(zmin.shape, bool), zmin.copy()
     zf = R.fill(zmin, ~empty, anchor)
-    clo = -R.opening(-zf, 1)
+    np.negative(zf, out=zf)                          # the closing is -opening(-zf), in place
+    clo = R.opening(zf, 1)
+    del zf
+    np.negative(clo, out=clo)
+    pits = np.empty(zmin.shape, bool)
     with np.errstate(invalid="ignore"):
-        return ((clo - zmin) > step) & ~empty, clo
+        for b0 in range(0, zmin.shape[0], R.BAND):     # bands: no full-size temporaries
+            b = slice(b0, b0 + R.BAND)
+            pits[b] = ((clo[b] - zmin[b]) > step) & ~empty[b]
+    return pits, clo
 
 
 def _block_min(z, f: int, anchor=(0, 0)):

@@ -318,7 +318,7 @@ def _pushpull(vw, w, r0=0, c0=0):
 _BOX_SCALE = float(2 ** 20)
 
 
-def box_mean(a, size: int):
+def box_mean(a, size: int, subtract_from=None):
     """Mean over a ``size`` x ``size`` box, computed exactly at a resolution of 2**-20.
 
     Edges are repeated (like ``uniform_filter`` with mode "nearest").
@@ -329,25 +329,34 @@ def box_mean(a, size: int):
     integers, so each mean depends only on the cells in its box (and is computed in
     bands of :data:`BAND` rows: integer sums do not depend on the band either).
 
+    With ``subtract_from`` (a float64 raster of the same shape) the means are subtracted
+    from it in place, band by band, and it is returned.
+
     >>> float(box_mean(np.arange(9.0).reshape(3, 3), 3)[1, 1])
     4.0
     """
     size = int(size)
     a = np.asarray(a, dtype=np.float64)
     if size <= 1:
+        if subtract_from is not None:
+            subtract_from -= a
+            return subtract_from
         return a.copy()
     rows, cols = a.shape
     h = size // 2
     cidx = np.clip(np.arange(-h, cols + size - h - 1), 0, cols - 1)
-    out = np.empty(a.shape)
+    out = np.empty(a.shape) if subtract_from is None else None
     for b0 in range(0, rows, BAND):
         n = min(BAND, rows - b0)
         ridx = np.clip(np.arange(b0 - h, b0 + n + size - h - 1), 0, rows - 1)
         q = np.rint(a[ridx] * _BOX_SCALE).astype(np.int64)
         q = _window_sums(q, size, n, axis=0)
         q = _window_sums(np.take(q, cidx, axis=1), size, cols, axis=1)
-        out[b0:b0 + n] = q / (_BOX_SCALE * size * size)
-    return out
+        if subtract_from is None:
+            out[b0:b0 + n] = q / (_BOX_SCALE * size * size)
+        else:
+            subtract_from[b0:b0 + n] -= q / (_BOX_SCALE * size * size)
+    return out if subtract_from is None else subtract_from
 
 
 #: Rows per band of :func:`box_mean` and :func:`slope` (bounds their temporaries).

@@ -508,7 +508,7 @@ def _grow_candidates(b, rms, centre, gx, gy, zmin, obj, skip, cell, opt):
     return cand, tol
 
 
-def trend_surface(zf, grid, opt):
+def trend_surface(zf, grid, opt, subtract=False):
     """Smooth large-scale terrain trend removed before the progressive opening.
 
     Opening ``z - trend`` and adding the trend back is an opening whose flat
@@ -529,15 +529,18 @@ def trend_surface(zf, grid, opt):
         Its grid.
     opt : RecommendedOptions
         Options (``trend_window``, ``trend_smooth``).
+    subtract : bool
+        Subtract the trend from ``zf`` in place, band by band, and return ``zf`` (the
+        trend raster is never held whole).
 
     Returns
     -------
     ndarray
-        The trend raster.
+        The trend raster (or ``zf - trend``).
     """
     r = max(1, int(np.ceil(opt.trend_window / grid.cell)))
     k = 2 * max(1, int(np.ceil(opt.trend_smooth / grid.cell))) + 1
-    return R.box_mean(R.opening(zf, r), k)
+    return R.box_mean(R.opening(zf, r), k, subtract_from=zf if subtract else None)
 
 
 def terrain_slope(zf, grid, opt):

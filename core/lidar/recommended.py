@@ -372,8 +372,8 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None):
     zf = R.fill(zmin, ~(low | empty), grid.anchor)
     slope = opt.slope if opt.slope is not None else terrain_slope(zf, grid, opt)
     if opt.trend_window > 0 and opt.trend_smooth > 0:
-        zf -= trend_surface(zf, grid, opt)          # zf is the fill's own array
-    obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep)
+        trend_surface(zf, grid, opt, subtract=True)  # zf is the fill's own array
+    obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep, overwrite=True)
     del zf
     if np.ndim(slope):                               # the report reads min / median / max
         slope = np.array((slope.min(), np.median(slope), slope.max())) if info is not None \
@@ -424,7 +424,7 @@ def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False):
                           cache=cache, overwrite=overwrite)
 
 
-def progressive_objects(zf, cell, max_window, slope, rep):
+def progressive_objects(zf, cell, max_window, slope, rep, overwrite=False):
     """Object cells of the progressive opening (Zhang et al. 2003, Pingel et al. 2013).
 
     Parameters
@@ -439,6 +439,8 @@ def progressive_objects(zf, cell, max_window, slope, rep):
         Slope tolerance (rise/run), scalar or per cell.
     rep : callable
         Progress step (checks cancel).
+    overwrite : bool
+        Let ``zf`` hold each opening in turn (one raster less; ``zf`` is then garbage).
 
     Returns
     -------
@@ -455,7 +457,11 @@ def progressive_objects(zf, cell, max_window, slope, rep):
             b = slice(b0, b0 + R.BAND)
             s = slope[b] if np.ndim(slope) else slope
             obj[b] |= (cur[b] - opened[b]) > s * r * cell
-        cur = opened
+        if overwrite:
+            cur[...] = opened
+            del opened
+        else:
+            cur = opened
     return obj
 
 

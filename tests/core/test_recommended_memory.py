@@ -127,3 +127,29 @@ def test_block_any_equals_the_block_minimum_test():
         for anchor in ((0, 0), (5, 9)):
             want = L._block_min(np.where(mask, 0.0, np.nan), f, anchor)[0] == 0.0
             np.testing.assert_array_equal(L._block_any(mask, f, anchor), want)
+
+
+@pytest.mark.parametrize("shape", SHAPES[2:])
+def test_in_place_trend_opening_and_closing_equal_the_plain_expressions(shape):
+    z, valid = _terrain(shape, 7)
+    for size in (1, 3, 55):
+        own = z.copy()
+        assert R.box_mean(z, size, subtract_from=own) is own
+        np.testing.assert_array_equal(own, z - _plain_box_mean(z, size) if size > 1 else
+                                      z - z)
+    slope = np.random.default_rng(8).uniform(0.1, 0.6, shape)
+    want = rec.progressive_objects(z, 1.0, 9.0, slope, lambda f: None)
+    own = z.copy()
+    np.testing.assert_array_equal(
+        rec.progressive_objects(own, 1.0, 9.0, slope, lambda f: None, overwrite=True), want)
+    assert want.any()
+    zmin = np.where(valid, z, np.nan)
+    zmin[1::7, 1::5] -= 12.0                           # pits below their closing
+    zf = R.fill(zmin, valid)
+    clo = -R.opening(-zf, 1)
+    with np.errstate(invalid="ignore"):
+        pits = ((clo - zmin) > 5.0) & valid
+    got_pits, got_clo = L.closing_pits(zmin, 5.0)
+    np.testing.assert_array_equal(got_clo, clo)
+    np.testing.assert_array_equal(got_pits, pits)
+    assert pits.any() or min(shape) < 8
