@@ -299,6 +299,11 @@ def no_ground_error(chunks: Sequence[dict], n_tiles: int, n_points: int,
              "tiles first.") if ground_filter == "keep" else
            T("Check that the tiles hold terrain (not only water, noise or vegetation) and "
              "are in the right units, or choose another ground filter (GROUND_FILTER)."))
+    sparse = next((c for c in chunks if c.get("filter_error")), None)
+    if sparse is not None:          # the filter could not run (too few points): say why
+        why = sparse["filter_error"]
+        fix = T("The ground filter cannot classify tile {tile}: {reason}", tile=sparse["key"],
+                reason=T(why["template"], **why["fields"]))
     return InputError("No tile of the catalog has a ground point ({tiles} tiles, {points} "
                       "points, by class: {classes}): there is no terrain to make a DTM of. "
                       "{fix} Nothing was written.", tiles=n_tiles,

@@ -18,6 +18,7 @@ from typing import Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from .. import classes as asprs
+from ..errors import InputError
 from ..io.catalog import read_box
 from ..io.contract import OutputContract
 from ..io.las import PointData, read_las, write_las, write_las_like
@@ -275,6 +276,12 @@ def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
     The registered algorithm object with the point selection of its single-file
     algorithm's defaults (input noise classes 7 and 18 kept), anchored on the
     catalog's global origin: the same call as a single-file run.
+
+    Raises
+    ------
+    InputError
+        Points the filter cannot classify (too few, one position): see
+        :func:`filter_sparse_chunk`.
     """
     if not core.any():
         return np.zeros(core.size, np.uint8)
@@ -286,6 +293,24 @@ def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
     pts = PointData(*xyz, dims=dims)
     return classify_points(pts, ground_filter(task.ground_filter),
                            default_selection(task.ground_filter), origin=origin)
+
+
+def filter_sparse_chunk(task: ChunkTask, xyz, dims, core):
+    """:func:`filter_chunk`, or no ground where the filter cannot run; ``(classes, why)``.
+
+    A tile at sea or over a lake may hold, with its buffer, fewer points than the filter
+    needs (10 for the recommended filter and PTD, 6 to 18 for LSQ surfaces): its points
+    are left unclassified (class 1, input noise 7/18 kept) and the filter's refusal is
+    returned (``{"template", "fields"}``, JSON for the done marker) for the warning.
+    """
+    try:
+        return filter_chunk(task, xyz, dims, core), None
+    except InputError as exc:
+        src = np.asarray(dims.get("classification", np.zeros(core.size, np.uint8)))
+        cls = np.where(np.isin(src, asprs.INPUT_NOISE), src, asprs.UNCLASSIFIED)
+        fields = {k: v if isinstance(v, (int, float)) else str(v)
+                  for k, v in exc.fields.items()}
+        return cls.astype(np.uint8), {"template": exc.template, "fields": fields}
 
 
 def _write_outputs(task: ChunkTask, xyz, dims, core, cls, dtm, grid, records=None) -> None:
@@ -327,7 +352,9 @@ def process_chunk(task: ChunkTask, *strips) -> dict:
     stats = dict(key=task.key, points=n_own, buffer_points=int(core.size - n_own),
                  bounds=list(task.bounds), status="empty", ground=0)
     if n_own:
-        cls = filter_chunk(task, xyz, dims, core)
+        cls, why = filter_sparse_chunk(task, xyz, dims, core)
+        if why is not None:
+            stats["filter_error"] = why
         clock.lap("filter")
         grid = snap_grid(task.bounds, task.origin, task.cell_size, task.crs)
         g = cls == GROUND

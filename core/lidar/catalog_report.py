@@ -75,6 +75,12 @@ def _tile_warning(c: dict, buffer: float) -> Optional[T]:
     if reach is None:                   # a marker written before these counts existed
         return None
     classes = class_listing(c.get("classes") or {})
+    why = c.get("filter_error")
+    if why:
+        return T("Tile {tile}: the ground filter cannot classify its {n} points (tile and "
+                 "buffer): {reason} Its points are left unclassified (class 1, noise kept); "
+                 "its DTM is nodata.", tile=key, n=c.get("points", 0) + c.get(
+                     "buffer_points", 0), reason=T(why["template"], **why["fields"]))
     if reach == 0:
         return T("Tile {tile}: no ground point in the tile nor within its {buffer} m buffer "
                  "(its points by class: {classes}); its DTM is nodata.", tile=key,

@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from geomatics_toolbox.core.errors import InputError
+from geomatics_toolbox.core.errors import InputError, message_text
 from geomatics_toolbox.core.io.catalog import build_vrt, find_tiles
 from geomatics_toolbox.core.io.las import read_las, write_las
 from geomatics_toolbox.core.io.raster import read_raster
@@ -207,3 +207,59 @@ def test_catalog_of_header_only_tiles_is_refused(tmp_path):
     with pytest.raises(InputError, match=r"Every tile of the catalog is without points "
                                          r"\(a\.laz, b\.laz\)"):
         cc.Catalog.open(str(d))
+
+
+def _offshore(d: Path, n: int) -> Path:
+    """A land tile and, 1 km away, a sea tile of ``n`` returns (no neighbour in reach)."""
+    d.mkdir(parents=True)
+    write_tile(generate_tile(extent=(150.0, 150.0), origin=ORIGIN, density=1.0, seed=1),
+               d / "land.laz")
+    rng = np.random.default_rng(n)
+    x, y = ORIGIN[0] + 1000 + rng.uniform(0, 150, n), ORIGIN[1] + rng.uniform(0, 150, n)
+    cls = np.ones(n, np.uint8)
+    cls[0] = 18                                   # a bird: input noise is kept
+    write_las(d / "sea.laz", x, y, 190 + rng.normal(0, 0.1, n),
+              dimensions={"classification": cls, "return_number": np.ones(n, np.uint8),
+                          "number_of_returns": np.ones(n, np.uint8)},
+              crs="EPSG:32632", point_format=6, version="1.4", scale=0.01)
+    return d
+
+
+@pytest.mark.parametrize("key", ["groundfilter", "ptd", "lsq_faithful", "lsq_improved",
+                                 "slope_exact", "slope_adaptive"])
+def test_offshore_tile_too_sparse_for_the_filter_finishes(tmp_path, key):
+    """3 returns in a tile and its buffer: too few for the ground filter (it needs 10, 6 or
+    2). The chunk finishes: points unclassified (class 1, input noise 18 kept), DTM
+    nodata, the filter's own reason kept for the warning; the land tile is unaffected."""
+    from geomatics_toolbox.core.lidar.catalog_report import _tile_warning
+    d = _offshore(tmp_path / "tiles", 3)
+    cat = cc.Catalog.open(str(d))
+    out = tmp_path / "out"
+    tasks = cc.plan_tasks(cat, out, ground_filter=key, dtm_method="idw", cell_size=CELL,
+                          buffer=50.0)
+    (out / cc.STATE_DIR).mkdir(parents=True)
+    stats = {t.key: process_chunk(t) for t in tasks}
+    s = stats["sea"]
+    got = read_las(out / "sea_classified.laz", ("classification",))["classification"]
+    if key.startswith("slope"):            # the slope filter runs from 2 points
+        assert "filter_error" not in s
+        return
+    assert s["status"] == "done" and s["ground"] == 0 and s["dtm_cells"] == 0
+    assert got.tolist() == [18, 1, 1]
+    assert "filter_error" in s and s["filter_error"]["template"]
+    w = message_text(_tile_warning(s, 50.0), "en")
+    assert message_text(_tile_warning(s, 50.0), "fa").startswith("کاشی")
+    assert w.startswith("Tile sea: the ground filter cannot classify its 3 points (tile "
+                        "and buffer): "), w
+    assert "Its points are left unclassified (class 1, noise kept); its DTM is nodata." in w
+    assert stats["land"]["ground"] > 1000 and stats["land"]["dtm_cells"] > 5000
+
+
+def test_catalog_of_one_sparse_tile_refused_with_the_filters_reason(tmp_path):
+    d = _offshore(tmp_path / "tiles", 3)
+    out = tmp_path / "out"
+    with pytest.raises(InputError, match=r"No tile of the catalog has a ground point \(1 "
+                       r"tiles, 3 points, by class: 1: 2, 18: 1\).* The ground filter cannot "
+                       r"classify tile sea: A ground filter needs at least 10 points, got 2"):
+        cc.run_catalog([str(d / "sea.laz")], out, cell_size=CELL, buffer=50.0, workers=1)
+    assert not out.exists() or not any(out.rglob("*"))

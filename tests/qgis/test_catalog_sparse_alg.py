@@ -111,3 +111,30 @@ def test_catalog_without_ground_refused_with_the_fix(qgis_processing, tmp_path):
                              r"choose a ground filter \(GROUND_FILTER\)"):
         qgis_processing.run(ALG, _params(tiles, out))
     assert not out.exists() or not any(out.rglob("*"))
+
+
+def test_offshore_tile_too_sparse_for_the_default_filter(qgis_processing, tmp_path):
+    """The default ground filter on a sea tile of 3 returns (needs 10): the run finishes,
+    the land tile is classified, the sea tile named with the filter's reason."""
+    d = tmp_path / "tiles"
+    d.mkdir()
+    write_tile(generate_tile(extent=(150.0, 150.0), origin=ORIGIN, density=1.0, seed=1),
+               d / "land.laz")
+    x = ORIGIN[0] + 1000 + np.array([10.0, 80.0, 140.0])
+    y = ORIGIN[1] + np.array([20.0, 120.0, 60.0])
+    write_las(d / "sea.laz", x, y, np.full(3, 190.0),
+              dimensions={"classification": np.ones(3, np.uint8)}, crs="EPSG:32632",
+              point_format=6, version="1.4", scale=0.01)
+    fb = _Feedback()
+    out = tmp_path / "out"
+    params = _params(d, out, BUFFER=50.0)
+    del params["GROUND_FILTER"]                      # the default: the recommended filter
+    res = qgis_processing.run(ALG, params, feedback=fb)
+    assert res["N_TILES"] == 2 and res["N_FAILED"] == 0
+    sea = [w for w in fb.warnings if w.startswith("Tile sea:")]
+    assert len(sea) == 1 and "the ground filter cannot classify its 3 points (tile and " \
+        "buffer): A ground filter needs at least 10 points, got 3" in sea[0], fb.warnings
+    assert np.all(read_las(out / "sea_classified.laz", ("classification",))
+                  ["classification"] == 1)
+    land = read_las(out / "land_classified.laz", ("classification",))["classification"]
+    assert np.mean(land == 2) > 0.2
