@@ -7,6 +7,7 @@ mosaic be; everywhere else the cells are equal.
 """
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import numpy as np
@@ -16,10 +17,12 @@ from geomatics_toolbox.core.errors import InputError, message_text
 from geomatics_toolbox.core.io.catalog import build_vrt, find_tiles
 from geomatics_toolbox.core.io.las import read_las, write_las
 from geomatics_toolbox.core.io.raster import read_raster
+from geomatics_toolbox.core.io.units import METRIC
 from geomatics_toolbox.core.lidar import catalog as cc
 from geomatics_toolbox.core.lidar._chunks import process_chunk, snap_grid
 from geomatics_toolbox.core.lidar.catalog_report import catalog_report
 from geomatics_toolbox.core.reporting import render_html
+from geomatics_toolbox.core.terrain.dtm import IdwOptions, dtm_method, make_dtm, read_ground
 from geomatics_toolbox.core.terrain.idw import idw_grid
 from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 
@@ -64,13 +67,6 @@ def _dtm(path) -> np.ndarray:
     return data
 
 
-def _merged_ground(d: Path):
-    parts = [read_las(p, ("classification",)) for p in find_tiles(str(d))]
-    x, y, z = (np.concatenate([getattr(p, a) for p in parts]) for a in "xyz")
-    g = np.concatenate([p["classification"] for p in parts]) == 2
-    return x[g], y[g], z[g]
-
-
 def _chunks(d: Path, out: Path, method: str = "idw"):
     """Every chunk run in this process (no Dask), as the workers run them."""
     cat = cc.Catalog.open(str(d))
@@ -98,10 +94,18 @@ def test_water_tile_mosaic_equals_the_merged_cloud(tmp_path, lake, reach):
     assert s["status"] == "done" and s["ground"] == 0
     assert (s["ground_reach"] == 0) == (reach == "none")
     mosaic = _dtm(tmp_path / "out" / "m.vrt")
-    x, y, z = _merged_ground(d)
-    grid = snap_grid(cat.extent, tasks[0].origin, CELL)
-    ref = idw_grid(x, y, z, grid, max_distance=cat.default_max_distance(), workers=1,
-                   tie_order="xy")
+    # the single-file runner on the merged cloud (read_ground -> make_dtm), IDW ties by
+    # coordinates and the catalog's gap distance (its own default is 5 ground spacings)
+    parts = [read_las(p, ("classification",)) for p in find_tiles(str(d))]
+    write_las(tmp_path / "merged.las", *(np.concatenate([getattr(p, a) for p in parts])
+                                         for a in "xyz"),
+              dimensions={"classification": np.concatenate([p["classification"]
+                                                            for p in parts])},
+              crs="EPSG:32632", point_format=6, version="1.4", scale=0.01)
+    grid = snap_grid(cat.extent, tasks[0].origin, CELL, "EPSG:32632")
+    pts, _ = read_ground(tmp_path / "merged.las", [2], cell=CELL, units=METRIC)
+    ref = make_dtm("merged", pts, grid, dtm_method("idw", IdwOptions(tie_order="xy")),
+                   max_distance=cat.default_max_distance()).outcome.z
     assert mosaic.shape == ref.shape
     assert np.array_equal(np.isfinite(mosaic), np.isfinite(ref))
     sel = _inside(grid, cat.extent, 10.0) & np.isfinite(ref)
@@ -263,3 +267,29 @@ def test_catalog_of_one_sparse_tile_refused_with_the_filters_reason(tmp_path):
                        r"classify tile sea: A ground filter needs at least 10 points, got 2"):
         cc.run_catalog([str(d / "sea.laz")], out, cell_size=CELL, buffer=50.0, workers=1)
     assert not out.exists() or not any(out.rglob("*"))
+
+
+def test_square_chunks_over_a_lake_finish(tmp_path):
+    """CHUNK_SIZE 200 m over the 380 m lake: chunks with points but no ground within reach
+    finish with a nodata DTM; the mosaic's nodata is the merged cloud's."""
+    from geomatics_toolbox.core.io.catalog import build_vrt as vrt
+    d = _catalog(tmp_path / "tiles", 380.0)
+    cat = cc.Catalog.open(str(d))
+    out = tmp_path / "out"
+    tasks = cc.plan_tasks(cat, out, ground_filter="keep", dtm_method="idw", cell_size=CELL,
+                          buffer=BUFFER, chunk_size=200.0)
+    (out / cc.STATE_DIR).mkdir(parents=True)
+    stats = [process_chunk(t) for t in tasks]
+    dry = [s for s in stats if s["status"] == "done" and s["ground_reach"] == 0]
+    assert len(tasks) == 9 and dry and all(s["dtm_cells"] == 0 for s in dry)
+    vrt(str(out / "m.vrt"), [t.outputs["DTM"] for t in tasks if os.path.exists(
+        t.outputs["DTM"])])
+    mosaic = _dtm(out / "m.vrt")[-250:, :250]        # the catalog's 500 m, from the top
+    parts = [read_las(p, ("classification",)) for p in find_tiles(str(d))]
+    x, y, z = (np.concatenate([getattr(p, a) for p in parts]) for a in "xyz")
+    g = np.concatenate([p["classification"] for p in parts]) == 2
+    grid = snap_grid(cat.extent, tasks[0].origin, CELL)
+    ref = idw_grid(x[g], y[g], z[g], grid, max_distance=cat.default_max_distance(),
+                   workers=1, tie_order="xy")
+    assert mosaic.shape == ref.shape
+    assert np.array_equal(np.isfinite(mosaic), np.isfinite(ref))
