@@ -219,7 +219,7 @@ class PtdGroundFilterAlgorithm(_GroundCommon):
             "TIN, which takes the candidates (the lowest point per candidate cell) close "
             "enough to its facets until none is added; every other point is ground when it "
             "lies close to the final TIN. Its mean total error on the 8 ISPRS samples is "
-            "4.58 % at the defaults (Axelsson published 4.82 % over all 15 samples): use "
+            "4.55 % at the defaults (Axelsson published 4.82 % over all 15 samples): use "
             "the recommended ground filter unless you need a TIN filter."),
             "INPUT=tile.laz OUTPUT=classified.laz MAX_BUILDING=100",
             {**self.common_notes(),

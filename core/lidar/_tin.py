@@ -17,7 +17,7 @@ from scipy.spatial import Delaunay, cKDTree
 
 from ..terrain.grid import pick_per_cell
 
-__all__ = ["Tin", "cell_index", "lowest_per_cell", "dedupe_xy", "cKDTree"]
+__all__ = ["Tin", "cell_index", "lowest_per_cell", "dedupe_xy", "cKDTree", "one_layer"]
 
 #: Points per block of the vectorised per-point steps (bounds temporary memory).
 CHUNK = 1 << 17
@@ -111,6 +111,31 @@ class Tin:
         e = np.stack([np.hypot(*(c[:, i, :2] - c[:, (i + 1) % 3, :2]).T) for i in range(3)])
         self.edge = e.max(axis=0)
         self._tree = None
+        self._opposite = None
+
+    def regional_tan(self, rings: int = 1):
+        """Tangent of the slope of each facet's neighbourhood (facet and edge neighbours).
+
+        The slope of the area-weighted mean normal of the facet and the facets across
+        its edges, ``rings`` times over: a steep facet on steep terrain keeps its slope,
+        one that is steep only because a vertex stands above its neighbours (a shrub
+        taken for ground) does not, since the facets around that vertex tilt every way.
+        """
+        c = self.corners
+        n = np.cross(c[:, 1] - c[:, 0], c[:, 2] - c[:, 0])     # length = 2 x area, up
+        for _ in range(rings):
+            n = n + np.where(self.neighbors[..., None] >= 0, n[self.neighbors], 0.0).sum(axis=1)
+        return np.hypot(n[:, 0], n[:, 1]) / np.maximum(n[:, 2], 1e-300)
+
+    @property
+    def opposite(self):
+        """Vertex of each edge neighbour opposite the shared edge, shape (k, 3); -1 on the hull."""
+        if self._opposite is None:
+            s, nb = self.simplices, self.neighbors
+            g = np.where(nb >= 0, nb, 0)
+            shared = np.stack([s[:, (i + 1) % 3] + s[:, (i + 2) % 3] for i in range(3)], axis=1)
+            self._opposite = np.where(nb >= 0, s[g].sum(axis=2) - shared, -1)
+        return self._opposite
 
     @property
     def tree(self):
@@ -273,3 +298,30 @@ def breakline_test(tin, cx, cy, cz, s, d, ok, opt, steep):
     good = off <= opt.final_distance
     ok[test[good]] = True
     d[test[good]] = off[good]
+
+
+def one_layer(tin, x, y, z, s, ok, n_ground, rise, cliff, opt):
+    """Ground is one layer: un-accept (in place) points standing on lower ground.
+
+    A point of ``ok`` more than ``final_distance`` plus the terrain's rise over the
+    distance (``rise``: the tangent of the slope of its facet's neighbourhood,
+    :meth:`Tin.regional_tan`) above a ground vertex within ``cell`` of its facet or
+    the three facets next to it is not ground; vertices of facets that span a
+    breakline (``cliff``, :func:`breakline_facets`) are not compared with, as a cliff
+    top stands above its foot. In low vegetation the lowest return of a 1 m cell is
+    often a shrub, so the TIN rises into it and the final pass's band took the
+    shrub's upper returns (mixed-conifer: cells up to +1.26 m above the vendor DTM);
+    the ground vertices beside them give them away.
+    """
+    idx = np.flatnonzero(ok)
+    if idx.size == 0 or n_ground == 0:
+        return
+    f = s[idx]
+    vid = np.concatenate((tin.simplices[f], tin.opposite[f]), axis=1)
+    real = (vid >= 0) & (vid < n_ground)       # not missing, not a virtual frame point
+    vid = np.where(real, vid, 0)
+    real &= ~cliff[vid]
+    dist = np.hypot(tin.xy[vid, 0] - x[idx, None], tin.xy[vid, 1] - y[idx, None])
+    real &= dist <= opt.cell
+    over = real & (z[idx, None] - tin.z[vid] > opt.final_distance + rise[f, None] * dist)
+    ok[idx[over.any(axis=1)]] = False

@@ -12,7 +12,8 @@ and angle-to-vertex limits, one candidate per facet per iteration; Axelsson's
 mirroring for candidates below their facet, and a cliff-aware mirroring for
 candidates in facets that span a breakline) -> final pass of every point against
 the last TIN: within the final distance plus ``final_slope`` per unit of slope (or
-continuing a cliff foot or top) ground, far below it low noise (class 7). Virtual
+continuing a cliff foot or top) ground, unless it stands on lower ground (one layer:
+:func:`~._tin.one_layer`), far below it low noise (class 7). Virtual
 points on a frame around the cloud (every ``frame`` m) keep the TIN's edge facets
 from being slivers, whose planes tilt into the vegetation.
 
@@ -30,16 +31,17 @@ Speed: the Delaunay TIN (Qhull) is rebuilt once per iteration, but only from one
 candidate per ``thin`` cell, and a candidate rejected in a facet that survives the
 rebuild (same three vertices) is not tested again; the others are located by a
 vectorised walk from their previous facet (:class:`~._tin.Tin`, no scipy barycentric
-transform). On one core 56,000-60,000 points/s (CPU time, shared machine at load
-2.5-2.9) on a 1 M-point synthetic tile at 20 pts/m² (``benchmarks/results/ground.md``;
+transform). On one core about 53,000 points/s (CPU time, shared machine at load
+1.8) on a 1 M-point synthetic tile at 20 pts/m² (``benchmarks/results/ground.md``;
 was 4,810).
 
 Measured on the 8 ISPRS filter-test samples at the defaults: mean total error
-4.58 % (was 8.07 %; Axelsson published 4.82 % over all 15 samples, 6.32 % over
+4.55 % (was 8.07 %; Axelsson published 4.82 % over all 15 samples, 6.32 % over
 these 8); see ``benchmarks/results/ground.md``. The figure depends on where the
 lattice falls on a sample (samp22 3.8-7.7 %, samp41 2.4-5.4 % over three lattice
-origins, measured before the final pass's sliver check). A closed canopy with 5 % ground returns
-(``synthetic.landscapes.closed_forest``): no canopy point is ground.
+origins, measured before the final pass's sliver check). A closed canopy with 5 % ground
+returns (``synthetic.landscapes.closed_forest``): no canopy point is ground; the
+Arizona mixed-conifer plot: no 1 m DTM cell more than 1 m above the vendor's.
 
 References
 ----------
@@ -73,6 +75,7 @@ from ._tin import (
     breakline_facets,
     breakline_test,
     mirror_test,
+    one_layer,
 )
 
 __all__ = ["PtdOptions", "classify", "classify_with_tin", "ptd_filter", "Cancelled",
@@ -529,7 +532,9 @@ def final_pass(x, y, z, ground, opt, tin=None):
 
     The allowance grows by ``final_slope`` per unit of the facet's slope, but a point
     more than ``final_distance`` above the facet's highest vertex is never ground: a
-    sliver facet (vertices nearly in line) is steep without any rise.
+    sliver facet (vertices nearly in line) is steep without any rise. Nor is a point
+    more than ``final_distance`` plus the terrain's rise above a nearby ground vertex
+    (:func:`~._tin.one_layer`: shrubs over a TIN that rose into them).
 
     A point in a facet spanning a breakline is also ground when it passes
     :func:`breakline_test` (it continues the cliff foot or top surface).
@@ -548,15 +553,18 @@ def final_pass(x, y, z, ground, opt, tin=None):
         tin = _tin.Tin(*with_corners(x, y, z, ground, opt.frame))
     steep = breakline_facets(tin, opt) if opt.breakline and opt.mirror != "none" else None
     cls = np.full(x.size, OBJECT, dtype=np.uint8)
+    tan = np.sqrt(np.maximum(1.0 / np.maximum(tin.normal[:, 2], 1e-3) ** 2 - 1.0, 0.0))
+    rise, cliff = tin.regional_tan(1), np.zeros(tin.z.size, dtype=bool)
+    cliff[tin.simplices[breakline_facets(tin, opt)].ravel()] = True
     for a in range(0, x.size, _tin.CHUNK * 4):
         b = min(a + _tin.CHUNK * 4, x.size)
         d, dz, _, s = tin.distances(x[a:b], y[a:b], z[a:b])
-        ok = np.abs(d) <= opt.final_distance + opt.final_slope * np.sqrt(
-            np.maximum(1.0 / np.maximum(tin.normal[s, 2], 1e-3) ** 2 - 1.0, 0.0))
+        ok = np.abs(d) <= opt.final_distance + opt.final_slope * tan[s]
         # a sliver facet (vertices nearly in line) is steep without any rise: its slope
         # allowance must not take a point far above its highest vertex (a tree 6 m
         # over the mixed-conifer ground was ground)
         ok &= z[a:b] <= tin.corners[s, :, 2].max(axis=1) + opt.final_distance
+        one_layer(tin, x[a:b], y[a:b], z[a:b], s, ok, ground.size, rise, cliff, opt)
         if steep is not None:       # points at a cliff edge: the densification's test
             breakline_test(tin, x[a:b], y[a:b], z[a:b], s, np.abs(d), ok, opt, steep)
         c = cls[a:b]

@@ -14,12 +14,12 @@ SAMPLES = ["samp11", "samp12", "samp22", "samp31", "samp41", "samp53", "samp54",
 #: sha1 of the uint8 classes and total error (%) of ``ptd.classify`` at its defaults (the
 #: same as RESEARCH in tests/core/test_ground_filters.py).
 GOLDEN = {
-    "samp11": ("88005880827f34f175a72ba706904e1c3661137f", 12.1073),
-    "samp12": ("893367d8abfffd331ec539dc07dfa0862a00fad5", 3.2579),
-    "samp22": ("bced947985aa01718d06edf889ca701706843495", 3.7027),
-    "samp31": ("cc6cbc919c59bfcae9d4a18eb7a230f8000266ac", 2.0061),
-    "samp41": ("8fc28f6c7d15b6ab7d63de0fb94a4901ecdcc0a2", 5.3245),
-    "samp53": ("316f8a9f1dab66a0898c2f1294123e51d370e2c5", 4.3982),
+    "samp11": ("e4bde7f0e33121e055c94bfd3eab61c58d6b7e93", 12.1942),
+    "samp12": ("0a819e9b934d7019d4ddf2954a63c9756187e496", 3.1390),
+    "samp22": ("9b8c85b1faa7d58fdcb0cbd3970515d33b4fc644", 3.6354),
+    "samp31": ("bb7950614bc0d233c813a97e4de7d4b32c3b133a", 1.7636),
+    "samp41": ("308016efc6d2038f6b8e30c45fe4f1f033fcd309", 5.4670),
+    "samp53": ("153ff4fcf22ff71a653f4c0d3c7cb8e0dfb68b09", 4.4185),
     "samp54": ("0b17ecbe5410050229e43a6bc717649725984bfc", 3.2993),
     "samp61": ("c1d38c4f89aeb685b3b04a5dd2bb5538dc2d810c", 2.5043),
 }
