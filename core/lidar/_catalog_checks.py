@@ -308,3 +308,15 @@ def no_ground_error(chunks: Sequence[dict], n_tiles: int, n_points: int,
                       "points, by class: {classes}): there is no terrain to make a DTM of. "
                       "{fix} Nothing was written.", tiles=n_tiles,
                       points=n_points, classes=class_listing(counts) or "-", fix=fix)
+
+
+def empty_dtm_error(chunks: Sequence[dict]) -> InputError:
+    """Return the refusal of a catalog with ground but no DTM cell with a value."""
+    bad = next((c for c in chunks if c.get("dtm_error")), None)
+    reason = (T(bad["dtm_error"]["template"], **bad["dtm_error"]["fields"]) if bad else
+              T("the ground points are too few or too far apart for this DTM method and "
+                "cell size."))
+    return InputError("No tile's DTM has a cell with a value ({n} ground points in the "
+                      "catalog): {reason} Choose another DTM method (DTM_METHOD, e.g. IDW) "
+                      "or a ground filter that finds more ground. Nothing was written.",
+                      n=sum(int(c.get("ground", 0)) for c in chunks), reason=reason)

@@ -72,15 +72,29 @@ def dtm_in_reach(key: str, x, y, z, grid, max_distance: float):
     positions in the tile and its buffer: every cell is nodata (the merged cloud's DTM
     has no ground within the gap distance there when the buffer is wider than it; a
     single-file DTM refuses such a cloud). Fewer points than the method's neighbours:
-    those points (:meth:`~..terrain.dtm.DtmMethod.within`). Returns ``(z, k)``, ``k``
-    the neighbours used when cut, else None.
+    those points (:meth:`~..terrain.dtm.DtmMethod.within`). Ground the method refuses
+    (kriging's variogram from a few points, a TIN of points on one line): nodata and the
+    refusal kept. Returns ``(z, k, why)``: ``k`` the neighbours used when cut, else None;
+    ``why`` the refusal (:func:`refusal`) or None.
     """
+    nodata = np.full(grid.shape, np.nan)
     if distinct_positions(x, y, MIN_DISTINCT_POINTS) < MIN_DISTINCT_POINTS:
-        return np.full(grid.shape, np.nan), None
+        return nodata, None, None
     method = dtm_method(key, CHUNK_IDW if key == "idw" else None)
     fitted = method.within(x, y)
     used = None if fitted is method else int(fitted.options.neighbours)
-    return fitted.interpolate(x, y, z, grid, max_distance=max_distance, workers=1).z, used
+    try:
+        return (fitted.interpolate(x, y, z, grid, max_distance=max_distance, workers=1).z,
+                used, None)
+    except InputError as exc:           # the data of this chunk, not the settings
+        return nodata, used, refusal(exc)
+
+
+def refusal(exc: InputError) -> dict:
+    """Return an :class:`InputError` as JSON for a done marker (template, fields)."""
+    return {"template": exc.template,
+            "fields": {k: v if isinstance(v, (int, float)) else str(v)
+                       for k, v in exc.fields.items()}}
 
 
 # ============================================================================ the task
@@ -308,9 +322,7 @@ def filter_sparse_chunk(task: ChunkTask, xyz, dims, core):
     except InputError as exc:
         src = np.asarray(dims.get("classification", np.zeros(core.size, np.uint8)))
         cls = np.where(np.isin(src, asprs.INPUT_NOISE), src, asprs.UNCLASSIFIED)
-        fields = {k: v if isinstance(v, (int, float)) else str(v)
-                  for k, v in exc.fields.items()}
-        return cls.astype(np.uint8), {"template": exc.template, "fields": fields}
+        return cls.astype(np.uint8), refusal(exc)
 
 
 def _write_outputs(task: ChunkTask, xyz, dims, core, cls, dtm, grid, records=None) -> None:
@@ -358,8 +370,10 @@ def process_chunk(task: ChunkTask, *strips) -> dict:
         clock.lap("filter")
         grid = snap_grid(task.bounds, task.origin, task.cell_size, task.crs)
         g = cls == GROUND
-        dtm, used = dtm_in_reach(task.dtm_method, xyz[0][g], xyz[1][g], xyz[2][g], grid,
-                                 task.max_distance)
+        dtm, used, why = dtm_in_reach(task.dtm_method, xyz[0][g], xyz[1][g], xyz[2][g],
+                                      grid, task.max_distance)
+        if why is not None:
+            stats["dtm_error"] = why
         clock.lap("dtm")
         _write_outputs(task, xyz, dims, core, cls, dtm, grid, records)
         clock.lap("write")

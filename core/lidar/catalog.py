@@ -46,6 +46,7 @@ from ._catalog_checks import (  # noqa: F401 - MAX_*, check_scheduler: public na
     _overlap_points,
     check_index,
     check_scheduler,
+    empty_dtm_error,
     no_ground_error,
 )
 from ._chunks import (
@@ -367,9 +368,7 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     if todo:
         chunks += _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon,
                             len(chunks), failed, clock, on_chunk)
-    if not failed and not any(c.get("ground") for c in chunks):
-        _undo_run(todo, made)
-        raise no_ground_error(chunks, len(tasks), cat.n_points, gf)
+    _check_outcome(chunks, failed, todo, made, len(tasks), cat.n_points, gf)
     vrt, cog_path = _mosaic(cat, folder, tasks, failed, chunks, cog)
     clock.lap("mosaic")
     order = {t.key: i for i, t in enumerate(tasks)}
@@ -392,6 +391,23 @@ def _write_settings(folder: Path, settings: dict) -> None:
     tmp = path.with_suffix(".tmp")
     tmp.write_text(json.dumps(settings, indent=1), encoding="utf-8")
     os.replace(tmp, path)
+
+
+def _check_outcome(chunks, failed, todo, made, n_tiles: int, n_points: int, gf: str):
+    """Refuse a run without ground, or without a DTM cell, undoing what it wrote.
+
+    The single-file DTM refuses a cloud without ground points and a DTM without a valid
+    cell; a catalog does the same over all its tiles (a run with failed chunks reports
+    those instead).
+    """
+    if failed or not chunks:
+        return
+    if not any(c.get("ground") for c in chunks):
+        _undo_run(todo, made)
+        raise no_ground_error(chunks, n_tiles, n_points, gf)
+    if all(c.get("dtm_cells", 1) == 0 for c in chunks):
+        _undo_run(todo, made)
+        raise empty_dtm_error(chunks)
 
 
 def _undo_run(todo: Sequence[ChunkTask], made: Sequence[Path]) -> None:

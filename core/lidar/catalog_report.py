@@ -85,6 +85,11 @@ def _tile_warning(c: dict, buffer: float) -> Optional[T]:
         return T("Tile {tile}: no ground point in the tile nor within its {buffer} m buffer "
                  "(its points by class: {classes}); its DTM is nodata.", tile=key,
                  buffer=f"{buffer:g}", classes=classes)
+    why = c.get("dtm_error")
+    if why:
+        return T("Tile {tile}: the DTM method cannot interpolate the {n} ground points in the "
+                 "tile and its buffer: {reason} Its DTM is nodata.", tile=key, n=reach,
+                 reason=T(why["template"], **why["fields"]))
     if c.get("dtm_cells") == 0:
         return T("Tile {tile}: only {n} ground point(s) in the tile and its buffer, at "
                  "fewer than 3 distinct positions; its DTM is nodata.", tile=key, n=reach)

@@ -293,3 +293,38 @@ def test_square_chunks_over_a_lake_finish(tmp_path):
                    workers=1, tie_order="xy")
     assert mosaic.shape == ref.shape
     assert np.array_equal(np.isfinite(mosaic), np.isfinite(ref))
+
+
+def test_kriging_chunk_whose_variogram_cannot_be_fitted_finishes(tmp_path):
+    """3 ground points within reach: too few point pairs for kriging's variogram (the
+    catalog has no MAX_LAG). The chunk finishes with a nodata DTM; the reason is kept."""
+    from geomatics_toolbox.core.lidar.catalog_report import _tile_warning
+    d = _catalog(tmp_path / "tiles", 380.0, islet=3)
+    _, _, stats = _chunks(d, tmp_path / "out", "kriging")
+    s = stats["t11"]
+    assert s["status"] == "done" and s["ground_reach"] == 3 and s["dtm_cells"] == 0
+    assert "point pairs" in s["dtm_error"]["template"]
+    w = message_text(_tile_warning(s, BUFFER), "en")
+    assert w.startswith("Tile t11: the DTM method cannot interpolate the 3 ground points in "
+                        "the tile and its buffer: Only 6 point pairs are closer than"), w
+    assert w.endswith("Its DTM is nodata."), w
+    assert message_text(_tile_warning(s, BUFFER), "ar").startswith("البلاطة")
+    assert stats["t00"]["dtm_cells"] > 5000 and "dtm_error" not in stats["t00"]
+
+
+def test_catalog_whose_every_dtm_is_nodata_refused_with_the_reason(tmp_path):
+    """Ground, but only 3 points: kriging cannot fit a variogram. Refused as the
+    single-file DTM is ('no cell with a value'), with kriging's reason and the fix."""
+    d = tmp_path / "tiles"
+    d.mkdir()
+    write_las(d / "sea.laz", ORIGIN[0] + np.array([10.0, 80.0, 140.0]),
+              ORIGIN[1] + np.array([20.0, 120.0, 60.0]), np.array([1.0, 2.0, 1.5]),
+              dimensions={"classification": np.full(3, 2, np.uint8)}, crs="EPSG:32632",
+              point_format=6, version="1.4", scale=0.01)
+    out = tmp_path / "out"
+    with pytest.raises(InputError, match=r"No tile's DTM has a cell with a value \(3 ground "
+                       r"points in the catalog\): Only 6 point pairs .* Choose another DTM "
+                       r"method \(DTM_METHOD, e.g. IDW\)"):
+        cc.run_catalog(str(d), out, ground_filter="keep", dtm_method="kriging",
+                       cell_size=CELL, buffer=50.0, workers=1)
+    assert not out.exists() or not any(out.rglob("*"))
