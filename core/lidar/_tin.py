@@ -313,15 +313,22 @@ def one_layer(tin, x, y, z, s, ok, n_ground, rise, cliff, opt):
     shrub's upper returns (mixed-conifer: cells up to +1.26 m above the vendor DTM);
     the ground vertices beside them give them away.
     """
-    idx = np.flatnonzero(ok)
-    if idx.size == 0 or n_ground == 0:
+    if n_ground == 0:
         return
-    f = s[idx]
-    vid = np.concatenate((tin.simplices[f], tin.opposite[f]), axis=1)
+    vid = np.concatenate((tin.simplices, tin.opposite), axis=1)     # per facet
     real = (vid >= 0) & (vid < n_ground)       # not missing, not a virtual frame point
     vid = np.where(real, vid, 0)
     real &= ~cliff[vid]
-    dist = np.hypot(tin.xy[vid, 0] - x[idx, None], tin.xy[vid, 1] - y[idx, None])
-    real &= dist <= opt.cell
-    over = real & (z[idx, None] - tin.z[vid] > opt.final_distance + rise[f, None] * dist)
+    floor = np.where(real, tin.z[vid], np.inf).min(axis=1)
+    idx = np.flatnonzero(ok)
+    # only a point above its neighbourhood's lowest vertex by more than the final
+    # distance can fail (the rise term is >= 0): the others skip the distances
+    idx = idx[z[idx] - floor[s[idx]] > opt.final_distance]
+    if idx.size == 0:
+        return
+    f = s[idx]
+    v, near = vid[f], real[f]
+    dist = np.hypot(tin.xy[v, 0] - x[idx, None], tin.xy[v, 1] - y[idx, None])
+    near &= dist <= opt.cell
+    over = near & (z[idx, None] - tin.z[v] > opt.final_distance + rise[f, None] * dist)
     ok[idx[over.any(axis=1)]] = False
