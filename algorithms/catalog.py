@@ -75,7 +75,10 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
             "finished tiles."),
             "INPUT=/data/tiles GROUND_FILTER=2 BUFFER=100 CELL_SIZE=1 "
             "OUTPUT_FOLDER=/data/out OUTPUT_HTML=catalog.html",
-            {self.INPUT: self.tr("All tiles must share one CRS."),
+            {self.INPUT: self.tr("All tiles must share one CRS. Tiles without points are "
+                                 "left out; tiles without ground within reach (a lake, the "
+                                 "sea) get a nodata DTM. Both are named in the log and the "
+                                 "report."),
              self.GROUND_FILTER: self.tr("The first choice keeps the classes already in "
                                          "the files."),
              self.BUFFER: self.tr("Must exceed the filter's reach (about 100 m for the "

@@ -334,10 +334,6 @@
             <translation>يصنّف الأرض ويبني نموذج تضاريس رقميًا لكل بلاطة في مشروع LiDAR، وتُقرأ كل بلاطة مع نطاق عازل من نقاط جيرانها فلا تظهر خطوط التقاء في النتائج. تعمل البلاطات بالتوازي على Dask محليًا أو على عنقود؛ وإعادة التشغيل تتخطى البلاطات المنجزة.</translation>
         </message>
         <message>
-            <source>All tiles must share one CRS.</source>
-            <translation>يجب أن تشترك كل البلاطات في نظام إحداثيات واحد.</translation>
-        </message>
-        <message>
             <source>The first choice keeps the classes already in the files.</source>
             <translation>الخيار الأول يُبقي الفئات الموجودة في الملفات.</translation>
         </message>
@@ -408,6 +404,10 @@
         <message>
             <source>Tile {path} skipped: {reason}</source>
             <translation>تم تخطّي البلاطة {path}: {reason}</translation>
+        </message>
+        <message>
+            <source>All tiles must share one CRS. Tiles without points are left out; tiles without ground within reach (a lake, the sea) get a nodata DTM. Both are named in the log and the report.</source>
+            <translation>يجب أن تشترك كل البلاطات في نظام إحداثيات واحد. تُستبعد البلاطات التي بلا نقاط؛ والبلاطات التي لا أرض على مقربة منها (بحيرة، بحر) يكون نموذج التضاريس الرقمي الخاص بها بلا بيانات. تُذكر كلتاهما في السجل والتقرير.</translation>
         </message>
     </context>
     <context>

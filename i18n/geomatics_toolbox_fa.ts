@@ -334,10 +334,6 @@
             <translation>برای هر کاشی یک پروژهٔ LiDAR زمین را کلاس‌بندی و DTM می‌سازد؛ هر کاشی با حائلی از نقاط همسایه‌هایش خوانده می‌شود تا نتیجه درز نداشته باشد. کاشی‌ها به‌صورت موازی روی Dask، محلی یا روی خوشه، اجرا می‌شوند؛ اجرای دوباره کاشی‌های تمام‌شده را رد می‌کند.</translation>
         </message>
         <message>
-            <source>All tiles must share one CRS.</source>
-            <translation>همهٔ کاشی‌ها باید یک سامانهٔ مختصات داشته باشند.</translation>
-        </message>
-        <message>
             <source>The first choice keeps the classes already in the files.</source>
             <translation>گزینهٔ نخست کلاس‌های موجود در فایل‌ها را نگه می‌دارد.</translation>
         </message>
@@ -408,6 +404,10 @@
         <message>
             <source>Tile {path} skipped: {reason}</source>
             <translation>از کاشی {path} گذشته شد: {reason}</translation>
+        </message>
+        <message>
+            <source>All tiles must share one CRS. Tiles without points are left out; tiles without ground within reach (a lake, the sea) get a nodata DTM. Both are named in the log and the report.</source>
+            <translation>همهٔ کاشی‌ها باید یک سامانهٔ مختصات داشته باشند. کاشی‌های بدون نقطه کنار گذاشته می‌شوند؛ کاشی‌هایی که زمینی در دسترس ندارند (دریاچه، دریا) مدل رقومی زمین بدون داده می‌گیرند. هر دو در گزارش کار و گزارش نام برده می‌شوند.</translation>
         </message>
     </context>
     <context>
