@@ -61,6 +61,72 @@ def test_tin_facets_counter_clockwise_with_upward_normals():
     assert np.all(tin.neighbors[tin.neighbors >= 0] < tin.simplices.shape[0])
 
 
+def test_opposite_vertices_against_brute_force():
+    rng = np.random.default_rng(5)
+    x, y = rng.uniform(0, 30, 300), rng.uniform(0, 30, 300)
+    tin = _tin.Tin(x, y, np.zeros(300))
+    for f in range(tin.simplices.shape[0]):
+        for i in range(3):
+            g = tin.neighbors[f, i]
+            if g < 0:
+                assert tin.opposite[f, i] == -1
+                continue
+            shared = {tin.simplices[f, (i + 1) % 3], tin.simplices[f, (i + 2) % 3]}
+            assert shared < set(tin.simplices[g])
+            assert {tin.opposite[f, i]} == set(tin.simplices[g]) - shared
+
+
+def test_regional_slope_keeps_a_plane_and_flattens_a_spike():
+    """On a plane every facet's neighbourhood has the plane's slope; around one vertex
+    standing 0.8 m above a flat 1 m grid (a shrub taken for ground) the facets are steep
+    but their neighbourhoods are not."""
+    rng = np.random.default_rng(6)
+    x, y = rng.uniform(0, 40, 500), rng.uniform(0, 40, 500)
+    tin = _tin.Tin(x, y, 0.3 * x - 0.1 * y)
+    assert np.allclose(tin.regional_tan(1), np.hypot(0.3, 0.1))
+    g = np.arange(0.0, 21.0)
+    gx, gy = (a.ravel() for a in np.meshgrid(g, g))
+    gx, gy = gx + rng.uniform(-0.2, 0.2, gx.size), gy + rng.uniform(-0.2, 0.2, gy.size)
+    gz = np.where(np.hypot(gx - 10, gy - 10) < 0.5, 0.8, 0.0)
+    assert np.count_nonzero(gz) == 1
+    tin = _tin.Tin(gx, gy, gz)
+    spike = np.flatnonzero(gz)[0]
+    around = (tin.simplices == spike).any(axis=1)
+    facet_tan = np.sqrt(1.0 / tin.normal[:, 2] ** 2 - 1.0)
+    assert facet_tan[around].min() > 0.5
+    assert (tin.regional_tan(1)[around] < 0.75 * facet_tan[around]).all()
+
+
+@pytest.mark.parametrize("slope", [0.0, 0.3])
+def test_one_layer_rejects_points_standing_on_lower_ground(slope):
+    """Vertices on a 1 m grid over a plane rising ``slope``: a point 0.6 m above the
+    ground (more than the final distance 0.5 over the rise to its lowest vertex within
+    the cell, 2 m) is not ground, one 0.3 m above is; the same point beside a vertex of
+    a breakline facet (a cliff foot) is not compared with it; frame points (index >=
+    n_ground) never count."""
+    from geomatics_toolbox.core.lidar import ptd
+    opt = ptd.PtdOptions()
+    rng = np.random.default_rng(7)
+    g = np.arange(0.0, 21.0)
+    gx, gy = (a.ravel() for a in np.meshgrid(g, g))
+    gx, gy = gx + rng.uniform(-0.2, 0.2, gx.size), gy + rng.uniform(-0.2, 0.2, gy.size)
+    tin = _tin.Tin(gx, gy, slope * gx)
+    px, py = rng.uniform(5, 15, 200), rng.uniform(5, 15, 200)
+    up = np.where(np.arange(200) % 2 == 0, 0.6, 0.3)
+    pz = slope * px + up
+    s = tin.locate(px, py)
+    rise, no_cliff = tin.regional_tan(1), np.zeros(tin.z.size, bool)
+    ok = np.ones(200, bool)
+    _tin.one_layer(tin, px, py, pz, s, ok, gx.size, rise, no_cliff, opt)
+    assert np.array_equal(ok, up < 0.5)
+    ok = np.ones(200, bool)
+    _tin.one_layer(tin, px, py, pz, s, ok, gx.size, rise, np.ones(tin.z.size, bool), opt)
+    assert ok.all()
+    ok = np.ones(200, bool)
+    _tin.one_layer(tin, px, py, pz, s, ok, 0, rise, no_cliff, opt)
+    assert ok.all()
+
+
 def _bench():
     sys.path.insert(0, str(BENCH))
     try:
