@@ -105,6 +105,13 @@ def _tile_warning(c: dict, buffer: float) -> Optional[T]:
     return None
 
 
+def _status(c: dict, skipped) -> T:
+    """Status of a chunk in the tile table (a DTM without a value cell said so)."""
+    if c["key"] in skipped:
+        return T("finished earlier")
+    return T("done, DTM nodata") if c.get("dtm_cells") == 0 else T("done")
+
+
 def catalog_warnings(result) -> List[T]:
     """Warnings of a run: tiles without points (left out) and tiles without ground.
 
@@ -151,8 +158,8 @@ def catalog_report(result, tiles_bounds, *, lang: str = "en") -> Report:
         tile_status_svg(result, tiles_bounds, tr=translator(lang)),
         T("Tiles coloured by status and processing time"), figure_id="tile-status")).add(
         Table([T("Tile"), T("Status"), T("Points"), T("Ground"), T("Seconds"), T("Worker")],
-              [[c["key"], T("finished earlier") if c["key"] in result.skipped else T("done"),
-                c["points"], c["ground"], c["seconds"], c["worker"]] for c in result.chunks]
+              [[c["key"], _status(c, result.skipped), c["points"], c["ground"], c["seconds"],
+                c["worker"]] for c in result.chunks]
               + [[k, T("failed"), "", "", "", msg] for k, msg in result.failed.items()],
               digits=1))
     if warnings:

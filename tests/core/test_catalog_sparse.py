@@ -188,6 +188,7 @@ def test_run_warns_naming_the_tiles_without_ground_and_a_header_only_tile(tmp_pa
     html = render_html(catalog_report(res, np.asarray(res.settings["bounds"]), lang="en"),
                        lang="en")
     assert "no ground point in the tile nor within its" in html and "t20.laz" in html
+    assert html.count("done, DTM nodata") == 1          # t11's row of the tile table
     assert np.isfinite(_dtm(out / "dtm.vrt")).sum() > 25_000
 
 
@@ -199,7 +200,8 @@ def test_catalog_without_any_ground_is_refused_and_leaves_nothing(tmp_path):
                        r"\(GROUND_FILTER\)") as err:
         cc.run_catalog(str(d), out, ground_filter="keep", cell_size=CELL, buffer=BUFFER,
                        workers=1)
-    assert err.value.message("ar") != str(err.value)
+    assert err.value.message("ar").startswith("لا توجد في أي بلاطة من الفهرس نقطة أرض")
+    assert err.value.message("fa").startswith("هیچ کاشی‌ای از کاتالوگ نقطهٔ زمینی ندارد")
     assert not out.exists() or not any(out.rglob("*"))
 
 
