@@ -333,7 +333,9 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     CatalogResult
         ``timings`` holds wall and CPU seconds of this (client) process per phase
         (index, plan, cluster start, compute, cluster close, mosaic); each chunk's
-        stats hold those of its worker (read, filter, dtm, write).
+        stats hold those of its worker (read, filter, dtm, write) and its ground
+        (``ground``, ``ground_reach``, ``dtm_cells``: :func:`.catalog_report.catalog_warnings`).
+        InputError: bad input (nothing made), no ground or no DTM cell (outputs removed).
     """
     t0 = time.perf_counter()
     clock = PhaseClock()
