@@ -31,8 +31,8 @@ Speed: the Delaunay TIN (Qhull) is rebuilt once per iteration, but only from one
 candidate per ``thin`` cell, and a candidate rejected in a facet that survives the
 rebuild (same three vertices) is not tested again; the others are located by a
 vectorised walk from their previous facet (:class:`~._tin.Tin`, no scipy barycentric
-transform). On one core 51,000-55,000 points/s (CPU time, shared machine at load
-2.2-2.5) on a 1 M-point synthetic tile at 20 pts/m² (``benchmarks/results/ground.md``;
+transform). On one core 46,000-55,000 points/s (CPU time; runs spread +-10 %, idle or load
+up to 2.5) on a 1 M-point synthetic tile at 20 pts/m² (``benchmarks/results/ground.md``;
 was 4,810).
 
 Measured on the 8 ISPRS filter-test samples at the defaults: mean total error
