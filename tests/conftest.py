@@ -119,6 +119,35 @@ def qgis_app():
         registry.removeProvider("geomatics")
 
 
+@pytest.fixture
+def arabic_ui(qgis_app):
+    """QGIS interface language Arabic (the locale override the plugin reads)."""
+    from qgis.core import QgsSettings
+    settings = QgsSettings()
+    old = (settings.value("locale/overrideFlag", False, type=bool),
+           settings.value("locale/userLocale", ""))
+    settings.setValue("locale/overrideFlag", True)
+    settings.setValue("locale/userLocale", "ar")
+    yield
+    settings.setValue("locale/overrideFlag", old[0])
+    settings.setValue("locale/userLocale", old[1])
+
+
+@pytest.fixture
+def warning_feedback(qgis_app):
+    """A QgsProcessingFeedback keeping every pushed warning in ``.warnings``."""
+    from qgis.core import QgsProcessingFeedback
+
+    class Warnings(QgsProcessingFeedback):
+        def __init__(self):
+            super().__init__()
+            self.warnings = []
+
+        def pushWarning(self, text):  # noqa: N802
+            self.warnings.append(text)
+    return Warnings()
+
+
 @pytest.fixture(scope="session")
 def qgis_processing(qgis_app):
     """The ``processing`` module, ready for ``processing.run('geomatics:…')``."""

@@ -33,43 +33,16 @@ def _tiles(d, lake: float):
     return d
 
 
-class _Feedback:
-    def __new__(cls):
-        from qgis.core import QgsProcessingFeedback
-
-        class Fb(QgsProcessingFeedback):
-            def __init__(self):
-                super().__init__()
-                self.warnings = []
-
-            def pushWarning(self, text):  # noqa: N802
-                self.warnings.append(text)
-        return Fb()
-
-
 def _params(tiles, out, **extra):
     return {"INPUT": str(tiles), "GROUND_FILTER": 0, "CELL_SIZE": 2.0, "BUFFER": 30.0,
             "WORKERS": 1, "OUTPUT_FOLDER": str(out), **extra}
 
 
-@pytest.fixture
-def arabic_ui(qgis_app):
-    """QGIS interface language Arabic (the locale override the plugin reads)."""
-    from qgis.core import QgsSettings
-    settings = QgsSettings()
-    old = (settings.value("locale/overrideFlag", False, type=bool),
-           settings.value("locale/userLocale", ""))
-    settings.setValue("locale/overrideFlag", True)
-    settings.setValue("locale/userLocale", "ar")
-    yield
-    settings.setValue("locale/overrideFlag", old[0])
-    settings.setValue("locale/userLocale", old[1])
-
-
-def test_lake_tile_and_header_only_tile_finish_with_warnings(qgis_processing, tmp_path):
+def test_lake_tile_and_header_only_tile_finish_with_warnings(qgis_processing, warning_feedback,
+                                                             tmp_path):
     tiles = _tiles(tmp_path / "tiles", 160.0)
     out, html = tmp_path / "out", tmp_path / "r.html"
-    fb = _Feedback()
+    fb = warning_feedback
     res = qgis_processing.run(ALG, _params(tiles, out, OUTPUT_HTML=str(html),
                                            REPORT_LANGUAGE=2), feedback=fb)
     assert res["N_TILES"] == 4 and res["N_FAILED"] == 0
@@ -91,9 +64,9 @@ def test_lake_tile_and_header_only_tile_finish_with_warnings(qgis_processing, tm
     assert "t20.laz" in text and "استُبعد من الفهرس" in text
 
 
-def test_lake_warning_in_arabic(qgis_processing, arabic_ui, tmp_path):
+def test_lake_warning_in_arabic(qgis_processing, arabic_ui, warning_feedback, tmp_path):
     tiles = _tiles(tmp_path / "tiles", 160.0)
-    fb = _Feedback()
+    fb = warning_feedback
     res = qgis_processing.run(ALG, _params(tiles, tmp_path / "out"), feedback=fb)
     assert res["N_FAILED"] == 0
     t11 = [w for w in fb.warnings if "t11" in w]
@@ -113,7 +86,8 @@ def test_catalog_without_ground_refused_with_the_fix(qgis_processing, tmp_path):
     assert not out.exists() or not any(out.rglob("*"))
 
 
-def test_offshore_tile_too_sparse_for_the_default_filter(qgis_processing, tmp_path):
+def test_offshore_tile_too_sparse_for_the_default_filter(qgis_processing, warning_feedback,
+                                                         tmp_path):
     """The default ground filter on a sea tile of 3 returns (needs 10): the run finishes,
     the land tile is classified, the sea tile named with the filter's reason."""
     d = tmp_path / "tiles"
@@ -125,7 +99,7 @@ def test_offshore_tile_too_sparse_for_the_default_filter(qgis_processing, tmp_pa
     write_las(d / "sea.laz", x, y, np.full(3, 190.0),
               dimensions={"classification": np.ones(3, np.uint8)}, crs="EPSG:32632",
               point_format=6, version="1.4", scale=0.01)
-    fb = _Feedback()
+    fb = warning_feedback
     out = tmp_path / "out"
     params = _params(d, out, BUFFER=50.0)
     del params["GROUND_FILTER"]                      # the default: the recommended filter

@@ -10,20 +10,6 @@ from geomatics_toolbox.core.errors import FSI, PDI, InputError
 from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 
 
-@pytest.fixture
-def arabic_ui(qgis_app):
-    """QGIS interface language Arabic (the locale override the plugin reads)."""
-    from qgis.core import QgsSettings
-    settings = QgsSettings()
-    old = (settings.value("locale/overrideFlag", False, type=bool),
-           settings.value("locale/userLocale", ""))
-    settings.setValue("locale/overrideFlag", True)
-    settings.setValue("locale/userLocale", "ar")
-    yield
-    settings.setValue("locale/overrideFlag", old[0])
-    settings.setValue("locale/userLocale", old[1])
-
-
 def test_input_error_is_english_template_translated_on_demand():
     e = InputError("{path} holds no check points.", path="/data/cp.csv")
     assert isinstance(e, ValueError) and str(e) == "/data/cp.csv holds no check points."

@@ -341,29 +341,20 @@ def test_elevationchange_with_an_empty_epoch_refused(qgis_processing, tmp_path, 
 
 
 def test_elevationchange_raster_without_crs_is_named_in_a_warning(qgis_processing,
+                                                                  warning_feedback,
                                                                   tmp_path):
-    from qgis.core import QgsProcessingFeedback
-
     from geomatics_toolbox.core.io.raster import write_geotiff
-
-    class Warnings(QgsProcessingFeedback):
-        def __init__(self):
-            super().__init__()
-            self.seen = []
-
-        def pushWarning(self, text):  # noqa: N802
-            self.seen.append(text)
 
     a = _grid_dem(tmp_path / "a.tif", "EPSG:32632")
     b = write_geotiff(tmp_path / "b.tif", np.full((20, 20), 101.0),
                       geotransform=(500_000, 1, 0, 4_000_020, 0, -1), crs=None)
-    fb = Warnings()
+    fb = warning_feedback
     res = qgis_processing.run("geomatics:elevationchange", {
         "INPUT": str(a), "INPUT_AFTER": str(b), "OUTPUT": str(tmp_path / "d.tif")},
         feedback=fb)
     assert res["FILL_VOLUME"] == pytest.approx(400.0, rel=1e-6)
     assert any("b.tif has no CRS: it is taken to be in the CRS of a.tif (EPSG:32632" in w
-               for w in fb.seen), fb.seen
+               for w in fb.warnings), fb.warnings
 
 
 @pytest.mark.parametrize("alg,param,name,content,message", [
@@ -426,31 +417,22 @@ def test_groundfilter_keeps_extra_bytes_descriptors_byte_for_byte(qgis_processin
 
 # ----------------------------------------------------------------- dtmaccuracy, few points
 @pytest.mark.parametrize("n", [1, 2, 25])
-def test_dtmaccuracy_few_check_points_warned_asprs(qgis_processing, tmp_path, n):
-    from qgis.core import QgsProcessingFeedback
-
-    class Warnings(QgsProcessingFeedback):
-        def __init__(self):
-            super().__init__()
-            self.seen = []
-
-        def pushWarning(self, text):  # noqa: N802
-            self.seen.append(text)
-
+def test_dtmaccuracy_few_check_points_warned_asprs(qgis_processing, warning_feedback,
+                                                   tmp_path, n):
     dtm = _grid_dem(tmp_path / "dtm.tif", "EPSG:32632")
     csv = tmp_path / "cp.csv"
     csv.write_text("id,x,y,z\n" + "".join(
         f"{i},{500_002.5 + (i % 5) * 3},{4_000_002.5 + (i // 5) * 3},100.1\n"
         for i in range(n)), encoding="utf-8")
-    fb = Warnings()
+    fb = warning_feedback
     res = qgis_processing.run("geomatics:dtmaccuracy", {
         "DTM": str(dtm), "CHECKPOINTS_CSV": str(csv),
         "OUTPUT_HTML": str(tmp_path / "acc.html")}, feedback=fb)
     assert res["N"] == n
     html = re.sub(r"</?bdi[^>]*>", "", (tmp_path / "acc.html").read_text(encoding="utf-8"))
-    warned = [w for w in fb.seen if "ASPRS (2014) asks for at least 20 check points" in w]
+    warned = [w for w in fb.warnings if "ASPRS (2014) asks for at least 20 check points" in w]
     if n < 20:
-        assert warned and warned[0].startswith(f"Only {n} check points"), fb.seen
+        assert warned and warned[0].startswith(f"Only {n} check points"), fb.warnings
         assert "at least 20 check points before a vertical accuracy" in html
     else:
         assert not warned and "at least 20 check points" not in html
