@@ -490,17 +490,25 @@ def test_dtm_refusals_in_arabic():
 
 
 # ----------------------------------------------------------------- slope filter, one position
-@pytest.mark.parametrize("n,message", [
+#: A cloud of n points at one x/y position and the slope filter's refusal (the sweep's too).
+ONE_POSITION = [
     (1, r"A ground filter needs at least 2 points, got 1: give a cloud that covers the "
         r"ground area"),
     (500, r"All 500 points share one x/y position, so there is no terrain to compare them "
           r"with: give a cloud whose points cover the ground area"),
-])
-def test_slopegroundfilter_one_position_refused(qgis_processing, tmp_path, n, message):
-    src = tmp_path / "one.las"
+]
+
+
+def _one_position_las(path, n, **dims):
     rng = np.random.default_rng(3)
-    write_las(src, np.full(n, 500_000.0), np.full(n, 4_000_000.0),
-              100 + rng.uniform(0, 20, n), crs="EPSG:32632")
+    write_las(path, np.full(n, 500_000.0), np.full(n, 4_000_000.0),
+              100 + rng.uniform(0, 20, n), crs="EPSG:32632", **dims)
+    return path
+
+
+@pytest.mark.parametrize("n,message", ONE_POSITION)
+def test_slopegroundfilter_one_position_refused(qgis_processing, tmp_path, n, message):
+    src = _one_position_las(tmp_path / "one.las", n)
     out, ground = tmp_path / "c.laz", tmp_path / "g.laz"
     refused(qgis_processing, "geomatics:slopegroundfilter", {
         "INPUT": str(src), "OUTPUT": str(out), "GROUND_OUTPUT": str(ground),
@@ -568,19 +576,10 @@ def test_krigingdtm_the_named_fix_works(qgis_processing, tmp_path):
 
 
 # ----------------------------------------------------------------- sweep, one position
-@pytest.mark.parametrize("n,message", [
-    (1, r"A ground filter needs at least 2 points, got 1: give a cloud that covers the "
-        r"ground area"),
-    (500, r"All 500 points share one x/y position, so there is no terrain to compare them "
-          r"with: give a cloud whose points cover the ground area"),
-])
+@pytest.mark.parametrize("n,message", ONE_POSITION)
 def test_slopethresholdsweep_one_position_refused(qgis_processing, tmp_path, n, message):
-    src = tmp_path / "one.las"
-    rng = np.random.default_rng(3)
-    write_las(src, np.full(n, 500_000.0), np.full(n, 4_000_000.0),
-              100 + rng.uniform(0, 20, n),
-              dimensions={"classification": np.where(np.arange(n) % 2, 6, 2).astype("u1")},
-              crs="EPSG:32632")
+    src = _one_position_las(tmp_path / "one.las", n, dimensions={
+        "classification": np.where(np.arange(n) % 2, 6, 2).astype("u1")})
     csv, html, out = tmp_path / "sweep.csv", tmp_path / "sweep.html", tmp_path / "c.laz"
     refused(qgis_processing, "geomatics:slopethresholdsweep", {
         "INPUT": str(src), "SLOPES": "40, 50", "RADII": "3", "OUTPUT_CSV": str(csv),
