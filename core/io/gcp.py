@@ -48,8 +48,9 @@ spaces/underscores ignored), optional leading ``# CRS: …`` line:
 * optional ``enabled`` (``enable``, ``use``: 1/0, true/false, yes/no), ``role``
   (``gcp`` or ``check`` — check points are kept apart from the fit) and ``weight``.
 
-Both kinds of file are decoded by :mod:`.text` (UTF-16 with a BOM, UTF-8, else the
-machine's Windows code page), the same rule as check-point files.
+Both kinds of file are decoded by :mod:`.text` (UTF-16 with a BOM, a declared page,
+UTF-8, else the Windows code page that reads the names as text: cp1256, cp1252 or the
+machine's own), the same rule as check-point files.
 
 ``pixel_origin="center"`` says that the image coordinates are pixel-centre indices
 (e.g. 0-based array indices ``[row, col]`` of the pixel holding the feature); 0.5 is

@@ -181,7 +181,8 @@ def read_checkpoints_csv(path, *, x_field: str = "", y_field: str = "",
     optional id/name), or given by ``x_field``/``y_field``/``z_field``; without a
     header the columns are ``id, x, y, z`` (4+ columns) or ``x, y, z`` (3 columns).
     The text is decoded by :func:`.text.read_text`, the rule of GCP files too (UTF-16
-    with a BOM, UTF-8, else the machine's Windows code page).
+    with a BOM, a declared page, UTF-8, else the Windows code page that reads the names
+    as text: cp1256, cp1252 or the machine's own).
     """
     path = os.fspath(path)
     rows = _delimited_rows(path)

@@ -279,31 +279,34 @@ def test_publishoutputs_refuses_a_file_that_is_not_its_kind(qgis_processing, tmp
 
 @pytest.mark.parametrize("page,names", [
     ("cp1252", ["Château-1", "Müller-Süd 2"]),       # Western Windows, Excel "CSV"
-    ("cp1256", ["نقطة1", "چک 2"]),                   # Arabic / Persian Windows
+    ("cp1256", ["نقطة تحقق 1", "جسر الملك فهد"]),    # Arabic Windows, Excel "CSV"
+    ("cp1256", ["ايستگاه يک", "پل کرج"]),            # Persian Windows (cp1256: ي for ی)
+    ("utf-8-sig", ["نقطة تحقق 1", "ایستگاه یک"]),    # Excel "CSV UTF-8"
+    ("utf-16", ["نقطه\u200cی چک", "Château-1"]),     # Excel "Unicode Text"
 ])
-def test_dtmaccuracy_check_points_in_the_windows_code_page(qgis_processing, data, tmp_path,
-                                                          monkeypatch, page, names):
-    """An Excel 'CSV' (the machine's ANSI code page) with non-ASCII names: was refused
-    ("not UTF-8") while GCP files of the same bytes were read as cp1252; now both
-    readers share core.io.text and the names come out as written."""
+def test_dtmaccuracy_check_point_names_survive_in_any_encoding(qgis_processing, data,
+                                                              tmp_path, page, names):
+    """An Excel 'CSV' in the Windows code page of an Arabic or Persian machine, read here
+    (a UTF-8 Linux machine): the names were garbled ('äÞØÉ ÊÍÞÞ 1', read as cp1252) or
+    the file refused (گ is 0x90, undefined in cp1252); now the code page is judged from
+    the names (core.io.text) and they reach the residual layer and the report as written."""
     from osgeo import ogr
-
-    from geomatics_toolbox.core.io import text as text_io
-    monkeypatch.setattr(text_io, "legacy_encoding", lambda: page)
     dtm = qgis_processing.run("geomatics:idwdtm", {
         "INPUT": str(data["laz"]), "CELL_SIZE": 1.0, "FILL_GAPS": True,
         "OUTPUT": str(tmp_path / "dtm.tif")})["OUTPUT"]
     csv = tmp_path / "cp.csv"
-    csv.write_bytes(("id,x,y,z\n" + "".join(
-        f"{n},{500010 + 9 * k},{4000010 + 7 * k},100\n" for k, n in enumerate(names))
-    ).encode(page))
+    sep = "\t" if page == "utf-16" else ","
+    csv.write_bytes((sep.join(("id", "x", "y", "z")) + "\n" + "".join(
+        sep.join(map(str, (n, 500010 + 9 * k, 4000010 + 7 * k, 100))) + "\n"
+        for k, n in enumerate(names))).encode(page))
     res = qgis_processing.run("geomatics:dtmaccuracy", {
         "DTM": dtm, "CHECKPOINTS_CSV": str(csv), "OUTPUT": str(tmp_path / "res.gpkg"),
         "OUTPUT_HTML": str(tmp_path / "acc.html")})
     ds = ogr.Open(str(res["OUTPUT"]).split("|")[0])
     assert [f.GetField("id") for f in ds.GetLayer(0)] == names
     ds = None
-    assert all(n in (tmp_path / "acc.html").read_text(encoding="utf-8") for n in names)
+    html = (tmp_path / "acc.html").read_text(encoding="utf-8")
+    assert all(n in html for n in names)
 
 
 def test_dtmaccuracy_binary_check_point_file_refused_with_the_fix(qgis_processing, data,
@@ -317,7 +320,8 @@ def test_dtmaccuracy_binary_check_point_file_refused_with_the_fix(qgis_processin
     out = tmp_path / "acc.html"
     text = refused(qgis_processing, "geomatics:dtmaccuracy", {
         "DTM": dtm, "CHECKPOINTS_CSV": str(csv), "OUTPUT_HTML": str(out)},
-        r"cp\.csv is not a text file in UTF-8 or cp125\d \(byte 30 cannot be read\): save "
+        r"cp\.csv is not a text file in UTF-8 or cp1256/cp1252 \(byte 30 cannot be read\): "
+        r"save "
         r"it as text in UTF-8 \(in Excel: Save As, CSV UTF-8\)", [dtm, csv], [out])
     assert "codec" not in text
 
