@@ -36,7 +36,7 @@ from ..core import deps
 from ..core.errors import InputError, message_text
 from ..core.io.contract import OutputContract, Terminated, atomic_output
 from ..core.progress import Cancelled
-from ..core.reporting import about_rows, render_html
+from ..core.reporting import T, about_rows, render_html
 from .locale import user_locale
 
 ICON_DIR = os.path.join(os.path.dirname(os.path.dirname(__file__)), "provider", "icons")
@@ -187,6 +187,14 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
         return ""
 
     # ---------------------------------------------------------------- parameters
+    def parameter_named(self, name: str):
+        """A parameter as the user sees it, for an :class:`InputError` field:
+        ``“<dialog label>” (NAME)`` — the label in the message's language (translated
+        from the same strings as the dialog's), ``NAME`` as ``qgis_process`` takes it."""
+        definition = self.parameterDefinition(name)
+        label = definition.description() if definition is not None else name
+        return T("\u201c{label}\u201d ({name})", label=T(label), name=name)
+
     def add_number(self, name: str, label: str, default=None, *, minimum=None,
                    maximum=None, integer: bool = False, optional: bool = False,
                    advanced: bool = False, help_text: str | None = None,

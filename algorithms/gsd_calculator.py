@@ -1,7 +1,6 @@
 """GSD / photogrammetric accuracy calculator (single camera, and batch over a table)."""
 from __future__ import annotations
 
-import inspect
 import math
 import os
 
@@ -98,6 +97,17 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
     OUTPUT_HTML = "OUTPUT_HTML"
     #: default camera–object distance / flying height, m (a typical drone survey)
     DEFAULT_DISTANCE = 100.0
+    #: core keyword (and the names :mod:`core.photogrammetry.gsd` checks) -> parameter
+    KEYWORD_PARAMETERS = {
+        "distance": DISTANCE, "sensor_width": SENSOR_WIDTH, "image_width": IMAGE_WIDTH,
+        "focal_length": FOCAL_LENGTH, "sensor_height": SENSOR_HEIGHT,
+        "sensor_size": SENSOR_HEIGHT, "image_height": IMAGE_HEIGHT,
+        "target_gsd": TARGET_GSD, "k_m": K_M, "k_s": K_S, "pyramid_level": PYRAMID_LEVEL,
+        "subsampling_step": SUBSAMPLING_STEP, "observed_sx": OBSERVED_SX,
+        "observed_sy": OBSERVED_SY, "observed_sz": OBSERVED_SZ,
+        "observed_sxyz": OBSERVED_SXYZ, "observed_dense_std": OBSERVED_DENSE_STD,
+        "stereo_base": STEREO_BASE, "forward_overlap": FORWARD_OVERLAP,
+        "side_overlap": SIDE_OVERLAP}
 
     def name(self):
         return "gsdcalculator"
@@ -256,7 +266,7 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
                 result = core_gsd.compute(distance=distance, **camera,
                                           **self.options(parameters, context))
             except InputError as exc:
-                raise named_as_parameter(exc) from None
+                raise named_as_parameter(exc, self) from None
             values = result.as_dict()
             outputs = {}
             for attr, name, unit in NUMERIC_OUTPUTS:
@@ -294,16 +304,20 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
             side_overlap=_optional(parameters, self.SIDE_OVERLAP))
 
 
-def named_as_parameter(error: InputError) -> InputError:
-    """The core's refusal with the keyword it names as this dialog's parameter.
+def named_as_parameter(error: InputError, algorithm: "GsdCalculatorAlgorithm") -> InputError:
+    """The core's refusal naming the parameter as the dialog and ``qgis_process`` show it.
 
-    :func:`core_gsd.compute` names its keyword (``k_m``), which is the column name of a
-    ``gsdbatch`` table; here the user typed the parameter ``K_M``.
+    :func:`core_gsd.compute` names its keyword (``k_m``, or ``sensor_size`` for the
+    sensor height of the footprint), which is the column name of a ``gsdbatch`` table;
+    the calculator's user set “Measurement factor k_m (px)”, ``K_M`` on the command
+    line: the field becomes ``“<label>” (K_M)``, the label translated like the dialog's.
     """
     name = error.fields.get("name")
-    if name not in inspect.signature(core_gsd.compute).parameters:
+    parameter = algorithm.KEYWORD_PARAMETERS.get(name)
+    if parameter is None:
         return error
-    return InputError(error.template, **{**error.fields, "name": name.upper()})
+    return InputError(error.template, **{**error.fields,
+                                         "name": algorithm.parameter_named(parameter)})
 
 
 class GsdBatchAlgorithm(GeomaticsAlgorithm):

@@ -36,7 +36,9 @@ def test_run_gsd_bad_focal_length_fails(qgis_process, tmp_path):
     msg = qgis_process.run_expect_failure("geomatics:gsdcalculator", DISTANCE=5.88,
                                           SENSOR_WIDTH=6.123, IMAGE_WIDTH=3648,
                                           FOCAL_LENGTH=0, OUTPUT_HTML=html)
-    assert "FOCAL_LENGTH must be > 0 mm, got 0 mm" in msg   # the parameter, not focal_length
+    # the parameter as the dialog (label) and qgis_process (name) show it, not focal_length
+    assert ("\u201cFocal length, true (mm) \u2014 required with Custom\u201d (FOCAL_LENGTH) "
+            "must be > 0 mm, got 0 mm") in msg
     assert not html.exists()
 
 

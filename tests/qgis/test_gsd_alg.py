@@ -39,35 +39,68 @@ def test_camera_preset(qgis_processing):
 
 
 @pytest.mark.parametrize("params, name", [
-    ({**P100, "FOCAL_LENGTH": 0}, "FOCAL_LENGTH"),
-    ({**P100, "DISTANCE": 0}, "DISTANCE"),
-    ({**P100, "IMAGE_WIDTH": 0}, "IMAGE_WIDTH"),
-    ({**P100, "PYRAMID_LEVEL": 1.5}, "PYRAMID_LEVEL"),
-    ({**P100, "SUBSAMPLING_STEP": 0.5}, "SUBSAMPLING_STEP"),
-    ({**P100, "K_M": 0.0}, "K_M"),
-    ({**P100, "K_S": 0.0}, "K_S"),
+    ({**P100, "DISTANCE": 0}, "DISTANCE"),                     # QGIS's own minimum check
     ({"DISTANCE": 5.88, "SENSOR_WIDTH": 6.123, "IMAGE_WIDTH": 3648}, "FOCAL_LENGTH"),
 ])
 def test_bad_input_raises_processing_exception(qgis_processing, params, name):
-    """The calculator names its parameter (K_M), not the core keyword (k_m) that the
-    batch table's columns use."""
     from qgis.core import QgsProcessingException
     with pytest.raises(QgsProcessingException) as err:
         qgis_processing.run("geomatics:gsdcalculator", params)
     assert name in str(err.value) and name.lower() not in str(err.value)
 
 
-def test_bad_option_named_as_the_parameter_in_arabic():
-    from geomatics_toolbox.algorithms.gsd_calculator import named_as_parameter
-    from geomatics_toolbox.core.errors import FSI, PDI, InputError
-    from geomatics_toolbox.core.photogrammetry import gsd as core_gsd
-    with pytest.raises(InputError) as err:
-        core_gsd.compute(distance=5.88, sensor_width=6.123, image_width=3648,
-                         focal_length=4.6, k_m=0.0)
-    assert str(err.value) == "k_m must be > 0 px, got 0 px."     # gsdbatch: the column
-    named = named_as_parameter(err.value)
-    assert str(named) == "K_M must be > 0 px, got 0 px."
-    assert f"{FSI}K_M{PDI}" in named.message("ar")
+def _label(name):
+    from qgis.core import QgsApplication
+    alg = QgsApplication.processingRegistry().algorithmById("geomatics:gsdcalculator")
+    return alg.parameterDefinition(name).description()
+
+
+@pytest.mark.parametrize("params, name, rest", [
+    ({**P100, "FOCAL_LENGTH": 0}, "FOCAL_LENGTH", "must be > 0 mm, got 0 mm. Enter the true"),
+    ({**P100, "IMAGE_WIDTH": 0}, "IMAGE_WIDTH", "must be > 0 px, got 0 px."),
+    ({**P100, "SENSOR_WIDTH": 0}, "SENSOR_WIDTH", "must be > 0 mm, got 0 mm."),
+    ({**P100, "PYRAMID_LEVEL": 1.5}, "PYRAMID_LEVEL", "must be in (0, 1], got 1.5."),
+    ({**P100, "SUBSAMPLING_STEP": 0.5}, "SUBSAMPLING_STEP", "must be ≥ 1 px, got 0.5 px."),
+    ({**P100, "K_M": 0.0}, "K_M", "must be > 0 px, got 0 px."),
+    ({**P100, "K_S": 0.0}, "K_S", "must be > 0, got 0."),
+    ({**P100, "TARGET_GSD": 0.0}, "TARGET_GSD", "must be > 0 cm/px, got 0 cm/px."),
+    ({**P100, "IMAGE_HEIGHT": 0.0}, "IMAGE_HEIGHT", "must be > 0 px, got 0 px."),
+    # was "sensor_size must be > 0 mm": a core name the dialog never shows
+    ({**P100, "SENSOR_HEIGHT": 0.0}, "SENSOR_HEIGHT", "must be > 0 mm, got 0 mm."),
+    ({**P100, "STEREO_BASE": 0.0}, "STEREO_BASE", "must be > 0 m, got 0 m."),
+    ({**P100, "OBSERVED_SXYZ": 0.0}, "OBSERVED_SXYZ", "must be > 0 mm, got 0 mm."),
+])
+def test_bad_option_named_as_the_dialog_and_qgis_process_show_it(qgis_processing, params,
+                                                                 name, rest):
+    """The calculator names the parameter by its dialog label and its qgis_process name
+    (was the core keyword upper-cased, K_M — and 'sensor_size' for SENSOR_HEIGHT)."""
+    from qgis.core import QgsProcessingException
+
+    from geomatics_toolbox.algorithms.gsd_calculator import GsdCalculatorAlgorithm
+    with pytest.raises(QgsProcessingException) as err:
+        qgis_processing.run("geomatics:gsdcalculator", params)
+    text = str(err.value)
+    assert text.startswith(f"\u201c{_label(name)}\u201d ({name}) {rest}"), text
+    outside = text.replace(_label(name), "")
+    assert not [k for k in GsdCalculatorAlgorithm.KEYWORD_PARAMETERS if k in outside]
+
+
+def test_bad_option_named_as_the_parameter_in_arabic(qgis_processing, arabic_ui):
+    """Under an Arabic interface: the Arabic dialog label (the translation of the
+    parameter's label) and the qgis_process name, bidi-isolated."""
+    import json
+    from pathlib import Path
+
+    from qgis.core import QgsProcessingException
+
+    from geomatics_toolbox.core.errors import FSI, PDI
+    strings = Path(__file__).resolve().parents[2] / "i18n" / "strings" / "base.json"
+    label = json.loads(strings.read_text(encoding="utf-8"))["Sensor height (mm)"]["ar"]
+    with pytest.raises(QgsProcessingException) as err:
+        qgis_processing.run("geomatics:gsdcalculator", {**P100, "SENSOR_HEIGHT": 0.0})
+    assert str(err.value) == (
+        f"يجب أن يكون {FSI}«{FSI}{label}{PDI}» ({FSI}SENSOR_HEIGHT{PDI}){PDI} {FSI}> 0{PDI}"
+        f"{FSI} mm{PDI}، وأُعطي {FSI}0{PDI}{FSI} mm{PDI}.{FSI}{PDI}")
 
 
 def test_negative_focal_length_refused_by_qgis(qgis_processing):
