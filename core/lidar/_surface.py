@@ -28,6 +28,7 @@ import numpy as np
 from scipy import ndimage
 from scipy.spatial import cKDTree
 
+from . import _lattice_knn as K  # noqa: N812
 from . import _raster as R  # noqa: N812
 
 __all__ = ["grow_ground", "plane_fit", "plane_fit_where", "plane_gradient", "tangent_fill"]
@@ -223,57 +224,6 @@ def _plane_fit(z, valid, radius: int):
     return rms, centre, gx, gy
 
 
-#: Offsets of the query point (cells, powers of two: exact in float64) that order
-#: equidistant lattice cells by row offset, then column offset (see :func:`_knn`).
-_TIE_ROW = 2.0 ** -14
-_TIE_COL = 2.0 ** -28
-
-
-def _knn(tree, q, k: int, lattice):
-    """Find the ``k`` nearest lattice cells of every query cell, ties broken by offset.
-
-    On an integer lattice many cells are equidistant, and a KD-tree returns the tied
-    ones in tree order, which depends on the raster's extent (a catalog chunk and the
-    merged cloud would pick different cells). Here the query point is moved by
-    ``(-2**-28, -2**-14)`` cells (column, row): its squared distance to a cell at
-    offset ``(dc, dr)`` is ``d² + 2**-27 dc + 2**-13 dr`` (+ a constant), so the
-    tree itself returns the cells ordered by (squared distance, row offset, column
-    offset) - exactly so up to 4,096 cells away (beyond, still a function of the
-    offsets only). Every difference ``cell - query`` is exact in float64, hence the
-    choice and its order depend only on the cells around the query, not on the extent.
-
-    Parameters
-    ----------
-    tree : cKDTree
-        Tree of the lattice cells ``lattice`` (``(col, row)`` integers).
-    q : ndarray of int, shape (m, 2)
-        Query cells ``(col, row)``.
-    k : int
-        Neighbours kept (at most the number of lattice cells).
-    lattice : ndarray of float, shape (n, 2)
-        The cells of the tree (integer values).
-
-    Returns
-    -------
-    tuple of ndarray
-        ``(d2, dc, dr, j)`` of shape (m, k): squared distance (cells²), column and row
-        offset of the neighbour from the query cell, and its index in ``lattice``.
-    """
-    q = q.astype(np.float64)
-    qf = q.copy()
-    qf[:, 0] -= _TIE_COL
-    qf[:, 1] -= _TIE_ROW
-    bound = 2.0 * np.sqrt(k + 1.0)           # most hole cells have their border close by
-    d, j = tree.query(qf, k=k, distance_upper_bound=bound)
-    d, j = d.reshape(-1, k), j.reshape(-1, k)
-    far = np.isinf(d[:, -1])
-    if far.any():
-        j[far] = tree.query(qf[far], k=k)[1].reshape(-1, k)
-    dc = lattice[j, 0] - q[:, :1]            # integers held exactly in float64
-    dr = lattice[j, 1] - q[:, 1:]
-    return dc * dc + dr * dr, dc, dr, j
-
-
 def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12,
                  reach: float = 10.0, need=None, cache=None, overwrite: bool = False):
     """Fill invalid cells with the weighted tangent planes of the hole borders.
@@ -337,14 +287,12 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     if hr.size:
         bz = z[rr, cc]
         bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
-        lattice = np.empty((rr.size, 2))             # float64: the tree keeps it, no copy
-        lattice[:, 0] = cc
-        lattice[:, 1] = rr
-        tree = cKDTree(lattice)
+        scan = K.scan_lattice(ring)
     del rr, cc, ring
+    trees = []                  # the KD-tree, built when a hole cell is deeper than the scan
     for s in range(0, hr.size, BATCH):
         r, c = hr[s:s + BATCH], hc[s:s + BATCH]
-        d2, dc, dr, j = _knn(tree, np.column_stack((c, r)), k, lattice)
+        d2, dc, dr, j = K.nearest(scan, r, c, k, trees)
         if d2k is not None:
             last = d2[:, -1]
             d2k[r, c] = np.where(last < _NONE, last, _NONE)     # too far: not kept

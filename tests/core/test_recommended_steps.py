@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scipy import ndimage
 
 from geomatics_toolbox.core.errors import InputError
 from geomatics_toolbox.core.lidar import _raster as R  # noqa: N812
@@ -85,20 +86,50 @@ def test_hole_fill_neighbours_do_not_depend_on_tree_order():
     only (review G2: a KD-tree's own tie order follows the raster's extent)."""
     from scipy.spatial import cKDTree
 
-    from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
+    from geomatics_toolbox.core.lidar import _lattice_knn as K  # noqa: N812
     rng = np.random.default_rng(3)
     lat = np.unique(rng.integers(0, 40, size=(300, 2)), axis=0)
     q = rng.integers(0, 40, size=(200, 2))
-    ref = S._knn(cKDTree(lat), q, 12, lat)
+    ref = K._knn(cKDTree(lat), q, 12, lat)
     for seed in range(3):
         perm = np.random.default_rng(seed).permutation(len(lat))
-        got = S._knn(cKDTree(lat[perm]), q, 12, lat[perm])
+        got = K._knn(cKDTree(lat[perm]), q, 12, lat[perm])
         for a, b in zip(ref[:3], got[:3]):               # d2, col and row offsets
             np.testing.assert_array_equal(a, b)
         np.testing.assert_array_equal(lat[perm][got[3]], lat[ref[3]])
     d2 = ref[0]
     brute = np.sort(((lat[None, :, :] - q[:, None, :]) ** 2).sum(-1), axis=1)[:, :12]
     np.testing.assert_array_equal(d2, brute)             # the 12 nearest distances
+
+
+@pytest.mark.parametrize("k", [1, 5, 12, 40])
+def test_lattice_scan_finds_the_kd_trees_neighbours(k):
+    """knn_scan visits the offsets in the tree's order: same cells, same order, same
+    indices as the KD-tree search (_knn) for every hole cell it completes, and the deep
+    hole cells it leaves (beyond SCAN_D2) are those whose k-th border is farther."""
+    from scipy.spatial import cKDTree
+
+    from geomatics_toolbox.core.lidar import _lattice_knn as K  # noqa: N812
+    rng = np.random.default_rng(k)
+    valid = rng.random((150, 170)) < 0.4
+    valid[20:110, 30:140] = False                        # cells up to 45 from a border
+    valid[0:3, :] = True                                 # borders on the raster's edge
+    ring = valid & ndimage.binary_dilation(~valid, structure=np.ones((3, 3), bool))
+    rr, cc = np.nonzero(ring)
+    lat = np.column_stack((cc, rr)).astype(np.float64)
+    hr, hc = np.nonzero(~valid)
+    ref = K._knn(cKDTree(lat), np.column_stack((hc, hr)), k, lat)
+    done, *got = K.knn_scan(K.scan_lattice(ring), hr, hc, k)
+    assert 0 < np.count_nonzero(~done) < done.size      # both paths are exercised
+    for a, b in zip(ref, got):
+        assert a.dtype == b.dtype
+        np.testing.assert_array_equal(a[done], b)
+    assert (ref[0][~done, -1] > K.SCAN_D2).all()
+    trees = []
+    both = K.nearest(K.scan_lattice(ring), hr, hc, k, trees)
+    assert len(trees) == 2                               # the tree built for the deep cells
+    for a, b in zip(ref, both):
+        np.testing.assert_array_equal(a, b)
 
 
 def test_fill_and_box_mean_of_a_crop_equal_the_full_raster_inside():

@@ -1,0 +1,184 @@
+"""Nearest lattice cells of hole cells by scanning offsets (numpy only, private).
+
+The hole fill of :mod:`._surface` needs, for every hole cell, its ``k`` nearest border
+cells ordered by (squared distance, row offset, column offset) - the order in which its
+KD-tree returns them (:func:`._surface._knn`). Most hole cells have their border a few
+cells away, so instead of a tree the offsets are visited in that order, nearest first,
+and the first ``k`` that land on a border cell are taken: the same cells in the same
+order, by construction. Hole cells that do not find ``k`` border cells within
+:data:`SCAN_D2` are left to the tree.
+"""
+from __future__ import annotations
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+__all__ = ["SCAN_D2", "knn_scan", "nearest", "ring_cells", "scan_lattice"]
+
+#: Largest squared offset (cells²) visited by :func:`knn_scan` (24 cells: a hole cell
+#: deeper inside a hole is searched in the KD-tree).
+SCAN_D2 = 24 * 24
+#: Offsets tested per step (the holes done are dropped between steps).
+_STEP = 24
+
+
+def _offsets(d2max: int):
+    """Lattice offsets ``(dc, dr, d²)`` with ``0 < d² <= d2max``, by (d², dr, dc)."""
+    m = int(np.sqrt(d2max))
+    dr, dc = np.mgrid[-m:m + 1, -m:m + 1]
+    d2 = dr * dr + dc * dc
+    keep = (d2 > 0) & (d2 <= d2max)
+    dr, dc, d2 = dr[keep], dc[keep], d2[keep]
+    o = np.lexsort((dc, dr, d2))
+    return dc[o], dr[o], d2[o]
+
+
+_OFFSETS = _offsets(SCAN_D2)
+
+
+def scan_lattice(ring):
+    """Prepare ``ring`` (bool raster of the cells searched) for :func:`knn_scan`.
+
+    Returns the raster padded by the scan's reach holding each ring cell's index in
+    ``np.nonzero(ring)`` order (-1 elsewhere), the padding and the raster's shape.
+    """
+    rows, cols = ring.shape
+    pad = int(np.sqrt(SCAN_D2))
+    index = np.full((rows + 2 * pad, cols + 2 * pad), -1, np.int32 if ring.size < 2 ** 31
+                    else np.int64)
+    inner = index[pad:pad + rows, pad:pad + cols]
+    inner[ring] = np.arange(np.count_nonzero(ring), dtype=index.dtype)
+    return index, pad, ring.shape
+
+
+def ring_cells(lattice):
+    """Rows and columns of the ring cells of a :func:`scan_lattice` (``np.nonzero`` order)."""
+    index, pad, (rows, cols) = lattice
+    return np.nonzero(index[pad:pad + rows, pad:pad + cols] >= 0)
+
+
+def knn_scan(lattice, r, c, k: int):
+    """Find the ``k`` nearest cells of ``ring`` from each cell ``(r, c)``, ties by offset.
+
+    Parameters
+    ----------
+    lattice : tuple
+        :func:`scan_lattice` of the bool raster ``ring`` of the cells searched.
+    r, c : ndarray of int
+        Rows and columns of the query cells (not in ``ring``).
+    k : int
+        Neighbours wanted.
+
+    Returns
+    -------
+    tuple
+        ``(done, d2, dc, dr, j)``: ``done`` flags the query cells whose ``k`` nearest
+        lie within :data:`SCAN_D2`; for those (in order) the squared distance, column
+        and row offsets (float64, shape (m, k)) ordered by (d², dr, dc), and ``j`` the
+        index of each neighbour in ``np.nonzero(ring)`` order.
+    """
+    index, pad, (rows, cols) = lattice
+    odc, odr, od2 = _OFFSETS
+    width = cols + 2 * pad
+    flat = index.ravel()
+    delta = odr.astype(np.int64) * width + odc
+    m = r.size
+    pick = np.zeros((k, m), np.int32)                # offset index of each neighbour
+    found = np.zeros(m, np.int32)
+    act = np.arange(m)
+    base = (r.astype(np.int64) + pad) * width + (c.astype(np.int64) + pad)
+    for o0 in range(0, delta.size, _STEP):
+        hit = flat[delta[o0:o0 + _STEP, None] + base] >= 0   # (offsets, active), scan order
+        pos = np.cumsum(hit, axis=0, dtype=np.int32)
+        pos += found[act] - 1                        # slot of each hit
+        oi, hi = np.nonzero(hit & (pos < k))
+        pick[pos[oi, hi], act[hi]] = o0 + oi
+        found[act] = np.minimum(pos[-1] + 1, k)
+        more = found[act] < k
+        act, base = act[more], base[more]
+        if act.size == 0:
+            break
+    pick = pick.T
+    done = found == k
+    pick = pick[done]
+    dc = odc[pick].astype(np.float64)
+    dr = odr[pick].astype(np.float64)
+    d2 = od2[pick].astype(np.float64)
+    at = delta[pick]
+    at += ((r[done].astype(np.int64) + pad) * width + (c[done].astype(np.int64) + pad))[:, None]
+    j = flat[at].astype(np.int64)
+    return done, d2, dc, dr, j
+
+
+#: Offsets of the query point (cells, powers of two: exact in float64) that order
+#: equidistant lattice cells by row offset, then column offset (see :func:`_knn`).
+_TIE_ROW = 2.0 ** -14
+_TIE_COL = 2.0 ** -28
+
+
+def _knn(tree, q, k: int, lattice):
+    """Find the ``k`` nearest lattice cells of every query cell, ties broken by offset.
+
+    On an integer lattice many cells are equidistant, and a KD-tree returns the tied
+    ones in tree order, which depends on the raster's extent (a catalog chunk and the
+    merged cloud would pick different cells). Here the query point is moved by
+    ``(-2**-28, -2**-14)`` cells (column, row): its squared distance to a cell at
+    offset ``(dc, dr)`` is ``d² + 2**-27 dc + 2**-13 dr`` (+ a constant), so the
+    tree itself returns the cells ordered by (squared distance, row offset, column
+    offset) - exactly so up to 4,096 cells away (beyond, still a function of the
+    offsets only). Every difference ``cell - query`` is exact in float64, hence the
+    choice and its order depend only on the cells around the query, not on the extent.
+
+    Parameters
+    ----------
+    tree : cKDTree
+        Tree of the lattice cells ``lattice`` (``(col, row)`` integers).
+    q : ndarray of int, shape (m, 2)
+        Query cells ``(col, row)``.
+    k : int
+        Neighbours kept (at most the number of lattice cells).
+    lattice : ndarray of float, shape (n, 2)
+        The cells of the tree (integer values).
+
+    Returns
+    -------
+    tuple of ndarray
+        ``(d2, dc, dr, j)`` of shape (m, k): squared distance (cells²), column and row
+        offset of the neighbour from the query cell, and its index in ``lattice``.
+    """
+    q = q.astype(np.float64)
+    qf = q.copy()
+    qf[:, 0] -= _TIE_COL
+    qf[:, 1] -= _TIE_ROW
+    bound = 2.0 * np.sqrt(k + 1.0)           # most hole cells have their border close by
+    d, j = tree.query(qf, k=k, distance_upper_bound=bound)
+    d, j = d.reshape(-1, k), j.reshape(-1, k)
+    far = np.isinf(d[:, -1])
+    if far.any():
+        j[far] = tree.query(qf[far], k=k)[1].reshape(-1, k)
+    dc = lattice[j, 0] - q[:, :1]            # integers held exactly in float64
+    dr = lattice[j, 1] - q[:, 1:]
+    return dc * dc + dr * dr, dc, dr, j
+
+
+def nearest(scan, r, c, k: int, trees: list):
+    """Return :func:`_knn`'s ``(d2, dc, dr, j)`` of the cells ``(r, c)``.
+
+    Scanned on the lattice (:func:`knn_scan`: the same cells in the same order); the
+    KD-tree (built once into ``trees``) searches the cells whose ``k`` nearest lie
+    farther.
+    """
+    done, *near = knn_scan(scan, r, c, k)
+    if done.all():
+        return near
+    if not trees:
+        rr, cc = ring_cells(scan)
+        lattice = np.empty((rr.size, 2))             # float64: the tree keeps it, no copy
+        lattice[:, 0], lattice[:, 1] = cc, rr
+        trees += [cKDTree(lattice), lattice]
+    far = ~done
+    out = [np.empty((r.size, k), a.dtype) for a in near]
+    for o, a, b in zip(out, near, _knn(trees[0], np.column_stack((c[far], r[far])), k,
+                                       trees[1])):
+        o[done], o[far] = a, b
+    return out
