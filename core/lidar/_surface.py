@@ -275,8 +275,7 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         out[~valid] = np.nan
     else:
         out = np.where(valid, z, np.nan)
-    hr, hc = (v.astype(_index_type(z.shape)) for v in   # half the memory of int64 (same cells)
-              np.nonzero(~valid if need is None else ~valid & need))
+    hr, hc = _nonzero(~valid if need is None else ~valid & need)
     key = (z.shape, k, int(radius), float(cell), float(reach))
     d2k = np.full(z.shape, _NONE, np.uint16) if cache is not None else None
     same = _unchanged(prev, key, z, valid, hr, hc, radius)
@@ -284,6 +283,7 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         out[hr[same], hc[same]] = prev["out"][hr[same], hc[same]]
         d2k[hr[same], hc[same]] = prev["d2k"][hr[same], hc[same]]
         hr, hc = hr[~same], hc[~same]
+    prev = None                                      # the previous fill's rasters: no longer read
     if hr.size:
         bz = z[rr, cc]
         bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
@@ -318,6 +318,26 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
 def _index_type(shape):
     """int32 when every row and column index of a raster of ``shape`` fits, else int64."""
     return np.int32 if max(shape) < 2 ** 31 else np.int64
+
+
+def _nonzero(mask):
+    """``np.nonzero(mask)`` of a raster in :func:`_index_type`, band by band.
+
+    The same cells in the same (row-major) order, without the int64 index arrays of
+    the whole raster at once (at low density most cells are holes: millions of them).
+    """
+    it = _index_type(mask.shape)
+    n = int(np.count_nonzero(mask))
+    rr, cc = np.empty(n, it), np.empty(n, it)
+    step = max(1, (1 << 18) // max(1, mask.shape[1]))
+    k = 0
+    for b0 in range(0, mask.shape[0], step):
+        r, c = np.nonzero(mask[b0:b0 + step])
+        rr[k:k + r.size] = r
+        rr[k:k + r.size] += b0
+        cc[k:k + r.size] = c
+        k += r.size
+    return rr, cc
 
 
 #: Share of changed cells above which :func:`_unchanged` keeps nothing (after the

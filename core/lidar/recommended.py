@@ -317,13 +317,14 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     rep(0.0)
     opt = derive(x, y, opt)
     pc = R.PointCells(x, y, R.Grid.around(x, y, opt.cell, origin=origin))
-    zmin = pc.cell_min(z)
     rep(0.3)
     need = pc.read_mask()
     if info is not None:
         info.update(options=opt, n=int(x.size), grid=pc.grid)
-    dtm = surface(zmin, pc.grid, opt, rep, need=need, info=info)
-    del zmin
+    # the minimum raster is rebuilt when the growing step reads it again: one raster
+    # less through the openings (the same values: the same points, the same minima)
+    dtm = surface(pc.cell_min(z), pc.grid, opt, rep, need=need, info=info,
+                  remake=lambda: pc.cell_min(z))
     rep(0.8)
     last = {}             # the refine passes change few cells: few points relabelled
     cls = label_points(z, dtm, pc, opt, last)
@@ -338,7 +339,7 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     return cls
 
 
-def surface(zmin, grid, opt, rep, need=None, info=None, cache=None):
+def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None):
     """Provisional bare-earth raster from the minimum surface (steps 2-6).
 
     Object, low and empty cells are filled by :func:`fill_holes`.
@@ -359,6 +360,10 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None):
         Receives what was derived (``lows``, ``slope``, ``objects``).
     cache : dict, optional
         Hole-fill neighbour cache shared with later fills (:func:`fill_holes`).
+    remake : callable, optional
+        ``remake()`` returns ``zmin`` again: ``zmin`` is then used as scratch space and
+        dropped through the openings (one raster less held), and the caller must hold
+        no other reference to it.
 
     Returns
     -------
@@ -369,15 +374,19 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None):
     lows = L.low_cells(zmin, grid.cell, step=opt.low_step, window=opt.low_window,
                        share=opt.low_share, anchor=grid.anchor)
     low = lows.low
-    zf = R.fill(zmin, ~(low | empty), grid.anchor)
+    zf = R.fill(zmin, ~(low | empty), grid.anchor, overwrite=remake is not None)
+    if remake is not None:
+        zmin = None
     slope = opt.slope if opt.slope is not None else terrain_slope(zf, grid, opt)
     if opt.trend_window > 0 and opt.trend_smooth > 0:
         trend_surface(zf, grid, opt, subtract=True)  # zf is the fill's own array
     obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep, overwrite=True)
     del zf
     if np.ndim(slope):                               # the report reads min / median / max
-        slope = np.array((slope.min(), np.median(slope), slope.max())) if info is not None \
-            else None
+        slope = None if info is None else np.array(  # median: partitions in place, no copy
+            (slope.min(), np.median(slope, overwrite_input=True), slope.max()))
+    if zmin is None:
+        zmin = remake()
     if opt.grow and opt.grow_iters > 0:
         skip = low | empty
         obj = grow_ground(zmin, obj, skip,
@@ -388,7 +397,7 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None):
     bad = obj | low | empty
     if bad.all():
         bad = low | empty
-    return fill_holes(zmin, ~bad, grid, opt, need, cache)
+    return fill_holes(zmin, ~bad, grid, opt, need, cache, overwrite=remake is not None)
 
 
 def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False):
@@ -495,7 +504,6 @@ def label_points(z, dtm, pc, opt, last=None):
     ndarray of uint8
         2 ground, 1 object, 7 low noise.
     """
-    slope = R.slope(dtm, pc.grid.cell)
     if last:
         moved = R.changed(last["dtm"], dtm)
         pts = pc.reading(moved, ndimage.binary_dilation(moved, structure=_CROSS))
@@ -505,11 +513,15 @@ def label_points(z, dtm, pc, opt, last=None):
         pts = None
         cls = np.empty(z.size, dtype=np.uint8)
     n = z.size if pts is None else pts.size
+    # the slope raster where there are fewer cells than points to label, else the slope
+    # at their cells only (no full-size raster at low density): the same values
+    slope = R.slope(dtm, pc.grid.cell) if n >= dtm.size else None
     for s in range(0, n, R.CHUNK):                   # in blocks: same values, in cache
         p = slice(s, s + R.CHUNK) if pts is None else pts[s:s + R.CHUNK]
         dz = pc.bilinear(dtm, p)
         np.subtract(z[p], dz, out=dz)
-        tol = pc.nearest(slope, p)
+        tol = pc.nearest(slope, p) if slope is not None else \
+            R.slope_at(dtm, pc.grid.cell, pc.idx[p])
         tol *= opt.scaler
         tol += opt.threshold
         c = np.full(dz.size, OBJECT, dtype=np.uint8)

@@ -153,3 +153,36 @@ def test_in_place_trend_opening_and_closing_equal_the_plain_expressions(shape):
     np.testing.assert_array_equal(got_clo, clo)
     np.testing.assert_array_equal(got_pits, pits)
     assert pits.any() or min(shape) < 8
+
+
+@pytest.mark.parametrize("shape", SHAPES)
+def test_slope_at_cells_and_banded_hole_indices_equal_the_whole_raster(shape):
+    """label_points' slope at the points' cells, tangent_fill's hole indices by bands."""
+    z, valid = _terrain(shape, 9)
+    z[valid & (np.arange(z.size).reshape(shape) % 11 == 0)] = np.nan   # unfilled cells
+    cells = np.random.default_rng(10).integers(0, z.size, 500).astype(np.int32)
+    for cell in (1.0, 0.3):
+        np.testing.assert_array_equal(R.slope_at(z, cell, cells),
+                                      R.slope(z, cell).ravel()[cells])
+        np.testing.assert_array_equal(R.slope_at(z, cell, np.arange(z.size)),
+                                      R.slope(z, cell).ravel())
+    hr, hc = S._nonzero(~valid)
+    want = np.nonzero(~valid)
+    assert hr.dtype == np.int32 and hc.dtype == np.int32
+    np.testing.assert_array_equal(hr, want[0])
+    np.testing.assert_array_equal(hc, want[1])
+
+
+@pytest.mark.parametrize("shape", SHAPES[2:])
+def test_fill_in_place_and_surface_with_a_rebuilt_minimum_equal_the_plain_ones(shape):
+    z, valid = _terrain(shape, 11, holes=0.5)
+    want = R.fill(z, valid, (3, 5))
+    own = z.copy()
+    np.testing.assert_array_equal(R.fill(own, valid, (3, 5), overwrite=True), want)
+    zmin = np.where(valid, z, np.nan)
+    zmin[1::9, 2::7] -= 12.0
+    grid = R.Grid(0.0, 0.0, 1.0, shape[0], shape[1])
+    opt = rec.RecommendedOptions(cell=1.0, threshold=0.3)
+    ref = rec.surface(zmin.copy(), grid, opt, lambda f: None)
+    got = rec.surface(zmin.copy(), grid, opt, lambda f: None, remake=zmin.copy)
+    np.testing.assert_array_equal(got, ref)
