@@ -116,7 +116,10 @@ class Derived:
     low_cells: int = 0
     canopy_share: float = 0.0
     canopy_scale: float = 0.0
-    largest_object: float = 0.0
+    #: the object raster and its cell (or a fixed width, m): the widest object is measured
+    #: when first asked, so a run without a report does not label the objects (0.08 s CPU
+    #: on 4 M points)
+    largest_object_of: object = field(default=0.0, repr=False, compare=False)
     ground_share: float = 0.0
     water_input: int = 0
     water_candidates: int = 0
@@ -124,6 +127,13 @@ class Derived:
     #: the filtered ``(x, y)`` (or a fixed density): the density is counted when first
     #: asked, so a run without a report does not pay for it (0.4 s CPU on 4 M points)
     density_of: object = field(default=None, repr=False, compare=False)
+
+    @property
+    def largest_object(self) -> float:
+        """Widest side (m) of the connected object regions' bounding boxes."""
+        if isinstance(self.largest_object_of, tuple):
+            self.largest_object_of = _largest_object(*self.largest_object_of)
+        return float(self.largest_object_of or 0.0)
 
     @property
     def density(self) -> float:
@@ -213,7 +223,7 @@ def derived(info: dict, classes: np.ndarray, water_input: int, water_cand: int) 
         trend_window=opt.trend_window if opt.trend_smooth > 0 else 0.0,
         pits=lows.pits, low_cells=int(np.count_nonzero(lows.low)),
         canopy_share=lows.canopy_share, canopy_scale=lows.canopy_scale,
-        largest_object=_largest_object(info.get("objects"), cell),
+        largest_object_of=(info.get("objects"), cell),
         ground_share=float(np.count_nonzero(classes == 2)) / n,
         water_input=int(water_input), water_candidates=int(water_cand),
         counts={int(k): int(c) for k, c in zip(vals, cnt)})

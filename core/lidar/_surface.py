@@ -54,18 +54,24 @@ def _window_planes(z, valid, radius: int, *, spread: bool = False):
     zc = 0.0
     zw = np.where(valid, z - zc, 0.0)
 
-    def corr(a, kx, ky):
-        a = ndimage.correlate1d(a, kx, axis=1, mode="constant")
-        return ndimage.correlate1d(a, ky, axis=0, mode="constant")
+    rows = {}                  # each (raster, kernel) along the rows is computed once
 
+    def corr(a, kx, ky):
+        key = (id(a), id(kx))
+        if key not in rows:
+            rows[key] = ndimage.correlate1d(a, kx, axis=1, mode="constant")
+        return ndimage.correlate1d(rows[key], ky, axis=0, mode="constant")
+
+    off2 = off * off
     n = corr(w, box, box)
     with np.errstate(invalid="ignore", divide="ignore"):
         mx, my, mz = corr(w, off, box) / n, corr(w, box, off) / n, corr(zw, box, box) / n
-        cxx = corr(w, off * off, box) / n - mx * mx
-        cyy = corr(w, box, off * off) / n - my * my
+        cxx = corr(w, off2, box) / n - mx * mx
+        cyy = corr(w, box, off2) / n - my * my
         cxy = corr(w, off, off) / n - mx * my
         cxz = corr(zw, off, box) / n - mx * mz
         cyz = corr(zw, box, off) / n - my * mz
+        rows.clear()
         out = dict(n=n, mx=mx, my=my, mz=mz, zc=zc)
         if spread:
             out.update(czz=corr(zw * zw, box, box) / n - mz * mz, cxz=cxz, cyz=cyz)
@@ -142,6 +148,48 @@ def gradient_at(z, valid, radius: int, cell: float, rr, cc):
         bx, by = plane_gradient(z[lo:hi], valid[lo:hi], r, cell)
         gx[i0:i1] = bx[rr[i0:i1] - lo, cc[i0:i1]]
         gy[i0:i1] = by[rr[i0:i1] - lo, cc[i0:i1]]
+    return gx, gy
+
+
+#: Cells per strip of :func:`gradient_of` (bounds its temporaries).
+STRIP = 2048
+
+
+def gradient_of(z, valid, radius: int, cell: float, rr, cc):
+    """:func:`plane_gradient` at a few cells ``(rr, cc)``, from their own windows only.
+
+    The ``(2r+1)²`` windows of :data:`STRIP` cells are laid side by side in one strip
+    ``2r+1`` rows high, cells outside the raster invalid (as the constant mode of the
+    whole raster has them): the centre of each window sees exactly its own cells in the
+    same order, so the values are :func:`plane_gradient`'s bit for bit, at a cost that
+    follows the cells asked for rather than the raster.
+
+    Parameters
+    ----------
+    z, valid, radius, cell
+        As for :func:`plane_gradient`.
+    rr, cc : ndarray of int
+        Rows and columns of the cells wanted (any order).
+
+    Returns
+    -------
+    tuple of ndarray
+        ``(gx, gy)`` at those cells.
+    """
+    r = int(radius)
+    w = 2 * r + 1
+    rows, cols = z.shape
+    off = np.arange(-r, r + 1)
+    gx, gy = np.empty(rr.size), np.empty(rr.size)
+    for s in range(0, rr.size, STRIP):
+        wr = rr[s:s + STRIP, None, None] + off[None, :, None]
+        wc = cc[s:s + STRIP, None, None] + off[None, None, :]
+        ok = (wr >= 0) & (wr < rows) & (wc >= 0) & (wc < cols)
+        wr, wc = np.clip(wr, 0, rows - 1), np.clip(wc, 0, cols - 1)
+        ok &= valid[wr, wc]
+        strip = [a.transpose(1, 0, 2).reshape(w, -1) for a in (np.where(ok, z[wr, wc], 0.0), ok)]
+        bx, by = plane_gradient(strip[0], strip[1], r, cell)
+        gx[s:s + STRIP], gy[s:s + STRIP] = bx[r, r::w], by[r, r::w]
     return gx, gy
 
 
@@ -284,15 +332,22 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         d2k[hr[same], hc[same]] = prev["d2k"][hr[same], hc[same]]
         hr, hc = hr[~same], hc[~same]
     prev = None                                      # the previous fill's rasters: no longer read
+    trees, near = [], None      # the KD-tree, built when a hole cell is deeper than the scan
     if hr.size:
         bz = z[rr, cc]
-        bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
         scan = K.scan_lattice(ring)
+        if hr.size <= BATCH:    # few holes (refine passes): gradients only where read
+            near = K.nearest(scan, hr, hc, k, trees)
+            used = np.unique(near[3])
+        if near is not None and used.size * (2 * radius + 1) ** 2 < z.size // 2:
+            bgx, bgy = np.zeros(rr.size), np.zeros(rr.size)
+            bgx[used], bgy[used] = gradient_of(z, valid, radius, cell, rr[used], cc[used])
+        else:
+            bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
     del rr, cc, ring
-    trees = []                  # the KD-tree, built when a hole cell is deeper than the scan
     for s in range(0, hr.size, BATCH):
         r, c = hr[s:s + BATCH], hc[s:s + BATCH]
-        d2, dc, dr, j = K.nearest(scan, r, c, k, trees)
+        d2, dc, dr, j = near if near is not None else K.nearest(scan, r, c, k, trees)
         if d2k is not None:
             last = d2[:, -1]
             d2k[r, c] = np.where(last < _NONE, last, _NONE)     # too far: not kept

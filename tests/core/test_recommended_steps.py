@@ -218,3 +218,27 @@ def test_plane_fit_by_bands_equals_the_whole_raster():
                 np.testing.assert_array_equal(a, b)
     finally:
         S.BAND = band
+
+
+def test_gradient_of_few_cells_equals_the_whole_raster():
+    """gradient_of (the cells' own windows side by side in a strip) gives plane_gradient's
+    values bit for bit, at the raster's edges and corners, next to NaN holes, for any
+    strip length and window radius; the window planes reuse their row passes exactly."""
+    from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
+    rng = np.random.default_rng(4)
+    strip = S.STRIP
+    try:
+        for r in (1, 2, 3, 5):
+            z = 300.0 + rng.normal(0, 1, (90, 120)).cumsum(axis=1) * 0.1
+            z[rng.random(z.shape) < 0.3] = np.nan
+            valid = ~np.isnan(z) & (rng.random(z.shape) < 0.8)
+            gx, gy = S.plane_gradient(z, valid, r, 1.5)
+            rr, cc = np.nonzero(rng.random(z.shape) < 0.3)
+            rr, cc = np.r_[rr, 0, 0, 89, 89], np.r_[cc, 0, 119, 0, 119]
+            for S.STRIP in (1, 37, 4096):
+                bx, by = S.gradient_of(z, valid, r, 1.5, rr, cc)
+                np.testing.assert_array_equal(bx, gx[rr, cc])
+                np.testing.assert_array_equal(by, gy[rr, cc])
+    finally:
+        S.STRIP = strip
+
