@@ -8,16 +8,19 @@ reads: counter-clockwise facets with their neighbours, unit normals, vertices an
 longest edges, and a point location that walks the triangulation from a given
 start facet (all queries at once, in numpy). The walk replaces scipy's
 ``find_simplex``, whose first call computes a barycentric transform for every
-facet — as long as the triangulation itself — on every rebuild.
+facet — as long as the triangulation itself — on every rebuild. :func:`insert` adds
+points to a TIN by re-triangulating (Qhull) only the facets whose circumcircle holds one
+of them (Bowyer-Watson's cavity) and splicing the new facets in.
 """
 from __future__ import annotations
 
 import numpy as np
-from scipy.spatial import Delaunay, cKDTree
+from scipy.spatial import Delaunay, QhullError, cKDTree
 
 from ..terrain.grid import pick_per_cell
 
-__all__ = ["Tin", "cell_index", "lowest_per_cell", "dedupe_xy", "cKDTree", "one_layer"]
+__all__ = ["Tin", "cell_index", "lowest_per_cell", "dedupe_xy", "cKDTree", "one_layer", "insert",
+           "jitter"]
 
 #: Points per block of the vectorised per-point steps (bounds temporary memory).
 CHUNK = 1 << 17
@@ -67,6 +70,37 @@ def dedupe_xy(x, y, z, resolution: float = 0.01):
     return lowest_per_cell(idx, z)
 
 
+#: Amplitude (m) of :func:`jitter`.
+JITTER = 1e-4
+
+
+def jitter(x, y, z):
+    """Return a tiny xy offset of every point, a fixed function of its world position.
+
+    Points on a centimetre grid are often exactly co-circular, on a facet's edge or
+    right above a TIN vertex; Qhull's triangulation of such ties, and the facet such a
+    point is located in, would depend on the other points (the extent of the cloud,
+    the order Qhull meets them). Offsets of at most ``JITTER`` / 2 hashed from the
+    position (x, y, z) rounded to a millimetre break every tie the same way in a
+    catalog chunk and in the whole cloud.
+    """
+    kx, ky, kz = (np.round(np.asarray(v) * 1000.0).astype(np.int64).view(np.uint64)
+                  for v in (x, y, z))
+    with np.errstate(over="ignore"):
+        h = _mix(kx * np.uint64(0x9E3779B97F4A7C15) ^ _mix(ky ^ _mix(kz)))
+        u = (h >> np.uint64(11)).astype(np.float64) / float(1 << 53) - 0.5
+        v = (_mix(h) >> np.uint64(11)).astype(np.float64) / float(1 << 53) - 0.5
+    return JITTER * u, JITTER * v
+
+
+def _mix(h):
+    """SplitMix64 finaliser of uint64 ``h`` (wrapping)."""
+    with np.errstate(over="ignore"):
+        h = (h ^ (h >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
+        h = (h ^ (h >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
+        return h ^ (h >> np.uint64(31))
+
+
 class Tin:
     """Delaunay TIN of the vertices (x, y, z), built once by Qhull.
 
@@ -94,17 +128,15 @@ class Tin:
         Vertices; distinct xy positions.
     """
 
-    def __init__(self, x, y, z):
+    def __init__(self, x, y, z, topology=None):
         self.xy = np.column_stack((x, y))
         self.z = np.asarray(z, dtype=float)
-        tri = Delaunay(self.xy, qhull_options=QHULL_OPTIONS)
-        s, nb = tri.simplices.copy(), tri.neighbors.copy()
-        del tri
-        p = self.xy[s]
-        cw = ((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1])
-              - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0])) < 0
-        s[cw, 1], s[cw, 2] = s[cw, 2], s[cw, 1].copy()
-        nb[cw, 1], nb[cw, 2] = nb[cw, 2], nb[cw, 1].copy()
+        if topology is None:
+            tri = Delaunay(self.xy, qhull_options=QHULL_OPTIONS)
+            s, nb = _ccw(self.xy, tri.simplices.copy(), tri.neighbors.copy())
+            del tri
+        else:
+            s, nb = topology
         self.simplices, self.neighbors = s, nb
         self.vertex_facet = np.zeros(self.z.size, dtype=np.int64)
         self.vertex_facet[s.ravel()] = np.repeat(np.arange(s.shape[0]), 3)
@@ -175,19 +207,46 @@ class Tin:
                 if qx.size else np.zeros(0, np.int64)
         f = np.array(start, dtype=np.int64)
         act = np.arange(qx.size)
+        hull = [np.zeros(0, np.int64)]
         for _ in range(MAX_WALK):
             if act.size == 0:
-                return f
+                break
             out, nb = self._outside(f[act], qx[act], qy[act])
             move = out & (nb >= 0)
+            hull.append(act[out & (nb < 0)])
             f[act[move]] = nb[move]
             act = act[move]
-        # a safety net never seen to trigger: Qhull rebuilds the same facets in the
-        # same order (only their vertex order differs), so scipy's index is ours
-        rest = Delaunay(self.xy, qhull_options=QHULL_OPTIONS).find_simplex(
-            np.column_stack((qx[act], qy[act])))
-        f[act[rest >= 0]] = rest[rest >= 0]
+        if act.size == 0:
+            # outside the hull the walk stops at a hull facet that depends on the path
+            # (on the facets' order): take the nearest one instead
+            hull = np.concatenate(hull)
+            f[hull] = self._nearest_hull(qx[hull], qy[hull])
+            return f
+        # a safety net never seen to trigger (scipy's facets matched by their vertices)
+        tri = Delaunay(self.xy, qhull_options=QHULL_OPTIONS)
+        rest = tri.find_simplex(np.column_stack((qx[act], qy[act])))
+        ours = {tuple(v): i for i, v in enumerate(np.sort(self.simplices, axis=1).tolist())}
+        for j, r in zip(act[rest >= 0], rest[rest >= 0]):
+            f[j] = ours.get(tuple(sorted(tri.simplices[r].tolist())), f[j])
         return f
+
+    def _nearest_hull(self, px, py):
+        """Hull facet nearest to each point (ties: the hull edge of lowest vertex ids)."""
+        f, i = np.nonzero(self.neighbors < 0)
+        a, b = self.simplices[f, (i + 1) % 3], self.simplices[f, (i + 2) % 3]
+        order = np.argsort(_edge_keys(a, b, self.z.size))
+        f, a, b = f[order], self.xy[a[order]], self.xy[b[order]]
+        out = np.empty(px.size, dtype=np.int64)
+        step = max(1, CHUNK // max(f.size, 1))
+        for lo in range(0, px.size, step):
+            p = np.column_stack((px[lo:lo + step], py[lo:lo + step]))[:, None, :]
+            ab, ap = b - a, p - a
+            t = (ap * ab).sum(axis=2) / np.maximum((ab * ab).sum(axis=1), 1e-300)
+            # the foot of the perpendicular, or exactly an end (equal distances tie exactly)
+            foot = np.where(t[..., None] <= 0, a, np.where(t[..., None] >= 1, b,
+                                                           a + t[..., None] * ab))
+            out[lo:lo + step] = f[np.argmin(((p - foot) ** 2).sum(axis=2), axis=1)]
+        return out
 
     def _outside(self, f, px, py):
         """Whether each point is outside its facet ``f``, and the facet to move to."""
@@ -231,6 +290,135 @@ class Tin:
             angle[a:b] = np.degrees(np.arcsin(np.clip(np.abs(d[a:b]) / np.maximum(length, 1e-9),
                                                       0.0, 1.0)))
         return d, dz, angle, facet
+
+
+def _ccw(xy, s, nb):
+    """Facets ``s`` and neighbours ``nb`` reordered counter-clockwise (in place)."""
+    p = xy[s]
+    cw = ((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1])
+          - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0])) < 0
+    s[cw, 1], s[cw, 2] = s[cw, 2], s[cw, 1].copy()
+    nb[cw, 1], nb[cw, 2] = nb[cw, 2], nb[cw, 1].copy()
+    return s, nb
+
+
+def _edge_keys(a, b, m):
+    """One int64 key per edge (a, b) of vertex ids < ``m``, whatever its direction."""
+    a, b = np.asarray(a, np.int64), np.asarray(b, np.int64)
+    return np.minimum(a, b) * m + np.maximum(a, b)
+
+
+def insert(tin, x, y, z, old_to_new, added, hint):
+    """TIN of ``tin``'s vertices plus ``added``, re-triangulated only where they fall.
+
+    The facets whose circumcircle holds an added point (the cavity, found by walking
+    out from the facet holding it) are the ones a Delaunay rebuild replaces (Bowyer-
+    Watson); the others stay. The cavity is re-triangulated by Qhull from its vertices
+    and the added points (those of its facets fall inside the cavity) and spliced in.
+
+    Parameters
+    ----------
+    tin : Tin
+        The TIN before.
+    x, y, z : ndarray
+        Every vertex of the new TIN (heights may differ from ``tin``'s).
+    old_to_new : ndarray of int
+        Index in ``x`` of each vertex of ``tin`` (same xy).
+    added : ndarray of int
+        Indices in ``x`` of the added points.
+    hint : ndarray of int
+        Facet of ``tin`` holding each added point.
+
+    Returns
+    -------
+    Tin or None
+        None when the cavity's new facets do not tile it exactly (a Qhull tie
+        decided otherwise): the caller rebuilds the TIN.
+    """
+    xy = np.column_stack((x, y))
+    gone = _cavity(tin, xy[added], hint)
+    s_old = old_to_new[tin.simplices]
+    sub = np.r_[np.unique(s_old[gone]), added]
+    try:
+        tri = Delaunay(xy[sub], qhull_options=QHULL_OPTIONS)
+    except QhullError:
+        return None
+    ts, tn = _ccw(xy[sub], tri.simplices.copy(), tri.neighbors.copy())
+    f, i = np.nonzero(gone[:, None] & ((tin.neighbors < 0) | ~gone[tin.neighbors]))
+    bkey = _edge_keys(s_old[f, (i + 1) % 3], s_old[f, (i + 2) % 3], x.size)
+    ek = np.stack([_edge_keys(sub[ts[:, (j + 1) % 3]], sub[ts[:, (j + 2) % 3]], x.size)
+                   for j in range(3)], axis=1)
+    # flood the cavity from the facets of the added points, never across its boundary
+    cross = (tn >= 0) & ~np.isin(ek, bkey)
+    inside = np.zeros(ts.shape[0], dtype=bool)
+    front = np.flatnonzero((ts >= sub.size - added.size).any(axis=1))
+    while front.size:
+        inside[front] = True
+        nxt = tn[front][cross[front]]
+        front = np.unique(nxt[~inside[nxt]])
+    return _splice(tin, x, y, z, s_old, gone, sub[ts[inside]], ek[inside], (f, i, bkey),
+                   added.size)
+
+
+def _cavity(tin, p, hint):
+    """Facets of ``tin`` whose circumcircle holds one of the points ``p`` (walk from ``hint``)."""
+    nf = tin.simplices.shape[0]
+    gone = np.zeros(nf, dtype=bool)
+    gone[hint] = True
+    fp, ff = np.arange(p.shape[0], dtype=np.int64), np.asarray(hint, np.int64)
+    seen = np.unique(fp * nf + ff)
+    while fp.size:
+        g = tin.neighbors[ff].ravel()
+        key = np.unique(np.repeat(fp, 3)[g >= 0] * nf + g[g >= 0])
+        key = key[~np.isin(key, seen, assume_unique=True)]
+        seen = np.union1d(seen, key)
+        fp, ff = key // nf, key % nf
+        v = tin.xy[tin.simplices[ff]] - p[fp][:, None, :]        # (k, 3, 2), CCW
+        w = (v ** 2).sum(axis=2)
+        det = (w[:, 0] * (v[:, 1, 0] * v[:, 2, 1] - v[:, 2, 0] * v[:, 1, 1])
+               + w[:, 1] * (v[:, 2, 0] * v[:, 0, 1] - v[:, 0, 0] * v[:, 2, 1])
+               + w[:, 2] * (v[:, 0, 0] * v[:, 1, 1] - v[:, 1, 0] * v[:, 0, 1]))
+        fp, ff = fp[det > 0], ff[det > 0]
+        gone[ff] = True
+    return gone
+
+
+def _area(x, y, s):
+    """Total area of the triangles ``s``."""
+    return np.abs((x[s[:, 1]] - x[s[:, 0]]) * (y[s[:, 2]] - y[s[:, 0]])
+                  - (y[s[:, 1]] - y[s[:, 0]]) * (x[s[:, 2]] - x[s[:, 0]])).sum() / 2.0
+
+
+def _splice(tin, x, y, z, s_old, gone, new, ek, boundary, n_added):
+    """Return the TIN with the facets ``gone`` replaced by ``new`` (edge keys ``ek``), or None."""
+    f, i, bkey = boundary
+    nk, nn = int((~gone).sum()), new.shape[0]
+    a0 = _area(x, y, s_old[gone])
+    if nn != gone.sum() + 2 * n_added or abs(_area(x, y, new) - a0) > 1e-9 * max(a0, 1.0):
+        return None
+    flat = ek.ravel()
+    order = np.argsort(flat, kind="stable")
+    u, first, cnt = np.unique(flat[order], return_index=True, return_counts=True)
+    single = cnt == 1
+    if (cnt > 2).any() or single.sum() != bkey.size:
+        return None
+    bi = np.searchsorted(u[single], bkey)        # boundary edge -> its single new slot
+    if not np.array_equal(u[single][np.minimum(bi, single.sum() - 1)], bkey):
+        return None
+    newid = np.full(gone.size, -1, dtype=np.int64)
+    newid[~gone] = np.arange(nk)
+    nb = np.full((nk + nn, 3), -1, dtype=np.int64)
+    g = tin.neighbors[~gone]
+    nb[:nk] = np.where(g >= 0, newid[np.maximum(g, 0)], -1)
+    a, b = order[first[~single]], order[first[~single] + 1]      # shared inner edges
+    nb[nk + a // 3, a % 3], nb[nk + b // 3, b % 3] = nk + b // 3, nk + a // 3
+    e = order[first[single]][bi]                 # new slot of each boundary edge
+    out = tin.neighbors[f, i]
+    nb[nk + e // 3, e % 3] = np.where(out >= 0, newid[np.maximum(out, 0)], -1)
+    o = out >= 0
+    slot = np.argmax(tin.neighbors[out[o]] == f[o, None], axis=1)
+    nb[newid[out[o]], slot] = nk + e[o] // 3
+    return Tin(x, y, z, topology=(np.concatenate((s_old[~gone], new)), nb))
 
 
 #: Facets steeper than this (degrees) and rising more than ``max_distance`` span a

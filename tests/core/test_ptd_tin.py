@@ -155,3 +155,77 @@ def test_merge_ptd_puts_the_speed_row_inside_the_table():
     lines = bg.merge_ptd(old.replace("| ptd (1 M window) | 5 | 9.0 |\n", ""), None, speed,
                          False).splitlines()
     assert lines[6].startswith("| ptd (1 M window) | 1,000,000") and lines[7] == ""
+
+
+def _canonical(s):
+    s = np.sort(s, axis=1)
+    return s[np.lexsort(s.T[::-1])]
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_insert_gives_the_facets_of_a_rebuild_with_consistent_neighbours(seed):
+    """Points inserted a batch at a time (cavities re-triangulated, spliced in) give the
+    facets of a Qhull rebuild, every neighbour across its shared edge, both ways."""
+    rng = np.random.default_rng(seed)
+    n = 6000        # the last 4: a frame around the others (as PTD's, with_corners)
+    x = np.r_[rng.uniform(0, 300, n - 4), -1, 301, 301, -1]
+    y = np.r_[rng.uniform(0, 200, n - 4), -1, -1, 201, 201]
+    z = rng.normal(size=n)
+    have = np.zeros(n, bool)
+    have[rng.choice(n - 4, 200, replace=False)] = True
+    have[-4:] = True
+    tin = _tin.Tin(x[have], y[have], z[have])
+    for batch in (50, 400, 2000, 3000):
+        idx = np.flatnonzero(have)
+        new = rng.choice(np.flatnonzero(~have), batch, replace=False)
+        hint = tin.locate(x[new], y[new])
+        have[new] = True
+        now = np.flatnonzero(have)
+        got = _tin.insert(tin, x[now], y[now], z[now] + 1.0, np.searchsorted(now, idx),
+                          np.searchsorted(now, new), hint)
+        ref = _tin.Tin(x[now], y[now], z[now] + 1.0)
+        assert np.array_equal(_canonical(got.simplices), _canonical(ref.simplices))
+        s, nb = got.simplices, got.neighbors
+        for i in range(3):
+            f = np.flatnonzero(nb[:, i] >= 0)
+            g = nb[f, i]
+            assert (nb[g] == f[:, None]).sum(axis=1).tolist() == [1] * f.size
+            shared = np.sort(np.stack([s[f, (i + 1) % 3], s[f, (i + 2) % 3]], axis=1), axis=1)
+            assert ((s[g][:, :, None] == shared[:, None, :]).any(axis=2).sum(axis=1) == 2).all()
+            assert (np.sort(s[g], axis=1) != np.sort(s[f], axis=1)).any(axis=1).all()
+        assert (nb < 0).sum() == (ref.neighbors < 0).sum()
+        assert np.allclose(np.sort(got.edge), np.sort(ref.edge))
+        tin = got
+    # a wrong hint (a facet not holding the point) is caught: None, the caller rebuilds
+    now = np.flatnonzero(have)
+    extra = np.array([[150.123, 100.456]])
+    far = np.argmax(np.hypot(*(tin.xy[tin.simplices[:, 0]] - extra).T))
+    assert _tin.insert(tin, np.r_[x[now], extra[:, 0]], np.r_[y[now], extra[:, 1]],
+                       np.r_[z[now], 0.0], np.arange(now.size), np.array([now.size]),
+                       np.array([far])) is None
+
+
+def test_locate_outside_the_hull_gives_the_nearest_hull_facet_from_any_start():
+    """Outside the hull the walk would stop where it leaves the TIN (path-dependent):
+    the nearest hull facet (brute force over hull edges) from every start."""
+    rng = np.random.default_rng(4)
+    pts = rng.uniform(0, 100, (500, 2))
+    tin = _tin.Tin(pts[:, 0], pts[:, 1], np.zeros(500))
+    ang = rng.uniform(0, 2 * np.pi, 300)
+    q = 50 + np.column_stack((np.cos(ang), np.sin(ang))) * rng.uniform(75, 120, (300, 1))
+    f, i = np.nonzero(tin.neighbors < 0)
+    a, b = tin.xy[tin.simplices[f, (i + 1) % 3]], tin.xy[tin.simplices[f, (i + 2) % 3]]
+    t = np.clip(((q[:, None] - a) * (b - a)).sum(axis=2) / ((b - a) ** 2).sum(axis=1), 0, 1)
+    dist = np.hypot(*(q[:, None] - a - t[..., None] * (b - a)).transpose(2, 0, 1))
+    for start in (None, rng.integers(0, tin.simplices.shape[0], q.shape[0]),
+                  np.zeros(q.shape[0], np.int64)):
+        got = tin.locate(q[:, 0], q[:, 1], start)
+        assert (tin.neighbors[got] < 0).any(axis=1).all()
+        # the nearest hull edge's facet (distance equal to the minimum: ties at a hull
+        # vertex may pick either facet of that vertex, the same one from every start)
+        best = dist.min(axis=1)
+        mine = np.array([dist[k, f == g].min() for k, g in enumerate(got)])
+        assert np.allclose(mine, best, atol=1e-9)
+        if start is None:
+            first = got
+        assert np.array_equal(got, first)
