@@ -242,3 +242,18 @@ def test_gradient_of_few_cells_equals_the_whole_raster():
     finally:
         S.STRIP = strip
 
+
+def test_separable_square_dilations_equal_binary_dilation():
+    """The hole ring (3 x 3 minimum of the valid cells) and the growing front (square
+    maxima) are the cells binary_dilation gives, at the raster's edges too."""
+    rng = np.random.default_rng(8)
+    for share in (0.01, 0.3, 0.9):
+        m = rng.random((61, 47)) < share
+        ring = m & ndimage.binary_dilation(~m, structure=np.ones((3, 3), bool))
+        np.testing.assert_array_equal(
+            m & ~ndimage.minimum_filter(m, size=3, mode="nearest"), ring)
+        for size in (3, 7, 13):
+            want = ndimage.binary_dilation(m, structure=np.ones((size, size), bool))
+            np.testing.assert_array_equal(
+                ndimage.maximum_filter(m, size=size, mode="constant"), want)
+
