@@ -7,6 +7,7 @@ brings ``psutil``), else from a guarded standard-library fallback per platform.
 
 * :func:`available_memory` — bytes of memory a new array can use;
 * :func:`peak_rss_mb` — peak resident memory of this process;
+* :func:`release_free_memory` — hand freed heap pages back (glibc ``malloc_trim``);
 * :func:`limit_blas_threads` — run a block with one BLAS thread;
 * :func:`python_executable` — the real Python interpreter (inside QGIS
   ``sys.executable`` is ``qgis-bin.exe`` on Windows and the ``QGIS`` binary on macOS),
@@ -104,6 +105,31 @@ def peak_rss_mb() -> float:
             info = ps.Process().memory_info()
             return float(getattr(info, "peak_wset", info.rss)) / 1048576.0
     return float("nan")
+
+
+_TRIM: Optional[list] = None
+
+
+def release_free_memory() -> bool:
+    """Hand the allocator's free pages back to the system; True when that was done.
+
+    glibc keeps memory freed by large numpy temporaries inside its heap (scattered free
+    chunks cannot be returned from the top), so a long raster pipeline's resident size
+    keeps the high-water mark of every step; ``malloc_trim(0)`` releases those pages
+    (the memory stays reusable). glibc only, looked up once through ``ctypes``: on
+    Windows, macOS or another C library it does nothing and returns False.
+    """
+    global _TRIM
+    if _TRIM is None:
+        _TRIM = []
+        if sys.platform.startswith("linux"):
+            with contextlib.suppress(OSError, AttributeError, TypeError):
+                fn = ctypes.CDLL("libc.so.6").malloc_trim
+                fn.argtypes, fn.restype = [ctypes.c_size_t], ctypes.c_int
+                _TRIM.append(fn)
+    for fn in _TRIM:
+        fn(0)
+    return bool(_TRIM)
 
 
 # ---------------------------------------------------------------------------- BLAS threads

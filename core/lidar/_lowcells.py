@@ -107,10 +107,16 @@ def _block_min(z, f: int, anchor=(0, 0)):
     rows, cols = z.shape
     pr, pc = anchor[0] % f, anchor[1] % f
     r2, c2 = -(-(rows + pr) // f), -(-(cols + pc) // f)
-    zp = np.full((r2 * f, c2 * f), np.inf)
-    zp[pr:pr + rows, pc:pc + cols] = z
-    zp[np.isnan(zp)] = np.inf
-    out = zp.reshape(r2, f, c2, f).min(axis=(1, 3))
+    out = np.empty((r2, c2))
+    g = max(1, R.BAND // f)                          # block rows per band: no padded copy
+    for b0 in range(0, r2, g):                       # of the whole raster
+        b1 = min(r2, b0 + g)
+        lo, hi = max(0, b0 * f - pr), min(rows, b1 * f - pr)
+        zp = np.full(((b1 - b0) * f, c2 * f), np.inf)
+        top = lo - (b0 * f - pr)
+        zp[top:top + hi - lo, pc:pc + cols] = z[lo:hi]
+        zp[np.isnan(zp)] = np.inf
+        out[b0:b1] = zp.reshape(b1 - b0, f, c2, f).min(axis=(1, 3))
     out[np.isinf(out)] = np.nan
     return out, (anchor[0] // f, anchor[1] // f)
 
@@ -123,12 +129,6 @@ def _block_any(mask, f: int, anchor=(0, 0)):
     mp = np.zeros((r2 * f, c2 * f), bool)
     mp[pr:pr + rows, pc:pc + cols] = mask
     return mp.reshape(r2, f, c2, f).any(axis=(1, 3))
-
-
-def _expand(a, f: int, shape, anchor=(0, 0)):
-    """Block raster ``a`` (blocks aligned as in :func:`_block_min`) back on the fine grid."""
-    pr, pc = anchor[0] % f, anchor[1] % f
-    return np.repeat(np.repeat(a, f, axis=0), f, axis=1)[pr:pr + shape[0], pc:pc + shape[1]]
 
 
 def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
@@ -177,8 +177,14 @@ def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
         n_area = np.count_nonzero(area & ~np.isnan(coarse))
         if np.count_nonzero(cpits & area) < share_coarse * max(1, n_area):
             break
+    low = pits
+    pr, pc = anchor[0] % f, anchor[1] % f
+    ccol = (np.arange(zmin.shape[1]) + pc) // f      # the block of each column
     with np.errstate(invalid="ignore"):
-        under = ((_expand(clo, f, zmin.shape, anchor) - zmin) > step) & occupied
-    low = np.where(canopy, under, pits)
+        for b0 in range(0, zmin.shape[0], R.BAND):   # bands: no expanded closing raster
+            b = slice(b0, b0 + R.BAND)
+            crow = (np.arange(b0, min(b0 + R.BAND, zmin.shape[0])) + pr) // f
+            under = ((clo[crow][:, ccol] - zmin[b]) > step) & occupied[b]
+            low[b] = np.where(canopy[b], under, pits[b])
     return LowCells(low, n_pits, float(np.count_nonzero(canopy & occupied)) / n_occ,
                     float(f * cell))

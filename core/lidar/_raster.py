@@ -381,13 +381,21 @@ def _window_sums(q, size: int, n: int, axis: int):
             - np.take(cs, np.arange(n), axis=axis))
 
 
-def opening(z, radius):
-    """Grey opening with a (2r+1)² square window (separable min/max filters)."""
+def opening(z, radius, out=None):
+    """Grey opening with a (2r+1)² square window (separable min/max filters).
+
+    The 1-D filters of ``ndimage.minimum_filter`` / ``maximum_filter`` axis by axis, all
+    but the first in place: scipy's separable filter itself runs its second axis from
+    its output into itself (each line is buffered), but refuses an output sharing the
+    input's memory with a temporary copy - here one raster (``out`` when given, not
+    ``z``), the same values.
+    """
     size = 2 * int(radius) + 1
-    out = ndimage.minimum_filter(z, size=size, mode="nearest")
-    # in place: scipy's separable filter already runs its second axis from its output
-    # into itself (each line is buffered), so the dilation may too - one raster, not two
-    return ndimage.maximum_filter(out, size=size, mode="nearest", output=out)
+    out = ndimage.minimum_filter1d(z, size, axis=0, mode="nearest", output=out)
+    for f, axis in ((ndimage.minimum_filter1d, 1), (ndimage.maximum_filter1d, 0),
+                    (ndimage.maximum_filter1d, 1)):
+        f(out, size, axis=axis, mode="nearest", output=out)
+    return out
 
 
 def slope(z, cell):

@@ -466,9 +466,9 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
     skip : ndarray of bool
         Cells neither ground nor candidates (empty, low outliers).
     dtm : ndarray or callable
-        Provisional DTM filled from the ground cells, or ``dtm(read)`` returning it
-        filled at least in the cells ``read`` (the candidates: the other cells are
-        never read).
+        Provisional DTM filled from the ground cells, or ``dtm(read)`` returning its
+        values at the cells ``read`` (the candidates: the other cells are never read),
+        in ``np.flatnonzero(read)`` order.
     cell : float
         Cell size (m).
     opt : RecommendedOptions
@@ -488,11 +488,10 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
     cand, (centre, gx, gy, tol) = plane_fit_where(
         zmin, ~skip, rad, lambda b, rms, centre, gx, gy: _grow_candidates(
             b, rms, centre, gx, gy, zmin, obj, skip, cell, opt))
-    if callable(dtm):
-        dtm = dtm(cand)
     at = np.flatnonzero(cand)                        # cells of the kept values, sorted
+    dtm = dtm(cand) if callable(dtm) else dtm.ravel()[at]
     with np.errstate(invalid="ignore"):
-        keep = zmin.ravel()[at] - dtm.ravel()[at] <= opt.grow_max_rise
+        keep = zmin.ravel()[at] - dtm <= opt.grow_max_rise
     del dtm
     cand.ravel()[at[~keep]] = False
     offs = [(dr, dc) for dr in range(-rad, rad + 1) for dc in range(-rad, rad + 1)

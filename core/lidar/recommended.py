@@ -81,6 +81,7 @@ from ..classes import GROUND, LOW_NOISE
 from ..classes import UNCLASSIFIED as OBJECT
 from ..errors import InputError
 from ..progress import Cancelled, Monitor
+from ..system import release_free_memory as _trim
 from ..reporting import T
 from . import _lowcells as L  # noqa: N812
 from . import _raster as R  # noqa: N812
@@ -313,7 +314,12 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     """
     opt = _options(options, RecommendedOptions)
     x, y, z = R.checked_xyz(x, y, z, opt.min_points)
-    rep = Monitor(progress, cancel).step
+    step = Monitor(progress, cancel).step
+
+    def rep(done):
+        _trim()           # between steps: the freed temporaries' pages back to the system
+        step(done)
+
     rep(0.0)
     opt = derive(x, y, opt)
     pc = R.PointCells(x, y, R.Grid.around(x, y, opt.cell, origin=origin))
@@ -334,6 +340,7 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
         rep(0.8 + 0.2 * (k + 1) / (opt.refine + 1))
         zg = pc.cell_min(z, cls == GROUND)
         zg = fill_holes(zg, ~np.isnan(zg), pc.grid, opt, need, cache, overwrite=True)
+        _trim()
         cls = label_points(z, zg, pc, opt, last)
     rep(1.0)
     return cls
@@ -374,10 +381,13 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None)
     lows = L.low_cells(zmin, grid.cell, step=opt.low_step, window=opt.low_window,
                        share=opt.low_share, anchor=grid.anchor)
     low = lows.low
+    _trim()
     zf = R.fill(zmin, ~(low | empty), grid.anchor, overwrite=remake is not None)
     if remake is not None:
         zmin = None
+    _trim()
     slope = opt.slope if opt.slope is not None else terrain_slope(zf, grid, opt)
+    _trim()
     if opt.trend_window > 0 and opt.trend_smooth > 0:
         trend_surface(zf, grid, opt, subtract=True)  # zf is the fill's own array
     obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep, overwrite=True)
@@ -389,15 +399,33 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None)
         zmin = remake()
     if opt.grow and opt.grow_iters > 0:
         skip = low | empty
-        obj = grow_ground(zmin, obj, skip,
-                          lambda read: fill_holes(zmin, ~(obj | skip), grid, opt, read, cache),
+        obj = grow_ground(zmin, obj, skip, lambda read: _fill_at(zmin, ~(obj | skip), read, grid,
+                                                               opt, cache, remake is not None),
                           grid.cell, opt)
+        _trim()
     if info is not None:
         info.update(lows=lows, slope=slope, objects=obj)
     bad = obj | low | empty
     if bad.all():
         bad = low | empty
     return fill_holes(zmin, ~bad, grid, opt, need, cache, overwrite=remake is not None)
+
+
+def _fill_at(z, valid, read, grid, opt, cache, own):
+    """:func:`fill_holes` of ``z`` at the cells ``read`` only (``np.flatnonzero`` order).
+
+    With ``own`` (``z`` is ours) the fill is made in ``z``'s own buffer, no cache, and
+    the cells ``read`` get their values back: ``z`` is unchanged at its valid cells and
+    at ``read``, the cells the growing step reads (one raster less).
+    """
+    at = np.flatnonzero(read)
+    if not own:
+        return fill_holes(z, valid, grid, opt, read, cache).ravel()[at]
+    flat = z.ravel()
+    kept = flat[at]
+    out = fill_holes(z, valid, grid, opt, read, overwrite=True).ravel()[at]
+    flat[at] = kept
+    return out
 
 
 def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False):
@@ -459,18 +487,16 @@ def progressive_objects(zf, cell, max_window, slope, rep, overwrite=False):
     radii = np.arange(1, max(1, int(np.ceil(max_window / cell))) + 1)
     obj = np.zeros(zf.shape, dtype=bool)
     cur = zf
-    for k, r in enumerate(radii):
+    spare = None          # two rasters in turn (zf's own with overwrite), none allocated
+    for k, r in enumerate(radii):                    # per window
         rep(0.3 + 0.5 * k / radii.size)
-        opened = R.opening(cur, r)
+        opened = R.opening(cur, r, out=spare)
         for b0 in range(0, zf.shape[0], R.BAND):    # bands: no full-size temporaries
             b = slice(b0, b0 + R.BAND)
             s = slope[b] if np.ndim(slope) else slope
             obj[b] |= (cur[b] - opened[b]) > s * r * cell
-        if overwrite:
-            cur[...] = opened
-            del opened
-        else:
-            cur = opened
+        spare = cur if overwrite or cur is not zf else None
+        cur = opened
     return obj
 
 

@@ -186,3 +186,58 @@ def test_fill_in_place_and_surface_with_a_rebuilt_minimum_equal_the_plain_ones(s
     ref = rec.surface(zmin.copy(), grid, opt, lambda f: None)
     got = rec.surface(zmin.copy(), grid, opt, lambda f: None, remake=zmin.copy)
     np.testing.assert_array_equal(got, ref)
+
+
+def _plain_low_cells(zmin, cell, step=5.0, window=25.0, share=0.08, share_coarse=0.03,
+                     anchor=(0, 0)):
+    """low_cells as it was before its banded steps (padded block copy, expanded closing)."""
+    def block_min(z, f, anchor):
+        rows, cols = z.shape
+        pr, pc = anchor[0] % f, anchor[1] % f
+        r2, c2 = -(-(rows + pr) // f), -(-(cols + pc) // f)
+        zp = np.full((r2 * f, c2 * f), np.inf)
+        zp[pr:pr + rows, pc:pc + cols] = z
+        zp[np.isnan(zp)] = np.inf
+        out = zp.reshape(r2, f, c2, f).min(axis=(1, 3))
+        out[np.isinf(out)] = np.nan
+        return out, (anchor[0] // f, anchor[1] // f)
+
+    pits = L.closing_pits(zmin, step, anchor)[0]
+    occupied = ~np.isnan(zmin)
+    k = 2 * max(1, int(round(window / cell))) + 1
+    occ = ndimage.uniform_filter(occupied.astype(np.float32), k, mode="constant")
+    frac = ndimage.uniform_filter(pits.astype(np.float32), k, mode="constant")
+    canopy = frac > share * np.maximum(occ, 1e-6)
+    for f in L.FACTORS:
+        coarse, canchor = block_min(zmin, f, anchor)
+        np.testing.assert_array_equal(L._block_min(zmin, f, anchor)[0], coarse)
+        cpits, clo = L.closing_pits(coarse, step, canchor)
+        area = L._block_any(canopy, f, anchor)
+        n_area = np.count_nonzero(area & ~np.isnan(coarse))
+        if np.count_nonzero(cpits & area) < share_coarse * max(1, n_area):
+            break
+    pr, pc = anchor[0] % f, anchor[1] % f
+    big = np.repeat(np.repeat(clo, f, axis=0), f, axis=1)[pr:pr + zmin.shape[0],
+                                                          pc:pc + zmin.shape[1]]
+    with np.errstate(invalid="ignore"):
+        under = ((big - zmin) > step) & occupied
+    return np.where(canopy, under, pits), canopy
+
+
+@pytest.mark.parametrize("shape", [(150, 90), (300, 41), (333, 200)])
+def test_low_cells_banded_blocks_equal_the_padded_and_expanded_rasters(shape):
+    """A canopy (few ground cells 20 m below it) over part of the raster, pits elsewhere."""
+    rng = np.random.default_rng(12)
+    r, c = np.mgrid[:shape[0], :shape[1]]
+    zmin = 50 + 0.1 * c + rng.normal(0, 0.2, shape)
+    forest = (c > shape[1] // 3)
+    zmin[forest] += 20 + rng.normal(0, 1, forest.sum())
+    ground = forest & (rng.random(shape) < 0.15)
+    zmin[ground] -= 20
+    zmin[rng.random(shape) < 0.3] = np.nan
+    zmin[3::17, 5::13] -= 9.0                          # isolated pits in the open
+    for anchor in ((0, 0), (5, 7)):
+        want, canopy = _plain_low_cells(zmin, 1.0, anchor=anchor)
+        got = L.low_cells(zmin, 1.0, anchor=anchor)
+        assert canopy.any() and got.canopy_scale > 0
+        np.testing.assert_array_equal(got.low, want)
