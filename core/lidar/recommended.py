@@ -81,8 +81,8 @@ from ..classes import GROUND, LOW_NOISE
 from ..classes import UNCLASSIFIED as OBJECT
 from ..errors import InputError
 from ..progress import Cancelled, Monitor
-from ..system import release_free_memory as _trim
 from ..reporting import T
+from ..system import release_free_memory as _trim
 from . import _lowcells as L  # noqa: N812
 from . import _raster as R  # noqa: N812
 from . import _surface as S  # noqa: N812
