@@ -81,6 +81,11 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                                  "report."),
              self.GROUND_FILTER: self.tr("The first choice keeps the classes already in "
                                          "the files."),
+             self.DTM_METHOD: self.tr("Cells are nodata where a DTM of all the tiles as one "
+                                      "file would leave them empty: farther than five mean "
+                                      "ground spacings from ground (TIN: triangles with an "
+                                      "edge over twice that), derived from the whole catalog "
+                                      "once every tile is done."),
              self.BUFFER: self.tr("Must exceed the filter's reach (about 100 m for the "
                                   "recommended filter, 240 m for the improved LSQ, 120 m "
                                   "for the terrain-adaptive slope filter) and the DTM "

@@ -409,6 +409,10 @@
             <source>All tiles must share one CRS. Tiles without points are left out; tiles without ground within reach (a lake, the sea) get a nodata DTM. Both are named in the log and the report.</source>
             <translation>يجب أن تشترك كل البلاطات في نظام إحداثيات واحد. تُستبعد البلاطات التي بلا نقاط؛ والبلاطات التي لا أرض على مقربة منها (بحيرة، بحر) يكون نموذج التضاريس الرقمي الخاص بها بلا بيانات. تُذكر كلتاهما في السجل والتقرير.</translation>
         </message>
+        <message>
+            <source>Cells are nodata where a DTM of all the tiles as one file would leave them empty: farther than five mean ground spacings from ground (TIN: triangles with an edge over twice that), derived from the whole catalog once every tile is done.</source>
+            <translation>تكون الخلايا بلا بيانات حيث يتركها نموذج التضاريس الرقمي لكل البلاطات كملف واحد فارغة: أبعد من خمسة أضعاف متوسط التباعد بين نقاط الأرض عن الأرض (في TIN: المثلثات التي يزيد أحد أضلاعها عن ضعف ذلك)، وتُشتق هذه المسافة من الفهرس كله بعد انتهاء كل البلاطات.</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>

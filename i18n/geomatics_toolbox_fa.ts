@@ -409,6 +409,10 @@
             <source>All tiles must share one CRS. Tiles without points are left out; tiles without ground within reach (a lake, the sea) get a nodata DTM. Both are named in the log and the report.</source>
             <translation>همهٔ کاشی‌ها باید یک سامانهٔ مختصات داشته باشند. کاشی‌های بدون نقطه کنار گذاشته می‌شوند؛ کاشی‌هایی که زمینی در دسترس ندارند (دریاچه، دریا) مدل رقومی زمین بدون داده می‌گیرند. هر دو در گزارش کار و گزارش نام برده می‌شوند.</translation>
         </message>
+        <message>
+            <source>Cells are nodata where a DTM of all the tiles as one file would leave them empty: farther than five mean ground spacings from ground (TIN: triangles with an edge over twice that), derived from the whole catalog once every tile is done.</source>
+            <translation>سلول‌ها در جایی بدون داده‌اند که مدل رقومی زمینِ همهٔ کاشی‌ها به‌صورت یک فایل آن‌ها را خالی می‌گذارد: دورتر از پنج برابر میانگین فاصلهٔ نقاط زمین از زمین (در TIN: مثلث‌هایی که یک ضلعشان بیش از دو برابر آن است)؛ این فاصله پس از پایان همهٔ کاشی‌ها از کل کاتالوگ به دست می‌آید.</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>

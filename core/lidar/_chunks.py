@@ -34,6 +34,7 @@ from ..terrain.dtm import (
     register_dtm_method,
 )
 from ..terrain.grid import GridSpec
+from ._gap import chunk_gaps, gap_path, ground_summary, mask_with_gap
 from .filters import (
     GROUND_FILTERS,
     RECOMMENDED_FILTER,
@@ -64,7 +65,7 @@ def chunk_dtm(key: str, x, y, z, grid, max_distance: float) -> np.ndarray:
     return dtm_in_reach(key, x, y, z, grid, max_distance)[0]
 
 
-def dtm_in_reach(key: str, x, y, z, grid, max_distance: float):
+def dtm_in_reach(key: str, x, y, z, grid, max_distance: float, *, gaps: bool = False):
     """DTM of the ground a chunk has within reach, and the neighbours used if cut.
 
     A part of a catalog may hold little or no ground (a lake, the sea at the coast, a
@@ -75,19 +76,25 @@ def dtm_in_reach(key: str, x, y, z, grid, max_distance: float):
     those points (:meth:`~..terrain.dtm.DtmMethod.within`). Ground the method refuses
     (kriging's variogram from a few points, a TIN of points on one line): nodata and the
     refusal kept. Returns ``(z, k, why)``: ``k`` the neighbours used when cut, else None;
-    ``why`` the refusal (:func:`refusal`) or None.
+    ``why`` the refusal (:func:`refusal`) or None. With ``gaps`` (the catalog derives
+    its gap distance after the run, :mod:`._gap`) a fourth item: ``(z, gap)`` of the DTM
+    without a gap limit and the distances the limit is tested on (None when no DTM).
     """
     nodata = np.full(grid.shape, np.nan)
+    done = (lambda *r: r + (None,)) if gaps else (lambda *r: r)
     if distinct_positions(x, y, MIN_DISTINCT_POINTS) < MIN_DISTINCT_POINTS:
-        return nodata, None, None
+        return done(nodata, None, None)
     method = dtm_method(key, CHUNK_IDW if key == "idw" else None)
     fitted = method.within(x, y)
     used = None if fitted is method else int(fitted.options.neighbours)
     try:
+        if gaps:
+            full = chunk_gaps(fitted, x, y, z, grid)
+            return mask_with_gap(*full, key, max_distance), used, None, full
         return (fitted.interpolate(x, y, z, grid, max_distance=max_distance, workers=1).z,
                 used, None)
     except InputError as exc:           # the data of this chunk, not the settings
-        return nodata, used, refusal(exc)
+        return done(nodata, used, refusal(exc))
 
 
 def refusal(exc: InputError) -> dict:
@@ -129,6 +136,9 @@ class ChunkTask:
     #: Linear units of the tiles (feet tiles: the filter runs on metres, the geometry
     #: above and the chunk's outputs are in the tiles' units).
     units: Units = METRIC
+    #: The catalog derives the gap distance after the run (:mod:`._gap`):
+    #: ``max_distance`` is then provisional and the chunk keeps ``<key>.gap.npz``.
+    derive_gap: bool = False
 
     @property
     def neighbours(self) -> List[str]:
@@ -344,6 +354,14 @@ def _write_outputs(task: ChunkTask, xyz, dims, core, cls, dtm, grid, records=Non
                       unit_type=task.units.vertical.symbol)
 
 
+def _save_gaps(task: ChunkTask, z, gap) -> None:
+    """``.catalog/<key>.gap.npz``: the DTM as written (float32) without a gap limit."""
+    path = gap_path(task)
+    with open(path + ".tmp", "wb") as fh:
+        np.savez(fh, z=np.asarray(z, np.float32), gap=np.asarray(gap, np.float64))
+    os.replace(path + ".tmp", path)
+
+
 def process_chunk(task: ChunkTask, *strips) -> dict:
     """Process one chunk end to end; returns its stats (also stored in the done marker).
 
@@ -370,10 +388,15 @@ def process_chunk(task: ChunkTask, *strips) -> dict:
         clock.lap("filter")
         grid = snap_grid(task.bounds, task.origin, task.cell_size, task.crs)
         g = cls == GROUND
-        dtm, used, why = dtm_in_reach(task.dtm_method, xyz[0][g], xyz[1][g], xyz[2][g],
-                                      grid, task.max_distance)
+        dtm, used, why, *full = dtm_in_reach(task.dtm_method, xyz[0][g], xyz[1][g],
+                                             xyz[2][g], grid, task.max_distance,
+                                             gaps=task.derive_gap)
         if why is not None:
             stats["dtm_error"] = why
+        if full and full[0] is not None:
+            _save_gaps(task, *full[0])
+        stats.update(ground_summary(xyz[0][g & core], xyz[1][g & core],
+                                    distinct=task.dtm_method == "kriging"))
         clock.lap("dtm")
         _write_outputs(task, xyz, dims, core, cls, dtm, grid, records)
         clock.lap("write")

@@ -59,6 +59,7 @@ from ._chunks import (
     neighbour_paths,
     register_dtm_method,
     register_ground_filter,
+    snap_grid,
 )
 from ._dask_run import (  # noqa: F401 - CatalogResult is this module's public result type
     QUIET,
@@ -68,6 +69,7 @@ from ._dask_run import (  # noqa: F401 - CatalogResult is this module's public r
     _run_dask,
     _sweep_temps,
 )
+from ._gap import apply_gap, derived_gap, drop_gap_files
 
 __all__ = ["Catalog", "CatalogResult", "run_catalog", "GROUND_FILTERS", "DTM_METHODS",
            "register_ground_filter", "register_dtm_method", "default_ground_filter",
@@ -157,7 +159,11 @@ class Catalog:
         return [int(i) for i in np.flatnonzero(hit)]
 
     def default_max_distance(self) -> float:
-        """DTM gap distance for the whole catalog: 10 mean point spacings."""
+        """Provisional DTM gap distance, from the headers: 10 mean point spacings.
+
+        The chunks' DTM files carry it until every chunk has finished; then the gap
+        distance of a single-file run of the merged cloud replaces it (:mod:`._gap`).
+        """
         e = self.extent
         area = max((e[2] - e[0]) * (e[3] - e[1]), 1e-9)
         return 10.0 * math.sqrt(area / max(self.n_points, 1))
@@ -176,7 +182,8 @@ def _run_settings(tasks: Sequence[ChunkTask], cat: Catalog) -> dict:
     t = tasks[0]
     return dict(ground_filter=t.ground_filter, dtm_method=t.dtm_method,
                 cell_size=t.cell_size, buffer=t.buffer, origin=list(t.origin),
-                max_distance=t.max_distance, chunks=sorted(x.key for x in tasks),
+                max_distance=None if t.derive_gap else t.max_distance,
+                chunks=sorted(x.key for x in tasks),
                 tiles=sorted([os.path.basename(i.path), i.count] for i in cat.tiles))
 
 
@@ -267,7 +274,8 @@ def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
     md = cat.default_max_distance() if max_distance is None else float(max_distance) / h
     common = dict(buffer=buffer, origin=(float(origin[0]), float(origin[1])),
                   cell_size=cell_size, crs=cat.crs, ground_filter=ground_filter,
-                  dtm_method=dtm_method, max_distance=md, units=units)
+                  dtm_method=dtm_method, max_distance=md, units=units,
+                  derive_gap=max_distance is None)
     _check_chunks(cat, chunk_size, cell_size, buffer, origin, h=h)
     tasks = (_box_tasks(cat, folder, chunk_size, common) if chunk_size
              else _tile_tasks(cat, folder, common))
@@ -322,7 +330,8 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     origin : (float, float), optional
         Global lattice origin (default: the catalog's lower-left corner floored to km).
     max_distance : float, optional
-        DTM gap distance (m); default :meth:`Catalog.default_max_distance`.
+        DTM gap distance (m); default: a single-file run's on the merged cloud, derived
+        when every chunk has finished (:mod:`._gap`).
     on_chunk : callable, optional
         Called with the stats dict of every chunk as it finishes (``key``, ``status``
         'done'/'empty'/'failed', ``points``, ``seconds``, ``error``), and of every chunk
@@ -370,21 +379,47 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     if todo:
         chunks += _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon,
                             len(chunks), failed, clock, on_chunk)
+    gap = _catalog_gap(tasks, chunks, failed, cell_size, dtm_method)
     _check_outcome(chunks, failed, todo, made, len(tasks), cat.n_points, gf)
     vrt, cog_path = _mosaic(cat, folder, tasks, failed, chunks, cog)
     clock.lap("mosaic")
     order = {t.key: i for i, t in enumerate(tasks)}
     chunks.sort(key=lambda c: order[c["key"]])
     settings = dict(ground_filter=gf, dtm_method=dtm_method, cell_size=float(cell_size),
-                    buffer=float(buffer), chunk_size=float(chunk_size), tiles=len(tasks),
-                    points_total=cat.n_points, crs=cat.crs or "", origin=tasks[0].origin,
-                    keys=[t.key for t in tasks], bounds=[list(t.bounds) for t in tasks],
-                    empty_tiles=[os.path.basename(p) for p in cat.empty])
+                    buffer=float(buffer), chunk_size=float(chunk_size),
+                    **_result_settings(cat, tasks, gap))
     return CatalogResult(chunks=chunks, failed=failed,
                          skipped=[k for k, v in previous.items() if v is not None],
                          vrt=vrt, cog=cog_path, seconds=time.perf_counter() - t0,
                          workers=nw, scheduler=scheduler or "local", settings=settings,
                          timings=clock.phases)
+
+
+def _result_settings(cat, tasks, gap) -> dict:
+    return dict(tiles=len(tasks), points_total=cat.n_points, crs=cat.crs or "",
+                origin=tasks[0].origin, keys=[t.key for t in tasks],
+                bounds=[list(t.bounds) for t in tasks],
+                # metres (tiles in feet: converted), as a single-file run reports it
+                gap_distance=(gap if gap is not None else tasks[0].max_distance)
+                * tasks[0].units.h,
+                empty_tiles=[os.path.basename(p) for p in cat.empty])
+
+
+def _catalog_gap(tasks, chunks, failed, cell_size: float, method: str) -> Optional[float]:
+    """Derive the gap distance from every chunk's ground and mask the DTMs with it.
+
+    None when the run has failed chunks (the DTMs keep the provisional distance and
+    their ``.gap.npz`` for the resume) or a gap distance was given.
+    """
+    if not tasks[0].derive_gap or failed:
+        return None
+    gap = derived_gap(chunks, cell_size=float(cell_size), h=tasks[0].units.h,
+                      method_key=method)
+    if gap is not None:
+        apply_gap(tasks, chunks, gap, method_key=method,
+                  grids=lambda t: snap_grid(t.bounds, t.origin, t.cell_size, t.crs))
+        drop_gap_files(tasks)
+    return gap
 
 
 def _write_settings(folder: Path, settings: dict) -> None:
@@ -414,6 +449,7 @@ def _check_outcome(chunks, failed, todo, made, n_tiles: int, n_points: int, gf: 
 
 def _undo_run(todo: Sequence[ChunkTask], made: Sequence[Path]) -> None:
     """Remove what this run wrote (chunk outputs, markers, folders it created)."""
+    drop_gap_files(todo)
     for t in todo:
         for path in t.outputs.values():
             if os.path.exists(path):

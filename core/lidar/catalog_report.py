@@ -149,6 +149,7 @@ def catalog_report(result, tiles_bounds, *, lang: str = "en") -> Report:
     rep.section(T("Run")).add(KeyValues([
         (T("Ground filter"), s["ground_filter"]), (T("DTM method"), s["dtm_method"]),
         (T("Cell size"), s["cell_size"], "m"), (T("Buffer"), s["buffer"], "m"),
+        (T("Maximum distance to data"), s.get("gap_distance"), "m"),
         (T("Chunk size (0 = the tiles)"), s.get("chunk_size", 0.0), "m"),
         (T("Tiles"), s["tiles"]), (T("Points in the catalog"), s["points_total"]),
         (T("Workers"), result.workers), (T("Dask scheduler"), result.scheduler),

@@ -47,6 +47,10 @@ class TinResult:
         Triangles dropped for an edge longer than ``max_edge``.
     max_edge : float or None
         Edge limit used (None when gaps are filled).
+    cell_edge2 : ndarray or None
+        With ``cell_edges``: per cell, the smallest longest-edge² of the kept triangles
+        holding its centre (``inf`` outside them) — the edge test of another limit,
+        applied afterwards (a catalog's gap distance, :mod:`..lidar._gap`).
     """
 
     z: np.ndarray
@@ -54,6 +58,7 @@ class TinResult:
     n_triangles: int
     n_long: int
     max_edge: Optional[float]
+    cell_edge2: Optional[np.ndarray] = None
 
 
 def default_max_edge(grid: GridSpec, n_points: int) -> float:
@@ -109,11 +114,16 @@ def _spatial_order(x, y) -> np.ndarray:
     return np.lexsort((cx, cy))
 
 
-def _long_triangles(tri, max_edge: float) -> np.ndarray:
-    """Flag the simplices with an edge longer than ``max_edge``."""
+def _edge2(tri) -> np.ndarray:
+    """Squared edge lengths of every simplex, ``(m, 3)``."""
     p = tri.points[tri.simplices]                       # (m, 3, 2)
     e = p - np.roll(p, 1, axis=1)
-    return (np.einsum("mki,mki->mk", e, e) > max_edge * max_edge).any(axis=1)
+    return np.einsum("mki,mki->mk", e, e)
+
+
+def _long_triangles(tri, max_edge: float) -> np.ndarray:
+    """Flag the simplices with an edge longer than ``max_edge``."""
+    return (_edge2(tri) > max_edge * max_edge).any(axis=1)
 
 
 def _cell_ranges(lo, hi, origin, cell, n, flip=False):
@@ -128,14 +138,18 @@ def _cell_ranges(lo, hi, origin, cell, n, flip=False):
 
 
 def _rasterise(tri, xy, z, keep, grid: GridSpec, x0: float, y0: float,
-               mon) -> np.ndarray:
+               mon, edge2=None):
     """Scan-convert the kept triangles: every cell centre inside gets the plane value.
 
     Candidate cells are the cell centres in each triangle's bounding box, enumerated in
     chunks of about :data:`BLOCK_CELLS`; a centre on a shared edge gets the same value
-    from either triangle (the surface is continuous).
+    from either triangle (the surface is continuous). With ``edge2`` (the longest
+    edge² of every simplex) also returns, per cell, the smallest of those of the kept
+    triangles holding its centre (``inf`` elsewhere): ``(z, cell_edge2)``.
     """
     simp = tri.simplices[keep]
+    e2 = None if edge2 is None else edge2[keep]
+    emin = None if edge2 is None else np.full(grid.size, np.inf)
     px = xy[:, 0][simp]                               # (m, 3), local coordinates
     py = xy[:, 1][simp]
     c0, c1 = _cell_ranges(px.min(1), px.max(1), grid.xmin - x0, grid.cell, grid.ncols)
@@ -169,17 +183,26 @@ def _rasterise(tri, xy, z, keep, grid: GridSpec, x0: float, y0: float,
         eps = -1e-12
         inside = (l0 >= eps) & (l1 >= eps) & (l2 >= eps)
         zt = z[simp[ids[inside]]]
-        out[row[inside] * grid.ncols + col[inside]] = (
-            l0[inside] * zt[:, 0] + l1[inside] * zt[:, 1] + l2[inside] * zt[:, 2])
+        flat = row[inside] * grid.ncols + col[inside]
+        out[flat] = l0[inside] * zt[:, 0] + l1[inside] * zt[:, 1] + l2[inside] * zt[:, 2]
+        if emin is not None:        # the smallest over a centre's triangles (shared edges)
+            ev = e2[ids[inside]]
+            smaller = ev < emin[flat]
+            while smaller.any():
+                emin[flat[smaller]] = ev[smaller]
+                smaller = ev < emin[flat]
         t0 = t1
         mon.step((k + 1) / len(bounds))
         if t0 >= len(simp):
             break
+    if emin is not None:
+        return out.reshape(grid.shape), emin.reshape(grid.shape)
     return out.reshape(grid.shape)
 
 
 def tin_grid(x, y, z, grid: GridSpec, *, max_edge: Optional[float] = None,
-             fill: bool = False, progress=None, cancel=None) -> TinResult:
+             fill: bool = False, cell_edges: bool = False, progress=None,
+             cancel=None) -> TinResult:
     """Interpolate points onto ``grid`` linearly inside their Delaunay triangles.
 
     Parameters
@@ -193,6 +216,8 @@ def tin_grid(x, y, z, grid: GridSpec, *, max_edge: Optional[float] = None,
         :func:`default_max_edge`.
     fill : bool
         Keep every triangle (``max_edge`` ignored): gaps inside the hull are bridged.
+    cell_edges : bool
+        Also return :attr:`TinResult.cell_edge2` (another edge limit applied later).
     progress, cancel : callable, optional
         See :class:`~..progress.Monitor`.
 
@@ -224,7 +249,10 @@ def tin_grid(x, y, z, grid: GridSpec, *, max_edge: Optional[float] = None,
     tri, x0, y0, xy = _triangulate(x, y)
     mon.step(0.3)
     edge = None if fill else (max_edge or default_max_edge(grid, x.size))
+    e2 = _edge2(tri).max(axis=1) if cell_edges else None
     bad = (_long_triangles(tri, edge) if edge is not None
            else np.zeros(len(tri.simplices), bool))
-    out = _rasterise(tri, xy, z, ~bad, grid, x0, y0, mon.sub(0.3, 1.0))
-    return TinResult(out, int(x.size), int(len(tri.simplices)), int(bad.sum()), edge)
+    out = _rasterise(tri, xy, z, ~bad, grid, x0, y0, mon.sub(0.3, 1.0), edge2=e2)
+    out, cell_e2 = out if cell_edges else (out, None)
+    return TinResult(out, int(x.size), int(len(tri.simplices)), int(bad.sum()), edge,
+                     cell_e2)

@@ -20,6 +20,7 @@ from geomatics_toolbox.core.io.raster import read_raster
 from geomatics_toolbox.core.lidar import catalog as cc
 from geomatics_toolbox.core.lidar._chunks import GROUND_FILTERS, snap_grid
 from geomatics_toolbox.core.lidar.filters import classify_points, default_selection, ground_filter
+from geomatics_toolbox.core.terrain.grid import default_max_distance, grid_from_points
 from geomatics_toolbox.core.terrain.idw import idw_grid
 from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile
 
@@ -101,8 +102,12 @@ def test_catalog_equals_merged_run(tiles, local_run):
     # DTM: IDW on the merged ground onto the same global lattice
     g = merged == 2
     grid = snap_grid(cat.extent, res.settings["origin"], CELL)
-    ref = idw_grid(x[g], y[g], z[g], grid, max_distance=cat.default_max_distance(), workers=1,
-                   tie_order="xy")
+    # the gap distance of a single-file run on the catalog's classified tiles merged
+    # (their ground's grid and count; classes differ from `merged` near the outer edge)
+    gc = got == 2
+    gap = default_max_distance(grid_from_points(x[gc], y[gc], CELL), int(gc.sum()))
+    assert res.settings["gap_distance"] == gap
+    ref = idw_grid(x[g], y[g], z[g], grid, max_distance=gap, workers=1, tie_order="xy")
     mosaic = _dtm(out / "dtm.vrt")
     assert mosaic.shape == ref.shape
     both = np.isfinite(ref) & np.isfinite(mosaic)
@@ -359,8 +364,8 @@ def test_chunk_size_run_equals_merged_run(big_tiles, chunk_run):
     assert np.mean(got_sorted == ref_sorted) >= 0.999
     g = merged == 2
     grid = snap_grid(cat.extent, res.settings["origin"], CELL)
-    ref = idw_grid(x[g], y[g], z[g], grid, max_distance=cat.default_max_distance(), workers=1,
-                   tie_order="xy")
+    ref = idw_grid(x[g], y[g], z[g], grid, max_distance=res.settings["gap_distance"],
+                   workers=1, tie_order="xy")
     mosaic = _dtm(out / "dtm.vrt")
     assert mosaic.shape == (grid.nrows + 50, grid.ncols + 50)    # 900 m of chunks
     mosaic = mosaic[50:, :grid.ncols]                           # rows from the top
@@ -381,7 +386,8 @@ def test_tin_dtm_equals_merged_tin_along_internal_edges(tiles, tmp_path):
     cat = cc.Catalog.open(str(tiles))
     g = cls0 == 2
     grid = snap_grid(cat.extent, res.settings["origin"], CELL)
-    ref = tin_grid(x[g], y[g], z[g], grid, max_edge=cat.default_max_distance()).z
+    # a single-file TIN's edge limit: twice the gap distance (tin.default_max_edge)
+    ref = tin_grid(x[g], y[g], z[g], grid, max_edge=2 * res.settings["gap_distance"]).z
     mosaic = _dtm(out / "dtm.vrt")[50:, :grid.ncols]
     gx, gy = (v.reshape(grid.shape) for v in grid.block_centers(0, grid.nrows))
     e = cat.extent

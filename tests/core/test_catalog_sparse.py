@@ -330,3 +330,109 @@ def test_catalog_whose_every_dtm_is_nodata_refused_with_the_reason(tmp_path):
         cc.run_catalog(str(d), out, ground_filter="keep", dtm_method="kriging",
                        cell_size=CELL, buffer=50.0, workers=1)
     assert not out.exists() or not any(out.rglob("*"))
+
+
+# ------------------------------------------------------------------ the gap distance
+def _merged_las(d: Path, dst: Path) -> Path:
+    parts = [read_las(p, ("classification",)) for p in find_tiles(str(d))]
+    write_las(dst, *(np.concatenate([getattr(p, a) for p in parts]) for a in "xyz"),
+              dimensions={"classification": np.concatenate([p["classification"]
+                                                            for p in parts])},
+              crs="EPSG:32632", point_format=6, version="1.4", scale=0.01)
+    return dst
+
+
+@pytest.mark.parametrize("method,lake,rim", [("idw", 250.0, 667), ("idw", 380.0, 71),
+                                             ("tin", 250.0, None)])
+def test_catalog_gap_distance_is_the_single_file_default_of_the_merged_cloud(
+        tmp_path, method, lake, rim):
+    """The catalog's default gap distance was 10 mean spacings of all points (headers):
+    11.18 m here, where a single-file run of the merged cloud uses 5 ground spacings
+    (8.33 m over the 250 m lake, 11.05 m over the 380 m one): a 1–2-cell shore rim (667 /
+    71 cells) had heights in the mosaic and none in the single-file DTM. Now it is derived
+    once from every chunk's ground after the run, and the DTMs masked with it."""
+    from geomatics_toolbox.core.terrain.grid import default_max_distance
+    d = _catalog(tmp_path / "tiles", lake)
+    res = cc.run_catalog(str(d), tmp_path / "out", ground_filter="keep", dtm_method=method,
+                         cell_size=CELL, buffer=BUFFER, workers=1)
+    assert not res.failed
+    # the single-file runner on the merged cloud, all defaults (its own grid, its own gap)
+    pts, grid = read_ground(_merged_las(d, tmp_path / "merged.las"), [2], cell=CELL,
+                            units=METRIC)
+    ref = make_dtm("merged", pts, grid, dtm_method(
+        method, IdwOptions(tie_order="xy") if method == "idw" else None)).outcome.z
+    mosaic = _dtm(tmp_path / "out" / "dtm.vrt")
+    assert mosaic.shape == ref.shape == (250, 250)          # same lattice, same extent
+    assert np.array_equal(np.isfinite(mosaic), np.isfinite(ref))
+    assert res.settings["gap_distance"] == default_max_distance(grid, len(pts))
+    old = cc.Catalog.open(str(d)).default_max_distance()
+    assert old == pytest.approx(11.18, abs=0.01) and res.settings["gap_distance"] < old
+    if rim is not None:   # the cells the old gap distance gave a height (the shore rim)
+        wide = make_dtm("merged", pts, grid, dtm_method("idw", IdwOptions(tie_order="xy")),
+                        max_distance=old).outcome.z
+        assert int((np.isfinite(wide) & ~np.isfinite(ref)).sum()) == rim
+        sel = _inside(grid, cc.Catalog.open(str(d)).extent, 10.0) & np.isfinite(ref)
+        assert np.max(np.abs(mosaic[sel] - ref[sel])) <= 1e-4
+    # the chunks' stats and markers follow the masked DTMs; the .gap.npz files are gone
+    t11 = _dtm(tmp_path / "out" / "t11_dtm.tif")
+    s = next(c for c in res.chunks if c["key"] == "t11")
+    assert s["dtm_cells"] == int(np.isfinite(t11).sum())
+    assert not list((tmp_path / "out" / cc.STATE_DIR).glob("*.gap.npz"))
+
+
+@pytest.mark.parametrize("method", ["idw", "kriging", "tin"])
+def test_gap_masking_afterwards_equals_the_gridders_own_limit(method):
+    """A chunk's DTM without a limit, masked afterwards by the single-file rule, is the
+    DTM the method makes with that limit (IDW / kriging: nearest point within d; TIN:
+    triangles with an edge over 2 d dropped)."""
+    from geomatics_toolbox.core.lidar._gap import chunk_gaps, mask_with_gap
+    from geomatics_toolbox.core.terrain.grid import grid_from_extent
+    rng = np.random.default_rng(7)
+    x, y = rng.uniform(0, 60, 900), rng.uniform(0, 60, 900)
+    keep = np.hypot(x - 30, y - 30) > 9                     # a pond with no point
+    x, y = x[keep], y[keep]
+    z = 100 + 0.05 * x + np.sin(y / 7)
+    grid = grid_from_extent((0, 60, 0, 60), 1.0)
+    m = dtm_method(method, IdwOptions(tie_order="xy") if method == "idw" else None)
+    for d in (2.0, 3.5, 6.0):
+        want = m.interpolate(x, y, z, grid, max_distance=2 * d if method == "tin" else d,
+                             workers=1).z
+        got = mask_with_gap(*chunk_gaps(m, x, y, z, grid), method, d)
+        assert np.array_equal(np.isfinite(got), np.isfinite(want)), d
+        assert 0 < np.isfinite(want).sum() < grid.size
+        both = np.isfinite(want)
+        assert np.max(np.abs(got[both] - want[both])) <= 1e-4       # got: float32 copy
+
+
+def test_gap_distance_after_a_resume_is_the_clean_runs(tmp_path):
+    """A run with a failed chunk keeps each finished chunk's .gap.npz and the provisional
+    DTMs; once resumed, the DTMs are those of a run that never failed."""
+    import shutil
+    import struct
+    d = _catalog(tmp_path / "tiles", 250.0)
+    clean = cc.run_catalog(str(d), tmp_path / "clean", ground_filter="keep",
+                           cell_size=CELL, buffer=0.0, workers=1)
+    good = (d / "t00.laz").read_bytes()
+    cut = bytearray(good[:len(good) // 2])          # fails in its worker (test_catalog)
+    struct.pack_into("<q", cut, struct.unpack_from("<I", cut, 96)[0], -1)
+    (d / "t00.laz").write_bytes(bytes(cut))
+    out = tmp_path / "out"
+    first = cc.run_catalog(str(d), out, ground_filter="keep", cell_size=CELL, buffer=0.0,
+                           workers=1)
+    done = sorted({"t00", "t01", "t10", "t11"} - set(first.failed))
+    assert "t00" in first.failed and done     # (a neighbour reading its strip may fail too)
+    dry = {c["key"] for c in first.chunks if c["ground_reach"] == 0}     # t11: the lake
+    assert sorted(p.name for p in (out / cc.STATE_DIR).glob("*.gap.npz")) == [
+        f"{k}.gap.npz" for k in done if k not in dry] != []
+    assert first.settings["gap_distance"] == cc.Catalog.open(str(d)).default_max_distance()
+    (d / "t00.laz").write_bytes(good)
+    second = cc.run_catalog(str(d), out, ground_filter="keep", cell_size=CELL, buffer=0.0,
+                            workers=1)
+    assert not second.failed and sorted(second.skipped) == done
+    assert second.settings["gap_distance"] == clean.settings["gap_distance"]
+    for key in ("t00", "t01", "t10", "t11"):
+        a, b = (_dtm(p / f"{key}_dtm.tif") for p in (tmp_path / "clean", out))
+        assert np.array_equal(np.isfinite(a), np.isfinite(b)), key
+        assert np.array_equal(a[np.isfinite(a)], b[np.isfinite(b)]), key
+    assert not list((out / cc.STATE_DIR).glob("*.gap.npz"))
+    shutil.rmtree(tmp_path / "clean")
