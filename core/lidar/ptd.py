@@ -470,8 +470,9 @@ def densify(x, y, z, seeds, pool, opt, rep):
         sub = cand[test]
         start = None
         if it > 0 and cache:
-            pos = np.searchsorted(gidx, vert[test])
-            start = tin.vertex_facet[np.where(vert[test] >= 0, pos, gidx.size)]
+            v = vert[test]          # a point index, or x.size + a frame point's number
+            pos = np.where(v < x.size, np.searchsorted(gidx, v), gidx.size + v - x.size)
+            start = tin.vertex_facet[np.where(v >= 0, pos, gidx.size)]
         sel, s, d = _accepted(tin, x[sub], y[sub], z[sub], start, opt)
         if sel.size == 0 or (it > 0 and sel.size < opt.stop_fraction * gidx.size):
             return gidx, tin
@@ -481,7 +482,6 @@ def densify(x, y, z, seeds, pool, opt, rep):
         added = (sub[order[first]], s[order[first]])
         if cache:
             key[test], vert[test] = keys[s], vid[tin.simplices[s, 0]]
-            vert[vert >= x.size] = -1
         keep = ~is_ground[cand]
         cand, key, vert = cand[keep], key[keep], vert[keep]
     return np.flatnonzero(is_ground), None
