@@ -119,6 +119,35 @@ def test_accuracy_report_from_point_layer_with_check_points(qgis_processing, tmp
     assert 0 < res["CHECK_RMS_T"] < 10
 
 
+@pytest.mark.parametrize("encoding,stem", [
+    ("cp1256", "نقطة تحقق"),            # Arabic Windows, Excel "CSV"
+    ("cp1256", "ايستگاه کنترل"),        # Persian Windows (cp1256 has ي for ی)
+    ("utf-8-sig", "ایستگاه کنترل"),     # Excel "CSV UTF-8"
+    ("cp1252", "Château-Süd"),          # Western Windows
+])
+def test_gcp_names_in_a_windows_code_page_reach_the_accuracy_report(qgis_processing,
+                                                                    tmp_path, encoding,
+                                                                    stem):
+    """A GCP table saved by Excel on an Arabic or Persian machine, read here (UTF-8
+    Linux): the names were garbled in the report ('äÞØÉ ÊÍÞÞ 1', read as cp1252) or
+    the file refused (گ); they now reach the HTML and CSV reports as written."""
+    img, _, pix, mp = make_case(tmp_path)
+    names = [f"{stem} {k + 1}" for k in range(len(pix))]
+    table = tmp_path / "gcps.csv"
+    table.write_bytes((f"# CRS: {EPSG}\nid,col,row,x,y\n" + "".join(
+        f"{n},{c!r},{r!r},{x!r},{y!r}\n" for n, (c, r), (x, y) in zip(names, pix, mp))
+    ).encode(encoding))
+    html, csv = tmp_path / "r.html", tmp_path / "r.csv"
+    res = qgis_processing.run("geomatics:gcpaccuracyreport", {
+        "INPUT": str(img), "GCP_FILE": str(table), "ORDER": 2, "OUTPUT_HTML": str(html),
+        "OUTPUT_CSV": str(csv)})
+    assert res["N_GCP"] == 22
+    text = html.read_text(encoding="utf-8")
+    assert all(n in text for n in names)
+    rows = csv.read_text(encoding="utf-8-sig").splitlines()
+    assert [r.split(",")[0] for r in rows[1:]] == names
+
+
 @pytest.mark.parametrize("case, message", [
     ("no_crs", "no CRS"),
     ("order3_few", "at least 10"),
