@@ -5,7 +5,8 @@ this order:
 
 1. a UTF-16 byte-order mark → UTF-16 (Excel's "Unicode Text");
 2. a code page the file names in a first comment line, ``# encoding: cp1256``
-   (``# coding=…`` too; both readers skip ``#`` lines), or the caller's ``encoding``;
+   (``# coding=…`` too; both readers skip ``#`` lines; a UTF-8 byte-order mark wins),
+   or the caller's ``encoding``;
 3. UTF-8, with or without a byte-order mark (QGIS, Excel's "CSV UTF-8"), strictly;
 4. otherwise the Windows ANSI code page that reads the file's *names* as text: the
    machine's own page (cp1256 on Arabic/Persian Windows, cp1252 in Western locales,
@@ -259,7 +260,7 @@ def decode_text(raw: bytes, path, *, encoding: Optional[str] = None,
     nul = raw.find(b"\x00")
     if nul >= 0:
         raise _not_text(path, nul, "/".join(_pages(machine)))
-    named = encoding or _declared(raw)
+    named = encoding or (None if raw.startswith(codecs.BOM_UTF8) else _declared(raw))
     if named:
         try:
             page = codecs.lookup(named).name

@@ -96,6 +96,14 @@ def test_a_declared_code_page_is_used(tmp_path, monkeypatch, line):
     assert _both_readers(tmp_path, *raw) == ([a, b], [a, b])
 
 
+def test_a_utf8_byte_order_mark_wins_over_a_declared_page(tmp_path, monkeypatch):
+    monkeypatch.setattr(text_io, "system_code_page", lambda: None)
+    a, b = "ایستگاه یک", "Château-1"
+    raw = [("# encoding: cp1256\n" + s.format(a=a, b=b)).encode("utf-8-sig")
+           for s in (CHECK, GCPS)]
+    assert _both_readers(tmp_path, *raw) == ([a, b], [a, b])
+
+
 def test_ambiguous_names_refused_naming_the_file_and_the_fix(tmp_path, monkeypatch):
     """'ب-1' (cp1256) is 'È-1' in cp1252: both are text; no guess, a refusal."""
     monkeypatch.setattr(text_io, "system_code_page", lambda: None)
