@@ -25,7 +25,9 @@ Writes ``benchmarks/results/ground.md``:
 ``--ptd`` re-measures only PTD (its ISPRS rows, its rows on the real files scored by
 ``_ground_real``, its leave-one-sample-out over PTD_GRID on those 12 files, and its
 speed row) and merges them into the existing ``ground.md``, leaving every other row
-as it was and noting when.
+as it was and noting when. ``--stress`` merges the section of the 4 real files thinned
+to 2 / 1 / 0.5 pts/m² with 3 seeds, every filter beside the oracle (the vendor ground of
+the same subset; ``_ground_stress.py``).
 """
 from __future__ import annotations
 
@@ -434,7 +436,7 @@ def merge_ptd(text, rows, speed, quick):
 
 
 def _ground_extra(args):
-    """--real / --density / --loso12: one section each, merged into ground.md."""
+    """--real / --density / --loso12 / --stress: one section each, merged into ground.md."""
     import _ground_real as gr
 
     def merge(md):                       # re-read: other runs may have merged meanwhile
@@ -460,6 +462,14 @@ def _ground_extra(args):
         merge(gr.loso12_md(combos, folds))
     if args.density:
         merge(gr.density_md(gr.density_section(args.density), args.density))
+    if args.stress:
+        import _ground_stress as gs
+        filters = args.stress_filters.split(",")
+        rows = gs.stress_section(filters)
+        if rows is None:
+            print(f"real files not found in {gr.REAL}; stress skipped")
+        else:
+            merge(gs.stress_md(rows, filters))
     print(RESULTS.read_text(encoding="utf-8"))
     return 0
 
@@ -490,9 +500,14 @@ def main(argv=None):
     ap.add_argument("--loso12", action="store_true",
                     help="12-fold leave-one-sample-out (ISPRS + real) of the recommended "
                          "defaults (merged into ground.md)")
+    ap.add_argument("--stress", action="store_true",
+                    help="the 4 real files thinned to 2 / 1 / 0.5 pts/m² (3 seeds): DTM of "
+                         "the filters against the vendor's, beside the oracle (merged)")
+    ap.add_argument("--stress-filters", default="recommended,ptd,lsq_improved",
+                    help="comma-separated filters for --stress")
     args = ap.parse_args(argv)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
-    if args.real or args.density or args.loso12 or args.isprs_recommended:
+    if args.real or args.density or args.loso12 or args.isprs_recommended or args.stress:
         return _ground_extra(args)
     if args.ptd:
         import _ground_real as gr
