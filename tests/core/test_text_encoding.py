@@ -97,6 +97,8 @@ def test_a_declared_code_page_is_used(tmp_path, monkeypatch, line):
 
 
 def test_a_utf8_byte_order_mark_wins_over_a_declared_page(tmp_path, monkeypatch):
+    """A regression guard: this held before a836457 too (the declaration pattern did
+    not match behind the BOM); decode_text now skips the declaration explicitly."""
     monkeypatch.setattr(text_io, "system_code_page", lambda: None)
     a, b = "ایستگاه یک", "Château-1"
     raw = [("# encoding: cp1256\n" + s.format(a=a, b=b)).encode("utf-8-sig")
