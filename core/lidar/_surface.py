@@ -29,6 +29,7 @@ from scipy import ndimage
 from scipy.spatial import cKDTree
 
 from . import _lattice_knn as K  # noqa: N812
+from ..system import release_free_memory
 from . import _raster as R  # noqa: N812
 
 __all__ = ["grow_ground", "plane_fit", "plane_fit_where", "plane_gradient", "tangent_fill"]
@@ -316,7 +317,7 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     # valid cells with an invalid one among their 8 neighbours (a 3 x 3 minimum: the same
     # cells as dilating the invalid ones, in two separable passes)
     ring = valid & ~ndimage.minimum_filter(valid, size=3, mode="nearest")
-    rr, cc = np.nonzero(ring)
+    rr, cc = _nonzero(ring)                          # int32 where it fits, same order
     if rr.size < 3:
         return R.fill_tin(z, valid)
     k = min(int(neighbours), rr.size)
@@ -347,6 +348,7 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         else:
             bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
     del rr, cc, ring
+    release_free_memory()       # the temporaries above: their pages back before the batches
     for s in range(0, hr.size, BATCH):
         r, c = hr[s:s + BATCH], hc[s:s + BATCH]
         d2, dc, dr, j = near if near is not None else K.nearest(scan, r, c, k, trees)

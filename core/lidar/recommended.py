@@ -402,13 +402,15 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None)
         obj = grow_ground(zmin, obj, skip, lambda read: _fill_at(zmin, ~(obj | skip), read, grid,
                                                                opt, cache, remake is not None),
                           grid.cell, opt)
+        del skip
         _trim()
     if info is not None:
         info.update(lows=lows, slope=slope, objects=obj)
-    bad = obj | low | empty
-    if bad.all():
-        bad = low | empty
-    return fill_holes(zmin, ~bad, grid, opt, need, cache, overwrite=remake is not None)
+    good = obj | low | empty                         # the bad cells, negated in place
+    if good.all():
+        good = low | empty
+    np.logical_not(good, out=good)
+    return fill_holes(zmin, good, grid, opt, need, cache, overwrite=remake is not None)
 
 
 def _fill_at(z, valid, read, grid, opt, cache, own):

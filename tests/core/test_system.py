@@ -188,3 +188,25 @@ def test_windows_memory_from_global_memory_status(monkeypatch):
     monkeypatch.setattr(sys, "platform", "win32")
     assert system.available_memory() == 6 << 30
     assert calls == [64]                      # sizeof(MEMORYSTATUSEX) on every Windows
+
+
+def test_release_free_memory_is_glibc_only_and_harmless_elsewhere(monkeypatch):
+    """malloc_trim on Linux/glibc; on Windows or macOS no C library is opened, False."""
+    import ctypes
+    monkeypatch.setattr(system, "_TRIM", None)
+    if sys.platform.startswith("linux"):
+        try:
+            want = callable(ctypes.CDLL("libc.so.6").malloc_trim)
+        except (OSError, AttributeError):            # musl or another C library
+            want = False
+        assert system.release_free_memory() is want
+        assert system.release_free_memory() is want     # looked up once, callable again
+    for platform in ("win32", "darwin"):
+        monkeypatch.setattr(system, "_TRIM", None)
+        monkeypatch.setattr(system.sys, "platform", platform)
+
+        def no_cdll(*a, **k):
+            raise AssertionError("no C library opened off Linux")
+        monkeypatch.setattr(system.ctypes, "CDLL", no_cdll)
+        assert system.release_free_memory() is False
+        assert system._TRIM == []
