@@ -28,8 +28,8 @@ import numpy as np
 from scipy import ndimage
 from scipy.spatial import cKDTree
 
-from . import _lattice_knn as K  # noqa: N812
 from ..system import release_free_memory
+from . import _lattice_knn as K  # noqa: N812
 from . import _raster as R  # noqa: N812
 
 __all__ = ["grow_ground", "plane_fit", "plane_fit_where", "plane_gradient", "tangent_fill"]
