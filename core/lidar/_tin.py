@@ -128,7 +128,7 @@ class Tin:
         Vertices; distinct xy positions.
     """
 
-    def __init__(self, x, y, z, topology=None):
+    def __init__(self, x, y, z, topology=None, known=None):
         self.xy = np.column_stack((x, y))
         self.z = np.asarray(z, dtype=float)
         if topology is None:
@@ -140,13 +140,18 @@ class Tin:
         self.simplices, self.neighbors = s, nb
         self.vertex_facet = np.zeros(self.z.size, dtype=np.int64)
         self.vertex_facet[s.ravel()] = np.repeat(np.arange(s.shape[0]), 3)
-        c = np.concatenate((self.xy[s], self.z[s][..., None]), axis=2)
-        n = np.cross(c[:, 1] - c[:, 0], c[:, 2] - c[:, 0])
-        n /= np.linalg.norm(n, axis=1)[:, None] + 1e-300
-        n *= np.where(n[:, 2] < 0, -1.0, 1.0)[:, None]
-        self.normal, self.corners = n, c
-        e = np.stack([np.hypot(*(c[:, i, :2] - c[:, (i + 1) % 3, :2]).T) for i in range(3)])
-        self.edge = e.max(axis=0)
+        if known is None:
+            self.corners, self.normal, self.edge = _geometry(self.xy, self.z, s)
+        else:       # (rows, corners, normal, edge) of facets an insert left as they were
+            rows, c, n, e = known
+            self.corners, self.normal = np.empty((s.shape[0], 3, 3)), np.empty((s.shape[0], 3))
+            self.edge = np.empty(s.shape[0])
+            self.corners[rows], self.normal[rows], self.edge[rows] = c, n, e
+            redo = np.ones(s.shape[0], dtype=bool)
+            redo[rows] = False
+            redo = np.flatnonzero(redo)
+            self.corners[redo], self.normal[redo], self.edge[redo] = _geometry(
+                self.xy, self.z, s[redo])
         self._tree = None
         self._opposite = None
 
@@ -292,6 +297,16 @@ class Tin:
         return d, dz, angle, facet
 
 
+def _geometry(xy, z, s):
+    """Corners (x, y, z), unit upward normals and longest horizontal edge of facets ``s``."""
+    c = np.concatenate((xy[s], z[s][..., None]), axis=2)
+    n = np.cross(c[:, 1] - c[:, 0], c[:, 2] - c[:, 0])
+    n /= np.linalg.norm(n, axis=1)[:, None] + 1e-300
+    n *= np.where(n[:, 2] < 0, -1.0, 1.0)[:, None]
+    e = np.stack([np.hypot(*(c[:, i, :2] - c[:, (i + 1) % 3, :2]).T) for i in range(3)])
+    return c, n, e.max(axis=0)
+
+
 def _ccw(xy, s, nb):
     """Facets ``s`` and neighbours ``nb`` reordered counter-clockwise (in place)."""
     p = xy[s]
@@ -418,7 +433,11 @@ def _splice(tin, x, y, z, s_old, gone, new, ek, boundary, n_added):
     o = out >= 0
     slot = np.argmax(tin.neighbors[out[o]] == f[o, None], axis=1)
     nb[newid[out[o]], slot] = nk + e[o] // 3
-    return Tin(x, y, z, topology=(np.concatenate((s_old[~gone], new)), nb))
+    # facets kept with the same vertex heights (frame points' heights change) keep their
+    # geometry: the same numbers from the same vertices in the same order
+    same = np.flatnonzero(~gone & (tin.z[tin.simplices] == z[s_old]).all(axis=1))
+    known = (newid[same], tin.corners[same], tin.normal[same], tin.edge[same])
+    return Tin(x, y, z, topology=(np.concatenate((s_old[~gone], new)), nb), known=known)
 
 
 #: Facets steeper than this (degrees) and rising more than ``max_distance`` span a
