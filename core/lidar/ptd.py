@@ -496,13 +496,21 @@ def _next_tin(x, y, z, is_ground, opt, tin, gidx, added):
     as a Qhull rebuild, in another order), a rebuild when that does not check out.
     """
     new = np.flatnonzero(is_ground)
-    vx, vy, vz = with_corners(x, y, z, new, opt.frame)
-    if tin is not None:
-        o2n = np.r_[np.searchsorted(new, gidx), new.size + np.arange(tin.z.size - gidx.size)]
-        nt = _tin.insert(tin, vx, vy, vz, o2n, np.searchsorted(new, added[0]), added[1])
-        if nt is not None:
-            return nt, new
-    return _tin.Tin(vx, vy, vz), new
+    if tin is None or CORNER_NEIGHBOURS != 1:
+        tin = _tin.Tin(*with_corners(x, y, z, new, opt.frame))
+        d, i = _tin.cKDTree(np.column_stack((x[new], y[new]))).query(tin.xy[new.size:])
+        tin.frame_near = (d, new[i])
+        return tin, new
+    # the frame (fixed) takes the height of its nearest ground point: before or added
+    q, (d, near) = tin.xy[gidx.size:], tin.frame_near
+    d1, i = _tin.cKDTree(np.column_stack((x[added[0]], y[added[0]]))).query(q)
+    d, near = np.where(d1 < d, d1, d), np.where(d1 < d, added[0][i], near)
+    vx, vy, vz = np.r_[x[new], q[:, 0]], np.r_[y[new], q[:, 1]], np.r_[z[new], z[near]]
+    o2n = np.r_[np.searchsorted(new, gidx), new.size + np.arange(q.shape[0])]
+    nt = _tin.insert(tin, vx, vy, vz, o2n, np.searchsorted(new, added[0]), added[1])
+    nt = _tin.Tin(vx, vy, vz) if nt is None else nt
+    nt.frame_near = (d, near)
+    return nt, new
 
 
 def _accepted(tin, cx, cy, cz, start, opt):
