@@ -32,10 +32,10 @@ each iteration then inserts its accepted points (:func:`~._tin.insert`: only the
 whose circumcircle holds a new point are re-triangulated, the same facets as a Qhull
 rebuild), and a candidate rejected in a facet that survives (same three vertices) is
 not tested again; the others are located by a vectorised walk from their previous facet
-(:class:`~._tin.Tin`, no scipy barycentric transform). On one core 131,000-142,000
-points/s (CPU time, load 5-7; 2.7-3.5 x the rebuild-per-iteration code alternated in the
-same script, 43,000-49,000) on a 1 M-point synthetic tile at 20 pts/m²
-(``benchmarks/results/ground.md``; was 4,810).
+(:class:`~._tin.Tin`, no scipy barycentric transform). On one core 186,000-188,000
+points/s (CPU time, load 4-5; the rebuild-per-iteration code gave 43,000-49,000 at load
+5-7, alternated in one script with a 131,000-149,000 state of this one) on a 1 M-point
+synthetic tile at 20 pts/m² (``benchmarks/results/ground.md``; was 4,810).
 
 Measured on the 8 ISPRS filter-test samples at the defaults: mean total error
 4.55 % (was 8.07 %; Axelsson published 4.82 % over all 15 samples, 6.32 % over
