@@ -326,20 +326,24 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         out[~valid] = np.nan
     else:
         out = np.where(valid, z, np.nan)
-    hr, hc = _nonzero(~valid if need is None else ~valid & need)
+    holes = ~valid if need is None else ~valid & need
     key = (z.shape, k, int(radius), float(cell), float(reach))
     d2k = np.full(z.shape, _NONE, np.uint16) if cache is not None else None
-    same = _unchanged(prev, key, z, valid, hr, hc, radius)
+    # the hole cells' indices whole only when a previous fill may keep some of them, or
+    # few: else band by band in the loop below (millions of them at low density)
+    whole = _may_keep(prev, key) or np.count_nonzero(holes) <= BATCH
+    hr, hc = _nonzero(holes) if whole else (None, None)
+    same = _unchanged(prev, key, z, valid, hr, hc, radius) if whole else None
     if same is not None:
         out[hr[same], hc[same]] = prev["out"][hr[same], hc[same]]
         d2k[hr[same], hc[same]] = prev["d2k"][hr[same], hc[same]]
         hr, hc = hr[~same], hc[~same]
     prev = None                                      # the previous fill's rasters: no longer read
     trees, near = [], None      # the KD-tree, built when a hole cell is deeper than the scan
-    if hr.size:
+    if hr is None or hr.size:
         bz = z[rr, cc]
         scan = K.scan_lattice(ring)
-        if hr.size <= BATCH:    # few holes (refine passes): gradients only where read
+        if hr is not None and hr.size <= BATCH:  # few holes (refine): gradients where read
             near = K.nearest(scan, hr, hc, k, trees)
             used = np.unique(near[3])
         if near is not None and used.size * (2 * radius + 1) ** 2 < z.size // 2:
@@ -349,8 +353,7 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
             bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
     del rr, cc, ring
     release_free_memory()       # the temporaries above: their pages back before the batches
-    for s in range(0, hr.size, BATCH):
-        r, c = hr[s:s + BATCH], hc[s:s + BATCH]
+    for r, c in _batches(holes, hr, hc):
         d2, dc, dr, j = near if near is not None else K.nearest(scan, r, c, k, trees)
         if d2k is not None:
             last = d2[:, -1]
@@ -372,6 +375,28 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     if cache is not None:
         cache.update(key=key, valid=valid.copy(), out=out, d2k=d2k)
     return out
+
+
+#: Cells per band of rows in which :func:`tangent_fill` lists its hole cells when it does
+#: not hold them all at once.
+HOLE_BAND = 1 << 20
+
+
+def _batches(holes, hr, hc):
+    """Rows and columns of the hole cells, :data:`BATCH` at a time, in row-major order.
+
+    From the lists ``(hr, hc)``, or (when None) from the raster ``holes`` band by band.
+    """
+    if hr is not None:
+        for s in range(0, hr.size, BATCH):
+            yield hr[s:s + BATCH], hc[s:s + BATCH]
+        return
+    step = max(1, HOLE_BAND // max(1, holes.shape[1]))
+    for b0 in range(0, holes.shape[0], step):
+        r, c = _nonzero(holes[b0:b0 + step])
+        r += b0
+        for s in range(0, r.size, BATCH):
+            yield r[s:s + BATCH], c[s:s + BATCH]
 
 
 def _index_type(shape):
@@ -408,6 +433,11 @@ _FEW = 0.01
 _NONE = np.iinfo(np.uint16).max
 
 
+def _may_keep(prev, key):
+    """A previous fill (``prev``, from a cache) of the same raster and parameters."""
+    return bool(prev) and prev.get("key") == key
+
+
 def _unchanged(prev, key, z, valid, hr, hc, radius):
     """Hole cells whose value in the previous fill (``prev``) is still exact.
 
@@ -422,7 +452,7 @@ def _unchanged(prev, key, z, valid, hr, hc, radius):
     ndarray of bool or None
         Per hole cell ``(hr, hc)``: the previous value can be kept.
     """
-    if not prev or prev.get("key") != key or hr.size == 0:
+    if not _may_keep(prev, key) or hr.size == 0:
         return None
     old_valid, old_out = prev["valid"], prev["out"]
     with np.errstate(invalid="ignore"):

@@ -241,3 +241,17 @@ def test_low_cells_banded_blocks_equal_the_padded_and_expanded_rasters(shape):
         got = L.low_cells(zmin, 1.0, anchor=anchor)
         assert canopy.any() and got.canopy_scale > 0
         np.testing.assert_array_equal(got.low, want)
+
+
+def test_tangent_fill_lists_its_holes_by_bands_with_the_same_values(monkeypatch):
+    """More holes than a batch: listed band by band (bands of 3 rows here), batched."""
+    z, valid = _terrain((300, 333), 13, holes=0.45)
+    zg = np.where(valid, z, np.nan)
+    need = np.random.default_rng(14).random(z.shape) < 0.8
+    assert np.count_nonzero(~valid & need) > 2 * S.BATCH
+    monkeypatch.setattr(S, "HOLE_BAND", 1000)
+    got = S.tangent_fill(zg.copy(), valid, 1.0, need=need)
+    monkeypatch.setattr(S, "BATCH", 10 ** 9)           # one batch of the whole list
+    want = S.tangent_fill(zg.copy(), valid, 1.0, need=need)
+    np.testing.assert_array_equal(got, want)
+    assert np.isfinite(want[need]).all()
