@@ -434,7 +434,7 @@ _NONE = np.iinfo(np.uint16).max
 
 
 def _may_keep(prev, key):
-    """A previous fill (``prev``, from a cache) of the same raster and parameters."""
+    """Return whether ``prev`` (a cache) is a previous fill of the same raster and parameters."""
     return bool(prev) and prev.get("key") == key
 
 
