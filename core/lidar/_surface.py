@@ -326,18 +326,9 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         out[~valid] = np.nan
     else:
         out = np.where(valid, z, np.nan)
-    holes = ~valid if need is None else ~valid & need
     key = (z.shape, k, int(radius), float(cell), float(reach))
     d2k = np.full(z.shape, _NONE, np.uint16) if cache is not None else None
-    # the hole cells' indices whole only when a previous fill may keep some of them, or
-    # few: else band by band in the loop below (millions of them at low density)
-    whole = _may_keep(prev, key) or np.count_nonzero(holes) <= BATCH
-    hr, hc = _nonzero(holes) if whole else (None, None)
-    same = _unchanged(prev, key, z, valid, hr, hc, radius) if whole else None
-    if same is not None:
-        out[hr[same], hc[same]] = prev["out"][hr[same], hc[same]]
-        d2k[hr[same], hc[same]] = prev["d2k"][hr[same], hc[same]]
-        hr, hc = hr[~same], hc[~same]
+    holes, hr, hc = _holes(prev, key, z, valid, need, out, d2k, radius)
     prev = None                                      # the previous fill's rasters: no longer read
     trees, near = [], None      # the KD-tree, built when a hole cell is deeper than the scan
     if hr is None or hr.size:
@@ -375,6 +366,25 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     if cache is not None:
         cache.update(key=key, valid=valid.copy(), out=out, d2k=d2k)
     return out
+
+
+def _holes(prev, key, z, valid, need, out, d2k, radius):
+    """Return the hole cells to compute: ``(holes, hr, hc)``, the raster and their lists.
+
+    The lists are made only when a previous fill may keep some of the holes (those kept
+    are written into ``out`` and ``d2k`` and left out), or when they are few; else they
+    are None and :func:`_batches` lists the holes band by band (at low density millions).
+    """
+    holes = ~valid if need is None else ~valid & need
+    if not (_may_keep(prev, key) or np.count_nonzero(holes) <= BATCH):
+        return holes, None, None
+    hr, hc = _nonzero(holes)
+    same = _unchanged(prev, key, z, valid, hr, hc, radius)
+    if same is not None:
+        out[hr[same], hc[same]] = prev["out"][hr[same], hc[same]]
+        d2k[hr[same], hc[same]] = prev["d2k"][hr[same], hc[same]]
+        hr, hc = hr[~same], hc[~same]
+    return holes, hr, hc
 
 
 #: Cells per band of rows in which :func:`tangent_fill` lists its hole cells when it does
@@ -562,66 +572,3 @@ def _grow_candidates(b, rms, centre, gx, gy, zmin, obj, skip, cell, opt):
         cand = (obj[b] & ~skip[b] & (rms <= opt.grow_rms) & (np.abs(z - centre) <= tol)
                 & (steep <= opt.grow_max_slope * cell))
     return cand, tol
-
-
-def trend_surface(zf, grid, opt, subtract=False):
-    """Smooth large-scale terrain trend removed before the progressive opening.
-
-    Opening ``z - trend`` and adding the trend back is an opening whose flat
-    structuring element is tilted along the regional slope (a plane is removed
-    exactly, objects keep their height above it), so on hillsides the opening and its
-    slope tolerance act on the height above the regional terrain rather than the
-    height above a horizontal. The trend is the opening of radius ``trend_window``
-    (1.5 x the default largest window, wider than any object), box-averaged over
-    ``2 * trend_smooth + 1`` cells. Measured on the ISPRS samples it mostly helps the
-    steep urban samp11 (at the defaults Type II 13.7 % instead of 17.2 %, total
-    8.92 % instead of 9.89 %).
-
-    Parameters
-    ----------
-    zf : ndarray
-        Filled minimum raster.
-    grid : Grid
-        Its grid.
-    opt : RecommendedOptions
-        Options (``trend_window``, ``trend_smooth``).
-    subtract : bool
-        Subtract the trend from ``zf`` in place, band by band, and return ``zf`` (the
-        trend raster is never held whole).
-
-    Returns
-    -------
-    ndarray
-        The trend raster (or ``zf - trend``).
-    """
-    r = max(1, int(np.ceil(opt.trend_window / grid.cell)))
-    k = 2 * max(1, int(np.ceil(opt.trend_smooth / grid.cell))) + 1
-    return R.box_mean(R.opening(zf, r), k, subtract_from=zf if subtract else None)
-
-
-def terrain_slope(zf, grid, opt):
-    """Per-cell slope tolerance from the terrain under a large-window opening.
-
-    The opening with the largest window removes objects; its gradient, averaged over
-    that window, is the local terrain slope t. Tolerance = clip(slope_factor * t,
-    slope_min, slope_max): flat towns keep ``slope_min``, steep terrain gets more.
-
-    Parameters
-    ----------
-    zf : ndarray
-        Filled minimum raster.
-    grid : Grid
-        Its grid.
-    opt : RecommendedOptions
-        Options.
-
-    Returns
-    -------
-    ndarray
-        Slope tolerance per cell (rise/run).
-    """
-    r = max(1, int(np.ceil(opt.max_window / grid.cell)))
-    t = R.slope(R.opening(zf, r), grid.cell)
-    t = R.box_mean(t, 2 * r + 1)
-    t *= opt.slope_factor
-    return np.clip(t, opt.slope_min, opt.slope_max, out=t)

@@ -88,7 +88,8 @@ from . import _raster as R  # noqa: N812
 from . import _surface as S  # noqa: N812
 from ._filter import OptionsFilter
 from ._filter import options_or_default as _options
-from ._surface import grow_ground, terrain_slope, trend_surface
+from ._surface import grow_ground
+from ._terrain import terrain_slope, trend_surface
 
 __all__ = ["RecommendedOptions", "classify", "derive", "recommended_filter", "OptionsFilter",
            "Cancelled", "CITATION", "TITLE"]
