@@ -114,11 +114,11 @@ def stress_md(rows, filters=FILTERS):
     fail = [k for k, fr in by.items() if "recommended" in fr and fr["recommended"]["bad"] > 1.0]
     ok_oracle = [k for k in fail if by[k]["oracle"]["bad"] <= 1.0]
     L += ["", f"Recommended: {len(rec) - len(fail)} of {len(rec)} thinned clouds with at most "
-          f"1 % of the cells off by more than 1 m; the {len(fail)} others: "
+          f"1 % of the cells off by more than 1 m; the others ({len(fail)}): "
           + (", ".join(f"{k[0]} {k[1]:g} pts/m² seed {k[2]} "
                        f"({by[k]['recommended']['rmse']:.2f} m / "
                        f"{by[k]['recommended']['bad']:.2f} %)" for k in fail) or "none")
-          + f" ({len(ok_oracle)} of them where the oracle stays within 1 %). Why the "
-          "recommended filter keeps roofs of thinned fusa: DEVELOPERS.md, \"The recommended "
-          "ground filter\", known limitation."]
+          + f" ({len(ok_oracle)} of them where the oracle stays within 1 %). Walls in "
+          "sparse clouds (why fusa thinned failed before the wall rule): DEVELOPERS.md, "
+          "\"The recommended ground filter\"."]
     return "\n".join(L) + "\n"

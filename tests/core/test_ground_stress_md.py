@@ -44,5 +44,5 @@ def test_stress_table_counts_the_clouds_over_one_percent():
     assert "| f | 0.5 | 2 | 200 | 0.20 / 0.00 | 0.20 / 2.50 |" in lines
     assert "| **CPU s** | | | | 1.5 | 1.5 |" in lines
     assert ("Recommended: 1 of 3 thinned clouds with at most 1 % of the cells off by more "
-            "than 1 m; the 2 others: f 0.5 pts/m² seed 2 (0.20 m / 2.50 %), f 0.5 pts/m² "
+            "than 1 m; the others (2): f 0.5 pts/m² seed 2 (0.20 m / 2.50 %), f 0.5 pts/m² "
             "seed 3 (0.30 m / 1.50 %) (1 of them where the oracle stays within 1 %).") in md
