@@ -135,7 +135,8 @@ def test_gcp_names_in_a_windows_code_page_reach_the_accuracy_report(qgis_process
     names = [f"{stem} {k + 1}" for k in range(len(pix))]
     table = tmp_path / "gcps.csv"
     table.write_bytes((f"# CRS: {EPSG}\nid,col,row,x,y\n" + "".join(
-        f"{n},{c!r},{r!r},{x!r},{y!r}\n" for n, (c, r), (x, y) in zip(names, pix, mp))
+        f"{n},{float(c)!r},{float(r)!r},{float(x)!r},{float(y)!r}\n"   # numpy 2: no np.float64(..)
+        for n, (c, r), (x, y) in zip(names, pix, mp))
     ).encode(encoding))
     html, csv = tmp_path / "r.html", tmp_path / "r.csv"
     res = qgis_processing.run("geomatics:gcpaccuracyreport", {
