@@ -33,25 +33,17 @@ def data(tmp_path_factory):
 
 
 @pytest.fixture
-def arabic_ui(qgis_app):
-    """QGIS interface language Arabic: the locale override the plugin reads and its
-    Qt translations installed, as the plugin does at start-up in an Arabic QGIS."""
+def arabic_ui(arabic_ui):
+    """QGIS interface language Arabic (tests/conftest.py's locale override) with the
+    plugin's Qt translations installed, as the plugin does at start-up in an Arabic QGIS."""
     from pathlib import Path
 
-    from qgis.core import QgsSettings
     from qgis.PyQt.QtCore import QCoreApplication, QTranslator
     translator = QTranslator()
     qm = Path(__file__).resolve().parents[2] / "i18n" / "geomatics_toolbox_ar.qm"
     assert translator.load(str(qm)), "run `make qm` first"
     QCoreApplication.installTranslator(translator)
-    settings = QgsSettings()
-    old = (settings.value("locale/overrideFlag", False, type=bool),
-           settings.value("locale/userLocale", ""))
-    settings.setValue("locale/overrideFlag", True)
-    settings.setValue("locale/userLocale", "ar")
     yield
-    settings.setValue("locale/overrideFlag", old[0])
-    settings.setValue("locale/userLocale", old[1])
     QCoreApplication.removeTranslator(translator)
 
 
