@@ -34,7 +34,7 @@ from ..terrain.dtm import (
     register_dtm_method,
 )
 from ..terrain.grid import GridSpec
-from ._gap import chunk_gaps, gap_path, ground_summary, mask_with_gap
+from ._gap import chunk_gaps, gap_path, ground_summary, mask_with_gap, write_marker
 from .filters import (
     GROUND_FILTERS,
     RECOMMENDED_FILTER,
@@ -413,8 +413,7 @@ def process_chunk(task: ChunkTask, *strips) -> dict:
     stats.update(phases=ph, seconds=sum(v[0] for v in ph.values()),
                  cpu_seconds=sum(v[1] for v in ph.values()), worker=_worker_name(),
                  peak_rss_mb=peak_rss_mb())
-    with open(task.outputs["DONE"], "w", encoding="utf-8") as fh:
-        json.dump(stats, fh)
+    write_marker(task, stats)
     return stats
 
 

@@ -33,7 +33,7 @@ from ..io.raster import write_geotiff
 from ..terrain.grid import GridSpec, default_max_distance, grid_from_extent
 
 __all__ = ["GAP_SUFFIX", "apply_gap", "chunk_gaps", "derived_gap", "gap_path",
-           "ground_summary", "mask_with_gap"]
+           "ground_summary", "mask_with_gap", "write_marker"]
 
 GAP_SUFFIX = ".gap.npz"
 _DONE = ".done.json"
@@ -146,12 +146,21 @@ def apply_gap(tasks, chunks: List[dict], distance: float, *, method_key: str,
         _update_marker(task, s)
 
 
-def _update_marker(task, stats: dict) -> None:
+def write_marker(task, stats: dict) -> None:
+    """Write the chunk's done marker ``stats`` atomically.
+
+    Written under a temporary name, then renamed: a crash leaves the previous marker or
+    none, never a truncated one (the worker's marker and the gap pass's update alike).
+    """
     done = task.outputs["DONE"]
     tmp = done + ".tmp"
     with open(tmp, "w", encoding="utf-8") as fh:
-        json.dump({k: v for k, v in stats.items() if k != "status" or v != "skipped"}, fh)
+        json.dump(stats, fh)
     os.replace(tmp, done)
+
+
+def _update_marker(task, stats: dict) -> None:
+    write_marker(task, {k: v for k, v in stats.items() if k != "status" or v != "skipped"})
 
 
 def drop_gap_files(tasks) -> None:
