@@ -360,6 +360,16 @@ class GeomaticsAlgorithm(QgsProcessingAlgorithm):
     #: REPORT_LANGUAGE options: index -> language code ('' = the QGIS interface language)
     REPORT_LANGUAGES = ("", "en", "ar", "fa")
 
+    def add_report_output(self, name: str, label: str, *,
+                          create_by_default: bool = False) -> None:
+        """Add the optional HTML report destination ``name`` (one definition for every
+        algorithm: the file filter, optional, created only when asked unless
+        ``create_by_default``)."""
+        from qgis.core import QgsProcessingParameterFileDestination
+        self.add(QgsProcessingParameterFileDestination(
+            name, label, self.tr("HTML files (*.html)"), optional=True,
+            createByDefault=create_by_default))
+
     def add_report_language(self) -> None:
         """Add REPORT_LANGUAGE (advanced enum; default: the QGIS interface language) and
         the optional REPORT_PROJECT and REPORT_OPERATOR shown at the top of reports."""

@@ -105,9 +105,7 @@ class BuildingsAlgorithm(GeomaticsAlgorithm):
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_OBJ, self.tr("3D model for viewers (OBJ)"), OBJ_FILTER,
             optional=True, createByDefault=False))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Building footprints report"), self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=False))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("Building footprints report"))
         self.add_report_language()
         for name, label in (("N_BUILDINGS", self.tr("Buildings")),
                             ("TOTAL_AREA", self.tr("Total footprint area (m²)")),

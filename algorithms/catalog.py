@@ -9,7 +9,6 @@ from qgis.core import (
     QgsProcessingOutputRasterLayer,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterEnum,
-    QgsProcessingParameterFileDestination,
     QgsProcessingParameterFolderDestination,
     QgsProcessingParameterMultipleLayers,
     QgsProcessingParameterString,
@@ -139,9 +138,8 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
         self.add_report_language()
         self.add(QgsProcessingParameterFolderDestination(
             self.OUTPUT_FOLDER, self.tr("Output folder")))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Tile catalog report"), self.tr("HTML files (*.html)"),
-            optional=True))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("Tile catalog report"),
+                               create_by_default=True)
         self.addOutput(QgsProcessingOutputRasterLayer(
             self.OUTPUT_VRT, self.tr("DTM mosaic (VRT)")))
         for name, label in ((self.N_TILES, self.tr("Tiles")),

@@ -87,9 +87,7 @@ class ClassifyAlgorithm(GeomaticsAlgorithm):
         self.add_report_language()
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT, self.tr("Classified point cloud"), LAS_OUT_FILTER))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Classification report"), self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=False))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("Classification report"))
         for name, label in (("N_POINTS", self.tr("Points read")),
                             ("N_GROUND", self.tr("Ground points (class 2)")),
                             ("N_VEGETATION", self.tr("Vegetation points (classes 3-5)")),

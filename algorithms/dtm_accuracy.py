@@ -15,7 +15,6 @@ from qgis.core import (
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterField,
     QgsProcessingParameterFile,
-    QgsProcessingParameterFileDestination,
     QgsProcessingParameterRasterLayer,
     QgsProcessingParameterVectorDestination,
     QgsWkbTypes,
@@ -202,9 +201,8 @@ class DtmAccuracyAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
         self.add(QgsProcessingParameterVectorDestination(
             self.OUTPUT, self.tr("Residuals"), QgsProcessing.TypeVectorPoint, optional=True,
             createByDefault=True))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("DTM accuracy report"), self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=True))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("DTM accuracy report"),
+                               create_by_default=True)
         self.add_report_language()
         for name, _, label in NUMBERS:
             self.addOutput(QgsProcessingOutputNumber(name, self.tr(label)))  # i18n: noop-list

@@ -8,7 +8,6 @@ from qgis.core import (
     QgsProcessing,
     QgsProcessingOutputNumber,
     QgsProcessingParameterFile,
-    QgsProcessingParameterFileDestination,
     QgsProcessingParameterRasterDestination,
     QgsProcessingParameterRasterLayer,
     QgsProcessingParameterString,
@@ -169,9 +168,7 @@ class ElevationChangeAlgorithm(GeomaticsAlgorithm):
         self.add(QgsProcessingParameterVectorDestination(
             self.OUTPUT_POLYGONS, self.tr("Change polygons"), optional=True,
             createByDefault=True))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Elevation change report"), self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=False))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("Elevation change report"))
         self.add_report_language()
         for name, label in (("LOD", self.tr("Level of detection LoD95 (m)")),
                             ("FILL_VOLUME", self.tr("Fill volume above the LoD (m³)")),

@@ -86,10 +86,7 @@ class GroundFilterAccuracyAlgorithm(GeomaticsAlgorithm):
         self.add(QgsProcessingParameterString(
             self.REFERENCE_GROUND_CLASSES, self.tr("Reference ground classes"), "2"))
         self.add_report_language()
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Ground filter accuracy report"),
-            self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=False))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("Ground filter accuracy report"))
         self.add(QgsProcessingParameterFileDestination(
             self.ERROR_OUTPUT, self.tr("Per-point error layer (user_data: 0 correct, "
                                        "1 Type I, 2 Type II)"),

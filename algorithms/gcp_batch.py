@@ -72,9 +72,8 @@ class RectifyBatchAlgorithm(TransformationParams, GeomaticsAlgorithm):
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_CSV, self.tr("Summary table"), self.tr("CSV files (*.csv)"),
             optional=True, createByDefault=True))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Batch rectification report"), self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=True))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("Batch rectification report"),
+                               create_by_default=True)
         self.add_report_language()
         self.addOutput(QgsProcessingOutputNumber("N_IMAGES", self.tr("Images found")))
         self.addOutput(QgsProcessingOutputNumber("N_RECTIFIED", self.tr("Images rectified")))

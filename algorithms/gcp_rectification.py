@@ -493,9 +493,8 @@ class RectifyGcpAlgorithm(_GcpBase):
                         advanced=True)
         self.add(QgsProcessingParameterRasterDestination(self.OUTPUT,
                                                          self.tr("Rectified image")))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("GCP rectification report"), self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=True))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("GCP rectification report"),
+                               create_by_default=True)
         self.add_report_language()
         self.add_numbers_outputs()
 
@@ -588,9 +587,8 @@ class GcpAccuracyReportAlgorithm(_GcpBase):
         self.add_number(self.IMAGE_HEIGHT, self.tr("Image height (px) if no image is "
                                                    "given"),
                         minimum=0, integer=True, optional=True, advanced=True)
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("GCP accuracy report"), self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=True))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("GCP accuracy report"),
+                               create_by_default=True)
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_CSV, self.tr("Residuals table"), self.tr("CSV files (*.csv)"),
             optional=True, createByDefault=False))

@@ -63,9 +63,7 @@ class _GroundCommon(LidarFilterMixin):
         self.add(QgsProcessingParameterFileDestination(
             self.GROUND_OUTPUT, self.tr("Ground points"), LAS_OUT_FILTER, optional=True,
             createByDefault=False))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Ground filter report"), self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=False))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("Ground filter report"))
         for name, label in (("N_POINTS", self.tr("Points read")),
                             ("N_GROUND", self.tr("Ground points (class 2)")),
                             ("N_NONGROUND", self.tr("Non-ground points (class 1)")),

@@ -16,7 +16,6 @@ from qgis.core import (
     QgsProcessingParameterEnum,
     QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFeatureSource,
-    QgsProcessingParameterFileDestination,
     QgsWkbTypes,
 )
 from qgis.PyQt.QtCore import QVariant
@@ -210,9 +209,7 @@ class GsdCalculatorAlgorithm(GeomaticsAlgorithm):
                         minimum=0.0, maximum=99.9, optional=True, advanced=True)
         self.add_number(self.SIDE_OVERLAP, self.tr("Side overlap (%) [extension]"),
                         minimum=0.0, maximum=99.9, optional=True, advanced=True)
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("GSD calculator report"), self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=False))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("GSD calculator report"))
         self.add_report_language()
         for _, out, unit in NUMERIC_OUTPUTS:
             self.addOutput(QgsProcessingOutputNumber(out, f"{out} ({unit})" if unit else out))

@@ -5,7 +5,6 @@ import os
 
 from qgis.core import (
     QgsProcessingOutputNumber,
-    QgsProcessingParameterFileDestination,
     QgsProcessingParameterRasterDestination,
     QgsProcessingParameterString,
 )
@@ -67,10 +66,7 @@ class LidarQaAlgorithm(GeomaticsAlgorithm):
             self.GROUND_CLASSES, self.tr("Ground classes"), defaultValue="2"), advanced=True)
         self.add(QgsProcessingParameterRasterDestination(
             self.OUTPUT, self.tr("Density rasters")))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Point density and quality report"),
-            self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=False))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("Point density and quality report"))
         self.add_report_language()
         for name, label in (("DENSITY", self.tr("Density of all returns (pts/m²)")),
                             ("GROUND_DENSITY", self.tr("Ground density (pts/m²)")),

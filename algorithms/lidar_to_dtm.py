@@ -135,16 +135,10 @@ class LidarToDtmAlgorithm(CheckPointInputs, GeomaticsAlgorithm):
         self.add(QgsProcessingParameterVectorDestination(
             self.OUTPUT_RESIDUALS, self.tr("Check-point residuals"),
             QgsProcessing.TypeVectorPoint, optional=True, createByDefault=True))
-        html = self.tr("HTML files (*.html)")
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("DTM accuracy report"), html, optional=True,
-            createByDefault=True))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_FILTER_HTML, self.tr("Ground filter report"), html, optional=True,
-            createByDefault=False))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_DTM_HTML, self.tr("DTM report"), html, optional=True,
-            createByDefault=False))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("DTM accuracy report"),
+                               create_by_default=True)
+        self.add_report_output(self.OUTPUT_FILTER_HTML, self.tr("Ground filter report"))
+        self.add_report_output(self.OUTPUT_DTM_HTML, self.tr("DTM report"))
         self.add_report_language()
         self.addOutput(QgsProcessingOutputNumber("N_GROUND", self.tr("Ground points")))
         for name, _, label in NUMBERS:

@@ -141,9 +141,7 @@ class LsqGroundFilterAlgorithm(LidarFilterMixin):
         self.add(QgsProcessingParameterFileDestination(
             self.GROUND_OUTPUT, self.tr("Ground points only"), LAS_OUT_FILTER,
             optional=True, createByDefault=False))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("LSQ ground filter report"), self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=False))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("LSQ ground filter report"))
         self.add(QgsProcessingParameterFileDestination(
             self.TILE_STATS, self.tr("Per-tile iteration statistics (CSV)"),
             self.tr("CSV files (*.csv)"), optional=True, createByDefault=False))

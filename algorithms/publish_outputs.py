@@ -72,22 +72,17 @@ class PublishOutputsAlgorithm(GeomaticsAlgorithm):
             self.INPUT_CHECKPOINTS, self.tr("Check point layer of the chain (never "
                                             "overwritten)"),
             [QgsProcessing.TypeVectorPoint], optional=True))
-        html = self.tr("HTML files (*.html)")
         self.add(QgsProcessingParameterFileDestination(
             "OUTPUT", self.tr("Classified point cloud"), LAS_OUT_FILTER, optional=True))
-        self.add(QgsProcessingParameterFileDestination(
-            "OUTPUT_FILTER_HTML", self.tr("Ground filter report"), html, optional=True,
-            createByDefault=False))
+        self.add_report_output("OUTPUT_FILTER_HTML", self.tr("Ground filter report"))
         self.add(QgsProcessingParameterRasterDestination(
             "OUTPUT_DTM", self.tr("DTM"), optional=True))
-        self.add(QgsProcessingParameterFileDestination(
-            "OUTPUT_DTM_HTML", self.tr("DTM report"), html, optional=True,
-            createByDefault=False))
+        self.add_report_output("OUTPUT_DTM_HTML", self.tr("DTM report"))
         self.add(QgsProcessingParameterVectorDestination(
             "OUTPUT_RESIDUALS", self.tr("Check-point residuals"),
             QgsProcessing.TypeVectorPoint, optional=True, createByDefault=True))
-        self.add(QgsProcessingParameterFileDestination(
-            "OUTPUT_HTML", self.tr("DTM accuracy report"), html, optional=True))
+        self.add_report_output("OUTPUT_HTML", self.tr("DTM accuracy report"),
+                               create_by_default=True)
 
     def _destination(self, parameters, context, name):
         return self.output_path(parameters, context, name) or None

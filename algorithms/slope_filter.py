@@ -162,10 +162,7 @@ class SlopeGroundFilterAlgorithm(_SlopeCommon):
         self.add(QgsProcessingParameterFileDestination(
             self.GROUND_OUTPUT, self.tr("Ground points"), LAS_OUT_FILTER, optional=True,
             createByDefault=False))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Slope ground filter report"),
-            self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=False))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("Slope ground filter report"))
         for name, label in (("N_POINTS", self.tr("Points read")),
                             ("N_GROUND", self.tr("Ground points (class 2)")),
                             ("N_NONGROUND", self.tr("Non-ground points (class 1)")),
@@ -261,10 +258,8 @@ class SlopeThresholdSweepAlgorithm(_SlopeCommon):
         self.add_mode_params()
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT_CSV, self.tr("Sweep table"), self.tr("CSV files (*.csv)")))
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.tr("Slope threshold sweep report"),
-            self.tr("HTML files (*.html)"),
-            optional=True))
+        self.add_report_output(self.OUTPUT_HTML, self.tr("Slope threshold sweep report"),
+                               create_by_default=True)
         self.add(QgsProcessingParameterFileDestination(
             self.OUTPUT, self.tr("Classified with the best setting"), LAS_OUT_FILTER,
             optional=True, createByDefault=False))

@@ -18,7 +18,6 @@ from qgis.core import (
     QgsProcessingParameterDefinition,
     QgsProcessingParameterEnum,
     QgsProcessingParameterExtent,
-    QgsProcessingParameterFileDestination,
     QgsProcessingParameterRasterDestination,
     QgsProcessingParameterRasterLayer,
     QgsProcessingParameterString,
@@ -162,9 +161,7 @@ class _GridAlgorithm(GeomaticsAlgorithm):
             advanced=True)
 
     def add_html(self):
-        self.add(QgsProcessingParameterFileDestination(
-            self.OUTPUT_HTML, self.report_label(), self.tr("HTML files (*.html)"),
-            optional=True, createByDefault=False))
+        self.add_report_output(self.OUTPUT_HTML, self.report_label())
         self.add_report_language()
 
     def report_label(self):
