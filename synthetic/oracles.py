@@ -11,12 +11,12 @@ import numpy as np
 
 from geomatics_toolbox.core.lidar._slope_kernel import (
     _canonical_slope,
-    _check_height,
-    _check_radius,
-    _check_slope,
-    _mask,
-    _tan,
-    _xyz,
+    check_height,
+    check_radius,
+    check_slope,
+    filter_xyz,
+    point_mask,
+    slope_tan,
 )
 from geomatics_toolbox.core.lidar.slope import (
     DEFAULT_HEIGHT_TOLERANCE,
@@ -41,11 +41,11 @@ def max_slope_reference(x, y, z, *, radius: float, height_tolerance: float = 0.0
     """
     from scipy.spatial import cKDTree
 
-    x, y, z = _xyz(x, y, z)
-    r = _check_radius(radius)
-    h = _check_height(height_tolerance)
-    cm = _mask(classify, x.size, "classify")
-    nm = _mask(neighbours, x.size, "neighbours")
+    x, y, z = filter_xyz(x, y, z)
+    r = check_radius(radius)
+    h = check_height(height_tolerance)
+    cm = point_mask(classify, x.size, "classify")
+    nm = point_mask(neighbours, x.size, "neighbours")
     mon = Monitor(progress, cancel)
     pidx = np.flatnonzero(cm)
     qidx = np.flatnonzero(nm)
@@ -82,9 +82,9 @@ def slope_filter_reference(x, y, z, *, radius: float = DEFAULT_RADIUS,
                            classify=None, neighbours=None, method: str = "kdtree",
                            progress=None, cancel=None) -> np.ndarray:
     """Brute-force ground labels (bool) with exactly the canonical comparison."""
-    _check_slope(slope)
-    cm = _mask(classify, np.size(x), "classify")
+    check_slope(slope)
+    cm = point_mask(classify, np.size(x), "classify")
     s = max_slope_reference(x, y, z, radius=radius, height_tolerance=height_tolerance,
                             classify=cm, neighbours=neighbours, method=method,
                             progress=progress, cancel=cancel)
-    return cm & ~(s > _tan(slope))
+    return cm & ~(s > slope_tan(slope))

@@ -17,6 +17,11 @@ from ..coords import as_xyz
 from ..errors import InputError
 from ..progress import Monitor
 
+#: What :mod:`.slope` and :mod:`.sweep` share; everything else here is the kernel's own.
+__all__ = ["SlopeStats", "allowed_rise", "bounded_max_slope", "check_height",
+           "check_radius", "check_slope", "filter_xyz", "point_mask", "slope_tan",
+           "take_points"]
+
 _EPS = np.finfo(np.float64).eps
 _PAIR_CHUNK = 3_000_000        # candidate pairs evaluated per vectorised block
 _POINT_CHUNK = 1_000_000       # points classified per block
@@ -25,14 +30,14 @@ _MIN_CELL_FRACTION = 1.0 / 16  # smallest grid cell, as a fraction of r
 
 
 # ============================================================================ helpers
-def _xyz(x, y, z):
+def filter_xyz(x, y, z):
     return as_xyz(x, y, z, empty_error=(
         "The point cloud is empty: there is nothing to filter. Check the input file or "
         "the return/noise selection."))
 
 
 
-def _check_radius(radius) -> float:
+def check_radius(radius) -> float:
     try:
         r = float(radius)
     except (TypeError, ValueError):
@@ -45,7 +50,7 @@ def _check_radius(radius) -> float:
     return r
 
 
-def _check_slope(slope) -> float:
+def check_slope(slope) -> float:
     try:
         s = float(slope)
     except (TypeError, ValueError):
@@ -58,7 +63,7 @@ def _check_slope(slope) -> float:
     return s
 
 
-def _check_height(h) -> float:
+def check_height(h) -> float:
     try:
         v = float(h)
     except (TypeError, ValueError):
@@ -70,7 +75,7 @@ def _check_height(h) -> float:
     return v
 
 
-def _mask(mask, n: int, name: str) -> np.ndarray:
+def point_mask(mask, n: int, name: str) -> np.ndarray:
     if mask is None:
         return np.ones(n, dtype=bool)
     m = np.asarray(mask, dtype=bool).ravel()
@@ -80,7 +85,7 @@ def _mask(mask, n: int, name: str) -> np.ndarray:
     return m
 
 
-def _take(x, y, z, mask):
+def take_points(x, y, z, mask):
     """Return the masked coordinates (no copy when every point is selected)."""
     if mask.all():
         return x, y, z
@@ -100,13 +105,13 @@ def allowed_rise(distance, slope) -> np.ndarray:
     return np.asarray(distance, dtype=np.float64) * np.tan(np.radians(slope))
 
 
-def _tan(slope: float) -> float:
+def slope_tan(slope: float) -> float:
     return float(np.tan(np.radians(np.float64(slope))))
 
 
 # ============================================================================ the kernel
 @dataclass
-class _Stats:
+class SlopeStats:
     points: int = 0
     settled_by_bound: int = 0
     pairs_tested: int = 0
@@ -136,7 +141,7 @@ def _choose_cell(qx, qy, r: float, n_q: int) -> float:
 
 @dataclass(frozen=True)
 class _CellGrid:
-    """The padded square grid of one :func:`_bounded_max_slope` call, with margins."""
+    """The padded square grid of one :func:`bounded_max_slope` call, with margins."""
 
     x0: float
     y0: float
@@ -260,7 +265,7 @@ class _Block:
 
 
 def _offset_pairs(g: _CellGrid, nb: _Neighbours, blk: _Block, idx, ox: int, oy: int, *,
-                  r: float, h: float, t_lo: float, stats: _Stats) -> None:
+                  r: float, h: float, t_lo: float, stats: SlopeStats) -> None:
     """Evaluate the candidate pairs of the points ``idx`` with the cells at (ox, oy)."""
     c2 = blk.cell[idx] + (oy * g.nx + ox)
     mz = nb.minz[c2]
@@ -281,7 +286,7 @@ def _offset_pairs(g: _CellGrid, nb: _Neighbours, blk: _Block, idx, ox: int, oy: 
 
 def _classify_block(g: _CellGrid, nb: _Neighbours, offs, bounds, blk: _Block, *,
                     r: float, h: float, t_lo: float, t_hi: float, mon: Monitor,
-                    stats: _Stats) -> None:
+                    stats: SlopeStats) -> None:
     """Bound, then evaluate the candidate pairs of one block of P (fills ``blk.v``)."""
     ub, lbfar = bounds
     sure_ng = blk.zh > ub[blk.cell]
@@ -332,9 +337,9 @@ def _grid_for(px, py, pz, qx, qy, qz, r: float, h: float, cell) -> _CellGrid:
                      dz=1e-7 + 256 * _EPS * zmax)
 
 
-def _bounded_max_slope(px, py, pz, qx, qy, qz, *, radius: float, height: float,
+def bounded_max_slope(px, py, pz, qx, qy, qz, *, radius: float, height: float,
                        t_lo: float, t_hi: float, cell: Optional[float] = None,
-                       mon: Monitor, stats: _Stats, _tile: bool = False) -> np.ndarray:
+                       mon: Monitor, stats: SlopeStats, _tile: bool = False) -> np.ndarray:
     """Return ``S_i`` of every point of P against the neighbour set Q, exact where needed.
 
     Vosselman (2000) slope rule with the cell bounds of the module docstring. The
@@ -379,7 +384,7 @@ def _bounded_max_slope(px, py, pz, qx, qy, qz, *, radius: float, height: float,
 
 def _tiled_max_slope(px, py, pz, qx, qy, qz, *, radius, height, t_lo, t_hi, cell, pad,
                      mon, stats, origin) -> np.ndarray:
-    """Run :func:`_bounded_max_slope` tile by tile (Vosselman 2000 rule, exact).
+    """Run :func:`bounded_max_slope` tile by tile (Vosselman 2000 rule, exact).
 
     Exact because each tile's neighbour set holds every neighbour point within
     ``radius`` (plus a margin) of the tile.
@@ -428,7 +433,7 @@ def _tiled_max_slope(px, py, pz, qx, qy, qz, *, radius, height, t_lo, t_hi, cell
         pi = po[a:b]
         qa, qb = np.searchsorted(qkey, key, "left"), np.searchsorted(qkey, key, "right")
         qi = qidx[qa:qb]
-        v[pi] = _bounded_max_slope(px[pi], py[pi], pz[pi], qx[qi], qy[qi], qz[qi],
+        v[pi] = bounded_max_slope(px[pi], py[pi], pz[pi], qx[qi], qy[qi], qz[qi],
                                    radius=r, height=height, t_lo=t_lo, t_hi=t_hi, cell=s,
                                    mon=sub, stats=stats, _tile=True)
         done += b - a

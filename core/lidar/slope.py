@@ -75,16 +75,16 @@ from ..reporting import KeyValues, Paragraph, T, Table
 from ._filter import FilterOutcome, GroundFilter
 from ._raster import check_filter_points
 from ._slope_kernel import (
-    _bounded_max_slope,
-    _check_height,
-    _check_radius,
-    _check_slope,
-    _mask,
-    _Stats,
-    _take,
-    _tan,
-    _xyz,
+    SlopeStats,
     allowed_rise,
+    bounded_max_slope,
+    check_height,
+    check_radius,
+    check_slope,
+    filter_xyz,
+    point_mask,
+    slope_tan,
+    take_points,
 )
 
 __all__ = [
@@ -185,19 +185,19 @@ def max_slope(x, y, z, *, radius: float = DEFAULT_RADIUS,
     ndarray of float
         ``v`` per point (``nan`` for points not evaluated).
     """
-    x, y, z = _xyz(x, y, z)
+    x, y, z = filter_xyz(x, y, z)
     check_filter_points(x, y, MIN_POINTS)
-    r = _check_radius(radius)
-    h = _check_height(height_tolerance)
+    r = check_radius(radius)
+    h = check_height(height_tolerance)
     lo, hi = sorted(float(a) for a in slope_range)
-    _check_slope(lo)
-    _check_slope(hi)
-    cm = _mask(classify, x.size, "classify")
-    nm = _mask(neighbours, x.size, "neighbours")
-    stats = _Stats()
+    check_slope(lo)
+    check_slope(hi)
+    cm = point_mask(classify, x.size, "classify")
+    nm = point_mask(neighbours, x.size, "neighbours")
+    stats = SlopeStats()
     out = np.full(x.size, np.nan)
-    out[cm] = _bounded_max_slope(x[cm], y[cm], z[cm], x[nm], y[nm], z[nm], radius=r,
-                                 height=h, t_lo=_tan(lo), t_hi=_tan(hi), cell=cell,
+    out[cm] = bounded_max_slope(x[cm], y[cm], z[cm], x[nm], y[nm], z[nm], radius=r,
+                                 height=h, t_lo=slope_tan(lo), t_hi=slope_tan(hi), cell=cell,
                                  mon=Monitor(progress, cancel), stats=stats)
     return out
 
@@ -221,8 +221,8 @@ def terrain_trend(x, y, z, *, cell: float = 10.0, window: float = 60.0,
     """
     from scipy import ndimage
 
-    x, y, z = _xyz(x, y, z)
-    nm = _mask(neighbours, x.size, "neighbours")
+    x, y, z = filter_xyz(x, y, z)
+    nm = point_mask(neighbours, x.size, "neighbours")
     if not nm.any():
         return np.zeros(x.size)
     mon = Monitor(progress, cancel)
@@ -348,14 +348,14 @@ def slope_filter(x, y, z, *, radius: float = DEFAULT_RADIUS, slope: float = DEFA
     >>> slope_filter(x, y, z, radius=3.0, slope=40.0, height_tolerance=0).ground.tolist()
     [True, True]
     """
-    x, y, z = _xyz(x, y, z)
+    x, y, z = filter_xyz(x, y, z)
     check_filter_points(x, y, MIN_POINTS)
-    r = _check_radius(radius)
-    theta = _check_slope(slope)
-    h = _check_height(height_tolerance)
+    r = check_radius(radius)
+    theta = check_slope(slope)
+    h = check_height(height_tolerance)
     _check_mode(mode)
-    cm = _mask(classify, x.size, "classify")
-    nm = _mask(neighbours, x.size, "neighbours")
+    cm = point_mask(classify, x.size, "classify")
+    nm = point_mask(neighbours, x.size, "neighbours")
     mon = Monitor(progress, cancel)
     trend = None
     zz = z
@@ -364,11 +364,11 @@ def slope_filter(x, y, z, *, radius: float = DEFAULT_RADIUS, slope: float = DEFA
                               origin=trend_origin, progress=None, cancel=cancel)
         zz = z - trend
         mon = mon.sub(0.1, 1.0)
-    t = _tan(theta)
-    stats = _Stats()
+    t = slope_tan(theta)
+    stats = SlopeStats()
     v = np.full(x.size, np.nan)
     if cm.any():
-        v[cm] = _bounded_max_slope(*_take(x, y, zz, cm), *_take(x, y, zz, nm), radius=r,
+        v[cm] = bounded_max_slope(*take_points(x, y, zz, cm), *take_points(x, y, zz, nm), radius=r,
                                    height=h, t_lo=t, t_hi=t, cell=cell, mon=mon,
                                    stats=stats)
     ground = cm & ~(v > t)
@@ -398,9 +398,9 @@ class SlopeOptions:
 
     def validate(self) -> SlopeOptions:
         """Raise :class:`InputError` naming the bad option; returns self."""
-        _check_radius(self.radius)
-        _check_slope(self.slope)
-        _check_height(self.height_tolerance)
+        check_radius(self.radius)
+        check_slope(self.slope)
+        check_height(self.height_tolerance)
         _check_mode(self.mode)
         if self.mode == "adaptive" and not (self.trend_cell > 0 and self.trend_window > 0):
             raise InputError("TREND_CELL and TREND_WINDOW must be > 0 metres in adaptive "

@@ -32,16 +32,16 @@ from ..reporting import (
 from . import slope as sf
 from ._raster import check_filter_points
 from ._slope_kernel import (
-    _bounded_max_slope,
-    _check_height,
-    _check_radius,
-    _check_slope,
-    _mask,
-    _Stats,
-    _take,
-    _tan,
-    _xyz,
+    SlopeStats,
     allowed_rise,
+    bounded_max_slope,
+    check_height,
+    check_radius,
+    check_slope,
+    filter_xyz,
+    point_mask,
+    slope_tan,
+    take_points,
 )
 from .accuracy import assess, error_codes, ground_mask
 from .figures import error_map, sweep_plot
@@ -137,11 +137,11 @@ def _sweep_settings(slopes, radii, height_tolerance, metric, mode):
     if mode not in MODES:
         raise InputError("mode must be one of {choices}, got {mode}.",
                          choices=", ".join(MODES), mode=repr(mode))
-    slopes = [_check_slope(s) for s in np.atleast_1d(np.asarray(slopes, dtype=float))]
-    radii = [_check_radius(r) for r in np.atleast_1d(np.asarray(radii, dtype=float))]
+    slopes = [check_slope(s) for s in np.atleast_1d(np.asarray(slopes, dtype=float))]
+    radii = [check_radius(r) for r in np.atleast_1d(np.asarray(radii, dtype=float))]
     if not slopes or not radii:
         raise InputError("Give at least one slope threshold and one radius to sweep.")
-    hs = [_check_height(v) for v in np.atleast_1d(np.asarray(height_tolerance, dtype=float))]
+    hs = [check_height(v) for v in np.atleast_1d(np.asarray(height_tolerance, dtype=float))]
     if not hs:
         raise InputError("Give at least one height tolerance (e.g. 0).")
     return slopes, radii, hs
@@ -191,7 +191,7 @@ def threshold_sweep(x, y, z, reference_ground, *, slopes: Sequence[float] = (
         Fewer than 2 points or every point at one x/y position (as :func:`slope_filter`),
         reference labels that do not match, an invalid option.
     """
-    x, y, z = _xyz(x, y, z)
+    x, y, z = filter_xyz(x, y, z)
     check_filter_points(x, y, sf.MIN_POINTS)        # the slope filter's own refusals
     ref = np.asarray(reference_ground, dtype=bool).ravel()
     if ref.size != x.size:
@@ -199,8 +199,8 @@ def threshold_sweep(x, y, z, reference_ground, *, slopes: Sequence[float] = (
                          "points; the reference must label the same points in the same "
                          "order.", labels=int(ref.size), n=int(x.size))
     slopes, radii, hs = _sweep_settings(slopes, radii, height_tolerance, metric, mode)
-    cm = _mask(classify, x.size, "classify")
-    nm = _mask(neighbours, x.size, "neighbours")
+    cm = point_mask(classify, x.size, "classify")
+    nm = point_mask(neighbours, x.size, "neighbours")
     mon = Monitor(progress, cancel)
     zz = z
     if mode == "adaptive":
@@ -209,18 +209,18 @@ def threshold_sweep(x, y, z, reference_ground, *, slopes: Sequence[float] = (
     lo, hi = min(slopes), max(slopes)
     rows: List[SweepRow] = []
     passes = [(r, h) for r in radii for h in hs]
-    px, py, pz = _take(x, y, zz, cm)
-    qx, qy, qz = _take(x, y, zz, nm)
+    px, py, pz = take_points(x, y, zz, cm)
+    qx, qy, qz = take_points(x, y, zz, nm)
     best_key, best_ground = None, None
     for k, (r, h) in enumerate(passes):
         v = np.full(x.size, np.nan)
         if cm.any():
-            v[cm] = _bounded_max_slope(px, py, pz, qx, qy, qz, radius=r, height=h,
-                                       t_lo=_tan(lo), t_hi=_tan(hi), cell=None,
+            v[cm] = bounded_max_slope(px, py, pz, qx, qy, qz, radius=r, height=h,
+                                       t_lo=slope_tan(lo), t_hi=slope_tan(hi), cell=None,
                                        mon=mon.sub(k / len(passes), (k + 1) / len(passes)),
-                                       stats=_Stats())
+                                       stats=SlopeStats())
         for s in slopes:
-            pred = cm & ~(v > _tan(s))
+            pred = cm & ~(v > slope_tan(s))
             acc = assess(pred, ref)
             row = SweepRow(radius=r, slope=s, height_tolerance=h,
                            allowed_rise=float(allowed_rise(r, s)),
@@ -277,9 +277,9 @@ def _load_reference(reference, ground_classes, pd, mon: Monitor) -> np.ndarray:
 
 
 def _check_grid(slopes, radii, hs, metric, mode):
-    slopes = [sf._check_slope(s) for s in slopes]
-    radii = [sf._check_radius(r) for r in radii]
-    hs = [sf._check_height(h) for h in hs]
+    slopes = [sf.check_slope(s) for s in slopes]
+    radii = [sf.check_radius(r) for r in radii]
+    hs = [sf.check_height(h) for h in hs]
     if not slopes or not radii or not hs:
         raise InputError("Give at least one slope, one radius and one height tolerance.")
     if len(slopes) * len(radii) * len(hs) > 5000:
