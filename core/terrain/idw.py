@@ -151,7 +151,9 @@ class IDW:
         """Return the number of data points."""
         return int(self.x.size)
 
-    def _neighbours(self, q: np.ndarray):
+    def _neighbours(self, q: np.ndarray, defer: bool = False):
+        """``k`` nearest of each query row; with ``defer``, also the rows whose cut-off is
+        tied, left unresolved (``None`` when none is)."""
         ub = np.inf if self.radius is None else self.radius * (1.0 + 1e-12)
         k = self.max_points
         if k == 0:
@@ -163,14 +165,17 @@ class IDW:
             d, idx = self.tree.query(q, k=k, distance_upper_bound=ub, workers=self.workers)
             if d.ndim == 1:
                 d, idx = d[:, None], idx[:, None]
-            return d, idx
+            return d, idx, None
         # one extra neighbour tells whether the k-th distance is tied with the next
         d, idx = self.tree.query(q, k=k + 1, distance_upper_bound=ub, workers=self.workers)
         tied = np.isfinite(d[:, k]) & (d[:, k] == d[:, k - 1])
         d, idx = d[:, :k], idx[:, :k]
-        if tied.any():
-            d[tied], idx[tied] = self._break_ties(q[tied], k, ub)
-        return d, idx
+        if not tied.any():
+            return d, idx, None
+        if defer:
+            return d, idx, tied
+        d[tied], idx[tied] = self._break_ties(q[tied], k, ub)
+        return d, idx, None
 
     def tie_keys(self, ids) -> np.ndarray:
         """Sort keys of the points ``ids`` in the tie order (any shape).
@@ -228,16 +233,24 @@ class IDW:
         rows = np.arange(d.shape[0])[:, None]
         return d[rows, order][:, :k], idx[rows, order][:, :k]
 
-    def predict(self, xq, yq, *, max_distance: Optional[float] = None) -> np.ndarray:
+    def predict(self, xq, yq, *, max_distance: Optional[float] = None,
+                tied: Optional[list] = None) -> np.ndarray:
         """IDW estimates at points ``(xq, yq)``; NaN where there is no estimate.
 
         ``max_distance``: points whose nearest data point is farther are NaN.
+        ``tied`` (a list): the points whose ``max_points``-th and next neighbours are
+        equidistant are not resolved here — their indices are appended to ``tied`` and
+        their values are left for a later call on those points alone, so that the tie
+        order of a whole grid is ranked once (:func:`idw_grid`). A point's value
+        depends on that point only, so the later call gives the same bits.
         """
         q = np.column_stack([np.asarray(xq, np.float64).ravel(),
                              np.asarray(yq, np.float64).ravel()])
         if q.shape[0] == 0:
             return np.empty(0)
-        d, idx = self._neighbours(q)
+        d, idx, unresolved = self._neighbours(q, defer=tied is not None)
+        if unresolved is not None:
+            tied.append(np.flatnonzero(unresolved))
         valid = np.isfinite(d)
         everywhere = bool(valid.all())  # no radius, or all neighbours within it
         # r2 = d² (1 where no neighbour) + s², w = 1 / r2^(p/2) (0 where no neighbour):
@@ -329,8 +342,20 @@ def idw_grid(x, y, z, grid: GridSpec, *, power: float = DEFAULT_POWER, max_point
     max_distance = resolve_max_distance(grid, interp.n_points, max_distance, fill=fill)
     out = np.full(grid.shape, np.nan)
     mon.step(0.0)
+    # cells whose cut-off neighbours tie are done last, together: the tie order (GDAL's
+    # quadtree path of the points they compare) is then ranked once, not once per block
+    tied, tx, ty = [], [], []
     for r0, r1 in row_blocks(grid.nrows, grid.ncols, block_cells):
         xx, yy = grid.block_centers(r0, r1)
-        out[r0:r1] = interp.predict(xx, yy, max_distance=max_distance).reshape(r1 - r0, -1)
+        ties: list = []
+        out[r0:r1] = interp.predict(xx, yy, max_distance=max_distance,
+                                    tied=ties).reshape(r1 - r0, -1)
+        for t in ties:
+            tied.append(r0 * grid.ncols + t)
+            tx.append(xx[t])
+            ty.append(yy[t])
         mon.step(r1 / grid.nrows)
+    if tied:
+        out.ravel()[np.concatenate(tied)] = interp.predict(
+            np.concatenate(tx), np.concatenate(ty), max_distance=max_distance)
     return out

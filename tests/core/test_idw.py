@@ -206,6 +206,30 @@ def test_ties_rank_only_the_tied_points(tie_order):
 
 
 @pytest.mark.parametrize("tie_order", ["gdal", "xy"])
+def test_grid_ranks_its_tied_cells_once(tie_order, monkeypatch):
+    """Cells whose cut-off neighbours tie are resolved after the blocks, in one ranking
+    for the whole grid (was once per block), with the values a per-cell prediction gives."""
+    xx, yy = np.meshgrid(np.arange(0.0, 60.0, 1.5), np.arange(0.0, 45.0, 1.5))
+    x, y = xx.ravel(), yy.ravel()
+    z = 10 + np.sin(x / 7.0) + np.cos(y / 5.0)
+    grid = grid_from_extent((0, 60, 0, 45), 0.5)
+    calls = []
+    real = IDW._break_ties
+
+    def counted(self, q, k, ub):
+        calls.append(q.shape[0])
+        return real(self, q, k, ub)
+
+    monkeypatch.setattr(IDW, "_break_ties", counted)
+    out = idw_grid(x, y, z, grid, fill=True, tie_order=tie_order, block_cells=500)
+    assert len(calls) == 1 and calls[0] > 1000      # 22 blocks, one ranking
+    gx, gy = grid.block_centers(0, grid.nrows)
+    one = IDW(x, y, z, tie_order=tie_order)
+    each = np.array([one.predict(gx[i:i + 1], gy[i:i + 1])[0] for i in range(0, gx.size, 37)])
+    assert np.array_equal(out.ravel()[::37].view(np.int64), each.view(np.int64))
+
+
+@pytest.mark.parametrize("tie_order", ["gdal", "xy"])
 def test_dtm_bits_do_not_depend_on_the_block_size(tie_order):
     """A cell's value depends on its neighbours only: blocks of 7 cells, the default and
     one block give the same bits, ties (a lattice cloud: every cell has tied 12th and
