@@ -152,8 +152,11 @@ class IDW:
         return int(self.x.size)
 
     def _neighbours(self, q: np.ndarray, defer: bool = False):
-        """``k`` nearest of each query row; with ``defer``, also the rows whose cut-off is
-        tied, left unresolved (``None`` when none is)."""
+        """Return the ``k`` nearest of each query row (distances, indices, deferred ties).
+
+        With ``defer``, the rows whose cut-off is tied are left unresolved and returned
+        as a mask (``None`` when there is none).
+        """
         ub = np.inf if self.radius is None else self.radius * (1.0 + 1e-12)
         k = self.max_points
         if k == 0:
