@@ -62,10 +62,11 @@ from geomatics_toolbox.core.lidar.filters import (  # noqa: E402
 )
 
 
-def _classify(key, x, y, z, c0, origin):
-    """The catalog chunks' call on the merged cloud (same filter, selection, origin)."""
+def _classify(key, x, y, z, c0):
+    """A single-file run of the merged cloud (same filter and selection; the chunks' grids
+    and the single file's lie on the same world lattice)."""
     return classify_points(PointData(x, y, z, {"classification": c0}), ground_filter(key),
-                           default_selection(key), origin=origin)
+                           default_selection(key))
 from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile  # noqa: E402
 
 DENSITY = 5.0
@@ -142,7 +143,7 @@ def merged_run(cat, args, origin):
     z = np.concatenate([p.z for p in parts])
     c0 = np.concatenate([p["classification"] for p in parts])
     del parts
-    cls = _classify(args.filter, x, y, z, c0, origin)
+    cls = _classify(args.filter, x, y, z, c0)
     g = cls == 2
     grid = snap_grid(cat.extent, origin, args.cell)
     ref = chunk_dtm(args.dtm, x[g], y[g], z[g], grid, cat.default_max_distance())
@@ -201,7 +202,7 @@ def band_seam_check(cat, mosaic_path, args, origin, n_side, side):
     diffs = []
     for (axis, pos, lo, hi), box, parts in zip(edges, boxes, bands):
         x, y, z, c0 = (np.concatenate([p[k] for p in parts]) for k in range(4))
-        cls = _classify(args.filter, x, y, z, c0, origin)
+        cls = _classify(args.filter, x, y, z, c0)
         g = cls == 2
         grid = snap_grid(box, origin, args.cell)
         ref = chunk_dtm(args.dtm, x[g], y[g], z[g], grid, md)

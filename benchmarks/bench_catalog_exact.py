@@ -5,15 +5,14 @@ of its box (classes reset to 1, input noise 7/18 kept, as a user's unclassified 
 the catalog's planning and chunk code runs every chunk in this process (buffer = the
 catalog default, 100 m), and its classes are compared, point by point, with
 
-* ``single``: the filter's single-file run on the whole file, as the single-file
-  algorithm runs it (its own origin: ``origin=None``), and
-* ``merged``: the same run anchored on the catalog's origin (what
-  ``tests/core/test_filter_registry.py`` compares with).
+the filter's single-file run on the whole file, as the single-file algorithm runs it
+(``classify_points`` with ``origin=None``: anchored at the cloud's corner; the catalog's
+first pass gives its chunks the corner of all its tiles).
 
 Also three synthetic scenes where tiles differ (``--scenes``): a density step (two
 300 m tiles at 0.3 / 1.5 pts/m²), a closed forest and a lake across two tiles (600 m,
-left half thinned to 0.4 of 2 pts/m²), buffer 100 m, compared with ``merged`` on the
-points farther than the buffer from the catalog's outer edge.
+left half thinned to 0.4 of 2 pts/m²), buffer 100 m, compared with the single-file run
+on the points farther than the buffer from the catalog's outer edge.
 
 Writes ``benchmarks/results/catalog_exact.md``. CPU seconds are this process's.
 """
@@ -73,6 +72,7 @@ def catalog_classes(tiles: Path, out: Path, key: str):
     tasks = cc.plan_tasks(cat, out, ground_filter=key, dtm_method="idw", cell_size=2.0,
                           buffer=BUFFER)
     (out / cc.STATE_DIR).mkdir(parents=True, exist_ok=True)
+    cc.first_pass(cat, tasks, out)
     for t in tasks:
         _chunks.process_chunk(t)
     cls = np.concatenate([read_las(t.outputs["LAS"], ("classification",))["classification"]
@@ -96,11 +96,9 @@ def real_rows(keys, tmp: Path):
         x, y, z, cls, units = split_2x2(path, tiles)
         for key in keys:
             t0, c0 = time.perf_counter(), time.process_time()
-            got, origin, _ = catalog_classes(tiles, tmp / path.stem / key, key)
+            got, _, _ = catalog_classes(tiles, tmp / path.stem / key, key)
             one = single(x, y, z, cls, key, units)
-            merged = single(x, y, z, cls, key, units, origin)
             rows.append((path.stem, key, x.size, int((got != one).sum()),
-                         int((got != merged).sum()), int((one != merged).sum()),
                          time.process_time() - c0, time.perf_counter() - t0))
             print(*rows[-1], flush=True)
     return rows
@@ -140,9 +138,9 @@ def scene_rows(tmp: Path):
         order = np.concatenate(idx)
         x, y, z, cls = x[order], y[order], z[order], cls[order]
         t0, c0 = time.perf_counter(), time.process_time()
-        got, origin, cat = catalog_classes(d, d.parent / "out", "groundfilter")
+        got, _, cat = catalog_classes(d, d.parent / "out", "groundfilter")
         from geomatics_toolbox.core.io.units import METRIC
-        merged = single(x, y, z, cls, "groundfilter", METRIC, origin)
+        merged = single(x, y, z, cls, "groundfilter", METRIC)
         e = cat.extent
         inner = np.minimum.reduce([x - e[0], y - e[1], e[2] - x, e[3] - y]) > BUFFER
         rows.append((kind, int(inner.sum()), int((got != merged)[inner].sum()),
@@ -167,17 +165,17 @@ def main(argv=None):
     lines = ["# Catalog vs single file, per registered filter (`bench_catalog_exact.py`)", "",
              f"Load average at start {load:.1f} (2 cores shared: wall times are of a "
              "loaded machine). Classes differing between the catalog (2 x 2 tiles cut at "
-             "the middle, buffer 100 m, chunks run in this process) and a single-file run "
-             "of the whole file: `single` = as the single-file algorithm runs (its own "
-             "origin), `merged` = anchored on the catalog's origin.", ""]
+             "the middle, buffer 100 m, chunks run in this process after the catalog's "
+             "first pass) and the single-file run of the whole file.", ""]
     if real:
-        lines += ["| file | filter | points | catalog ≠ single | catalog ≠ merged | "
-                  "single ≠ merged | CPU s | wall s |", "|---|---|---:|---:|---:|---:|---:|---:|"]
-        lines += [f"| {f} | {k} | {n:,} | {a1:,} | {a2:,} | {a3:,} | {c:.1f} | {w:.1f} |"
-                  for f, k, n, a1, a2, a3, c, w in real]
+        lines += ["| file | filter | points | catalog ≠ single | CPU s | wall s |",
+                  "|---|---|---:|---:|---:|---:|"]
+        lines += [f"| {f} | {k} | {n:,} | {a1:,} | {c:.1f} | {w:.1f} |"
+                  for f, k, n, a1, c, w in real]
         lines.append("")
     lines += ["Synthetic scenes (recommended filter, two tiles, buffer 100 m): points "
-              "farther than the buffer from the outer edge that differ from `merged`.", "",
+              "farther than the buffer from the outer edge that differ from the single-file "
+              "run.", "",
               "| scene | inner points | differ (inner) | differ (all) | points | CPU s | wall s |",
               "|---|---:|---:|---:|---:|---:|---:|"]
     lines += [f"| {k} | {i:,} | {d:,} | {da:,} | {n:,} | {c:.1f} | {w:.1f} |"

@@ -139,6 +139,10 @@ class ChunkTask:
     #: The catalog derives the gap distance after the run (:mod:`._gap`):
     #: ``max_distance`` is then provisional and the chunk keeps ``<key>.gap.npz``.
     derive_gap: bool = False
+    #: Anchor of the filter's grids and tiles (metres): the corner of every point of
+    #: the catalog, from its first pass (:mod:`._summary`), as a single-file run of the
+    #: merged cloud anchors at its corner; None: the chunk's own (or PTD's lattice).
+    filter_origin: Optional[Tuple[float, float]] = None
 
     @property
     def neighbours(self) -> List[str]:
@@ -298,8 +302,9 @@ def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
     """Classes from the chunk's ground filter for every point read (chunk and buffer).
 
     The registered algorithm object with the point selection of its single-file
-    algorithm's defaults (input noise classes 7 and 18 kept), anchored on the
-    catalog's global origin: the same call as a single-file run.
+    algorithm's defaults (input noise classes 7 and 18 kept), anchored at the corner
+    of the whole catalog (``task.filter_origin``): the same call, with the same anchor,
+    as a single-file run of the merged cloud.
 
     Raises
     ------
@@ -310,13 +315,13 @@ def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
     if not core.any():
         return np.zeros(core.size, np.uint8)
     units = task.units
-    origin = task.origin
     if not units.metric:              # every length of the filters is metres
         xyz = units.xyz_to_metres(*xyz)
-        origin = (units.h_to_metres(origin[0]), units.h_to_metres(origin[1]))
     pts = PointData(*xyz, dims=dims)
-    return classify_points(pts, ground_filter(task.ground_filter),
-                           default_selection(task.ground_filter), origin=origin)
+    flt = ground_filter(task.ground_filter)
+    origin = task.filter_origin if getattr(flt, "lattice", "cloud") == "cloud" else None
+    return classify_points(pts, flt, default_selection(task.ground_filter),
+                           origin=None if origin is None else tuple(origin))
 
 
 def filter_sparse_chunk(task: ChunkTask, xyz, dims, core):

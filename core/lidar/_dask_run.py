@@ -176,11 +176,22 @@ def _submit_strips(client, order):
     return strips, release
 
 
+def mapper(client):
+    """``map`` on the cluster: ``mapper(client)(func, *iterables)`` -> the results, in order."""
+    def run(func, *iterables):
+        futures = client.map(func, *iterables, pure=False, retries=1, priority=10 ** 13)
+        return client.gather(futures)
+    return run
+
+
 def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, failed,
-              clock, on_chunk=None):
+              clock, on_chunk=None, prepare=None):
     client, cluster = _client(nw, scheduler, memory_limit)
     clock.lap("cluster start")
     try:
+        if prepare is not None:         # the first pass (:mod:`._summary`), same workers
+            prepare(mapper(client))
+            clock.lap("first pass")
         # largest chunks first (longest-processing-time order): the last chunk to
         # finish is a small one, so workers idle less at the end of the run. Submitted
         # in that order too: idle workers take the first tasks as they arrive.

@@ -14,7 +14,9 @@ origin=None, monitor=None)``
     :class:`FilterOutcome` (``classes``: uint8 per point, 2 ground, 1 other, 0 never
     classified, 7 low noise). ``origin`` (x, y), when given, anchors every grid or tile
     the method lays over the points on the lattice through that point, so that the
-    chunks of a catalog equal a run on the merged cloud;
+    chunks of a catalog equal a run on the merged cloud (``lattice``: 'cloud', the
+    default, is given the corner of the whole cloud; 'world', the method's own lattice
+    through 0, is given None — :func:`.filters.run_filter`);
 ``settings()``
     ``[(label, value[, unit]), ...]`` for the report's parameter table;
 ``report_sections(run, report, tr)``
@@ -108,6 +110,10 @@ class GroundFilter:
     name = "groundfilter"
     title = "Ground filter"
     citation: Optional[str] = None
+    #: 'cloud': grids and tiles anchored at the corner of the whole cloud (a catalog
+    #: gives its chunks the corner of all its tiles); 'world': on the method's own
+    #: lattice through 0 whatever the extent (PTD); 'none': lays no grid
+    lattice = "cloud"
 
     def __init__(self, options=None):
         self.options = options
@@ -209,6 +215,7 @@ class KeepFilter(GroundFilter):
 
     name = "keep"
     title = "Keep the classes in the files"
+    lattice = "none"           # lays no grid: needs no anchor
 
     def classify(self, x, y, z, *, return_number=None, number_of_returns=None,
                  classification=None, origin=None,

@@ -34,6 +34,7 @@ from ..io.catalog import build_vrt, find_tiles
 from ..io.contract import OutputContract, check_paths
 from ..io.las import LasInfo, las_info
 from ..progress import Cancelled, Monitor  # noqa: F401 - callers catch catalog.Cancelled
+from . import _summary
 from ._catalog_checks import (  # noqa: F401 - MAX_*, check_scheduler: public names
     MAX_CHUNK_POINTS,
     MAX_CHUNKS,
@@ -70,6 +71,7 @@ from ._dask_run import (  # noqa: F401 - CatalogResult is this module's public r
     _sweep_temps,
 )
 from ._gap import apply_gap, derived_gap, drop_gap_files
+from .filters import ground_filter
 
 __all__ = ["Catalog", "CatalogResult", "run_catalog", "GROUND_FILTERS", "DTM_METHODS",
            "register_ground_filter", "register_dtm_method", "default_ground_filter",
@@ -286,6 +288,32 @@ def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
 
 
 # ============================================================================ engine
+def first_pass(cat: Catalog, tasks: Sequence[ChunkTask], folder, mapper=None) -> Optional[dict]:
+    """Summarise every tile once and give each chunk what its filter derives (:mod:`._summary`).
+
+    A filter anchored on its cloud's corner (``lattice`` 'cloud') gets the corner of
+    all the catalog's points, so a chunk's grids and tiles are those of a single-file
+    run of the merged cloud. ``mapper(func, paths, hs)`` returns the tile summaries
+    (a run maps them on its Dask workers; default: the built-in ``map``, in this
+    process). Saved in ``.catalog/summary.json``: a resumed run reuses it. None when
+    the filter derives nothing from the whole cloud.
+    """
+    if not tasks or getattr(ground_filter(tasks[0].ground_filter), "lattice",
+                            "cloud") != "cloud":
+        return None
+    state = Path(folder) / STATE_DIR
+    summary = _summary.load(state)
+    if summary is None:
+        h = float(tasks[0].units.h)
+        summary = _summary.merge(list((mapper or map)(_summary.tile_summary, cat.paths,
+                                                      [h] * len(cat.paths))))
+        _summary.save(state, summary)
+    corner = summary.get("corner")
+    for t in tasks:
+        t.filter_origin = None if corner is None else (float(corner[0]), float(corner[1]))
+    return summary
+
+
 def finished_chunks(out_folder) -> List[str]:
     """Keys of the chunks whose done marker is in ``out_folder`` (kept for a resume)."""
     state = Path(out_folder) / STATE_DIR
@@ -296,11 +324,10 @@ def finished_chunks(out_folder) -> List[str]:
 
 def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
                 dtm_method: str = "idw", cell_size: float = 1.0, buffer: float = 100.0,
-                chunk_size: float = 0.0, workers: Optional[int] = None,
-                scheduler: str = "", cog: bool = False,
-                origin=None, max_distance: Optional[float] = None,
-                memory_limit="auto",
-                on_chunk=None, progress=None, cancel=None) -> CatalogResult:
+                chunk_size: float = 0.0, workers: Optional[int] = None, scheduler: str = "",
+                cog: bool = False, origin=None, max_distance: Optional[float] = None,
+                memory_limit="auto", on_chunk=None, progress=None,
+                cancel=None) -> CatalogResult:
     """Process a tile catalog chunk by chunk on Dask (see the module docstring).
 
     Parameters
@@ -371,14 +398,15 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     nw = int(workers or os.cpu_count() or 1)
     chunks = [s for s in previous.values() if s is not None]
     failed: Dict[str, str] = {}
-    if on_chunk is not None:
-        for s in chunks:
-            on_chunk({**s, "status": "skipped"})
+    for s in chunks if on_chunk is not None else ():
+        on_chunk({**s, "status": "skipped"})
     mon.update(len(chunks) / len(tasks))
     clock.lap("plan")
+    summary: dict = {}                  # the first pass (:func:`first_pass`), on the workers
     if todo:
-        chunks += _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon,
-                            len(chunks), failed, clock, on_chunk)
+        chunks += _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, len(chunks),
+                            failed, clock, on_chunk, prepare=lambda run: summary.update(
+                                first_pass(cat, todo, folder, run) or {}))
     gap = _catalog_gap(tasks, chunks, failed, cell_size, dtm_method)
     _check_outcome(chunks, failed, todo, made, len(tasks), cat.n_points, gf)
     vrt, cog_path = _mosaic(cat, folder, tasks, failed, chunks, cog)
@@ -387,7 +415,7 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     chunks.sort(key=lambda c: order[c["key"]])
     settings = dict(ground_filter=gf, dtm_method=dtm_method, cell_size=float(cell_size),
                     buffer=float(buffer), chunk_size=float(chunk_size),
-                    **_result_settings(cat, tasks, gap))
+                    **_result_settings(cat, tasks, gap, summary))
     return CatalogResult(chunks=chunks, failed=failed,
                          skipped=[k for k, v in previous.items() if v is not None],
                          vrt=vrt, cog=cog_path, seconds=time.perf_counter() - t0,
@@ -395,8 +423,10 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
                          timings=clock.phases)
 
 
-def _result_settings(cat, tasks, gap) -> dict:
+def _result_settings(cat, tasks, gap, summary) -> dict:
     return dict(tiles=len(tasks), points_total=cat.n_points, crs=cat.crs or "",
+                # the workers' wall and CPU seconds of the first pass (:mod:`._summary`)
+                first_pass_seconds=summary.get("seconds"),
                 origin=tasks[0].origin, keys=[t.key for t in tasks],
                 bounds=[list(t.bounds) for t in tasks],
                 # metres (tiles in feet: converted), as a single-file run reports it

@@ -38,6 +38,7 @@ import numpy as np
 from ..progress import Monitor
 from ._filter import FilterOutcome, GroundFilter, KeepFilter, check_classes
 from ._selection import Selection, SelectionOptions, assemble_classes, select_points
+from ._summary import cloud_summary
 from .ptd import NOISE_PREFILTER as _PTD_NOISE
 
 __all__ = ["FilterSpec", "GROUND_FILTERS", "RECOMMENDED_FILTER", "register_ground_filter",
@@ -128,7 +129,12 @@ def run_filter(points, algorithm: GroundFilter, selection: Optional[SelectionOpt
     selection : SelectionOptions, optional
         Returns, noise pre-filter, input noise classes (dataclass defaults when None).
     origin : (float, float), optional
-        Global lattice of the tiles and grids (catalogs; None = the cloud's own).
+        Anchor of the tiles and grids. None: a 'cloud'-lattice filter (the default
+        :attr:`~._filter.GroundFilter.lattice`) is anchored at the corner of
+        ``points`` (smallest x and y of every point), a 'world'-lattice one (PTD) on its
+        lattice through 0. A catalog chunk passes the corner of all the catalog's
+        points (:mod:`._summary`): the same anchor as a single-file run of the merged
+        cloud, by construction.
     monitor : Monitor, optional
         Progress and cancel.
 
@@ -140,6 +146,8 @@ def run_filter(points, algorithm: GroundFilter, selection: Optional[SelectionOpt
     mon = monitor or Monitor()
     opt = (selection or SelectionOptions()).validate()
     t0 = time.perf_counter()
+    if origin is None and getattr(algorithm, "lattice", "cloud") == "cloud" and len(points):
+        origin = tuple(cloud_summary(points.x, points.y)["corner"])
     sel = select_points(points, returns=opt.returns, noise=opt.noise,
                         noise_radius=opt.noise_radius, noise_threshold=opt.noise_threshold,
                         keep_noise_classes=opt.keep_noise_classes, origin=origin,
@@ -201,7 +209,9 @@ def _recommended(options=None):
 
 def _ptd(options=None):
     from .ptd import ptd_filter
-    return ptd_filter(options)
+    flt = ptd_filter(options)
+    flt.lattice = "world"          # its cells, parcels and frame lie on the lattice through 0
+    return flt
 
 
 def _keep(options=None):

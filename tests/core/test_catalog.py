@@ -55,10 +55,11 @@ def _merged(tiles: Path):
     return paths, x, y, z, cls0
 
 
-def _filter(key, x, y, z, cls0, origin):
-    """The chunks' call on the merged cloud: same filter, selection and origin."""
+def _filter(key, x, y, z, cls0):
+    """A single-file run of the merged cloud: same filter and selection (the chunks' and
+    the single file's grids both lie on the world lattice, whatever the catalog origin)."""
     return classify_points(PointData(x, y, z, {"classification": cls0}), ground_filter(key),
-                           default_selection(key), origin=origin)
+                           default_selection(key))
 
 
 def _catalog_classes(paths, out: Path) -> np.ndarray:
@@ -92,7 +93,7 @@ def test_catalog_equals_merged_run(tiles, local_run):
     assert all(c["phases"]["strips"][1] >= 0 for c in res.chunks)
     paths, x, y, z, cls0 = _merged(tiles)
     cat = cc.Catalog.open(str(tiles))
-    merged = _filter("lsq_improved", x, y, z, cls0, res.settings["origin"])
+    merged = _filter("lsq_improved", x, y, z, cls0)
     got = _catalog_classes(paths, out)
     assert got.shape == merged.shape == (cat.n_points,)
     inner = _outer_distance(x, y, cat.extent) > BUFFER
@@ -352,7 +353,7 @@ def test_chunk_size_run_equals_merged_run(big_tiles, chunk_run):
     assert all(set(c["phases"]) == {"read", "filter", "dtm", "write"} for c in res.chunks)
     _, x, y, z, cls0 = _merged(big_tiles)
     cat = cc.Catalog.open(str(big_tiles))
-    merged = _filter("lsq_improved", x, y, z, cls0, res.settings["origin"])
+    merged = _filter("lsq_improved", x, y, z, cls0)
     cx, cy, cz, got, n_files = _chunk_outputs(out)
     assert n_files == 9 and got.size == x.size     # every point in exactly one chunk
     got_sorted, corder = _sorted_classes(cx, cy, cz, got)
@@ -409,7 +410,7 @@ def test_adaptive_slope_is_anchored_on_the_global_origin(tiles, tmp_path):
     assert not res.failed and GROUND_FILTERS["slope_adaptive"].tiling
     paths, x, y, z, cls0 = _merged(tiles)
     cat = cc.Catalog.open(str(tiles))
-    merged = _filter("slope_adaptive", x, y, z, cls0, res.settings["origin"])
+    merged = _filter("slope_adaptive", x, y, z, cls0)
     got = _catalog_classes(paths, out)
     inner = _outer_distance(x, y, cat.extent) > BUFFER
     assert np.array_equal(got[inner], merged[inner])

@@ -46,6 +46,7 @@ def _run_chunks(cat, out: Path):
     tasks = cc.plan_tasks(cat, out, ground_filter="groundfilter", dtm_method="idw",
                           cell_size=1.0, buffer=BUFFER)
     (out / cc.STATE_DIR).mkdir(parents=True)
+    cc.first_pass(cat, tasks, out)
     for t in tasks:
         _chunks.process_chunk(t)
     return tasks
@@ -73,11 +74,10 @@ def test_recommended_tolerance_is_derived_per_chunk(tmp_path, monkeypatch, densi
         seen.append(out.threshold)
         return out
     monkeypatch.setattr(rec, "derive", spy)
-    tasks = _run_chunks(cat, tmp_path / "chunks")
+    _run_chunks(cat, tmp_path / "chunks")
     per_chunk, seen[:] = list(seen), []
     merged = classify_points(PointData(x, y, z, {"classification": cls0}),
-                             ground_filter("groundfilter"), default_selection("groundfilter"),
-                             origin=tasks[0].origin)
+                             ground_filter("groundfilter"), default_selection("groundfilter"))
     (whole,) = seen
 
     def catalog_classes(out):

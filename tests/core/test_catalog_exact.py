@@ -7,11 +7,14 @@ own planning and chunk code runs every chunk in this process with the default bu
 (100 m: wider than these files, so every chunk holds the whole cloud and only the
 anchoring of grids and tiles can differ).
 
-Pinned: every filter's catalog classes equal a run of the whole file anchored on the
-catalog's origin, point for point. Measured beside it (``bench_catalog_exact.py``,
-``benchmarks/results/catalog_exact.md``): a single-file run with the filter's own
-origin (the cloud's corner) differs — conifers: LSQ faithful 1,503 of 37,657 points,
-recommended 53, PTD 38, slope adaptive 17, LSQ improved 16.
+Pinned: every filter's catalog classes equal the single-file run of the whole file, as
+the single-file algorithm runs it, point for point. The catalog's first pass
+(``catalog.first_pass``, :mod:`core.lidar._summary`) gives every chunk the corner of
+all the catalog's points, where a single-file run anchors its grids and tiles (PTD: both
+on its lattice through 0). Before it the chunks were anchored on the catalog's
+kilometre origin and differed (``benchmarks/results/catalog_exact.md``) — conifers: LSQ
+faithful 1,503 of 37,657 points, recommended 53, PTD 38, slope adaptive 17, LSQ improved
+16; US feet: LSQ faithful 170, recommended 10, LSQ improved 1.
 """
 from __future__ import annotations
 
@@ -74,6 +77,7 @@ def _catalog(folder: Path, out: Path, key: str):
     tasks = cc.plan_tasks(cat, out, ground_filter=key, dtm_method="idw", cell_size=2.0,
                           buffer=100.0)
     (out / cc.STATE_DIR).mkdir(parents=True, exist_ok=True)
+    cc.first_pass(cat, tasks, out)
     for t in tasks:
         _chunks.process_chunk(t)
     return tasks, np.concatenate([read_las(t.outputs["LAS"], ("classification",))
@@ -82,13 +86,12 @@ def _catalog(folder: Path, out: Path, key: str):
 
 @pytest.mark.parametrize("name", FILES, ids=["conifers", "feet"])
 @pytest.mark.parametrize("key", list(GROUND_FILTERS))
-def test_catalog_of_real_tiles_equals_the_anchored_single_file_run(tiles, tmp_path, name, key):
+def test_catalog_of_real_tiles_equals_the_single_file_run(tiles, tmp_path, name, key):
     folder, pts, units = tiles(name)
-    tasks, got = _catalog(folder, tmp_path / "out", key)
+    _, got = _catalog(folder, tmp_path / "out", key)
     x, y, z = units.xyz_to_metres(pts.x, pts.y, pts.z)
-    origin = tuple(units.h_to_metres(v) for v in tasks[0].origin)
     ref = classify_points(PointData(x, y, z, pts.dims), ground_filter(key),
-                          default_selection(key), origin=origin)
+                          default_selection(key))
     assert got.shape == ref.shape == (len(pts),)
     assert np.array_equal(got, ref), f"{int((got != ref).sum())} of {got.size} points differ"
     if key != "keep":

@@ -2,9 +2,10 @@
 
 For every registered filter (and the catalog's default): the 2 x 2 synthetic catalog
 run chunk by chunk (the catalog's own planning and chunk code, in this process) gives
-the same classes as :func:`classify_file` on the merged cloud (same lattice origin,
-the filter's single-file default selection) for every point farther than the buffer
-from the catalog's outer edge, and input class 18 stays 18 in both.
+the same classes as :func:`classify_file` on the merged cloud as a single-file run
+makes them (the filter's default selection; both anchored on the world lattice) for
+every point farther than the buffer from the catalog's outer edge, and input class 18
+stays 18 in both.
 
 The recommended filter gives exactly the same classes (its hole fill takes the 12
 nearest border cells ordered by distance and offset, its pyramids and block structures
@@ -87,6 +88,7 @@ def _catalog(tiles: Path, out: Path, key):
     tasks = cc.plan_tasks(cat, out, ground_filter=key or default_ground_filter(),
                           dtm_method="idw", cell_size=2.0, buffer=BUFFER)
     (out / cc.STATE_DIR).mkdir(parents=True, exist_ok=True)
+    cc.first_pass(cat, tasks, out)
     for t in tasks:
         process_chunk(t)
     cls = np.concatenate([read_las(t.outputs["LAS"], ("classification",))["classification"]
@@ -102,7 +104,7 @@ def test_catalog_chunk_equals_single_file_run(catalogs, tmp_path, key):
     assert [t.tile for t in tasks] == paths
     run = classify_file(merged_path, ground_filter(k),
                         FilterOutputs(cloud=tmp_path / "single.las"),
-                        selection=default_selection(k), origin=tasks[0].origin)
+                        selection=default_selection(k))
     ref = run.classes
     assert got.shape == ref.shape == (cat.n_points,)
     e = cat.extent
