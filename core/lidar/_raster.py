@@ -12,6 +12,7 @@ import numpy as np
 from scipy import ndimage
 
 from ..errors import InputError
+from ._heights import BAND, HEIGHT, box_mean, height_base  # noqa: F401 - re-exported
 
 
 def density(x, y, cell: float = 5.0) -> float:
@@ -133,6 +134,8 @@ def changed(a, b):
     >>> changed(np.array([1.0, np.nan, 0.0]), np.array([1.0, np.nan, -0.0])).tolist()
     [False, False, True]
     """
+    if a.dtype == b.dtype == np.float32:               # heights stored in float32
+        return np.ascontiguousarray(a).view(np.int32) != np.ascontiguousarray(b).view(np.int32)
     a, b = np.ascontiguousarray(a, np.float64), np.ascontiguousarray(b, np.float64)
     return a.view(np.int64) != b.view(np.int64)
 
@@ -177,16 +180,28 @@ class PointCells:
         self.starts = np.zeros(self.cells.size, it)
         self.starts[1:] = np.cumsum(count[self.cells][:-1])
 
-    def cell_min(self, z, mask=None):
-        """Lowest z per cell (NaN where empty or no masked point)."""
+    def cell_min(self, z, mask=None, base=None):
+        """Lowest z per cell (NaN where empty or no masked point).
+
+        With ``base`` (a float) the raster holds ``min - base`` in float32
+        (:data:`HEIGHT`, :func:`height_base`); else the minima in float64.
+        """
         zs = z[self.order]
         if mask is not None:
             zs[~mask[self.order]] = np.inf
-        out = np.full(self.grid.rows * self.grid.cols, np.nan)
+        dtype = np.float64 if base is None else HEIGHT
+        out = np.full(self.grid.rows * self.grid.cols, np.nan, dtype)
         m = np.minimum.reduceat(zs, self.starts)
+        del zs
         m[np.isinf(m)] = np.nan
+        if base is not None:
+            m -= base
         out[self.cells] = m
         return out.reshape(self.grid.rows, self.grid.cols)
+
+    def height_base(self, z):
+        """:func:`height_base` of the cell minima of ``z``."""
+        return height_base(np.minimum.reduceat(z[self.order], self.starts))
 
     def bilinear(self, raster, points=None):
         """Bilinear value of a cell-centred raster at every point (float64).
@@ -203,13 +218,13 @@ class PointCells:
         for s in range(0, out.size, CHUNK):          # in blocks: same values, in cache
             e = s + CHUNK
             i, f = i00[s:e], fx[s:e]
-            top = flat[i]
-            d = flat[i + c1]
+            top = flat[i].astype(np.float64, copy=False)      # float32 rasters: in float64
+            d = flat[i + c1].astype(np.float64, copy=False)
             d -= top                             # top + (right - top) * fx
             d *= f
             top += d
-            bot = flat[i + r1]
-            d = flat[i + (r1 + c1)]
+            bot = flat[i + r1].astype(np.float64, copy=False)
+            d = flat[i + (r1 + c1)].astype(np.float64, copy=False)
             d -= bot
             d *= f
             bot += d
@@ -314,61 +329,16 @@ def _pushpull(vw, w, r0=0, c0=0):
     pr, pc = r0 % 2, c0 % 2
     r2, c2 = (rows + pr + 1) // 2, (cols + pc + 1) // 2
     pad = ((pr, 2 * r2 - rows - pr), (pc, 2 * c2 - cols - pc))
-    cvw = np.pad(vw, pad).reshape(r2, 2, c2, 2).sum(axis=(1, 3))
+    # the coarser levels in float64 (sums of up to 4**k heights), the finest in vw's type
+    cvw = np.pad(vw, pad).reshape(r2, 2, c2, 2).sum(axis=(1, 3), dtype=np.float64)
     cw = np.pad(w, pad).reshape(r2, 2, c2, 2).sum(axis=(1, 3))
     coarse = _pushpull(cvw, cw, r0 // 2, c0 // 2)
-    up = ndimage.zoom(coarse, 2, order=1, mode="nearest", grid_mode=True)
+    up = ndimage.zoom(coarse, 2, order=1, mode="nearest", grid_mode=True,
+                      output=np.result_type(vw.dtype, np.float32))
     up = up[pr:pr + rows, pc:pc + cols]
     return np.divide(vw, w, out=up, where=w > 0)       # the upsampled array is ours
 
 
-#: resolution of :func:`box_mean` (2**-20 of the unit, about 1 micrometre)
-_BOX_SCALE = float(2 ** 20)
-
-
-def box_mean(a, size: int, subtract_from=None):
-    """Mean over a ``size`` x ``size`` box, computed exactly at a resolution of 2**-20.
-
-    Edges are repeated (like ``uniform_filter`` with mode "nearest").
-
-    scipy's ``uniform_filter`` keeps a running sum along each line, so the rounding of
-    a cell's mean depends on where the line starts: a catalog chunk and the merged cloud
-    would differ in the last bits. Here the values are rounded to 2**-20 and summed as
-    integers, so each mean depends only on the cells in its box (and is computed in
-    bands of :data:`BAND` rows: integer sums do not depend on the band either).
-
-    With ``subtract_from`` (a float64 raster of the same shape) the means are subtracted
-    from it in place, band by band, and it is returned.
-
-    >>> float(box_mean(np.arange(9.0).reshape(3, 3), 3)[1, 1])
-    4.0
-    """
-    size = int(size)
-    a = np.asarray(a, dtype=np.float64)
-    if size <= 1:
-        if subtract_from is not None:
-            subtract_from -= a
-            return subtract_from
-        return a.copy()
-    rows, cols = a.shape
-    h = size // 2
-    cidx = np.clip(np.arange(-h, cols + size - h - 1), 0, cols - 1)
-    out = np.empty(a.shape) if subtract_from is None else None
-    for b0 in range(0, rows, BAND):
-        n = min(BAND, rows - b0)
-        ridx = np.clip(np.arange(b0 - h, b0 + n + size - h - 1), 0, rows - 1)
-        q = np.rint(a[ridx] * _BOX_SCALE).astype(np.int64)
-        q = _window_sums(q, size, n, axis=0)
-        q = _window_sums(np.take(q, cidx, axis=1), size, cols, axis=1)
-        if subtract_from is None:
-            out[b0:b0 + n] = q / (_BOX_SCALE * size * size)
-        else:
-            subtract_from[b0:b0 + n] -= q / (_BOX_SCALE * size * size)
-    return out if subtract_from is None else subtract_from
-
-
-#: Rows per band of :func:`box_mean` and :func:`slope` (bounds their temporaries).
-BAND = 128
 
 
 def floor_steps(z, valid, step: float):
@@ -402,16 +372,6 @@ def floor_steps(z, valid, step: float):
     return z
 
 
-def _window_sums(q, size: int, n: int, axis: int):
-    """Return the sums of ``size`` consecutive entries of ``q`` along ``axis`` (n of them)."""
-    cs = np.cumsum(q, axis=axis)
-    shape = list(cs.shape)
-    shape[axis] = 1
-    cs = np.concatenate((np.zeros(shape, cs.dtype), cs), axis=axis)
-    return (np.take(cs, np.arange(size, size + n), axis=axis)
-            - np.take(cs, np.arange(n), axis=axis))
-
-
 def opening(z, radius, out=None):
     """Grey opening with a (2r+1)² square window (separable min/max filters).
 
@@ -429,19 +389,23 @@ def opening(z, radius, out=None):
     return out
 
 
-def slope(z, cell):
-    """Gradient magnitude (rise over run) of a raster (flat along a 1-cell axis)."""
+def slope(z, cell, dtype=np.float64):
+    """Gradient magnitude (rise over run) of a raster (flat along a 1-cell axis).
+
+    Computed in float64 band by band, stored as ``dtype``.
+    """
     if min(z.shape) < 2:
         rows, cols = z.shape
+        z = np.asarray(z, np.float64)
         gy = np.gradient(z, cell, axis=0) if rows > 1 else np.zeros_like(z)
         gx = np.gradient(z, cell, axis=1) if cols > 1 else np.zeros_like(z)
-        return np.hypot(gx, gy)
+        return np.hypot(gx, gy).astype(dtype, copy=False)
     rows = z.shape[0]
-    out = np.empty(z.shape)
+    out = np.empty(z.shape, dtype)
     for b0 in range(0, rows, BAND):           # bands with a row of margin: same differences
         n = min(BAND, rows - b0)
         lo, hi = max(0, b0 - 1), min(rows, b0 + n + 1)
-        gy, gx = np.gradient(z[lo:hi], cell)
+        gy, gx = np.gradient(z[lo:hi].astype(np.float64, copy=False), cell)
         np.hypot(gx[b0 - lo:b0 - lo + n], gy[b0 - lo:b0 - lo + n], out=out[b0:b0 + n])
     return out
 
@@ -470,7 +434,8 @@ def slope_at(z, cell, cells):
         for i, n, step in ((c[s:e], cols, 1), (r[s:e], rows, cols)):
             lo, hi = np.maximum(i - 1, 0), np.minimum(i + 1, n - 1)
             base = cells[s:e] - i * step
-            d = flat[base + hi * step] - flat[base + lo * step]
+            d = flat[base + hi * step].astype(np.float64, copy=False)
+            d -= flat[base + lo * step]
             d /= cell * (hi - lo)
             g.append(d)
         np.hypot(g[0], g[1], out=out[s:e])

@@ -53,7 +53,7 @@ def _window_planes(z, valid, radius: int, *, spread: bool = False):
     box = np.ones(2 * r + 1)
     w = valid.astype(np.float64)
     zc = 0.0
-    zw = np.where(valid, z - zc, 0.0)
+    zw = np.where(valid, np.asarray(z, np.float64) - zc, 0.0)     # float32 rasters: in float64
 
     rows = {}                  # each (raster, kernel) along the rows is computed once
 
@@ -300,7 +300,8 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         its ``neighbours``-th border distance plus the plane window
         (:func:`_unchanged`) - the value a new computation would give, bit for bit.
     overwrite : bool
-        Fill ``z`` itself (float64) and return it, sparing a raster: only its invalid
+        Fill ``z`` itself (float64 or float32: the values are computed in float64
+        and stored in ``z``'s type) and return it, sparing a raster: only its invalid
         cells are written, after the valid ones were read.
 
     Returns

@@ -69,7 +69,7 @@ def terrain_slope(zf, grid, opt):
         Slope tolerance per cell (rise/run).
     """
     r = max(1, int(np.ceil(opt.max_window / grid.cell)))
-    t = R.slope(R.opening(zf, r), grid.cell)
+    t = R.slope(R.opening(zf, r), grid.cell, dtype=zf.dtype)     # float32 rasters: float32
     t = R.box_mean(t, 2 * r + 1)
     t *= opt.slope_factor
     return np.clip(t, opt.slope_min, opt.slope_max, out=t)

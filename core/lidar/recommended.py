@@ -330,25 +330,24 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     rep(0.0)
     opt = derive(x, y, opt)
     pc = R.PointCells(x, y, R.Grid.around(x, y, opt.cell, origin=origin))
+    base = pc.height_base(z)          # rasters of heights above it, in float32 (R.HEIGHT)
     rep(0.3)
     need = pc.read_mask()
     if info is not None:
         info.update(options=opt, n=int(x.size), grid=pc.grid)
-    # the minimum raster is rebuilt when the growing step reads it again: one raster
-    # less through the openings (the same values: the same points, the same minima)
-    dtm = surface(pc.cell_min(z), pc.grid, opt, rep, need=need, info=info,
-                  remake=lambda: pc.cell_min(z))
+    zmin = lambda: pc.cell_min(z, base=base)  # noqa: E731 - rebuilt for the growing step
+    dtm = surface(zmin(), pc.grid, opt, rep, need=need, info=info, remake=zmin)
     rep(0.8)
     last = {}             # the refine passes change few cells: few points relabelled
-    cls = label_points(z, dtm, pc, opt, last)
+    cls = label_points(z, dtm, pc, opt, last, base)
     del dtm
     cache = {}            # the refine fills change few cells: each keeps most of the last
     for k in range(int(opt.refine)):
         rep(0.8 + 0.2 * (k + 1) / (opt.refine + 1))
-        zg = pc.cell_min(z, cls == GROUND)
+        zg = pc.cell_min(z, cls == GROUND, base=base)
         zg = fill_holes(zg, ~np.isnan(zg), pc.grid, opt, need, cache, overwrite=True)
         _trim()
-        cls = label_points(z, zg, pc, opt, last)
+        cls = label_points(z, zg, pc, opt, last, base)
     rep(1.0)
     return cls
 
@@ -514,8 +513,8 @@ def progressive_objects(zf, cell, max_window, slope, rep, overwrite=False):
         opened = R.opening(cur, r, out=spare)
         for b0 in range(0, zf.shape[0], R.BAND):    # bands: no full-size temporaries
             b = slice(b0, b0 + R.BAND)
-            s = slope[b] if np.ndim(slope) else slope
-            obj[b] |= (cur[b] - opened[b]) > s * r * cell
+            s = np.asarray(slope[b] if np.ndim(slope) else slope, np.float64)
+            obj[b] |= np.subtract(cur[b], opened[b], dtype=np.float64) > s * int(r) * cell
         spare = cur if overwrite or cur is not zf else None
         cur = opened
     return obj
@@ -525,7 +524,7 @@ def progressive_objects(zf, cell, max_window, slope, rep, overwrite=False):
 _CROSS = ndimage.generate_binary_structure(2, 1)
 
 
-def label_points(z, dtm, pc, opt, last=None):
+def label_points(z, dtm, pc, opt, last=None, base=0.0):
     """Per-point classes against the DTM with a slope-dependent tolerance.
 
     Parameters
@@ -533,7 +532,7 @@ def label_points(z, dtm, pc, opt, last=None):
     z : ndarray
         Heights.
     dtm : ndarray
-        Cell-centred DTM raster.
+        Cell-centred DTM raster (heights above ``base``; float32 or float64).
     pc : PointCells
         Per-point cell look-ups.
     opt : RecommendedOptions
@@ -545,6 +544,8 @@ def label_points(z, dtm, pc, opt, last=None):
         changed in it or its 4 neighbours, the central differences' stencil), the others
         keep their class - the same classes as labelling every point. The DTM is kept,
         not copied: the caller must not change it in place afterwards.
+    base : float
+        Height of the DTM's zero (:func:`._heights.height_base`).
 
     Returns
     -------
@@ -565,8 +566,8 @@ def label_points(z, dtm, pc, opt, last=None):
     slope = R.slope(dtm, pc.grid.cell) if n >= dtm.size else None
     for s in range(0, n, R.CHUNK):                   # in blocks: same values, in cache
         p = slice(s, s + R.CHUNK) if pts is None else pts[s:s + R.CHUNK]
-        dz = pc.bilinear(dtm, p)
-        np.subtract(z[p], dz, out=dz)
+        dz = pc.bilinear(dtm, p)                     # float64
+        np.subtract(z[p] - base if base else z[p], dz, out=dz)   # z[p] may be a view
         tol = pc.nearest(slope, p) if slope is not None else \
             R.slope_at(dtm, pc.grid.cell, pc.idx[p])
         tol *= opt.scaler
