@@ -78,17 +78,22 @@ def stress_section(filters=FILTERS, files=None):
     return rows
 
 
-def stress_md(rows, filters=FILTERS):
-    """Markdown of :func:`stress_section`."""
+def run_stamp():
+    """(short commit of the worktree, local time to the minute) of a run."""
     import datetime
     import subprocess
-    load = os.getloadavg() if hasattr(os, "getloadavg") else (float("nan"),)
     try:
         head = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                               text=True, cwd=gr.ROOT, check=True).stdout.strip()
     except (OSError, subprocess.CalledProcessError):
         head = "?"
-    now = datetime.datetime.now().strftime("%Y-%m-%dT%H:%M")
+    return head, datetime.datetime.now().strftime("%Y-%m-%dT%H:%M")
+
+
+def stress_md(rows, filters=FILTERS):
+    """Markdown of :func:`stress_section`."""
+    load = os.getloadavg() if hasattr(os, "getloadavg") else (float("nan"),)
+    head, now = run_stamp()
     cols = ("oracle",) + tuple(filters)
     L = ["## Real files thinned: DTM RMSE (m) / cells off > 1 m (%) (`--stress`)", "",
          "Each real file thinned at random to 2 / 1 / 0.5 pts/m² (bounding-box density, "

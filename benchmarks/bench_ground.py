@@ -27,7 +27,9 @@ Writes ``benchmarks/results/ground.md``:
 speed row) and merges them into the existing ``ground.md``, leaving every other row
 as it was and noting when. ``--stress`` merges the section of the 4 real files thinned
 to 2 / 1 / 0.5 pts/m² with 3 seeds, every filter beside the oracle (the vendor ground of
-the same subset; ``_ground_stress.py``).
+the same subset; ``_ground_stress.py``). ``--transforms`` merges stress round 2: closed
+canopy, a dense crop, offsets and a rotation, units and no input classes through the
+file path (``_ground_transforms.py``).
 """
 from __future__ import annotations
 
@@ -436,7 +438,7 @@ def merge_ptd(text, rows, speed, quick):
 
 
 def _ground_extra(args):
-    """--real / --density / --loso12 / --stress: one section each, merged into ground.md."""
+    """--real / --density / --loso12 / --stress / --transforms: one section each, merged."""
     import _ground_real as gr
 
     def merge(md):                       # re-read: other runs may have merged meanwhile
@@ -470,6 +472,13 @@ def _ground_extra(args):
             print(f"real files not found in {gr.REAL}; stress skipped")
         else:
             merge(gs.stress_md(rows, filters))
+    if args.transforms:
+        import _ground_transforms as gt
+        rows = gt.transforms_section(args.transforms_filters.split(","))
+        if rows is None:
+            print(f"real files not found in {gr.REAL}; transforms skipped")
+        else:
+            merge(gt.transforms_md(rows, args.transforms_filters.split(",")))
     print(RESULTS.read_text(encoding="utf-8"))
     return 0
 
@@ -505,9 +514,16 @@ def main(argv=None):
                          "the filters against the vendor's, beside the oracle (merged)")
     ap.add_argument("--stress-filters", default="recommended,ptd,lsq_improved",
                     help="comma-separated filters for --stress")
+    ap.add_argument("--transforms", action="store_true",
+                    help="the 4 real files transformed (closed canopy, dense crop, offsets "
+                         "and rotation, units and no input classes through the file path; "
+                         "_ground_transforms.py), merged")
+    ap.add_argument("--transforms-filters", default="recommended,smrf",
+                    help="comma-separated filters for --transforms")
     args = ap.parse_args(argv)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
-    if args.real or args.density or args.loso12 or args.isprs_recommended or args.stress:
+    if (args.real or args.density or args.loso12 or args.isprs_recommended or args.stress
+            or args.transforms):
         return _ground_extra(args)
     if args.ptd:
         import _ground_real as gr
