@@ -291,7 +291,8 @@ def transforms_md(rows, filters=FILTERS):
          "units and input classes through the file path. Scored as `--stress`: the 1 m IDW "
          "DTM of the filter's ground against the vendor ground DTM of the FULL "
          "untransformed file, inside the vendor-ground hull (dense: inside the crop). "
-         f"Every filter at its defaults. Recommended CPU {cpu:.1f} s over the section "
+         f"Every filter at its defaults. Recommended CPU {cpu:.1f} s summed over the rows "
+         "(file-path rows: read, filter and write) "
          f"(load average {load[0]:.1f} at the end, 2 shared cores). Run {now} at {head} "
          "(`bench_ground.py --transforms`).", "",
          "### Closed canopy and dense crop", "",
