@@ -209,6 +209,7 @@ def feet_copy(src, dst):
     ``SetLinearUnitsAndUpdateParameters``) and the GeoTIFF keys dropped.
     """
     import laspy
+
     from geomatics_toolbox.core.io.las import crs_of_header
     from geomatics_toolbox.synthetic.hostile import unit_copy
     las = laspy.read(str(src))
