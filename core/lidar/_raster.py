@@ -180,12 +180,20 @@ class PointCells:
         self.starts = np.zeros(self.cells.size, it)
         self.starts[1:] = np.cumsum(count[self.cells][:-1])
 
-    def cell_min(self, z, mask=None, base=None):
+    def cell_min(self, z, mask=None, base=None, since=None):
         """Lowest z per cell (NaN where empty or no masked point).
 
         With ``base`` (a float) the raster holds ``min - base`` in float32
         (:data:`HEIGHT`, :func:`height_base`); else the minima in float64.
+        ``since = (raster, valid, points)``: an earlier result (same ``base``) for another
+        mask, given at its ``valid`` cells, and the points whose mask changed since: only
+        their cells are computed again (the same values as a new computation).
         """
+        if since is not None:
+            out = np.where(since[1], since[0], np.nan)
+            cells = np.unique(self.idx[since[2]])
+            out.ravel()[cells] = self._min_at(z, mask, cells, base)
+            return out
         zs = z[self.order]
         if mask is not None:
             zs[~mask[self.order]] = np.inf
@@ -202,6 +210,22 @@ class PointCells:
     def height_base(self, z):
         """:func:`height_base` of the cell minima of ``z``."""
         return height_base(np.minimum.reduceat(z[self.order], self.starts))
+
+    def _min_at(self, z, mask, cells, base=None):
+        """:meth:`cell_min`'s values at the occupied ``cells`` only (sorted, distinct)."""
+        run = np.searchsorted(self.cells, cells)
+        start = self.starts[run].astype(np.int64)
+        length = np.append(self.starts, self.order.size)[run + 1] - start
+        first = np.cumsum(length) - length
+        p = self.order[np.repeat(start - first, length) + np.arange(int(length.sum()))]
+        zs = z[p]                                    # each cell's points in sorted order
+        if mask is not None:
+            zs[~mask[p]] = np.inf
+        m = np.minimum.reduceat(zs, first) if cells.size else zs
+        m[np.isinf(m)] = np.nan
+        if base is not None:
+            m -= base
+        return m
 
     def bilinear(self, raster, points=None):
         """Bilinear value of a cell-centred raster at every point (float64).

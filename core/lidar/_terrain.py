@@ -73,3 +73,14 @@ def terrain_slope(zf, grid, opt):
     t = R.box_mean(t, 2 * r + 1)
     t *= opt.slope_factor
     return np.clip(t, opt.slope_min, opt.slope_max, out=t)
+
+
+def wall_step(cell, opt):
+    """Height difference across one filled cell that no tolerated slope explains (m).
+
+    Two occupied cells 2 cells apart on a slope of at most the largest slope tolerance
+    differ by ``2 x cell x slope`` plus the vertical tolerance; more is a wall
+    (:func:`._raster.floor_steps`).
+    """
+    s = opt.slope if opt.slope is not None else opt.slope_max
+    return 2.0 * cell * s + opt.threshold

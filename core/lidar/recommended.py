@@ -95,7 +95,7 @@ from . import _surface as S  # noqa: N812
 from ._filter import OptionsFilter
 from ._filter import options_or_default as _options
 from ._surface import grow_ground
-from ._terrain import terrain_slope, trend_surface
+from ._terrain import terrain_slope, trend_surface, wall_step  # noqa: F401 (re-export)
 
 __all__ = ["RecommendedOptions", "classify", "derive", "recommended_filter", "OptionsFilter",
            "Cancelled", "CITATION", "TITLE"]
@@ -342,12 +342,18 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     cls = label_points(z, dtm, pc, opt, last, base)
     del dtm
     cache = {}            # the refine fills change few cells: each keeps most of the last
-    for k in range(int(opt.refine)):
+    flipped = None        # the points that turned ground or not in the last labelling:
+    for k in range(int(opt.refine)):                 # only their cells' minima are new
         rep(0.8 + 0.2 * (k + 1) / (opt.refine + 1))
-        zg = pc.cell_min(z, cls == GROUND, base=base)
+        since = (last["dtm"], cache["valid"], flipped) \
+            if flipped is not None and cache.get("out") is last["dtm"] else None
+        zg = pc.cell_min(z, cls == GROUND, base=base, since=since)  # the last fill's valid
         zg = fill_holes(zg, ~np.isnan(zg), pc.grid, opt, need, cache, overwrite=True)
         _trim()
-        cls = label_points(z, zg, pc, opt, last, base)
+        was, cls = cls, label_points(z, zg, pc, opt, last, base)
+        if k + 1 < opt.refine:
+            flipped = np.flatnonzero((was == GROUND) != (cls == GROUND))
+        del was, since
     rep(1.0)
     return cls
 
@@ -435,17 +441,6 @@ def _fill_at(z, valid, read, grid, opt, cache, own):
     out = fill_holes(z, valid, grid, opt, read, overwrite=True).ravel()[at]
     flat[at] = kept
     return out
-
-
-def wall_step(cell, opt):
-    """Height difference across one filled cell that no tolerated slope explains (m).
-
-    Two occupied cells 2 cells apart on a slope of at most the largest slope tolerance
-    differ by ``2 x cell x slope`` plus the vertical tolerance; more is a wall
-    (:func:`._raster.floor_steps`).
-    """
-    s = opt.slope if opt.slope is not None else opt.slope_max
-    return 2.0 * cell * s + opt.threshold
 
 
 def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False):

@@ -107,3 +107,33 @@ def test_relabelling_changed_points_only_gives_the_full_labels():
         np.testing.assert_array_equal(got, full)
         assert (got != prev).any()
         prev = got
+
+
+def _bits(a):
+    return a.view(np.int64 if a.dtype == np.float64 else np.int32)
+
+
+@pytest.mark.parametrize("base", [None, 64.0])
+@pytest.mark.parametrize("shape", [(300.0, 200.0), (300.0, 0.4)])
+def test_cell_min_since_an_earlier_mask_equals_a_new_computation(shape, base):
+    """The refine passes take the minima again only at the cells of the points that
+    turned ground or not: the same bits as a new computation, including cells that lose
+    their last masked point, gain their first one, or whose only points all flip."""
+    x, y = _cloud(20000, *shape, seed=5)
+    grid = R.Grid.around(x, y, 0.7)
+    pc = R.PointCells(x, y, grid)
+    rng = np.random.default_rng(6)
+    z = rng.normal(100, 3, x.size)
+    old = rng.random(x.size) < 0.5
+    first = pc.cell_min(z, old, base)
+    for share in (0.0, 0.001, 0.05, 1.0):
+        new = old.copy()
+        flip = rng.random(x.size) < share
+        new[flip] = ~new[flip]
+        want = pc.cell_min(z, new, base)
+        got = pc.cell_min(z, new, base, since=(first, ~np.isnan(first), np.flatnonzero(flip)))
+        assert got.dtype == want.dtype and np.array_equal(_bits(got), _bits(want))
+    gone = old & (pc.idx == pc.idx[np.flatnonzero(old)[0]])            # a cell loses all
+    got = pc.cell_min(z, old & ~gone, base, since=(first, ~np.isnan(first), np.flatnonzero(gone)))
+    assert np.isnan(got.ravel()[pc.idx[np.flatnonzero(gone)[0]]])
+    assert np.array_equal(_bits(got), _bits(pc.cell_min(z, old & ~gone, base)))
