@@ -230,8 +230,18 @@ class IDW:
         dx = self.x[safe] - q[:, :1]
         dy = self.y[safe] - q[:, 1:2]
         r2 = np.where(valid, dx * dx + dy * dy, np.inf)
+        # only points whose squared distance another point of the row shares need their
+        # tie rank (ranks of a subset keep their relative order: the same sort)
+        srt = np.argsort(r2, axis=1, kind="stable")
+        s2 = np.take_along_axis(r2, srt, axis=1)
+        same = np.zeros(r2.shape, bool)
+        same[:, 1:] = s2[:, 1:] == s2[:, :-1]
+        same[:, :-1] |= same[:, 1:].copy()
+        same &= np.isfinite(s2)
+        shared = np.empty_like(same)
+        np.put_along_axis(shared, srt, same, axis=1)
         key_idx = np.full(idx.shape, np.iinfo(np.int64).max)
-        key_idx[valid] = self.tie_keys(idx[valid])
+        key_idx[shared] = self.tie_keys(idx[shared])
         order = np.lexsort((key_idx, r2), axis=-1)
         rows = np.arange(d.shape[0])[:, None]
         return d[rows, order][:, :k], idx[rows, order][:, :k]
