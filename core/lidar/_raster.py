@@ -179,6 +179,7 @@ class PointCells:
         self.cells = np.flatnonzero(count).astype(it)
         self.starts = np.zeros(self.cells.size, it)
         self.starts[1:] = np.cumsum(count[self.cells][:-1])
+        self._minima = None               # (z, its cell minima) from height_base
 
     def cell_min(self, z, mask=None, base=None, since=None):
         """Lowest z per cell (NaN where empty or no masked point).
@@ -194,13 +195,17 @@ class PointCells:
             cells = np.unique(self.idx[since[2]])
             out.ravel()[cells] = self._min_at(z, mask, cells, base)
             return out
-        zs = z[self.order]
-        if mask is not None:
-            zs[~mask[self.order]] = np.inf
+        memo, self._minima = self._minima, None
         dtype = np.float64 if base is None else HEIGHT
         out = np.full(self.grid.rows * self.grid.cols, np.nan, dtype)
-        m = np.minimum.reduceat(zs, self.starts)
-        del zs
+        if mask is None and memo is not None and memo[0] is z:
+            m = memo[1]                               # taken by height_base already
+        else:
+            zs = z[self.order]
+            if mask is not None:
+                zs[~mask[self.order]] = np.inf
+            m = np.minimum.reduceat(zs, self.starts)
+            del zs
         m[np.isinf(m)] = np.nan
         if base is not None:
             m -= base
@@ -208,16 +213,29 @@ class PointCells:
         return out.reshape(self.grid.rows, self.grid.cols)
 
     def height_base(self, z):
-        """:func:`height_base` of the cell minima of ``z``."""
-        return height_base(np.minimum.reduceat(z[self.order], self.starts))
+        """Return :func:`height_base` of the cell minima of ``z``.
 
-    def _min_at(self, z, mask, cells, base=None):
-        """:meth:`cell_min`'s values at the occupied ``cells`` only (sorted, distinct)."""
+        The minima are kept for the next ``cell_min(z)``, which does not take them again.
+        """
+        m = np.minimum.reduceat(z[self.order], self.starts)
+        self._minima = (z, m)
+        return height_base(m)
+
+    def _runs(self, cells):
+        """Return the points of the occupied ``cells`` (sorted, distinct) and their starts.
+
+        The points come cell by cell, in the sorted order; ``first`` is where each cell's
+        points start.
+        """
         run = np.searchsorted(self.cells, cells)
         start = self.starts[run].astype(np.int64)
         length = np.append(self.starts, self.order.size)[run + 1] - start
         first = np.cumsum(length) - length
-        p = self.order[np.repeat(start - first, length) + np.arange(int(length.sum()))]
+        return self.order[np.repeat(start - first, length) + np.arange(int(length.sum()))], first
+
+    def _min_at(self, z, mask, cells, base=None):
+        """:meth:`cell_min`'s values at the occupied ``cells`` only (sorted, distinct)."""
+        p, first = self._runs(cells)
         zs = z[p]                                    # each cell's points in sorted order
         if mask is not None:
             zs[~mask[p]] = np.inf
@@ -268,12 +286,22 @@ class PointCells:
         g = self.grid
         c1 = 1 if g.cols > 1 else 0
         r1 = g.cols if g.rows > 1 else 0
-        d = cells.ravel()
+        d, sc = cells.ravel(), slope_cells.ravel()
         corner = d.copy()                 # corner[j]: a cell read from lower-left j changed
         for off in {c1, r1, r1 + c1} - {0}:
             corner[:d.size - off] |= d[off:]
+        # few flags: only the points of the cells that can hold such a point (a point's own
+        # cell is its lower-left bilinear cell + 0 / 1 column + 0 / 1 row) are tested
+        near = np.flatnonzero(corner)
+        near = np.union1d(np.concatenate([near + off for off in {0, c1, r1, r1 + c1}]),
+                          np.flatnonzero(sc)) if near.size * 16 < self.cells.size else None
+        if near is not None and near.size * 8 < self.cells.size:
+            near = near[near < d.size]
+            run = np.minimum(np.searchsorted(self.cells, near), self.cells.size - 1)
+            p = self._runs(near[self.cells[run] == near])[0]
+            return np.sort(p[corner[self.i00[p]] | sc[self.idx[p]]]).astype(np.intp)
         hit = corner[self.i00]
-        hit |= slope_cells.ravel()[self.idx]
+        hit |= sc[self.idx]
         return np.flatnonzero(hit)
 
     def read_mask(self):

@@ -63,20 +63,26 @@ def test_blocks_equal_the_whole_array_expressions(monkeypatch, chunk, shape):
     assert np.array_equal(pc.nearest(raster, sub), raster.ravel()[idx[sub]])
 
 
-def test_reading_lists_every_point_whose_inputs_changed():
+@pytest.mark.parametrize("shape", [(120.0, 90.0), (300.0, 0.4), (0.3, 50.0)])
+def test_reading_lists_every_point_whose_inputs_changed(shape):
     """Brute force: a point is listed iff one of its 4 bilinear cells or its slope
-    cell is flagged."""
-    x, y = _cloud(20000, 120.0, 90.0, seed=4)
-    pc = R.PointCells(x, y, R.Grid.around(x, y, 1.0))
+    cell is flagged (few flags: only the points of the cells near them are tested;
+    many: every point), flags on the grid's edges and corners included."""
+    x, y = _cloud(20000, *shape, seed=4)
+    pc = R.PointCells(x, y, R.Grid.around(x, y, 1.0 if shape[0] > 100 else 0.05))
     rng = np.random.default_rng(5)
-    size = pc.grid.rows * pc.grid.cols
-    for share in (0.0, 0.001, 0.05):
+    g = pc.grid
+    size = g.rows * g.cols
+    c1 = 1 if g.cols > 1 else 0
+    r1 = g.cols if g.rows > 1 else 0
+    for share in (0.0, 0.0005, 0.001, 0.05, 0.3):
         cells = rng.random(size) < share
         slope_cells = rng.random(size) < share
-        g = pc.grid
-        corners = [pc.i00, pc.i00 + 1, pc.i00 + g.cols, pc.i00 + g.cols + 1]
+        if 0 < share < 0.01:
+            cells[[0, g.cols - 1, size - g.cols, size - 1]] = True       # the corners
+            slope_cells[size - 1] = True
         want = np.zeros(x.size, bool)
-        for c in corners:
+        for c in (pc.i00, pc.i00 + c1, pc.i00 + r1, pc.i00 + r1 + c1):
             want |= cells[c]
         want |= slope_cells[pc.idx]
         got = pc.reading(cells.reshape(g.rows, g.cols), slope_cells.reshape(g.rows, g.cols))
@@ -137,3 +143,20 @@ def test_cell_min_since_an_earlier_mask_equals_a_new_computation(shape, base):
     got = pc.cell_min(z, old & ~gone, base, since=(first, ~np.isnan(first), np.flatnonzero(gone)))
     assert np.isnan(got.ravel()[pc.idx[np.flatnonzero(gone)[0]]])
     assert np.array_equal(_bits(got), _bits(pc.cell_min(z, old & ~gone, base)))
+
+
+def test_cell_min_after_height_base_reuses_its_minima_only_for_the_same_heights():
+    x, y = _cloud(5000, 80.0, 60.0, seed=8)
+    z = np.random.default_rng(9).normal(1500, 20, x.size)
+    pc, fresh = (R.PointCells(x, y, R.Grid.around(x, y, 0.7)) for _ in range(2))
+    base = pc.height_base(z)
+    assert base == 1024.0
+    other = z + 1.0                                   # other heights: computed anew
+    assert np.array_equal(_bits(pc.cell_min(other, base=base)),
+                          _bits(fresh.cell_min(other, base=base)))
+    pc.height_base(z)
+    got = pc.cell_min(z, base=base)
+    assert got.dtype == np.float32
+    assert np.array_equal(_bits(got), _bits(fresh.cell_min(z, base=base)))
+    assert pc._minima is None                         # used once, then dropped
+    assert np.array_equal(_bits(pc.cell_min(z, base=base)), _bits(got))
