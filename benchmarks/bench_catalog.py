@@ -71,7 +71,8 @@ from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile  # noqa:
 
 DENSITY = 5.0
 CHUNK_PHASES = ("strips", "read", "filter", "dtm", "write")   # strips: share of neighbour reads
-CLIENT_PHASES = ("index", "plan", "cluster start", "compute", "cluster close", "mosaic")
+CLIENT_PHASES = ("index", "plan", "cluster start", "first pass", "compute", "cluster close",
+                 "mosaic")
 
 
 def generate(folder: Path, n_side: int, per_tile: int) -> float:
@@ -132,7 +133,9 @@ def analyse(res, worker_cpu: float) -> dict:
     return dict(wall=res.seconds, pps=res.points_per_second, chunk=chunk,
                 worker_cpu=worker_cpu, client_cpu=sum(v[1] for v in res.timings.values()),
                 chunk_wall=chunk_wall, chunk_cpu=chunk_cpu, workers=workers,
-                client={p: res.timings.get(p, [0.0, 0.0]) for p in CLIENT_PHASES})
+                client={p: res.timings.get(p, [0.0, 0.0]) for p in CLIENT_PHASES},
+                # the first pass on the workers (core/lidar/_summary.py), summed over tiles
+                first_pass=res.settings.get("first_pass_seconds") or [0.0, 0.0])
 
 
 def merged_run(cat, args, origin):
@@ -325,6 +328,9 @@ def _run_rows(cat, runs, merged):
 def _phase_rows(runs):
     lines = ["| phase | " + " | ".join(f"{w} worker(s): wall s / CPU s" for w in sorted(runs))
              + " |", "|---|" + "---|" * len(runs)]
+    lines.append("| first pass: tiles summarised (sum, workers) | " + " | ".join(
+        f"{runs[w][1]['first_pass'][0]:.1f} / {runs[w][1]['first_pass'][1]:.1f}"
+        for w in sorted(runs)) + " |")
     for p in CHUNK_PHASES:
         lines.append(f"| chunks: {p} (sum) | " + " | ".join(
             f"{runs[w][1]['chunk'][p][0]:.1f} / {runs[w][1]['chunk'][p][1]:.1f}"

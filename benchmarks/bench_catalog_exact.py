@@ -130,13 +130,13 @@ def scene_rows(tmp: Path):
         d = tmp / kind.replace(" ", "_") / "tiles"
         d.mkdir(parents=True)
         half = 500_000.0 + 300.0
-        idx = []
+        parts = []
         for i, m in enumerate((x < half, x >= half)):
             write_las(d / f"t{i}.las", x[m], y[m], z[m], dimensions={"classification": cls[m]},
                       crs="EPSG:32632", scale=0.01)
-            idx.append(np.flatnonzero(m))
-        order = np.concatenate(idx)
-        x, y, z, cls = x[order], y[order], z[order], cls[order]
+            parts.append(read_las(d / f"t{i}.las", ("classification",)))   # as stored (1 cm)
+        x, y, z = (np.concatenate([getattr(p, a) for p in parts]) for a in "xyz")
+        cls = np.concatenate([p["classification"] for p in parts])
         t0, c0 = time.perf_counter(), time.process_time()
         got, _, cat = catalog_classes(d, d.parent / "out", "groundfilter")
         from geomatics_toolbox.core.io.units import METRIC

@@ -143,6 +143,10 @@ class ChunkTask:
     #: the catalog, from its first pass (:mod:`._summary`), as a single-file run of the
     #: merged cloud anchors at its corner; None: the chunk's own (or PTD's lattice).
     filter_origin: Optional[Tuple[float, float]] = None
+    #: What the filter derives from the whole cloud (the recommended filter's density,
+    #: median count per 5 m cell, input water anywhere: ``_summary.recommended_values``),
+    #: from the first pass; None: from the chunk's own points.
+    derived: Optional[dict] = None
 
     @property
     def neighbours(self) -> List[str]:
@@ -319,6 +323,8 @@ def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
         xyz = units.xyz_to_metres(*xyz)
     pts = PointData(*xyz, dims=dims)
     flt = ground_filter(task.ground_filter)
+    if task.derived is not None and hasattr(flt, "summary"):
+        flt.summary = dict(task.derived)
     origin = task.filter_origin if getattr(flt, "lattice", "cloud") == "cloud" else None
     return classify_points(pts, flt, default_selection(task.ground_filter),
                            origin=None if origin is None else tuple(origin))

@@ -18,6 +18,10 @@ from ._heights import BAND, HEIGHT, box_mean, height_base  # noqa: F401 - re-exp
 def density(x, y, cell: float = 5.0) -> float:
     """Points per m² over the occupied ``cell``-sized cells (ignores empty areas).
 
+    The cells are those of the world lattice (multiples of ``cell``), not cells from the
+    cloud's corner: the count of a catalog's tiles adds up to the merged cloud's
+    (:mod:`._summary`, which gives the same number for the same points).
+
     Parameters
     ----------
     x, y : ndarray
@@ -30,8 +34,10 @@ def density(x, y, cell: float = 5.0) -> float:
     float
         Points per square metre of occupied area.
     """
-    ix = ((x - x.min()) // cell).astype(np.int64)
-    iy = ((y - y.min()) // cell).astype(np.int64)
+    ix = np.floor(np.asarray(x, np.float64) / cell).astype(np.int64)
+    iy = np.floor(np.asarray(y, np.float64) / cell).astype(np.int64)
+    ix -= ix.min()
+    iy -= iy.min()
     key = ix * (int(iy.max()) + 1) + iy
     if int(key.max()) < 4 * key.size + 1_000_000:       # O(n) count when the box is small
         occupied = int(np.count_nonzero(np.bincount(key)))

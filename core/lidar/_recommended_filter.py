@@ -28,6 +28,7 @@ from ..progress import Monitor
 from ..reporting import KeyValues, Paragraph, T
 from . import _raster as R  # noqa: N812
 from ._filter import FilterOutcome, OptionsFilter, check_classes
+from ._summary import DENSITY_CELL, cloud_summary, recommended_values
 
 __all__ = ["Derived", "RecommendedFilter", "water_candidates", "LABELS"]
 
@@ -40,20 +41,27 @@ LABELS = {"cell": "Raster cell (m)", "max_window": "Largest window (m)",
           "grow": "Continuity growing of terrain crests"}
 
 
-def water_candidates(x, y, z, *, sparse: float = 0.25, flat: float = 0.15,
-                     min_area: float = 400.0) -> np.ndarray:
+def water_candidates(x, y, z, *, density: Optional[float] = None,
+                     median5: Optional[float] = None, sparse: float = 0.25,
+                     flat: float = 0.15, min_area: float = 400.0) -> np.ndarray:
     """Flat, sparse returns in patches of at least ``min_area`` m² (likely water).
 
-    Cells are 3 mean point spacings wide (at least 2 m); a cell is a candidate when it
-    holds fewer than ``sparse`` x the median count of the occupied cells and the
-    heights of such cells in its 3 x 3 block (at least 3 points) spread less than
-    ``flat`` m; candidate cells that touch form patches, kept when their area reaches
-    ``min_area``.
+    Cells are 3 mean point spacings wide (at least 2 m) on the world lattice
+    (multiples of the cell); a cell is a candidate when it holds fewer than ``sparse`` x
+    the cloud's median count of the occupied cells (the median per occupied 5 m cell,
+    scaled to the cell's area) and the heights of such cells in its 3 x 3 block (at
+    least 3 points) spread less than ``flat`` m; candidate cells that touch form
+    patches, kept when their area reaches ``min_area``. The density and median are
+    the whole cloud's (a catalog's first pass, :mod:`._summary`): a chunk then flags
+    the single-file run's cells (a patch cut by the chunk's edge aside).
 
     Parameters
     ----------
     x, y, z : ndarray
         Coordinates (m).
+    density, median5 : float, optional
+        Points per m² of occupied 5 m cells and median points per occupied 5 m cell
+        (:func:`._summary.recommended_values`); default: those of these points.
     sparse, flat, min_area : float
         Thresholds (share of the median count, m, m²).
 
@@ -66,14 +74,21 @@ def water_candidates(x, y, z, *, sparse: float = 0.25, flat: float = 0.15,
     out = np.zeros(n, bool)
     if n < 100:
         return out
-    step = max(1, n // 500_000)
-    cell = max(2.0, 3.0 / np.sqrt(R.density(x[::step], y[::step]) * step))
-    grid = R.Grid.around(x, y, cell)
-    idx = grid.index(x, y)
-    size = grid.rows * grid.cols
+    if density is None or median5 is None:
+        own = recommended_values(cloud_summary(x, y, counts=True))
+        density, median5 = own["density"], own["median5"]
+    cell = max(2.0, 3.0 / np.sqrt(density))
+    ix = np.floor(np.asarray(x, np.float64) / cell).astype(np.int64)
+    iy = np.floor(np.asarray(y, np.float64) / cell).astype(np.int64)
+    ix -= ix.min()
+    iy -= iy.min()
+    shape = (int(iy.max()) + 1, int(ix.max()) + 1)
+    idx = iy * shape[1] + ix
+    del ix, iy
+    size = shape[0] * shape[1]
     cnt = np.bincount(idx, minlength=size)
     occ = cnt > 0
-    cand = occ & (cnt < sparse * np.median(cnt[occ]))
+    cand = occ & (cnt < sparse * median5 * (cell / DENSITY_CELL) ** 2)
     if not cand.any():
         return out
     sel = np.flatnonzero(cand[idx])                  # points of the sparse cells only
@@ -81,7 +96,6 @@ def water_candidates(x, y, z, *, sparse: float = 0.25, flat: float = 0.15,
     np.minimum.at(zlo, idx[sel], z[sel])
     zhi = np.full(size, -np.inf)
     np.maximum.at(zhi, idx[sel], z[sel])
-    shape = (grid.rows, grid.cols)
     box = np.ones((3, 3), bool)                      # heights and count over 3 x 3 cells
     lo = ndimage.minimum_filter(zlo.reshape(shape), footprint=box, mode="constant",
                                 cval=np.inf)
@@ -124,8 +138,8 @@ class Derived:
     water_input: int = 0
     water_candidates: int = 0
     counts: dict = field(default_factory=dict)
-    #: the filtered ``(x, y)`` (or a fixed density): the density is counted when first
-    #: asked, so a run without a report does not pay for it (0.4 s CPU on 4 M points)
+    #: the density that ran (the whole cloud's, :mod:`._summary`), or ``(x, y)`` to count
+    #: when first asked
     density_of: object = field(default=None, repr=False, compare=False)
 
     @property
@@ -236,7 +250,20 @@ class RecommendedFilter(OptionsFilter):
     ----------
     options : RecommendedOptions
         Parameters (``None`` fields derived from the cloud).
+
+    Attributes
+    ----------
+    summary : dict or None
+        What it derives from the whole cloud (:func:`._summary.recommended_values`:
+        density, median count per 5 m cell, input water anywhere). None: from the
+        points it is given (a single-file run); a catalog sets the whole catalog's
+        (its first pass), so every chunk derives what a single-file run of the merged
+        cloud derives.
     """
+
+    #: a catalog's first pass counts the points per 5 m cell for it (:mod:`._summary`)
+    needs_counts = True
+    summary: Optional[dict] = None
 
     def __init__(self, options):
         from .recommended import CITATION, TITLE, classify
@@ -252,12 +279,17 @@ class RecommendedFilter(OptionsFilter):
         n = x.size
         water = (np.asarray(classification) == WATER if classification is not None
                  else np.zeros(n, bool))
-        cand_water = np.zeros(n, bool) if water.any() else water_candidates(x, y, z)
+        s = self.summary or recommended_values(cloud_summary(x, y, classification,
+                                                             counts=True))
+        cand_water = (np.zeros(n, bool) if s["water_input"] else
+                      water_candidates(x, y, z, density=s["density"], median5=s["median5"]))
         take = ~(water | cand_water)
         sub = (lambda a: a) if take.all() else (lambda a: a[take])
-        info: dict = {"density": (x, y)}         # counted when the report asks
+        info: dict = {"density": s["density"]}
         cls = np.full(n, 1, np.uint8)
-        cls[take] = self.func(sub(x), sub(y), sub(z), options=self.options,
+        from .recommended import derive  # the tolerance from the whole cloud's density
+        cls[take] = self.func(sub(x), sub(y), sub(z),
+                              options=derive(x, y, self.options, density=s["density"]),
                               progress=mon.update, cancel=mon.cancelled, origin=origin,
                               info=info)
         cls[water] = WATER

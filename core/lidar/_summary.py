@@ -13,6 +13,16 @@ recommended filter's raster and pyramid, the slope filter's trend grid, the low-
 pre-filter's cells) on the lattice through the *corner* of the cloud it is given, the
 smallest x and y of every point read (:func:`.filters.run_filter`). The catalog's corner
 is the smallest over its tiles. (PTD lays its grids on the lattice through 0 in both.)
+
+The recommended filter's density and water test (:func:`recommended_values`): the
+points it classifies (input noise 7 and 18 aside, input water 9 counted apart) are
+counted per 5 m cell of the world lattice (multiples of 5 m, whatever the extent):
+the density is points per m² of occupied cells (its height tolerance and the water
+cell come from it) and the water test's "sparse" is relative to the median count per
+occupied cell; input water anywhere switches the water candidates off everywhere.
+A tile's counts (:func:`cell_counts`) keep by key only the cells another tile's box
+touches, the others as a histogram, so the merged counts (and the median) are exact
+and a few kilobytes per tile.
 """
 from __future__ import annotations
 
@@ -23,47 +33,160 @@ from typing import Optional, Sequence
 
 import numpy as np
 
+from .. import classes as asprs
 from ..io.las import iter_las_chunks
 
-__all__ = ["SUMMARY_FILE", "cloud_summary", "load", "merge", "save", "tile_summary"]
+__all__ = ["DENSITY_CELL", "SUMMARY_FILE", "cell_counts", "cloud_summary", "load", "merge",
+           "recommended_values", "save", "tile_summary"]
+
+#: side (m) of the world-lattice cells over which the recommended filter counts density
+DENSITY_CELL = 5.0
+WATER = int(asprs.WATER)
 
 #: the merged summary of a run, in ``<out>/.catalog/`` (a resumed run reuses it)
 SUMMARY_FILE = "summary.json"
 
 
-def cloud_summary(x, y) -> dict:
-    """Summary of one cloud (metres): what :func:`tile_summary` gives for a tile."""
+def cloud_summary(x, y, classification=None, *, counts: bool = False) -> dict:
+    """Summary of one cloud (metres): what :func:`tile_summary` gives for a tile.
+
+    ``counts``: also the recommended filter's cell counts of the points (the caller
+    passes the points that filter sees; class 9 in ``classification`` counted apart).
+    """
     x, y = np.asarray(x, np.float64), np.asarray(y, np.float64)
-    return {"n": int(x.size), "corner": [float(x.min()), float(y.min())] if x.size else None}
+    out = {"n": int(x.size), "corner": [float(x.min()), float(y.min())] if x.size else None}
+    if counts:
+        water = (np.zeros(x.size, bool) if classification is None
+                 else np.asarray(classification) == WATER)
+        out.update(water=int(np.count_nonzero(water)),
+                   cells=cell_counts(x[~water], y[~water], DENSITY_CELL))
+    return out
 
 
-def tile_summary(path: str, h: float = 1.0) -> dict:
+def cell_counts(x, y, cell: float, shared: Sequence = ()) -> dict:
+    """Points per occupied cell of the world lattice (multiples of ``cell`` m), mergeable.
+
+    Cells no box of ``shared`` (other tiles' boxes, metres) touches hold this tile's
+    points only: their counts go into a histogram (``hist[k]``: cells holding k
+    points); the others are kept by cell (``keys``: columns and rows) for :func:`merge`
+    to add up across tiles.
+    """
+    x, y = np.asarray(x, np.float64), np.asarray(y, np.float64)
+    if not x.size:
+        return {"hist": [], "keys": [[], []], "counts": []}
+    ix = np.floor(x / cell).astype(np.int64)
+    iy = np.floor(y / cell).astype(np.int64)
+    x0, y0 = int(ix.min()), int(iy.min())
+    ny = int(iy.max()) - y0 + 1
+    local = (ix - x0) * ny + (iy - y0)
+    del ix, iy
+    if int(local.max()) < 4 * local.size + 1_000_000:      # O(n) count on a small box
+        cnt = np.bincount(local)
+        occ = np.flatnonzero(cnt)
+        cnt = cnt[occ]
+    else:
+        occ, cnt = np.unique(local, return_counts=True)
+    cx, cy = occ // ny + x0, occ % ny + y0
+    edge = np.zeros(occ.size, bool)
+    for b in shared:
+        edge |= ((cx * cell <= b[2]) & ((cx + 1) * cell >= b[0])
+                 & (cy * cell <= b[3]) & ((cy + 1) * cell >= b[1]))
+    return {"hist": np.bincount(cnt[~edge]).tolist(),
+            "keys": [cx[edge].tolist(), cy[edge].tolist()], "counts": cnt[edge].tolist()}
+
+
+def _merge_cells(parts: Sequence[dict]) -> dict:
+    """One histogram of the points per occupied cell from the tiles' :func:`cell_counts`."""
+    size = max([len(p["hist"]) for p in parts] + [1])
+    hist = np.zeros(size, np.int64)
+    for p in parts:
+        hist[:len(p["hist"])] += np.asarray(p["hist"], np.int64)
+    kx = np.concatenate([np.asarray(p["keys"][0], np.int64) for p in parts])
+    ky = np.concatenate([np.asarray(p["keys"][1], np.int64) for p in parts])
+    if kx.size:                         # cells several tiles touch: their counts added up
+        cnt = np.concatenate([np.asarray(p["counts"], np.int64) for p in parts])
+        _, inv = np.unique(np.column_stack([kx, ky]), axis=0, return_inverse=True)
+        total = np.bincount(inv.ravel(), weights=cnt).astype(np.int64)
+        add = np.bincount(total)
+        if add.size > hist.size:
+            hist = np.concatenate([hist, np.zeros(add.size - hist.size, np.int64)])
+        hist[:add.size] += add
+    hist[:1] = 0
+    return {"hist": hist.tolist(), "keys": [[], []], "counts": []}
+
+
+def _median(hist: np.ndarray) -> float:
+    """``np.median`` of the counts a histogram describes (mean of the two middle ones)."""
+    cum = np.cumsum(hist)
+    m = int(cum[-1])
+    lo, hi = np.searchsorted(cum, [(m - 1) // 2 + 1, m // 2 + 1])
+    return float(np.mean([float(lo), float(hi)]))
+
+
+def recommended_values(summary: dict) -> dict:
+    """Return what the recommended filter derives from the whole cloud, from its summary.
+
+    ``density`` (points per m² of occupied 5 m cells), ``median5`` (median points per
+    occupied 5 m cell), ``water_input`` (input class 9 anywhere): the same numbers
+    for a single-file run and for every chunk of a catalog of the same points.
+    """
+    hist = np.asarray(summary["cells"]["hist"], np.int64)
+    occupied = int(hist[1:].sum())
+    n = int((hist * np.arange(hist.size)).sum())
+    return {"density": n / (occupied * DENSITY_CELL * DENSITY_CELL) if occupied else 0.0,
+            "median5": _median(hist) if occupied else 0.0,
+            "water_input": bool(summary.get("water", 0))}
+
+
+
+def tile_summary(path: str, h: float = 1.0, counts: bool = False,
+                 shared: Sequence = ()) -> dict:
     """Summary of one tile's points, streamed (coordinates × ``h``: metres).
 
     Runs on a catalog worker; returns a few numbers (no point arrays) and its own
-    wall and CPU seconds (``seconds``, the pass's cost in the run's stats).
+    wall and CPU seconds (``seconds``, the pass's cost in the run's stats). ``counts``:
+    the recommended filter's cell counts too (:func:`cloud_summary`) of the points it
+    classifies (input noise 7 and 18 left out), ``shared`` the boxes (metres) of the
+    tiles whose points may fall in this tile's cells.
     """
     t0, c0 = time.perf_counter(), time.process_time()
     xmin = ymin = np.inf
-    n = 0
-    for _, pd in iter_las_chunks(path, allow_empty=True):
+    n = water = 0
+    xs, ys = [], []
+    for _, pd in iter_las_chunks(path, ("classification",) if counts else (),
+                                 allow_empty=True):
         if len(pd):
             xmin, ymin = min(xmin, float(pd.x.min())), min(ymin, float(pd.y.min()))
             n += len(pd)
+        if counts and len(pd):
+            cls = pd["classification"]
+            keep = ~np.isin(cls, asprs.INPUT_NOISE)
+            water += int(np.count_nonzero(keep & (cls == WATER)))
+            keep &= cls != WATER
+            xs.append(pd.x[keep] * h if h != 1.0 else pd.x[keep])
+            ys.append(pd.y[keep] * h if h != 1.0 else pd.y[keep])
     # the minimum of the scaled values is the scaled minimum (scaling is monotonic)
     corner = [float(np.float64(xmin) * h), float(np.float64(ymin) * h)] if n else None
-    return {"n": n, "corner": corner,
-            "seconds": [time.perf_counter() - t0, time.process_time() - c0]}
+    out = {"n": n, "corner": corner}
+    if counts:
+        x, y = (np.concatenate(v) if v else np.empty(0) for v in (xs, ys))
+        out.update(water=water, cells=cell_counts(x, y, DENSITY_CELL, shared))
+    out["seconds"] = [time.perf_counter() - t0, time.process_time() - c0]
+    return out
 
 
 def merge(parts: Sequence[dict]) -> dict:
-    """One summary from the tiles' (exactly: the corner is the smallest of the corners)."""
+    """One summary from the tiles' (exactly: the smallest corner, the counts added up)."""
     corners = np.array([p["corner"] for p in parts if p.get("corner")], np.float64)
-    return {"n": int(sum(p["n"] for p in parts)),
-            "corner": [float(corners[:, 0].min()), float(corners[:, 1].min())]
-            if corners.size else None,
-            "seconds": [float(sum(p.get("seconds", (0, 0))[i] for p in parts))
-                        for i in (0, 1)]}
+    out = {"n": int(sum(p["n"] for p in parts)),
+           "corner": [float(corners[:, 0].min()), float(corners[:, 1].min())]
+           if corners.size else None,
+           "seconds": [float(sum(p.get("seconds", (0, 0))[i] for p in parts))
+                       for i in (0, 1)]}
+    if parts and all("cells" in p for p in parts):
+        out.update(water=int(sum(p["water"] for p in parts)),
+                   cells=_merge_cells([p["cells"] for p in parts]))
+    return out
 
 
 def save(folder, summary: dict) -> None:

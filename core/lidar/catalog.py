@@ -303,14 +303,21 @@ def first_pass(cat: Catalog, tasks: Sequence[ChunkTask], folder, mapper=None) ->
         return None
     state = Path(folder) / STATE_DIR
     summary = _summary.load(state)
+    counts = bool(getattr(ground_filter(tasks[0].ground_filter), "needs_counts", False))
     if summary is None:
         h = float(tasks[0].units.h)
+        # cells another tile's box touches are counted by key (merged exactly)
+        n = len(cat.paths)
+        shared = [[(cat.bounds[j] * h).tolist() for j in cat.query(tuple(cat.bounds[i]))
+                   if j != i] for i in range(n)]
         summary = _summary.merge(list((mapper or map)(_summary.tile_summary, cat.paths,
-                                                      [h] * len(cat.paths))))
+                                                      [h] * n, [counts] * n, shared)))
         _summary.save(state, summary)
     corner = summary.get("corner")
+    derived = _summary.recommended_values(summary) if counts else None
     for t in tasks:
         t.filter_origin = None if corner is None else (float(corner[0]), float(corner[1]))
+        t.derived = derived
     return summary
 
 

@@ -46,7 +46,7 @@ itself (point density, terrain slope), never from labels:
 
 Measured (``benchmarks/results/ground.md``): ISPRS total error (Sithole & Vosselman
 2004) mean 3.28 % at these defaults, below SMRF with PDAL's defaults (5.75 %) on 7 of
-the 8 samples (not samp11: 8.58 vs 8.52); on the 4 shared real files the DTM RMSE is
+the 8 samples (not samp11: 8.59 vs 8.52); on the 4 shared real files the DTM RMSE is
 at or below SMRF's on each; leave-one-sample-out over the 12 folds (8 ISPRS + 4 real):
 3.31 % on the ISPRS folds, 0.43 % on the real ones; the 4 real files thinned to 2, 1
 and 0.5 pts/m² (3 seeds): 35 of 36 within 1 % of cells off by more than 1 m. Water and
@@ -252,7 +252,7 @@ class RecommendedOptions:
             raise InputError("RecommendedOptions.fill_neighbours must be at least 1.")
 
 
-def derive(x, y, opt: RecommendedOptions) -> RecommendedOptions:
+def derive(x, y, opt: RecommendedOptions, density=None) -> RecommendedOptions:
     """Options with the cell size and height tolerance filled in from the density.
 
     Parameters
@@ -261,6 +261,8 @@ def derive(x, y, opt: RecommendedOptions) -> RecommendedOptions:
         Coordinates (m).
     opt : RecommendedOptions
         Options; ``cell=None`` is derived.
+    density : float, optional
+        Points per m² (the whole cloud's, :mod:`._summary`); default: of x, y.
 
     Returns
     -------
@@ -269,8 +271,7 @@ def derive(x, y, opt: RecommendedOptions) -> RecommendedOptions:
     """
     if opt.cell is not None and opt.threshold is not None:
         return opt
-    step = max(1, x.size // 500_000)           # a subsample suffices for density
-    spacing = 1.0 / np.sqrt(R.density(x[::step], y[::step]) * step)
+    spacing = 1.0 / np.sqrt(density or R.density(x, y))      # every point, world 5 m cells
     cell = float(np.clip(opt.cell_factor * spacing, opt.cell_min, opt.cell_max))
     thr = float(np.clip(opt.threshold_factor * spacing, opt.threshold_min,
                         opt.threshold_max))
