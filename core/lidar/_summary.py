@@ -58,8 +58,9 @@ def cloud_summary(x, y, classification=None, *, counts: bool = False) -> dict:
     if counts:
         water = (np.zeros(x.size, bool) if classification is None
                  else np.asarray(classification) == WATER)
-        out.update(water=int(np.count_nonzero(water)),
-                   cells=cell_counts(x[~water], y[~water], DENSITY_CELL))
+        if water.any():
+            x, y = x[~water], y[~water]
+        out.update(water=int(np.count_nonzero(water)), cells=cell_counts(x, y, DENSITY_CELL))
     return out
 
 
@@ -74,18 +75,25 @@ def cell_counts(x, y, cell: float, shared: Sequence = ()) -> dict:
     x, y = np.asarray(x, np.float64), np.asarray(y, np.float64)
     if not x.size:
         return {"hist": [], "keys": [[], []], "counts": []}
-    ix = np.floor(x / cell).astype(np.int64)
-    iy = np.floor(y / cell).astype(np.int64)
-    x0, y0 = int(ix.min()), int(iy.min())
-    ny = int(iy.max()) - y0 + 1
-    local = (ix - x0) * ny + (iy - y0)
-    del ix, iy
-    if int(local.max()) < 4 * local.size + 1_000_000:      # O(n) count on a small box
-        cnt = np.bincount(local)
+    # floor(v / cell) is monotonic: the extreme cells are those of the extreme points
+    x0, y0 = int(np.floor(x.min() / cell)), int(np.floor(y.min() / cell))
+    ny = int(np.floor(y.max() / cell)) - y0 + 1
+    size = (int(np.floor(x.max() / cell)) - x0 + 1) * ny
+    if size <= _BOX_CELLS:          # a small box: counted block by block, no per-point keys
+        cnt = np.zeros(size, np.int64)
+        for s in range(0, x.size, _BLOCK):
+            cnt += np.bincount(_keys(x[s:s + _BLOCK], y[s:s + _BLOCK], cell, x0, y0, ny),
+                               minlength=size)
         occ = np.flatnonzero(cnt)
         cnt = cnt[occ]
     else:
-        occ, cnt = np.unique(local, return_counts=True)
+        local = _keys(x, y, cell, x0, y0, ny)
+        if int(local.max()) < 4 * local.size + 1_000_000:      # O(n) count on a small box
+            cnt = np.bincount(local)
+            occ = np.flatnonzero(cnt)
+            cnt = cnt[occ]
+        else:
+            occ, cnt = np.unique(local, return_counts=True)
     cx, cy = occ // ny + x0, occ % ny + y0
     edge = np.zeros(occ.size, bool)
     for b in shared:
@@ -93,6 +101,23 @@ def cell_counts(x, y, cell: float, shared: Sequence = ()) -> dict:
                  & (cy * cell <= b[3]) & ((cy + 1) * cell >= b[1]))
     return {"hist": np.bincount(cnt[~edge]).tolist(),
             "keys": [cx[edge].tolist(), cy[edge].tolist()], "counts": cnt[edge].tolist()}
+
+
+#: :func:`cell_counts` counts boxes of up to this many cells block by block, :data:`_BLOCK`
+#: points at a time (the temporaries of a block stay in the processor's cache)
+_BOX_CELLS = 1 << 20
+_BLOCK = 1 << 16
+
+
+def _keys(x, y, cell: float, x0: int, y0: int, ny: int) -> np.ndarray:
+    """Cell key ``(column - x0) * ny + (row - y0)`` of each point (int64)."""
+    ix = np.floor(x / cell).astype(np.int64)
+    ix -= x0
+    ix *= ny
+    iy = np.floor(y / cell).astype(np.int64)
+    iy -= y0
+    ix += iy
+    return ix
 
 
 def _merge_cells(parts: Sequence[dict]) -> dict:
