@@ -334,8 +334,9 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     trees, near = [], None      # the KD-tree, built when a hole cell is deeper than the scan
     if hr is None or hr.size:
         bz = z[rr, cc]
-        scan = K.scan_lattice(ring)
-        if hr is not None and hr.size <= BATCH:  # few holes (refine): gradients where read
+        few = hr is not None and hr.size <= BATCH    # few holes (refine): gradients where read
+        scan = K.scan_lattice(ring) if few else None
+        if few:
             near = K.nearest(scan, hr, hc, k, trees)
             used = np.unique(near[3])
         if near is not None and used.size * (2 * radius + 1) ** 2 < z.size // 2:
@@ -343,6 +344,8 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
             bgx[used], bgy[used] = gradient_of(z, valid, radius, cell, rr[used], cc[used])
         else:
             bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
+        if scan is None:            # after the banded gradients: their bands and it not at once
+            scan = K.scan_lattice(ring)
     del rr, cc, ring
     release_free_memory()       # the temporaries above: their pages back before the batches
     for r, c in _batches(holes, hr, hc):
