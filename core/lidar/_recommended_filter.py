@@ -78,24 +78,38 @@ def water_candidates(x, y, z, *, density: Optional[float] = None,
         own = recommended_values(cloud_summary(x, y, counts=True))
         density, median5 = own["density"], own["median5"]
     cell = max(2.0, 3.0 / np.sqrt(density))
-    ix = np.floor(np.asarray(x, np.float64) / cell).astype(np.int64)
-    iy = np.floor(np.asarray(y, np.float64) / cell).astype(np.int64)
-    ix -= ix.min()
-    iy -= iy.min()
-    shape = (int(iy.max()) + 1, int(ix.max()) + 1)
-    idx = iy * shape[1] + ix
-    del ix, iy
+    x, y = np.asarray(x, np.float64), np.asarray(y, np.float64)
+    # floor(v / cell) is monotonic: the first and last cells are the extreme points'
+    x0, y0 = np.floor(x.min() / cell), np.floor(y.min() / cell)
+    shape = (int(np.floor(y.max() / cell) - y0) + 1, int(np.floor(x.max() / cell) - x0) + 1)
     size = shape[0] * shape[1]
-    cnt = np.bincount(idx, minlength=size)
+
+    def ids(xs, ys):                                 # the cells of points, row-major
+        i = (np.floor(ys / cell) - y0).astype(np.int64)
+        i *= shape[1]
+        i += (np.floor(xs / cell) - x0).astype(np.int64)
+        return i
+
+    # a raster of up to 2**20 cells: the points' cells are taken block by block (no
+    # per-point arrays; the block's temporaries stay in the processor's cache)
+    parts = [slice(s, s + R.CHUNK) for s in range(0, n, R.CHUNK)] if size <= 1 << 20 \
+        else [slice(0, n)]
+    idx = ids(x, y) if len(parts) == 1 else None
+
+    def cells(b):
+        return idx[b] if idx is not None else ids(x[b], y[b])
+
+    cnt = sum(np.bincount(cells(b), minlength=size) for b in parts)
     occ = cnt > 0
     cand = occ & (cnt < sparse * median5 * (cell / DENSITY_CELL) ** 2)
     if not cand.any():
         return out
-    sel = np.flatnonzero(cand[idx])                  # points of the sparse cells only
+    sel = np.concatenate([np.flatnonzero(cand[cells(b)]) + b.start for b in parts])
+    at = ids(x[sel], y[sel])                         # the points of the sparse cells
     zlo = np.full(size, np.inf)
-    np.minimum.at(zlo, idx[sel], z[sel])
+    np.minimum.at(zlo, at, z[sel])
     zhi = np.full(size, -np.inf)
-    np.maximum.at(zhi, idx[sel], z[sel])
+    np.maximum.at(zhi, at, z[sel])
     box = np.ones((3, 3), bool)                      # heights and count over 3 x 3 cells
     lo = ndimage.minimum_filter(zlo.reshape(shape), footprint=box, mode="constant",
                                 cval=np.inf)
@@ -110,7 +124,12 @@ def water_candidates(x, y, z, *, density: Optional[float] = None,
     area = np.bincount(lab.ravel(), minlength=k + 1) * cell * cell
     keep = area >= min_area
     keep[0] = False
-    return keep[lab.ravel()[idx]]
+    if not keep.any():
+        return out
+    keep = keep[lab.ravel()]                         # per cell
+    for b in parts:
+        out[b] = keep[cells(b)]
+    return out
 
 
 @dataclass

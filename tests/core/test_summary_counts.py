@@ -39,3 +39,53 @@ def test_cell_counts_equal_the_plain_count(monkeypatch, block, origin, side):
         got = S.cell_counts(x, y, 5.0, box)
         assert got == _plain(x, y, 5.0, box)
     assert S.cell_counts(x, y, 5.0) == S.cloud_summary(x, y, counts=True)["cells"]
+
+
+def _water_plain(x, y, z, density, median5, sparse=0.25, flat=0.15, min_area=400.0):
+    """water_candidates' whole-array expressions (reference)."""
+    from scipy import ndimage
+    cell = max(2.0, 3.0 / np.sqrt(density))
+    ix = np.floor(x / cell).astype(np.int64)
+    iy = np.floor(y / cell).astype(np.int64)
+    ix -= ix.min()
+    iy -= iy.min()
+    shape = (int(iy.max()) + 1, int(ix.max()) + 1)
+    idx = iy * shape[1] + ix
+    size = shape[0] * shape[1]
+    cnt = np.bincount(idx, minlength=size)
+    cand = (cnt > 0) & (cnt < sparse * median5 * (cell / S.DENSITY_CELL) ** 2)
+    sel = np.flatnonzero(cand[idx])
+    zlo = np.full(size, np.inf)
+    np.minimum.at(zlo, idx[sel], z[sel])
+    zhi = np.full(size, -np.inf)
+    np.maximum.at(zhi, idx[sel], z[sel])
+    box = np.ones((3, 3), bool)
+    lo = ndimage.minimum_filter(zlo.reshape(shape), footprint=box, mode="constant",
+                                cval=np.inf)
+    hi = ndimage.maximum_filter(zhi.reshape(shape), footprint=box, mode="constant",
+                                cval=-np.inf)
+    n3 = ndimage.uniform_filter(np.where(cand, cnt, 0).reshape(shape).astype(float), 3,
+                                mode="constant") * 9
+    cand = cand.reshape(shape) & (hi - lo < flat) & (n3 >= 3)
+    lab, k = ndimage.label(cand, structure=box)
+    keep = np.bincount(lab.ravel(), minlength=k + 1) * cell * cell >= min_area
+    keep[0] = False
+    return keep[lab.ravel()[idx]]
+
+
+@pytest.mark.parametrize("chunk", [7, 1 << 16])
+def test_water_candidates_by_blocks_equal_the_whole_array_test(monkeypatch, chunk):
+    """The lake scene (candidates on the lake) and a dry one, blocks of any size."""
+    from geomatics_toolbox.core.lidar import _raster as R  # noqa: N812
+    from geomatics_toolbox.core.lidar._recommended_filter import water_candidates
+    from geomatics_toolbox.synthetic import landscapes
+    monkeypatch.setattr(R, "CHUNK", chunk)
+    for scene in (landscapes.lake(seed=1), landscapes.steep_cliffs(seed=2)):
+        x, y, z = scene.x, scene.y, scene.z
+        v = S.recommended_values(S.cloud_summary(x, y, counts=True))
+        want = _water_plain(x, y, z, v["density"], v["median5"])
+        got = water_candidates(x, y, z)
+        assert np.array_equal(got, want)
+    assert want.sum() == 0 and got.dtype == bool
+    lake = landscapes.lake(seed=1)
+    assert water_candidates(lake.x, lake.y, lake.z).sum() > 1000
