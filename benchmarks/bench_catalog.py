@@ -71,8 +71,7 @@ from geomatics_toolbox.synthetic.lidar import generate_tile, write_tile  # noqa:
 
 DENSITY = 5.0
 CHUNK_PHASES = ("strips", "read", "filter", "dtm", "write")   # strips: share of neighbour reads
-CLIENT_PHASES = ("index", "plan", "cluster start", "first pass", "compute", "cluster close",
-                 "mosaic")
+CLIENT_PHASES = ("index", "plan", "cluster start", "compute", "cluster close", "mosaic")
 
 
 def generate(folder: Path, n_side: int, per_tile: int) -> float:
@@ -328,7 +327,7 @@ def _run_rows(cat, runs, merged):
 def _phase_rows(runs):
     lines = ["| phase | " + " | ".join(f"{w} worker(s): wall s / CPU s" for w in sorted(runs))
              + " |", "|---|" + "---|" * len(runs)]
-    lines.append("| first pass: tiles summarised (sum, workers) | " + " | ".join(
+    lines.append("| first pass: summaries, strips' decodes aside (sum, workers) | " + " | ".join(
         f"{runs[w][1]['first_pass'][0]:.1f} / {runs[w][1]['first_pass'][1]:.1f}"
         for w in sorted(runs)) + " |")
     for p in CHUNK_PHASES:

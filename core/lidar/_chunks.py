@@ -34,6 +34,7 @@ from ..terrain.dtm import (
     register_dtm_method,
 )
 from ..terrain.grid import GridSpec
+from . import _summary
 from ._gap import chunk_gaps, gap_path, ground_summary, mask_with_gap, write_marker
 from .filters import (
     GROUND_FILTERS,
@@ -233,14 +234,19 @@ class PhaseClock:
         self._t = now
 
 
-def read_strip(tile: str, boxes, dims=("classification",)) -> dict:
+def read_strip(tile: str, boxes, dims=("classification",), summary=None) -> dict:
     """Points of ``tile`` inside any of ``boxes`` (its neighbours' buffered boxes).
 
     One decode of the tile serves every neighbour (a chunk no longer decodes its
     neighbours whole); ``phases`` holds the wall and CPU seconds of the read.
+    ``summary`` (``h, counts, shared``): the same decode also summarises the whole tile
+    for the catalog's first pass (``out["summary"]``, :func:`._summary.summarise`).
     """
     clock = PhaseClock()
     pd = read_las(tile, dims)
+    made = None
+    if summary is not None:
+        made = _summary.summarise([(pd.x, pd.y, pd.dims.get("classification"))], *summary)
     keep = np.zeros(len(pd), bool)
     for x0, y0, x1, y1 in boxes:
         keep |= (pd.x >= x0) & (pd.x <= x1) & (pd.y >= y0) & (pd.y <= y1)
@@ -248,6 +254,8 @@ def read_strip(tile: str, boxes, dims=("classification",)) -> dict:
     out.update({n: pd[n][keep] for n in dims})
     clock.lap("strip")
     out["phases"] = clock.phases
+    if made is not None:
+        out["summary"] = made
     return out
 
 
@@ -257,7 +265,7 @@ def _from_strips(strips, box):
     for st in strips:
         m = (st["x"] >= box[0]) & (st["x"] <= box[2]) & (st["y"] >= box[1]) & \
             (st["y"] <= box[3])
-        parts.append({k: v[m] for k, v in st.items() if k != "phases"})
+        parts.append({k: v[m] for k, v in st.items() if k not in ("phases", "summary")})
     if not parts:
         return PointData(np.empty(0), np.empty(0), np.empty(0),
                          {"classification": np.empty(0, np.uint8)})
@@ -373,7 +381,7 @@ def _save_gaps(task: ChunkTask, z, gap) -> None:
     os.replace(path + ".tmp", path)
 
 
-def process_chunk(task: ChunkTask, *strips) -> dict:
+def process_chunk(task: ChunkTask, *strips, summary: Optional[dict] = None) -> dict:
     """Process one chunk end to end; returns its stats (also stored in the done marker).
 
     ``strips`` (tile mode): the neighbours' :func:`read_strip` results, so the chunk
@@ -385,6 +393,10 @@ def process_chunk(task: ChunkTask, *strips) -> dict:
     """
     single_threaded()
     clock = PhaseClock()
+    if summary is not None:           # the catalog's first pass, merged on a worker
+        corner = summary.get("corner")
+        task.filter_origin = None if corner is None else (float(corner[0]), float(corner[1]))
+        task.derived = summary.get("derived")
     if task.fail_once:
         _fail_first_attempt(task)
     xyz, dims, core, records = _read(task, strips if task.tile and strips else None)

@@ -15,6 +15,7 @@ from ..errors import InputError
 from ..io.contract import remove_temp
 from ..progress import Cancelled, Monitor
 from ._chunks import ChunkTask, process_chunk, read_strip
+from ._summary import final, strip_summary, tile_summary
 from ._workers import SINGLE_THREAD_ENV, start_local_workers
 
 
@@ -145,7 +146,7 @@ def _sweep_temps(folder: Path, tasks: Sequence[ChunkTask]) -> None:
             attempted.unlink()
 
 
-def _submit_strips(client, order):
+def _submit_strips(client, order, plan=None):
     """One strip task per neighbour tile of the tile-mode chunks to run.
 
     Returns ``({tile path: future}, release)``: each strip holds the tile's points inside
@@ -157,7 +158,9 @@ def _submit_strips(client, order):
         if t.tile:
             for p in t.neighbours:
                 consumers.setdefault(p, []).append(t)
+    spec = plan["spec"] if plan is not None else {}   # the first pass rides on the decode
     strips = {p: client.submit(read_strip, p, [t.buffered_box() for t in users],
+                               ("classification",), spec.get(p),
                                key=f"strip-{Path(p).stem}-{time.time_ns()}", retries=1,
                                pure=False, priority=10 ** 12)
               for p, users in consumers.items()}
@@ -176,29 +179,37 @@ def _submit_strips(client, order):
     return strips, release
 
 
-def mapper(client):
-    """``map`` on the cluster: ``mapper(client)(func, *iterables)`` -> the results, in order."""
-    def run(func, *iterables):
-        futures = client.map(func, *iterables, pure=False, retries=1, priority=10 ** 13)
-        return client.gather(futures)
-    return run
+def _submit_first_pass(client, plan, strips):
+    """Submit the catalog's first pass to the workers (:mod:`._summary`); its merged future.
+
+    A tile a strip task decodes anyway is summarised by that task (no second decode);
+    the others (no neighbour to lend points to, ``CHUNK_SIZE`` boxes) are streamed by
+    a task of their own. The merge runs when every tile is summarised, and every chunk
+    waits for it.
+    """
+    parts = [client.submit(strip_summary, strips[p], key=f"summary-{Path(p).stem}-"
+                           f"{time.time_ns()}", pure=False, priority=10 ** 12)
+             if p in strips else
+             client.submit(tile_summary, p, *spec, key=f"summary-{Path(p).stem}-"
+                           f"{time.time_ns()}", retries=1, pure=False, priority=10 ** 12)
+             for p, spec in plan["spec"].items()]
+    return client.submit(final, *parts, counts=plan["counts"], folder=plan["folder"],
+                         key=f"first-pass-{time.time_ns()}", pure=False, priority=10 ** 12)
 
 
 def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, failed,
-              clock, on_chunk=None, prepare=None):
+              clock, on_chunk=None, plan=None):
     client, cluster = _client(nw, scheduler, memory_limit)
     clock.lap("cluster start")
     try:
-        if prepare is not None:         # the first pass (:mod:`._summary`), same workers
-            prepare(mapper(client))
-            clock.lap("first pass")
         # largest chunks first (longest-processing-time order): the last chunk to
         # finish is a small one, so workers idle less at the end of the run. Submitted
         # in that order too: idle workers take the first tasks as they arrive.
         order = sorted(todo, key=lambda t: -t.cost)
-        strips, release = _submit_strips(client, order)
+        strips, release = _submit_strips(client, order, plan)
+        summary = _submit_first_pass(client, plan, strips) if plan is not None else None
         futures = {client.submit(process_chunk, t, *[strips[p] for p in t.neighbours
-                                                      if p in strips],
+                                                      if p in strips], summary=summary,
                                  key=f"chunk-{t.key}-{time.time_ns()}", retries=1,
                                  pure=False, priority=int(t.cost)): t.key
                    for t in order}

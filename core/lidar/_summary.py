@@ -4,9 +4,10 @@ A single-file ground filter derives a few quantities from the whole cloud it is 
 a catalog chunk sees only its tile and buffer. So that a chunk equals a single-file run
 of the merged cloud by construction, each such quantity is a function of a small
 *summary* that merges exactly (sums, minima): every tile is summarised on a worker
-(:func:`tile_summary`, a first pass over the tiles' points), the client merges the
-summaries (:func:`merge`) and hands the result to every chunk; a single-file run
-computes the summary of its one cloud with the same code (:func:`cloud_summary`).
+(:func:`summarise`: from the decode a strip task makes of it anyway, else streamed by
+:func:`tile_summary`), one task merges the summaries (:func:`final`) and every chunk
+receives the result; a single-file run computes the summary of its one cloud with the
+same code (:func:`cloud_summary`).
 
 The anchor (every filter but PTD): a filter lays its grids and tiles (LSQ tiles, the
 recommended filter's raster and pyramid, the slope filter's trend grid, the low-outlier
@@ -36,8 +37,8 @@ import numpy as np
 from .. import classes as asprs
 from ..io.las import iter_las_chunks
 
-__all__ = ["DENSITY_CELL", "SUMMARY_FILE", "cell_counts", "cloud_summary", "load", "merge",
-           "recommended_values", "save", "tile_summary"]
+__all__ = ["DENSITY_CELL", "SUMMARY_FILE", "cell_counts", "cloud_summary", "final", "load",
+           "merge", "recommended_values", "save", "strip_summary", "summarise", "tile_summary"]
 
 #: side (m) of the world-lattice cells over which the recommended filter counts density
 DENSITY_CELL = 5.0
@@ -174,22 +175,33 @@ def tile_summary(path: str, h: float = 1.0, counts: bool = False,
     classifies (input noise 7 and 18 left out), ``shared`` the boxes (metres) of the
     tiles whose points may fall in this tile's cells.
     """
+    parts = ((pd.x, pd.y, pd.dims.get("classification")) for _, pd in iter_las_chunks(
+        path, ("classification",) if counts else (), allow_empty=True))
+    return summarise(parts, h, counts, shared)
+
+
+def summarise(parts, h: float = 1.0, counts: bool = False, shared: Sequence = ()) -> dict:
+    """Summary of a tile's points given as ``(x, y, classification)`` parts (tile units).
+
+    :func:`tile_summary` streams a file into it; a strip task (``_chunks.read_strip``),
+    which decodes the whole tile anyway, passes its arrays: one decode serves both.
+    """
     t0, c0 = time.perf_counter(), time.process_time()
     xmin = ymin = np.inf
     n = water = 0
     xs, ys = [], []
-    for _, pd in iter_las_chunks(path, ("classification",) if counts else (),
-                                 allow_empty=True):
-        if len(pd):
-            xmin, ymin = min(xmin, float(pd.x.min())), min(ymin, float(pd.y.min()))
-            n += len(pd)
-        if counts and len(pd):
-            cls = pd["classification"]
+    for px, py, cls in parts:
+        if not np.size(px):
+            continue
+        px, py = np.asarray(px, np.float64), np.asarray(py, np.float64)
+        xmin, ymin = min(xmin, float(px.min())), min(ymin, float(py.min()))
+        n += px.size
+        if counts:
             keep = ~np.isin(cls, asprs.INPUT_NOISE)
             water += int(np.count_nonzero(keep & (cls == WATER)))
             keep &= cls != WATER
-            xs.append(pd.x[keep] * h if h != 1.0 else pd.x[keep])
-            ys.append(pd.y[keep] * h if h != 1.0 else pd.y[keep])
+            xs.append(px[keep] * h if h != 1.0 else px[keep])
+            ys.append(py[keep] * h if h != 1.0 else py[keep])
     # the minimum of the scaled values is the scaled minimum (scaling is monotonic)
     corner = [float(np.float64(xmin) * h), float(np.float64(ymin) * h)] if n else None
     out = {"n": n, "corner": corner}
@@ -197,6 +209,24 @@ def tile_summary(path: str, h: float = 1.0, counts: bool = False,
         x, y = (np.concatenate(v) if v else np.empty(0) for v in (xs, ys))
         out.update(water=water, cells=cell_counts(x, y, DENSITY_CELL, shared))
     out["seconds"] = [time.perf_counter() - t0, time.process_time() - c0]
+    return out
+
+
+def strip_summary(strip: dict) -> dict:
+    """Return the summary a strip task made of its decoded tile (runs where the strip is)."""
+    return strip["summary"]
+
+
+def final(*parts, counts: bool = False, folder=None) -> dict:
+    """Merge the tiles' summaries, derive the chunks' values, save ``summary.json``.
+
+    Runs on a worker once every tile is summarised; returns ``{"corner", "derived", ...}``
+    (``derived``: :func:`recommended_values` when ``counts``), what each chunk applies.
+    """
+    out = merge(parts)
+    out["derived"] = recommended_values(out) if counts else None
+    if folder is not None:
+        save(folder, out)
     return out
 
 

@@ -288,36 +288,52 @@ def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
 
 
 # ============================================================================ engine
-def first_pass(cat: Catalog, tasks: Sequence[ChunkTask], folder, mapper=None) -> Optional[dict]:
-    """Summarise every tile once and give each chunk what its filter derives (:mod:`._summary`).
+def pass_plan(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dict]:
+    """Return what the catalog's first pass summarises (:mod:`._summary`), or None.
 
-    A filter anchored on its cloud's corner (``lattice`` 'cloud') gets the corner of
-    all the catalog's points, so a chunk's grids and tiles are those of a single-file
-    run of the merged cloud. ``mapper(func, paths, hs)`` returns the tile summaries
-    (a run maps them on its Dask workers; default: the built-in ``map``, in this
-    process). Saved in ``.catalog/summary.json``: a resumed run reuses it. None when
-    the filter derives nothing from the whole cloud.
+    None when the filter derives nothing from the whole cloud (PTD, keep), or when an
+    earlier run of this folder saved the summary (``.catalog/summary.json``; applied to
+    ``tasks`` here). Else ``{"spec": {tile: (h, counts, shared boxes)}, "counts",
+    "folder"}``: a tile's cells that another tile's box touches are counted by key.
     """
-    if not tasks or getattr(ground_filter(tasks[0].ground_filter), "lattice",
-                            "cloud") != "cloud":
+    flt = ground_filter(tasks[0].ground_filter) if tasks else None
+    if flt is None or getattr(flt, "lattice", "cloud") != "cloud":
         return None
     state = Path(folder) / STATE_DIR
+    counts = bool(getattr(flt, "needs_counts", False))
     summary = _summary.load(state)
-    counts = bool(getattr(ground_filter(tasks[0].ground_filter), "needs_counts", False))
-    if summary is None:
-        h = float(tasks[0].units.h)
-        # cells another tile's box touches are counted by key (merged exactly)
-        n = len(cat.paths)
-        shared = [[(cat.bounds[j] * h).tolist() for j in cat.query(tuple(cat.bounds[i]))
-                   if j != i] for i in range(n)]
-        summary = _summary.merge(list((mapper or map)(_summary.tile_summary, cat.paths,
-                                                      [h] * n, [counts] * n, shared)))
-        _summary.save(state, summary)
+    if summary is not None:
+        apply_summary(tasks, summary)
+        return None
+    h = float(tasks[0].units.h)
+    spec = {p: (h, counts, [(cat.bounds[j] * h).tolist() for j in cat.query(tuple(b))
+                            if j != i]) for i, (p, b) in enumerate(zip(cat.paths, cat.bounds))}
+    return {"spec": spec, "counts": counts, "folder": os.path.abspath(state)}
+
+
+def apply_summary(tasks: Sequence[ChunkTask], summary: dict) -> None:
+    """Give every chunk the catalog's corner and derived values (:func:`._summary.final`)."""
     corner = summary.get("corner")
-    derived = _summary.recommended_values(summary) if counts else None
     for t in tasks:
         t.filter_origin = None if corner is None else (float(corner[0]), float(corner[1]))
-        t.derived = derived
+        t.derived = summary.get("derived")
+
+
+def first_pass(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dict]:
+    """Summarise every tile in this process and give each chunk what its filter derives.
+
+    A filter anchored on its cloud's corner (``lattice`` 'cloud') gets the corner of
+    all the catalog's points, the recommended filter the density and counts of all
+    of them (:mod:`._summary`), so a chunk derives what a single-file run of the merged
+    cloud derives. A Dask run does the same on its workers, from the strips' decodes
+    (``_dask_run``). Saved in ``.catalog/summary.json``; None when nothing is derived.
+    """
+    plan = pass_plan(cat, tasks, folder)
+    if plan is None:
+        return _summary.load(Path(folder) / STATE_DIR) if tasks else None
+    summary = _summary.final(*[_summary.tile_summary(p, *plan["spec"][p]) for p in cat.paths],
+                             counts=plan["counts"], folder=plan["folder"])
+    apply_summary(tasks, summary)
     return summary
 
 
@@ -409,11 +425,10 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
         on_chunk({**s, "status": "skipped"})
     mon.update(len(chunks) / len(tasks))
     clock.lap("plan")
-    summary: dict = {}                  # the first pass (:func:`first_pass`), on the workers
-    if todo:
+    if todo:                            # the first pass (:func:`pass_plan`) on the workers
         chunks += _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, len(chunks),
-                            failed, clock, on_chunk, prepare=lambda run: summary.update(
-                                first_pass(cat, todo, folder, run) or {}))
+                            failed, clock, on_chunk, plan=pass_plan(cat, todo, folder))
+    summary = _summary.load(folder / STATE_DIR) or {}
     gap = _catalog_gap(tasks, chunks, failed, cell_size, dtm_method)
     _check_outcome(chunks, failed, todo, made, len(tasks), cat.n_points, gf)
     vrt, cog_path = _mosaic(cat, folder, tasks, failed, chunks, cog)

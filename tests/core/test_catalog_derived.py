@@ -162,3 +162,26 @@ def test_forest_canopy_scale_is_still_derived_per_chunk(tmp_path, monkeypatch):
     assert scales == [12.0, 8.0, 8.0]
     diff = got != ref
     assert 0 < diff.sum() <= 50 and not diff[pts.x >= X0 + 300].any()
+
+
+def test_dask_run_summarises_on_the_strip_decodes(step, tmp_path):
+    """Through Dask (run_catalog, 1 local worker): the first pass rides on the strip
+    tasks' decodes of the tiles (no second decode), every chunk waits for the merged
+    summary (saved in ``.catalog/summary.json`` for a resume), and the classes equal the
+    single-file run on every point."""
+    tiles, pts = step
+    out = tmp_path / "out"
+    res = cc.run_catalog(str(tiles), out, ground_filter="groundfilter", buffer=100.0,
+                         cell_size=2.0, workers=1)
+    assert not res.failed
+    got = np.concatenate([read_las(out / f"t{i}_classified.las", ("classification",))
+                          ["classification"] for i in range(2)])
+    ref = classify_points(pts, ground_filter("groundfilter"),
+                          default_selection("groundfilter"))
+    assert np.array_equal(got, ref), f"{int((got != ref).sum())} points differ"
+    saved = cc._summary.load(out / cc.STATE_DIR)
+    assert saved["n"] == len(pts) and saved["corner"] == [float(pts.x.min()),
+                                                          float(pts.y.min())]
+    assert 0.3 < saved["derived"]["density"] < 1.0 and not saved["derived"]["water_input"]
+    cpu = res.settings["first_pass_seconds"][1]
+    assert 0 < cpu < sum(c["phases"]["read"][1] for c in res.chunks)   # no decode of its own
