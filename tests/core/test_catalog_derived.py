@@ -185,3 +185,40 @@ def test_dask_run_summarises_on_the_strip_decodes(step, tmp_path):
     assert 0.3 < saved["derived"]["density"] < 1.0 and not saved["derived"]["water_input"]
     cpu = res.settings["first_pass_seconds"][1]
     assert 0 < cpu < sum(c["phases"]["read"][1] for c in res.chunks)   # no decode of its own
+
+
+@pytest.fixture(scope="module")
+def small_scenes(tmp_path_factory):
+    """The lake and the forest at 300 m (two 150 m tiles, left half thinned), made once."""
+    made = {}
+
+    def get(kind):
+        if kind not in made:
+            d = tmp_path_factory.mktemp(kind) / "tiles"
+            s = (landscapes.lake(extent=300.0, density=2.0, radius=75.0, seed=2)
+                 if kind == "lake" else
+                 landscapes.closed_forest(extent=300.0, density=2.0, ground_share=0.05,
+                                          seed=2))
+            rng = np.random.default_rng(1)
+            keep = (s.x >= 150) | (rng.random(s.x.size) < 0.4)
+            x, y, z = s.x[keep] + X0, s.y[keep] + Y0, s.z[keep]
+            c = np.ones(x.size, np.uint8)
+            made[kind] = d, _write(d, [(x[m], y[m], z[m], c[m])
+                                       for m in (x < X0 + 150, x >= X0 + 150)])
+        return made[kind]
+    return get
+
+
+@pytest.mark.parametrize("kind", ["lake", "forest"])
+@pytest.mark.parametrize("key", [k for k in GROUND_FILTERS if k != "groundfilter"])
+def test_lake_and_forest_catalog_equals_single_file(small_scenes, tmp_path, kind, key):
+    """The filters that derive only their anchor from the whole cloud: a lake across the
+    two tiles and a closed forest of two densities give the single-file classes beyond
+    the buffer."""
+    tiles, pts = small_scenes(kind)
+    cat, _, got = _catalog(tiles, tmp_path / "out", key, 100.0)
+    ref = classify_points(pts, ground_filter(key), default_selection(key))
+    inner = _inner(pts, cat, 100.0)                # the lake's middle is sparse water
+    assert inner.sum() > (1_000 if kind == "lake" else 10_000)
+    assert np.array_equal(got[inner], ref[inner]), \
+        f"{int((got != ref)[inner].sum())} of {int(inner.sum())} inner points differ"
