@@ -69,13 +69,14 @@ def cell_counts(x, y, cell: float, shared: Sequence = ()) -> dict:
     """Points per occupied cell of the world lattice (multiples of ``cell`` m), mergeable.
 
     Cells no box of ``shared`` (other tiles' boxes, metres) touches hold this tile's
-    points only: their counts go into a histogram (``hist[k]``: cells holding k
-    points); the others are kept by cell (``keys``: columns and rows) for :func:`merge`
-    to add up across tiles.
+    points only: their counts go into a histogram, kept sparse (``hist``: the counts
+    met and how many cells hold each — a tile of one position holds one cell of n
+    points, not a list n long); the others are kept by cell (``keys``: columns and
+    rows) for :func:`merge` to add up across tiles.
     """
     x, y = np.asarray(x, np.float64), np.asarray(y, np.float64)
     if not x.size:
-        return {"hist": [], "keys": [[], []], "counts": []}
+        return {"hist": [[], []], "keys": [[], []], "counts": []}
     # floor(v / cell) is monotonic: the extreme cells are those of the extreme points
     x0, y0 = int(np.floor(x.min() / cell)), int(np.floor(y.min() / cell))
     ny = int(np.floor(y.max() / cell)) - y0 + 1
@@ -100,7 +101,8 @@ def cell_counts(x, y, cell: float, shared: Sequence = ()) -> dict:
     for b in shared:
         edge |= ((cx * cell <= b[2]) & ((cx + 1) * cell >= b[0])
                  & (cy * cell <= b[3]) & ((cy + 1) * cell >= b[1]))
-    return {"hist": np.bincount(cnt[~edge]).tolist(),
+    values, cells = np.unique(cnt[~edge], return_counts=True)
+    return {"hist": [values.tolist(), cells.tolist()],
             "keys": [cx[edge].tolist(), cy[edge].tolist()], "counts": cnt[edge].tolist()}
 
 
@@ -123,30 +125,29 @@ def _keys(x, y, cell: float, x0: int, y0: int, ny: int) -> np.ndarray:
 
 def _merge_cells(parts: Sequence[dict]) -> dict:
     """One histogram of the points per occupied cell from the tiles' :func:`cell_counts`."""
-    size = max([len(p["hist"]) for p in parts] + [1])
-    hist = np.zeros(size, np.int64)
-    for p in parts:
-        hist[:len(p["hist"])] += np.asarray(p["hist"], np.int64)
+    values = [np.asarray(p["hist"][0], np.int64) for p in parts]
+    cells = [np.asarray(p["hist"][1], np.int64) for p in parts]
     kx = np.concatenate([np.asarray(p["keys"][0], np.int64) for p in parts])
     ky = np.concatenate([np.asarray(p["keys"][1], np.int64) for p in parts])
     if kx.size:                         # cells several tiles touch: their counts added up
         cnt = np.concatenate([np.asarray(p["counts"], np.int64) for p in parts])
         _, inv = np.unique(np.column_stack([kx, ky]), axis=0, return_inverse=True)
         total = np.bincount(inv.ravel(), weights=cnt).astype(np.int64)
-        add = np.bincount(total)
-        if add.size > hist.size:
-            hist = np.concatenate([hist, np.zeros(add.size - hist.size, np.int64)])
-        hist[:add.size] += add
-    hist[:1] = 0
-    return {"hist": hist.tolist(), "keys": [[], []], "counts": []}
+        values.append(total)
+        cells.append(np.ones(total.size, np.int64))
+    v, inv = np.unique(np.concatenate(values), return_inverse=True)
+    c = np.bincount(inv.ravel(), weights=np.concatenate(cells), minlength=v.size)
+    keep = v > 0
+    return {"hist": [v[keep].tolist(), c.astype(np.int64)[keep].tolist()],
+            "keys": [[], []], "counts": []}
 
 
-def _median(hist: np.ndarray) -> float:
-    """``np.median`` of the counts a histogram describes (mean of the two middle ones)."""
-    cum = np.cumsum(hist)
+def _median(values: np.ndarray, cells: np.ndarray) -> float:
+    """``np.median`` of the counts a sparse histogram describes (mean of the middle two)."""
+    cum = np.cumsum(cells)
     m = int(cum[-1])
     lo, hi = np.searchsorted(cum, [(m - 1) // 2 + 1, m // 2 + 1])
-    return float(np.mean([float(lo), float(hi)]))
+    return float(np.mean([float(values[lo]), float(values[hi])]))
 
 
 def recommended_values(summary: dict) -> dict:
@@ -156,11 +157,11 @@ def recommended_values(summary: dict) -> dict:
     occupied 5 m cell), ``water_input`` (input class 9 anywhere): the same numbers
     for a single-file run and for every chunk of a catalog of the same points.
     """
-    hist = np.asarray(summary["cells"]["hist"], np.int64)
-    occupied = int(hist[1:].sum())
-    n = int((hist * np.arange(hist.size)).sum())
+    values, cells = (np.asarray(a, np.int64) for a in summary["cells"]["hist"])
+    occupied = int(cells.sum())
+    n = int((values * cells).sum())
     return {"density": n / (occupied * DENSITY_CELL * DENSITY_CELL) if occupied else 0.0,
-            "median5": _median(hist) if occupied else 0.0,
+            "median5": _median(values, cells) if occupied else 0.0,
             "water_input": bool(summary.get("water", 0))}
 
 

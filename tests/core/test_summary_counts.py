@@ -20,7 +20,8 @@ def _plain(x, y, cell, shared=()):
     for b in shared:
         edge |= ((cx * cell <= b[2]) & ((cx + 1) * cell >= b[0])
                  & (cy * cell <= b[3]) & ((cy + 1) * cell >= b[1]))
-    return {"hist": np.bincount(cnt[~edge]).tolist(),
+    values, cells = np.unique(cnt[~edge], return_counts=True)
+    return {"hist": [values.tolist(), cells.tolist()],
             "keys": [cx[edge].tolist(), cy[edge].tolist()], "counts": cnt[edge].tolist()}
 
 
@@ -89,3 +90,25 @@ def test_water_candidates_by_blocks_equal_the_whole_array_test(monkeypatch, chun
     assert want.sum() == 0 and got.dtype == bool
     lake = landscapes.lake(seed=1)
     assert water_candidates(lake.x, lake.y, lake.z).sum() > 1000
+
+
+def test_histogram_is_sparse_and_tiles_merge_to_the_whole_cloud():
+    """A tile of one position is one cell of n points (not a list n long); two tiles that
+    share cells along their common edge merge to the counts of the cloud as one."""
+    one = S.cell_counts(np.full(200_000, 1000.2), np.full(200_000, 2000.7), 5.0)
+    assert one["hist"] == [[200_000], [1]] and one["keys"] == [[], []]
+    rng = np.random.default_rng(3)
+    x, y = rng.uniform(0, 1000, 50_000), rng.uniform(0, 400, 50_000)
+    x[:200] = 502.5                                   # a cell split by the tiles' edge
+    left, right = x < 502.6, x >= 502.6
+    boxes = [(0.0, 0.0, 502.6, 400.0), (502.6, 0.0, 1000.0, 400.0)]
+    parts = [S.cloud_summary(x[m], y[m], counts=True) for m in (left, right)]
+    parts[0]["cells"] = S.cell_counts(x[left], y[left], 5.0, [boxes[1]])
+    parts[1]["cells"] = S.cell_counts(x[right], y[right], 5.0, [boxes[0]])
+    assert parts[0]["cells"]["counts"] and parts[1]["cells"]["counts"]
+    whole = S.recommended_values(S.cloud_summary(x, y, counts=True))
+    assert S.recommended_values(S.merge(parts)) == whole
+    ix = np.floor(x / 5.0).astype(np.int64) * 1000 + np.floor(y / 5.0).astype(np.int64)
+    cnt = np.unique(ix, return_counts=True)[1]
+    assert whole["median5"] == float(np.median(cnt))
+    assert whole["density"] == x.size / (cnt.size * 25.0)
