@@ -430,20 +430,23 @@ def floor_steps(z, valid, step: float):
     return z
 
 
-def opening(z, radius, out=None):
+def opening(z, radius, out=None, outside=None):
     """Grey opening with a (2r+1)² square window (separable min/max filters).
 
-    The 1-D filters of ``ndimage.minimum_filter`` / ``maximum_filter`` axis by axis, all
-    but the first in place: scipy's separable filter itself runs its second axis from
-    its output into itself (each line is buffered), but refuses an output sharing the
-    input's memory with a temporary copy - here one raster (``out`` when given, not
-    ``z``), the same values.
+    The 1-D filters axis by axis, all but the first in place (scipy's separable filter
+    buffers each line; a copy only for an output sharing the input: ``out``, not ``z``).
+    ``outside`` (:func:`._terrain.outside_hull`): cells not there - ``z`` set to +inf (no
+    value), no window centred there (as beyond the raster's edge); garbage there.
     """
     size = 2 * int(radius) + 1
+    if outside is not None:
+        z[outside] = np.inf
     out = ndimage.minimum_filter1d(z, size, axis=0, mode="nearest", output=out)
-    for f, axis in ((ndimage.minimum_filter1d, 1), (ndimage.maximum_filter1d, 0),
-                    (ndimage.maximum_filter1d, 1)):
-        f(out, size, axis=axis, mode="nearest", output=out)
+    ndimage.minimum_filter1d(out, size, axis=1, mode="nearest", output=out)
+    if outside is not None:
+        out[outside] = -np.inf
+    for axis in (0, 1):
+        ndimage.maximum_filter1d(out, size, axis=axis, mode="nearest", output=out)
     return out
 
 

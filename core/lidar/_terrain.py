@@ -1,7 +1,8 @@
-"""Large-scale terrain of the recommended filter: trend and slope tolerance (private).
+"""Large-scale terrain of the recommended filter: trend, slope tolerance, footprint.
 
-Both come from a wide opening of the filled minimum raster (numpy/scipy only); moved
-from :mod:`._surface` (module size), code unchanged.
+Trend and slope come from a wide opening of the filled minimum raster (numpy/scipy
+only; moved from :mod:`._surface` for its size, code unchanged); the footprint is the
+convex hull of the occupied cells (:func:`outside_hull`). Private.
 """
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ import numpy as np
 
 from . import _raster as R  # noqa: N812
 
-__all__ = ["terrain_slope", "trend_surface"]
+__all__ = ["outside_hull", "terrain_slope", "trend_surface"]
 
 
 def trend_surface(zf, grid, opt, subtract=False):
@@ -84,3 +85,32 @@ def wall_step(cell, opt):
     """
     s = opt.slope if opt.slope is not None else opt.slope_max
     return 2.0 * cell * s + opt.threshold
+
+
+def outside_hull(occupied):
+    """Cells whose centre lies outside the convex hull of the ``occupied`` cells' centres.
+
+    A cloud whose footprint is not the raster's rectangle (a tile rotated against the
+    grid, a strip, a plot clipped at an angle) leaves empty corners that the push-pull
+    fill covers with its edge values; windows centred there open onto a thin strip of
+    the edge (a canopy edge kept as ground): :func:`._raster.opening` takes them as
+    absent. Built from each row's first and last occupied cell; a hull of no area (one
+    row or column, a line) gives no cell outside. Row by row: no raster per facet.
+    """
+    from scipy.spatial import ConvexHull, QhullError
+    rows, cols = occupied.shape
+    out = np.zeros(occupied.shape, dtype=bool)
+    r = np.flatnonzero(occupied.any(axis=1))
+    if r.size < 2:
+        return out
+    first = occupied[r].argmax(axis=1)
+    last = cols - 1 - occupied[r, ::-1].argmax(axis=1)
+    pts = np.column_stack((np.concatenate((first, last)), np.concatenate((r, r))))
+    try:
+        eq = ConvexHull(pts.astype(float)).equations     # a col + b row + c <= 0 inside
+    except QhullError:
+        return out
+    c = np.arange(cols)
+    for i in range(rows):
+        out[i] = ((eq[:, 0:1] * c + eq[:, 1:2] * i + eq[:, 2:3]) > 1e-9).any(axis=0)
+    return out

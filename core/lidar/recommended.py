@@ -23,6 +23,7 @@ itself (point density, terrain slope), never from labels:
    the horizontal; progressive opening with square windows of radius 1..R cells,
    R = ceil(max_window / cell); a cell whose height drops more than
    ``slope * r * cell`` is an object cell (Zhang et al. 2003; Pingel et al. 2013).
+   Cells outside the occupied cells' convex hull are absent from the openings.
 5b. continuity growing: a flagged cell becomes ground again when the least-squares
    plane of its 7 m window fits the occupied cells there within 0.5 m RMS, the cell
    and an accepted neighbour both lie within 0.1 m + 1.0 x slope of it, the plane
@@ -44,13 +45,10 @@ itself (point density, terrain slope), never from labels:
 8. refine (3 passes): DTM rebuilt from the lowest ground point per cell (holes filled
    as in step 6, only where points read them), step 7 repeated.
 
-Measured (``benchmarks/results/ground.md``): ISPRS total error (Sithole & Vosselman
-2004) mean 3.28 % at these defaults, below SMRF with PDAL's defaults (5.75 %) on 7 of
-the 8 samples (not samp11: 8.59 vs 8.52); on the 4 shared real files the DTM RMSE is
-at or below SMRF's on each; leave-one-sample-out over the 12 folds (8 ISPRS + 4 real):
-3.31 % on the ISPRS folds, 0.43 % on the real ones; the 4 real files thinned to 2, 1
-and 0.5 pts/m² (3 seeds): 35 of 36 within 1 % of cells off by more than 1 m. Water and
-report: :mod:`._recommended_filter`.
+Measured (``benchmarks/results/ground.md``): ISPRS total error mean 3.28 %, below SMRF
+(PDAL's defaults, 5.75 %) on 7 of 8 samples (not samp11: 8.59 vs 8.52); 4 real files: DTM
+RMSE at or below SMRF's; 12-fold leave-one-sample-out 3.31 % (ISPRS folds), 0.43 % (real);
+thinned to 2, 1, 0.5 pts/m²: 35 of 36 within 1 %. Water, report: :mod:`._recommended_filter`.
 
 References
 ----------
@@ -95,7 +93,7 @@ from . import _surface as S  # noqa: N812
 from ._filter import OptionsFilter
 from ._filter import options_or_default as _options
 from ._surface import grow_ground
-from ._terrain import terrain_slope, trend_surface, wall_step  # noqa: F401 (re-export)
+from ._terrain import outside_hull, terrain_slope, trend_surface, wall_step  # noqa: F401
 
 __all__ = ["RecommendedOptions", "classify", "derive", "recommended_filter", "OptionsFilter",
            "Cancelled", "CITATION", "TITLE"]
@@ -391,6 +389,7 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None)
         The provisional DTM.
     """
     empty = np.isnan(zmin)
+    outside = outside_hull(~empty) if empty.any() else None
     lows = L.low_cells(zmin, grid.cell, step=opt.low_step, window=opt.low_window,
                        share=opt.low_share, anchor=grid.anchor)
     low = lows.low
@@ -404,8 +403,8 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None)
     _trim()
     if opt.trend_window > 0 and opt.trend_smooth > 0:
         trend_surface(zf, grid, opt, subtract=True)  # zf is the fill's own array
-    obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep, overwrite=True)
-    del zf
+    obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep, True, outside)
+    del zf, outside
     if np.ndim(slope):                               # the report reads min / median / max
         slope = None if info is None else np.array(  # median: partitions in place, no copy
             (slope.min(), np.median(slope, overwrite_input=True), slope.max()))
@@ -477,7 +476,7 @@ def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False):
                           cache=cache, overwrite=overwrite)
 
 
-def progressive_objects(zf, cell, max_window, slope, rep, overwrite=False):
+def progressive_objects(zf, cell, max_window, slope, rep, overwrite=False, outside=None):
     """Object cells of the progressive opening (Zhang et al. 2003, Pingel et al. 2013).
 
     Parameters
@@ -494,6 +493,8 @@ def progressive_objects(zf, cell, max_window, slope, rep, overwrite=False):
         Progress step (checks cancel).
     overwrite : bool
         Let ``zf`` hold each opening in turn (one raster less; ``zf`` is then garbage).
+    outside : ndarray of bool, optional
+        Cells absent from the openings (never objects; ``zf`` is set to +inf there).
 
     Returns
     -------
@@ -506,14 +507,14 @@ def progressive_objects(zf, cell, max_window, slope, rep, overwrite=False):
     spare = None          # two rasters in turn (zf's own with overwrite), none allocated
     for k, r in enumerate(radii):                    # per window
         rep(0.3 + 0.5 * k / radii.size)
-        opened = R.opening(cur, r, out=spare)
+        opened = R.opening(cur, r, out=spare, outside=outside)
         for b0 in range(0, zf.shape[0], R.BAND):    # bands: no full-size temporaries
             b = slice(b0, b0 + R.BAND)
             s = np.asarray(slope[b] if np.ndim(slope) else slope, np.float64)
             obj[b] |= np.subtract(cur[b], opened[b], dtype=np.float64) > s * int(r) * cell
         spare = cur if overwrite or cur is not zf else None
         cur = opened
-    return obj
+    return obj if outside is None else np.logical_and(obj, ~outside, out=obj)
 
 
 #: Stencil of a central-difference slope cell (:func:`._raster.slope`).
