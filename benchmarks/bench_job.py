@@ -123,7 +123,8 @@ def main(argv=None) -> int:
         f"LAZ → recommended ground filter → classified LAZ + 1 m IDW DTM, {job['n']:,} "
         f"points ({job['ground']:,} ground, {job['cells']:,} DTM cells); the floor is "
         "LAZ decode + LAZ encode + one KD-tree build and one 12-neighbour query per cell, "
-        "measured in the same script on the same file. Single-threaded children.", "",
+        "measured in the same script on the same file. CPU seconds are summed over "
+        "threads (the LAZ codec and BLAS may use both cores: CPU exceeds wall idle).", "",
         "| row | wall (s) | CPU (s) | peak (MB) | points/s (CPU) | input decodes |",
         "|---|---:|---:|---:|---:|---:|",
         f"| job | {job['wall']:.2f} | {job['cpu']:.2f} | {job['peak_mb']:.0f} | "
