@@ -123,7 +123,7 @@ class GroundFilterAlgorithm(_GroundCommon):
             "error with each sample held out of the choice of the defaults (8 ISPRS "
             "samples, 4 real vendor-classified files): 3.31 % on the ISPRS samples, "
             "0.43 % on the real files (SMRF with PDAL's defaults: 5.75 % and 2.65 %); "
-            "ISPRS mean at the defaults 3.28 %."),
+            "ISPRS mean at the defaults 3.27 %."),
             "INPUT=tile.laz OUTPUT=classified.laz OUTPUT_HTML=groundfilter.html",
             {**self.common_notes(),
              self.CELL: self.tr("0 = derived from the point density (about 1 m)."),

@@ -171,10 +171,6 @@
             <translation>السحابة المصنّفة (الصنف 6 = مبنى)</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Ground in class 2 (run a ground filter first), in a projected CRS (metres).</source>
             <translation>الأرض في الفئة 2 (شغّل مرشح أرض أولًا)، بنظام إحداثيات مُسقَط (بالأمتار).</translation>
         </message>
@@ -304,10 +300,6 @@
         <message>
             <source>Output folder</source>
             <translation>مجلد النواتج</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
         </message>
         <message>
             <source>Tiles</source>
@@ -580,10 +572,6 @@
             <translation>تقرير التصنيف</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Points read</source>
             <translation>النقاط المقروءة</translation>
         </message>
@@ -722,10 +710,6 @@
             <translation>البواقي</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Choose a DTM raster.</source>
             <translation>اختر طبقة راستر لنموذج التضاريس الرقمي.</translation>
         </message>
@@ -811,10 +795,6 @@
         <message>
             <source>Change polygons</source>
             <translation>مضلعات التغيّر</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
         </message>
         <message>
             <source>Subtracts an earlier surface from a later one (two rasters on one grid, or two LAS/LAZ clouds gridded by TIN) and keeps the change beyond the level of detection LoD95 = 1.96·√(σ₁² + σ₂²). Significant cells form cut and fill polygons with area, mean change and volume.</source>
@@ -918,10 +898,6 @@
         <message>
             <source>Image height (px) if no image is given</source>
             <translation>ارتفاع الصورة (بكسل) إن لم تُحدَّد صورة</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
         </message>
         <message>
             <source>Residuals table</source>
@@ -1406,6 +1382,10 @@
             <source>Its default was chosen by leave-one-sample-out cross-validation over the ISPRS samples and synthetic forest, cliff, lake and bridge scenes (benchmarks/results/defaults.md).</source>
             <translation>اختير افتراضيه بالتحقق المتقاطع بترك عيّنة واحدة خارجاً على عيّنات ISPRS ومشاهد اصطناعية لغابة وجروف وبحيرة وجسر (benchmarks/results/defaults.md).</translation>
         </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>ملفات HTML (*.html)</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>
@@ -1552,10 +1532,6 @@
             <translation>أصناف الأرض في المرجع</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Per-point error layer (user_data: 0 correct, 1 Type I, 2 Type II)</source>
             <translation>طبقة الخطأ لكل نقطة (user_data: 0 صحيح، 1 النوع الأول، 2 النوع الثاني)</translation>
         </message>
@@ -1655,8 +1631,8 @@
             <translation>0 = ‏0.35 × متوسط تباعد النقاط، من 0.25 إلى 0.5 م؛ زائد 1.0 م لكل وحدة من انحدار التضاريس.</translation>
         </message>
         <message>
-            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell, slope and height tolerances are derived from the cloud, applied to the terrain with its regional slope removed; terrain crests it removed are grown back, then passes rebuild the terrain and re-test every point. Under a closed canopy lone ground returns are kept, so the terrain never climbs into the trees; water classified 9 in the input keeps its class, and flat, sparse patches that look like water get class 1, never ground. The report lists every value derived and warns on hard clouds. Total error with each sample held out of the choice of the defaults (8 ISPRS samples, 4 real vendor-classified files): 3.31 % on the ISPRS samples, 0.43 % on the real files (SMRF with PDAL's defaults: 5.75 % and 2.65 %); ISPRS mean at the defaults 3.28 %.</source>
-            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) دون أي معامل يُضبط: مرشح مورفولوجي تدريجي (Pingel et al. 2013) تُشتق خليته وتفاوتات انحداره وارتفاعه من السحابة، ويُطبَّق على التضاريس بعد إزالة انحدارها الإقليمي؛ وتُستعاد قمم التضاريس التي أزالها، ثم تمريرات تعيد بناء التضاريس وتختبر كل نقطة من جديد. تحت غطاء شجري كثيف تُبقى ارتدادات الأرض المنفردة، فلا تصعد التضاريس أبداً إلى الأشجار؛ ويحتفظ الماء المصنف 9 في المدخل بفئته، وتأخذ الرقع المستوية المتفرقة التي تشبه الماء الفئة 1 ولا تكون أرضاً أبداً. يسرد التقرير كل قيمة مشتقة وينبّه على السحب الصعبة. الخطأ الكلي مع استبعاد كل عينة من اختيار القيم الافتراضية (8 عينات ISPRS و4 ملفات حقيقية صنّفها المورّد): ‏3.31 % على عينات ISPRS و0.43 % على الملفات الحقيقية (SMRF بالقيم الافتراضية لـ PDAL: ‏5.75 % و2.65 %)؛ متوسط ISPRS بالقيم الافتراضية 3.28 %.</translation>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell, slope and height tolerances are derived from the cloud, applied to the terrain with its regional slope removed; terrain crests it removed are grown back, then passes rebuild the terrain and re-test every point. Under a closed canopy lone ground returns are kept, so the terrain never climbs into the trees; water classified 9 in the input keeps its class, and flat, sparse patches that look like water get class 1, never ground. The report lists every value derived and warns on hard clouds. Total error with each sample held out of the choice of the defaults (8 ISPRS samples, 4 real vendor-classified files): 3.31 % on the ISPRS samples, 0.43 % on the real files (SMRF with PDAL's defaults: 5.75 % and 2.65 %); ISPRS mean at the defaults 3.27 %.</source>
+            <translation>يصنّف سحابة نقاط LAS/LAZ إلى أرض (الفئة 2) ونقاط أخرى (الفئة 1) وضوضاء منخفضة (الفئة 7) دون أي معامل يُضبط: مرشح مورفولوجي تدريجي (Pingel et al. 2013) تُشتق خليته وتفاوتات انحداره وارتفاعه من السحابة، ويُطبَّق على التضاريس بعد إزالة انحدارها الإقليمي؛ وتُستعاد قمم التضاريس التي أزالها، ثم تمريرات تعيد بناء التضاريس وتختبر كل نقطة من جديد. تحت غطاء شجري كثيف تُبقى ارتدادات الأرض المنفردة، فلا تصعد التضاريس أبداً إلى الأشجار؛ ويحتفظ الماء المصنف 9 في المدخل بفئته، وتأخذ الرقع المستوية المتفرقة التي تشبه الماء الفئة 1 ولا تكون أرضاً أبداً. يسرد التقرير كل قيمة مشتقة وينبّه على السحب الصعبة. الخطأ الكلي مع استبعاد كل عينة من اختيار القيم الافتراضية (8 عينات ISPRS و4 ملفات حقيقية صنّفها المورّد): ‏3.31 % على عينات ISPRS و0.43 % على الملفات الحقيقية (SMRF بالقيم الافتراضية لـ PDAL: ‏5.75 % و2.65 %)؛ متوسط ISPRS بالقيم الافتراضية 3.27 %.</translation>
         </message>
     </context>
     <context>
@@ -1807,10 +1783,6 @@
         <message>
             <source>Side overlap (%) [extension]</source>
             <translation>التداخل الجانبي (%) [إضافة]</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
         </message>
         <message>
             <source>{name} ({unit}) is required with the Custom camera: enter it or choose a camera preset.</source>
@@ -2228,10 +2200,6 @@
             <translation>شبكات الكثافة</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Checks a LAS/LAZ cloud before processing: density of all, last and ground returns, gaps without ground, duplicates, noise share and scan angles. It then states which settings the density supports: ground filter window, DTM cell size, LOD1 only below 1 pt/m², and the radius and tile of the slope-based and LSQ filters.</source>
             <translation>يفحص سحابة LAS/LAZ قبل المعالجة: كثافة كل الانعكاسات والأخيرة منها وانعكاسات الأرض، والفجوات الخالية من الأرض، والنقاط المكررة، ونسبة الضجيج، وزوايا المسح. ثم يبيّن الإعدادات التي تدعمها الكثافة: نافذة مرشح الأرض، وحجم خلية DTM، وLOD1 فقط دون 1 pt/m²، ونصف قطر مرشح الانحدار وبلاطة مرشح LSQ.</translation>
         </message>
@@ -2325,10 +2293,6 @@
         <message>
             <source>Check-point residuals</source>
             <translation>بواقي نقاط التحقق</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
         </message>
         <message>
             <source>DTM accuracy report</source>
@@ -2480,10 +2444,6 @@
         <message>
             <source>Ground points only</source>
             <translation>نقاط الأرض فقط</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
         </message>
         <message>
             <source>Ground points</source>
@@ -2740,10 +2700,6 @@
             <translation>طبقة نقاط التحقق للسلسلة (لا يُكتب فوقها أبدًا)</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Classified point cloud</source>
             <translation>سحابة النقاط المصنَّفة</translation>
         </message>
@@ -2826,10 +2782,6 @@
             <translation>ملفات CSV (*.csv)</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Rectifies every image of a folder that has its QGIS Georeferencer .points file next to it, with a fixed transformation or the one recommended for each image. It writes one summary table with the transformation, RMS_T, the check or leave-one-out error and the verdict of every image.</source>
             <translation>يصحّح كل صورة في مجلد بجانبها ملف ‎.points‎ من المُرجِع الجغرافي في QGIS، بتحويل ثابت أو بالتحويل الموصى به لكل صورة. ويكتب جدول ملخص واحدًا فيه التحويل وRMS_T وخطأ التحقق أو الاستبعاد الفردي والحكم لكل صورة.</translation>
         </message>
@@ -2887,10 +2839,6 @@
         <message>
             <source>Rectified image</source>
             <translation>الصورة المصحَّحة هندسياً</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
         </message>
         <message>
             <source>OUTPUT must be a GeoTIFF file (.tif); got {0}.</source>
@@ -2958,10 +2906,6 @@
         <message>
             <source>Ground points</source>
             <translation>نقاط الأرض</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
         </message>
         <message>
             <source>Points read</source>
@@ -3073,10 +3017,6 @@
         <message>
             <source>CSV files (*.csv)</source>
             <translation>ملفات CSV (*.csv)</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
         </message>
         <message>
             <source>Classified with the best setting</source>
@@ -3459,10 +3399,6 @@
             <translation>التقرير</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
-        </message>
-        <message>
             <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
             <translation>سحابة النقاط لا تحوي سجل نظام إحداثيات ولم يُحدَّد نظام إحداثيات؛ اضبط المعامل CRS (مثلاً EPSG:32632). لم تُكتب أي مخرجات.</translation>
         </message>
@@ -3524,10 +3460,6 @@
         <message>
             <source>Ground points</source>
             <translation>نقاط الأرض</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>ملفات HTML (*.html)</translation>
         </message>
         <message>
             <source>Points read</source>

@@ -171,10 +171,6 @@
             <translation>ابر طبقه‌بندی‌شده (کلاس ۶ = ساختمان)</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Ground in class 2 (run a ground filter first), in a projected CRS (metres).</source>
             <translation>زمین در کلاس 2 (نخست یک فیلتر زمین اجرا کنید)، در سامانهٔ مختصات تصویری (متر).</translation>
         </message>
@@ -304,10 +300,6 @@
         <message>
             <source>Output folder</source>
             <translation>پوشهٔ خروجی</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
         </message>
         <message>
             <source>Tiles</source>
@@ -580,10 +572,6 @@
             <translation>گزارش طبقه‌بندی</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Points read</source>
             <translation>نقاط خوانده‌شده</translation>
         </message>
@@ -722,10 +710,6 @@
             <translation>باقی‌مانده‌ها</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Choose a DTM raster.</source>
             <translation>یک رستر مدل رقومی زمین انتخاب کنید.</translation>
         </message>
@@ -811,10 +795,6 @@
         <message>
             <source>Change polygons</source>
             <translation>چندضلعی‌های تغییر</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
         </message>
         <message>
             <source>Subtracts an earlier surface from a later one (two rasters on one grid, or two LAS/LAZ clouds gridded by TIN) and keeps the change beyond the level of detection LoD95 = 1.96·√(σ₁² + σ₂²). Significant cells form cut and fill polygons with area, mean change and volume.</source>
@@ -918,10 +898,6 @@
         <message>
             <source>Image height (px) if no image is given</source>
             <translation>ارتفاع تصویر (پیکسل) اگر تصویری داده نشود</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
         </message>
         <message>
             <source>Residuals table</source>
@@ -1406,6 +1382,10 @@
             <source>Its default was chosen by leave-one-sample-out cross-validation over the ISPRS samples and synthetic forest, cliff, lake and bridge scenes (benchmarks/results/defaults.md).</source>
             <translation>پیش‌فرض آن با اعتبارسنجی متقابل حذف‌یک‌نمونه روی نمونه‌های ISPRS و صحنه‌های مصنوعی جنگل، صخره، دریاچه و پل انتخاب شده است (benchmarks/results/defaults.md).</translation>
         </message>
+        <message>
+            <source>HTML files (*.html)</source>
+            <translation>پرونده‌های HTML (*.html)</translation>
+        </message>
     </context>
     <context>
         <name>GeomaticsProvider</name>
@@ -1552,10 +1532,6 @@
             <translation>کلاس‌های زمینی مرجع</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Per-point error layer (user_data: 0 correct, 1 Type I, 2 Type II)</source>
             <translation>لایهٔ خطای نقطه‌به‌نقطه (user_data: 0 درست، 1 نوع اول، 2 نوع دوم)</translation>
         </message>
@@ -1655,8 +1631,8 @@
             <translation>0 = ‏0.35 × میانگین فاصلهٔ نقاط، از 0.25 تا 0.5 متر؛ به‌علاوهٔ 1.0 متر به ازای هر واحد شیب زمین.</translation>
         </message>
         <message>
-            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell, slope and height tolerances are derived from the cloud, applied to the terrain with its regional slope removed; terrain crests it removed are grown back, then passes rebuild the terrain and re-test every point. Under a closed canopy lone ground returns are kept, so the terrain never climbs into the trees; water classified 9 in the input keeps its class, and flat, sparse patches that look like water get class 1, never ground. The report lists every value derived and warns on hard clouds. Total error with each sample held out of the choice of the defaults (8 ISPRS samples, 4 real vendor-classified files): 3.31 % on the ISPRS samples, 0.43 % on the real files (SMRF with PDAL's defaults: 5.75 % and 2.65 %); ISPRS mean at the defaults 3.28 %.</source>
-            <translation>ابر نقطهٔ LAS/LAZ را بدون هیچ پارامتری به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) طبقه‌بندی می‌کند: یک فیلتر ریخت‌شناسی تدریجی (Pingel et al. 2013) که سلول و رواداری‌های شیب و ارتفاع آن از خود ابر به دست می‌آید و روی زمینِ بدون شیب منطقه‌ای اعمال می‌شود؛ تیغه‌های زمین را که حذف کرده است باز می‌گرداند، سپس گذرهایی زمین را بازسازی و هر نقطه را دوباره آزمون می‌کنند. زیر تاج پوشش بسته بازگشت‌های تنهای زمین نگه داشته می‌شوند، پس زمین هرگز به درون درختان بالا نمی‌رود؛ آبی که در ورودی کلاس 9 دارد کلاس خود را نگه می‌دارد و لکه‌های هموار و پراکنده‌ای که شبیه آب‌اند کلاس 1 می‌گیرند و هرگز زمین نمی‌شوند. گزارش هر مقدار برگرفته را فهرست می‌کند و دربارهٔ ابرهای دشوار هشدار می‌دهد. خطای کل وقتی هر نمونه از انتخاب پیش‌فرض‌ها کنار گذاشته شود (8 نمونهٔ ISPRS و 4 فایل واقعی که تأمین‌کننده طبقه‌بندی کرده است): ‏3.31 % روی نمونه‌های ISPRS و 0.43 % روی فایل‌های واقعی (SMRF با پیش‌فرض‌های PDAL: ‏5.75 % و 2.65 %)؛ میانگین ISPRS با پیش‌فرض‌ها 3.28 %.</translation>
+            <source>Classifies a LAS/LAZ point cloud into ground (class 2), other points (class 1) and low noise (class 7) with no parameter to set: a progressive morphological filter (Pingel et al. 2013) whose cell, slope and height tolerances are derived from the cloud, applied to the terrain with its regional slope removed; terrain crests it removed are grown back, then passes rebuild the terrain and re-test every point. Under a closed canopy lone ground returns are kept, so the terrain never climbs into the trees; water classified 9 in the input keeps its class, and flat, sparse patches that look like water get class 1, never ground. The report lists every value derived and warns on hard clouds. Total error with each sample held out of the choice of the defaults (8 ISPRS samples, 4 real vendor-classified files): 3.31 % on the ISPRS samples, 0.43 % on the real files (SMRF with PDAL's defaults: 5.75 % and 2.65 %); ISPRS mean at the defaults 3.27 %.</source>
+            <translation>ابر نقطهٔ LAS/LAZ را بدون هیچ پارامتری به زمین (کلاس 2)، نقاط دیگر (کلاس 1) و نویز پایین (کلاس 7) طبقه‌بندی می‌کند: یک فیلتر ریخت‌شناسی تدریجی (Pingel et al. 2013) که سلول و رواداری‌های شیب و ارتفاع آن از خود ابر به دست می‌آید و روی زمینِ بدون شیب منطقه‌ای اعمال می‌شود؛ تیغه‌های زمین را که حذف کرده است باز می‌گرداند، سپس گذرهایی زمین را بازسازی و هر نقطه را دوباره آزمون می‌کنند. زیر تاج پوشش بسته بازگشت‌های تنهای زمین نگه داشته می‌شوند، پس زمین هرگز به درون درختان بالا نمی‌رود؛ آبی که در ورودی کلاس 9 دارد کلاس خود را نگه می‌دارد و لکه‌های هموار و پراکنده‌ای که شبیه آب‌اند کلاس 1 می‌گیرند و هرگز زمین نمی‌شوند. گزارش هر مقدار برگرفته را فهرست می‌کند و دربارهٔ ابرهای دشوار هشدار می‌دهد. خطای کل وقتی هر نمونه از انتخاب پیش‌فرض‌ها کنار گذاشته شود (8 نمونهٔ ISPRS و 4 فایل واقعی که تأمین‌کننده طبقه‌بندی کرده است): ‏3.31 % روی نمونه‌های ISPRS و 0.43 % روی فایل‌های واقعی (SMRF با پیش‌فرض‌های PDAL: ‏5.75 % و 2.65 %)؛ میانگین ISPRS با پیش‌فرض‌ها 3.27 %.</translation>
         </message>
     </context>
     <context>
@@ -1807,10 +1783,6 @@
         <message>
             <source>Side overlap (%) [extension]</source>
             <translation>پوشش عرضی (%) [افزوده]</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
         </message>
         <message>
             <source>{name} ({unit}) is required with the Custom camera: enter it or choose a camera preset.</source>
@@ -2228,10 +2200,6 @@
             <translation>رسترهای تراکم</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Checks a LAS/LAZ cloud before processing: density of all, last and ground returns, gaps without ground, duplicates, noise share and scan angles. It then states which settings the density supports: ground filter window, DTM cell size, LOD1 only below 1 pt/m², and the radius and tile of the slope-based and LSQ filters.</source>
             <translation>یک ابر LAS/LAZ را پیش از پردازش بررسی می‌کند: تراکم همهٔ بازگشت‌ها، بازگشت‌های آخر و بازگشت‌های زمین، شکاف‌های بی‌زمین، نقاط تکراری، سهم نوفه و زاویه‌های اسکن. سپس می‌گوید تراکم از چه تنظیم‌هایی پشتیبانی می‌کند: پنجرهٔ فیلتر زمین، اندازهٔ سلول DTM، LOD1 فقط زیر 1 pt/m²، و شعاع فیلتر شیب و کاشی فیلتر LSQ.</translation>
         </message>
@@ -2325,10 +2293,6 @@
         <message>
             <source>Check-point residuals</source>
             <translation>باقیمانده‌های نقاط چک</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
         </message>
         <message>
             <source>DTM accuracy report</source>
@@ -2480,10 +2444,6 @@
         <message>
             <source>Ground points only</source>
             <translation>فقط نقاط زمینی</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
         </message>
         <message>
             <source>Ground points</source>
@@ -2740,10 +2700,6 @@
             <translation>لایهٔ نقاط چک زنجیره (هرگز بازنویسی نمی‌شود)</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Classified point cloud</source>
             <translation>ابر نقاط طبقه‌بندی‌شده</translation>
         </message>
@@ -2826,10 +2782,6 @@
             <translation>پرونده‌های CSV (*.csv)</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
-        </message>
-        <message>
             <source>Rectifies every image of a folder that has its QGIS Georeferencer .points file next to it, with a fixed transformation or the one recommended for each image. It writes one summary table with the transformation, RMS_T, the check or leave-one-out error and the verdict of every image.</source>
             <translation>هر تصویرِ یک پوشه را که فایل ‎.points‎ زمین‌مرجع‌ساز QGIS کنارش است، با یک تبدیل ثابت یا تبدیل توصیه‌شده برای هر تصویر تصحیح می‌کند. یک جدول خلاصه با تبدیل، RMS_T، خطای چک یا حذف‌یکی و رأی نهایی هر تصویر می‌نویسد.</translation>
         </message>
@@ -2887,10 +2839,6 @@
         <message>
             <source>Rectified image</source>
             <translation>تصویر تصحیح‌شده</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
         </message>
         <message>
             <source>OUTPUT must be a GeoTIFF file (.tif); got {0}.</source>
@@ -2958,10 +2906,6 @@
         <message>
             <source>Ground points</source>
             <translation>نقاط زمینی</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
         </message>
         <message>
             <source>Points read</source>
@@ -3073,10 +3017,6 @@
         <message>
             <source>CSV files (*.csv)</source>
             <translation>پرونده‌های CSV (*.csv)</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
         </message>
         <message>
             <source>Classified with the best setting</source>
@@ -3459,10 +3399,6 @@
             <translation>گزارش</translation>
         </message>
         <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
-        </message>
-        <message>
             <source>The point cloud has no CRS record and no CRS was given; set the CRS parameter (e.g. EPSG:32632). No output was written.</source>
             <translation>ابر نقاط رکورد سیستم مختصات ندارد و سیستم مختصاتی هم داده نشده است؛ پارامتر CRS را تنظیم کنید (مثلاً EPSG:32632). هیچ خروجی‌ای نوشته نشد.</translation>
         </message>
@@ -3524,10 +3460,6 @@
         <message>
             <source>Ground points</source>
             <translation>نقاط زمینی</translation>
-        </message>
-        <message>
-            <source>HTML files (*.html)</source>
-            <translation>پرونده‌های HTML (*.html)</translation>
         </message>
         <message>
             <source>Points read</source>

@@ -13,7 +13,7 @@ from . import _raster as R  # noqa: N812
 __all__ = ["outside_hull", "terrain_slope", "trend_surface"]
 
 
-def trend_surface(zf, grid, opt, subtract=False):
+def trend_surface(zf, grid, opt, subtract=False, outside=None):
     """Smooth large-scale terrain trend removed before the progressive opening.
 
     Opening ``z - trend`` and adding the trend back is an opening whose flat
@@ -37,6 +37,9 @@ def trend_surface(zf, grid, opt, subtract=False):
     subtract : bool
         Subtract the trend from ``zf`` in place, band by band, and return ``zf`` (the
         trend raster is never held whole).
+    outside : ndarray of bool, optional
+        Cells outside the occupied cells' hull (:func:`outside_hull`): absent from the
+        opening, then filled from it (:func:`_opened`).
 
     Returns
     -------
@@ -45,10 +48,11 @@ def trend_surface(zf, grid, opt, subtract=False):
     """
     r = max(1, int(np.ceil(opt.trend_window / grid.cell)))
     k = 2 * max(1, int(np.ceil(opt.trend_smooth / grid.cell))) + 1
-    return R.box_mean(R.opening(zf, r), k, subtract_from=zf if subtract else None)
+    return R.box_mean(_opened(zf, r, outside, grid.anchor), k,
+                      subtract_from=zf if subtract else None)
 
 
-def terrain_slope(zf, grid, opt):
+def terrain_slope(zf, grid, opt, outside=None):
     """Per-cell slope tolerance from the terrain under a large-window opening.
 
     The opening with the largest window removes objects; its gradient, averaged over
@@ -63,6 +67,8 @@ def terrain_slope(zf, grid, opt):
         Its grid.
     opt : RecommendedOptions
         Options.
+    outside : ndarray of bool, optional
+        As for :func:`trend_surface`.
 
     Returns
     -------
@@ -70,7 +76,8 @@ def terrain_slope(zf, grid, opt):
         Slope tolerance per cell (rise/run).
     """
     r = max(1, int(np.ceil(opt.max_window / grid.cell)))
-    t = R.slope(R.opening(zf, r), grid.cell, dtype=zf.dtype)     # float32 rasters: float32
+    t = R.slope(_opened(zf, r, outside, grid.anchor), grid.cell,
+                dtype=zf.dtype)                               # float32 rasters: float32
     t = R.box_mean(t, 2 * r + 1)
     t *= opt.slope_factor
     return np.clip(t, opt.slope_min, opt.slope_max, out=t)
@@ -114,3 +121,17 @@ def outside_hull(occupied):
     for i in range(rows):
         out[i] = ((eq[:, 0:1] * c + eq[:, 1:2] * i + eq[:, 2:3]) > 1e-9).any(axis=0)
     return out
+
+
+def _opened(zf, r, outside, anchor):
+    """Return the opening of ``zf`` with cells ``outside`` absent, filled there from itself.
+
+    Outside the occupied cells' hull the filled minimum raster extrapolates whatever is
+    at the edge (roofs too); the wide openings behind the trend and the slope tolerance
+    would average that in. Here those cells take no part in the opening and are then
+    filled from the opened (object-free) surface.
+    """
+    if outside is None or not outside.any():
+        return R.opening(zf, r)
+    op = R.opening(zf.copy(), r, outside=outside)
+    return R.fill(op, ~outside, anchor, overwrite=True)

@@ -23,7 +23,8 @@ itself (point density, terrain slope), never from labels:
    the horizontal; progressive opening with square windows of radius 1..R cells,
    R = ceil(max_window / cell); a cell whose height drops more than
    ``slope * r * cell`` is an object cell (Zhang et al. 2003; Pingel et al. 2013).
-   Cells outside the occupied cells' convex hull are absent from the openings.
+   Cells outside the occupied cells' convex hull are absent from these openings (and
+   from those of steps 4-5, which are then filled from the opening there).
 5b. continuity growing: a flagged cell becomes ground again when the least-squares
    plane of its 7 m window fits the occupied cells there within 0.5 m RMS, the cell
    and an accepted neighbour both lie within 0.1 m + 1.0 x slope of it, the plane
@@ -45,7 +46,7 @@ itself (point density, terrain slope), never from labels:
 8. refine (3 passes): DTM rebuilt from the lowest ground point per cell (holes filled
    as in step 6, only where points read them), step 7 repeated.
 
-Measured (``benchmarks/results/ground.md``): ISPRS total error mean 3.28 %, below SMRF
+Measured (``benchmarks/results/ground.md``): ISPRS total error mean 3.27 %, below SMRF
 (PDAL's defaults, 5.75 %) on 7 of 8 samples (not samp11: 8.59 vs 8.52); 4 real files: DTM
 RMSE at or below SMRF's; 12-fold leave-one-sample-out 3.31 % (ISPRS folds), 0.43 % (real);
 thinned to 2, 1, 0.5 pts/m²: 35 of 36 within 1 %. Water, report: :mod:`._recommended_filter`.
@@ -399,10 +400,10 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None)
         zmin = None
     R.floor_steps(zf, ~(low | empty), wall_step(grid.cell, opt))
     _trim()
-    slope = opt.slope if opt.slope is not None else terrain_slope(zf, grid, opt)
+    slope = opt.slope if opt.slope is not None else terrain_slope(zf, grid, opt, outside)
     _trim()
     if opt.trend_window > 0 and opt.trend_smooth > 0:
-        trend_surface(zf, grid, opt, subtract=True)  # zf is the fill's own array
+        trend_surface(zf, grid, opt, True, outside)  # zf: the fill's own array
     obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep, True, outside)
     del zf, outside
     if np.ndim(slope):                               # the report reads min / median / max

@@ -53,7 +53,8 @@ SAMPLES = ["samp11", "samp12", "samp22", "samp31", "samp41", "samp53", "samp54",
 #: 1.2681, samp41 2.5465 -> 2.5376, the other four identical (mean 3.2825 -> 3.2833).
 #: Cells outside the occupied cells' convex hull absent from the openings
 #: (``_terrain.outside_hull``): samp53 3.5721 -> 3.5517, the other seven identical
-#: (mean 3.2833 -> 3.2808).
+#: (mean 3.2833 -> 3.2808). The trend surface and slope tolerance with those cells
+#: absent (``_terrain._opened``): samp53 3.5517 -> 3.5022 (mean 3.2746).
 RESEARCH = {
     "samp11": ("89d2ed096b883a82114bffacdb8119c744815f36", 8.5925,
                "983b1075164a6726c3d2db4e61b76a827592368c", 12.1889),
@@ -65,7 +66,7 @@ RESEARCH = {
                "bb7950614bc0d233c813a97e4de7d4b32c3b133a", 1.7636),
     "samp41": ("e176abb1d684b601cab84147dff21e96ba35d296", 2.5376,
                "308016efc6d2038f6b8e30c45fe4f1f033fcd309", 5.4670),
-    "samp53": ("d7384e4da3bcab937005e4f1a8aa1a5e462d3dc0", 3.5517,
+    "samp53": ("35ab2fe92fe8db211b18f7d68a758806aa62e441", 3.5022,
                "153ff4fcf22ff71a653f4c0d3c7cb8e0dfb68b09", 4.4185),
     "samp54": ("e16ef223def7d8df242b73e41252fe3b23fb664a", 2.5209,
                "0b17ecbe5410050229e43a6bc717649725984bfc", 3.2993),
@@ -268,7 +269,7 @@ def test_recommended_isprs_golden_identical_to_research(isprs_dir, sample):
 
 def test_recommended_isprs_mean_and_wins(isprs_dir):
     totals = [RESEARCH[s][1] for s in SAMPLES]
-    assert np.mean(totals) == pytest.approx(3.2808, abs=0.0001)
+    assert np.mean(totals) == pytest.approx(3.2746, abs=0.0001)
     smrf = dict(samp11=8.52, samp12=3.60, samp22=3.59, samp31=3.55, samp41=12.20,
                 samp53=7.99, samp54=4.28, samp61=2.28)     # pysmrf, PDAL defaults
     assert sum(RESEARCH[s][1] < smrf[s] for s in SAMPLES) == 7
