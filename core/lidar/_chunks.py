@@ -160,6 +160,14 @@ class ChunkTask:
         return (self.bounds[0] - b, self.bounds[1] - b, self.bounds[2] + b, self.bounds[3] + b)
 
 
+def apply_summary(tasks, summary: dict) -> None:
+    """Give every chunk the catalog's corner and derived values (:func:`._summary.final`)."""
+    corner = summary.get("corner")
+    for t in tasks:
+        t.filter_origin = None if corner is None else (float(corner[0]), float(corner[1]))
+        t.derived = summary.get("derived")
+
+
 def is_done(task: ChunkTask) -> Optional[dict]:
     """Stats of a chunk finished by an earlier run (marker and outputs present), else None."""
     done = task.outputs["DONE"]
@@ -394,9 +402,7 @@ def process_chunk(task: ChunkTask, *strips, summary: Optional[dict] = None) -> d
     single_threaded()
     clock = PhaseClock()
     if summary is not None:           # the catalog's first pass, merged on a worker
-        corner = summary.get("corner")
-        task.filter_origin = None if corner is None else (float(corner[0]), float(corner[1]))
-        task.derived = summary.get("derived")
+        apply_summary([task], summary)
     if task.fail_once:
         _fail_first_attempt(task)
     xyz, dims, core, records = _read(task, strips if task.tile and strips else None)

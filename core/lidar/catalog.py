@@ -55,6 +55,7 @@ from ._chunks import (
     GROUND_FILTERS,
     ChunkTask,
     PhaseClock,
+    apply_summary,
     default_ground_filter,
     is_done,
     neighbour_paths,
@@ -309,14 +310,6 @@ def pass_plan(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dict
     spec = {p: (h, counts, [(cat.bounds[j] * h).tolist() for j in cat.query(tuple(b))
                             if j != i]) for i, (p, b) in enumerate(zip(cat.paths, cat.bounds))}
     return {"spec": spec, "counts": counts, "folder": os.path.abspath(state)}
-
-
-def apply_summary(tasks: Sequence[ChunkTask], summary: dict) -> None:
-    """Give every chunk the catalog's corner and derived values (:func:`._summary.final`)."""
-    corner = summary.get("corner")
-    for t in tasks:
-        t.filter_origin = None if corner is None else (float(corner[0]), float(corner[1]))
-        t.derived = summary.get("derived")
 
 
 def first_pass(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dict]:
