@@ -158,13 +158,16 @@ class FunctionFilter(GroundFilter):
         Passed through as ``options`` (a dataclass shows in the report).
     name, title, citation : str
         Identity of the method in reports.
+    lattice : {'cloud', 'world', 'none'}
+        Where the method lays its grids (:attr:`GroundFilter.lattice`).
     """
 
     def __init__(self, func: Callable, options=None, *, name: str, title: str,
-                 citation: Optional[str] = None):
+                 citation: Optional[str] = None, lattice: str = "cloud"):
         super().__init__(options)
         self.func = func
         self.name, self.title, self.citation = name, title, citation
+        self.lattice = lattice
         try:
             self._takes_origin = "origin" in inspect.signature(func).parameters
         except (TypeError, ValueError):
@@ -187,15 +190,16 @@ class OptionsFilter(FunctionFilter):
 
     Parameters
     ----------
-    func, options, name, title, citation
+    func, options, name, title, citation, lattice
         As :class:`FunctionFilter`.
     labels : dict of str to str
         Report label (an English message id) per options field; fields left out are
         not shown.
     """
 
-    def __init__(self, func, options, *, name, title, citation, labels):
-        super().__init__(func, options, name=name, title=title, citation=citation)
+    def __init__(self, func, options, *, name, title, citation, labels, lattice="cloud"):
+        super().__init__(func, options, name=name, title=title, citation=citation,
+                         lattice=lattice)
         self.labels = labels
 
     def settings(self):

@@ -209,9 +209,7 @@ def _recommended(options=None):
 
 def _ptd(options=None):
     from .ptd import ptd_filter
-    flt = ptd_filter(options)
-    flt.lattice = "world"          # its cells, parcels and frame lie on the lattice through 0
-    return flt
+    return ptd_filter(options)
 
 
 def _keep(options=None):

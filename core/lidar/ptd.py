@@ -592,7 +592,8 @@ def ptd_filter(options: Optional[PtdOptions] = None) -> OptionsFilter:
     Returns
     -------
     OptionsFilter
-        Name ``ptd``.
+        Name ``ptd``; its cells, parcels and frame lie on the lattice through 0
+        (``lattice='world'``) whoever runs it.
     """
     return OptionsFilter(classify, options or PtdOptions(), name="ptd", title=TITLE,
-                         citation=CITATION, labels=LABELS)
+                         citation=CITATION, labels=LABELS, lattice="world")

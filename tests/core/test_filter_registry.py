@@ -130,3 +130,24 @@ def test_catalog_choice_order_is_stable():
     assert list(GROUND_FILTERS)[:7] == ["keep", "lsq_faithful", "lsq_improved",
                                         "slope_exact", "slope_adaptive", "groundfilter",
                                         "ptd"]
+
+
+def test_public_ptd_filter_lies_on_the_world_lattice():
+    """``ptd_filter()`` from the public API anchors like the registry's PTD: the
+    lattice through 0, not the cloud's corner (the attribute used to be set by the
+    registry only, so ``classify_points(points, ptd_filter())`` laid its grids on the
+    corner of the points)."""
+    from geomatics_toolbox.core.io.las import PointData
+    from geomatics_toolbox.core.lidar import ptd_filter
+    from geomatics_toolbox.core.lidar.filters import classify_points
+    assert ptd_filter().lattice == ground_filter("ptd").lattice == "world"
+    t = generate_tile(extent=(120.0, 120.0), origin=(ORIGIN[0] + 7.3, ORIGIN[1] + 11.9),
+                      density=0.5, seed=5)
+    x, y, z = t.x, t.y, t.z
+    pts = PointData(x, y, z, {})
+    got = classify_points(pts, ptd_filter(), default_selection("ptd"))
+    ref = classify_points(pts, ground_filter("ptd"), default_selection("ptd"))
+    np.testing.assert_array_equal(got, ref)
+    corner = classify_points(pts, ptd_filter(), default_selection("ptd"),
+                             origin=(float(x.min()), float(y.min())))
+    assert np.count_nonzero(corner != ref) > 0      # the anchor matters on this cloud
