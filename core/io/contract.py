@@ -358,6 +358,25 @@ def _raise_terminated(signum, frame):  # pragma: no cover - exercised in a subpr
     raise Terminated(f"Terminated by signal {signum}; no output was written.")
 
 
+@contextlib.contextmanager
+def sigterm_raises():
+    """While inside, ``SIGTERM`` raises :class:`Terminated` (main thread only).
+
+    A run that makes its outputs outside one :class:`OutputContract` (a catalog: chunks
+    on workers, state files) cleans up in its own ``except BaseException`` handlers.
+    """
+    old = None
+    if threading.current_thread() is threading.main_thread():
+        with contextlib.suppress(ValueError, OSError):
+            old = signal.signal(signal.SIGTERM, _raise_terminated)
+    try:
+        yield
+    finally:
+        if old is not None:
+            with contextlib.suppress(ValueError, OSError):
+                signal.signal(signal.SIGTERM, old)
+
+
 # ---------------------------------------------------------------------- one output
 def check_not_input(output: PathLike, *inputs: PathLike) -> None:
     """Refuse an output path that would overwrite one of the inputs.

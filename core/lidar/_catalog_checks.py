@@ -244,20 +244,69 @@ def check_scheduler(address: str, *, timeout: float = 5.0) -> None:
 SETTINGS_FILE = "settings.json"
 
 
-def _check_resume(folder: Path, settings: dict) -> None:
-    """Refuse to resume into a folder whose earlier run used other settings."""
+def tile_signature(info: LasInfo) -> list:
+    """Return what a resume compares of a tile: name, bytes, mtime (ns), points, bounds.
+
+    A tile rewritten in place (re-classified, re-exported, re-tiled) changes its size
+    or modification time even when its name, point count and bounds stay.
+    """
+    st = os.stat(info.path)
+    return [os.path.basename(info.path), int(st.st_size), int(st.st_mtime_ns),
+            int(info.count), *(float(v) for v in (*info.mins[:2], *info.maxs[:2]))]
+
+
+def _tile_changes(old: Sequence, new: Sequence, finished: Sequence, whole: bool) -> List[T]:
+    """Return the tiles added, removed or changed that a finished chunk read (a sentence each).
+
+    A finished chunk read the tiles its buffered box touches (old or new bounds), and
+    every tile when its filter derives values from all of them (``whole``: the first
+    pass). A tile no finished chunk read (e.g. the damaged tile of a failed chunk,
+    since repaired) may change: its chunks run again.
+    """
+    before = {t[0]: list(t) for t in old or () if isinstance(t, (list, tuple)) and t}
+    after = {t[0]: list(t) for t in new}
+
+    def read(name):
+        boxes = [s[4:8] for s in (before.get(name), after.get(name)) if s and len(s) >= 8]
+        return whole or not boxes or any(
+            b[0] <= f[2] and b[2] >= f[0] and b[1] <= f[3] and b[3] >= f[1]
+            for b in boxes for f in finished)
+    out = [T("{tile}: changed", tile=n) for n in sorted(after)
+           if n in before and before[n] != after[n] and read(n)]
+    out += [T("{tile}: new", tile=n) for n in sorted(set(after) - set(before)) if read(n)]
+    out += [T("{tile}: gone", tile=n) for n in sorted(set(before) - set(after)) if read(n)]
+    return out
+
+
+def _check_resume(folder: Path, settings: dict, tasks: Sequence = (),
+                  whole: bool = True) -> None:
+    """Refuse to resume into a folder whose finished chunks came from other settings or tiles.
+
+    ``tasks``: the planned chunks (those finished are compared by their buffered boxes);
+    ``whole``: the filter derives values from every tile (:func:`_tile_changes`). A folder
+    without finished chunks holds nothing to mix: its earlier state is replaced (a stale
+    first pass is recomputed: :func:`.catalog.pass_plan`).
+    """
     path = folder / STATE_DIR / SETTINGS_FILE
-    if not path.exists():
+    done = {p.name[:-len(".done.json")] for p in (folder / STATE_DIR).glob("*.done.json")}
+    if not path.exists() or not done:
         return
     import json
     try:
         old = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError):
         old = {}
+    finished = [t.buffered_box() for t in tasks if t.key in done]
+    changes = _tile_changes(old.get("tiles"), settings["tiles"], finished,
+                            whole or not tasks)
+    if changes:
+        raise InputError(
+            "The tiles changed since the earlier run into {folder} ({changes}); its finished "
+            "chunks were made from the old tiles and resuming would mix them. Choose another "
+            "output folder, or delete that folder's outputs and its .catalog folder to start "
+            "again.", folder=folder, changes=changes[:6])
     diff = [f"{k}: {old.get(k)!r} → {v!r}" for k, v in settings.items()
             if k not in ("chunks", "tiles") and old.get(k) != v]
-    if old.get("tiles") != settings["tiles"]:
-        diff.append("tiles")
     if diff:
         raise InputError(
             "The output folder {folder} holds the results of an earlier run with other "

@@ -194,7 +194,8 @@ def _submit_first_pass(client, plan, strips):
                            f"{time.time_ns()}", retries=1, pure=False, priority=10 ** 12)
              for p, spec in plan["spec"].items()]
     return client.submit(final, *parts, counts=plan["counts"], folder=plan["folder"],
-                         key=f"first-pass-{time.time_ns()}", pure=False, priority=10 ** 12)
+                         signature=plan["signature"], key=f"first-pass-{time.time_ns()}",
+                         pure=False, priority=10 ** 12)
 
 
 def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, failed,

@@ -218,14 +218,17 @@ def strip_summary(strip: dict) -> dict:
     return strip["summary"]
 
 
-def final(*parts, counts: bool = False, folder=None) -> dict:
+def final(*parts, counts: bool = False, folder=None, signature=None) -> dict:
     """Merge the tiles' summaries, derive the chunks' values, save ``summary.json``.
 
     Runs on a worker once every tile is summarised; returns ``{"corner", "derived", ...}``
     (``derived``: :func:`recommended_values` when ``counts``), what each chunk applies.
+    ``signature``: what the summary was made of (tiles, filter, buffer), saved with it so
+    that a resume reuses it only for the same (:func:`.catalog.pass_plan`).
     """
     out = merge(parts)
     out["derived"] = recommended_values(out) if counts else None
+    out["signature"] = signature
     if folder is not None:
         save(folder, out)
     return out

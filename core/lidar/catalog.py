@@ -20,6 +20,7 @@ finished ones. Memory per worker is bounded by one buffered tile.
 """
 from __future__ import annotations
 
+import json
 import math
 import os
 import time
@@ -31,7 +32,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..io.catalog import build_vrt, find_tiles
-from ..io.contract import OutputContract, check_paths
+from ..io.contract import OutputContract, check_paths, sigterm_raises
 from ..io.las import LasInfo, las_info
 from ..progress import Cancelled, Monitor  # noqa: F401 - callers catch catalog.Cancelled
 from . import _summary
@@ -49,6 +50,7 @@ from ._catalog_checks import (  # noqa: F401 - MAX_*, check_scheduler: public na
     check_scheduler,
     empty_dtm_error,
     no_ground_error,
+    tile_signature,
 )
 from ._chunks import (
     DTM_METHODS,
@@ -187,7 +189,7 @@ def _run_settings(tasks: Sequence[ChunkTask], cat: Catalog) -> dict:
                 cell_size=t.cell_size, buffer=t.buffer, origin=list(t.origin),
                 max_distance=None if t.derive_gap else t.max_distance,
                 chunks=sorted(x.key for x in tasks),
-                tiles=sorted([os.path.basename(i.path), i.count] for i in cat.tiles))
+                tiles=sorted(tile_signature(i) for i in cat.tiles))
 
 
 def _cost(cat: Catalog, task: ChunkTask) -> float:
@@ -289,27 +291,40 @@ def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
 
 
 # ============================================================================ engine
+def has_first_pass(key: str) -> bool:
+    """Return True when the filter ``key`` derives values from all the tiles (a first pass)."""
+    flt = ground_filter(key)
+    return flt is not None and getattr(flt, "lattice", "cloud") == "cloud"
+
+
 def pass_plan(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dict]:
     """Return what the catalog's first pass summarises (:mod:`._summary`), or None.
 
     None when the filter derives nothing from the whole cloud (PTD, keep), or when an
-    earlier run of this folder saved the summary (``.catalog/summary.json``; applied to
-    ``tasks`` here). Else ``{"spec": {tile: (h, counts, shared boxes)}, "counts",
-    "folder"}``: a tile's cells that another tile's box touches are counted by key.
+    earlier run of this folder saved the summary of the same tiles (names, sizes,
+    modification times, counts, bounds), filter and buffer (``.catalog/summary.json``
+    and its signature; applied to ``tasks`` here). A summary of other tiles or settings
+    is stale: recomputed. Else ``{"spec": {tile: (h, counts, shared boxes)}, "counts",
+    "folder", "signature"}``: a tile's cells that another tile's box touches are counted
+    by key.
     """
-    flt = ground_filter(tasks[0].ground_filter) if tasks else None
-    if flt is None or getattr(flt, "lattice", "cloud") != "cloud":
+    if not tasks or not has_first_pass(tasks[0].ground_filter):
         return None
+    flt = ground_filter(tasks[0].ground_filter)
     state = Path(folder) / STATE_DIR
     counts = bool(getattr(flt, "needs_counts", False))
+    h = float(tasks[0].units.h)
+    signature = json.loads(json.dumps(dict(
+        tiles=sorted(tile_signature(i) for i in cat.tiles), ground_filter=tasks[0].ground_filter,
+        counts=counts, h=h, buffer=float(tasks[0].buffer))))
     summary = _summary.load(state)
-    if summary is not None:
+    if summary is not None and summary.get("signature") == signature:
         apply_summary(tasks, summary)
         return None
-    h = float(tasks[0].units.h)
     spec = {p: (h, counts, [(cat.bounds[j] * h).tolist() for j in cat.query(tuple(b))
                             if j != i]) for i, (p, b) in enumerate(zip(cat.paths, cat.bounds))}
-    return {"spec": spec, "counts": counts, "folder": os.path.abspath(state)}
+    return {"spec": spec, "counts": counts, "folder": os.path.abspath(state),
+            "signature": signature}
 
 
 def first_pass(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dict]:
@@ -325,7 +340,8 @@ def first_pass(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dic
     if plan is None:
         return _summary.load(Path(folder) / STATE_DIR) if tasks else None
     summary = _summary.final(*[_summary.tile_summary(p, *plan["spec"][p]) for p in cat.paths],
-                             counts=plan["counts"], folder=plan["folder"])
+                             counts=plan["counts"], folder=plan["folder"],
+                             signature=plan["signature"])
     apply_summary(tasks, summary)
     return summary
 
@@ -402,46 +418,70 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     if scheduler:
         check_scheduler(scheduler)
     run_settings = _run_settings(tasks, cat)
-    _check_resume(folder, run_settings)
+    _check_resume(folder, run_settings, tasks, whole=has_first_pass(gf))
     # everything is validated: only now is anything created
-    made = [p for p in (folder, folder / STATE_DIR) if not p.exists()]
-    (folder / STATE_DIR).mkdir(parents=True, exist_ok=True)
+    state = folder / STATE_DIR
+    made = [p for p in (folder, state) if not p.exists()]
+    before = {n: _read_text(state / n) for n in (SETTINGS_FILE, _summary.SUMMARY_FILE)}
+    state.mkdir(parents=True, exist_ok=True)
     _write_settings(folder, run_settings)
     previous = {t.key: is_done(t) for t in tasks}
     todo = [t for t in tasks if previous[t.key] is None]
     for t in todo:
         t.fail_once = t.key in _test_fail_once()
-    nw = int(workers or os.cpu_count() or 1)
+    opts = dict(dtm_method=dtm_method, cell_size=cell_size, buffer=buffer, cog=cog,
+                chunk_size=chunk_size, workers=int(workers or os.cpu_count() or 1),
+                scheduler=scheduler, memory_limit=memory_limit, on_chunk=on_chunk)
+    try:
+        with sigterm_raises():
+            return _execute(cat, tasks, todo, previous, folder, made, gf, opts, mon, clock, t0)
+    except BaseException:
+        # cancel, failure or SIGTERM before any chunk finished (in the first pass, or every
+        # chunk failed): nothing to resume, so the folder is left as this run found it
+        if not finished_chunks(folder):
+            _undo_run(todo, made, restore=before)
+        raise
+
+
+def _execute(cat, tasks, todo, previous, folder, made, gf, opts, mon, clock, t0):
+    """Run the chunks (:func:`run_catalog` has validated the plan and written its state)."""
     chunks = [s for s in previous.values() if s is not None]
     failed: Dict[str, str] = {}
+    on_chunk = opts["on_chunk"]
     for s in chunks if on_chunk is not None else ():
         on_chunk({**s, "status": "skipped"})
     mon.update(len(chunks) / len(tasks))
     clock.lap("plan")
-    if todo:                            # the first pass (:func:`pass_plan`) on the workers
-        chunks += _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, len(chunks),
-                            failed, clock, on_chunk, plan=pass_plan(cat, todo, folder))
+    plan = pass_plan(cat, todo, folder) if todo else None     # None: nothing to pass, or
+    if todo:                                                  # a valid summary reused
+        chunks += _run_dask(todo, tasks, folder, opts["workers"], opts["scheduler"],
+                            opts["memory_limit"], mon, len(chunks), failed, clock, on_chunk,
+                            plan=plan)
     summary = _summary.load(folder / STATE_DIR) or {}
-    gap = _catalog_gap(tasks, chunks, failed, cell_size, dtm_method)
+    gap = _catalog_gap(tasks, chunks, failed, opts["cell_size"], opts["dtm_method"])
     _check_outcome(chunks, failed, todo, made, len(tasks), cat.n_points, gf)
-    vrt, cog_path = _mosaic(cat, folder, tasks, failed, chunks, cog)
+    vrt, cog_path = _mosaic(cat, folder, tasks, failed, chunks, opts["cog"])
     clock.lap("mosaic")
     order = {t.key: i for i, t in enumerate(tasks)}
     chunks.sort(key=lambda c: order[c["key"]])
-    settings = dict(ground_filter=gf, dtm_method=dtm_method, cell_size=float(cell_size),
-                    buffer=float(buffer), chunk_size=float(chunk_size),
-                    **_result_settings(cat, tasks, gap, summary))
+    settings = dict(ground_filter=gf, dtm_method=opts["dtm_method"],
+                    cell_size=float(opts["cell_size"]), buffer=float(opts["buffer"]),
+                    chunk_size=float(opts["chunk_size"]),
+                    **_result_settings(cat, tasks, gap, summary, ran=plan is not None))
     return CatalogResult(chunks=chunks, failed=failed,
                          skipped=[k for k, v in previous.items() if v is not None],
                          vrt=vrt, cog=cog_path, seconds=time.perf_counter() - t0,
-                         workers=nw, scheduler=scheduler or "local", settings=settings,
-                         timings=clock.phases)
+                         workers=opts["workers"], scheduler=opts["scheduler"] or "local",
+                         settings=settings, timings=clock.phases)
 
 
-def _result_settings(cat, tasks, gap, summary) -> dict:
+def _result_settings(cat, tasks, gap, summary, ran: bool) -> dict:
     return dict(tiles=len(tasks), points_total=cat.n_points, crs=cat.crs or "",
-                # the workers' wall and CPU seconds of the first pass (:mod:`._summary`)
-                first_pass_seconds=summary.get("seconds"),
+                # the workers' wall and CPU seconds of this run's first pass (:mod:`._summary`);
+                # a resume that reuses an earlier run's summary spends none
+                first_pass_seconds=(summary.get("seconds") if ran else [0.0, 0.0])
+                if summary else None,
+                first_pass=("run" if ran else "reused") if summary else None,
                 origin=tasks[0].origin, keys=[t.key for t in tasks],
                 bounds=[list(t.bounds) for t in tasks],
                 # metres (tiles in feet: converted), as a single-file run reports it
@@ -492,19 +532,39 @@ def _check_outcome(chunks, failed, todo, made, n_tiles: int, n_points: int, gf: 
         raise empty_dtm_error(chunks)
 
 
-def _undo_run(todo: Sequence[ChunkTask], made: Sequence[Path]) -> None:
-    """Remove what this run wrote (chunk outputs, markers, folders it created)."""
+def _undo_run(todo: Sequence[ChunkTask], made: Sequence[Path], restore=None) -> None:
+    """Remove what this run wrote (chunk outputs, markers, folders it created).
+
+    ``restore``: the state files (name -> text, None: absent) as the run found them,
+    put back when the state folder was already there.
+    """
     drop_gap_files(todo)
     for t in todo:
         for path in t.outputs.values():
             if os.path.exists(path):
                 os.remove(path)
     for p in reversed(made):
-        if p.name == STATE_DIR:
+        if p.name == STATE_DIR and p.is_dir():
             for f in p.iterdir():
                 f.unlink()
         if p.is_dir() and not any(p.iterdir()):
             p.rmdir()
+    state = Path(todo[0].outputs["DONE"]).parent if todo else None
+    if restore and state is not None and state.is_dir():
+        for f in state.glob("*.tmp"):           # an atomic write cut short
+            f.unlink()
+        for name, text in restore.items():
+            if text is None:
+                (state / name).unlink(missing_ok=True)
+            else:
+                (state / name).write_text(text, encoding="utf-8")
+
+
+def _read_text(path: Path) -> Optional[str]:
+    try:
+        return path.read_text(encoding="utf-8")
+    except (OSError, ValueError):
+        return None
 
 
 def _mosaic(cat, folder: Path, tasks, failed, chunks, cog: bool):
