@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["BAND", "HEIGHT", "box_mean", "height_base"]
+__all__ = ["BAND", "HEIGHT", "OccupiedMinima", "box_mean", "height_base"]
 
 #: Rows per band of :func:`box_mean` and :func:`._raster.slope` (bounds their temporaries).
 BAND = 128
@@ -96,3 +96,17 @@ def _window_sums(q, size: int, n: int, axis: int):
     cs = np.concatenate((np.zeros(shape, cs.dtype), cs), axis=axis)
     return (np.take(cs, np.arange(size, size + n), axis=axis)
             - np.take(cs, np.arange(n), axis=axis))
+
+
+class OccupiedMinima:
+    """A minimum raster kept as its values at the occupied cells; ``raster()`` remakes it."""
+
+    def __init__(self, zmin, cells):
+        self.shape, self.dtype, self.cells = zmin.shape, zmin.dtype, cells
+        self.values = zmin.ravel()[cells]
+
+    def raster(self):
+        """Return the raster again: NaN where empty, the same values bit for bit."""
+        out = np.full(self.shape, np.nan, self.dtype)
+        out.ravel()[self.cells] = self.values
+        return out

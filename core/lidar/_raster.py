@@ -12,7 +12,9 @@ import numpy as np
 from scipy import ndimage
 
 from ..errors import InputError
-from ._heights import BAND, HEIGHT, box_mean, height_base  # noqa: F401 - re-exported
+from ._heights import BAND, HEIGHT, OccupiedMinima, box_mean, height_base  # noqa: F401
+from ._pushpull import push_pull
+from ._pushpull import push_pull as _pushpull  # noqa: F401 - the tests' name
 
 
 def density(x, y, cell: float = 5.0) -> float:
@@ -370,33 +372,7 @@ def fill(z, valid, anchor=(0, 0), overwrite=False):
         vw = z
     else:
         vw = np.where(valid, z, 0.0)
-    return _pushpull(vw, valid, int(anchor[0]), int(anchor[1]))
-
-
-def _pushpull(vw, w, r0=0, c0=0):
-    """Recursive push-pull on weighted values ``vw`` and weights ``w``.
-
-    The raster's corner is at lattice index ``(r0, c0)``.
-    """
-    rows, cols = w.shape
-    if rows <= 2 and cols <= 2 or (w > 0).all():
-        out = np.divide(vw, w, out=np.zeros_like(vw), where=w > 0)
-        if not (w > 0).all():
-            out[w == 0] = vw.sum() / w.sum()
-        return out
-    pr, pc = r0 % 2, c0 % 2
-    r2, c2 = (rows + pr + 1) // 2, (cols + pc + 1) // 2
-    pad = ((pr, 2 * r2 - rows - pr), (pc, 2 * c2 - cols - pc))
-    # the coarser levels in float64 (sums of up to 4**k heights), the finest in vw's type
-    cvw = np.pad(vw, pad).reshape(r2, 2, c2, 2).sum(axis=(1, 3), dtype=np.float64)
-    cw = np.pad(w, pad).reshape(r2, 2, c2, 2).sum(axis=(1, 3))
-    coarse = _pushpull(cvw, cw, r0 // 2, c0 // 2)
-    up = ndimage.zoom(coarse, 2, order=1, mode="nearest", grid_mode=True,
-                      output=np.result_type(vw.dtype, np.float32))
-    up = up[pr:pr + rows, pc:pc + cols]
-    return np.divide(vw, w, out=up, where=w > 0)       # the upsampled array is ours
-
-
+    return push_pull(vw, valid, int(anchor[0]), int(anchor[1]))
 
 
 def floor_steps(z, valid, step: float):

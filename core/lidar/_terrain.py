@@ -1,4 +1,4 @@
-"""Large-scale terrain of the recommended filter: trend, slope tolerance, footprint.
+"""Large-scale terrain of the recommended filter: trend, slope tolerance, footprint, openings.
 
 Trend and slope come from a wide opening of the filled minimum raster (numpy/scipy
 only; moved from :mod:`._surface` for its size, code unchanged); the footprint is the
@@ -10,7 +10,7 @@ import numpy as np
 
 from . import _raster as R  # noqa: N812
 
-__all__ = ["outside_hull", "terrain_slope", "trend_surface"]
+__all__ = ["outside_hull", "progressive_objects", "terrain_slope", "trend_surface"]
 
 
 def trend_surface(zf, grid, opt, subtract=False, outside=None):
@@ -135,3 +135,44 @@ def _opened(zf, r, outside, anchor):
         return R.opening(zf, r)
     op = R.opening(zf.copy(), r, outside=outside)
     return R.fill(op, ~outside, anchor, overwrite=True)
+
+
+def progressive_objects(zf, cell, max_window, slope, rep, overwrite=False, outside=None):
+    """Object cells of the progressive opening (Zhang et al. 2003, Pingel et al. 2013).
+
+    Parameters
+    ----------
+    zf : ndarray
+        Filled minimum raster.
+    cell : float
+        Cell size (m).
+    max_window : float
+        Largest window (m).
+    slope : float or ndarray
+        Slope tolerance (rise/run), scalar or per cell.
+    rep : callable
+        Progress step (checks cancel).
+    overwrite : bool
+        Let ``zf`` hold each opening in turn (one raster less; ``zf`` is then garbage).
+    outside : ndarray of bool, optional
+        Cells absent from the openings (never objects; ``zf`` is set to +inf there).
+
+    Returns
+    -------
+    ndarray of bool
+        True for object cells.
+    """
+    radii = np.arange(1, max(1, int(np.ceil(max_window / cell))) + 1)
+    obj = np.zeros(zf.shape, dtype=bool)
+    cur = zf
+    spare = None          # two rasters in turn (zf's own with overwrite), none allocated
+    for k, r in enumerate(radii):                    # per window
+        rep(0.3 + 0.5 * k / radii.size)
+        opened = R.opening(cur, r, out=spare, outside=outside)
+        for b0 in range(0, zf.shape[0], R.BAND):    # bands: no full-size temporaries
+            b = slice(b0, b0 + R.BAND)
+            s = np.asarray(slope[b] if np.ndim(slope) else slope, np.float64)
+            obj[b] |= np.subtract(cur[b], opened[b], dtype=np.float64) > s * int(r) * cell
+        spare = cur if overwrite or cur is not zf else None
+        cur = opened
+    return obj if outside is None else np.logical_and(obj, ~outside, out=obj)

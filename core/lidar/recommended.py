@@ -94,7 +94,7 @@ from . import _surface as S  # noqa: N812
 from ._filter import OptionsFilter
 from ._filter import options_or_default as _options
 from ._surface import grow_ground
-from ._terrain import outside_hull, terrain_slope, trend_surface, wall_step  # noqa: F401
+from ._terrain import outside_hull, progressive_objects, terrain_slope, trend_surface, wall_step  # noqa: F401
 
 __all__ = ["RecommendedOptions", "classify", "derive", "recommended_filter", "OptionsFilter",
            "Cancelled", "CITATION", "TITLE"]
@@ -329,14 +329,22 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
 
     rep(0.0)
     opt = derive(x, y, opt)
-    pc = R.PointCells(x, y, R.Grid.around(x, y, opt.cell, origin=origin))
+    grid = R.Grid.around(x, y, opt.cell, origin=origin)
+    pc = R.PointCells(x, y, grid)
     base = pc.height_base(z)          # rasters of heights above it, in float32 (R.HEIGHT)
     rep(0.3)
     need = pc.read_mask()
     if info is not None:
-        info.update(options=opt, n=int(x.size), grid=pc.grid)
-    zmin = lambda: pc.cell_min(z, base=base)  # noqa: E731 - rebuilt for the growing step
-    dtm = surface(zmin(), pc.grid, opt, rep, need=need, info=info, remake=zmin)
+        info.update(options=opt, n=int(x.size), grid=grid)
+    zmin = pc.cell_min(z, base=base)
+    # the per-point look-ups are not held while whole rasters are worked on (a second
+    # PointCells of the same points is the same arrays): the minima at the occupied cells
+    # remake zmin for the growing step
+    zmin = R.OccupiedMinima(zmin, pc.cells)
+    del pc
+    dtm = surface(zmin.raster(), grid, opt, rep, need=need, info=info, remake=zmin.raster)
+    del zmin
+    pc = R.PointCells(x, y, grid)
     rep(0.8)
     last = {}             # the refine passes change few cells: few points relabelled
     cls = label_points(z, dtm, pc, opt, last, base)
@@ -348,8 +356,10 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
         since = (last["dtm"], cache["valid"], flipped) \
             if flipped is not None and cache.get("out") is last["dtm"] else None
         zg = pc.cell_min(z, cls == GROUND, base=base, since=since)  # the last fill's valid
-        zg = fill_holes(zg, ~np.isnan(zg), pc.grid, opt, need, cache, overwrite=True)
+        pc = None                                    # not held through the fill (as above)
+        zg = fill_holes(zg, ~np.isnan(zg), grid, opt, need, cache, overwrite=True)
         _trim()
+        pc = R.PointCells(x, y, grid)
         was, cls = cls, label_points(z, zg, pc, opt, last, base)
         if k + 1 < opt.refine:
             flipped = np.flatnonzero((was == GROUND) != (cls == GROUND))
@@ -475,47 +485,6 @@ def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False):
                           radius=max(1, int(round(opt.fill_radius / grid.cell))),
                           neighbours=opt.fill_neighbours, reach=opt.fill_reach, need=need,
                           cache=cache, overwrite=overwrite)
-
-
-def progressive_objects(zf, cell, max_window, slope, rep, overwrite=False, outside=None):
-    """Object cells of the progressive opening (Zhang et al. 2003, Pingel et al. 2013).
-
-    Parameters
-    ----------
-    zf : ndarray
-        Filled minimum raster.
-    cell : float
-        Cell size (m).
-    max_window : float
-        Largest window (m).
-    slope : float or ndarray
-        Slope tolerance (rise/run), scalar or per cell.
-    rep : callable
-        Progress step (checks cancel).
-    overwrite : bool
-        Let ``zf`` hold each opening in turn (one raster less; ``zf`` is then garbage).
-    outside : ndarray of bool, optional
-        Cells absent from the openings (never objects; ``zf`` is set to +inf there).
-
-    Returns
-    -------
-    ndarray of bool
-        True for object cells.
-    """
-    radii = np.arange(1, max(1, int(np.ceil(max_window / cell))) + 1)
-    obj = np.zeros(zf.shape, dtype=bool)
-    cur = zf
-    spare = None          # two rasters in turn (zf's own with overwrite), none allocated
-    for k, r in enumerate(radii):                    # per window
-        rep(0.3 + 0.5 * k / radii.size)
-        opened = R.opening(cur, r, out=spare, outside=outside)
-        for b0 in range(0, zf.shape[0], R.BAND):    # bands: no full-size temporaries
-            b = slice(b0, b0 + R.BAND)
-            s = np.asarray(slope[b] if np.ndim(slope) else slope, np.float64)
-            obj[b] |= np.subtract(cur[b], opened[b], dtype=np.float64) > s * int(r) * cell
-        spare = cur if overwrite or cur is not zf else None
-        cur = opened
-    return obj if outside is None else np.logical_and(obj, ~outside, out=obj)
 
 
 #: Stencil of a central-difference slope cell (:func:`._raster.slope`).
