@@ -182,11 +182,15 @@ class PointCells:
             r0 += c0
             self.i00[s:e] = r0
         self.order = np.argsort(self.idx, kind="stable").astype(it)
-        # runs of the sorted cell ids from their counts (no sorted copy of the ids)
-        count = np.bincount(self.idx, minlength=grid.rows * grid.cols)
-        self.cells = np.flatnonzero(count).astype(it)
-        self.starts = np.zeros(self.cells.size, it)
-        self.starts[1:] = np.cumsum(count[self.cells][:-1])
+        # runs of the sorted cell ids: where the id changes (no count per raster cell,
+        # 8 bytes a cell: 40 MB per million points at 0.2 pts/m²)
+        ids = self.idx[self.order]
+        head = np.empty(n, bool)
+        head[:1] = True
+        np.not_equal(ids[1:], ids[:-1], out=head[1:])
+        self.starts = np.flatnonzero(head).astype(it)
+        self.cells = ids[self.starts]
+        del ids, head
         self._minima = None               # (z, its cell minima) from height_base
 
     def cell_min(self, z, mask=None, base=None, since=None):

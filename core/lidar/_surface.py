@@ -298,7 +298,7 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         Shared by successive fills of one raster (the refine passes): a hole cell
         keeps the previous call's value when no cell changed (valid or height) within
         its ``neighbours``-th border distance plus the plane window
-        (:func:`_unchanged`) - the value a new computation would give, bit for bit.
+        (:func:`_keeper`) - the value a new computation would give, bit for bit.
     overwrite : bool
         Fill ``z`` itself (float64 or float32: the values are computed in float64
         and stored in ``z``'s type) and return it, sparing a raster: only its invalid
@@ -328,7 +328,7 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     else:
         out = np.where(valid, z, np.nan)
     key = (z.shape, k, int(radius), float(cell), float(reach))
-    d2k = np.full(z.shape, _NONE, np.uint16) if cache is not None else None
+    d2k = np.full(z.shape, _NONE, np.uint8) if cache is not None else None
     holes, hr, hc = _holes(prev, key, z, valid, need, out, d2k, radius)
     prev = None                                      # the previous fill's rasters: no longer read
     trees, near = [], None      # the KD-tree, built when a hole cell is deeper than the scan
@@ -351,7 +351,7 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     for r, c in _batches(holes, hr, hc):
         d2, dc, dr, j = near if near is not None else K.nearest(scan, r, c, k, trees)
         if d2k is not None:
-            last = d2[:, -1]
+            last = np.ceil(np.sqrt(d2[:, -1]))               # whole cells, rounded up
             d2k[r, c] = np.where(last < _NONE, last, _NONE)     # too far: not kept
         d = np.sqrt(d2) * cell
         np.maximum(d, 1e-9, out=d)
@@ -372,23 +372,35 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     return out
 
 
-def _holes(prev, key, z, valid, need, out, d2k, radius):
+def _holes(prev, key, z, valid, need, out, dk, radius):
     """Return the hole cells to compute: ``(holes, hr, hc)``, the raster and their lists.
 
-    The lists are made only when a previous fill may keep some of the holes (those kept
-    are written into ``out`` and ``d2k`` and left out), or when they are few; else they
+    When a previous fill may keep some of the holes, they are listed band by band and
+    those kept are written into ``out`` and ``dk`` and left out (``holes`` is then None:
+    the lists are all that is read). When they are few they are listed. Else the lists
     are None and :func:`_batches` lists the holes band by band (at low density millions).
     """
-    holes = ~valid if need is None else ~valid & need
-    if not (_may_keep(prev, key) or np.count_nonzero(holes) <= BATCH):
-        return holes, None, None
-    hr, hc = _nonzero(holes)
-    same = _unchanged(prev, key, z, valid, hr, hc, radius)
-    if same is not None:
-        out[hr[same], hc[same]] = prev["out"][hr[same], hc[same]]
-        d2k[hr[same], hc[same]] = prev["d2k"][hr[same], hc[same]]
-        hr, hc = hr[~same], hc[~same]
-    return holes, hr, hc
+    holes = ~valid
+    if need is not None:
+        holes &= need
+    keep = _keeper(prev, key, z, valid, radius)
+    if keep is None:
+        if np.count_nonzero(holes) > BATCH:
+            return holes, None, None
+        return (holes,) + _nonzero(holes)
+    old_out, old_dk = prev["out"], prev["d2k"]
+    rs, cs = [], []
+    for r, c in _bands(holes):
+        same = keep(r, c)
+        if same.any():
+            out[r[same], c[same]] = old_out[r[same], c[same]]
+            dk[r[same], c[same]] = old_dk[r[same], c[same]]
+            np.logical_not(same, out=same)
+            r, c = r[same], c[same]
+        rs.append(r)
+        cs.append(c)
+    it = _index_type(valid.shape)
+    return None, np.concatenate(rs or [np.empty(0, it)]), np.concatenate(cs or [np.empty(0, it)])
 
 
 #: Cells per band of rows in which :func:`tangent_fill` lists its hole cells when it does
@@ -405,12 +417,18 @@ def _batches(holes, hr, hc):
         for s in range(0, hr.size, BATCH):
             yield hr[s:s + BATCH], hc[s:s + BATCH]
         return
+    for r, c in _bands(holes):
+        for s in range(0, r.size, BATCH):
+            yield r[s:s + BATCH], c[s:s + BATCH]
+
+
+def _bands(holes):
+    """Rows and columns of the True cells of ``holes``, band by band, in row-major order."""
     step = max(1, HOLE_BAND // max(1, holes.shape[1]))
     for b0 in range(0, holes.shape[0], step):
         r, c = _nonzero(holes[b0:b0 + step])
         r += b0
-        for s in range(0, r.size, BATCH):
-            yield r[s:s + BATCH], c[s:s + BATCH]
+        yield r, c
 
 
 def _index_type(shape):
@@ -438,13 +456,13 @@ def _nonzero(mask):
     return rr, cc
 
 
-#: Share of changed cells above which :func:`_unchanged` keeps nothing (after the
+#: Share of changed cells above which :func:`_keeper` keeps nothing (after the
 #: growing step or the first refine pass, 1-3 % of the cells change and under 7 % of
 #: the holes could be kept: the check would cost more than it saves).
 _FEW = 0.01
-#: "Not computed" in a fill cache's raster of squared k-th neighbour distances (farther
-#: cells are not kept either).
-_NONE = np.iinfo(np.uint16).max
+#: "Not computed" in a fill cache's raster of k-th neighbour distances in whole cells,
+#: rounded up (farther cells are not kept either).
+_NONE = np.iinfo(np.uint8).max
 
 
 def _may_keep(prev, key):
@@ -452,42 +470,51 @@ def _may_keep(prev, key):
     return bool(prev) and prev.get("key") == key
 
 
-def _unchanged(prev, key, z, valid, hr, hc, radius):
-    """Hole cells whose value in the previous fill (``prev``) is still exact.
+def _keeper(prev, key, z, valid, radius):
+    """``keep(hr, hc)``: the hole cells whose value in the previous fill is still exact.
 
     A hole cell's value depends on the border cells up to its ``k``-th distance
     ``D`` (which are borders, hence the choice), their heights and their plane
     windows: on the valid flag and height of cells within ``D + 1.5 max(radius, 1)``
     (1.5 > sqrt 2: a window's corner). When none of those cells changed since the
-    previous fill and the cell was computed there, the old value is the new one.
+    previous fill and the cell was computed there, the old value is the new one. The
+    previous fill kept ``D`` rounded up to whole cells (``prev["d2k"]``, uint8): a
+    reach at least the true one, so a kept value is exact (a few more are recomputed,
+    to the same value).
 
     Returns
     -------
-    ndarray of bool or None
-        Per hole cell ``(hr, hc)``: the previous value can be kept.
+    callable or None
+        ``keep(hr, hc)`` -> bool per hole cell; None when nothing can be kept (no
+        previous fill of the same raster, or too many changed cells to be worth a check).
     """
-    if not _may_keep(prev, key) or hr.size == 0:
+    if not _may_keep(prev, key):
         return None
-    old_valid, old_out = prev["valid"], prev["out"]
     with np.errstate(invalid="ignore"):
-        changed = (valid != old_valid) | (valid & (z != old_out))
-    d2k = prev["d2k"][hr, hc]
-    ok = d2k != _NONE
-    if not ok.any():
-        return ok
+        changed = np.not_equal(z, prev["out"])
+        changed &= valid
+        changed |= valid != prev["valid"]
     if np.count_nonzero(changed) > _FEW * changed.size:
         return None                                  # too many changes to be worth a check
     moved = np.argwhere(changed)
-    if moved.size:
-        tree = cKDTree(moved)
+    del changed
+    tree = cKDTree(moved) if moved.size else None
+    old, pad = prev["d2k"], 1.5 * max(int(radius), 1)
+
+    def keep(hr, hc):
+        dk = old[hr, hc]
+        ok = dk != _NONE
+        if tree is None or not ok.any():
+            return ok
         kept = np.flatnonzero(ok)
         for s in range(0, kept.size, BATCH):         # batches: bounded query arrays
             i = kept[s:s + BATCH]
-            reach = np.sqrt(d2k[i].astype(np.float64)) + 1.5 * max(int(radius), 1)
+            reach = dk[i].astype(np.float64) + pad
             dist = tree.query(np.column_stack((hr[i], hc[i])), k=1,
                               distance_upper_bound=float(reach.max()) + 1.0)[0]
             ok[i] = dist > reach
-    return ok
+        return ok
+    return keep
 
 
 def grow_ground(zmin, obj, skip, dtm, cell, opt):

@@ -356,14 +356,14 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
         since = (last["dtm"], cache["valid"], flipped) \
             if flipped is not None and cache.get("out") is last["dtm"] else None
         zg = pc.cell_min(z, cls == GROUND, base=base, since=since)  # the last fill's valid
-        pc = None                                    # not held through the fill (as above)
+        pc = since = None                            # not held through the fill (as above)
         zg = fill_holes(zg, ~np.isnan(zg), grid, opt, need, cache, overwrite=True)
         _trim()
         pc = R.PointCells(x, y, grid)
         was, cls = cls, label_points(z, zg, pc, opt, last, base)
         if k + 1 < opt.refine:
             flipped = np.flatnonzero((was == GROUND) != (cls == GROUND))
-        del was, since
+        del was
     rep(1.0)
     return cls
 

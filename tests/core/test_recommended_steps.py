@@ -152,35 +152,42 @@ def test_fill_and_box_mean_of_a_crop_equal_the_full_raster_inside():
                                       box[sub][20:-20, 20:-20])
 
 
-def test_fill_cache_gives_the_values_of_a_fresh_fill():
+@pytest.mark.parametrize("hole_band", [1 << 20, 1000])
+def test_fill_cache_gives_the_values_of_a_fresh_fill(hole_band, monkeypatch):
     """Successive fills sharing a cache (the refine passes) equal fresh fills bit for bit,
-    and the cache is really used (most hole cells kept from the previous call)."""
+    and the cache is really used (most hole cells kept from the previous call); the
+    holes listed band by band (bands of 1000 cells: 5 rows) keep the same."""
     from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
+    monkeypatch.setattr(S, "HOLE_BAND", hole_band)
     rng = np.random.default_rng(11)
     z = 50.0 + rng.normal(0, 2, (180, 210)).cumsum(axis=0) * 0.05
     valid = rng.random(z.shape) < 0.55
     valid[60:90, 100:140] = False                                  # a building-sized hole
     need = rng.random(z.shape) < 0.9
     cache, kept = {}, []
-    real = S._unchanged
+    real = S._keeper
 
     def spy(*a):
-        ok = real(*a)
-        kept.append(0 if ok is None else int(ok.sum()))
-        return ok
+        keep = real(*a)
+        kept.append(0)
+        if keep is None:
+            return None
 
-    S._unchanged = spy
-    try:
-        for step in range(4):
-            if step:                                     # a few cells change, as in refine
-                flip = rng.random(z.shape) < 0.002
-                valid ^= flip
-                z = np.where(rng.random(z.shape) < 0.002, z + 0.3, z)
-            got = S.tangent_fill(z, valid, 1.0, need=need, cache=cache)
-            ref = S.tangent_fill(z, valid, 1.0, need=need)
-            np.testing.assert_array_equal(got, ref)
-    finally:
-        S._unchanged = real
+        def counted(hr, hc):
+            ok = keep(hr, hc)
+            kept[-1] += int(ok.sum())
+            return ok
+        return counted
+
+    monkeypatch.setattr(S, "_keeper", spy)
+    for step in range(4):
+        if step:                                     # a few cells change, as in refine
+            flip = rng.random(z.shape) < 0.002
+            valid ^= flip
+            z = np.where(rng.random(z.shape) < 0.002, z + 0.3, z)
+        got = S.tangent_fill(z, valid, 1.0, need=need, cache=cache)
+        ref = S.tangent_fill(z, valid, 1.0, need=need)
+        np.testing.assert_array_equal(got, ref)
     kept = kept[0::2]                                    # the calls with the cache
     assert kept[0] == 0 and min(kept[1:]) > 0.3 * np.count_nonzero(~valid & need)
 
