@@ -473,20 +473,14 @@ def _may_keep(prev, key):
 def _keeper(prev, key, z, valid, radius):
     """``keep(hr, hc)``: the hole cells whose value in the previous fill is still exact.
 
-    A hole cell's value depends on the border cells up to its ``k``-th distance
-    ``D`` (which are borders, hence the choice), their heights and their plane
-    windows: on the valid flag and height of cells within ``D + 1.5 max(radius, 1)``
-    (1.5 > sqrt 2: a window's corner). When none of those cells changed since the
-    previous fill and the cell was computed there, the old value is the new one. The
-    previous fill kept ``D`` rounded up to whole cells (``prev["d2k"]``, uint8): a
-    reach at least the true one, so a kept value is exact (a few more are recomputed,
-    to the same value).
-
-    Returns
-    -------
-    callable or None
-        ``keep(hr, hc)`` -> bool per hole cell; None when nothing can be kept (no
-        previous fill of the same raster, or too many changed cells to be worth a check).
+    A hole cell's value depends on the border cells up to its ``k``-th distance ``D``
+    (which are borders, hence the choice), their heights and their plane windows: on
+    the valid flag and height of cells within ``D + 1.5 max(radius, 1)`` (1.5 > sqrt 2:
+    a window's corner). When none of those changed since the previous fill and the cell
+    was computed there, the old value is the new one. ``D`` is kept rounded up to whole
+    cells (``prev["d2k"]``, uint8): a reach at least the true one, so a kept value is
+    exact. None when nothing can be kept (no previous fill of the same raster, or too
+    many changed cells to be worth a check).
     """
     if not _may_keep(prev, key):
         return None
