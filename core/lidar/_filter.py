@@ -9,10 +9,14 @@ An algorithm is an object with
 
 ``name`` (str), ``title`` (report title, an English message id), ``citation``;
 ``classify(x, y, z, *, return_number=None, number_of_returns=None, classification=None,
-origin=None, monitor=None)``
-    classify the selected points (arrays of the candidates only, metres) and return a
-    :class:`FilterOutcome` (``classes``: uint8 per point, 2 ground, 1 other, 0 never
-    classified, 7 low noise). ``origin`` (x, y), when given, anchors every grid or tile
+candidates=None, origin=None, monitor=None)``
+    classify the selected points and return a :class:`FilterOutcome` (``classes``: uint8
+    per candidate, 2 ground, 1 other, 0 never classified, 7 low noise). The arrays hold
+    every point read (metres); ``candidates`` (bool, one per point; None: every point)
+    says which the filter classifies - the others take no part. A filter that cannot
+    leave points out in place takes copies (:func:`candidate_arrays`); the recommended
+    filter leaves them out without copying the coordinates (3 x 8 B/point).
+    ``origin`` (x, y), when given, anchors every grid or tile
     the method lays over the points on the lattice through that point, so that the
     chunks of a catalog equal a run on the merged cloud (``lattice``: 'cloud', the
     default, is given the corner of the whole cloud; 'world', the method's own lattice
@@ -43,7 +47,7 @@ from ..errors import InputError
 from ..progress import Monitor
 
 __all__ = ["FilterOutcome", "GroundFilter", "FunctionFilter", "OptionsFilter",
-           "KeepFilter", "options_or_default", "check_classes"]
+           "KeepFilter", "options_or_default", "check_classes", "candidate_arrays"]
 
 
 @dataclass
@@ -83,6 +87,17 @@ def check_classes(name: str, classes, n: int) -> np.ndarray:
     return cls.astype(np.uint8, copy=False)
 
 
+def candidate_arrays(candidates, *arrays):
+    """``arrays`` at the ``candidates`` (copies; all of them as given when None; None kept).
+
+    >>> candidate_arrays(np.array([True, False, True]), np.arange(3), None)
+    (array([0, 2]), None)
+    """
+    if candidates is None:
+        return arrays
+    return tuple(None if a is None else np.asarray(a)[candidates] for a in arrays)
+
+
 def options_or_default(options, cls):
     """``options`` if given (must be a ``cls``), else ``cls()``.
 
@@ -114,12 +129,15 @@ class GroundFilter:
     #: gives its chunks the corner of all its tiles); 'world': on the method's own
     #: lattice through 0 whatever the extent (PTD); 'none': lays no grid
     lattice = "cloud"
+    #: True when :meth:`classify` reads ``return_number`` / ``number_of_returns`` (the
+    #: file runner decodes them only then, or for ``returns='last'``); no filter here does
+    uses_returns = False
 
     def __init__(self, options=None):
         self.options = options
 
     def classify(self, x, y, z, *, return_number=None, number_of_returns=None,
-                 classification=None, origin=None,
+                 classification=None, candidates=None, origin=None,
                  monitor: Optional[Monitor] = None) -> FilterOutcome:
         """Classify the selected points; see the module docstring."""
         raise NotImplementedError
@@ -174,11 +192,13 @@ class FunctionFilter(GroundFilter):
             self._takes_origin = False
 
     def classify(self, x, y, z, *, return_number=None, number_of_returns=None,
-                 classification=None, origin=None,
+                 classification=None, candidates=None, origin=None,
                  monitor: Optional[Monitor] = None) -> FilterOutcome:
         """Call the function and check its answer (one class per point)."""
         mon = monitor or Monitor()
         kw = {"origin": origin} if self._takes_origin else {}
+        x, y, z, return_number, number_of_returns = candidate_arrays(
+            candidates, x, y, z, return_number, number_of_returns)
         cls = self.func(x, y, z, return_number=return_number,
                         number_of_returns=number_of_returns, options=self.options,
                         progress=mon.update, cancel=mon.cancelled, **kw)
@@ -222,9 +242,11 @@ class KeepFilter(GroundFilter):
     lattice = "none"           # lays no grid: needs no anchor
 
     def classify(self, x, y, z, *, return_number=None, number_of_returns=None,
-                 classification=None, origin=None,
+                 classification=None, candidates=None, origin=None,
                  monitor: Optional[Monitor] = None) -> FilterOutcome:
         """Return the input classes (never classified when the input has none)."""
+        n = np.size(x) if candidates is None else int(np.count_nonzero(candidates))
         if classification is None:
-            return FilterOutcome(np.zeros(np.size(x), np.uint8))
-        return FilterOutcome(np.array(classification, dtype=np.uint8))
+            return FilterOutcome(np.zeros(n, np.uint8))
+        return FilterOutcome(np.array(candidate_arrays(candidates, classification)[0],
+                                      dtype=np.uint8))

@@ -12,6 +12,7 @@ import numpy as np
 from scipy import ndimage
 
 from ..errors import InputError
+from ._checks import check_filter_points, checked_xyz  # noqa: F401 - re-exported
 from ._heights import BAND, HEIGHT, OccupiedMinima, box_mean, height_base  # noqa: F401
 from ._pushpull import push_pull
 from ._pushpull import push_pull as _pushpull  # noqa: F401 - the tests' name
@@ -81,22 +82,26 @@ class Grid:
     anchor: tuple = (0, 0)
 
     @classmethod
-    def around(cls, x, y, cell, origin=None):
-        """Smallest grid with cell ``cell`` holding every point.
+    def around(cls, x, y, cell, origin=None, keep=None):
+        """Smallest grid with cell ``cell`` holding every point (every ``keep`` point).
 
         With ``origin`` (x, y) the grid's corner is on the lattice through that point
         with a period of :data:`ALIGN` cells, so grids of separate chunks share cells
         and the blocks of the :func:`fill` pyramid up to that size.
         """
-        x0, y0 = float(x.min()), float(y.min())
+        lo = (lambda v: v.min()) if keep is None else \
+            (lambda v: np.min(v, where=keep, initial=np.inf))  # no copy of the kept points
+        hi = (lambda v: v.max()) if keep is None else \
+            (lambda v: np.max(v, where=keep, initial=-np.inf))
+        x0, y0 = float(lo(x)), float(lo(y))
         anchor = (0, 0)
         if origin is not None:
             period = cell * ALIGN
             x0, y0 = snap_down(x0, origin[0], period), snap_down(y0, origin[1], period)
             anchor = (int(round((y0 - float(origin[1])) / cell)),
                       int(round((x0 - float(origin[0])) / cell)))
-        cols = int((float(x.max()) - x0) // cell) + 1
-        rows = int((float(y.max()) - y0) // cell) + 1
+        cols = int((float(hi(x)) - x0) // cell) + 1
+        rows = int((float(hi(y)) - y0) // cell) + 1
         return cls(x0, y0, float(cell), rows, cols, anchor)
 
     def index(self, x, y):
@@ -160,10 +165,13 @@ class PointCells:
         Coordinates (m).
     grid : Grid
         The raster grid.
+    keep : ndarray of bool, optional
+        The points that take part: the others are in no cell's minimum and read no cell
+        in :meth:`read_mask` (their look-ups stay inside the raster, values unused).
     """
 
-    def __init__(self, x, y, grid):
-        self.grid = grid
+    def __init__(self, x, y, grid, keep=None):
+        self.grid, self.keep = grid, keep
         n = np.size(x)
         # int32 where cell and point counts allow: half the memory, the same indices
         it = np.int32 if max(grid.rows * grid.cols, n) < 2 ** 31 else np.int64
@@ -177,15 +185,19 @@ class PointCells:
             row, r0, self.fy[s:e] = _axis(y[s:e], grid.y0, grid.cell, grid.rows, True)
             row *= grid.cols
             row += col
+            if keep is not None:                     # points left out may lie outside
+                np.clip(row, 0, grid.rows * grid.cols - 1, out=row)
             self.idx[s:e] = row
             r0 *= grid.cols
             r0 += c0
             self.i00[s:e] = r0
         self.order = np.argsort(self.idx, kind="stable").astype(it)
+        if keep is not None:                         # the points left out: in no run
+            self.order = self.order[keep[self.order]]
         # runs of the sorted cell ids: where the id changes (no count per raster cell,
         # 8 bytes a cell: 40 MB per million points at 0.2 pts/m²)
         ids = self.idx[self.order]
-        head = np.empty(n, bool)
+        head = np.empty(ids.size, bool)
         head[:1] = True
         np.not_equal(ids[1:], ids[:-1], out=head[1:])
         self.starts = np.flatnonzero(head).astype(it)
@@ -324,7 +336,7 @@ class PointCells:
         """
         g = self.grid
         m = np.zeros(g.rows * g.cols, dtype=bool)
-        i = self.i00
+        i = self.i00 if self.keep is None else self.i00[self.keep]
         c1 = 1 if g.cols > 1 else 0
         r1 = g.cols if g.rows > 1 else 0
         for off in (0, c1, r1, r1 + c1):
@@ -528,53 +540,3 @@ def _jitter(pts):
     h = np.sin(pts[:, :1] * 12.9898 + pts[:, 1:] * 78.233) * 43758.5453
     h = h - np.floor(h)
     return (np.column_stack((h, np.roll(h, 1))) - 0.5) * 0.1
-
-
-def checked_xyz(x, y, z, min_points: int):
-    """Coordinates as float64 arrays, refused when unusable by a ground filter.
-
-    Parameters
-    ----------
-    x, y, z : array_like
-        Coordinates in a projected CRS (m).
-    min_points : int
-        Fewest points accepted.
-
-    Returns
-    -------
-    tuple of ndarray
-        ``x, y, z`` (contiguous float64).
-
-    Raises
-    ------
-    ValueError
-        Unequal lengths or non-finite values (:func:`~..coords.as_xyz`).
-    InputError
-        Too few points, a single xy position, or coordinates in degrees.
-    """
-    from ..coords import as_xyz
-    x, y, z = as_xyz(x, y, z, projected=True)
-    check_filter_points(x, y, min_points)
-    return x, y, z
-
-
-def check_filter_points(x, y, min_points: int) -> None:
-    """Refuse fewer than ``min_points`` points, or points all at one x/y position.
-
-    The one check of every ground filter (:func:`checked_xyz`, the slope filter).
-
-    Raises
-    ------
-    InputError
-        With the counts and the fix.
-    """
-    x = np.asarray(x)
-    y = np.asarray(y)
-    if x.size < min_points:
-        raise InputError("A ground filter needs at least {min_points} points, got "
-                         "{n}: give a cloud that covers the ground area, or select more "
-                         "returns / classes.", min_points=min_points, n=x.size)
-    if max(float(np.ptp(x)), float(np.ptp(y))) <= 0.0:
-        raise InputError("All {n} points share one x/y position, so there is no terrain "
-                         "to compare them with: give a cloud whose points cover the ground "
-                         "area.", n=x.size)

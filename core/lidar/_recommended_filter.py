@@ -28,7 +28,7 @@ from ..progress import Monitor
 from ..reporting import KeyValues, Paragraph, T
 from . import _raster as R  # noqa: N812
 from ._filter import FilterOutcome, OptionsFilter, check_classes
-from ._summary import DENSITY_CELL, cloud_summary, recommended_values
+from ._summary import DENSITY_CELL, cloud_summary, highest, lowest, recommended_values
 
 __all__ = ["Derived", "RecommendedFilter", "water_candidates", "LABELS"]
 
@@ -43,7 +43,7 @@ LABELS = {"cell": "Raster cell (m)", "max_window": "Largest window (m)",
 
 def water_candidates(x, y, z, *, density: Optional[float] = None,
                      median5: Optional[float] = None, sparse: float = 0.25,
-                     flat: float = 0.15, min_area: float = 400.0) -> np.ndarray:
+                     flat: float = 0.15, min_area: float = 400.0, keep=None) -> np.ndarray:
     """Flat, sparse returns in patches of at least ``min_area`` m² (likely water).
 
     Cells are 3 mean point spacings wide (at least 2 m) on the world lattice
@@ -64,6 +64,8 @@ def water_candidates(x, y, z, *, density: Optional[float] = None,
         (:func:`._summary.recommended_values`); default: those of these points.
     sparse, flat, min_area : float
         Thresholds (share of the median count, m, m²).
+    keep : ndarray of bool, optional
+        The points to test (the others take no part and are not flagged).
 
     Returns
     -------
@@ -72,22 +74,27 @@ def water_candidates(x, y, z, *, density: Optional[float] = None,
     """
     n = np.size(x)
     out = np.zeros(n, bool)
-    if n < 100:
+    if keep is not None and keep.all():
+        keep = None
+    if (n if keep is None else np.count_nonzero(keep)) < 100:
         return out
     if density is None or median5 is None:
-        own = recommended_values(cloud_summary(x, y, counts=True))
+        own = recommended_values(cloud_summary(x, y, counts=True, keep=keep))
         density, median5 = own["density"], own["median5"]
     cell = max(2.0, 3.0 / np.sqrt(density))
     x, y = np.asarray(x, np.float64), np.asarray(y, np.float64)
     # floor(v / cell) is monotonic: the first and last cells are the extreme points'
-    x0, y0 = np.floor(x.min() / cell), np.floor(y.min() / cell)
-    shape = (int(np.floor(y.max() / cell) - y0) + 1, int(np.floor(x.max() / cell) - x0) + 1)
+    x0, y0 = np.floor(lowest(x, keep) / cell), np.floor(lowest(y, keep) / cell)
+    shape = (int(np.floor(highest(y, keep) / cell) - y0) + 1,
+             int(np.floor(highest(x, keep) / cell) - x0) + 1)
     size = shape[0] * shape[1]
 
     def ids(xs, ys):                                 # the cells of points, row-major
         i = (np.floor(ys / cell) - y0).astype(np.int64)
         i *= shape[1]
         i += (np.floor(xs / cell) - x0).astype(np.int64)
+        if keep is not None:                         # points left out may lie outside
+            np.clip(i, 0, size - 1, out=i)
         return i
 
     # a raster of up to 2**20 cells: the points' cells are taken block by block (no
@@ -99,12 +106,16 @@ def water_candidates(x, y, z, *, density: Optional[float] = None,
     def cells(b):
         return idx[b] if idx is not None else ids(x[b], y[b])
 
-    cnt = sum(np.bincount(cells(b), minlength=size) for b in parts)
+    def kept(b, v):                                  # v (of the block b) at the kept points
+        return v if keep is None else v[keep[b]]
+
+    cnt = sum(np.bincount(kept(b, cells(b)), minlength=size) for b in parts)
     occ = cnt > 0
     cand = occ & (cnt < sparse * median5 * (cell / DENSITY_CELL) ** 2)
     if not cand.any():
         return out
-    sel = np.concatenate([np.flatnonzero(cand[cells(b)]) + b.start for b in parts])
+    sel = np.concatenate([np.flatnonzero(cand[cells(b)] if keep is None else
+                                         cand[cells(b)] & keep[b]) + b.start for b in parts])
     at = ids(x[sel], y[sel])                         # the points of the sparse cells
     zlo = np.full(size, np.inf)
     np.minimum.at(zlo, at, z[sel])
@@ -122,14 +133,14 @@ def water_candidates(x, y, z, *, density: Optional[float] = None,
         return out
     lab, k = ndimage.label(cand, structure=box)
     area = np.bincount(lab.ravel(), minlength=k + 1) * cell * cell
-    keep = area >= min_area
-    keep[0] = False
-    if not keep.any():
+    big = area >= min_area
+    big[0] = False
+    if not big.any():
         return out
-    keep = keep[lab.ravel()]                         # per cell
+    keep_cell = big[lab.ravel()]                     # per cell
     for b in parts:
-        out[b] = keep[cells(b)]
-    return out
+        out[b] = keep_cell[cells(b)]
+    return out if keep is None else np.logical_and(out, keep, out=out)
 
 
 @dataclass
@@ -290,29 +301,41 @@ class RecommendedFilter(OptionsFilter):
                          citation=CITATION, labels=LABELS)
 
     def classify(self, x, y, z, *, return_number=None, number_of_returns=None,
-                 classification=None, origin=None,
+                 classification=None, candidates=None, origin=None,
                  monitor: Optional[Monitor] = None) -> FilterOutcome:
-        """Classify; input water (9) kept, water candidates class 1; :class:`Derived`."""
+        """Classify; input water (9) kept, water candidates class 1; :class:`Derived`.
+
+        The points outside ``candidates`` take no part (no copy of the coordinates).
+        """
         mon = monitor or Monitor()
         x, y, z = (np.asarray(a, dtype=np.float64) for a in (x, y, z))
         n = x.size
         water = (np.asarray(classification) == WATER if classification is not None
                  else np.zeros(n, bool))
+        keep = None if candidates is None else np.asarray(candidates, bool)
         s = self.summary or recommended_values(cloud_summary(x, y, classification,
-                                                             counts=True))
+                                                             counts=True, keep=keep))
         cand_water = (np.zeros(n, bool) if s["water_input"] else
-                      water_candidates(x, y, z, density=s["density"], median5=s["median5"]))
+                      water_candidates(x, y, z, density=s["density"], median5=s["median5"],
+                                       keep=keep))
         take = ~(water | cand_water)
-        sub = (lambda a: a) if take.all() else (lambda a: a[take])
+        if keep is not None:
+            take &= keep
         info: dict = {"density": s["density"]}
         cls = np.full(n, 1, np.uint8)
         from .recommended import derive  # the tolerance from the whole cloud's density
-        cls[take] = self.func(sub(x), sub(y), sub(z),
-                              options=derive(x, y, self.options, density=s["density"]),
-                              progress=mon.update, cancel=mon.cancelled, origin=origin,
-                              info=info)
+        every = take.all()
+        got = self.func(x, y, z, options=derive(x, y, self.options, density=s["density"]),
+                        progress=mon.update, cancel=mon.cancelled, origin=origin,
+                        info=info, keep=None if every else take)
+        if every:
+            cls = got
+        else:
+            cls[take] = got[take]
         cls[water] = WATER
-        cls = check_classes(self.name, cls, n)
+        if keep is not None:
+            cls, water, cand_water = cls[keep], water[keep], cand_water[keep]
+        cls = check_classes(self.name, cls, cls.size)
         return FilterOutcome(cls, details=derived(info, cls, water.sum(), cand_water.sum()))
 
     def report_sections(self, run, report, tr) -> None:

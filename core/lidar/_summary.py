@@ -48,47 +48,69 @@ WATER = int(asprs.WATER)
 SUMMARY_FILE = "summary.json"
 
 
-def cloud_summary(x, y, classification=None, *, counts: bool = False) -> dict:
+def cloud_summary(x, y, classification=None, *, counts: bool = False, keep=None) -> dict:
     """Summary of one cloud (metres): what :func:`tile_summary` gives for a tile.
 
     ``counts``: also the recommended filter's cell counts of the points (the caller
     passes the points that filter sees; class 9 in ``classification`` counted apart).
+    ``keep`` (bool per point): summarise those points only (the same as passing them).
     """
     x, y = np.asarray(x, np.float64), np.asarray(y, np.float64)
-    out = {"n": int(x.size), "corner": [float(x.min()), float(y.min())] if x.size else None}
+    n = int(x.size if keep is None else np.count_nonzero(keep))
+    out = {"n": n, "corner": [lowest(x, keep), lowest(y, keep)] if n else None}
     if counts:
         water = (np.zeros(x.size, bool) if classification is None
                  else np.asarray(classification) == WATER)
-        if water.any():
-            x, y = x[~water], y[~water]
-        out.update(water=int(np.count_nonzero(water)), cells=cell_counts(x, y, DENSITY_CELL))
+        if keep is not None:
+            water &= keep
+        nw = int(np.count_nonzero(water))
+        if nw:
+            keep = ~water if keep is None else keep & ~water
+        out.update(water=nw, cells=cell_counts(x, y, DENSITY_CELL, keep=keep))
     return out
 
 
-def cell_counts(x, y, cell: float, shared: Sequence = ()) -> dict:
+def lowest(v, keep=None) -> float:
+    """Smallest value of ``v`` (at ``keep`` only: the minimum of ``v[keep]``, no copy)."""
+    return float(v.min() if keep is None else np.min(v, where=keep, initial=np.inf))
+
+
+def highest(v, keep=None) -> float:
+    """Largest value of ``v`` (at ``keep`` only, no copy)."""
+    return float(v.max() if keep is None else np.max(v, where=keep, initial=-np.inf))
+
+
+def cell_counts(x, y, cell: float, shared: Sequence = (), keep=None) -> dict:
     """Points per occupied cell of the world lattice (multiples of ``cell`` m), mergeable.
 
     Cells no box of ``shared`` (other tiles' boxes, metres) touches hold this tile's
     points only: their counts go into a histogram, kept sparse (``hist``: the counts
     met and how many cells hold each — a tile of one position holds one cell of n
     points, not a list n long); the others are kept by cell (``keys``: columns and
-    rows) for :func:`merge` to add up across tiles.
+    rows) for :func:`merge` to add up across tiles. ``keep`` (bool per point): count
+    those points only.
     """
     x, y = np.asarray(x, np.float64), np.asarray(y, np.float64)
-    if not x.size:
+    if keep is not None and keep.all():
+        keep = None
+    if not (x.size if keep is None else keep.any()):
         return {"hist": [[], []], "keys": [[], []], "counts": []}
     # floor(v / cell) is monotonic: the extreme cells are those of the extreme points
-    x0, y0 = int(np.floor(x.min() / cell)), int(np.floor(y.min() / cell))
-    ny = int(np.floor(y.max() / cell)) - y0 + 1
-    size = (int(np.floor(x.max() / cell)) - x0 + 1) * ny
+    x0, y0 = int(np.floor(lowest(x, keep) / cell)), int(np.floor(lowest(y, keep) / cell))
+    ny = int(np.floor(highest(y, keep) / cell)) - y0 + 1
+    size = (int(np.floor(highest(x, keep) / cell)) - x0 + 1) * ny
     if size <= _BOX_CELLS:          # a small box: counted block by block, no per-point keys
         cnt = np.zeros(size, np.int64)
         for s in range(0, x.size, _BLOCK):
-            cnt += np.bincount(_keys(x[s:s + _BLOCK], y[s:s + _BLOCK], cell, x0, y0, ny),
-                               minlength=size)
+            xb, yb = x[s:s + _BLOCK], y[s:s + _BLOCK]
+            if keep is not None:
+                xb, yb = xb[keep[s:s + _BLOCK]], yb[keep[s:s + _BLOCK]]
+            cnt += np.bincount(_keys(xb, yb, cell, x0, y0, ny), minlength=size)
         occ = np.flatnonzero(cnt)
         cnt = cnt[occ]
     else:
+        if keep is not None:
+            x, y = x[keep], y[keep]
         local = _keys(x, y, cell, x0, y0, ny)
         if int(local.max()) < 4 * local.size + 1_000_000:      # O(n) count on a small box
             cnt = np.bincount(local)

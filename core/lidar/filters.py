@@ -154,18 +154,12 @@ def run_filter(points, algorithm: GroundFilter, selection: Optional[SelectionOpt
                         progress=mon.sub(0.0, 0.15).update, cancel=mon.cancelled)
     t_sel = time.perf_counter()
     cand = sel.candidates
-    every = bool(cand.all())
-
-    def take(a):
-        if a is None:
-            return None
-        return a if every else a[cand]
-
-    dims = points.dims
-    outcome = algorithm.classify(take(points.x), take(points.y), take(points.z),
-                                 return_number=take(dims.get("return_number")),
-                                 number_of_returns=take(dims.get("number_of_returns")),
-                                 classification=take(dims.get("classification")),
+    dims = points.dims              # every point; the filter leaves the others out
+    outcome = algorithm.classify(points.x, points.y, points.z,
+                                 return_number=dims.get("return_number"),
+                                 number_of_returns=dims.get("number_of_returns"),
+                                 classification=dims.get("classification"),
+                                 candidates=None if cand.all() else cand,
                                  origin=origin, monitor=mon.sub(0.15, 1.0))
     n = int(np.count_nonzero(cand))
     outcome.classes = check_classes(algorithm.name, outcome.classes, n)

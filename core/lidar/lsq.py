@@ -79,7 +79,7 @@ from .. import classes as asprs
 from ..coords import as_xyz
 from ..errors import InputError
 from ..progress import Monitor
-from ._filter import FilterOutcome, GroundFilter
+from ._filter import FilterOutcome, GroundFilter, candidate_arrays
 from ._lsq_fit import (
     STATUS_NAMES,
     TERMS,
@@ -524,10 +524,11 @@ class LsqFilter(GroundFilter):
         super().__init__(options or LsqOptions())
 
     def classify(self, x, y, z, *, return_number=None, number_of_returns=None,
-                 classification=None, origin=None,
+                 classification=None, candidates=None, origin=None,
                  monitor: Optional[Monitor] = None) -> FilterOutcome:
         """Run :func:`lsq_ground_filter` (classes 2, 1, 0) on the selected points."""
         mon = monitor or Monitor()
+        x, y, z = candidate_arrays(candidates, x, y, z)
         res = lsq_ground_filter(x, y, z, **vars(self.options), noise=False, origin=origin,
                                 progress=mon.update, cancel=mon.cancelled)
         return FilterOutcome(res.classification, details=res)

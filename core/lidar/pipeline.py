@@ -261,7 +261,10 @@ def classify_file(src, algorithm: GroundFilter, outputs: FilterOutputs,
                               inputs={"INPUT": src, **outputs.inputs},
                               point_clouds=[outputs.name(r) for r in ("cloud", "ground")])
     with contract as out:
-        pd = read_cloud(src, keep_records=bool({"cloud", "ground"} & set(roles)),
+        # return numbers only when something reads them (0.05 s CPU and 8 B/point on 4 M)
+        pd = read_cloud(src, returns=sel_opt.returns == "last"
+                        or getattr(algorithm, "uses_returns", True),
+                        keep_records=bool({"cloud", "ground"} & set(roles)),
                         monitor=mon.sub(0.0, 0.1))
         t_read = time.perf_counter()
         fr = run_filter(pd, algorithm, sel_opt, origin=origin, monitor=mon.sub(0.1, 0.85))

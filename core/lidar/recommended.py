@@ -279,7 +279,7 @@ def derive(x, y, opt: RecommendedOptions, density=None) -> RecommendedOptions:
 
 
 def classify(x, y, z, *, return_number=None, number_of_returns=None, options=None,
-             progress=None, cancel=None, origin=None, info=None) -> np.ndarray:
+             progress=None, cancel=None, origin=None, info=None, keep=None) -> np.ndarray:
     """Classify ground with the recommended, cloud-adaptive morphological filter.
 
     Parameters
@@ -301,6 +301,8 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     info : dict, optional
         Filled with what was derived (options with the cell, grid, low cells, slope
         tolerance, object cells) for the report (:mod:`._recommended_filter`).
+    keep : ndarray of bool, optional
+        The points to classify: the others take no part (their classes are garbage).
 
     Returns
     -------
@@ -320,22 +322,20 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     >>> cls = classify(x, y, z, options=RecommendedOptions(max_window=30))  # doctest: +SKIP
     """
     opt = _options(options, RecommendedOptions)
-    x, y, z = R.checked_xyz(x, y, z, opt.min_points)
-    step = Monitor(progress, cancel).step
-
-    def rep(done):
-        _trim()           # between steps: the freed temporaries' pages back to the system
-        step(done)
-
+    x, y, z = R.checked_xyz(x, y, z, opt.min_points, keep)
+    # progress steps (22 in the openings) hand no pages back: each malloc_trim there made
+    # the next step fault the same pages in again; the trims that keep the peak are below
+    rep = Monitor(progress, cancel).step
     rep(0.0)
-    opt = derive(x, y, opt)
-    grid = R.Grid.around(x, y, opt.cell, origin=origin)
-    pc = R.PointCells(x, y, grid)
+    opt = derive(x, y, opt) if keep is None else derive(x[keep], y[keep], opt) \
+        if opt.cell is None or opt.threshold is None else opt
+    grid = R.Grid.around(x, y, opt.cell, origin, keep)
+    pc = R.PointCells(x, y, grid, keep)
     base = pc.height_base(z)          # rasters of heights above it, in float32 (R.HEIGHT)
     rep(0.3)
     need = pc.read_mask()
     if info is not None:
-        info.update(options=opt, n=int(x.size), grid=grid)
+        info.update(options=opt, n=int(x.size if keep is None else keep.sum()), grid=grid)
     zmin = pc.cell_min(z, base=base)
     # the per-point look-ups are not held while whole rasters are worked on (a second
     # PointCells of the same points is the same arrays): the minima at the occupied cells
@@ -344,7 +344,7 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     del pc
     dtm = surface(zmin.raster(), grid, opt, rep, need=need, info=info, remake=zmin.raster)
     del zmin
-    pc = R.PointCells(x, y, grid)
+    pc = R.PointCells(x, y, grid, keep)
     rep(0.8)
     last = {}             # the refine passes change few cells: few points relabelled
     cls = label_points(z, dtm, pc, opt, last, base)
@@ -359,10 +359,11 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
         pc = since = None                            # not held through the fill (as above)
         zg = fill_holes(zg, ~np.isnan(zg), grid, opt, need, cache, overwrite=True)
         _trim()
-        pc = R.PointCells(x, y, grid)
+        pc = R.PointCells(x, y, grid, keep)
         was, cls = cls, label_points(z, zg, pc, opt, last, base)
         if k + 1 < opt.refine:
-            flipped = np.flatnonzero((was == GROUND) != (cls == GROUND))
+            flipped = (was == GROUND) != (cls == GROUND)
+            flipped = np.flatnonzero(flipped if keep is None else flipped & keep)
         del was
     rep(1.0)
     return cls

@@ -72,7 +72,7 @@ import numpy as np
 from ..errors import InputError
 from ..progress import Monitor
 from ..reporting import KeyValues, Paragraph, T, Table
-from ._filter import FilterOutcome, GroundFilter
+from ._filter import FilterOutcome, GroundFilter, candidate_arrays
 from ._raster import check_filter_points
 from ._slope_kernel import (
     SlopeStats,
@@ -420,11 +420,12 @@ class SlopeFilter(GroundFilter):
         super().__init__((options or SlopeOptions()).validate())
 
     def classify(self, x, y, z, *, return_number=None, number_of_returns=None,
-                 classification=None, origin=None,
+                 classification=None, candidates=None, origin=None,
                  monitor: Optional[Monitor] = None) -> FilterOutcome:
         """Run :func:`slope_filter` on the selected points (every one a neighbour)."""
         mon = monitor or Monitor()
         o = self.options
+        x, y, z = candidate_arrays(candidates, x, y, z)
         res = slope_filter(x, y, z, radius=o.radius, slope=o.slope,
                            height_tolerance=o.height_tolerance, mode=o.mode,
                            trend_cell=o.trend_cell, trend_window=o.trend_window,
