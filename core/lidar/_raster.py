@@ -339,8 +339,9 @@ class PointCells:
         i = self.i00 if self.keep is None else self.i00[self.keep]
         c1 = 1 if g.cols > 1 else 0
         r1 = g.cols if g.rows > 1 else 0
-        for off in (0, c1, r1, r1 + c1):
-            m[i + off] = True
+        m[i] = True                             # lower-left corners, then the other three:
+        for off in {c1, r1} - {0}:              # shifted copies (a corner + r1 + c1 < size)
+            m[off:] |= m[:-off]
         cells = self.cells                      # occupied cells, and their 4-neighbours
         m[cells] = True
         col = cells % g.cols

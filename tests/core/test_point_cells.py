@@ -160,3 +160,28 @@ def test_cell_min_after_height_base_reuses_its_minima_only_for_the_same_heights(
     assert np.array_equal(_bits(got), _bits(fresh.cell_min(z, base=base)))
     assert pc._minima is None                         # used once, then dropped
     assert np.array_equal(_bits(pc.cell_min(z, base=base)), _bits(got))
+
+
+@pytest.mark.parametrize("shape", [(1, 30), (30, 1), (2, 2), (40, 37)])
+def test_read_mask_is_every_cell_a_point_reads(shape):
+    """The four bilinear corners of every point (scattered one by one before) and the
+    occupied cells with their 4-neighbours; with ``keep``, those of the kept points."""
+    rows, cols = shape
+    rng = np.random.default_rng(rows * cols)
+    x, y = rng.uniform(0, cols, 400), rng.uniform(0, rows, 400)
+    keep = rng.random(400) < 0.3
+    for k in (None, keep):
+        pc = R.PointCells(x, y, R.Grid(0.0, 0.0, 1.0, rows, cols), k)
+        i00 = pc.i00 if k is None else pc.i00[k]
+        m = np.zeros(rows * cols, bool)
+        c1, r1 = (1 if cols > 1 else 0), (cols if rows > 1 else 0)
+        for off in (0, c1, r1, r1 + c1):
+            m[i00 + off] = True
+        cells = pc.cells
+        m[cells] = True
+        m[cells[cells % cols > 0] - 1] = True
+        m[cells[cells % cols < cols - 1] + 1] = True
+        m[cells[cells >= cols] - cols] = True
+        m[cells[cells < (rows - 1) * cols] + cols] = True
+        assert np.array_equal(pc.read_mask().ravel(), m)
+        assert m.sum() < m.size or min(shape) <= 2
