@@ -148,6 +148,10 @@ class ChunkTask:
     #: median count per 5 m cell, input water anywhere: ``_summary.recommended_values``),
     #: from the first pass; None: from the chunk's own points.
     derived: Optional[dict] = None
+    #: Position in the plan and ``[index, xmin, ymin, xmax, ymax]`` (metres) of the chunks
+    #: near it (itself included): which canopy blocks it counts (:mod:`._canopy`).
+    index: int = 0
+    peers: list = field(default_factory=list)
 
     @property
     def neighbours(self) -> List[str]:
@@ -334,16 +338,20 @@ def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
     """
     if not core.any():
         return np.zeros(core.size, np.uint8)
+    pts, flt, origin = chunk_filter(task, xyz, dims)
+    return classify_points(pts, flt, default_selection(task.ground_filter), origin=origin)
+
+
+def chunk_filter(task: ChunkTask, xyz, dims):
+    """``(points in metres, the filter object given the catalog's values, its anchor)``."""
     units = task.units
     if not units.metric:              # every length of the filters is metres
         xyz = units.xyz_to_metres(*xyz)
-    pts = PointData(*xyz, dims=dims)
     flt = ground_filter(task.ground_filter)
     if task.derived is not None and hasattr(flt, "summary"):
         flt.summary = dict(task.derived)
     origin = task.filter_origin if getattr(flt, "lattice", "cloud") == "cloud" else None
-    return classify_points(pts, flt, default_selection(task.ground_filter),
-                           origin=None if origin is None else tuple(origin))
+    return PointData(*xyz, dims=dims), flt, None if origin is None else tuple(origin)
 
 
 def filter_sparse_chunk(task: ChunkTask, xyz, dims, core):

@@ -14,6 +14,7 @@ from typing import Dict, List, Optional, Sequence
 from ..errors import InputError
 from ..io.contract import remove_temp
 from ..progress import Cancelled, Monitor
+from ._canopy import tally_chunk, with_canopy
 from ._chunks import ChunkTask, process_chunk, read_strip
 from ._summary import final, strip_summary, tile_summary
 from ._workers import SINGLE_THREAD_ENV, start_local_workers
@@ -198,6 +199,20 @@ def _submit_first_pass(client, plan, strips):
                          pure=False, priority=10 ** 12)
 
 
+def _submit_canopy(client, order, strips, summary, folder):
+    """Submit the chunks' canopy tallies after the first pass (:mod:`._canopy`).
+
+    Returns the merged summary's future, which every chunk waits for instead of the
+    first pass's.
+    """
+    tallies = [client.submit(tally_chunk, t, *[strips[p] for p in t.neighbours if p in strips],
+                             summary=summary, key=f"canopy-{t.key}-{time.time_ns()}",
+                             retries=1, pure=False, priority=10 ** 12 - 1)
+               for t in order]
+    return client.submit(with_canopy, summary, *tallies, folder=folder,
+                         key=f"canopy-factor-{time.time_ns()}", pure=False, priority=10 ** 12)
+
+
 def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, failed,
               clock, on_chunk=None, plan=None):
     client, cluster = _client(nw, scheduler, memory_limit)
@@ -209,6 +224,8 @@ def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, f
         order = sorted(todo, key=lambda t: -t.cost)
         strips, release = _submit_strips(client, order, plan)
         summary = _submit_first_pass(client, plan, strips) if plan is not None else None
+        if plan is not None and plan.get("canopy"):
+            summary = _submit_canopy(client, order, strips, summary, plan["folder"])
         futures = {client.submit(process_chunk, t, *[strips[p] for p in t.neighbours
                                                       if p in strips], summary=summary,
                                  key=f"chunk-{t.key}-{time.time_ns()}", retries=1,

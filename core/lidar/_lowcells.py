@@ -37,7 +37,7 @@ from scipy import ndimage
 
 from . import _raster as R  # noqa: N812
 
-__all__ = ["LowCells", "closing_pits", "low_cells"]
+__all__ = ["LowCells", "canopy_counts", "choose_factor", "closing_pits", "low_cells"]
 
 #: Coarsening factors tried, in cells, for the ground-return scale under canopy.
 FACTORS = (2, 3, 4, 6, 8, 12, 16)
@@ -131,8 +131,22 @@ def _block_any(mask, f: int, anchor=(0, 0)):
     return mp.reshape(r2, f, c2, f).any(axis=(1, 3))
 
 
+def _canopy(zmin, cell: float, step: float, window: float, share: float, anchor):
+    """``(pits, n_pits, occupied, canopy)``: closing pits and the areas where they are common."""
+    pits = closing_pits(zmin, step, anchor)[0]          # the closing itself is not kept
+    occupied = ~np.isnan(zmin)
+    if not pits.any():
+        return pits, 0, occupied, None
+    k = 2 * max(1, int(round(window / cell))) + 1
+    occ = ndimage.uniform_filter(occupied.astype(np.float32), k, mode="constant")
+    frac = ndimage.uniform_filter(pits.astype(np.float32), k, mode="constant")
+    canopy = frac > share * np.maximum(occ, 1e-6)
+    return pits, int(np.count_nonzero(pits)), occupied, canopy
+
+
 def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
-              share: float = 0.08, share_coarse: float = 0.03, anchor=(0, 0)) -> LowCells:
+              share: float = 0.08, share_coarse: float = 0.03, anchor=(0, 0),
+              factor=None) -> LowCells:
     """Low-outlier cells: closing pits, read at the ground-return scale under canopy.
 
     Parameters
@@ -152,27 +166,27 @@ def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
     anchor : (int, int)
         Lattice index of cell (0, 0) (``_raster.Grid.anchor``): the coarse blocks
         are aligned on the lattice, whatever the raster's extent.
+    factor : int, optional
+        The coarse factor, chosen elsewhere from the counts of a larger raster (a
+        catalog: :func:`canopy_counts` summed over its chunks, :func:`choose_factor`);
+        default: chosen on this raster.
 
     Returns
     -------
     LowCells
         The mask and what was derived.
     """
-    pits = closing_pits(zmin, step, anchor)[0]          # the closing itself is not kept
-    occupied = ~np.isnan(zmin)
+    pits, n_pits, occupied, canopy = _canopy(zmin, cell, step, window, share, anchor)
     n_occ = max(1, int(np.count_nonzero(occupied)))
-    if not pits.any():
+    if not n_pits:
         return LowCells(pits, 0, 0.0, 0.0)
-    k = 2 * max(1, int(round(window / cell))) + 1
-    occ = ndimage.uniform_filter(occupied.astype(np.float32), k, mode="constant")
-    frac = ndimage.uniform_filter(pits.astype(np.float32), k, mode="constant")
-    canopy = frac > share * np.maximum(occ, 1e-6)
-    n_pits = int(np.count_nonzero(pits))
     if not canopy.any():
         return LowCells(pits, n_pits, 0.0, 0.0)
-    for f in FACTORS:
+    for f in (int(factor),) if factor else FACTORS:
         coarse, canchor = _block_min(zmin, f, anchor)
         cpits, clo = closing_pits(coarse, step, canchor)
+        if factor:
+            break
         area = _block_any(canopy, f, anchor)
         n_area = np.count_nonzero(area & ~np.isnan(coarse))
         if np.count_nonzero(cpits & area) < share_coarse * max(1, n_area):
@@ -188,3 +202,38 @@ def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
             low[b] = np.where(canopy[b], under, pits[b])
     return LowCells(low, n_pits, float(np.count_nonzero(canopy & occupied)) / n_occ,
                     float(f * cell))
+
+
+def canopy_counts(zmin, cell: float, owned, *, step: float = 5.0, window: float = 25.0,
+                  share: float = 0.08, anchor=(0, 0)) -> dict:
+    """Count what :func:`low_cells` chooses its coarse factor from, over owned blocks only.
+
+    For every factor of :data:`FACTORS`: the coarse pits in canopy blocks (``pits``)
+    and the occupied canopy blocks (``blocks``), over the blocks ``owned(f, shape)``
+    marks (a bool array of the coarse raster's shape). Counts of the chunks of a
+    catalog, each owning a partition of the blocks, add up to the counts of the
+    merged raster: :func:`choose_factor` of the sum is the single-file choice.
+    """
+    pits, n_pits, _, canopy = _canopy(zmin, cell, step, window, share, anchor)
+    out = {"pits": [0] * len(FACTORS), "blocks": [0] * len(FACTORS)}
+    if not n_pits or not canopy.any():
+        return out
+    for i, f in enumerate(FACTORS):
+        coarse, canchor = _block_min(zmin, f, anchor)
+        cpits = closing_pits(coarse, step, canchor)[0]
+        area = _block_any(canopy, f, anchor) & owned(f, coarse.shape)
+        out["blocks"][i] = int(np.count_nonzero(area & ~np.isnan(coarse)))
+        out["pits"][i] = int(np.count_nonzero(cpits & area))
+    return out
+
+
+def choose_factor(pits, blocks, share_coarse: float = 0.03) -> int:
+    """Return the coarse factor :func:`low_cells` chooses from :func:`canopy_counts`.
+
+    >>> choose_factor([9, 5, 1, 0, 0, 0, 0], [100, 60, 40, 30, 20, 10, 8])
+    4
+    """
+    for f, p, b in zip(FACTORS, pits, blocks):
+        if p < share_coarse * max(1, b):
+            return f
+    return FACTORS[-1]

@@ -293,7 +293,11 @@ class RecommendedFilter(OptionsFilter):
 
     #: a catalog's first pass counts the points per 5 m cell for it (:mod:`._summary`)
     needs_counts = True
+    #: and its chunks tally the canopy counts of their blocks (:func:`canopy_tally`)
+    needs_canopy = True
     summary: Optional[dict] = None
+    #: set by a catalog chunk's tally: ``owned(grid, f, shape)``, the blocks it counts
+    canopy_owned = None
 
     def __init__(self, options):
         from .recommended import CITATION, TITLE, classify
@@ -321,13 +325,17 @@ class RecommendedFilter(OptionsFilter):
         take = ~(water | cand_water)
         if keep is not None:
             take &= keep
-        info: dict = {"density": s["density"]}
+        # a catalog's canopy factor (:func:`canopy_tally` summed over its chunks)
+        info: dict = {"density": s["density"], "canopy_factor": s.get("canopy_factor")}
         cls = np.full(n, 1, np.uint8)
         from .recommended import derive  # the tolerance from the whole cloud's density
         every = take.all()
-        got = self.func(x, y, z, options=derive(x, y, self.options, density=s["density"]),
-                        progress=mon.update, cancel=mon.cancelled, origin=origin,
-                        info=info, keep=None if every else take)
+        opts = derive(x, y, self.options, density=s["density"])
+        if self.canopy_owned is not None:           # a catalog chunk's tally, no classes
+            return FilterOutcome(cls if keep is None else cls[keep], details=canopy_tally(
+                x, y, z, opts, origin, self.canopy_owned, None if every else take))
+        got = self.func(x, y, z, options=opts, progress=mon.update, cancel=mon.cancelled,
+                        origin=origin, info=info, keep=None if every else take)
         if every:
             cls = got
         else:
@@ -347,3 +355,23 @@ class RecommendedFilter(OptionsFilter):
         sec.add(KeyValues(d.rows()))
         for w in d.warnings():
             sec.add(Paragraph(w))
+
+
+def canopy_tally(x, y, z, options, origin, owned, keep=None) -> dict:
+    """Return the canopy counts (:func:`._lowcells.canopy_counts`) of a chunk's blocks.
+
+    The first steps of :func:`.recommended.classify` (its grid and minimum raster, on
+    the points it would classify: ``keep``), then the counts over the blocks
+    ``owned(grid, f, shape)`` marks. Summed over the chunks they are the merged
+    cloud's (:func:`._lowcells.choose_factor`): every chunk then closes its canopy at
+    the scale a single-file run of the merged cloud chooses.
+    """
+    from ._lowcells import canopy_counts
+    opt = options                       # derived (cell, tolerance) by the caller
+    x, y, z = R.checked_xyz(x, y, z, opt.min_points, keep)
+    grid = R.Grid.around(x, y, opt.cell, origin, keep)
+    pc = R.PointCells(x, y, grid, keep)
+    zmin = pc.cell_min(z, base=pc.height_base(z))
+    return canopy_counts(zmin, grid.cell, lambda f, shape: owned(grid, f, shape),
+                         step=opt.low_step, window=opt.low_window, share=opt.low_share,
+                         anchor=grid.anchor)

@@ -35,7 +35,7 @@ from ..io.catalog import build_vrt, find_tiles
 from ..io.contract import OutputContract, check_paths, sigterm_raises
 from ..io.las import LasInfo, las_info
 from ..progress import Cancelled, Monitor  # noqa: F401 - callers catch catalog.Cancelled
-from . import _summary
+from . import _canopy, _summary
 from ._catalog_checks import (  # noqa: F401 - MAX_*, check_scheduler: public names
     MAX_CHUNK_POINTS,
     MAX_CHUNKS,
@@ -284,6 +284,7 @@ def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
     _check_chunks(cat, chunk_size, cell_size, buffer, origin, h=h)
     tasks = (_box_tasks(cat, folder, chunk_size, common) if chunk_size
              else _tile_tasks(cat, folder, common))
+    _canopy.assign_peers(tasks, h)
     outs = {f"{k}:{i}": v for i, t in enumerate(tasks) for k, v in t.outputs.items()
             if k != "DONE"}
     check_paths(outs, {"TILES": cat.paths})
@@ -317,14 +318,16 @@ def pass_plan(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dict
     signature = json.loads(json.dumps(dict(
         tiles=sorted(tile_signature(i) for i in cat.tiles), ground_filter=tasks[0].ground_filter,
         counts=counts, h=h, buffer=float(tasks[0].buffer))))
+    canopy = bool(getattr(flt, "needs_canopy", False))   # and its chunks' canopy tallies
     summary = _summary.load(state)
-    if summary is not None and summary.get("signature") == signature:
+    if summary is not None and summary.get("signature") == signature and (
+            not canopy or _canopy.has_factor(summary)):
         apply_summary(tasks, summary)
         return None
     spec = {p: (h, counts, [(cat.bounds[j] * h).tolist() for j in cat.query(tuple(b))
                             if j != i]) for i, (p, b) in enumerate(zip(cat.paths, cat.bounds))}
     return {"spec": spec, "counts": counts, "folder": os.path.abspath(state),
-            "signature": signature}
+            "signature": signature, "canopy": canopy}
 
 
 def first_pass(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dict]:
@@ -342,6 +345,9 @@ def first_pass(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dic
     summary = _summary.final(*[_summary.tile_summary(p, *plan["spec"][p]) for p in cat.paths],
                              counts=plan["counts"], folder=plan["folder"],
                              signature=plan["signature"])
+    if plan["canopy"]:
+        summary = _canopy.with_canopy(summary, *[_canopy.tally_chunk(t, summary=summary)
+                                                 for t in tasks], folder=plan["folder"])
     apply_summary(tasks, summary)
     return summary
 

@@ -410,7 +410,8 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
     empty = np.isnan(zmin)
     outside = outside_hull(~empty) if empty.any() else None
     lows = L.low_cells(zmin, grid.cell, step=opt.low_step, window=opt.low_window,
-                       share=opt.low_share, anchor=grid.anchor)
+                       share=opt.low_share, anchor=grid.anchor,  # a catalog's factor
+                       factor=None if info is None else info.get("canopy_factor"))
     low = lows.low
     _trim()
     zf = R.fill(zmin, ~(low | empty), grid.anchor, overwrite=remake is not None)

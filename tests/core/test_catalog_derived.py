@@ -10,8 +10,9 @@ derives what a single-file run of the merged cloud derives (before it, 13 inner 
 of the density step differed and the lake's water candidates were 105 / 5,410 per chunk
 against 48 merged: ``benchmarks/results/catalog_exact.md``).
 
-Still per chunk: the recommended filter's canopy scale (``_lowcells``: the coarsest
-closing at which pits are rare, over the whole raster): the forest below.
+The recommended filter's canopy scale (``_lowcells``: the coarsest closing at which pits
+are rare, over the whole raster) comes from the chunks' canopy tallies after the first
+pass (:mod:`core.lidar._canopy`): the forest below.
 """
 from __future__ import annotations
 
@@ -115,7 +116,8 @@ def test_density_step_catalog_equals_single_file(step, tmp_path, monkeypatch, ke
     assert np.array_equal(got[inner], ref[inner]), \
         f"{int((got != ref)[inner].sum())} of {int(inner.sum())} inner points differ"
     if key == "groundfilter":
-        assert len(chunks) == 2 * len(seen) and len(set(chunks + seen)) == 1
+        # each chunk derives twice: its canopy tally (:mod:`core.lidar._canopy`), its filter
+        assert len(chunks) == 4 * len(seen) and len(set(chunks + seen)) == 1
         assert 0.33 < seen[0] < 0.42
         assert np.array_equal(got, ref)                # every point, the edges too
 
@@ -137,31 +139,46 @@ def test_lake_across_tiles_catalog_equals_single_file(tmp_path, monkeypatch):
     _, _, got = _catalog(tmp_path / "tiles", tmp_path / "out", "groundfilter", 300.0)
     ref = classify_points(pts, ground_filter("groundfilter"),
                           default_selection("groundfilter"))
-    assert flags[:2] == flags[2:] * 2 and flags[2] > 100     # whole scene in each chunk
+    # whole scene's candidates in each chunk's canopy tally and filter
+    assert flags[:4] == flags[4:] * 4 and flags[4] > 100
     assert np.array_equal(got, ref), f"{int((got != ref).sum())} points differ"
 
 
-def test_forest_canopy_scale_is_still_derived_per_chunk(tmp_path, monkeypatch):
-    """Closed forest, left half thinned: the sparse chunk reads its low outliers at a 12 m
-    canopy scale, the merged cloud (and the dense chunk) at 8 m, so a few points of the
-    sparse tile differ (22 of 503,113 measured, none in the dense tile)."""
+def test_forest_canopy_scale_comes_from_the_whole_catalog(tmp_path, monkeypatch):
+    """Closed forest, left half thinned: alone, the sparse chunk would read its low outliers
+    at a 12 m canopy scale and the merged cloud at 8 m (22 of 503,113 points of the sparse
+    tile differed); the chunks' canopy tallies (:mod:`core.lidar._canopy`) add up to the
+    merged raster's counts, so both chunks close at 8 m and every point beyond the buffer
+    equals the single-file run."""
     pts = _halves(tmp_path / "tiles", landscapes.closed_forest(extent=600.0, density=2.0,
                                                                ground_share=0.05, seed=1))
     from geomatics_toolbox.core.lidar import _lowcells
-    scales = []
-    low = _lowcells.low_cells
+    scales, tallies = [], []
+    low, counts = _lowcells.low_cells, _lowcells.canopy_counts
 
     def spy(*a, **k):
         out = low(*a, **k)
         scales.append(out.canopy_scale)
         return out
+
+    def spy_counts(*a, **k):
+        tallies.append(counts(*a, **k))
+        return tallies[-1]
     monkeypatch.setattr(rec.L, "low_cells", spy)
-    cat, _, got = _catalog(tmp_path / "tiles", tmp_path / "out", "groundfilter", 100.0)
+    monkeypatch.setattr(_lowcells, "canopy_counts", spy_counts)
+    cat, tasks, got = _catalog(tmp_path / "tiles", tmp_path / "out", "groundfilter", 100.0)
     ref = classify_points(pts, ground_filter("groundfilter"),
                           default_selection("groundfilter"))
-    assert scales == [12.0, 8.0, 8.0]
-    diff = got != ref
-    assert 0 < diff.sum() <= 50 and not diff[pts.x >= X0 + 300].any()
+    assert scales == [8.0, 8.0, 8.0]                   # sparse chunk, dense chunk, merged
+    alone = [_lowcells.choose_factor(t["pits"], t["blocks"]) for t in tallies]
+    assert len(tallies) == 2 and alone[0] != alone[1]  # each chunk's own counts disagree
+    assert tasks[0].derived["canopy_factor"] == 8      # 8 cells of 1 m
+    inner = _inner(pts, cat, 100.0)
+    assert np.array_equal(got[inner], ref[inner]), \
+        f"{int((got != ref)[inner].sum())} inner points differ"
+    # 3 points in the catalog's outer corner (x < 4 m, y > 589 m, inside the buffer of the
+    # outer edge) differ, not from the canopy scale: all three runs close at 8 m (was 22)
+    assert (got != ref).sum() <= 3
 
 
 def test_dask_run_summarises_on_the_strip_decodes(step, tmp_path):
