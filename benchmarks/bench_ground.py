@@ -29,7 +29,9 @@ as it was and noting when. ``--stress`` merges the section of the 4 real files t
 to 2 / 1 / 0.5 pts/m² with 3 seeds, every filter beside the oracle (the vendor ground of
 the same subset; ``_ground_stress.py``). ``--transforms`` merges stress round 2: closed
 canopy, a dense crop, offsets and a rotation, units and no input classes through the
-file path (``_ground_transforms.py``).
+file path (``_ground_transforms.py``). ``--phases`` merges the recommended filter on the
+ISPRS samples with the grid's corner moved by sub-cell and whole-cell shifts
+(``_ground_phases.py``).
 """
 from __future__ import annotations
 
@@ -438,7 +440,7 @@ def merge_ptd(text, rows, speed, quick):
 
 
 def _ground_extra(args):
-    """--real / --density / --loso12 / --stress / --transforms: one section each, merged."""
+    """--real / --density / --loso12 / --stress / --transforms / --phases: one section each."""
     import _ground_real as gr
 
     def merge(md):                       # re-read: other runs may have merged meanwhile
@@ -472,6 +474,9 @@ def _ground_extra(args):
             print(f"real files not found in {gr.REAL}; stress skipped")
         else:
             merge(gs.stress_md(rows, filters))
+    if args.phases and (ISPRS / "samp11.laz").exists():
+        import _ground_phases as gp
+        merge(gp.phases_md(gp.phases_section(load, SAMPLES), gp.smrf_corner(RESULTS)))
     if args.transforms:
         import _ground_transforms as gt
         rows = gt.transforms_section(args.transforms_filters.split(","))
@@ -518,12 +523,15 @@ def main(argv=None):
                     help="the 4 real files transformed (closed canopy, dense crop, offsets "
                          "and rotation, units and no input classes through the file path; "
                          "_ground_transforms.py), merged")
+    ap.add_argument("--phases", action="store_true",
+                    help="the recommended filter on the ISPRS samples with the grid's corner "
+                         "moved by sub-cell and whole-cell shifts (_ground_phases.py), merged")
     ap.add_argument("--transforms-filters", default="recommended,smrf",
                     help="comma-separated filters for --transforms")
     args = ap.parse_args(argv)
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     if (args.real or args.density or args.loso12 or args.isprs_recommended or args.stress
-            or args.transforms):
+            or args.transforms or args.phases):
         return _ground_extra(args)
     if args.ptd:
         import _ground_real as gr
