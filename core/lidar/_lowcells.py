@@ -138,9 +138,15 @@ def _canopy(zmin, cell: float, step: float, window: float, share: float, anchor)
     if not pits.any():
         return pits, 0, occupied, None
     k = 2 * max(1, int(round(window / cell))) + 1
-    occ = ndimage.uniform_filter(occupied.astype(np.float32), k, mode="constant")
-    frac = ndimage.uniform_filter(pits.astype(np.float32), k, mode="constant")
-    canopy = frac > share * np.maximum(occ, 1e-6)
+    # the masks filtered as they are (scipy reads each line into float64 either way: the
+    # same values as from a float32 copy), the share compared band by band
+    occ = ndimage.uniform_filter(occupied, k, output=np.float32, mode="constant")
+    frac = ndimage.uniform_filter(pits, k, output=np.float32, mode="constant")
+    canopy = np.empty(zmin.shape, bool)
+    for b0 in range(0, zmin.shape[0], R.BAND):
+        b = slice(b0, b0 + R.BAND)
+        np.greater(frac[b], share * np.maximum(occ[b], 1e-6), out=canopy[b])
+    del occ, frac
     return pits, int(np.count_nonzero(pits)), occupied, canopy
 
 

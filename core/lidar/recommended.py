@@ -443,6 +443,7 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
     if good.all():
         good = low | empty
     np.logical_not(good, out=good)
+    del obj, low, empty, lows                        # (the report's are in info)
     return fill_holes(zmin, good, grid, opt, need, cache, overwrite=remake is not None)
 
 
