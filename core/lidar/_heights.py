@@ -99,14 +99,21 @@ def _window_sums(q, size: int, n: int, axis: int):
 
 
 class OccupiedMinima:
-    """A minimum raster kept as its values at the occupied cells; ``raster()`` remakes it."""
+    """A minimum raster kept as its values at the occupied cells; ``raster()`` remakes it.
 
-    def __init__(self, zmin, cells):
-        self.shape, self.dtype, self.cells = zmin.shape, zmin.dtype, cells
+    After ``uses`` calls of ``raster()`` the values are dropped (a further call fails).
+    """
+
+    def __init__(self, zmin, cells, uses=None):
+        self.shape, self.dtype, self.cells, self.uses = zmin.shape, zmin.dtype, cells, uses
         self.values = zmin.ravel()[cells]
 
     def raster(self):
         """Return the raster again: NaN where empty, the same values bit for bit."""
         out = np.full(self.shape, np.nan, self.dtype)
         out.ravel()[self.cells] = self.values
+        if self.uses is not None:
+            self.uses -= 1
+            if self.uses <= 0:
+                self.cells = self.values = None
         return out

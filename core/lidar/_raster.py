@@ -215,9 +215,9 @@ class PointCells:
         their cells are computed again (the same values as a new computation).
         """
         if since is not None:
+            cells, values = self.minima_of(z, mask, since[2], base)
             out = np.where(since[1], since[0], np.nan)
-            cells = np.unique(self.idx[since[2]])
-            out.ravel()[cells] = self._min_at(z, mask, cells, base)
+            out.ravel()[cells] = values
             return out
         memo, self._minima = self._minima, None
         dtype = np.float64 if base is None else HEIGHT
@@ -235,6 +235,11 @@ class PointCells:
             m -= base
         out[self.cells] = m
         return out.reshape(self.grid.rows, self.grid.cols)
+
+    def minima_of(self, z, mask, points, base=None):
+        """Return the cells of ``points`` (distinct, sorted) and :meth:`cell_min`'s values there."""
+        cells = np.unique(self.idx[points])
+        return cells, self._min_at(z, mask, cells, base)
 
     def height_base(self, z):
         """Return :func:`height_base` of the cell minima of ``z``.

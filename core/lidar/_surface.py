@@ -533,9 +533,10 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
     skip : ndarray of bool
         Cells neither ground nor candidates (empty, low outliers).
     dtm : ndarray or callable
-        Provisional DTM filled from the ground cells, or ``dtm(read)`` returning its
-        values at the cells ``read`` (the candidates: the other cells are never read),
-        in ``np.flatnonzero(read)`` order.
+        Provisional DTM filled from the ground cells, or ``dtm(read, ground)`` returning
+        its values at the cells ``read`` (the candidates: the other cells are never
+        read), in ``np.flatnonzero(read)`` order, ``ground`` being the ground cells
+        (``~(obj | skip)``; not to be changed).
     cell : float
         Cell size (m).
     opt : RecommendedOptions
@@ -556,7 +557,7 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
         zmin, ~skip, rad, lambda b, rms, centre, gx, gy: _grow_candidates(
             b, rms, centre, gx, gy, zmin, obj, skip, cell, opt))
     at = np.flatnonzero(cand)                        # cells of the kept values, sorted
-    dtm = dtm(cand) if callable(dtm) else dtm.ravel()[at]
+    dtm = dtm(cand, ground) if callable(dtm) else dtm.ravel()[at]
     with np.errstate(invalid="ignore"):
         keep = zmin.ravel()[at] - dtm <= opt.grow_max_rise
     del dtm

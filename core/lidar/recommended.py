@@ -339,15 +339,21 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
         info.update(options=opt, n=n, grid=grid)
     # sparse (a cell or more per point: the rasters set the peak): the per-point look-ups
     # are not held while whole rasters are worked on (a second PointCells of the same
-    # points is the same arrays); dense: held (an argsort of the points each time, 0.25 s
-    # CPU per 4 M points) and the openings chained (two rasters more): the same classes
+    # points is the same arrays), ``need`` is kept as bits meanwhile; dense: held (an
+    # argsort of the points each time, 0.25 s CPU per 4 M points) and the openings
+    # chained (two rasters more): the same classes
     dense = grid.rows * grid.cols < n
-    zmin = R.OccupiedMinima(pc.cell_min(z, base=base), pc.cells)  # remakes zmin to grow
+    zmin = R.OccupiedMinima(pc.cell_min(z, base=base), pc.cells, uses=2)  # remade to grow
     held = pc if dense else None
     del pc
+    if not dense:
+        bits, shape = np.packbits(need), need.shape
+        del need
+        need = lambda: np.unpackbits(bits, count=shape[0] * shape[1]).view(bool).reshape(shape)  # noqa: E731
     dtm = surface(zmin.raster(), grid, opt, rep, need=need, info=info, remake=zmin.raster,
                   chain=dense)
     del zmin
+    need = need() if callable(need) else need
     pc = held if dense else R.PointCells(x, y, grid, keep)
     rep(0.8)
     last = {}             # the refine passes change few cells: few points relabelled
@@ -355,20 +361,28 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     del dtm
     cache = {}            # the refine fills change few cells: each keeps most of the last
     flipped = None        # the points that turned ground or not in the last labelling:
-    for k in range(int(opt.refine)):                 # only their cells' minima are new
+    for k in range(int(opt.refine)):
         rep(0.8 + 0.2 * (k + 1) / (opt.refine + 1))
-        since = (last["dtm"], cache["valid"], flipped) \
-            if flipped is not None and cache.get("out") is last["dtm"] else None
-        zg = pc.cell_min(z, cls == GROUND, base=base, since=since)  # the last fill's valid
-        pc, since = (pc if dense else None), None    # sparse: not held through the fill
+        ground = cls == GROUND
+        if flipped is not None and cache.get("out") is last["dtm"]:   # the last fill's valid
+            cells, values = pc.minima_of(z, ground, flipped, base)    # cells, the flipped
+            pc = pc if dense else None                                # points' cells new
+            zg = np.where(cache["valid"], last["dtm"], np.nan)        # (R.PointCells.cell_min)
+            zg.ravel()[cells] = values
+            del cells, values
+        else:
+            zg = pc.cell_min(z, ground, base=base)
+        pc, ground = (pc if dense else None), None   # sparse: not held through the fill
         zg = fill_holes(zg, ~np.isnan(zg), grid, opt, need, cache, overwrite=True)
+        moved = R.changed(last["dtm"], zg)           # then the last DTM is not held further
+        last["dtm"] = None
         _trim()
         pc = pc if dense else R.PointCells(x, y, grid, keep)
-        was, cls = cls, label_points(z, zg, pc, opt, last, base)
+        was, cls = cls, label_points(z, zg, pc, opt, last, base, moved=moved)
         if k + 1 < opt.refine:
             flipped = (was == GROUND) != (cls == GROUND)
             flipped = np.flatnonzero(flipped if keep is None else flipped & keep)
-        del was
+        del was, moved
     rep(1.0)
     return cls
 
@@ -407,17 +421,22 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
     ndarray
         The provisional DTM.
     """
-    empty = np.isnan(zmin)
-    outside = outside_hull(~empty) if empty.any() else None
+    skip = np.isnan(zmin)                            # empty cells, then low outliers too
+    outside = outside_hull(~skip) if skip.any() else None
     lows = L.low_cells(zmin, grid.cell, step=opt.low_step, window=opt.low_window,
                        share=opt.low_share, anchor=grid.anchor,  # a catalog's factor
                        factor=None if info is None else info.get("canopy_factor"))
-    low = lows.low
+    skip |= lows.low                                 # never ground, nor grown into
+    if info is not None:
+        info.update(lows=lows)
+    del lows
     _trim()
-    zf = R.fill(zmin, ~(low | empty), grid.anchor, overwrite=remake is not None)
+    keep = ~skip
+    zf = R.fill(zmin, keep, grid.anchor, overwrite=remake is not None)
     if remake is not None:
         zmin = None
-    R.floor_steps(zf, ~(low | empty), wall_step(grid.cell, opt))
+    R.floor_steps(zf, keep, wall_step(grid.cell, opt))
+    del keep
     _trim()
     slope = opt.slope if opt.slope is not None else terrain_slope(zf, grid, opt, outside)
     _trim()
@@ -431,19 +450,17 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
     if zmin is None:
         zmin = remake()
     if opt.grow and opt.grow_iters > 0:
-        skip = low | empty
-        obj = grow_ground(zmin, obj, skip, lambda read: _fill_at(zmin, ~(obj | skip), read, grid,
-                                                               opt, cache, remake is not None),
-                          grid.cell, opt)
-        del skip
+        obj = grow_ground(zmin, obj, skip, lambda read, ground: _fill_at(
+            zmin, ground, read, grid, opt, cache, remake is not None), grid.cell, opt)
         _trim()
     if info is not None:
-        info.update(lows=lows, slope=slope, objects=obj)
-    good = obj | low | empty                         # the bad cells, negated in place
+        info.update(slope=slope, objects=obj)
+    good = obj | skip                                # the bad cells, negated in place
     if good.all():
-        good = low | empty
+        good = skip
     np.logical_not(good, out=good)
-    del obj, low, empty, lows                        # (the report's are in info)
+    del obj, skip                                    # (the report's are in info)
+    need = need() if callable(need) else need
     return fill_holes(zmin, good, grid, opt, need, cache, overwrite=remake is not None)
 
 
@@ -501,7 +518,7 @@ def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False):
 _CROSS = ndimage.generate_binary_structure(2, 1)
 
 
-def label_points(z, dtm, pc, opt, last=None, base=0.0):
+def label_points(z, dtm, pc, opt, last=None, base=0.0, moved=None):
     """Per-point classes against the DTM with a slope-dependent tolerance.
 
     Parameters
@@ -523,6 +540,9 @@ def label_points(z, dtm, pc, opt, last=None, base=0.0):
         not copied: the caller must not change it in place afterwards.
     base : float
         Height of the DTM's zero (:func:`._heights.height_base`).
+    moved : ndarray of bool, optional
+        ``R.changed(last["dtm"], dtm)`` taken by the caller (``last["dtm"]`` may then be
+        None: the previous DTM need not be held).
 
     Returns
     -------
@@ -530,7 +550,7 @@ def label_points(z, dtm, pc, opt, last=None, base=0.0):
         2 ground, 1 object, 7 low noise.
     """
     if last:
-        moved = R.changed(last["dtm"], dtm)
+        moved = R.changed(last["dtm"], dtm) if moved is None else moved
         pts = pc.reading(moved, ndimage.binary_dilation(moved, structure=_CROSS))
         del moved
         cls = last["classes"].copy()
