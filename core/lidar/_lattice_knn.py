@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import cKDTree
 
-__all__ = ["SCAN_D2", "knn_scan", "nearest", "ring_cells", "scan_lattice"]
+__all__ = ["SCAN_D2", "Scan", "knn_scan", "nearest", "ring_cells", "scan_lattice"]
 
 #: Largest squared offset (cells²) visited by :func:`knn_scan` (40 cells: a hole cell
 #: deeper inside a hole is searched in the KD-tree). 40 rather than 24: at 0.2 pts/m² a
@@ -38,24 +38,33 @@ def _offsets(d2max: int):
 _OFFSETS = _offsets(SCAN_D2)
 
 
-def scan_lattice(ring):
+def scan_lattice(ring, rows=None, first=None):
     """Prepare ``ring`` (bool raster of the cells searched) for :func:`knn_scan`.
 
     Returns the raster padded by the scan's reach holding each ring cell's index in
-    ``np.nonzero(ring)`` order (-1 elsewhere), the padding and the raster's shape.
+    ``np.nonzero(ring)`` order (-1 elsewhere), the padding, the raster's shape and the
+    first row. ``rows = (a, b)``: only what a scan from rows a..b-1 reads (rows a - pad
+    to b + pad), the indices still those of the whole raster (``first[i]``: ring cells
+    in the rows before row i, else counted here).
     """
-    rows, cols = ring.shape
+    nrows, cols = ring.shape
     pad = int(np.sqrt(SCAN_D2))
-    index = np.full((rows + 2 * pad, cols + 2 * pad), -1, np.int32 if ring.size < 2 ** 31
-                    else np.int64)
-    inner = index[pad:pad + rows, pad:pad + cols]
-    inner[ring] = np.arange(np.count_nonzero(ring), dtype=index.dtype)
-    return index, pad, ring.shape
+    a, b = (0, nrows) if rows is None else (int(rows[0]), int(rows[1]))
+    lo, hi = max(0, a - pad), min(nrows, b + pad)
+    it = np.int32 if ring.size < 2 ** 31 else np.int64
+    index = np.full((b - a + 2 * pad, cols + 2 * pad), -1, it)
+    part = ring[lo:hi]
+    n0 = 0 if lo == 0 else int(first[lo] if first is not None else np.count_nonzero(ring[:lo]))
+    inner = index[lo - a + pad:hi - a + pad, pad:pad + cols]
+    inner[part] = np.arange(n0, n0 + np.count_nonzero(part), dtype=it)
+    return index, pad, ring.shape, a
 
 
 def ring_cells(lattice):
-    """Rows and columns of the ring cells of a :func:`scan_lattice` (``np.nonzero`` order)."""
-    index, pad, (rows, cols) = lattice
+    """Rows and columns of the ring cells of a whole :func:`scan_lattice` (``np.nonzero`` order)."""
+    index, pad, (rows, cols), a = lattice
+    if a != 0 or index.shape[0] != rows + 2 * pad:
+        raise ValueError("ring_cells needs the whole lattice")  # i18n: internal
     return np.nonzero(index[pad:pad + rows, pad:pad + cols] >= 0)
 
 
@@ -79,7 +88,7 @@ def knn_scan(lattice, r, c, k: int):
         and row offsets (float64, shape (m, k)) ordered by (d², dr, dc), and ``j`` the
         index of each neighbour in ``np.nonzero(ring)`` order.
     """
-    index, pad, (rows, cols) = lattice
+    index, pad, (rows, cols), r0 = lattice
     odc, odr, od2 = _OFFSETS
     width = cols + 2 * pad
     flat = index.ravel()
@@ -88,7 +97,7 @@ def knn_scan(lattice, r, c, k: int):
     pick = np.zeros((k, m), np.int32)                # offset index of each neighbour
     found = np.zeros(m, np.int32)
     act = np.arange(m)
-    base = (r.astype(np.int64) + pad) * width + (c.astype(np.int64) + pad)
+    base = (r.astype(np.int64) - r0 + pad) * width + (c.astype(np.int64) + pad)
     for o0 in range(0, delta.size, _STEP):
         hit = flat[delta[o0:o0 + _STEP, None] + base] >= 0   # (offsets, active), scan order
         pos = np.cumsum(hit, axis=0, dtype=np.int32)
@@ -107,7 +116,8 @@ def knn_scan(lattice, r, c, k: int):
     dr = odr[pick].astype(np.float64)
     d2 = od2[pick].astype(np.float64)
     at = delta[pick]
-    at += ((r[done].astype(np.int64) + pad) * width + (c[done].astype(np.int64) + pad))[:, None]
+    at += ((r[done].astype(np.int64) - r0 + pad) * width
+           + (c[done].astype(np.int64) + pad))[:, None]
     j = flat[at].astype(np.int64)
     return done, d2, dc, dr, j
 
@@ -163,18 +173,18 @@ def _knn(tree, q, k: int, lattice):
     return dc * dc + dr * dr, dc, dr, j
 
 
-def nearest(scan, r, c, k: int, trees: list):
+def nearest(scan, r, c, k: int, trees: list, ring=None):
     """Return :func:`_knn`'s ``(d2, dc, dr, j)`` of the cells ``(r, c)``.
 
     Scanned on the lattice (:func:`knn_scan`: the same cells in the same order); the
-    KD-tree (built once into ``trees``) searches the cells whose ``k`` nearest lie
-    farther.
+    KD-tree (built once into ``trees``, from ``ring`` when the lattice covers some rows
+    only) searches the cells whose ``k`` nearest lie farther.
     """
     done, *near = knn_scan(scan, r, c, k)
     if done.all():
         return near
     if not trees:
-        rr, cc = ring_cells(scan)
+        rr, cc = ring_cells(scan) if ring is None else np.nonzero(ring)
         lattice = np.empty((rr.size, 2))             # float64: the tree keeps it, no copy
         lattice[:, 0], lattice[:, 1] = cc, rr
         trees += [cKDTree(lattice), lattice]
@@ -184,3 +194,35 @@ def nearest(scan, r, c, k: int, trees: list):
                                        trees[1])):
         o[done], o[far] = a, b
     return out
+
+
+class Scan:
+    """:func:`nearest` on lattices of :data:`SCAN_ROWS` rows at a time.
+
+    The whole padded lattice is an int32 raster (20 MB at 5 M cells); a band of rows
+    gives the same neighbours (the scan reads its reach around the band, the indices
+    are the whole ring's). Queries come sorted by row.
+    """
+
+    def __init__(self, ring):
+        self.ring, self.lattice = ring, None
+        self.first = np.concatenate(([0], np.cumsum(np.count_nonzero(ring, axis=1))))
+
+    def nearest(self, r, c, k, trees):
+        """Return ``(d2, dc, dr, j)`` of the cells ``(r, c)`` (sorted by row)."""
+        parts, s = [], 0
+        while s < r.size:
+            lat = self.lattice
+            if lat is None or not lat[3] <= r[s] < lat[3] + SCAN_ROWS:
+                a = int(r[s])
+                lat = self.lattice = scan_lattice(self.ring, (a, a + SCAN_ROWS), self.first)
+            e = int(np.searchsorted(r, lat[3] + SCAN_ROWS))
+            parts.append(nearest(lat, r[s:e], c[s:e], k, trees, ring=self.ring))
+            s = e
+        if len(parts) == 1:
+            return parts[0]
+        return [np.concatenate(a) for a in zip(*parts)]
+
+
+#: Rows per lattice of :class:`Scan`.
+SCAN_ROWS = 512

@@ -335,21 +335,19 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     if hr is None or hr.size:
         bz = z[rr, cc]
         few = hr is not None and hr.size <= BATCH    # few holes (refine): gradients where read
-        scan = K.scan_lattice(ring) if few else None
+        scan = K.Scan(ring)                          # lattices of some rows at a time
         if few:
-            near = K.nearest(scan, hr, hc, k, trees)
+            near = scan.nearest(hr, hc, k, trees)
             used = np.unique(near[3])
         if near is not None and used.size * (2 * radius + 1) ** 2 < z.size // 2:
             bgx, bgy = np.zeros(rr.size), np.zeros(rr.size)
             bgx[used], bgy[used] = gradient_of(z, valid, radius, cell, rr[used], cc[used])
         else:
             bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
-        if scan is None:            # after the banded gradients: their bands and it not at once
-            scan = K.scan_lattice(ring)
     del rr, cc, ring
     release_free_memory()       # the temporaries above: their pages back before the batches
     for r, c in _batches(holes, hr, hc):
-        d2, dc, dr, j = near if near is not None else K.nearest(scan, r, c, k, trees)
+        d2, dc, dr, j = near if near is not None else scan.nearest(r, c, k, trees)
         if d2k is not None:
             last = np.ceil(np.sqrt(d2[:, -1]))               # whole cells, rounded up
             d2k[r, c] = np.where(last < _NONE, last, _NONE)     # too far: not kept

@@ -130,6 +130,16 @@ def test_lattice_scan_finds_the_kd_trees_neighbours(k):
     assert len(trees) == 2                               # the tree built for the deep cells
     for a, b in zip(ref, both):
         np.testing.assert_array_equal(a, b)
+    for rows in (1, 7, 64):                              # lattices of a few rows at a time
+        K.SCAN_ROWS, keep = rows, K.SCAN_ROWS
+        try:
+            trees = []
+            banded = K.Scan(ring).nearest(hr, hc, k, trees)
+        finally:
+            K.SCAN_ROWS = keep
+        assert len(trees) == 2                           # the tree of the whole ring
+        for a, b in zip(ref, banded):
+            np.testing.assert_array_equal(a, b)
 
 
 def test_fill_and_box_mean_of_a_crop_equal_the_full_raster_inside():
