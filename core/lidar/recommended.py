@@ -337,11 +337,9 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     n = int(x.size if keep is None else keep.sum())
     if info is not None:
         info.update(options=opt, n=n, grid=grid)
-    # sparse (a cell or more per point: the rasters set the peak): the per-point look-ups
-    # are not held while whole rasters are worked on (a second PointCells of the same
-    # points is the same arrays), ``need`` is kept as bits meanwhile; dense: held (an
-    # argsort of the points each time, 0.25 s CPU per 4 M points) and the openings
-    # chained (two rasters more): the same classes
+    # sparse (the rasters set the peak): the per-point look-ups are not held through the
+    # rasters (rebuilt: the same arrays), ``need`` kept as bits; dense: held (an argsort,
+    # 0.25 s CPU per 4 M points) and the openings chained (two rasters more)
     dense = grid.rows * grid.cols < n
     zmin = R.OccupiedMinima(pc.cell_min(z, base=base), pc.cells, uses=2)  # remade to grow
     held = pc if dense else None
@@ -359,6 +357,15 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     last = {}             # the refine passes change few cells: few points relabelled
     cls = label_points(z, dtm, pc, opt, last, base)
     del dtm
+    held, pc = [pc], None
+    cls = _refine(x, y, z, cls, last, held, grid, opt, need, base, keep, dense, rep)
+    rep(1.0)
+    return cls
+
+
+def _refine(x, y, z, cls, last, held, grid, opt, need, base, keep, dense, rep):
+    """Step 8 (``held = [PointCells]``: sparse, it is dropped through each fill)."""
+    pc = held.pop()
     cache = {}            # the refine fills change few cells: each keeps most of the last
     flipped = None        # the points that turned ground or not in the last labelling:
     for k in range(int(opt.refine)):
@@ -383,7 +390,6 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
             flipped = (was == GROUND) != (cls == GROUND)
             flipped = np.flatnonzero(flipped if keep is None else flipped & keep)
         del was, moved
-    rep(1.0)
     return cls
 
 
@@ -427,8 +433,7 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
                        share=opt.low_share, anchor=grid.anchor,  # a catalog's factor
                        factor=None if info is None else info.get("canopy_factor"))
     skip |= lows.low                                 # never ground, nor grown into
-    if info is not None:
-        info.update(lows=lows)
+    info is not None and info.update(lows=lows)
     del lows
     _trim()
     keep = ~skip
