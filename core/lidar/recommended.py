@@ -438,8 +438,7 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
     _trim()
     keep = ~skip
     zf = R.fill(zmin, keep, grid.anchor, overwrite=remake is not None)
-    if remake is not None:
-        zmin = None
+    zmin = None if remake is not None else zmin      # zf's buffer: remade to grow
     R.floor_steps(zf, keep, wall_step(grid.cell, opt))
     del keep
     _trim()
