@@ -202,6 +202,15 @@ def test_dask_run_summarises_on_the_strip_decodes(step, tmp_path):
     assert 0.3 < saved["derived"]["density"] < 1.0 and not saved["derived"]["water_input"]
     cpu = res.settings["first_pass_seconds"][1]
     assert 0 < cpu < sum(c["phases"]["read"][1] for c in res.chunks)   # no decode of its own
+    # the chunks' canopy tallies on the workers (from the strips) == in this process
+    cat = cc.Catalog.open(str(tiles))
+    tasks = cc.plan_tasks(cat, tmp_path / "o2", ground_filter="groundfilter",
+                          dtm_method="idw", cell_size=2.0, buffer=100.0)
+    (tmp_path / "o2" / cc.STATE_DIR).mkdir(parents=True)
+    here = cc.first_pass(cat, tasks, tmp_path / "o2")["derived"]
+    assert saved["derived"]["canopy_counts"] == here["canopy_counts"]
+    assert sum(here["canopy_counts"][1]) > 0 and saved["derived"]["canopy_factor"] == \
+        here["canopy_factor"]
 
 
 @pytest.fixture(scope="module")
