@@ -20,6 +20,7 @@ Cost: a tally reads its chunk and builds the filter's minimum raster once more.
 """
 from __future__ import annotations
 
+import time
 from typing import Sequence
 
 import numpy as np
@@ -88,19 +89,21 @@ def tally_chunk(task: ChunkTask, *strips, summary=None) -> dict:
     Reads the chunk as :func:`._chunks.process_chunk` does (its tile, the neighbours'
     strips) and runs the recommended filter up to its minimum raster.
     """
+    t0, c0 = time.perf_counter(), time.process_time()
     single_threaded()
     if summary is not None:
         apply_summary([task], summary)
     xyz, dims, core, _ = _read(task, strips if task.tile and strips else None)
-    if not core.any() or task.filter_origin is None:
-        return _zero()
-    pts, flt, origin = chunk_filter(task, xyz, dims)
-    flt.canopy_owned = lambda grid, f, shape: owned_blocks(task, grid, f, shape)
-    try:
-        run = run_filter(pts, flt, default_selection(task.ground_filter), origin=origin)
-    except InputError:          # too few points to filter: no raster (filter_sparse_chunk)
-        return _zero()
-    return run.outcome.details
+    out = _zero()
+    if core.any() and task.filter_origin is not None:
+        pts, flt, origin = chunk_filter(task, xyz, dims)
+        flt.canopy_owned = lambda grid, f, shape: owned_blocks(task, grid, f, shape)
+        try:
+            out = run_filter(pts, flt, default_selection(task.ground_filter),
+                             origin=origin).outcome.details
+        except InputError:      # too few points to filter: no raster (filter_sparse_chunk)
+            pass
+    return {**out, "seconds": [time.perf_counter() - t0, time.process_time() - c0]}
 
 
 def with_canopy(summary: dict, *tallies, folder=None) -> dict:
@@ -108,6 +111,9 @@ def with_canopy(summary: dict, *tallies, folder=None) -> dict:
     pits = np.sum([t["pits"] for t in tallies], axis=0) if tallies else [0] * len(FACTORS)
     blocks = np.sum([t["blocks"] for t in tallies], axis=0) if tallies else pits
     out = dict(summary)
+    # the tallies' wall and CPU seconds on the workers (the cost of the canopy scale)
+    out["canopy_seconds"] = [float(sum(t.get("seconds", (0, 0))[i] for t in tallies))
+                             for i in (0, 1)]
     out["derived"] = dict(summary.get("derived") or {},
                           canopy_factor=choose_factor(pits, blocks),
                           canopy_counts=[[int(v) for v in pits], [int(v) for v in blocks]])

@@ -488,6 +488,9 @@ def _result_settings(cat, tasks, gap, summary, ran: bool) -> dict:
                 first_pass_seconds=(summary.get("seconds") if ran else [0.0, 0.0])
                 if summary else None,
                 first_pass=("run" if ran else "reused") if summary else None,
+                # and of the chunks' canopy tallies (:mod:`._canopy`), if the filter has them
+                canopy_seconds=(summary.get("canopy_seconds") if ran else [0.0, 0.0])
+                if "canopy_seconds" in summary else None,
                 origin=tasks[0].origin, keys=[t.key for t in tasks],
                 bounds=[list(t.bounds) for t in tasks],
                 # metres (tiles in feet: converted), as a single-file run reports it

@@ -138,6 +138,8 @@ def test_resume_reuses_a_valid_first_pass_and_says_it_spent_nothing(tiles, tmp_p
     assert again.skipped == ["t0"]
     assert again.settings["first_pass"] == "reused"
     assert again.settings["first_pass_seconds"] == [0.0, 0.0]   # was the first run's
+    assert first.settings["canopy_seconds"][1] > 0            # the chunks' canopy tallies
+    assert again.settings["canopy_seconds"] == [0.0, 0.0]
     assert json.loads((out / cc.STATE_DIR / "summary.json").read_text()) == saved
 
 
