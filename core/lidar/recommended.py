@@ -349,7 +349,7 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
         del need
         need = lambda: np.unpackbits(bits, count=shape[0] * shape[1]).view(bool).reshape(shape)  # noqa: E731
     dtm = surface(zmin.raster(), grid, opt, rep, need=need, info=info, remake=zmin.raster,
-                  chain=dense)
+                  dense=dense)
     del zmin
     need = need() if callable(need) else need
     pc = held if dense else R.PointCells(x, y, grid, keep)
@@ -383,7 +383,7 @@ def _refine(x, y, z, cls, last, held, grid, opt, need, base, keep, dense, rep):
         zg = fill_holes(zg, ~np.isnan(zg), grid, opt, need, cache, overwrite=True)
         moved = R.changed(last["dtm"], zg)           # then the last DTM is not held further
         last["dtm"] = None
-        _trim()
+        dense or _trim()                             # dense: small rasters, no trims
         pc = pc if dense else R.PointCells(x, y, grid, keep)
         was, cls = cls, label_points(z, zg, pc, opt, last, base, moved=moved)
         if k + 1 < opt.refine:
@@ -394,7 +394,7 @@ def _refine(x, y, z, cls, last, held, grid, opt, need, base, keep, dense, rep):
 
 
 def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
-            chain=False):
+            dense=False):
     """Provisional bare-earth raster from the minimum surface (steps 2-6).
 
     Object, low and empty cells are filled by :func:`fill_holes`.
@@ -419,8 +419,8 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
         ``remake()`` returns ``zmin`` again: ``zmin`` is then used as scratch space and
         dropped through the openings (one raster less held), and the caller must hold
         no other reference to it.
-    chain : bool
-        Progressive openings by the erosion chain (:func:`._openings.openings`).
+    dense : bool
+        Fewer cells than points: openings chained (:func:`._openings.openings`), no trims.
 
     Returns
     -------
@@ -435,18 +435,18 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
     skip |= lows.low                                 # never ground, nor grown into
     info is not None and info.update(lows=lows)
     del lows
-    _trim()
+    dense or _trim()
     keep = ~skip
     zf = R.fill(zmin, keep, grid.anchor, overwrite=remake is not None)
     zmin = None if remake is not None else zmin      # zf's buffer: remade to grow
     R.floor_steps(zf, keep, wall_step(grid.cell, opt))
     del keep
-    _trim()
+    dense or _trim()
     slope = opt.slope if opt.slope is not None else terrain_slope(zf, grid, opt, outside)
-    _trim()
+    dense or _trim()
     if opt.trend_window > 0 and opt.trend_smooth > 0:
         trend_surface(zf, grid, opt, True, outside)  # zf: the fill's own array
-    obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep, True, outside, chain)
+    obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep, True, outside, dense)
     del zf, outside
     if np.ndim(slope):                               # the report reads min / median / max
         slope = None if info is None else np.array(  # median: partitions in place, no copy
@@ -456,7 +456,7 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
     if opt.grow and opt.grow_iters > 0:
         obj = grow_ground(zmin, obj, skip, lambda read, ground: _fill_at(
             zmin, ground, read, grid, opt, cache, remake is not None), grid.cell, opt)
-        _trim()
+        dense or _trim()
     if info is not None:
         info.update(slope=slope, objects=obj)
     good = obj | skip                                # the bad cells, negated in place
