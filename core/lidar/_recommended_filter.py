@@ -336,15 +336,17 @@ class RecommendedFilter(OptionsFilter):
                 x, y, z, opts, origin, self.canopy_owned, None if every else take))
         got = self.func(x, y, z, options=opts, progress=mon.update, cancel=mon.cancelled,
                         origin=origin, info=info, keep=None if every else take)
-        if every:
+        dry = not (water.any() or cand_water.any())   # then ``take`` is ``keep``: got's
+        if dry:                                       # classes (the others dropped below)
             cls = got
         else:
             cls[take] = got[take]
-        cls[water] = WATER
-        if keep is not None:
-            cls, water, cand_water = cls[keep], water[keep], cand_water[keep]
-        cls = check_classes(self.name, cls, cls.size)
-        return FilterOutcome(cls, details=derived(info, cls, water.sum(), cand_water.sum()))
+            cls[water] = WATER
+        count = (lambda m: 0) if dry else (lambda m: int(np.count_nonzero(  # noqa: E731
+            m if keep is None else m & keep)))
+        cls = check_classes(self.name, cls if keep is None else cls[keep],
+                            n if keep is None else int(np.count_nonzero(keep)))
+        return FilterOutcome(cls, details=derived(info, cls, count(water), count(cand_water)))
 
     def report_sections(self, run, report, tr) -> None:
         """Add "Derived from the cloud" (values that ran) and the warnings."""
