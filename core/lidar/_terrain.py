@@ -133,7 +133,9 @@ def _opened(zf, r, outside, anchor):
     """
     if outside is None or not outside.any():
         return R.opening(zf, r)
-    op = R.opening(zf.copy(), r, outside=outside)
+    saved = zf[outside]                  # not a copy of zf: its values there, put back
+    op = R.opening(zf, r, outside=outside)           # (which sets them to +inf)
+    zf[outside] = saved
     return R.fill(op, ~outside, anchor, overwrite=True)
 
 

@@ -80,10 +80,8 @@ from dataclasses import dataclass, replace
 from typing import Optional
 
 import numpy as np
-from scipy import ndimage
 
-from ..classes import GROUND, LOW_NOISE
-from ..classes import UNCLASSIFIED as OBJECT
+from ..classes import GROUND
 from ..errors import InputError
 from ..progress import Cancelled, Monitor
 from ..reporting import T
@@ -93,6 +91,7 @@ from . import _raster as R  # noqa: N812
 from . import _surface as S  # noqa: N812
 from ._filter import OptionsFilter
 from ._filter import options_or_default as _options
+from ._labels import label_points
 from ._surface import grow_ground
 from ._terrain import outside_hull, progressive_objects, terrain_slope, trend_surface, wall_step  # noqa: F401
 
@@ -351,6 +350,7 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     dtm = surface(zmin.raster(), grid, opt, rep, need=need, info=info, remake=zmin.raster,
                   dense=dense)
     del zmin
+    dense or _trim()
     need = need() if callable(need) else need
     pc = held if dense else R.PointCells(x, y, grid, keep)
     rep(0.8)
@@ -370,6 +370,7 @@ def _refine(x, y, z, cls, last, held, grid, opt, need, base, keep, dense, rep):
     flipped = None        # the points that turned ground or not in the last labelling:
     for k in range(int(opt.refine)):
         rep(0.8 + 0.2 * (k + 1) / (opt.refine + 1))
+        dense or _trim()                             # the labelling's pages back
         ground = cls == GROUND
         if flipped is not None and cache.get("out") is last["dtm"]:   # the last fill's valid
             cells, values = pc.minima_of(z, ground, flipped, base)    # cells, the flipped
@@ -377,12 +378,14 @@ def _refine(x, y, z, cls, last, held, grid, opt, need, base, keep, dense, rep):
             zg = np.where(cache["valid"], last["dtm"], np.nan)        # (R.PointCells.cell_min)
             zg.ravel()[cells] = values
             del cells, values
-        else:
-            zg = pc.cell_min(z, ground, base=base)
+        else:                    # first pass: most cells change, every point is labelled
+            zg = pc.cell_min(z, ground, base=base)   # (the same classes): the surface's DTM
+            last.clear()                             # is not held through the fill
         pc, ground = (pc if dense else None), None   # sparse: not held through the fill
         zg = fill_holes(zg, ~np.isnan(zg), grid, opt, need, cache, overwrite=True)
-        moved = R.changed(last["dtm"], zg)           # then the last DTM is not held further
-        last["dtm"] = None
+        moved = None
+        if last:                                     # the last DTM not held further
+            moved, last["dtm"] = R.changed(last["dtm"], zg), None
         dense or _trim()                             # dense: small rasters, no trims
         pc = pc if dense else R.PointCells(x, y, grid, keep)
         was, cls = cls, label_points(z, zg, pc, opt, last, base, moved=moved)
@@ -446,8 +449,10 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
     dense or _trim()
     if opt.trend_window > 0 and opt.trend_smooth > 0:
         trend_surface(zf, grid, opt, True, outside)  # zf: the fill's own array
+        dense or _trim()
     obj = progressive_objects(zf, grid.cell, opt.max_window, slope, rep, True, outside, dense)
     del zf, outside
+    dense or _trim()                                 # the openings' pages back before growing
     if np.ndim(slope):                               # the report reads min / median / max
         slope = None if info is None else np.array(  # median: partitions in place, no copy
             (slope.min(), np.median(slope, overwrite_input=True), slope.max()))
@@ -516,71 +521,6 @@ def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False):
                           radius=max(1, int(round(opt.fill_radius / grid.cell))),
                           neighbours=opt.fill_neighbours, reach=opt.fill_reach, need=need,
                           cache=cache, overwrite=overwrite)
-
-
-#: Stencil of a central-difference slope cell (:func:`._raster.slope`).
-_CROSS = ndimage.generate_binary_structure(2, 1)
-
-
-def label_points(z, dtm, pc, opt, last=None, base=0.0, moved=None):
-    """Per-point classes against the DTM with a slope-dependent tolerance.
-
-    Parameters
-    ----------
-    z : ndarray
-        Heights.
-    dtm : ndarray
-        Cell-centred DTM raster (heights above ``base``; float32 or float64).
-    pc : PointCells
-        Per-point cell look-ups.
-    opt : RecommendedOptions
-        Options.
-    last : dict, optional
-        The previous call's DTM and classes (filled here when empty): only the points
-        reading a cell whose value changed are labelled again
-        (:meth:`._raster.PointCells.reading`; a slope cell can change only where the DTM
-        changed in it or its 4 neighbours, the central differences' stencil), the others
-        keep their class - the same classes as labelling every point. The DTM is kept,
-        not copied: the caller must not change it in place afterwards.
-    base : float
-        Height of the DTM's zero (:func:`._heights.height_base`).
-    moved : ndarray of bool, optional
-        ``R.changed(last["dtm"], dtm)`` taken by the caller (``last["dtm"]`` may then be
-        None: the previous DTM need not be held).
-
-    Returns
-    -------
-    ndarray of uint8
-        2 ground, 1 object, 7 low noise.
-    """
-    if last:
-        moved = R.changed(last["dtm"], dtm) if moved is None else moved
-        pts = pc.reading(moved, ndimage.binary_dilation(moved, structure=_CROSS))
-        del moved
-        cls = last["classes"].copy()
-    else:
-        pts = None
-        cls = np.empty(z.size, dtype=np.uint8)
-    n = z.size if pts is None else pts.size
-    # the slope raster where there are fewer cells than points to label, else the slope
-    # at their cells only (no full-size raster at low density): the same values
-    slope = R.slope(dtm, pc.grid.cell) if n >= dtm.size else None
-    for s in range(0, n, R.CHUNK):                   # in blocks: same values, in cache
-        p = slice(s, s + R.CHUNK) if pts is None else pts[s:s + R.CHUNK]
-        dz = pc.bilinear(dtm, p)                     # float64
-        np.subtract(z[p] - base if base else z[p], dz, out=dz)   # z[p] may be a view
-        tol = pc.nearest(slope, p) if slope is not None else \
-            R.slope_at(dtm, pc.grid.cell, pc.idx[p])
-        tol *= opt.scaler
-        tol += opt.threshold
-        c = np.full(dz.size, OBJECT, dtype=np.uint8)
-        c[np.abs(dz) <= tol] = GROUND
-        np.maximum(tol, opt.low_noise_depth, out=tol)
-        c[dz < -tol] = LOW_NOISE
-        cls[p] = c
-    if last is not None:
-        last.update(dtm=dtm, classes=cls)
-    return cls
 
 
 def recommended_filter(options: Optional[RecommendedOptions] = None):
