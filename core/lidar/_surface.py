@@ -555,7 +555,6 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
         zmin, ~skip, rad, lambda b, rms, centre, gx, gy: _grow_candidates(
             b, rms, centre, gx, gy, zmin, obj, skip, cell, opt))
     at = np.flatnonzero(cand)                        # cells of the kept values, sorted
-    release_free_memory()       # the planes' band temporaries: their pages back before the fill
     dtm = dtm(cand, ground) if callable(dtm) else dtm.ravel()[at]
     with np.errstate(invalid="ignore"):
         keep = zmin.ravel()[at] - dtm <= opt.grow_max_rise

@@ -459,8 +459,10 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
     if zmin is None:
         zmin = remake()
     if opt.grow and opt.grow_iters > 0:
-        obj = grow_ground(zmin, obj, skip, lambda read, ground: _fill_at(
-            zmin, ground, read, grid, opt, cache, remake is not None), grid.cell, opt)
+        def dtm_at(read, ground):
+            dense or _trim()                         # the planes' pages back before the fill
+            return _fill_at(zmin, ground, read, grid, opt, cache, remake is not None)
+        obj = grow_ground(zmin, obj, skip, dtm_at, grid.cell, opt)
         dense or _trim()
     if info is not None:
         info.update(slope=slope, objects=obj)
