@@ -69,3 +69,51 @@ def test_given_factor_is_the_one_low_cells_would_choose():
     other = L.low_cells(z, 1.0, anchor=(5, 7), factor=L.FACTORS[-1] if f != L.FACTORS[-1]
                         else L.FACTORS[0])
     assert not np.array_equal(other.low, own.low)          # the factor matters here
+
+
+def test_chunk_tallies_add_up_to_the_merged_raster_beyond_the_buffer(tmp_path, monkeypatch):
+    """A closed forest (left half thinned) cut into two tiles, as tiles and as 100 m
+    boxes: over the blocks farther than the buffer from the outer edge, the chunks'
+    tallies summed equal the single-file run's counts, every factor. (Within the buffer of
+    the outer edge a chunk's raster ends otherwise: 600 m forest, 23 of 26,779 pits.)"""
+    from geomatics_toolbox.core.io.las import PointData, read_las, write_las
+    from geomatics_toolbox.core.lidar import catalog as cc
+    from geomatics_toolbox.core.lidar.filters import default_selection, ground_filter, run_filter
+    from geomatics_toolbox.synthetic import landscapes
+    s = landscapes.closed_forest(extent=300.0, density=2.0, ground_share=0.05, seed=2)
+    keep = (s.x >= 150) | (np.random.default_rng(1).random(s.x.size) < 0.4)
+    x, y, z = s.x[keep] + 500_000.0, s.y[keep] + 4_000_000.0, s.z[keep]
+    d = tmp_path / "tiles"
+    d.mkdir()
+    parts = []
+    for i, m in enumerate((x < 500_150.0, x >= 500_150.0)):
+        write_las(d / f"t{i}.las", x[m], y[m], z[m], dimensions={"classification": np.ones(
+            int(m.sum()), np.uint8)}, crs="EPSG:32632", scale=0.01)
+        parts.append(read_las(d / f"t{i}.las", ("classification",)))
+    pts = PointData(*(np.concatenate([getattr(p, a) for p in parts]) for a in "xyz"),
+                    {"classification": np.concatenate([p["classification"] for p in parts])})
+    buffer = 50.0
+    cat = cc.Catalog.open(str(d))
+    e = cat.extent
+
+    def interior(grid, f, shape, origin):
+        r0, c0 = grid.anchor[0] // f, grid.anchor[1] // f
+        ys = origin[1] + ((r0 + np.arange(shape[0])) * f + 0.5) * grid.cell
+        xs = origin[0] + ((c0 + np.arange(shape[1])) * f + 0.5) * grid.cell
+        return (((ys > e[1] + buffer) & (ys < e[3] - buffer))[:, None]
+                & ((xs > e[0] + buffer) & (xs < e[2] - buffer))[None, :])
+    flt = ground_filter("groundfilter")
+    corner = (float(pts.x.min()), float(pts.y.min()))
+    flt.canopy_owned = lambda grid, f, shape: interior(grid, f, shape, corner)
+    merged = run_filter(pts, flt, default_selection("groundfilter")).outcome.details
+    assert min(merged["pits"][:3]) > 0 and min(merged["blocks"]) > 0
+    owned = _canopy.owned_blocks
+    monkeypatch.setattr(_canopy, "owned_blocks", lambda t, grid, f, shape: owned(
+        t, grid, f, shape) & interior(grid, f, shape, t.filter_origin))
+    for size in (0.0, 100.0):
+        out = tmp_path / f"out{size:g}"
+        tasks = cc.plan_tasks(cat, out, ground_filter="groundfilter", dtm_method="idw",
+                              cell_size=2.0, buffer=buffer, chunk_size=size)
+        (out / cc.STATE_DIR).mkdir(parents=True)
+        got = cc.first_pass(cat, tasks, out)["derived"]["canopy_counts"]
+        assert got == [merged["pits"], merged["blocks"]], size
