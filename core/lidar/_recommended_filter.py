@@ -28,7 +28,14 @@ from ..progress import Monitor
 from ..reporting import KeyValues, Paragraph, T
 from . import _raster as R  # noqa: N812
 from ._filter import FilterOutcome, OptionsFilter, check_classes
-from ._summary import DENSITY_CELL, cloud_summary, highest, lowest, recommended_values
+from ._summary import (
+    DENSITY_CELL,
+    cloud_summary,
+    highest,
+    lowest,
+    recommended_values,
+    world_cells,
+)
 
 __all__ = ["Derived", "RecommendedFilter", "water_candidates", "LABELS"]
 
@@ -90,9 +97,7 @@ def water_candidates(x, y, z, *, density: Optional[float] = None,
     size = shape[0] * shape[1]
 
     def ids(xs, ys):                                 # the cells of points, row-major
-        i = (np.floor(ys / cell) - y0).astype(np.int64)
-        i *= shape[1]
-        i += (np.floor(xs / cell) - x0).astype(np.int64)
+        i = world_cells(xs, ys, cell, int(x0), int(y0), shape[1], row_major=True)
         if keep is not None:                         # points left out may lie outside
             np.clip(i, 0, size - 1, out=i)
         return i

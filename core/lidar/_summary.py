@@ -38,7 +38,8 @@ from .. import classes as asprs
 from ..io.las import iter_las_chunks
 
 __all__ = ["DENSITY_CELL", "SUMMARY_FILE", "cell_counts", "cloud_summary", "final", "load",
-           "merge", "recommended_values", "save", "strip_summary", "summarise", "tile_summary"]
+           "merge", "recommended_values", "save", "strip_summary", "summarise", "tile_summary",
+           "world_cells"]
 
 #: side (m) of the world-lattice cells over which the recommended filter counts density
 DENSITY_CELL = 5.0
@@ -105,13 +106,13 @@ def cell_counts(x, y, cell: float, shared: Sequence = (), keep=None) -> dict:
             xb, yb = x[s:s + _BLOCK], y[s:s + _BLOCK]
             if keep is not None:
                 xb, yb = xb[keep[s:s + _BLOCK]], yb[keep[s:s + _BLOCK]]
-            cnt += np.bincount(_keys(xb, yb, cell, x0, y0, ny), minlength=size)
+            cnt += np.bincount(world_cells(xb, yb, cell, x0, y0, ny), minlength=size)
         occ = np.flatnonzero(cnt)
         cnt = cnt[occ]
     else:
         if keep is not None:
             x, y = x[keep], y[keep]
-        local = _keys(x, y, cell, x0, y0, ny)
+        local = world_cells(x, y, cell, x0, y0, ny)
         if int(local.max()) < 4 * local.size + 1_000_000:      # O(n) count on a small box
             cnt = np.bincount(local)
             occ = np.flatnonzero(cnt)
@@ -134,15 +135,25 @@ _BOX_CELLS = 1 << 20
 _BLOCK = 1 << 16
 
 
-def _keys(x, y, cell: float, x0: int, y0: int, ny: int) -> np.ndarray:
-    """Cell key ``(column - x0) * ny + (row - y0)`` of each point (int64)."""
-    ix = np.floor(x / cell).astype(np.int64)
-    ix -= x0
-    ix *= ny
-    iy = np.floor(y / cell).astype(np.int64)
-    iy -= y0
-    ix += iy
-    return ix
+def world_cells(x, y, cell: float, x0: int, y0: int, n: int, *,
+                row_major: bool = False) -> np.ndarray:
+    """Key of each point's cell of the world lattice (multiples of ``cell``), int64.
+
+    ``(column - x0) * n + (row - y0)`` (``n`` rows), or with ``row_major``
+    ``(row - y0) * n + (column - x0)`` (``n`` columns); column = floor(x / cell). The
+    one world-lattice cell key of the package: the density counts here and the water
+    test's cells (:func:`._recommended_filter.water_candidates`). A filter's raster lies
+    on the lattice through its corner instead (``_raster.Grid.index``).
+    """
+    a, b = (y, x) if row_major else (x, y)
+    a0, b0 = (y0, x0) if row_major else (x0, y0)
+    ia = np.floor(a / cell).astype(np.int64)
+    ia -= a0
+    ia *= n
+    ib = np.floor(b / cell).astype(np.int64)
+    ib -= b0
+    ia += ib
+    return ia
 
 
 def _merge_cells(parts: Sequence[dict]) -> dict:
