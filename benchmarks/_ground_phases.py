@@ -16,8 +16,11 @@ import time
 import numpy as np
 
 #: Grid shifts (dx, dy) in metres (cells of 1 m at ISPRS density): the corner, the three
-#: half-cell ones, a quarter-cell one and a whole-cell one.
-SHIFTS = ((0.0, 0.0), (0.5, 0.0), (0.0, 0.5), (0.5, 0.5), (0.25, 0.75), (3.0, 5.0))
+#: half-cell ones, a quarter-cell one, a whole-cell one, and two empty bands along the
+#: raster's lower and left edges (16 and 32 cells: the fill pyramid's blocks of 32 and 64
+#: cells then start elsewhere on the data).
+SHIFTS = ((0.0, 0.0), (0.5, 0.0), (0.0, 0.5), (0.5, 0.5), (0.25, 0.75), (3.0, 5.0),
+          (16.0, 16.0), (32.0, 32.0))
 
 
 def phases_section(load, samples, shifts=SHIFTS):
@@ -42,8 +45,8 @@ def phases_md(res, smrf=None):
          "Total error (%) of the recommended filter at its defaults with the raster's "
          "corner at (x.min() - dx, y.min() - dy), shifts (dx, dy) in metres (1 m cells): "
          "(0, 0) is the corner every other table uses. Sub-cell shifts change the cell of "
-         "every point; (3, 5) only where the raster and the push-pull fill's 2 x 2 blocks "
-         "start.", "",
+         "every point; (3, 5), (16, 16) and (32, 32) only where the raster and the push-pull "
+         "fill's blocks start.", "",
          f"| sample | {head} | mean | max - min |" + (" SMRF (corner) |" if smrf else ""),
          "|---|" + "---|" * (len(shifts) + 2) + ("---|" if smrf else "")]
     t = np.array([rows[s] for s in rows])
