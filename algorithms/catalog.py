@@ -14,6 +14,7 @@ from qgis.core import (
     QgsProcessingParameterString,
 )
 
+from ..core.io.contract import Terminated
 from ..core.lidar import catalog as core_cat
 from ..core.lidar.catalog_report import catalog_report, catalog_warnings
 from ..core.progress import Cancelled
@@ -195,14 +196,21 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
             try:
                 res = self.run_tiles(cat, folder, fkey, dkey, workers, parameters, context,
                                feedback, done)
-            except Cancelled:
+            except (Cancelled, Terminated) as exc:
                 kept = core_cat.finished_chunks(folder)
                 if not kept:
                     raise
-                raise QgsProcessingException(self.tr(
-                    "Cancelled by the user. {n} finished tile(s) are kept in {folder}: run "
-                    "again with the same settings to resume; unfinished tiles left "
-                    "nothing.").format(n=len(kept), folder=folder)) from None
+                if isinstance(exc, Terminated):
+                    message = self.tr(
+                        "Terminated. {n} finished tile(s) are kept in {folder}: run again "
+                        "with the same settings to resume; unfinished tiles left nothing.")
+                else:
+                    message = self.tr(
+                        "Cancelled by the user. {n} finished tile(s) are kept in {folder}: "
+                        "run again with the same settings to resume; unfinished tiles left "
+                        "nothing.")
+                raise QgsProcessingException(
+                    message.format(n=len(kept), folder=folder)) from None
             for warning in catalog_warnings(res):
                 feedback.pushWarning(self.core_message(warning))
             if out.requested(self.OUTPUT_HTML):

@@ -405,6 +405,10 @@
             <source>Cells are nodata where a DTM of all the tiles as one file would leave them empty: farther than five mean ground spacings from ground (TIN: triangles with an edge over twice that), derived from the whole catalog once every tile is done.</source>
             <translation>تكون الخلايا بلا بيانات حيث يتركها نموذج التضاريس الرقمي لكل البلاطات كملف واحد فارغة: أبعد من خمسة أضعاف متوسط التباعد بين نقاط الأرض عن الأرض (في TIN: المثلثات التي يزيد أحد أضلاعها عن ضعف ذلك)، وتُشتق هذه المسافة من الفهرس كله بعد انتهاء كل البلاطات.</translation>
         </message>
+        <message>
+            <source>Terminated. {n} finished tile(s) are kept in {folder}: run again with the same settings to resume; unfinished tiles left nothing.</source>
+            <translation>أُنهي التشغيل. أُبقيت {n} بلاطة منجزة في {folder}: شغّل مجدداً بالإعدادات نفسها للاستئناف؛ البلاطات غير المنجزة لم تترك شيئاً.</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>

@@ -405,6 +405,10 @@
             <source>Cells are nodata where a DTM of all the tiles as one file would leave them empty: farther than five mean ground spacings from ground (TIN: triangles with an edge over twice that), derived from the whole catalog once every tile is done.</source>
             <translation>سلول‌ها در جایی بدون داده‌اند که مدل رقومی زمینِ همهٔ کاشی‌ها به‌صورت یک فایل آن‌ها را خالی می‌گذارد: دورتر از پنج برابر میانگین فاصلهٔ نقاط زمین از زمین (در TIN: مثلث‌هایی که یک ضلعشان بیش از دو برابر آن است)؛ این فاصله پس از پایان همهٔ کاشی‌ها از کل کاتالوگ به دست می‌آید.</translation>
         </message>
+        <message>
+            <source>Terminated. {n} finished tile(s) are kept in {folder}: run again with the same settings to resume; unfinished tiles left nothing.</source>
+            <translation>اجرا متوقف شد. {n} کاشیِ تمام‌شده در {folder} نگه داشته شد: برای ادامه با همان تنظیمات دوباره اجرا کنید؛ کاشی‌های ناتمام چیزی به جا نگذاشتند.</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>

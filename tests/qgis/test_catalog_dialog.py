@@ -96,3 +96,27 @@ def test_cancel_keeps_finished_tiles_and_says_so(qgis_processing, tiles, tmp_pat
     assert len(kept) == n and set(logged) <= set(kept)
     ran = sorted(x.split(" ")[1] for x in fb2.lines if " done: " in x)
     assert sorted(kept + ran) == ["t0", "t1", "t2"]
+
+
+def test_terminate_keeps_finished_tiles_and_says_so(qgis_processing, tiles, tmp_path,
+                                                    monkeypatch):
+    """SIGTERM after tiles finished (Terminated from the catalog's sigterm_raises): the
+    message names the kept tiles and the resume, not "no output was written"."""
+    from qgis.core import QgsProcessingException
+
+    from geomatics_toolbox.algorithms import catalog as alg_catalog
+    from geomatics_toolbox.core.io.contract import Terminated
+    real = alg_catalog.core_cat.run_catalog
+
+    def run_then_terminated(*args, **kwargs):
+        real(*args, **kwargs)
+        raise Terminated("Terminated by signal 15")
+    monkeypatch.setattr(alg_catalog.core_cat, "run_catalog", run_then_terminated)
+    out = tmp_path / "out"
+    with pytest.raises(QgsProcessingException) as err:
+        qgis_processing.run(ALG, {"INPUT": str(tiles), "GROUND_FILTER": 0, "CELL_SIZE": 2.0,
+                                  "BUFFER": 20.0, "WORKERS": 1, "OUTPUT_FOLDER": str(out)},
+                            feedback=_Feedback().feedback)
+    text = str(err.value)
+    assert "no output was written" not in text
+    assert f"Terminated. 3 finished tile(s) are kept in {out}" in text
