@@ -243,7 +243,7 @@ class OutputContract:
                  inputs: Mapping[str, object] = (), point_clouds: Iterable[str] = ()):
         self.finals = check_paths(outputs, inputs, point_clouds=point_clouds)
         self._temps: Dict[str, Path] = {}
-        self._old_handler = None
+        self._sigterm = None
         self.committed = False
 
     # ------------------------------------------------------------------ paths
@@ -276,9 +276,8 @@ class OutputContract:
     # ------------------------------------------------------------------ life cycle
     def __enter__(self) -> OutputContract:
         """Start the run: ``SIGTERM`` now removes the temporaries (main thread only)."""
-        if threading.current_thread() is threading.main_thread():
-            with contextlib.suppress(ValueError, OSError):
-                self._old_handler = signal.signal(signal.SIGTERM, _raise_terminated)
+        self._sigterm = sigterm_raises()
+        self._sigterm.__enter__()
         return self
 
     def __exit__(self, exc_type, exc, tb) -> bool:
@@ -289,9 +288,7 @@ class OutputContract:
             else:
                 self.discard()
         finally:
-            if self._old_handler is not None:
-                with contextlib.suppress(ValueError, OSError):
-                    signal.signal(signal.SIGTERM, self._old_handler)
+            self._sigterm.__exit__(None, None, None)
         return False
 
     def discard(self) -> None:
