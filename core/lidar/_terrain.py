@@ -117,9 +117,29 @@ def outside_hull(occupied):
         eq = ConvexHull(pts.astype(float)).equations     # a col + b row + c <= 0 inside
     except QhullError:
         return out
+    def outside(i, c):       # the test at cells (i, c), the same arithmetic everywhere
+        return ((eq[:, 0:1] * c + eq[:, 1:2] * i + eq[:, 2:3]) > 1e-9).any(axis=0)
+
+    # Each facet's test is monotone along a row (rounding is monotone), so a row's inside
+    # cells are one interval: around its occupied cells it is found by bisection of the
+    # margins on every row at once, not by testing every cell against every facet (a round
+    # plot's hull has hundreds). Other rows, and rows whose end cells fail, cell by cell.
+    ok = ~(outside(r, first) | outside(r, last))
+    rr, lo, hi = r[ok], np.zeros(ok.sum(), np.int64), first[ok].astype(np.int64)
+    while np.any(lo < hi):                           # first inside cell of each row
+        mid = (lo + hi) // 2
+        o = outside(rr, mid)
+        lo, hi = np.where(o, mid + 1, lo), np.where(o, hi, mid)
+    left = lo
+    lo, hi = last[ok].astype(np.int64) + 1, np.full(rr.size, cols, np.int64)
+    while np.any(lo < hi):                           # first outside cell past the last
+        mid = (lo + hi) // 2
+        o = outside(rr, np.minimum(mid, cols - 1))
+        lo, hi = np.where(o, lo, mid + 1), np.where(o, mid, hi)
     c = np.arange(cols)
-    for i in range(rows):
-        out[i] = ((eq[:, 0:1] * c + eq[:, 1:2] * i + eq[:, 2:3]) > 1e-9).any(axis=0)
+    out[rr] = (c < left[:, None]) | (c >= lo[:, None])
+    for i in np.setdiff1d(np.arange(rows), rr):
+        out[i] = outside(i, c)
     return out
 
 

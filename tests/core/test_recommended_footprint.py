@@ -35,6 +35,36 @@ def test_outside_hull_of_a_rotated_square_is_its_corners():
     assert not outside_hull(line).any()
 
 
+def _outside_every_cell(occ):
+    """Oracle: every cell against every facet of the hull (the Qhull equations)."""
+    from scipy.spatial import ConvexHull
+    r = np.flatnonzero(occ.any(axis=1))
+    first = occ[r].argmax(axis=1)
+    last = occ.shape[1] - 1 - occ[r, ::-1].argmax(axis=1)
+    pts = np.column_stack((np.r_[first, last], np.r_[r, r])).astype(float)
+    eq = ConvexHull(pts).equations
+    rows, cols = np.mgrid[:occ.shape[0], :occ.shape[1]]
+    return ((eq[:, 0, None, None] * cols + eq[:, 1, None, None] * rows
+             + eq[:, 2, None, None]) > 1e-9).any(axis=0)
+
+
+def test_outside_hull_equals_testing_every_cell_against_every_facet():
+    """Round, ragged and banded footprints: the row bisection gives the brute force's
+    cells exactly (a round plot's hull has hundreds of facets)."""
+    rng = np.random.default_rng(0)
+    for trial in range(60):
+        nr, nc = rng.integers(3, 90, 2)
+        yy, xx = np.mgrid[:nr, :nc]
+        occ = rng.random((nr, nc)) < (0.05, 0.4, 0.95)[trial % 3]
+        if trial % 2:
+            occ &= (yy - nr / 2) ** 2 + (xx - nc / 2) ** 2 < (min(nr, nc) / 2) ** 2
+        if trial % 5 == 0:
+            occ[:rng.integers(0, nr // 2 + 1)] = False      # an empty band, empty rows
+        if np.count_nonzero(occ.any(axis=1)) < 2 or np.count_nonzero(occ.any(axis=0)) < 2:
+            continue
+        np.testing.assert_array_equal(outside_hull(occ), _outside_every_cell(occ))
+
+
 @pytest.mark.parametrize("radius", [1, 2, 4])
 def test_opening_with_outside_cells_is_the_opening_of_the_rest_alone(radius):
     """Outside = a frame around a rectangle: the opening inside equals the opening of
