@@ -324,6 +324,14 @@ def pass_plan(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dict
             not canopy or _canopy.has_factor(summary)):
         apply_summary(tasks, summary)
         return None
+    if canopy and finished_chunks(folder):
+        # the tallies would cover the unfinished chunks only: a scale of part of the catalog
+        raise InputError(
+            "The output folder {folder} holds finished chunks of an earlier run but not the "
+            "canopy scale they were made with (.catalog/summary.json is missing, damaged or "
+            "from an older version); resuming would mix two scales. Choose another output "
+            "folder, or delete that folder's outputs and its .catalog folder to start again.",
+            folder=folder)
     spec = {p: (h, counts, [(cat.bounds[j] * h).tolist() for j in cat.query(tuple(b))
                             if j != i]) for i, (p, b) in enumerate(zip(cat.paths, cat.bounds))}
     return {"spec": spec, "counts": counts, "folder": os.path.abspath(state),

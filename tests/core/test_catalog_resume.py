@@ -144,7 +144,8 @@ def test_resume_reuses_a_valid_first_pass_and_says_it_spent_nothing(tiles, tmp_p
 
 
 def test_summary_of_an_older_version_recomputed(tiles, tmp_path):
-    """A summary without a signature (or of another filter) is not trusted."""
+    """A summary without a signature (or of another filter) is not trusted: with no
+    chunk finished it is recomputed."""
     out = tmp_path / "out"
     cc.run_catalog(str(tiles), out, **OPTS)
     path = out / cc.STATE_DIR / "summary.json"
@@ -152,11 +153,38 @@ def test_summary_of_an_older_version_recomputed(tiles, tmp_path):
     del s["signature"]
     s["derived"]["density"] *= 3                            # what a stale pass would give
     path.write_text(json.dumps(s))
-    (out / cc.STATE_DIR / "t1.done.json").unlink()
+    for i in range(2):
+        (out / cc.STATE_DIR / f"t{i}.done.json").unlink()
     res = cc.run_catalog(str(tiles), out, **OPTS)
     assert res.settings["first_pass"] == "run"
     assert json.loads(path.read_text())["derived"]["density"] == pytest.approx(
         s["derived"]["density"] / 3, rel=1e-12)
+
+
+@pytest.mark.parametrize("damage", ["older", "missing"])
+def test_untrusted_summary_with_finished_chunks_refused(tiles, tmp_path, damage):
+    """With a chunk finished, a summary that cannot be trusted (older version, deleted)
+    is refused for the recommended filter: the canopy tallies of a recomputed first pass
+    would cover the unfinished chunks only, a scale the finished ones were not made with
+    (it used to be recomputed from them)."""
+    out = tmp_path / "out"
+    cc.run_catalog(str(tiles), out, **OPTS)
+    path = out / cc.STATE_DIR / "summary.json"
+    if damage == "older":
+        s = json.loads(path.read_text())
+        del s["signature"]
+        path.write_text(json.dumps(s))
+    else:
+        path.unlink()
+    (out / cc.STATE_DIR / "t1.done.json").unlink()
+    before = _listing(out)
+    with pytest.raises(InputError, match=r"finished chunks of an earlier run but not the "
+                                         r"canopy scale") as err:
+        cc.run_catalog(str(tiles), out, **OPTS)
+    assert _listing(out) == before                          # nothing touched
+    for lang in ("ar", "fa"):
+        msg = err.value.message(lang)
+        assert str(out) in msg and "canopy" not in msg
 
 
 # ------------------------------------------------------------ stopped in the first pass
