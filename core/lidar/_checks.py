@@ -37,6 +37,16 @@ def checked_xyz(x, y, z, min_points: int, keep=None):
     return x, y, z
 
 
+def lowest(v, keep=None) -> float:
+    """Smallest value of ``v`` (at ``keep`` only: the minimum of ``v[keep]``, no copy)."""
+    return float(v.min() if keep is None else np.min(v, where=keep, initial=np.inf))
+
+
+def highest(v, keep=None) -> float:
+    """Largest value of ``v`` (at ``keep`` only, no copy)."""
+    return float(v.max() if keep is None else np.max(v, where=keep, initial=-np.inf))
+
+
 def check_filter_points(x, y, min_points: int, keep=None) -> None:
     """Refuse fewer than ``min_points`` points, or points all at one x/y position.
 
@@ -55,11 +65,7 @@ def check_filter_points(x, y, min_points: int, keep=None) -> None:
         raise InputError("A ground filter needs at least {min_points} points, got "
                          "{n}: give a cloud that covers the ground area, or select more "
                          "returns / classes.", min_points=min_points, n=n)
-    if keep is None:
-        spread = max(float(np.ptp(x)), float(np.ptp(y)))
-    else:
-        spread = max(float(np.max(v, where=keep, initial=-np.inf)
-                           - np.min(v, where=keep, initial=np.inf)) for v in (x, y))
+    spread = max(highest(v, keep) - lowest(v, keep) for v in (x, y))
     if spread <= 0.0:
         raise InputError("All {n} points share one x/y position, so there is no terrain "
                          "to compare them with: give a cloud whose points cover the ground "

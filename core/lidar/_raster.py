@@ -12,10 +12,9 @@ import numpy as np
 from scipy import ndimage
 
 from ..errors import InputError
-from ._checks import check_filter_points, checked_xyz  # noqa: F401 - re-exported
+from ._checks import check_filter_points, checked_xyz, highest, lowest  # noqa: F401 - re-exported
 from ._heights import BAND, HEIGHT, OccupiedMinima, box_mean, height_base  # noqa: F401
 from ._pushpull import push_pull
-from ._pushpull import push_pull as _pushpull  # noqa: F401 - the tests' name
 
 
 def density(x, y, cell: float = 5.0) -> float:
@@ -89,19 +88,15 @@ class Grid:
         with a period of :data:`ALIGN` cells, so grids of separate chunks share cells
         and the blocks of the :func:`fill` pyramid up to that size.
         """
-        lo = (lambda v: v.min()) if keep is None else \
-            (lambda v: np.min(v, where=keep, initial=np.inf))  # no copy of the kept points
-        hi = (lambda v: v.max()) if keep is None else \
-            (lambda v: np.max(v, where=keep, initial=-np.inf))
-        x0, y0 = float(lo(x)), float(lo(y))
+        x0, y0 = lowest(x, keep), lowest(y, keep)    # no copy of the kept points
         anchor = (0, 0)
         if origin is not None:
             period = cell * ALIGN
             x0, y0 = snap_down(x0, origin[0], period), snap_down(y0, origin[1], period)
             anchor = (int(round((y0 - float(origin[1])) / cell)),
                       int(round((x0 - float(origin[0])) / cell)))
-        cols = int((float(hi(x)) - x0) // cell) + 1
-        rows = int((float(hi(y)) - y0) // cell) + 1
+        cols = int((highest(x, keep) - x0) // cell) + 1
+        rows = int((highest(y, keep) - y0) // cell) + 1
         return cls(x0, y0, float(cell), rows, cols, anchor)
 
     def index(self, x, y):

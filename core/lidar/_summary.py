@@ -36,6 +36,7 @@ import numpy as np
 
 from .. import classes as asprs
 from ..io.las import iter_las_chunks
+from ._checks import highest, lowest  # noqa: F401 - re-exported
 
 __all__ = ["DENSITY_CELL", "SUMMARY_FILE", "cell_counts", "cloud_summary", "final", "load",
            "merge", "recommended_values", "save", "strip_summary", "summarise", "tile_summary",
@@ -69,16 +70,6 @@ def cloud_summary(x, y, classification=None, *, counts: bool = False, keep=None)
             keep = ~water if keep is None else keep & ~water
         out.update(water=nw, cells=cell_counts(x, y, DENSITY_CELL, keep=keep))
     return out
-
-
-def lowest(v, keep=None) -> float:
-    """Smallest value of ``v`` (at ``keep`` only: the minimum of ``v[keep]``, no copy)."""
-    return float(v.min() if keep is None else np.min(v, where=keep, initial=np.inf))
-
-
-def highest(v, keep=None) -> float:
-    """Largest value of ``v`` (at ``keep`` only, no copy)."""
-    return float(v.max() if keep is None else np.max(v, where=keep, initial=-np.inf))
 
 
 def cell_counts(x, y, cell: float, shared: Sequence = (), keep=None) -> dict:

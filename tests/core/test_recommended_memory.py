@@ -64,7 +64,7 @@ def test_push_pull_with_boolean_weights_equals_float_weights(shape):
     z, valid = _terrain(shape, 2, holes=0.6)
     w = valid.astype(np.float64)
     for anchor in ((0, 0), (3, 5)):
-        want = R._pushpull(np.where(valid, z, 0.0) * w, w, *anchor)
+        want = R.push_pull(np.where(valid, z, 0.0) * w, w, *anchor)
         np.testing.assert_array_equal(R.fill(z, valid, anchor), want)
 
 
