@@ -274,7 +274,7 @@ def _plane_fit(z, valid, radius: int):
 
 
 def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12,
-                 reach: float = 10.0, need=None, cache=None, overwrite: bool = False):
+                 reach: float = 10.0, need=None, cache=None, overwrite=False, trim=True):
     """Fill invalid cells with the weighted tangent planes of the hole borders.
 
     Parameters
@@ -303,6 +303,8 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         Fill ``z`` itself (float64 or float32: the values are computed in float64
         and stored in ``z``'s type) and return it, sparing a raster: only its invalid
         cells are written, after the valid ones were read.
+    trim : bool
+        Hand freed pages back before the batches (sparse: the peak; dense: refaulted).
 
     Returns
     -------
@@ -345,7 +347,7 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         else:
             bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
     del rr, cc, ring
-    release_free_memory()       # the temporaries above: their pages back before the batches
+    trim and release_free_memory()  # the temporaries above: their pages back before the batches
     for r, c in _batches(holes, hr, hc):
         d2, dc, dr, j = near if near is not None else scan.nearest(r, c, k, trees)
         if d2k is not None:

@@ -382,7 +382,8 @@ def _refine(x, y, z, cls, last, held, grid, opt, need, base, keep, dense, rep):
             zg = pc.cell_min(z, ground, base=base)   # (the same classes): the surface's DTM
             last.clear()                             # is not held through the fill
         pc, ground = (pc if dense else None), None   # sparse: not held through the fill
-        zg = fill_holes(zg, ~np.isnan(zg), grid, opt, need, cache, overwrite=True)
+        zg = fill_holes(zg, ~np.isnan(zg), grid, opt, need, cache, overwrite=True,
+                        trim=not dense)
         moved = None
         if last:                                     # the last DTM not held further
             moved, last["dtm"] = R.changed(last["dtm"], zg), None
@@ -461,7 +462,7 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
     if opt.grow and opt.grow_iters > 0:
         def dtm_at(read, ground):
             dense or _trim()                         # the planes' pages back before the fill
-            return _fill_at(zmin, ground, read, grid, opt, cache, remake is not None)
+            return _fill_at(zmin, ground, read, grid, opt, cache, remake is not None, dense)
         obj = grow_ground(zmin, obj, skip, dtm_at, grid.cell, opt)
         dense or _trim()
     if info is not None:
@@ -472,10 +473,11 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
     np.logical_not(good, out=good)
     del obj, skip                                    # (the report's are in info)
     need = need() if callable(need) else need
-    return fill_holes(zmin, good, grid, opt, need, cache, overwrite=remake is not None)
+    return fill_holes(zmin, good, grid, opt, need, cache, overwrite=remake is not None,
+                      trim=not dense)
 
 
-def _fill_at(z, valid, read, grid, opt, cache, own):
+def _fill_at(z, valid, read, grid, opt, cache, own, dense=False):
     """:func:`fill_holes` of ``z`` at the cells ``read`` only (``np.flatnonzero`` order).
 
     With ``own`` (``z`` is ours) the fill is made in ``z``'s own buffer, no cache, and
@@ -484,15 +486,15 @@ def _fill_at(z, valid, read, grid, opt, cache, own):
     """
     at = np.flatnonzero(read)
     if not own:
-        return fill_holes(z, valid, grid, opt, read, cache).ravel()[at]
+        return fill_holes(z, valid, grid, opt, read, cache, trim=not dense).ravel()[at]
     flat = z.ravel()
     kept = flat[at]
-    out = fill_holes(z, valid, grid, opt, read, overwrite=True).ravel()[at]
+    out = fill_holes(z, valid, grid, opt, read, overwrite=True, trim=not dense).ravel()[at]
     flat[at] = kept
     return out
 
 
-def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False):
+def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False, trim=True):
     """Fill the non-ground cells of a DTM raster with border tangent planes.
 
     Parameters
@@ -513,6 +515,9 @@ def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False):
         KD-tree searches).
     overwrite : bool
         Fill ``z`` in place (its invalid cells).
+    trim : bool
+        Hand the fill's freed pages back before its batches (sparse clouds; a dense
+        cloud's peak is its points', and pages handed back are faulted in again).
 
     Returns
     -------
@@ -522,7 +527,7 @@ def fill_holes(z, valid, grid, opt, need=None, cache=None, overwrite=False):
     return S.tangent_fill(z, valid, grid.cell,
                           radius=max(1, int(round(opt.fill_radius / grid.cell))),
                           neighbours=opt.fill_neighbours, reach=opt.fill_reach, need=need,
-                          cache=cache, overwrite=overwrite)
+                          cache=cache, overwrite=overwrite, trim=trim)
 
 
 def recommended_filter(options: Optional[RecommendedOptions] = None):
