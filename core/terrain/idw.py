@@ -264,8 +264,10 @@ class IDW:
         d, idx, unresolved = self._neighbours(q, defer=tied is not None)
         if unresolved is not None:
             tied.append(np.flatnonzero(unresolved))
-        valid = np.isfinite(d)
-        everywhere = bool(valid.all())  # no radius, or all neighbours within it
+        # each row's distances ascend (missing neighbours, inf, last): every neighbour
+        # exists when the last column is finite (no radius, or all within it)
+        everywhere = bool(np.isfinite(d[:, -1]).all())
+        valid = None if everywhere else np.isfinite(d)
         # r2 = d² (1 where no neighbour) + s², w = 1 / r2^(p/2) (0 where no neighbour):
         # in place, and without the masks when every neighbour exists (same values)
         r2 = d * d
@@ -286,16 +288,20 @@ class IDW:
             w[~valid] = 0.0
         num = np.einsum("ij,ij->i", w, zn)
         den = w.sum(axis=1)
-        n = valid.sum(axis=1)
         with np.errstate(invalid="ignore", divide="ignore"):
             out = num / den
-        bad = (n < self.min_points) | (den == 0) | ~np.isfinite(out)
+        bad = (den == 0) | ~np.isfinite(out)
+        if self.min_points > 0:
+            bad |= (d.shape[1] if everywhere else valid.sum(axis=1)) < self.min_points
         out[bad] = np.nan
-        # exact value on coincident points (GDAL tests d² + s² < 1e-13 first)
-        coincident = valid & (r2 < COINCIDENT_R2)
-        hit = coincident.any(axis=1)
+        # exact value on coincident points (GDAL tests d² + s² < 1e-13 first): a row's
+        # first neighbour is its nearest (missing ones have r2 = 1): it has one when
+        # its first has
+        hit = r2[:, 0] < COINCIDENT_R2
         if hit.any():
-            ch = coincident[hit]
+            ch = r2[hit] < COINCIDENT_R2
+            if valid is not None:
+                ch &= valid[hit]
             if (ch.sum(axis=1) > 1).any():   # several coincident points: GDAL's first
                 rk = np.full(ch.shape, np.iinfo(np.int64).max)
                 rk[ch] = self.tie_keys(idx_safe[hit][ch])
