@@ -67,12 +67,13 @@ def label_points(z, dtm, pc, opt, last=None, base=0.0, moved=None):
         np.subtract(z[p] - base if base else z[p], dz, out=dz)   # z[p] may be a view
         tol = pc.nearest(slope, p) if slope is not None else \
             R.slope_at(dtm, pc.grid.cell, pc.idx[p])
-        tol *= opt.scaler
+        if opt.scaler != 1.0:                        # x 1.0 is exact: skipped
+            tol *= opt.scaler
         tol += opt.threshold
         c = np.full(dz.size, OBJECT, dtype=np.uint8)
-        c[np.abs(dz) <= tol] = GROUND
+        np.copyto(c, GROUND, where=np.abs(dz) <= tol)
         np.maximum(tol, opt.low_noise_depth, out=tol)
-        c[dz < -tol] = LOW_NOISE
+        np.copyto(c, LOW_NOISE, where=dz < np.negative(tol, out=tol))   # never both
         cls[p] = c
     if last is not None:
         last.update(dtm=dtm, classes=cls)

@@ -96,32 +96,24 @@ def water_candidates(x, y, z, *, density: Optional[float] = None,
              int(np.floor(highest(x, keep) / cell) - x0) + 1)
     size = shape[0] * shape[1]
 
-    def ids(xs, ys):                                 # the cells of points, row-major
-        i = world_cells(xs, ys, cell, int(x0), int(y0), shape[1], row_major=True)
+    # every point's cell once (int32 where the raster allows), block by block (the
+    # temporaries stay in the processor's cache); the points left out get the extra cell
+    # ``size``, which is never a candidate: one count, and no second pass over the points
+    idx = np.empty(n, np.int32 if size < 2 ** 31 - 1 else np.int64)
+    for s in range(0, n, R.CHUNK):
+        b = slice(s, s + R.CHUNK)
+        idx[b] = world_cells(x[b], y[b], cell, int(x0), int(y0), shape[1], row_major=True)
         if keep is not None:                         # points left out may lie outside
-            np.clip(i, 0, size - 1, out=i)
-        return i
-
-    # a raster of up to 2**20 cells: the points' cells are taken block by block (no
-    # per-point arrays; the block's temporaries stay in the processor's cache)
-    parts = [slice(s, s + R.CHUNK) for s in range(0, n, R.CHUNK)] if size <= 1 << 20 \
-        else [slice(0, n)]
-    idx = ids(x, y) if len(parts) == 1 else None
-
-    def cells(b):
-        return idx[b] if idx is not None else ids(x[b], y[b])
-
-    def kept(b, v):                                  # v (of the block b) at the kept points
-        return v if keep is None else v[keep[b]]
-
-    cnt = sum(np.bincount(kept(b, cells(b)), minlength=size) for b in parts)
-    occ = cnt > 0
-    cand = occ & (cnt < sparse * median5 * (cell / DENSITY_CELL) ** 2)
+            idx[b][~keep[b]] = size
+    cnt = np.bincount(idx, minlength=size + 1)
+    cand = cnt > 0                                   # occupied, and sparse:
+    cand &= cnt < sparse * median5 * (cell / DENSITY_CELL) ** 2
+    cand[size] = False
     if not cand.any():
         return out
-    sel = np.concatenate([np.flatnonzero(cand[cells(b)] if keep is None else
-                                         cand[cells(b)] & keep[b]) + b.start for b in parts])
-    at = ids(x[sel], y[sel])                         # the points of the sparse cells
+    sel = np.flatnonzero(cand[idx])                  # the points of the sparse cells
+    cnt, cand = cnt[:size], cand[:size]
+    at = idx[sel]
     zlo = np.full(size, np.inf)
     np.minimum.at(zlo, at, z[sel])
     zhi = np.full(size, -np.inf)
@@ -142,10 +134,8 @@ def water_candidates(x, y, z, *, density: Optional[float] = None,
     big[0] = False
     if not big.any():
         return out
-    keep_cell = big[lab.ravel()]                     # per cell
-    for b in parts:
-        out[b] = keep_cell[cells(b)]
-    return out if keep is None else np.logical_and(out, keep, out=out)
+    keep_cell = np.append(big[lab.ravel()], False)   # per cell (not the extra one)
+    return keep_cell[idx]
 
 
 @dataclass

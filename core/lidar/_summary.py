@@ -92,13 +92,13 @@ def cell_counts(x, y, cell: float, shared: Sequence = (), keep=None) -> dict:
     ny = int(np.floor(highest(y, keep) / cell)) - y0 + 1
     size = (int(np.floor(highest(x, keep) / cell)) - x0 + 1) * ny
     if size <= _BOX_CELLS:          # a small box: counted block by block, no per-point keys
-        cnt = np.zeros(size, np.int64)
+        cnt = np.zeros(size + 1, np.int64)          # the points left out: cell ``size``
         for s in range(0, x.size, _BLOCK):
-            xb, yb = x[s:s + _BLOCK], y[s:s + _BLOCK]
+            key = world_cells(x[s:s + _BLOCK], y[s:s + _BLOCK], cell, x0, y0, ny)
             if keep is not None:
-                xb, yb = xb[keep[s:s + _BLOCK]], yb[keep[s:s + _BLOCK]]
-            cnt += np.bincount(world_cells(xb, yb, cell, x0, y0, ny), minlength=size)
-        occ = np.flatnonzero(cnt)
+                key[~keep[s:s + _BLOCK]] = size
+            cnt += np.bincount(key, minlength=size + 1)
+        occ = np.flatnonzero(cnt[:size])
         cnt = cnt[occ]
     else:
         if keep is not None:
@@ -134,17 +134,27 @@ def world_cells(x, y, cell: float, x0: int, y0: int, n: int, *,
     ``(row - y0) * n + (column - x0)`` (``n`` columns); column = floor(x / cell). The
     one world-lattice cell key of the package: the density counts here and the water
     test's cells (:func:`._recommended_filter.water_candidates`). A filter's raster lies
-    on the lattice through its corner instead (``_raster.Grid.index``).
+    on the lattice through its corner instead (``_raster.Grid.index``). The keys of
+    points outside the box whose first cell is (``x0``, ``y0``) are garbage: where that
+    cell's index is not negative the floor is taken by truncation (the same integer for
+    every point in the box, one pass less).
     """
     a, b = (y, x) if row_major else (x, y)
     a0, b0 = (y0, x0) if row_major else (x0, y0)
-    ia = np.floor(a / cell).astype(np.int64)
+    ia = _floor(a / cell, a0)
     ia -= a0
     ia *= n
-    ib = np.floor(b / cell).astype(np.int64)
+    ib = _floor(b / cell, b0)
     ib -= b0
     ia += ib
     return ia
+
+
+def _floor(q, first):
+    """``floor(q)`` as int64 where ``q >= first`` (truncation when ``first >= 0``)."""
+    if first < 0:
+        np.floor(q, out=q)
+    return q.astype(np.int64)
 
 
 def _merge_cells(parts: Sequence[dict]) -> dict:
