@@ -61,6 +61,14 @@ def test_blocks_equal_the_whole_array_expressions(monkeypatch, chunk, shape):
     sub = np.flatnonzero(np.arange(x.size) % 3 == 1)
     assert np.array_equal(pc.bilinear(raster, sub), want[sub])
     assert np.array_equal(pc.nearest(raster, sub), raster.ravel()[idx[sub]])
+    z = np.round(np.random.default_rng(3).normal(size=x.size), 1)   # ties within cells
+    for mask in (None, np.arange(x.size) % 4 != 0):  # minima in blocks of whole cells
+        m = np.ones(x.size, bool) if mask is None else mask
+        want = np.full(grid.rows * grid.cols, np.inf)
+        np.minimum.at(want, idx[m], z[m])
+        want[np.isinf(want)] = np.nan
+        got = pc.cell_min(z, mask)
+        assert np.array_equal(got.ravel(), want, equal_nan=True)
 
 
 @pytest.mark.parametrize("shape", [(120.0, 90.0), (300.0, 0.4), (0.3, 50.0)])
