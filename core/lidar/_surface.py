@@ -31,246 +31,13 @@ from scipy.spatial import cKDTree
 from ..system import release_free_memory
 from . import _lattice_knn as K  # noqa: N812
 from . import _raster as R  # noqa: N812
+from ._planes import (_plane_fit, gradient_at, gradient_of, plane_fit,  # noqa: F401
+                      plane_fit_where, plane_gradient)
 
 __all__ = ["grow_ground", "plane_fit", "plane_fit_where", "plane_gradient", "tangent_fill"]
 
 #: Hole cells processed per batch (bounds the k-neighbour arrays' memory).
 BATCH = 16_384
-
-
-def _window_planes(z, valid, radius: int, *, spread: bool = False):
-    """Moments and least-squares plane of the valid cells of every (2r+1)² window.
-
-    Returns a dict: ``n`` (valid cells), ``mx, my, mz`` (means of column, row and z
-    offset), ``det`` (of the
-    coordinate covariance), ``gx, gy`` (rise per cell) and, with ``spread``, ``czz``
-    (variance of z) and the covariances ``cxz, cyz``. ``zc`` is 0: a reference taken
-    from the raster (its mean) would change the rounding with the extent, and a chunk
-    of a catalog would differ from the merged cloud in the last bits.
-    """
-    r = int(radius)
-    off = np.arange(-r, r + 1, dtype=np.float64)
-    box = np.ones(2 * r + 1)
-    w = valid.astype(np.float64)
-    zc = 0.0
-    zw = np.where(valid, np.asarray(z, np.float64) - zc, 0.0)     # float32 rasters: in float64
-
-    rows = {}                  # each (raster, kernel) along the rows is computed once
-
-    def corr(a, kx, ky):
-        key = (id(a), id(kx))
-        if key not in rows:
-            rows[key] = ndimage.correlate1d(a, kx, axis=1, mode="constant")
-        return ndimage.correlate1d(rows[key], ky, axis=0, mode="constant")
-
-    off2 = off * off
-    n = corr(w, box, box)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        mx, my, mz = corr(w, off, box) / n, corr(w, box, off) / n, corr(zw, box, box) / n
-        cxx = corr(w, off2, box) / n - mx * mx
-        cyy = corr(w, box, off2) / n - my * my
-        cxy = corr(w, off, off) / n - mx * my
-        cxz = corr(zw, off, box) / n - mx * mz
-        cyz = corr(zw, box, off) / n - my * mz
-        rows.clear()
-        out = dict(n=n, mx=mx, my=my, mz=mz, zc=zc)
-        if spread:
-            out.update(czz=corr(zw * zw, box, box) / n - mz * mz, cxz=cxz, cyz=cyz)
-        det = cxx * cyy - cxy * cxy
-        out.update(det=det, gx=(cyy * cxz - cxy * cyz) / det, gy=(cxx * cyz - cxy * cxz) / det)
-    return out
-
-
-def plane_gradient(z, valid, radius: int, cell: float):
-    """Gradient of the least-squares plane through the valid cells of every window.
-
-    Parameters
-    ----------
-    z : ndarray
-        Raster (values of invalid cells are ignored).
-    valid : ndarray of bool
-        Cells that carry data.
-    radius : int
-        Window half-size in cells (window ``2 * radius + 1`` square).
-    cell : float
-        Cell size (m).
-
-    Returns
-    -------
-    tuple of ndarray
-        ``(gx, gy)``: rise over run along columns and rows; 0 where the valid
-        cells of a window do not span a plane.
-    """
-    r = int(radius)
-    m = _window_planes(z, valid, r)
-    gx, gy, det = m["gx"], m["gy"], m["det"]
-    full = (r * (r + 1) / 3.0) ** 2                 # det of a complete window
-    bad = ~(det > 1e-3 * full) | ~np.isfinite(gx) | ~np.isfinite(gy)
-    gx[bad] = 0.0
-    gy[bad] = 0.0
-    return gx / cell, gy / cell
-
-
-#: Rows per band of :func:`gradient_at` and :func:`plane_fit` (bounds the moment rasters' memory).
-BAND = 64
-
-
-def gradient_at(z, valid, radius: int, cell: float, rr, cc):
-    """:func:`plane_gradient` at the cells ``(rr, cc)`` only, band by band.
-
-    Each band of :data:`BAND` rows is computed with ``radius`` rows of margin on either
-    side (the windows of its cells see exactly the rows they see in the whole raster,
-    and a window's sums do not depend on where the raster starts), so the values are
-    those of :func:`plane_gradient`, bit for bit, without a dozen full-raster moment
-    rasters at once.
-
-    Parameters
-    ----------
-    z, valid, radius, cell
-        As for :func:`plane_gradient`.
-    rr, cc : ndarray of int
-        Rows and columns of the cells wanted, sorted by row (``np.nonzero`` order).
-
-    Returns
-    -------
-    tuple of ndarray
-        ``(gx, gy)`` at those cells.
-    """
-    r = int(radius)
-    rows = z.shape[0]
-    gx = np.empty(rr.size)
-    gy = np.empty(rr.size)
-    cut = np.searchsorted(rr, np.arange(0, rows + BAND, BAND))
-    for b0 in range(0, rows, BAND):
-        i0, i1 = cut[b0 // BAND], cut[b0 // BAND + 1]
-        if i0 == i1:
-            continue
-        lo, hi = max(0, b0 - r), min(rows, b0 + BAND + r)
-        bx, by = plane_gradient(z[lo:hi], valid[lo:hi], r, cell)
-        gx[i0:i1] = bx[rr[i0:i1] - lo, cc[i0:i1]]
-        gy[i0:i1] = by[rr[i0:i1] - lo, cc[i0:i1]]
-    return gx, gy
-
-
-#: Cells per strip of :func:`gradient_of` (bounds its temporaries).
-STRIP = 2048
-
-
-def gradient_of(z, valid, radius: int, cell: float, rr, cc):
-    """:func:`plane_gradient` at a few cells ``(rr, cc)``, from their own windows only.
-
-    The ``(2r+1)²`` windows of :data:`STRIP` cells are laid side by side in one strip
-    ``2r+1`` rows high, cells outside the raster invalid (as the constant mode of the
-    whole raster has them): the centre of each window sees exactly its own cells in the
-    same order, so the values are :func:`plane_gradient`'s bit for bit, at a cost that
-    follows the cells asked for rather than the raster.
-
-    Parameters
-    ----------
-    z, valid, radius, cell
-        As for :func:`plane_gradient`.
-    rr, cc : ndarray of int
-        Rows and columns of the cells wanted (any order).
-
-    Returns
-    -------
-    tuple of ndarray
-        ``(gx, gy)`` at those cells.
-    """
-    r = int(radius)
-    w = 2 * r + 1
-    rows, cols = z.shape
-    off = np.arange(-r, r + 1)
-    gx, gy = np.empty(rr.size), np.empty(rr.size)
-    for s in range(0, rr.size, STRIP):
-        wr = rr[s:s + STRIP, None, None] + off[None, :, None]
-        wc = cc[s:s + STRIP, None, None] + off[None, None, :]
-        ok = (wr >= 0) & (wr < rows) & (wc >= 0) & (wc < cols)
-        wr, wc = np.clip(wr, 0, rows - 1), np.clip(wc, 0, cols - 1)
-        ok &= valid[wr, wc]
-        strip = [a.transpose(1, 0, 2).reshape(w, -1) for a in (np.where(ok, z[wr, wc], 0.0), ok)]
-        bx, by = plane_gradient(strip[0], strip[1], r, cell)
-        gx[s:s + STRIP], gy[s:s + STRIP] = bx[r, r::w], by[r, r::w]
-    return gx, gy
-
-
-def plane_fit(z, valid, radius: int):
-    """Least-squares plane over the valid cells of every (2r+1)² window, with its fit.
-
-    Parameters
-    ----------
-    z : ndarray
-        Raster (values of invalid cells are ignored).
-    valid : ndarray of bool
-        Cells that carry data.
-    radius : int
-        Window half-size in cells.
-
-    Returns
-    -------
-    tuple of ndarray
-        ``(rms, centre, gx, gy)``: RMS residual of the plane, its height at the
-        window centre and its rise per cell along columns and rows; rms and centre
-        are NaN where fewer than 6 valid cells or a degenerate layout.
-    """
-    r = int(radius)
-    rows = z.shape[0]
-    out = [np.empty(z.shape) for _ in range(4)]
-    for b0 in range(0, rows, BAND):        # bands with r rows of margin: same values,
-        lo, hi = max(0, b0 - r), min(rows, b0 + BAND + r)   # bounded moment rasters
-        band = _plane_fit(z[lo:hi], valid[lo:hi], r)
-        n = min(BAND, rows - b0)
-        for o, v in zip(out, band):
-            o[b0:b0 + n] = v[b0 - lo:b0 - lo + n]
-    return tuple(out)
-
-
-def plane_fit_where(z, valid, radius: int, select):
-    """:func:`plane_fit` band by band, keeping the planes only at the cells ``select`` picks.
-
-    Parameters
-    ----------
-    z, valid, radius
-        As for :func:`plane_fit`.
-    select : callable
-        ``select(rows, rms, centre, gx, gy)`` with ``rows`` a slice of the raster's rows
-        and the band's values there; returns ``(mask, extra)``: the cells kept and one
-        more array of values of the band (same shape).
-
-    Returns
-    -------
-    tuple
-        ``(mask, (centre, gx, gy, extra))``: the raster of kept cells and the values at
-        them in row-major order (``np.flatnonzero(mask)``), those of :func:`plane_fit`
-        bit for bit, without its four full-size rasters.
-    """
-    r = int(radius)
-    rows = z.shape[0]
-    mask = np.zeros(z.shape, bool)
-    parts = ([], [], [], [])
-    for b0 in range(0, rows, BAND):
-        lo, hi = max(0, b0 - r), min(rows, b0 + BAND + r)
-        n = min(BAND, rows - b0)
-        rms, centre, gx, gy = (v[b0 - lo:b0 - lo + n]
-                               for v in _plane_fit(z[lo:hi], valid[lo:hi], r))
-        m, extra = select(slice(b0, b0 + n), rms, centre, gx, gy)
-        mask[b0:b0 + n] = m
-        for p, v in zip(parts, (centre, gx, gy, extra)):
-            p.append(v[m])
-    return mask, tuple(np.concatenate(p) for p in parts)
-
-
-def _plane_fit(z, valid, radius: int):
-    """:func:`plane_fit` of one raster at once."""
-    m = _window_planes(z, valid, radius, spread=True)
-    gx, gy = m["gx"], m["gy"]
-    with np.errstate(invalid="ignore"):
-        rms = np.sqrt(np.maximum(m["czz"] - gx * m["cxz"] - gy * m["cyz"], 0.0))
-        centre = m["mz"] - gx * m["mx"] - gy * m["my"] + m["zc"]
-    bad = ~(m["det"] > 0.1) | (m["n"] < 6)
-    rms[bad] = np.nan
-    centre[bad] = np.nan
-    return rms, centre, gx, gy
 
 
 def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12,
@@ -554,8 +321,8 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
     rad = max(1, int(round(opt.grow_window / cell)))
     # candidates and their planes, band by band: only the candidate cells' values are kept
     cand, (centre, gx, gy, tol) = plane_fit_where(
-        zmin, ~skip, rad, lambda b, rms, centre, gx, gy: _grow_candidates(
-            b, rms, centre, gx, gy, zmin, obj, skip, cell, opt))
+        zmin, ~skip, rad, lambda b, at, rms, centre, gx, gy: _grow_candidates(
+            b, at, rms, centre, gx, gy, zmin, cell, opt), where=obj & ~skip)
     at = np.flatnonzero(cand)                        # cells of the kept values, sorted
     dtm = dtm(cand, ground) if callable(dtm) else dtm.ravel()[at]
     with np.errstate(invalid="ignore"):
@@ -589,12 +356,13 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
     return obj & ~ground
 
 
-def _grow_candidates(b, rms, centre, gx, gy, zmin, obj, skip, cell, opt):
-    """Candidate cells of :func:`grow_ground` in rows ``b`` (a slice), and their tolerance."""
+def _grow_candidates(b, at, rms, centre, gx, gy, zmin, cell, opt):
+    """Candidates of :func:`grow_ground` among the object cells ``at`` (flat, in rows ``b``)
+    with their planes, and their tolerance."""
     with np.errstate(invalid="ignore"):
         steep = np.hypot(gx, gy)
         tol = opt.grow_tol + opt.scaler * steep / cell
-        z = zmin[b]
-        cand = (obj[b] & ~skip[b] & (rms <= opt.grow_rms) & (np.abs(z - centre) <= tol)
+        z = zmin[b].ravel()[at]
+        cand = ((rms <= opt.grow_rms) & (np.abs(z - centre) <= tol)
                 & (steep <= opt.grow_max_slope * cell))
     return cand, tol

@@ -72,9 +72,8 @@ def test_plane_fit_where_equals_plane_fit_at_the_kept_cells():
     z, valid = _terrain((300, 45), 3)
     rms, centre, gx, gy = S.plane_fit(z, valid, 3)
 
-    def select(b, rms_b, centre_b, gx_b, gy_b):
-        return (rms_b < 0.6) & (np.arange(b.start, b.start + rms_b.shape[0]) % 3 != 0)[:, None], \
-            np.hypot(gx_b, gy_b)
+    def select(b, at, rms_b, centre_b, gx_b, gy_b):
+        return (rms_b < 0.6) & ((b.start + at // z.shape[1]) % 3 != 0), np.hypot(gx_b, gy_b)
 
     mask, (c, x, y, extra) = S.plane_fit_where(z, valid, 3, select)
     want = (rms < 0.6) & (np.arange(300) % 3 != 0)[:, None]
@@ -82,6 +81,11 @@ def test_plane_fit_where_equals_plane_fit_at_the_kept_cells():
     assert want.sum() > 1000
     for got, ref in ((c, centre), (x, gx), (y, gy), (extra, np.hypot(gx, gy))):
         np.testing.assert_array_equal(got, ref[want])
+    where = (np.arange(z.size) % 7 != 0).reshape(z.shape)   # planes at some cells only
+    mask, (c, x, y, extra) = S.plane_fit_where(z, valid, 3, select, where=where)
+    np.testing.assert_array_equal(mask, want & where)
+    for got, ref in ((c, centre), (x, gx), (y, gy), (extra, np.hypot(gx, gy))):
+        np.testing.assert_array_equal(got, ref[want & where])
 
 
 def test_growing_step_equals_the_whole_raster_candidates():
@@ -100,7 +104,7 @@ def test_growing_step_equals_the_whole_raster_candidates():
         cand = (obj & ~skip & (rms <= opt.grow_rms) & (np.abs(z - centre) <= tol)
                 & (steep <= opt.grow_max_slope) & (z - dtm <= opt.grow_max_rise))
     got_cand, (c, x, y, t) = S.plane_fit_where(
-        z, valid, 3, lambda b, *m: S._grow_candidates(b, *m, z, obj, skip, 1.0, opt))
+        z, valid, 3, lambda b, *m: S._grow_candidates(b, *m, z, 1.0, opt), where=obj & ~skip)
     got_cand &= z - dtm <= opt.grow_max_rise
     np.testing.assert_array_equal(got_cand, cand)
     assert cand.sum() > 100

@@ -205,45 +205,48 @@ def test_fill_cache_gives_the_values_of_a_fresh_fill(hole_band, monkeypatch):
 def test_gradient_by_bands_equals_the_whole_raster():
     """gradient_at (bands of rows with a margin) gives plane_gradient's values bit for bit,
     whatever the band size, next to holes and at the raster's edges."""
+    from geomatics_toolbox.core.lidar import _planes as P  # noqa: N812
     from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
     rng = np.random.default_rng(2)
     z = 300.0 + rng.normal(0, 1, (230, 170)).cumsum(axis=1) * 0.1
     valid = rng.random(z.shape) < 0.6
     gx, gy = S.plane_gradient(z, valid, 3, 1.5)
     rr, cc = np.nonzero(valid)
-    band = S.BAND
+    band, cells = P.BAND, P.BAND_CELLS
     try:
-        for S.BAND in (7, 50, 256):
+        for P.BAND, P.BAND_CELLS in ((7, 0), (50, 0), (256, 0), (1, 9000)):
             bx, by = S.gradient_at(z, valid, 3, 1.5, rr, cc)
             np.testing.assert_array_equal(bx, gx[rr, cc])
             np.testing.assert_array_equal(by, gy[rr, cc])
     finally:
-        S.BAND = band
+        P.BAND, P.BAND_CELLS = band, cells
 
 
 def test_plane_fit_by_bands_equals_the_whole_raster():
     """plane_fit in bands of rows gives the whole raster's rms, centre and gradients."""
+    from geomatics_toolbox.core.lidar import _planes as P  # noqa: N812
     from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
     rng = np.random.default_rng(4)
     z = 80.0 + rng.normal(0, 1, (140, 120)).cumsum(axis=0) * 0.2
     valid = rng.random(z.shape) < 0.7
     ref = S._plane_fit(z, valid, 3)
-    band = S.BAND
+    band, cells = P.BAND, P.BAND_CELLS
     try:
-        for S.BAND in (5, 33, 256):
+        for P.BAND, P.BAND_CELLS in ((5, 0), (33, 0), (256, 0), (1, 5000)):
             for a, b in zip(S.plane_fit(z, valid, 3), ref):
-                np.testing.assert_array_equal(a, b)
+                np.testing.assert_array_equal(a, b.reshape(z.shape))
     finally:
-        S.BAND = band
+        P.BAND, P.BAND_CELLS = band, cells
 
 
 def test_gradient_of_few_cells_equals_the_whole_raster():
     """gradient_of (the cells' own windows side by side in a strip) gives plane_gradient's
     values bit for bit, at the raster's edges and corners, next to NaN holes, for any
     strip length and window radius; the window planes reuse their row passes exactly."""
+    from geomatics_toolbox.core.lidar import _planes as P  # noqa: N812
     from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
     rng = np.random.default_rng(4)
-    strip = S.STRIP
+    strip = P.STRIP
     try:
         for r in (1, 2, 3, 5):
             z = 300.0 + rng.normal(0, 1, (90, 120)).cumsum(axis=1) * 0.1
@@ -252,12 +255,12 @@ def test_gradient_of_few_cells_equals_the_whole_raster():
             gx, gy = S.plane_gradient(z, valid, r, 1.5)
             rr, cc = np.nonzero(rng.random(z.shape) < 0.3)
             rr, cc = np.r_[rr, 0, 0, 89, 89], np.r_[cc, 0, 119, 0, 119]
-            for S.STRIP in (1, 37, 4096):
+            for P.STRIP in (1, 37, 4096):
                 bx, by = S.gradient_of(z, valid, r, 1.5, rr, cc)
                 np.testing.assert_array_equal(bx, gx[rr, cc])
                 np.testing.assert_array_equal(by, gy[rr, cc])
     finally:
-        S.STRIP = strip
+        P.STRIP = strip
 
 
 def test_separable_square_dilations_equal_binary_dilation():

@@ -31,6 +31,42 @@ def test_plane_gradient_zero_where_the_window_is_collinear():
     assert np.allclose(gy[4], 0.0) and np.allclose(gx[4], 0.0)
 
 
+def test_integer_window_moments_equal_scipy_correlations():
+    """The window moments of the valid cells, summed in integers by shifted additions,
+    are scipy's float64 correlations bit for bit (any radius, tiny rasters, every
+    integer width), and the z sums are scipy's correlations in scipy's order."""
+    from scipy import ndimage
+
+    from geomatics_toolbox.core.lidar import _planes as P  # noqa: N812
+    rng = np.random.default_rng(11)
+    for shape, r, share in (((1, 1), 1, 0.5), ((2, 9), 3, 0.7), ((9, 2), 2, 0.7),
+                            ((40, 31), 1, 0.5), ((40, 31), 3, 0.8), ((33, 47), 5, 0.6),
+                            ((25, 30), 6, 0.9), ((60, 70), 13, 0.95), ((90, 100), 40, 1.0)):
+        valid = rng.random(shape) < share
+        z = 100.0 + rng.normal(0, 3, shape)
+        got = P._moments(z, valid, r, spread=True)
+        off = np.arange(-r, r + 1, dtype=np.float64)
+        box = np.ones(2 * r + 1)
+        w = valid.astype(np.float64)
+        zw = np.where(valid, z, 0.0)
+
+        def corr(a, kx, ky):
+            a = ndimage.correlate1d(a, kx, axis=1, mode="constant")
+            return ndimage.correlate1d(a, ky, axis=0, mode="constant")
+        want = dict(n=corr(w, box, box), sx=corr(w, off, box), sy=corr(w, box, off),
+                    sxx=corr(w, off * off, box), syy=corr(w, box, off * off),
+                    sxy=corr(w, off, off), sz=corr(zw, box, box), sxz=corr(zw, off, box),
+                    syz=corr(zw, box, off), szz=corr(zw * zw, box, box))
+        assert got.keys() == want.keys()
+        for key, ref in want.items():
+            a = got[key]
+            np.testing.assert_array_equal(a.astype(np.float64), ref, err_msg=f"{key} r={r}")
+            if "z" not in key:
+                assert np.issubdtype(a.dtype, np.integer)
+        if r == 40:                     # full windows: 81 rows of sum(d², -40..40) > int16
+            assert got["sxx"].dtype == np.int32 and got["sxx"].max() == 81 * (40 * 41 * 81 // 3)
+
+
 def test_tangent_fill_reproduces_a_plane():
     yy, xx = _grid()
     z = 50.0 + 0.4 * xx + 0.25 * yy
