@@ -36,14 +36,16 @@ def _offsets(d2max: int):
 
 
 _OFFSETS = _offsets(SCAN_D2)
+#: The offsets ``(dc, dr, d²)`` in float64 (what :func:`knn_scan` returns).
+_OFFSETS_F = tuple(a.astype(np.float64) for a in _OFFSETS)
 
 
 def scan_lattice(ring, rows=None, first=None):
     """Prepare ``ring`` (bool raster of the cells searched) for :func:`knn_scan`.
 
     Returns the raster padded by the scan's reach holding each ring cell's index in
-    ``np.nonzero(ring)`` order (-1 elsewhere), the padding, the raster's shape and the
-    first row. ``rows = (a, b)``: only what a scan from rows a..b-1 reads (rows a - pad
+    ``np.nonzero(ring)`` order (-1 elsewhere), the padding, the raster's shape, the
+    first row and the padded raster's ring cells (bool, flat). ``rows = (a, b)``: only what a scan from rows a..b-1 reads (rows a - pad
     to b + pad), the indices still those of the whole raster (``first[i]``: ring cells
     in the rows before row i, else counted here).
     """
@@ -57,12 +59,12 @@ def scan_lattice(ring, rows=None, first=None):
     n0 = 0 if lo == 0 else int(first[lo] if first is not None else np.count_nonzero(ring[:lo]))
     inner = index[lo - a + pad:hi - a + pad, pad:pad + cols]
     inner[part] = np.arange(n0, n0 + np.count_nonzero(part), dtype=it)
-    return index, pad, ring.shape, a
+    return index, pad, ring.shape, a, index.ravel() >= 0
 
 
 def ring_cells(lattice):
     """Rows and columns of the ring cells of a whole :func:`scan_lattice` (``np.nonzero`` order)."""
-    index, pad, (rows, cols), a = lattice
+    index, pad, (rows, cols), a = lattice[:4]
     if a != 0 or index.shape[0] != rows + 2 * pad:
         raise ValueError("ring_cells needs the whole lattice")  # i18n: internal
     return np.nonzero(index[pad:pad + rows, pad:pad + cols] >= 0)
@@ -88,23 +90,24 @@ def knn_scan(lattice, r, c, k: int):
         and row offsets (float64, shape (m, k)) ordered by (d², dr, dc), and ``j`` the
         index of each neighbour in ``np.nonzero(ring)`` order.
     """
-    index, pad, (rows, cols), r0 = lattice
-    odc, odr, od2 = _OFFSETS
+    index, pad, (rows, cols), r0 = lattice[:4]
     width = cols + 2 * pad
     flat = index.ravel()
-    delta = odr.astype(np.int64) * width + odc
+    hits = lattice[4]
+    delta = _OFFSETS[1].astype(np.int64) * width + _OFFSETS[0]
     m = r.size
     pick = np.zeros((k, m), np.int32)                # offset index of each neighbour
-    found = np.zeros(m, np.int32)
+    found = np.zeros(m, np.int8 if k + _STEP < 127 else np.int32)
     act = np.arange(m)
     base = (r.astype(np.int64) - r0 + pad) * width + (c.astype(np.int64) + pad)
     for o0 in range(0, delta.size, _STEP):
-        hit = flat[delta[o0:o0 + _STEP, None] + base] >= 0   # (offsets, active), scan order
-        pos = np.cumsum(hit, axis=0, dtype=np.int32)
-        pos += found[act] - 1                        # slot of each hit
-        oi, hi = np.nonzero(hit & (pos < k))
-        pick[pos[oi, hi], act[hi]] = o0 + oi
-        found[act] = np.minimum(pos[-1] + 1, k)
+        hit = hits[delta[o0:o0 + _STEP, None] + base]   # (offsets, active), scan order
+        some = hit.any(axis=0)
+        if not some.all():                           # queries deep in a hole: no hit yet
+            hit, act_h = hit[:, some], act[some]
+        else:
+            act_h = act
+        _take(hit, act_h, found, pick, o0, k)
         more = found[act] < k
         act, base = act[more], base[more]
         if act.size == 0:
@@ -112,14 +115,34 @@ def knn_scan(lattice, r, c, k: int):
     pick = pick.T
     done = found == k
     pick = pick[done]
-    dc = odc[pick].astype(np.float64)
-    dr = odr[pick].astype(np.float64)
-    d2 = od2[pick].astype(np.float64)
+    dc, dr, d2 = (a[pick] for a in _OFFSETS_F)
     at = delta[pick]
     at += ((r[done].astype(np.int64) - r0 + pad) * width
            + (c[done].astype(np.int64) + pad))[:, None]
     j = flat[at].astype(np.int64)
     return done, d2, dc, dr, j
+
+
+def _take(hit, act, found, pick, o0: int, k: int):
+    """Record the hits of one step: ``hit[i, h]``, offset ``o0 + i`` of query ``act[h]``.
+
+    Each query's hits go, in offset order, to its next free slots in ``pick`` (up to
+    ``k``); ``found`` counts them. The running count along the offsets is summed row
+    by row in small integers and the hits listed with
+    ``flatnonzero``: the same slots as a cumulative sum and a 2-D ``nonzero``, a few
+    times cheaper.
+    """
+    if act.size == 0:
+        return
+    pos = hit.astype(found.dtype)
+    for i in range(1, pos.shape[0]):
+        pos[i] += pos[i - 1]
+    total = pos[-1] + found[act]
+    pos += found[act] - found.dtype.type(1)          # slot of each hit
+    at = np.flatnonzero(hit & (pos < k))
+    oi = at // act.size
+    pick[pos.ravel()[at], act[at - oi * act.size]] = o0 + oi
+    found[act] = np.minimum(total, k)
 
 
 #: Offsets of the query point (cells, powers of two: exact in float64) that order

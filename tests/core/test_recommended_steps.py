@@ -102,7 +102,7 @@ def test_hole_fill_neighbours_do_not_depend_on_tree_order():
     np.testing.assert_array_equal(d2, brute)             # the 12 nearest distances
 
 
-@pytest.mark.parametrize("k", [1, 5, 12, 40])
+@pytest.mark.parametrize("k", [1, 5, 12, 40, 110])
 def test_lattice_scan_finds_the_kd_trees_neighbours(k):
     """knn_scan visits the offsets in the tree's order: same cells, same order, same
     indices as the KD-tree search (_knn) for every hole cell it completes, and the deep
