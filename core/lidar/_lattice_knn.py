@@ -45,9 +45,10 @@ def scan_lattice(ring, rows=None, first=None):
 
     Returns the raster padded by the scan's reach holding each ring cell's index in
     ``np.nonzero(ring)`` order (-1 elsewhere), the padding, the raster's shape, the
-    first row and the padded raster's ring cells (bool, flat). ``rows = (a, b)``: only what a scan from rows a..b-1 reads (rows a - pad
-    to b + pad), the indices still those of the whole raster (``first[i]``: ring cells
-    in the rows before row i, else counted here).
+    first row and the padded raster's ring cells (bool, flat). ``rows = (a, b)``: only
+    what a scan from rows a..b-1 reads (rows a - pad to b + pad), the indices still those
+    of the whole raster (``first[i]``: ring cells in the rows before row i, else counted
+    here).
     """
     nrows, cols = ring.shape
     pad = int(np.sqrt(SCAN_D2))

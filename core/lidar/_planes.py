@@ -36,7 +36,7 @@ def _band_rows(cols: int) -> int:
 
 
 def _int_type(bound: int):
-    """The smallest signed integer type holding ``-bound .. bound``."""
+    """Return the smallest signed integer type holding ``-bound .. bound``."""
     for t in (np.int8, np.int16, np.int32):
         if bound <= np.iinfo(t).max:
             return t
@@ -54,7 +54,7 @@ def _pairs(p, r, n, axis):
 
 
 def _int_moments(valid, r: int):
-    """The integer moments of the valid cells of every (2r+1)² window.
+    """Sum the integer moments of the valid cells of every (2r+1)² window.
 
     Returns ``(n, sx, sy, sxx, syy, sxy)``: the count of valid cells and the sums of
     their column offset, row offset, squares and product (integer rasters; zero

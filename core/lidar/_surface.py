@@ -31,8 +31,14 @@ from scipy.spatial import cKDTree
 from ..system import release_free_memory
 from . import _lattice_knn as K  # noqa: N812
 from . import _raster as R  # noqa: N812
-from ._planes import (_plane_fit, gradient_at, gradient_of, plane_fit,  # noqa: F401
-                      plane_fit_where, plane_gradient)
+from ._planes import (  # noqa: F401
+    _plane_fit,
+    gradient_at,
+    gradient_of,
+    plane_fit,
+    plane_fit_where,
+    plane_gradient,
+)
 
 __all__ = ["grow_ground", "plane_fit", "plane_fit_where", "plane_gradient", "tangent_fill"]
 
@@ -357,8 +363,10 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
 
 
 def _grow_candidates(b, at, rms, centre, gx, gy, zmin, cell, opt):
-    """Candidates of :func:`grow_ground` among the object cells ``at`` (flat, in rows ``b``)
-    with their planes, and their tolerance."""
+    """Candidates of :func:`grow_ground` among the object cells ``at`` and their tolerance.
+
+    ``at``: flat indices within the rows ``b`` (a slice); the planes' values are at them.
+    """
     with np.errstate(invalid="ignore"):
         steep = np.hypot(gx, gy)
         tol = opt.grow_tol + opt.scaler * steep / cell
