@@ -10,10 +10,13 @@ order, by construction. Hole cells that do not find ``k`` border cells within
 """
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 from scipy.spatial import cKDTree
 
-__all__ = ["SCAN_D2", "Scan", "knn_scan", "nearest", "ring_cells", "scan_lattice"]
+__all__ = ["OFFSETS_F", "SCAN_D2", "Near", "Scan", "knn_scan", "near_offsets", "nearest",
+           "ring_cells", "scan_lattice", "scan_offsets"]
 
 #: Largest squared offset (cells²) visited by :func:`knn_scan` (40 cells: a hole cell
 #: deeper inside a hole is searched in the KD-tree). 40 rather than 24: at 0.2 pts/m² a
@@ -36,8 +39,8 @@ def _offsets(d2max: int):
 
 
 _OFFSETS = _offsets(SCAN_D2)
-#: The offsets ``(dc, dr, d²)`` in float64 (what :func:`knn_scan` returns).
-_OFFSETS_F = tuple(a.astype(np.float64) for a in _OFFSETS)
+#: The offsets ``(dc, dr, d²)`` in scan order, float64 (what :func:`knn_scan` returns).
+OFFSETS_F = tuple(a.astype(np.float64) for a in _OFFSETS)
 
 
 def scan_lattice(ring, rows=None, first=None):
@@ -91,37 +94,41 @@ def knn_scan(lattice, r, c, k: int):
         and row offsets (float64, shape (m, k)) ordered by (d², dr, dc), and ``j`` the
         index of each neighbour in ``np.nonzero(ring)`` order.
     """
+    done, o, j = scan_offsets(lattice, r, c, k)
+    dc, dr, d2 = (a[o] for a in OFFSETS_F)
+    return done, d2, dc, dr, j
+
+
+def scan_offsets(lattice, r, c, k: int):
+    """:func:`knn_scan` with each neighbour as its offset's index: ``(done, o, j)``.
+
+    ``o`` (int32, shape (m, k)) indexes :data:`OFFSETS_F` (the offsets in scan order):
+    a caller can tabulate what depends on the offset only.
+    """
     index, pad, (rows, cols), r0 = lattice[:4]
     width = cols + 2 * pad
     flat = index.ravel()
     hits = lattice[4]
     delta = _OFFSETS[1].astype(np.int64) * width + _OFFSETS[0]
     m = r.size
-    pick = np.zeros((k, m), np.int32)                # offset index of each neighbour
+    pick = np.zeros((m, k), np.int32)                # offset index of each neighbour
     found = np.zeros(m, np.int8 if k + _STEP < 127 else np.int32)
     act = np.arange(m)
     base = (r.astype(np.int64) - r0 + pad) * width + (c.astype(np.int64) + pad)
     for o0 in range(0, delta.size, _STEP):
         hit = hits[delta[o0:o0 + _STEP, None] + base]   # (offsets, active), scan order
-        some = hit.any(axis=0)
-        if not some.all():                           # queries deep in a hole: no hit yet
-            hit, act_h = hit[:, some], act[some]
-        else:
-            act_h = act
-        _take(hit, act_h, found, pick, o0, k)
+        _take(hit, act, found, pick, o0, k)
         more = found[act] < k
         act, base = act[more], base[more]
         if act.size == 0:
             break
-    pick = pick.T
     done = found == k
     pick = pick[done]
-    dc, dr, d2 = (a[pick] for a in _OFFSETS_F)
     at = delta[pick]
     at += ((r[done].astype(np.int64) - r0 + pad) * width
            + (c[done].astype(np.int64) + pad))[:, None]
     j = flat[at].astype(np.int64)
-    return done, d2, dc, dr, j
+    return done, pick, j
 
 
 def _take(hit, act, found, pick, o0: int, k: int):
@@ -131,18 +138,20 @@ def _take(hit, act, found, pick, o0: int, k: int):
     ``k``); ``found`` counts them. The running count along the offsets is summed row
     by row in small integers and the hits listed with
     ``flatnonzero``: the same slots as a cumulative sum and a 2-D ``nonzero``, a few
-    times cheaper.
+    times cheaper. ``pick`` is (queries, k).
     """
-    if act.size == 0:
-        return
     pos = hit.astype(found.dtype)
     for i in range(1, pos.shape[0]):
         pos[i] += pos[i - 1]
     total = pos[-1] + found[act]
     pos += found[act] - found.dtype.type(1)          # slot of each hit
     at = np.flatnonzero(hit & (pos < k))
-    oi = at // act.size
-    pick[pos.ravel()[at], act[at - oi * act.size]] = o0 + oi
+    n = act.size
+    oi = at // n                                     # offset (row) of each hit
+    slot = act[at - oi * n]
+    slot *= pick.shape[1]
+    slot += pos.ravel()[at]
+    pick.ravel()[slot] = oi + o0
     found[act] = np.minimum(total, k)
 
 
@@ -197,27 +206,56 @@ def _knn(tree, q, k: int, lattice):
     return dc * dc + dr * dr, dc, dr, j
 
 
-def nearest(scan, r, c, k: int, trees: list, ring=None):
-    """Return :func:`_knn`'s ``(d2, dc, dr, j)`` of the cells ``(r, c)``.
+class Near(NamedTuple):
+    """Neighbours of query cells (:func:`near_offsets`).
 
-    Scanned on the lattice (:func:`knn_scan`: the same cells in the same order); the
-    KD-tree (built once into ``trees``, from ``ring`` when the lattice covers some rows
-    only) searches the cells whose ``k`` nearest lie farther.
+    ``o`` (m, k): index of each neighbour's offset in :data:`OFFSETS_F`, -1 on the rows
+    the KD-tree searched; ``j`` (m, k): the neighbours' indices in ``np.nonzero(ring)``
+    order; ``far``: those rows, and ``d2, dc, dr`` (len(far), k) their offsets.
     """
-    done, *near = knn_scan(scan, r, c, k)
+
+    o: np.ndarray
+    j: np.ndarray
+    far: np.ndarray
+    d2: np.ndarray
+    dc: np.ndarray
+    dr: np.ndarray
+
+    def arrays(self):
+        """Return :func:`_knn`'s ``(d2, dc, dr, j)`` of every row."""
+        out = [a[self.o] for a in (OFFSETS_F[2], OFFSETS_F[0], OFFSETS_F[1])]
+        for a, b in zip(out, (self.d2, self.dc, self.dr)):
+            a[self.far] = b
+        return out + [self.j]
+
+
+def near_offsets(scan, r, c, k: int, trees: list, ring=None) -> Near:
+    """Return the ``k`` nearest cells of the cells ``(r, c)`` as a :class:`Near`.
+
+    Scanned on the lattice (:func:`scan_offsets`: the same cells in the same order as
+    :func:`_knn`); the KD-tree (built once into ``trees``, from ``ring`` when the
+    lattice covers some rows only) searches the cells whose ``k`` nearest lie farther.
+    """
+    done, o, j = scan_offsets(scan, r, c, k)
     if done.all():
-        return near
+        empty = np.empty((0, k))
+        return Near(o, j, np.empty(0, np.int64), empty, empty, empty)
     if not trees:
         rr, cc = ring_cells(scan) if ring is None else np.nonzero(ring)
         lattice = np.empty((rr.size, 2))             # float64: the tree keeps it, no copy
         lattice[:, 0], lattice[:, 1] = cc, rr
         trees += [cKDTree(lattice), lattice]
-    far = ~done
-    out = [np.empty((r.size, k), a.dtype) for a in near]
-    for o, a, b in zip(out, near, _knn(trees[0], np.column_stack((c[far], r[far])), k,
-                                       trees[1])):
-        o[done], o[far] = a, b
-    return out
+    far = np.flatnonzero(~done)
+    d2, dc, dr, jf = _knn(trees[0], np.column_stack((c[far], r[far])), k, trees[1])
+    oo = np.full((r.size, k), -1, np.int32)
+    jj = np.empty((r.size, k), np.int64)
+    oo[done], jj[done], jj[far] = o, j, jf
+    return Near(oo, jj, far, d2, dc, dr)
+
+
+def nearest(scan, r, c, k: int, trees: list, ring=None):
+    """Return :func:`_knn`'s ``(d2, dc, dr, j)`` of the cells ``(r, c)`` (:func:`near_offsets`)."""
+    return near_offsets(scan, r, c, k, trees, ring).arrays()
 
 
 class Scan:
@@ -232,8 +270,8 @@ class Scan:
         self.ring, self.lattice = ring, None
         self.first = np.concatenate(([0], np.cumsum(np.count_nonzero(ring, axis=1))))
 
-    def nearest(self, r, c, k, trees):
-        """Return ``(d2, dc, dr, j)`` of the cells ``(r, c)`` (sorted by row)."""
+    def near(self, r, c, k, trees) -> Near:
+        """Return the :class:`Near` of the cells ``(r, c)`` (sorted by row)."""
         parts, s = [], 0
         while s < r.size:
             lat = self.lattice
@@ -241,11 +279,16 @@ class Scan:
                 a = int(r[s])
                 lat = self.lattice = scan_lattice(self.ring, (a, a + SCAN_ROWS), self.first)
             e = int(np.searchsorted(r, lat[3] + SCAN_ROWS))
-            parts.append(nearest(lat, r[s:e], c[s:e], k, trees, ring=self.ring))
+            part = near_offsets(lat, r[s:e], c[s:e], k, trees, ring=self.ring)
+            parts.append(part._replace(far=part.far + s))
             s = e
         if len(parts) == 1:
             return parts[0]
-        return [np.concatenate(a) for a in zip(*parts)]
+        return Near(*(np.concatenate(a) for a in zip(*parts)))
+
+    def nearest(self, r, c, k, trees):
+        """Return ``(d2, dc, dr, j)`` of the cells ``(r, c)`` (sorted by row)."""
+        return self.near(r, c, k, trees).arrays()
 
 
 #: Rows per lattice of :class:`Scan`.

@@ -112,8 +112,8 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         few = hr is not None and hr.size <= BATCH    # few holes (refine): gradients where read
         scan = K.Scan(ring)                          # lattices of some rows at a time
         if few:
-            near = scan.nearest(hr, hc, k, trees)
-            used = np.unique(near[3])
+            near = scan.near(hr, hc, k, trees)
+            used = np.unique(near.j)
         if near is not None and used.size * (2 * radius + 1) ** 2 < z.size // 2:
             bgx, bgy = np.zeros(rr.size), np.zeros(rr.size)
             bgx[used], bgy[used] = gradient_of(z, valid, radius, cell, rr[used], cc[used])
@@ -121,28 +121,46 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
             bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
     del rr, cc, ring
     trim and release_free_memory()  # the temporaries above: their pages back before the batches
+    table = _weights(*K.OFFSETS_F, cell, reach)      # what depends on a scan offset only
     for r, c in _batches(holes, hr, hc):
-        d2, dc, dr, j = near if near is not None else scan.nearest(r, c, k, trees)
+        nb = near if near is not None else scan.near(r, c, k, trees)
+        ndc, dr, damp, w = (t[nb.o] for t in table[:4])
+        if nb.far.size:                              # rows the KD-tree found
+            for a, b in zip((ndc, dr, damp, w), _weights(nb.dc, nb.dr, nb.d2, cell, reach)):
+                a[nb.far] = b
         if d2k is not None:
-            last = np.ceil(np.sqrt(d2[:, -1]))               # whole cells, rounded up
+            last = table[4][nb.o[:, -1]]             # whole cells, rounded up
+            last[nb.far] = np.ceil(np.sqrt(nb.d2[:, -1]))
             d2k[r, c] = np.where(last < _NONE, last, _NONE)     # too far: not kept
-        d = np.sqrt(d2) * cell
-        np.maximum(d, 1e-9, out=d)
-        damp = np.minimum(1.0, reach / d)
-        damp *= cell
         # tangent plane of border cell j at the hole cell: offsets are integers, so the
         # value does not depend on where the raster starts
-        plane = bgx[j] * -dc
+        j = nb.j
+        plane = bgx[j] * ndc
         plane -= bgy[j] * dr
         plane *= damp
         plane += bz[j]
-        np.multiply(d, d, out=d)
-        np.divide(1.0, d, out=d)                     # weights 1 / d²
-        plane *= d
-        out[r, c] = plane.sum(axis=1) / d.sum(axis=1)
+        plane *= w
+        out[r, c] = plane.sum(axis=1) / w.sum(axis=1)
     if cache is not None:
         cache.update(key=key, valid=valid.copy(), out=out, d2k=d2k)
     return out
+
+
+def _weights(dc, dr, d2, cell: float, reach: float):
+    """Terms of a border cell's tangent plane that depend on its offset ``(dc, dr)`` only.
+
+    Returns ``(-dc, dr, damp, w, last)``: the slope damping (``min(1, reach / d)``
+    times the cell size), the Shepard weight ``1 / d²`` (``d`` in metres, at least
+    1e-9) and the distance in whole cells rounded up, each computed elementwise as
+    :func:`tangent_fill` always has (a table of the scan's offsets gives the same bits).
+    """
+    d = np.sqrt(d2) * cell
+    np.maximum(d, 1e-9, out=d)
+    damp = np.minimum(1.0, reach / d)
+    damp *= cell
+    np.multiply(d, d, out=d)
+    np.divide(1.0, d, out=d)                         # weights 1 / d²
+    return -dc, dr, damp, d, np.ceil(np.sqrt(d2))
 
 
 def _holes(prev, key, z, valid, need, out, dk, radius):

@@ -67,6 +67,39 @@ def test_integer_window_moments_equal_scipy_correlations():
             assert got["sxx"].dtype == np.int32 and got["sxx"].max() == 81 * (40 * 41 * 81 // 3)
 
 
+def test_tangent_fill_equals_a_brute_force_fill_scan_and_tree():
+    """Every hole cell is the Shepard mean of the tangent planes of its 12 nearest border
+    cells ordered by (d², row, column offset), bit for bit: cells near a border (lattice
+    scan, offsets tabulated) and deep in a 60-cell-wide hole (beyond the scan: KD-tree)."""
+    from geomatics_toolbox.core.lidar import _lattice_knn as K  # noqa: N812
+    rng = np.random.default_rng(21)
+    rows, cols, cell, reach, k = 130, 120, 0.8, 10.0, 12
+    z = 50.0 + rng.normal(0, 1, (rows, cols)).cumsum(axis=1) * 0.2
+    valid = rng.random((rows, cols)) < 0.7
+    valid[20:120, 25:115] = False                     # hole cells up to 45 from a border
+    got = S.tangent_fill(np.where(valid, z, np.nan), valid, cell, radius=3, neighbours=k,
+                         reach=reach)
+    gx, gy = S.plane_gradient(z, valid, 3, cell)
+    ring = valid & ~np.all([np.roll(np.pad(valid, 1, constant_values=True), (a, b), (0, 1))
+                            [1:-1, 1:-1] for a in (-1, 0, 1) for b in (-1, 0, 1)], axis=0)
+    rr, cc = np.nonzero(ring)
+    hr, hc = np.nonzero(~valid)
+    pick = (rng.random(hr.size) < 0.1) | ((abs(hr - 70) < 8) & (abs(hc - 70) < 8))
+    hr, hc = hr[pick], hc[pick]                       # a sample, and the deepest cells
+    dr, dc = rr[None, :] - hr[:, None], cc[None, :] - hc[:, None]
+    d2 = dr * dr + dc * dc
+    order = np.lexsort((dc, dr, d2), axis=1)[:, :k]
+    j = order
+    d2, dc, dr = (np.take_along_axis(a, order, 1).astype(float) for a in (d2, dc, dr))
+    assert (d2[:, -1] > K.SCAN_D2).sum() > 100 and (d2[:, -1] <= K.SCAN_D2).sum() > 500
+    d = np.maximum(np.sqrt(d2) * cell, 1e-9)
+    damp = np.minimum(1.0, reach / d) * cell
+    plane = ((gx[rr, cc][j] * -dc - gy[rr, cc][j] * dr) * damp + z[rr, cc][j]) * (1.0 / (d * d))
+    want = plane.sum(axis=1) / (1.0 / (d * d)).sum(axis=1)
+    np.testing.assert_array_equal(got[hr, hc], want)
+    np.testing.assert_array_equal(got[valid], z[valid])
+
+
 def test_tangent_fill_reproduces_a_plane():
     yy, xx = _grid()
     z = 50.0 + 0.4 * xx + 0.25 * yy
