@@ -65,7 +65,7 @@ class LowCells:
     canopy_scale: float
 
 
-def closing_pits(zmin, step: float, anchor=(0, 0)):
+def closing_pits(zmin, step: float, anchor=(0, 0), tables=False):
     """Occupied cells more than ``step`` below the 3 x 3 closing of the filled raster.
 
     Parameters
@@ -76,6 +76,8 @@ def closing_pits(zmin, step: float, anchor=(0, 0)):
         Depth (m).
     anchor : (int, int)
         Lattice index of cell (0, 0) (``_raster.Grid.anchor``).
+    tables : bool
+        Close by tables of minima and maxima (:func:`._raster.opening`: the same bits).
 
     Returns
     -------
@@ -88,7 +90,7 @@ def closing_pits(zmin, step: float, anchor=(0, 0)):
         return np.zeros(zmin.shape, bool), zmin.copy()
     zf = R.fill(zmin, ~empty, anchor)
     np.negative(zf, out=zf)                          # the closing is -opening(-zf), in place
-    clo = R.opening(zf, 1)
+    clo = R.opening(zf, 1, tables=tables)
     del zf
     np.negative(clo, out=clo)
     pits = np.empty(zmin.shape, bool)
@@ -131,9 +133,10 @@ def _block_any(mask, f: int, anchor=(0, 0)):
     return mp.reshape(r2, f, c2, f).any(axis=(1, 3))
 
 
-def _canopy(zmin, cell: float, step: float, window: float, share: float, anchor):
+def _canopy(zmin, cell: float, step: float, window: float, share: float, anchor,
+            tables=False):
     """``(pits, n_pits, occupied, canopy)``: closing pits and the areas where they are common."""
-    pits = closing_pits(zmin, step, anchor)[0]          # the closing itself is not kept
+    pits = closing_pits(zmin, step, anchor, tables)[0]  # the closing itself is not kept
     occupied = ~np.isnan(zmin)
     if not pits.any():
         return pits, 0, occupied, None
@@ -152,7 +155,7 @@ def _canopy(zmin, cell: float, step: float, window: float, share: float, anchor)
 
 def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
               share: float = 0.08, share_coarse: float = 0.03, anchor=(0, 0),
-              factor=None) -> LowCells:
+              factor=None, tables=False) -> LowCells:
     """Low-outlier cells: closing pits, read at the ground-return scale under canopy.
 
     Parameters
@@ -176,13 +179,15 @@ def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
         The coarse factor, chosen elsewhere from the counts of a larger raster (a
         catalog: :func:`canopy_counts` summed over its chunks, :func:`choose_factor`);
         default: chosen on this raster.
+    tables : bool
+        Closings by tables of minima and maxima (:func:`._raster.opening`: the same bits).
 
     Returns
     -------
     LowCells
         The mask and what was derived.
     """
-    pits, n_pits, occupied, canopy = _canopy(zmin, cell, step, window, share, anchor)
+    pits, n_pits, occupied, canopy = _canopy(zmin, cell, step, window, share, anchor, tables)
     n_occ = max(1, int(np.count_nonzero(occupied)))
     if not n_pits:
         return LowCells(pits, 0, 0.0, 0.0)
@@ -190,7 +195,7 @@ def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
         return LowCells(pits, n_pits, 0.0, 0.0)
     for f in (int(factor),) if factor else FACTORS:
         coarse, canchor = _block_min(zmin, f, anchor)
-        cpits, clo = closing_pits(coarse, step, canchor)
+        cpits, clo = closing_pits(coarse, step, canchor, tables)
         if factor:
             break
         area = _block_any(canopy, f, anchor)

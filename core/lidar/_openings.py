@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._raster import opening
+from . import _raster as R  # noqa: N812
 
 
 def openings(z, radii, overwrite=False, outside=None, chain=True):
@@ -24,6 +24,7 @@ def openings(z, radii, overwrite=False, outside=None, chain=True):
     ``chain=False``: each an opening of the last (two rasters fewer: the erosion and its
     scratch, and no temporaries of the table).
     """
+    tables = chain                       # the same bits by tables (:func:`opening`)
     chain = chain and (outside is None or not outside.any()) and \
         np.array_equal(radii, np.arange(1, len(radii) + 1))
     cur, spare = z, None
@@ -35,7 +36,7 @@ def openings(z, radii, overwrite=False, outside=None, chain=True):
             erode3(eroded, buf)
             opened = dilate(eroded, size, out=spare)
         else:
-            opened = opening(cur, r, out=spare, outside=outside)
+            opened = R.opening(cur, r, out=spare, outside=outside, tables=tables)
         yield r, cur, opened
         spare = cur if overwrite or cur is not z else None
         cur = opened
@@ -76,8 +77,30 @@ def dilate(e, size, out=None):
     return _max1d(a, size, 1, out)
 
 
-def _max1d(a, w, axis, out=None):
-    """Maximum over the centred window of ``w`` cells along ``axis`` (clipped at the edges)."""
+def opening(z, radius, out=None, outside=None):
+    """:func:`._raster.opening` by tables of minima and maxima: the same bits, 2-4 x faster.
+
+    scipy's 1-D filters take 5-13 ms per pass on an 895 x 895 raster (3 to 55 cells wide),
+    the tables 1-5 ms; each pass makes a padded copy of the raster (dense clouds: their
+    rasters are small beside the per-point arrays). ``out`` may be ``z``.
+    """
+    size = 2 * int(radius) + 1
+    if outside is not None:
+        z[outside] = np.inf
+    out = _max1d(z, size, 0, out, np.minimum)
+    _max1d(out, size, 1, out, np.minimum)
+    if outside is not None:
+        out[outside] = -np.inf
+    for axis in (0, 1):
+        _max1d(out, size, axis, out)
+    return out
+
+
+def _max1d(a, w, axis, out=None, op=np.maximum):
+    """Maximum (``op``: or minimum) over the centred window of ``w`` cells along ``axis``.
+
+    Clipped at the edges; ``out`` may be ``a`` (the table is a padded copy).
+    """
     r = w // 2
     n = a.shape[axis]
     first = np.take(a, [0], axis=axis)
@@ -86,9 +109,9 @@ def _max1d(a, w, axis, out=None):
     v = np.moveaxis(p, axis, 0)                      # edge values repeated: clipped windows
     k = 1
     while 2 * k <= w:                                # v[i]: maximum of [i, i + 2k)
-        np.maximum(v[:-k], v[k:], out=v[:-k])
+        op(v[:-k], v[k:], out=v[:-k])
         k *= 2
     if out is None:
         out = np.empty(a.shape, a.dtype)
-    np.maximum(v[:n], v[w - k:w - k + n], out=np.moveaxis(out, axis, 0))
+    op(v[:n], v[w - k:w - k + n], out=np.moveaxis(out, axis, 0))
     return out

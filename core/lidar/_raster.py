@@ -442,14 +442,19 @@ def floor_steps(z, valid, step: float):
     return z
 
 
-def opening(z, radius, out=None, outside=None):
+def opening(z, radius, out=None, outside=None, tables=False):
     """Grey opening with a (2r+1)² square window (separable min/max filters).
 
     The 1-D filters axis by axis, all but the first in place (scipy's separable filter
     buffers each line; a copy only for an output sharing the input: ``out``, not ``z``).
     ``outside`` (:func:`._terrain.outside_hull`): cells not there - ``z`` set to +inf (no
     value), no window centred there (as beyond the raster's edge); garbage there.
+    ``tables``: the same bits from tables of minima and maxima (:func:`._openings.opening`,
+    faster, a padded copy of the raster per pass: for dense clouds).
     """
+    if tables:
+        from ._openings import opening as by_tables
+        return by_tables(z, radius, out, outside)
     size = 2 * int(radius) + 1
     if outside is not None:
         z[outside] = np.inf
@@ -459,6 +464,29 @@ def opening(z, radius, out=None, outside=None):
         out[outside] = -np.inf
     for axis in (0, 1):
         ndimage.maximum_filter1d(out, size, axis=axis, mode="nearest", output=out)
+    return out
+
+
+def dilate_mask(mask, size):
+    """``ndimage.maximum_filter(mask, size, mode="constant")`` of a bool raster, the same cells.
+
+    Square windows clipped at the edges, as shifted ORs axis by axis (one row band of
+    scratch for the second axis): 0.6-1 ms instead of scipy's 5-6 ms on 895 x 895 cells.
+
+    >>> dilate_mask(np.array([[0, 0, 0, 1]], bool), 3).astype(int).tolist()
+    [[0, 0, 1, 1]]
+    """
+    r = int(size) // 2
+    out = mask.copy()
+    for s in range(1, min(r, mask.shape[0] - 1) + 1):     # rows: from the input itself
+        out[s:] |= mask[:-s]
+        out[:-s] |= mask[s:]
+    for b0 in range(0, out.shape[0], BAND):              # columns: from a band's copy
+        band = out[b0:b0 + BAND]
+        src = band.copy()
+        for s in range(1, min(r, out.shape[1] - 1) + 1):
+            band[:, s:] |= src[:, :-s]
+            band[:, :-s] |= src[:, s:]
     return out
 
 

@@ -100,12 +100,16 @@ def water_candidates(x, y, z, *, density: Optional[float] = None,
     # temporaries stay in the processor's cache); the points left out get the extra cell
     # ``size``, which is never a candidate: one count, and no second pass over the points
     idx = np.empty(n, np.int32 if size < 2 ** 31 - 1 else np.int64)
-    for s in range(0, n, R.CHUNK):
-        b = slice(s, s + R.CHUNK)
-        idx[b] = world_cells(x[b], y[b], cell, int(x0), int(y0), shape[1], row_major=True)
+    cnt = np.zeros(size + 1, np.int64)               # counted per block: bincount casts
+    for s in range(0, n, R.CHUNK):                   # its input to int64 (a 4 M-point
+        b = slice(s, s + R.CHUNK)                    # int32 array: a 32 MB copy)
+        i = world_cells(x[b], y[b], cell, int(x0), int(y0), shape[1], row_major=True)
         if keep is not None:                         # points left out may lie outside
-            idx[b][~keep[b]] = size
-    cnt = np.bincount(idx, minlength=size + 1)
+            i[~keep[b]] = size
+        lo = int(i.min())                            # the block's span of cells only
+        c = np.bincount(i - lo)
+        cnt[lo:lo + c.size] += c
+        idx[b] = i
     cand = cnt > 0                                   # occupied, and sparse:
     cand &= cnt < sparse * median5 * (cell / DENSITY_CELL) ** 2
     cand[size] = False

@@ -355,8 +355,8 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
     cand.ravel()[at[~keep]] = False
     offs = [(dr, dc) for dr in range(-rad, rad + 1) for dc in range(-rad, rad + 1)
             if (dr, dc) != (0, 0)]
-    size = 2 * rad + 1          # square dilations as separable maxima (the same cells)
-    front = cand & ndimage.maximum_filter(ground, size=size, mode="constant")
+    size = 2 * rad + 1          # square dilations as shifted ORs (the same cells)
+    front = cand & R.dilate_mask(ground, size)
     for _ in range(int(opt.grow_iters)):
         rr, cc = np.nonzero(front)
         if rr.size == 0:
@@ -376,7 +376,7 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
         front[:] = False
         front[rr[acc], cc[acc]] = True                   # the cells just accepted
         ground |= front
-        front = cand & ~ground & ndimage.maximum_filter(front, size=size, mode="constant")
+        front = cand & ~ground & R.dilate_mask(front, size)
     return obj & ~ground
 
 

@@ -13,7 +13,7 @@ from . import _raster as R  # noqa: N812
 __all__ = ["outside_hull", "progressive_objects", "terrain_slope", "trend_surface"]
 
 
-def trend_surface(zf, grid, opt, subtract=False, outside=None):
+def trend_surface(zf, grid, opt, subtract=False, outside=None, tables=False):
     """Smooth large-scale terrain trend removed before the progressive opening.
 
     Opening ``z - trend`` and adding the trend back is an opening whose flat
@@ -40,6 +40,8 @@ def trend_surface(zf, grid, opt, subtract=False, outside=None):
     outside : ndarray of bool, optional
         Cells outside the occupied cells' hull (:func:`outside_hull`): absent from the
         opening, then filled from it (:func:`_opened`).
+    tables : bool
+        Open by tables of minima and maxima (:func:`._raster.opening`: the same bits).
 
     Returns
     -------
@@ -48,11 +50,11 @@ def trend_surface(zf, grid, opt, subtract=False, outside=None):
     """
     r = max(1, int(np.ceil(opt.trend_window / grid.cell)))
     k = 2 * max(1, int(np.ceil(opt.trend_smooth / grid.cell))) + 1
-    return R.box_mean(_opened(zf, r, outside, grid.anchor), k,
+    return R.box_mean(_opened(zf, r, outside, grid.anchor, tables), k,
                       subtract_from=zf if subtract else None)
 
 
-def terrain_slope(zf, grid, opt, outside=None):
+def terrain_slope(zf, grid, opt, outside=None, tables=False):
     """Per-cell slope tolerance from the terrain under a large-window opening.
 
     The opening with the largest window removes objects; its gradient, averaged over
@@ -69,6 +71,8 @@ def terrain_slope(zf, grid, opt, outside=None):
         Options.
     outside : ndarray of bool, optional
         As for :func:`trend_surface`.
+    tables : bool
+        As for :func:`trend_surface`.
 
     Returns
     -------
@@ -76,7 +80,7 @@ def terrain_slope(zf, grid, opt, outside=None):
         Slope tolerance per cell (rise/run).
     """
     r = max(1, int(np.ceil(opt.max_window / grid.cell)))
-    t = R.slope(_opened(zf, r, outside, grid.anchor), grid.cell,
+    t = R.slope(_opened(zf, r, outside, grid.anchor, tables), grid.cell,
                 dtype=zf.dtype)                               # float32 rasters: float32
     t = R.box_mean(t, 2 * r + 1)
     t *= opt.slope_factor
@@ -143,7 +147,7 @@ def outside_hull(occupied):
     return out
 
 
-def _opened(zf, r, outside, anchor):
+def _opened(zf, r, outside, anchor, tables=False):
     """Return the opening of ``zf`` with cells ``outside`` absent, filled there from itself.
 
     Outside the occupied cells' hull the filled minimum raster extrapolates whatever is
@@ -152,9 +156,9 @@ def _opened(zf, r, outside, anchor):
     filled from the opened (object-free) surface.
     """
     if outside is None or not outside.any():
-        return R.opening(zf, r)
+        return R.opening(zf, r, tables=tables)
     saved = zf[outside]                  # not a copy of zf: its values there, put back
-    op = R.opening(zf, r, outside=outside)           # (which sets them to +inf)
+    op = R.opening(zf, r, outside=outside, tables=tables)   # (sets them to +inf)
     zf[outside] = saved
     return R.fill(op, ~outside, anchor, overwrite=True)
 
@@ -191,10 +195,12 @@ def progressive_objects(zf, cell, max_window, slope, rep, overwrite=False, outsi
     from ._openings import openings
     radii = np.arange(1, max(1, int(np.ceil(max_window / cell))) + 1)
     obj = np.zeros(zf.shape, dtype=bool)
+    s64 = np.asarray(slope, np.float64) if chain and np.ndim(slope) else None  # dense: once
     for k, (r, cur, opened) in enumerate(openings(zf, radii, overwrite, outside, chain)):
         rep(0.3 + 0.5 * k / radii.size)
         for b0 in range(0, zf.shape[0], R.BAND):    # bands: no full-size temporaries
             b = slice(b0, b0 + R.BAND)
-            s = np.asarray(slope[b] if np.ndim(slope) else slope, np.float64)
+            s = s64[b] if s64 is not None else \
+                np.asarray(slope[b] if np.ndim(slope) else slope, np.float64)
             obj[b] |= np.subtract(cur[b], opened[b], dtype=np.float64) > s * int(r) * cell
     return obj if outside is None else np.logical_and(obj, ~outside, out=obj)

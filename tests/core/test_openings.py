@@ -70,3 +70,37 @@ def test_dilate_is_scipys_maximum_filter(size):
         assert np.array_equal(dilate(z, size), want)
         out = np.empty_like(z)
         assert dilate(z, size, out=out) is out and np.array_equal(out, want)
+
+
+@pytest.mark.parametrize("radius", [1, 2, 18, 27, 60])
+def test_opening_by_tables_is_scipys_opening(radius):
+    """R.opening(tables=True) (dense clouds' closings, trend and slope openings) gives the
+    bits of the scipy filters, with and without cells outside, in place or not."""
+    rng = np.random.default_rng(radius)
+    for shape in [(60, 45), (1, 30), (30, 1), (2, 2), (130, 7)]:
+        z = rng.normal(0, 3, shape).astype(np.float32)
+        z[rng.random(shape) < 0.1] += 20.0
+        z.ravel()[::7] = np.round(z.ravel()[::7])    # ties
+        outside = rng.random(shape) < 0.2
+        for out in (None, outside):
+            want = R.opening(z.copy(), radius, outside=out)
+            a = z.copy()
+            got = R.opening(a, radius, outside=out, tables=True)
+            assert np.array_equal(got, want)
+            assert np.array_equal(R.opening(a, radius, out=a, outside=out, tables=True), want)
+        neg = -z                                      # a closing, as closing_pits takes it
+        assert np.array_equal(-R.opening(neg.copy(), radius, tables=True),
+                              -R.opening(neg.copy(), radius))
+
+
+@pytest.mark.parametrize("size", [3, 7, 15])
+def test_dilate_mask_is_scipys_maximum_filter(size):
+    """The growing step's square dilation of bool rasters: the cells of scipy's filter."""
+    from scipy import ndimage
+    rng = np.random.default_rng(size)
+    for shape in [(60, 45), (1, 30), (30, 1), (2, 2), (300, 7)]:
+        for share in (0.01, 0.3):
+            m = rng.random(shape) < share
+            want = ndimage.maximum_filter(m, size=size, mode="constant")
+            got = R.dilate_mask(m, size)
+            assert got.dtype == bool and np.array_equal(got, want)
