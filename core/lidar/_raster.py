@@ -425,16 +425,18 @@ def floor_steps(z, valid, step: float):
     >>> floor_steps(z, v, 2.0).tolist()
     [[0.0, 0.0, 9.0]]
     """
+    from ._openings import erode3  # 3 x 3 minima of shifted views (4 x faster than scipy's)
     rows = z.shape[0]
+    buf = np.empty(min(rows, BAND + 2) * z.shape[1], z.dtype)
     for b0 in range(0, rows, BAND):
         lo, hi = max(0, b0 - 1), min(rows, b0 + BAND + 1)
-        v = valid[lo:hi]
-        low = ndimage.minimum_filter(np.where(v, z[lo:hi], np.inf), size=3, mode="constant",
-                                     cval=np.inf)
-        top = ndimage.maximum_filter(np.where(v, z[lo:hi], -np.inf), size=3,
-                                     mode="constant", cval=-np.inf)
         n = min(BAND, rows - b0)
-        low, top = low[b0 - lo:b0 - lo + n], top[b0 - lo:b0 - lo + n]
+        v = valid[lo:hi]
+        if v[b0 - lo:b0 - lo + n].all():            # no filled cell in the band
+            continue
+        low = erode3(np.where(v, z[lo:hi], np.inf), buf)[b0 - lo:b0 - lo + n]
+        top = erode3(np.where(v, -z[lo:hi], np.inf), buf)[b0 - lo:b0 - lo + n]
+        np.negative(top, out=top)                    # the maximum of the occupied
         with np.errstate(invalid="ignore"):
             hit = ~valid[b0:b0 + n] & (top - low > step)
         zb = z[b0:b0 + n]                            # a view: only invalid cells change,
