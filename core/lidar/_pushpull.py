@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import ndimage
 
-__all__ = ["push_pull"]
+__all__ = ["push_pull", "zoom_at"]
 
 #: Coarse rows per band.
 ROWS = 64
@@ -82,12 +82,51 @@ def _upsample_into(vw, w, coarse, pr, pc):
         f0, f1 = max(0, 2 * b0 - pr), min(rows, 2 * b1 - pr)
         if f0 >= f1:
             continue
-        m0, m1 = max(0, b0 - 1), min(rc, b1 + 1)          # a coarse row of margin
-        up = ndimage.zoom(coarse[m0:m1], 2, order=1, mode="nearest", grid_mode=True,
-                          output=dtype)
-        up = up[f0 + pr - 2 * m0:f1 + pr - 2 * m0, pc:pc + cols]
         vb, wb = vw[f0:f1], w[f0:f1]
         hole = ~wb if wb.dtype == bool else ~(wb > 0)
         if wb.dtype != bool:                          # boolean weights: vw / 1 is vw
             np.divide(vb, wb, out=vb, where=~hole)
+        nh = int(np.count_nonzero(hole))
+        if nh * 4 < hole.size:                        # few holes: the zoom at them only
+            hr, hc = np.nonzero(hole)
+            vb[hr, hc] = zoom_at(coarse, hr + (f0 + pr), hc + pc).astype(dtype)
+            continue
+        m0, m1 = max(0, b0 - 1), min(rc, b1 + 1)          # a coarse row of margin
+        up = ndimage.zoom(coarse[m0:m1], 2, order=1, mode="nearest", grid_mode=True,
+                          output=dtype)
+        up = up[f0 + pr - 2 * m0:f1 + pr - 2 * m0, pc:pc + cols]
         vb[hole] = up[hole]
+
+
+def zoom_at(coarse, rr, cc):
+    """``ndimage.zoom(coarse, 2, order=1, mode="nearest", grid_mode=True)`` at (rr, cc), float64.
+
+    The same arithmetic as scipy's ``NI_ZoomShift``: an even output index ``2i`` lies at
+    ``i - 0.25`` (taps ``i - 1``, ``i``, weights 0.25, 0.75), an odd one at ``i + 0.25``
+    (taps ``i``, ``i + 1``, weights 0.75, 0.25), taps clamped at the edges; each term is
+    value x row weight x column weight, added to 0.0 rows outer, columns inner - the
+    same bits (``tests/core/test_push_pull_bands.py``), computed only where read.
+    """
+    rows, cols = coarse.shape
+    (r0, r1, a0, a1), (c0, c1, b0, b1) = _taps(rr, rows), _taps(cc, cols)
+    flat = np.ascontiguousarray(coarse).ravel()
+    r0 *= cols
+    r1 *= cols
+    t = np.zeros(rr.size)
+    for r, a in ((r0, a0), (r1, a1)):
+        for c, b in ((c0, b0), (c1, b1)):
+            v = flat[r + c].astype(np.float64)
+            v *= a
+            v *= b
+            t += v
+    return t
+
+
+def _taps(i, n):
+    """Lower and upper taps and weights of :func:`zoom_at` along one axis."""
+    odd = (i & 1).astype(bool)
+    h = i >> 1
+    lo = np.maximum(np.where(odd, h, h - 1), 0)
+    hi = np.minimum(np.where(odd, h + 1, h), n - 1)
+    w0 = np.where(odd, 0.75, 0.25)
+    return lo, hi, w0, 1.0 - w0

@@ -54,7 +54,7 @@ SHAPES = [(1, 9), (3, 3), (5, 2), (64, 7), (127, 40), (129, 129), (257, 31), (30
 def test_banded_push_pull_equals_the_whole_array_pyramid(shape, dtype, monkeypatch):
     for rows_per_band in (1, 3, 64):
         monkeypatch.setattr(P, "ROWS", rows_per_band)
-        for seed, holes in ((1, 0.3), (2, 0.8), (3, 0.995)):
+        for seed, holes in ((1, 0.3), (2, 0.8), (3, 0.995), (4, 0.05)):  # 0.05: zoom_at
             z, valid = _raster(shape, seed, holes, dtype)
             if not valid.any():
                 continue
@@ -76,3 +76,23 @@ def test_float_weights_and_no_level_left():
     np.testing.assert_array_equal(got.view(np.uint8), want.view(np.uint8))
     full = np.ones((4, 5), bool)                     # every weight positive: no pyramid
     np.testing.assert_array_equal(P.push_pull(z[:4, :5].copy(), full), z[:4, :5])
+
+
+def test_zoom_at_is_scipys_zoom_bit_for_bit():
+    """The upsampling at the few hole cells of a band (``_pushpull.zoom_at``) gives the bits
+    of ``ndimage.zoom(order=1, grid_mode=True, mode="nearest")``: every output cell of
+    rasters of 1-40 rows and columns, float32/float64, wide exponents, signed zeros."""
+    rng = np.random.default_rng(0)
+    for it in range(200):
+        m, n = rng.integers(1, 40, 2)
+        c = rng.choice([-1.0, 1.0], (m, n)) * 2.0 ** rng.uniform(-30, 12, (m, n))
+        if it % 3 == 0:
+            c = c.astype(np.float32)
+        if it % 5 == 0:
+            c[rng.random(c.shape) < 0.3] = 0.0
+            c[rng.random(c.shape) < 0.1] = -0.0
+        for dtype in (np.float32, np.float64):
+            want = ndimage.zoom(c, 2, order=1, mode="nearest", grid_mode=True, output=dtype)
+            rr, cc = np.nonzero(np.ones(want.shape, bool))
+            got = P.zoom_at(c, rr, cc).astype(dtype).reshape(want.shape)
+            np.testing.assert_array_equal(got.view(np.uint8), want.view(np.uint8))
