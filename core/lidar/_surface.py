@@ -25,7 +25,6 @@ data. Int. J. Numer. Methods Eng. 15(11), 1691-1704.
 from __future__ import annotations
 
 import numpy as np
-from scipy import ndimage
 from scipy.spatial import cKDTree
 
 from ..system import release_free_memory
@@ -92,7 +91,7 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
         return z.copy()
     # valid cells with an invalid one among their 8 neighbours (a 3 x 3 minimum: the same
     # cells as dilating the invalid ones, in two separable passes)
-    ring = valid & ~ndimage.minimum_filter(valid, size=3, mode="nearest")
+    ring = _ring(valid)
     rr, cc = _nonzero(ring)                          # int32 where it fits, same order
     if rr.size < 3:
         return R.fill_tin(z, valid)
@@ -353,8 +352,6 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
         keep = zmin.ravel()[at] - dtm <= opt.grow_max_rise
     del dtm
     cand.ravel()[at[~keep]] = False
-    offs = [(dr, dc) for dr in range(-rad, rad + 1) for dc in range(-rad, rad + 1)
-            if (dr, dc) != (0, 0)]
     size = 2 * rad + 1          # square dilations as shifted ORs (the same cells)
     front = cand & R.dilate_mask(ground, size)
     for _ in range(int(opt.grow_iters)):
@@ -362,15 +359,7 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
         if rr.size == 0:
             break
         i = np.searchsorted(at, rr * cols + cc)
-        ce, ex, ey = centre[i], gx[i], gy[i]
-        best = np.full(rr.size, np.inf)
-        for dr, dc in offs:
-            nr, nc = rr + dr, cc + dc
-            inb = (nr >= 0) & (nr < rows) & (nc >= 0) & (nc < cols)
-            nr, nc = np.where(inb, nr, 0), np.where(inb, nc, 0)
-            e = np.abs(zmin[nr, nc] - ce - ex * dc - ey * dr)
-            best = np.minimum(best, np.where(inb & ground[nr, nc], e, np.inf))
-        acc = best <= tol[i]
+        acc = _misfit(rr, cc, centre[i], gx[i], gy[i], zmin, ground, rad) <= tol[i]
         if not acc.any():
             break
         front[:] = False
@@ -378,6 +367,57 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
         ground |= front
         front = cand & ~ground & R.dilate_mask(front, size)
     return obj & ~ground
+
+
+#: Cells per block of :func:`_misfit` (bounds its (offsets, cells) arrays).
+GROW_BLOCK = 16_384
+
+
+def _misfit(rr, cc, ce, ex, ey, zmin, ground, rad: int):
+    """Smallest misfit of the ground cells of each cell's window to the cell's plane.
+
+    ``|zmin - centre - gx dc - gy dr|`` over the ground cells at the offsets ``(dr, dc)``
+    within ``rad`` (the cell itself excepted; inf where none), for the cells ``(rr,
+    cc)`` whose planes are ``(ce, ex, ey)``: every offset at once, in blocks of
+    :data:`GROW_BLOCK` cells (the minimum does not depend on the order); cells whose
+    window lies inside the raster by flat indices, the others with their offsets
+    clipped and masked.
+    """
+    rows, cols = zmin.shape
+    dr, dc = np.mgrid[-rad:rad + 1, -rad:rad + 1].reshape(2, -1)
+    off = (dr != 0) | (dc != 0)
+    dr, dc = dr[off, None], dc[off, None]
+    zf, gf = zmin.ravel(), ground.ravel()
+    inner = (rr >= rad) & (rr < rows - rad) & (cc >= rad) & (cc < cols - rad)
+    best = np.empty(rr.size)
+    for s in range(0, rr.size, GROW_BLOCK):
+        b = np.arange(s, min(s + GROW_BLOCK, rr.size))
+        for part, edge in ((b[inner[b]], False), (b[~inner[b]], True)):
+            nr, nc = rr[part] + dr, cc[part] + dc
+            ok = True
+            if edge:
+                ok = (nr >= 0) & (nr < rows) & (nc >= 0) & (nc < cols)
+                nr, nc = np.where(ok, nr, 0), np.where(ok, nc, 0)
+            at = nr.astype(np.int64) * cols + nc
+            e = np.abs(zf[at] - ce[part] - ex[part] * dc - ey[part] * dr)
+            best[part] = np.where(gf[at] & ok, e, np.inf).min(axis=0, initial=np.inf)
+    return best
+
+
+def _ring(valid):
+    """Return the valid cells with an invalid one among their 8 neighbours (none outside).
+
+    ``valid & ~minimum_filter(valid, 3, mode="nearest")`` (the same cells) by shifted ANDs.
+    """
+    rows = valid.copy()
+    rows[:, 1:] &= valid[:, :-1]
+    rows[:, :-1] &= valid[:, 1:]
+    inner = rows.copy()
+    inner[1:] &= rows[:-1]
+    inner[:-1] &= rows[1:]
+    np.logical_not(inner, out=inner)
+    inner &= valid
+    return inner
 
 
 def _grow_candidates(b, at, rms, centre, gx, gy, zmin, cell, opt):

@@ -266,14 +266,79 @@ def test_gradient_of_few_cells_equals_the_whole_raster():
 def test_separable_square_dilations_equal_binary_dilation():
     """The hole ring (3 x 3 minimum of the valid cells) and the growing front (square
     maxima) are the cells binary_dilation gives, at the raster's edges too."""
+    from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
     rng = np.random.default_rng(8)
     for share in (0.01, 0.3, 0.9):
         m = rng.random((61, 47)) < share
         ring = m & ndimage.binary_dilation(~m, structure=np.ones((3, 3), bool))
         np.testing.assert_array_equal(
             m & ~ndimage.minimum_filter(m, size=3, mode="nearest"), ring)
-        for size in (3, 7, 13):
+        np.testing.assert_array_equal(S._ring(m), ring)          # by shifted ANDs
+        for size in (3, 7, 13, 99):
             want = ndimage.binary_dilation(m, structure=np.ones((size, size), bool))
             np.testing.assert_array_equal(
                 ndimage.maximum_filter(m, size=size, mode="constant"), want)
+    for shape in ((1, 1), (1, 5), (4, 1), (2, 2)):
+        m = rng.random(shape) < 0.5
+        np.testing.assert_array_equal(
+            S._ring(m), m & ~ndimage.minimum_filter(m, size=3, mode="nearest"))
+
+
+def test_grow_ground_equals_the_plain_whole_raster_loop():
+    """grow_ground (planes at the object cells, the misfits of every offset at once)
+    accepts exactly the cells of the plain loop over the window's offsets with scipy's
+    maximum filter, up to the raster's edges, also where the misfit refuses cells."""
+    import dataclasses
+
+    from geomatics_toolbox.core.lidar import _surface as S  # noqa: N812
+    for seed, shape, iters in ((1, (90, 130), 10), (2, (40, 130), 10), (3, (64, 100), 10),
+                               (1, (90, 130), 1), (4, (50, 120), 2)):
+        opt = dataclasses.replace(rec.RecommendedOptions(), grow_iters=iters)
+        rng = np.random.default_rng(seed)
+        r, c = np.mgrid[:shape[0], :shape[1]]
+        z = 100 + 0.02 * c + 0.2 * np.sin(r / 9.0) + rng.normal(0, 0.12, shape)
+        skip = rng.random(shape) < 0.1
+        obj = (rng.random(shape) < 0.7) & ~skip          # sparse ground: misfits decide
+        obj[10:30, 5:40] = True                          # a wide object area (crest)
+        dtm = z - 0.1
+        z[22:38, 45:62] += 8.0                           # a building: stays an object
+        obj[22:38, 45:62] = True
+        z[3:40, 75:120] += 0.6                           # a low step: the misfit decides
+        obj[3:40, 75:120] = True
+        obj &= ~skip
+        z[skip] = np.nan
+        got = S.grow_ground(z, obj.copy(), skip, dtm, 1.0, opt)
+        ground = ~(obj | skip)
+        rad = 3
+        rms, centre, gx, gy = S.plane_fit(z, ~skip, rad)
+        with np.errstate(invalid="ignore"):
+            steep = np.hypot(gx, gy)
+            tol = opt.grow_tol + opt.scaler * steep
+            cand = (obj & ~skip & (rms <= opt.grow_rms) & (np.abs(z - centre) <= tol)
+                    & (steep <= opt.grow_max_slope) & (z - dtm <= opt.grow_max_rise))
+        front = cand & ndimage.maximum_filter(ground, size=7, mode="constant")
+        for _ in range(opt.grow_iters):
+            rr, cc = np.nonzero(front)
+            if rr.size == 0:
+                break
+            best = np.full(rr.size, np.inf)
+            for dr in range(-rad, rad + 1):
+                for dc in range(-rad, rad + 1):
+                    if dr == dc == 0:
+                        continue
+                    nr, nc = rr + dr, cc + dc
+                    inb = (nr >= 0) & (nr < shape[0]) & (nc >= 0) & (nc < shape[1])
+                    nr, nc = np.where(inb, nr, 0), np.where(inb, nc, 0)
+                    e = np.abs(z[nr, nc] - centre[rr, cc] - gx[rr, cc] * dc - gy[rr, cc] * dr)
+                    best = np.minimum(best, np.where(inb & ground[nr, nc], e, np.inf))
+            acc = best <= tol[rr, cc]
+            front[:] = False
+            front[rr[acc], cc[acc]] = True
+            ground |= front
+            front = cand & ~ground & ndimage.maximum_filter(front, size=7, mode="constant")
+        want = obj & ~ground
+        assert 0 < want.sum() < obj.sum() - 50            # cells were grown into
+        if iters < 10:                                    # candidates refused by the misfit
+            assert (cand & want).sum() > 20
+        np.testing.assert_array_equal(got, want)
 
