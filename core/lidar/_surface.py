@@ -370,7 +370,7 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
 
 
 #: Cells per block of :func:`_misfit` (bounds its (offsets, cells) arrays).
-GROW_BLOCK = 16_384
+GROW_BLOCK = 4096
 
 
 def _misfit(rr, cc, ce, ex, ey, zmin, ground, rad: int):
