@@ -25,6 +25,9 @@ __all__ = ["OFFSETS_F", "SCAN_D2", "Near", "Scan", "knn_scan", "near_offsets", "
 SCAN_D2 = 40 * 40
 #: Offsets tested per step (the holes done are dropped between steps).
 _STEP = 24
+#: ... and once fewer than :data:`_FEW` queries are left (cells deep in a hole).
+_WIDE = 96
+_FEW = 1024
 
 
 def _offsets(d2max: int):
@@ -112,16 +115,17 @@ def scan_offsets(lattice, r, c, k: int):
     delta = _OFFSETS[1].astype(np.int64) * width + _OFFSETS[0]
     m = r.size
     pick = np.zeros((m, k), np.int32)                # offset index of each neighbour
-    found = np.zeros(m, np.int8 if k + _STEP < 127 else np.int32)
+    found = np.zeros(m, np.int8 if k + _WIDE < 127 else np.int32)
     act = np.arange(m)
     base = (r.astype(np.int64) - r0 + pad) * width + (c.astype(np.int64) + pad)
-    for o0 in range(0, delta.size, _STEP):
-        hit = hits[delta[o0:o0 + _STEP, None] + base]   # (offsets, active), scan order
+    o0 = 0
+    while o0 < delta.size and act.size:
+        step = _STEP if act.size >= _FEW else _WIDE     # few left (deep): fewer, wider steps
+        hit = hits[delta[o0:o0 + step, None] + base]    # (offsets, active), scan order
         _take(hit, act, found, pick, o0, k)
+        o0 += step
         more = found[act] < k
         act, base = act[more], base[more]
-        if act.size == 0:
-            break
     done = found == k
     pick = pick[done]
     at = delta[pick]
