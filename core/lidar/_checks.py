@@ -6,7 +6,7 @@ import numpy as np
 from ..errors import InputError
 
 
-def checked_xyz(x, y, z, min_points: int, keep=None):
+def checked_xyz(x, y, z, min_points: int, keep=None, extent=None):
     """Coordinates as float64 arrays, refused when unusable by a ground filter.
 
     Parameters
@@ -18,6 +18,8 @@ def checked_xyz(x, y, z, min_points: int, keep=None):
     keep : ndarray of bool, optional
         The points the filter classifies (the counts below are theirs; every point given
         must still be finite and projected).
+    extent : tuple, optional
+        :func:`bounds` of the kept points when the caller has it (not taken again).
 
     Returns
     -------
@@ -33,8 +35,20 @@ def checked_xyz(x, y, z, min_points: int, keep=None):
     """
     from ..coords import as_xyz
     x, y, z = as_xyz(x, y, z, projected=True)
-    check_filter_points(x, y, min_points, keep)
+    check_filter_points(x, y, min_points, keep, extent)
     return x, y, z
+
+
+def bounds(x, y, keep=None) -> tuple:
+    """``(lowest x, lowest y, highest x, highest y)`` of the points (at ``keep`` only).
+
+    Taken once by the recommended filter and handed to the steps that need it (its
+    summary, water test, check and grid: four passes instead of eighteen). None when no
+    point is kept (the steps then refuse or skip the cloud as they would alone).
+    """
+    if not (np.size(x) if keep is None else keep.any()):
+        return None
+    return lowest(x, keep), lowest(y, keep), highest(x, keep), highest(y, keep)
 
 
 def lowest(v, keep=None) -> float:
@@ -47,11 +61,12 @@ def highest(v, keep=None) -> float:
     return float(v.max() if keep is None else np.max(v, where=keep, initial=-np.inf))
 
 
-def check_filter_points(x, y, min_points: int, keep=None) -> None:
+def check_filter_points(x, y, min_points: int, keep=None, extent=None) -> None:
     """Refuse fewer than ``min_points`` points, or points all at one x/y position.
 
     The one check of every ground filter (:func:`checked_xyz`, the slope filter);
-    ``keep`` (bool per point): of those points only.
+    ``keep`` (bool per point): of those points only; ``extent``: theirs (:func:`bounds`),
+    when the caller has it.
 
     Raises
     ------
@@ -65,7 +80,9 @@ def check_filter_points(x, y, min_points: int, keep=None) -> None:
         raise InputError("A ground filter needs at least {min_points} points, got "
                          "{n}: give a cloud that covers the ground area, or select more "
                          "returns / classes.", min_points=min_points, n=n)
-    spread = max(highest(v, keep) - lowest(v, keep) for v in (x, y))
+    e = extent
+    spread = max(e[2] - e[0], e[3] - e[1]) if e is not None else \
+        max(highest(v, keep) - lowest(v, keep) for v in (x, y))
     if spread <= 0.0:
         raise InputError("All {n} points share one x/y position, so there is no terrain "
                          "to compare them with: give a cloud whose points cover the ground "

@@ -12,7 +12,7 @@ import numpy as np
 from scipy import ndimage
 
 from ..errors import InputError
-from ._checks import check_filter_points, checked_xyz, highest, lowest  # noqa: F401 - re-exported
+from ._checks import bounds, check_filter_points, checked_xyz, highest, lowest  # noqa: F401
 from ._heights import BAND, HEIGHT, OccupiedMinima, box_mean, height_base  # noqa: F401
 from ._pushpull import push_pull
 
@@ -81,22 +81,24 @@ class Grid:
     anchor: tuple = (0, 0)
 
     @classmethod
-    def around(cls, x, y, cell, origin=None, keep=None):
+    def around(cls, x, y, cell, origin=None, keep=None, extent=None):
         """Smallest grid with cell ``cell`` holding every point (every ``keep`` point).
 
         With ``origin`` (x, y) the grid's corner is on the lattice through that point
         with a period of :data:`ALIGN` cells, so grids of separate chunks share cells
-        and the blocks of the :func:`fill` pyramid up to that size.
+        and the blocks of the :func:`fill` pyramid up to that size. ``extent``: that of
+        the points (:func:`._checks.bounds`) when the caller has it.
         """
-        x0, y0 = lowest(x, keep), lowest(y, keep)    # no copy of the kept points
+        x0, y0, x1, y1 = extent if extent is not None else \
+            (lowest(x, keep), lowest(y, keep), highest(x, keep), highest(y, keep))
         anchor = (0, 0)
         if origin is not None:
             period = cell * ALIGN
             x0, y0 = snap_down(x0, origin[0], period), snap_down(y0, origin[1], period)
             anchor = (int(round((y0 - float(origin[1])) / cell)),
                       int(round((x0 - float(origin[0])) / cell)))
-        cols = int((highest(x, keep) - x0) // cell) + 1
-        rows = int((highest(y, keep) - y0) // cell) + 1
+        cols = int((x1 - x0) // cell) + 1
+        rows = int((y1 - y0) // cell) + 1
         return cls(x0, y0, float(cell), rows, cols, anchor)
 
     def index(self, x, y):

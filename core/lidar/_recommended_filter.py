@@ -50,7 +50,8 @@ LABELS = {"cell": "Raster cell (m)", "max_window": "Largest window (m)",
 
 def water_candidates(x, y, z, *, density: Optional[float] = None,
                      median5: Optional[float] = None, sparse: float = 0.25,
-                     flat: float = 0.15, min_area: float = 400.0, keep=None) -> np.ndarray:
+                     flat: float = 0.15, min_area: float = 400.0, keep=None,
+                     extent=None) -> np.ndarray:
     """Flat, sparse returns in patches of at least ``min_area`` m² (likely water).
 
     Cells are 3 mean point spacings wide (at least 2 m) on the world lattice
@@ -73,6 +74,8 @@ def water_candidates(x, y, z, *, density: Optional[float] = None,
         Thresholds (share of the median count, m, m²).
     keep : ndarray of bool, optional
         The points to test (the others take no part and are not flagged).
+    extent : tuple, optional
+        Theirs (``_checks.bounds``), when the caller has it.
 
     Returns
     -------
@@ -91,9 +94,10 @@ def water_candidates(x, y, z, *, density: Optional[float] = None,
     cell = max(2.0, 3.0 / np.sqrt(density))
     x, y = np.asarray(x, np.float64), np.asarray(y, np.float64)
     # floor(v / cell) is monotonic: the first and last cells are the extreme points'
-    x0, y0 = np.floor(lowest(x, keep) / cell), np.floor(lowest(y, keep) / cell)
-    shape = (int(np.floor(highest(y, keep) / cell) - y0) + 1,
-             int(np.floor(highest(x, keep) / cell) - x0) + 1)
+    lx, ly, hx, hy = extent if extent is not None else \
+        (lowest(x, keep), lowest(y, keep), highest(x, keep), highest(y, keep))
+    x0, y0 = np.floor(lx / cell), np.floor(ly / cell)
+    shape = (int(np.floor(hy / cell) - y0) + 1, int(np.floor(hx / cell) - x0) + 1)
     size = shape[0] * shape[1]
 
     # every point's cell once (int32 where the raster allows), block by block (the
@@ -316,11 +320,12 @@ class RecommendedFilter(OptionsFilter):
         water = (np.asarray(classification) == WATER if classification is not None
                  else np.zeros(n, bool))
         keep = None if candidates is None else np.asarray(candidates, bool)
-        s = self.summary or recommended_values(cloud_summary(x, y, classification,
-                                                             counts=True, keep=keep))
+        ext = R.bounds(x, y, keep)          # once for the summary, water test, check, grid
+        s = self.summary or recommended_values(cloud_summary(
+            x, y, classification, counts=True, keep=keep, extent=ext))
         cand_water = (np.zeros(n, bool) if s["water_input"] else
                       water_candidates(x, y, z, density=s["density"], median5=s["median5"],
-                                       keep=keep))
+                                       keep=keep, extent=ext))
         take = ~(water | cand_water)
         if keep is not None:
             take &= keep
@@ -333,8 +338,10 @@ class RecommendedFilter(OptionsFilter):
         if self.canopy_owned is not None:           # a catalog chunk's tally, no classes
             return FilterOutcome(cls if keep is None else cls[keep], details=canopy_tally(
                 x, y, z, opts, origin, self.canopy_owned, None if every else take))
+        same = np.count_nonzero(take) == (n if keep is None else np.count_nonzero(keep))
         got = self.func(x, y, z, options=opts, progress=mon.update, cancel=mon.cancelled,
-                        origin=origin, info=info, keep=None if every else take)
+                        origin=origin, info=info, keep=None if every else take,
+                        extent=ext if same else None)         # take = keep: their extent
         dry = not (water.any() or cand_water.any())   # then ``take`` is ``keep``: got's
         if dry:                                       # classes (the others dropped below)
             cls = got

@@ -50,29 +50,32 @@ WATER = int(asprs.WATER)
 SUMMARY_FILE = "summary.json"
 
 
-def cloud_summary(x, y, classification=None, *, counts: bool = False, keep=None) -> dict:
+def cloud_summary(x, y, classification=None, *, counts: bool = False, keep=None,
+                  extent=None) -> dict:
     """Summary of one cloud (metres): what :func:`tile_summary` gives for a tile.
 
     ``counts``: also the recommended filter's cell counts of the points (the caller
     passes the points that filter sees; class 9 in ``classification`` counted apart).
-    ``keep`` (bool per point): summarise those points only (the same as passing them).
+    ``keep`` (bool per point): summarise those points only (the same as passing them);
+    ``extent``: theirs (``_checks.bounds``) when the caller has it.
     """
     x, y = np.asarray(x, np.float64), np.asarray(y, np.float64)
     n = int(x.size if keep is None else np.count_nonzero(keep))
-    out = {"n": n, "corner": [lowest(x, keep), lowest(y, keep)] if n else None}
+    corner = extent[:2] if extent is not None else (lowest(x, keep), lowest(y, keep))
+    out = {"n": n, "corner": [float(corner[0]), float(corner[1])] if n else None}
     if counts:
         water = (np.zeros(x.size, bool) if classification is None
                  else np.asarray(classification) == WATER)
         if keep is not None:
             water &= keep
         nw = int(np.count_nonzero(water))
-        if nw:
-            keep = ~water if keep is None else keep & ~water
-        out.update(water=nw, cells=cell_counts(x, y, DENSITY_CELL, keep=keep))
+        if nw:                                   # the extent is not theirs then
+            keep, extent = (~water if keep is None else keep & ~water), None
+        out.update(water=nw, cells=cell_counts(x, y, DENSITY_CELL, keep=keep, extent=extent))
     return out
 
 
-def cell_counts(x, y, cell: float, shared: Sequence = (), keep=None) -> dict:
+def cell_counts(x, y, cell: float, shared: Sequence = (), keep=None, extent=None) -> dict:
     """Points per occupied cell of the world lattice (multiples of ``cell`` m), mergeable.
 
     Cells no box of ``shared`` (other tiles' boxes, metres) touches hold this tile's
@@ -80,7 +83,7 @@ def cell_counts(x, y, cell: float, shared: Sequence = (), keep=None) -> dict:
     met and how many cells hold each — a tile of one position holds one cell of n
     points, not a list n long); the others are kept by cell (``keys``: columns and
     rows) for :func:`merge` to add up across tiles. ``keep`` (bool per point): count
-    those points only.
+    those points only; ``extent``: theirs (``_checks.bounds``) when the caller has it.
     """
     x, y = np.asarray(x, np.float64), np.asarray(y, np.float64)
     if keep is not None and keep.all():
@@ -88,9 +91,11 @@ def cell_counts(x, y, cell: float, shared: Sequence = (), keep=None) -> dict:
     if not (x.size if keep is None else keep.any()):
         return {"hist": [[], []], "keys": [[], []], "counts": []}
     # floor(v / cell) is monotonic: the extreme cells are those of the extreme points
-    x0, y0 = int(np.floor(lowest(x, keep) / cell)), int(np.floor(lowest(y, keep) / cell))
-    ny = int(np.floor(highest(y, keep) / cell)) - y0 + 1
-    size = (int(np.floor(highest(x, keep) / cell)) - x0 + 1) * ny
+    lx, ly, hx, hy = extent if extent is not None else \
+        (lowest(x, keep), lowest(y, keep), highest(x, keep), highest(y, keep))
+    x0, y0 = int(np.floor(lx / cell)), int(np.floor(ly / cell))
+    ny = int(np.floor(hy / cell)) - y0 + 1
+    size = (int(np.floor(hx / cell)) - x0 + 1) * ny
     if size <= _BOX_CELLS:          # a small box: counted block by block, no per-point keys
         cnt = np.zeros(size + 1, np.int64)          # the points left out: cell ``size``
         for s in range(0, x.size, _BLOCK):

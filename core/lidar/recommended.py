@@ -278,7 +278,8 @@ def derive(x, y, opt: RecommendedOptions, density=None) -> RecommendedOptions:
 
 
 def classify(x, y, z, *, return_number=None, number_of_returns=None, options=None,
-             progress=None, cancel=None, origin=None, info=None, keep=None) -> np.ndarray:
+             progress=None, cancel=None, origin=None, info=None, keep=None,
+             extent=None) -> np.ndarray:
     """Classify ground with the recommended, cloud-adaptive morphological filter.
 
     Parameters
@@ -302,6 +303,9 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
         tolerance, object cells) for the report (:mod:`._recommended_filter`).
     keep : ndarray of bool, optional
         The points to classify: the others take no part (their classes are garbage).
+    extent : tuple, optional
+        ``(lowest x, lowest y, highest x, highest y)`` of those points when the caller
+        has it (``_checks.bounds``; not taken again).
 
     Returns
     -------
@@ -321,14 +325,15 @@ def classify(x, y, z, *, return_number=None, number_of_returns=None, options=Non
     >>> cls = classify(x, y, z, options=RecommendedOptions(max_window=30))  # doctest: +SKIP
     """
     opt = _options(options, RecommendedOptions)
-    x, y, z = R.checked_xyz(x, y, z, opt.min_points, keep)
+    x, y, z = R.checked_xyz(x, y, z, opt.min_points, keep, extent)
+    ext = extent if extent is not None else R.bounds(x, y, keep)   # for the grid
     # progress steps (22 in the openings) hand no pages back: each malloc_trim there made
     # the next step fault the same pages in again; the trims that keep the peak are below
     rep = Monitor(progress, cancel).step
     rep(0.0)
     opt = derive(x, y, opt) if keep is None else derive(x[keep], y[keep], opt) \
         if opt.cell is None or opt.threshold is None else opt
-    grid = R.Grid.around(x, y, opt.cell, origin, keep)
+    grid = R.Grid.around(x, y, opt.cell, origin, keep, ext)
     pc = R.PointCells(x, y, grid, keep)
     base = pc.height_base(z)          # rasters of heights above it, in float32 (R.HEIGHT)
     rep(0.3)

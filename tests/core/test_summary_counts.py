@@ -112,3 +112,26 @@ def test_histogram_is_sparse_and_tiles_merge_to_the_whole_cloud():
     cnt = np.unique(ix, return_counts=True)[1]
     assert whole["median5"] == float(np.median(cnt))
     assert whole["density"] == x.size / (cnt.size * 25.0)
+
+
+def test_a_given_extent_gives_the_same_summary_water_test_grid_and_classes():
+    """The recommended filter takes the kept points' extent once (``_checks.bounds``) and
+    hands it to its summary, water test, check and grid: the same results as each
+    taking it again (the lake scene, 10 % of the points left out, some far outside)."""
+    from geomatics_toolbox.core.lidar import _raster as R  # noqa: N812
+    from geomatics_toolbox.core.lidar import recommended as rec
+    from geomatics_toolbox.core.lidar._recommended_filter import water_candidates
+    from geomatics_toolbox.synthetic import landscapes
+    s = landscapes.lake(seed=1)
+    x, y, z = (np.array(a, np.float64) for a in (s.x, s.y, s.z))
+    keep = np.random.default_rng(4).random(x.size) > 0.1
+    x[np.flatnonzero(~keep)[:50]] -= 5000.0            # left-out points far outside
+    ext = R.bounds(x, y, keep)
+    assert S.cloud_summary(x, y, counts=True, keep=keep, extent=ext) == \
+        S.cloud_summary(x, y, counts=True, keep=keep)
+    assert np.array_equal(water_candidates(x, y, z, keep=keep, extent=ext),
+                          water_candidates(x, y, z, keep=keep))
+    assert R.Grid.around(x, y, 1.0, (3.0, 4.0), keep, ext) == \
+        R.Grid.around(x, y, 1.0, (3.0, 4.0), keep)
+    assert np.array_equal(rec.classify(x, y, z, keep=keep, extent=ext)[keep],
+                          rec.classify(x, y, z, keep=keep)[keep])
