@@ -43,6 +43,9 @@ __all__ = ["grow_ground", "plane_fit", "plane_fit_where", "plane_gradient", "tan
 
 #: Hole cells processed per batch (bounds the k-neighbour arrays' memory).
 BATCH = 16_384
+#: Up to this many hole cells, their neighbours are found first and the border gradients
+#: computed only at the border cells they read.
+FEW_HOLES = 65_536
 
 
 def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12,
@@ -108,21 +111,23 @@ def tangent_fill(z, valid, cell: float, *, radius: int = 3, neighbours: int = 12
     trees, near = [], None      # the KD-tree, built when a hole cell is deeper than the scan
     if hr is None or hr.size:
         bz = z[rr, cc]
-        few = hr is not None and hr.size <= BATCH    # few holes (refine): gradients where read
+        few = hr is not None and hr.size <= FEW_HOLES  # few holes: gradients where read
         scan = K.Scan(ring)                          # lattices of some rows at a time
         if few:
             near = scan.near(hr, hc, k, trees)
-            used = np.unique(near.j)
-        if near is not None and used.size * (2 * radius + 1) ** 2 < z.size // 2:
+            used = np.zeros(rr.size, bool)
+            used[near.j] = True
+            used = np.flatnonzero(used)
             bgx, bgy = np.zeros(rr.size), np.zeros(rr.size)
-            bgx[used], bgy[used] = gradient_of(z, valid, radius, cell, rr[used], cc[used])
+            grad = gradient_of if used.size * (2 * radius + 1) ** 2 < z.size // 2 else gradient_at
+            bgx[used], bgy[used] = grad(z, valid, radius, cell, rr[used], cc[used])
         else:
             bgx, bgy = gradient_at(z, valid, radius, cell, rr, cc)
     del rr, cc, ring
     trim and release_free_memory()  # the temporaries above: their pages back before the batches
     table = _weights(*K.OFFSETS_F, cell, reach)      # what depends on a scan offset only
-    for r, c in _batches(holes, hr, hc):
-        nb = near if near is not None else scan.near(r, c, k, trees)
+    for s, (r, c) in _batches(holes, hr, hc):
+        nb = _rows(near, s, s + r.size) if near is not None else scan.near(r, c, k, trees)
         ndc, dr, damp, w = (t[nb.o] for t in table[:4])
         if nb.far.size:                              # rows the KD-tree found
             for a, b in zip((ndc, dr, damp, w), _weights(nb.dc, nb.dr, nb.d2, cell, reach)):
@@ -175,7 +180,7 @@ def _holes(prev, key, z, valid, need, out, dk, radius):
         holes &= need
     keep = _keeper(prev, key, z, valid, radius)
     if keep is None:
-        if np.count_nonzero(holes) > BATCH:
+        if np.count_nonzero(holes) > FEW_HOLES:
             return holes, None, None
         return (holes,) + _nonzero(holes)
     old_out, old_dk = prev["out"], prev["d2k"]
@@ -201,15 +206,23 @@ HOLE_BAND = 1 << 20
 def _batches(holes, hr, hc):
     """Rows and columns of the hole cells, :data:`BATCH` at a time, in row-major order.
 
-    From the lists ``(hr, hc)``, or (when None) from the raster ``holes`` band by band.
+    From the lists ``(hr, hc)`` (with the batch's start in them), or (when None) from the
+    raster ``holes`` band by band (start None).
     """
     if hr is not None:
         for s in range(0, hr.size, BATCH):
-            yield hr[s:s + BATCH], hc[s:s + BATCH]
+            yield s, (hr[s:s + BATCH], hc[s:s + BATCH])
         return
     for r, c in _bands(holes):
         for s in range(0, r.size, BATCH):
-            yield r[s:s + BATCH], c[s:s + BATCH]
+            yield None, (r[s:s + BATCH], c[s:s + BATCH])
+
+
+def _rows(near, a: int, b: int):
+    """Return the rows ``a:b`` of a :class:`._lattice_knn.Near`."""
+    far = (near.far >= a) & (near.far < b)
+    return near._replace(o=near.o[a:b], j=near.j[a:b], far=near.far[far] - a,
+                         d2=near.d2[far], dc=near.dc[far], dr=near.dr[far])
 
 
 def _bands(holes):

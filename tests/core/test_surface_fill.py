@@ -98,6 +98,14 @@ def test_tangent_fill_equals_a_brute_force_fill_scan_and_tree():
     want = plane.sum(axis=1) / (1.0 / (d * d)).sum(axis=1)
     np.testing.assert_array_equal(got[hr, hc], want)
     np.testing.assert_array_equal(got[valid], z[valid])
+    batch, few = S.BATCH, S.FEW_HOLES
+    try:                     # batches of a few hundred: scan and tree rows in the same batch
+        for S.BATCH, S.FEW_HOLES in ((257, 10 ** 6), (257, 0), (1000, 1000)):
+            again = S.tangent_fill(np.where(valid, z, np.nan), valid, cell, radius=3,
+                                   neighbours=k, reach=reach)
+            np.testing.assert_array_equal(again, got)
+    finally:
+        S.BATCH, S.FEW_HOLES = batch, few
 
 
 def test_tangent_fill_reproduces_a_plane():
