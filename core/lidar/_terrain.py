@@ -202,5 +202,8 @@ def progressive_objects(zf, cell, max_window, slope, rep, overwrite=False, outsi
             b = slice(b0, b0 + R.BAND)
             s = s64[b] if s64 is not None else \
                 np.asarray(slope[b] if np.ndim(slope) else slope, np.float64)
-            obj[b] |= np.subtract(cur[b], opened[b], dtype=np.float64) > s * int(r) * cell
+            thr = s * int(r)
+            if cell != 1.0:                          # x 1.0 is exact: skipped
+                thr = thr * cell
+            obj[b] |= np.subtract(cur[b], opened[b], dtype=np.float64) > thr
     return obj if outside is None else np.logical_and(obj, ~outside, out=obj)
