@@ -33,7 +33,6 @@ import conftest  # noqa: E402,F401  (imports the checkout as geomatics_toolbox)
 
 from geomatics_toolbox.core import classes as asprs  # noqa: E402
 from geomatics_toolbox.core.io.las import PointData, las_info, read_las, write_las  # noqa: E402
-from geomatics_toolbox.core.lidar import _chunks  # noqa: E402
 from geomatics_toolbox.core.lidar import catalog as cc  # noqa: E402
 from geomatics_toolbox.core.lidar.filters import (  # noqa: E402
     GROUND_FILTERS,
@@ -72,9 +71,7 @@ def catalog_classes(tiles: Path, out: Path, key: str):
     tasks = cc.plan_tasks(cat, out, ground_filter=key, dtm_method="idw", cell_size=2.0,
                           buffer=BUFFER)
     (out / cc.STATE_DIR).mkdir(parents=True, exist_ok=True)
-    cc.first_pass(cat, tasks, out)
-    for t in tasks:
-        _chunks.process_chunk(t)
+    cc.run_here(cat, tasks, out)     # first pass, chunks, canopy re-runs
     cls = np.concatenate([read_las(t.outputs["LAS"], ("classification",))["classification"]
                           for t in tasks])
     return cls, tasks[0].origin, cat

@@ -3,41 +3,41 @@
 Under a closed canopy the recommended filter reads its low-outlier test at a coarser
 scale, the first of :data:`._lowcells.FACTORS` at which closing pits are rare in the
 canopy areas of the *whole* raster (:func:`._lowcells.low_cells`). A chunk sees only
-its tile and buffer, so it once chose its own factor (a forest with one half thinned:
-3 of 22 points differed from a single-file run of the merged tiles).
+its tile and buffer, so on its own it chooses from its own raster (a forest with one
+half thinned: 3 of 22 points differed from a single-file run of the merged tiles).
 
 The choice depends on two counts per factor (coarse pits in canopy blocks, occupied
-canopy blocks) that add up over any partition of the blocks. After the first pass
-(:mod:`._summary`: the corner, density and derived cell), each chunk tallies the blocks
-it *owns* (:func:`tally_chunk`): the lattice-aligned coarse blocks whose first cell's
-centre is nearest its box (L∞ distance, ties to the chunk first in the plan). One task
-adds the tallies up and chooses the factor (:func:`with_canopy`, saved in
-``summary.json``); every chunk then closes its canopy at that scale, as a single-file
-run of the merged cloud does. Exact as long as the buffer covers the reach of the
-test (the 25 m canopy window and the coarsest closing, 3 × 16 cells).
-
-Cost: a tally reads its chunk and builds the filter's minimum raster once more.
+canopy blocks) that add up over any partition of the blocks. While a chunk classifies
+(nothing read or built again), it counts the blocks it *owns*
+(``low_cells(owned=)``; :func:`owned_blocks`: the lattice-aligned coarse blocks whose
+first cell's centre is nearest its box, L∞ distance, ties to the chunk first in the
+plan) and closes its canopy at its own factor, provisionally; its done marker keeps
+the counts and the factor it used (``stats["canopy"]``). When every chunk has
+finished, :func:`settle` adds the counts up and chooses the factor a single-file run of
+the merged cloud chooses; only the chunks that have a canopy area and used another
+factor are run again at it (none on a catalog whose chunks agree). Exact as long as
+the buffer covers the reach of the test (the 25 m canopy window and the coarsest
+closing, 3 × 16 cells). A resume sums the finished chunks' markers with the new ones.
 """
 from __future__ import annotations
 
-import time
-from typing import Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, List, Optional, Sequence
 
 import numpy as np
 
-from ..errors import InputError
-from . import _summary
-from ._chunks import ChunkTask, _read, apply_summary, chunk_filter, single_threaded
 from ._lowcells import FACTORS, choose_factor
-from .filters import default_selection, run_filter
 
-__all__ = ["assign_peers", "has_factor", "owned_blocks", "tally_chunk", "with_canopy"]
+if TYPE_CHECKING:                                   # pragma: no cover
+    from ._chunks import ChunkTask
+
+__all__ = ["Settled", "assign_peers", "owned_blocks", "settle", "tallies", "zero"]
 
 #: metres beyond twice the buffer within which chunks may own each other's blocks
 MARGIN = 100.0
 
 
-def assign_peers(tasks: Sequence[ChunkTask], h: float = 1.0) -> None:
+def assign_peers(tasks: Sequence["ChunkTask"], h: float = 1.0) -> None:
     """Give each chunk its position and the boxes (metres) of the chunks near it.
 
     A block a chunk's raster holds lies within its buffered box (plus a block); the
@@ -53,7 +53,7 @@ def assign_peers(tasks: Sequence[ChunkTask], h: float = 1.0) -> None:
         t.peers = [[int(j), *(float(v) * h for v in b[j])] for j in near]
 
 
-def owned_blocks(task: ChunkTask, grid, f: int, shape) -> np.ndarray:
+def owned_blocks(task: "ChunkTask", grid, f: int, shape) -> np.ndarray:
     """Blocks of ``f`` cells of ``grid``'s coarse raster that ``task`` counts.
 
     A block's first cell (its lattice index a multiple of ``f``) has its centre
@@ -79,49 +79,50 @@ def owned_blocks(task: ChunkTask, grid, f: int, shape) -> np.ndarray:
     return mine
 
 
-def _zero() -> dict:
-    return {"pits": [0] * len(FACTORS), "blocks": [0] * len(FACTORS)}
+def tallies(task: "ChunkTask", flt=None) -> bool:
+    """Return True when ``task``'s filter counts its canopy blocks (:func:`settle`).
 
-
-def tally_chunk(task: ChunkTask, *strips, summary=None) -> dict:
-    """Count the canopy blocks ``task`` owns (on a worker, after the first pass).
-
-    Reads the chunk as :func:`._chunks.process_chunk` does (its tile, the neighbours'
-    strips) and runs the recommended filter up to its minimum raster.
+    The recommended filter in a catalog chunk that has its peers and the catalog's
+    corner; ``flt``: the filter object, if made.
     """
-    t0, c0 = time.perf_counter(), time.process_time()
-    single_threaded()
-    if summary is not None:
-        apply_summary([task], summary)
-    xyz, dims, core, _ = _read(task, strips if task.tile and strips else None)
-    out = _zero()
-    if core.any() and task.filter_origin is not None:
-        pts, flt, origin = chunk_filter(task, xyz, dims)
-        flt.canopy_owned = lambda grid, f, shape: owned_blocks(task, grid, f, shape)
-        try:
-            out = run_filter(pts, flt, default_selection(task.ground_filter),
-                             origin=origin).outcome.details
-        except InputError:      # too few points to filter: no raster (filter_sparse_chunk)
-            pass
-    return {**out, "seconds": [time.perf_counter() - t0, time.process_time() - c0]}
+    if flt is None:
+        from .filters import GROUND_FILTERS
+        spec = GROUND_FILTERS.get(task.ground_filter)
+        flt = spec.make(None) if spec is not None else None
+    return bool(getattr(flt, "needs_canopy", False) and task.peers
+                and task.filter_origin is not None)
 
 
-def with_canopy(summary: dict, *tallies, folder=None) -> dict:
-    """Return the first pass's summary with the catalog's canopy factor (saved in ``folder``)."""
-    pits = np.sum([t["pits"] for t in tallies], axis=0) if tallies else [0] * len(FACTORS)
-    blocks = np.sum([t["blocks"] for t in tallies], axis=0) if tallies else pits
-    out = dict(summary)
-    # the tallies' wall and CPU seconds on the workers (the cost of the canopy scale)
-    out["canopy_seconds"] = [float(sum(t.get("seconds", (0, 0))[i] for t in tallies))
-                             for i in (0, 1)]
-    out["derived"] = dict(summary.get("derived") or {},
-                          canopy_factor=choose_factor(pits, blocks),
-                          canopy_counts=[[int(v) for v in pits], [int(v) for v in blocks]])
-    if folder is not None:
-        _summary.save(folder, out)
-    return out
+def zero() -> dict:
+    """Return the canopy stats of a chunk that counts no block (no point, no raster)."""
+    return {"pits": [0] * len(FACTORS), "blocks": [0] * len(FACTORS), "factor": 0}
 
 
-def has_factor(summary) -> bool:
-    """Return True when ``summary`` carries the catalog's canopy factor."""
-    return isinstance(((summary or {}).get("derived") or {}).get("canopy_factor"), int)
+@dataclass
+class Settled:
+    """The catalog's canopy factor (:func:`settle`) and the chunks to run again at it."""
+
+    factor: int
+    pits: List[int]
+    blocks: List[int]
+    redo: list = field(default_factory=list)
+
+
+def settle(tasks: Sequence["ChunkTask"], chunks: Sequence[dict]) -> Optional[Settled]:
+    """Choose the catalog's canopy factor from every chunk's counts; the chunks to redo.
+
+    ``chunks``: the stats (done markers) of every chunk of ``tasks``, this run's and an
+    earlier one's. None when a chunk's stats are missing (failed: the resume settles)
+    or carry no counts (the filter tallies nothing). The chunks to redo are those
+    that closed a canopy area at another factor (a chunk without canopy used none:
+    the factor changes nothing there).
+    """
+    stats = {c["key"]: c for c in chunks}
+    got = [(stats.get(t.key) or {}).get("canopy") for t in tasks]
+    if not tasks or any(g is None for g in got):
+        return None
+    pits = [int(v) for v in np.sum([g["pits"] for g in got], axis=0)]
+    blocks = [int(v) for v in np.sum([g["blocks"] for g in got], axis=0)]
+    f = choose_factor(pits, blocks)
+    return Settled(f, pits, blocks, [t for t, g in zip(tasks, got)
+                                     if g["factor"] not in (0, f)])

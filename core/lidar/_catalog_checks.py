@@ -287,8 +287,9 @@ def _check_resume(folder: Path, settings: dict, tasks: Sequence = (),
     without finished chunks holds nothing to mix: its earlier state is replaced (a stale
     first pass is recomputed: :func:`.catalog.pass_plan`).
     """
+    from ._catalog_state import finished_chunks
     path = folder / STATE_DIR / SETTINGS_FILE
-    done = {p.name[:-len(".done.json")] for p in (folder / STATE_DIR).glob("*.done.json")}
+    done = set(finished_chunks(folder))
     if not path.exists() or not done:
         return
     import json

@@ -13,6 +13,7 @@ import os
 import socket
 import time
 from dataclasses import dataclass, field
+from functools import partial
 from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
@@ -34,16 +35,16 @@ from ..terrain.dtm import (
     register_dtm_method,
 )
 from ..terrain.grid import GridSpec
-from . import _summary
+from . import _canopy, _summary
 from ._gap import chunk_gaps, gap_path, ground_summary, mask_with_gap, write_marker
 from .filters import (
     GROUND_FILTERS,
     RECOMMENDED_FILTER,
-    classify_points,
     default_ground_filter,
     default_selection,
     ground_filter,
     register_ground_filter,
+    run_filter,
 )
 
 GROUND = int(asprs.GROUND)
@@ -164,12 +165,21 @@ class ChunkTask:
         return (self.bounds[0] - b, self.bounds[1] - b, self.bounds[2] + b, self.bounds[3] + b)
 
 
-def apply_summary(tasks, summary: dict) -> None:
-    """Give every chunk the catalog's corner and derived values (:func:`._summary.final`)."""
+def apply_summary(tasks, summary: dict, canopy_factor: Optional[int] = None) -> None:
+    """Give every chunk the catalog's corner and derived values (:func:`._summary.final`).
+
+    ``canopy_factor``: the catalog's canopy factor (:func:`._canopy.settle`); without it
+    a chunk closes its canopy at its own, provisionally.
+    """
     corner = summary.get("corner")
+    derived = summary.get("derived")
+    if derived is not None:
+        derived = {k: v for k, v in derived.items() if not k.startswith("canopy_")}
+        if canopy_factor:
+            derived["canopy_factor"] = int(canopy_factor)
     for t in tasks:
         t.filter_origin = None if corner is None else (float(corner[0]), float(corner[1]))
-        t.derived = summary.get("derived")
+        t.derived = derived
 
 
 def is_done(task: ChunkTask) -> Optional[dict]:
@@ -336,10 +346,23 @@ def filter_chunk(task: ChunkTask, xyz, dims, core) -> np.ndarray:
         Points the filter cannot classify (too few, one position): see
         :func:`filter_sparse_chunk`.
     """
+    return _filter_run(task, xyz, dims, core)[0]
+
+
+def _filter_run(task: ChunkTask, xyz, dims, core):
+    """Return ``(classes, canopy)``: :func:`filter_chunk`'s classes, and the canopy stats.
+
+    ``canopy``: when the chunk tallies its canopy blocks (:mod:`._canopy`), the counts
+    and the factor its classes used (``{"pits", "blocks", "factor"}``), else None.
+    """
     if not core.any():
-        return np.zeros(core.size, np.uint8)
+        return np.zeros(core.size, np.uint8), None
     pts, flt, origin = chunk_filter(task, xyz, dims)
-    return classify_points(pts, flt, default_selection(task.ground_filter), origin=origin)
+    run = run_filter(pts, flt, default_selection(task.ground_filter), origin=origin)
+    d = run.outcome.details
+    counts = getattr(d, "canopy_counts", None)
+    return run.classes, (None if counts is None else
+                         dict(counts, factor=int(getattr(d, "canopy_factor", 0))))
 
 
 def chunk_filter(task: ChunkTask, xyz, dims):
@@ -351,11 +374,15 @@ def chunk_filter(task: ChunkTask, xyz, dims):
     if task.derived is not None and hasattr(flt, "summary"):
         flt.summary = dict(task.derived)
     origin = task.filter_origin if getattr(flt, "lattice", "cloud") == "cloud" else None
+    if _canopy.tallies(task, flt):    # the canopy blocks this chunk counts while it filters
+        flt.canopy_owned = partial(_canopy.owned_blocks, task)
     return PointData(*xyz, dims=dims), flt, None if origin is None else tuple(origin)
 
 
 def filter_sparse_chunk(task: ChunkTask, xyz, dims, core):
-    """:func:`filter_chunk`, or no ground where the filter cannot run; ``(classes, why)``.
+    """:func:`filter_chunk`, or no ground where the filter cannot run: ``(cls, why, canopy)``.
+
+    ``canopy``: see :func:`_filter_run`.
 
     A tile at sea or over a lake may hold, with its buffer, fewer points than the filter
     needs (10 for the recommended filter and PTD, 6 to 18 for LSQ surfaces): its points
@@ -363,11 +390,12 @@ def filter_sparse_chunk(task: ChunkTask, xyz, dims, core):
     returned (``{"template", "fields"}``, JSON for the done marker) for the warning.
     """
     try:
-        return filter_chunk(task, xyz, dims, core), None
+        cls, canopy = _filter_run(task, xyz, dims, core)
+        return cls, None, canopy
     except InputError as exc:
         src = np.asarray(dims.get("classification", np.zeros(core.size, np.uint8)))
         cls = np.where(np.isin(src, asprs.INPUT_NOISE), src, asprs.UNCLASSIFIED)
-        return cls.astype(np.uint8), refusal(exc)
+        return cls.astype(np.uint8), refusal(exc), None
 
 
 def _write_outputs(task: ChunkTask, xyz, dims, core, cls, dtm, grid, records=None) -> None:
@@ -418,10 +446,14 @@ def process_chunk(task: ChunkTask, *strips, summary: Optional[dict] = None) -> d
     n_own = int(core.sum())
     stats = dict(key=task.key, points=n_own, buffer_points=int(core.size - n_own),
                  bounds=list(task.bounds), status="empty", ground=0)
+    if _canopy.tallies(task):         # counts and factor for :func:`._canopy.settle`
+        stats["canopy"] = _canopy.zero()
     if n_own:
-        cls, why = filter_sparse_chunk(task, xyz, dims, core)
+        cls, why, canopy = filter_sparse_chunk(task, xyz, dims, core)
         if why is not None:
             stats["filter_error"] = why
+        if canopy is not None:
+            stats["canopy"] = canopy
         clock.lap("filter")
         grid = snap_grid(task.bounds, task.origin, task.cell_size, task.crs)
         g = cls == GROUND

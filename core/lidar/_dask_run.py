@@ -14,7 +14,6 @@ from typing import Dict, List, Optional, Sequence
 from ..errors import InputError
 from ..io.contract import remove_temp
 from ..progress import Cancelled, Monitor
-from ._canopy import tally_chunk, with_canopy
 from ._chunks import ChunkTask, process_chunk, read_strip
 from ._summary import final, strip_summary, tile_summary
 from ._workers import SINGLE_THREAD_ENV, start_local_workers
@@ -199,22 +198,30 @@ def _submit_first_pass(client, plan, strips):
                          pure=False, priority=10 ** 12)
 
 
-def _submit_canopy(client, order, strips, summary, folder):
-    """Submit the chunks' canopy tallies after the first pass (:mod:`._canopy`).
+def _rerun(client, redo, mon, failed, on_chunk=None):
+    """Run the chunks ``redo`` again (at the catalog's canopy factor: :mod:`._canopy`).
 
-    Returns the merged summary's future, which every chunk waits for instead of the
-    first pass's.
+    Their neighbours are streamed from the files (the strips are gone).
+
+    Only failures reach ``on_chunk`` (each chunk was reported once, when it finished).
     """
-    tallies = [client.submit(tally_chunk, t, *[strips[p] for p in t.neighbours if p in strips],
-                             summary=summary, key=f"canopy-{t.key}-{time.time_ns()}",
-                             retries=1, pure=False, priority=10 ** 12 - 1)
-               for t in order]
-    return client.submit(with_canopy, summary, *tallies, folder=folder,
-                         key=f"canopy-factor-{time.time_ns()}", pure=False, priority=10 ** 12)
+    futures = {client.submit(process_chunk, t, key=f"canopy-{t.key}-{time.time_ns()}",
+                             retries=1, pure=False, priority=int(t.cost)): t.key
+               for t in redo}
+
+    def report(event):
+        if on_chunk is not None and event.get("status") == "failed":
+            on_chunk(event)
+    return _collect(futures, mon, 1, 1, failed, report)
 
 
 def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, failed,
-              clock, on_chunk=None, plan=None):
+              clock, on_chunk=None, plan=None, settle=None):
+    """Run the chunks ``todo`` on Dask; their stats.
+
+    ``settle(results)``, when given and no chunk failed, returns the chunks to run once
+    more (at the catalog's canopy factor, :mod:`._canopy`); their new stats replace them.
+    """
     client, cluster = _client(nw, scheduler, memory_limit)
     clock.lap("cluster start")
     try:
@@ -224,8 +231,6 @@ def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, f
         order = sorted(todo, key=lambda t: -t.cost)
         strips, release = _submit_strips(client, order, plan)
         summary = _submit_first_pass(client, plan, strips) if plan is not None else None
-        if plan is not None and plan.get("canopy"):
-            summary = _submit_canopy(client, order, strips, summary, plan["folder"])
         futures = {client.submit(process_chunk, t, *[strips[p] for p in t.neighbours
                                                       if p in strips], summary=summary,
                                  key=f"chunk-{t.key}-{time.time_ns()}", retries=1,
@@ -238,6 +243,10 @@ def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, f
                 on_chunk(event)
 
         results = _collect(futures, mon, len(tasks), n_before, failed, done)
+        redo = settle(results) if settle is not None and not failed else []
+        if redo:
+            again = {r["key"]: r for r in _rerun(client, redo, mon, failed, on_chunk)}
+            results = [again.pop(r["key"], r) for r in results] + list(again.values())
         clock.lap("compute")
         return results
     except BaseException:
@@ -245,7 +254,7 @@ def _run_dask(todo, tasks, folder, nw, scheduler, memory_limit, mon, n_before, f
         if cluster is not None:
             cluster.close()
         client = cluster = None
-        _sweep_temps(folder, todo)
+        _sweep_temps(folder, tasks)          # the chunks run again among them
         raise
     finally:
         if client is not None:

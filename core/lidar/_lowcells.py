@@ -31,6 +31,7 @@ Photogramm. Remote Sens. 59(1-2), 85-101.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Optional
 
 import numpy as np
 from scipy import ndimage
@@ -57,12 +58,19 @@ class LowCells:
         Share of the occupied cells in canopy areas (pits common), 0-1.
     canopy_scale : float
         Cell (m) of the closing used in canopy areas (0 when there are none).
+    factor : int
+        Its factor in cells (0 when there is no canopy area: no factor is used).
+    counts : dict or None
+        With ``owned``: the counts :func:`choose_factor` reads, over the owned blocks
+        (``{"pits": [...], "blocks": [...]}``, one per factor of :data:`FACTORS`).
     """
 
     low: np.ndarray
     pits: int
     canopy_share: float
     canopy_scale: float
+    factor: int = 0
+    counts: Optional[dict] = None
 
 
 def closing_pits(zmin, step: float, anchor=(0, 0), tables=False):
@@ -155,7 +163,7 @@ def _canopy(zmin, cell: float, step: float, window: float, share: float, anchor,
 
 def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
               share: float = 0.08, share_coarse: float = 0.03, anchor=(0, 0),
-              factor=None, tables=False) -> LowCells:
+              factor=None, tables=False, owned=None) -> LowCells:
     """Low-outlier cells: closing pits, read at the ground-return scale under canopy.
 
     Parameters
@@ -177,8 +185,13 @@ def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
         are aligned on the lattice, whatever the raster's extent.
     factor : int, optional
         The coarse factor, chosen elsewhere from the counts of a larger raster (a
-        catalog: :func:`canopy_counts` summed over its chunks, :func:`choose_factor`);
-        default: chosen on this raster.
+        catalog: the chunks' ``counts`` summed, :func:`choose_factor`); default:
+        chosen on this raster.
+    owned : callable, optional
+        ``owned(f, shape)``: the blocks of the ``f``-cell coarse raster to count (a
+        catalog chunk's, :mod:`._canopy`); the result's ``counts`` then hold, for every
+        factor, what :func:`choose_factor` reads over those blocks. Counts of chunks
+        owning a partition of the blocks add up to the merged raster's.
     tables : bool
         Closings by tables of minima and maxima (:func:`._raster.opening`: the same bits).
 
@@ -189,19 +202,12 @@ def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
     """
     pits, n_pits, occupied, canopy = _canopy(zmin, cell, step, window, share, anchor, tables)
     n_occ = max(1, int(np.count_nonzero(occupied)))
-    if not n_pits:
-        return LowCells(pits, 0, 0.0, 0.0)
-    if not canopy.any():
-        return LowCells(pits, n_pits, 0.0, 0.0)
-    for f in (int(factor),) if factor else FACTORS:
-        coarse, canchor = _block_min(zmin, f, anchor)
-        cpits, clo = closing_pits(coarse, step, canchor, tables)
-        if factor:
-            break
-        area = _block_any(canopy, f, anchor)
-        n_area = np.count_nonzero(area & ~np.isnan(coarse))
-        if np.count_nonzero(cpits & area) < share_coarse * max(1, n_area):
-            break
+    counts = None if owned is None else {"pits": [0] * len(FACTORS),
+                                         "blocks": [0] * len(FACTORS)}
+    if not n_pits or not canopy.any():
+        return LowCells(pits, n_pits, 0.0, 0.0, counts=counts)
+    f, clo = _coarse(zmin, canopy, step, share_coarse, anchor, factor, owned, counts,
+                     tables)
     low = pits
     pr, pc = anchor[0] % f, anchor[1] % f
     ccol = (np.arange(zmin.shape[1]) + pc) // f      # the block of each column
@@ -212,7 +218,31 @@ def low_cells(zmin, cell: float, *, step: float = 5.0, window: float = 25.0,
             under = ((clo[crow][:, ccol] - zmin[b]) > step) & occupied[b]
             low[b] = np.where(canopy[b], under, pits[b])
     return LowCells(low, n_pits, float(np.count_nonzero(canopy & occupied)) / n_occ,
-                    float(f * cell))
+                    float(f * cell), f, counts)
+
+
+def _coarse(zmin, canopy, step, share_coarse, anchor, factor, owned, counts, tables=False):
+    """``(f, closing)``: the coarse factor under canopy and its closing raster.
+
+    The first factor at which pits are rare in the canopy blocks, or ``factor``; with
+    ``owned`` every factor's counts over the owned blocks go into ``counts``.
+    """
+    chosen = None
+    for i, f in enumerate(FACTORS if owned is not None or not factor else (int(factor),)):
+        if chosen is not None and owned is None:
+            break
+        coarse, canchor = _block_min(zmin, f, anchor)
+        cpits, clo = closing_pits(coarse, step, canchor, tables)
+        area = _block_any(canopy, f, anchor) & ~np.isnan(coarse)
+        if owned is not None:
+            mine = area & owned(f, coarse.shape)
+            counts["blocks"][i] = int(np.count_nonzero(mine))
+            counts["pits"][i] = int(np.count_nonzero(cpits & mine))
+        if chosen is None and (f == factor if factor else
+                               np.count_nonzero(cpits & area) < share_coarse
+                               * max(1, int(np.count_nonzero(area)))):
+            chosen = (f, clo)
+    return chosen if chosen is not None else (f, clo)
 
 
 def canopy_counts(zmin, cell: float, owned, *, step: float = 5.0, window: float = 25.0,
@@ -221,21 +251,10 @@ def canopy_counts(zmin, cell: float, owned, *, step: float = 5.0, window: float 
 
     For every factor of :data:`FACTORS`: the coarse pits in canopy blocks (``pits``)
     and the occupied canopy blocks (``blocks``), over the blocks ``owned(f, shape)``
-    marks (a bool array of the coarse raster's shape). Counts of the chunks of a
-    catalog, each owning a partition of the blocks, add up to the counts of the
-    merged raster: :func:`choose_factor` of the sum is the single-file choice.
+    marks (a bool array of the coarse raster's shape): ``low_cells(owned=).counts``.
     """
-    pits, n_pits, _, canopy = _canopy(zmin, cell, step, window, share, anchor)
-    out = {"pits": [0] * len(FACTORS), "blocks": [0] * len(FACTORS)}
-    if not n_pits or not canopy.any():
-        return out
-    for i, f in enumerate(FACTORS):
-        coarse, canchor = _block_min(zmin, f, anchor)
-        cpits = closing_pits(coarse, step, canchor)[0]
-        area = _block_any(canopy, f, anchor) & owned(f, coarse.shape)
-        out["blocks"][i] = int(np.count_nonzero(area & ~np.isnan(coarse)))
-        out["pits"][i] = int(np.count_nonzero(cpits & area))
-    return out
+    return low_cells(zmin, cell, step=step, window=window, share=share, anchor=anchor,
+                     owned=owned).counts
 
 
 def choose_factor(pits, blocks, share_coarse: float = 0.03) -> int:

@@ -163,6 +163,10 @@ class Derived:
     low_cells: int = 0
     canopy_share: float = 0.0
     canopy_scale: float = 0.0
+    #: the coarse factor used under canopy (0: none) and, in a catalog chunk, the canopy
+    #: counts of the blocks it owns (``_lowcells.low_cells(owned=)``, :mod:`._canopy`)
+    canopy_factor: int = 0
+    canopy_counts: Optional[dict] = None
     #: the object raster and its cell (or a fixed width, m): the widest object is measured
     #: when first asked, so a run without a report does not label the objects (0.08 s CPU
     #: on 4 M points)
@@ -270,6 +274,7 @@ def derived(info: dict, classes: np.ndarray, water_input: int, water_cand: int) 
         trend_window=opt.trend_window if opt.trend_smooth > 0 else 0.0,
         pits=lows.pits, low_cells=int(np.count_nonzero(lows.low)),
         canopy_share=lows.canopy_share, canopy_scale=lows.canopy_scale,
+        canopy_factor=lows.factor, canopy_counts=lows.counts,
         largest_object_of=(info.get("objects"), cell),
         ground_share=float(np.count_nonzero(classes == 2)) / n,
         water_input=int(water_input), water_candidates=int(water_cand),
@@ -296,10 +301,11 @@ class RecommendedFilter(OptionsFilter):
 
     #: a catalog's first pass counts the points per 5 m cell for it (:mod:`._summary`)
     needs_counts = True
-    #: and its chunks tally the canopy counts of their blocks (:func:`canopy_tally`)
+    #: and its chunks tally the canopy counts of their blocks (:mod:`._canopy`)
     needs_canopy = True
     summary: Optional[dict] = None
-    #: set by a catalog chunk's tally: ``owned(grid, f, shape)``, the blocks it counts
+    #: set by a catalog chunk: ``owned(grid, f, shape)``, the canopy blocks it counts
+    #: (``Derived.canopy_counts``) while it classifies
     canopy_owned = None
 
     def __init__(self, options):
@@ -329,15 +335,13 @@ class RecommendedFilter(OptionsFilter):
         take = ~(water | cand_water)
         if keep is not None:
             take &= keep
-        # a catalog's canopy factor (:func:`canopy_tally` summed over its chunks)
-        info: dict = {"density": s["density"], "canopy_factor": s.get("canopy_factor")}
+        # a catalog's canopy factor (its chunks' canopy counts summed, :mod:`._canopy`)
+        info: dict = {"density": s["density"], "canopy_factor": s.get("canopy_factor"),
+                      "canopy_owned": self.canopy_owned}
         cls = np.full(n, 1, np.uint8)
         from .recommended import derive  # the tolerance from the whole cloud's density
         every = take.all()
         opts = derive(x, y, self.options, density=s["density"])
-        if self.canopy_owned is not None:           # a catalog chunk's tally, no classes
-            return FilterOutcome(cls if keep is None else cls[keep], details=canopy_tally(
-                x, y, z, opts, origin, self.canopy_owned, None if every else take))
         same = np.count_nonzero(take) == (n if keep is None else np.count_nonzero(keep))
         got = self.func(x, y, z, options=opts, progress=mon.update, cancel=mon.cancelled,
                         origin=origin, info=info, keep=None if every else take,
@@ -363,23 +367,3 @@ class RecommendedFilter(OptionsFilter):
         sec.add(KeyValues(d.rows()))
         for w in d.warnings():
             sec.add(Paragraph(w))
-
-
-def canopy_tally(x, y, z, options, origin, owned, keep=None) -> dict:
-    """Return the canopy counts (:func:`._lowcells.canopy_counts`) of a chunk's blocks.
-
-    The first steps of :func:`.recommended.classify` (its grid and minimum raster, on
-    the points it would classify: ``keep``), then the counts over the blocks
-    ``owned(grid, f, shape)`` marks. Summed over the chunks they are the merged
-    cloud's (:func:`._lowcells.choose_factor`): every chunk then closes its canopy at
-    the scale a single-file run of the merged cloud chooses.
-    """
-    from ._lowcells import canopy_counts
-    opt = options                       # derived (cell, tolerance) by the caller
-    x, y, z = R.checked_xyz(x, y, z, opt.min_points, keep)
-    grid = R.Grid.around(x, y, opt.cell, origin, keep)
-    pc = R.PointCells(x, y, grid, keep)
-    zmin = pc.cell_min(z, base=pc.height_base(z))
-    return canopy_counts(zmin, grid.cell, lambda f, shape: owned(grid, f, shape),
-                         step=opt.low_step, window=opt.low_window, share=opt.low_share,
-                         anchor=grid.anchor)

@@ -52,6 +52,9 @@ from ._catalog_checks import (  # noqa: F401 - MAX_*, check_scheduler: public na
     no_ground_error,
     tile_signature,
 )
+from ._catalog_state import check_markers, finished_chunks, untrusted_error, write_settings
+from ._catalog_state import read_text as _read_text
+from ._catalog_state import undo_run as _undo_run
 from ._chunks import (
     DTM_METHODS,
     GROUND_FILTERS,
@@ -61,6 +64,7 @@ from ._chunks import (
     default_ground_filter,
     is_done,
     neighbour_paths,
+    process_chunk,
     register_dtm_method,
     register_ground_filter,
     snap_grid,
@@ -309,33 +313,26 @@ def pass_plan(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dict
     "folder", "signature"}``: a tile's cells that another tile's box touches are counted
     by key.
     """
-    if not tasks or not has_first_pass(tasks[0].ground_filter):
+    flt = ground_filter(tasks[0].ground_filter) if tasks else None
+    if flt is None or getattr(flt, "lattice", "cloud") != "cloud":    # has_first_pass
         return None
-    flt = ground_filter(tasks[0].ground_filter)
     state = Path(folder) / STATE_DIR
     counts = bool(getattr(flt, "needs_counts", False))
     h = float(tasks[0].units.h)
     signature = json.loads(json.dumps(dict(
         tiles=sorted(tile_signature(i) for i in cat.tiles), ground_filter=tasks[0].ground_filter,
         counts=counts, h=h, buffer=float(tasks[0].buffer))))
-    canopy = bool(getattr(flt, "needs_canopy", False))   # and its chunks' canopy tallies
     summary = _summary.load(state)
-    if summary is not None and summary.get("signature") == signature and (
-            not canopy or _canopy.has_factor(summary)):
+    if summary is not None and summary.get("signature") == signature:
         apply_summary(tasks, summary)
         return None
-    if canopy and finished_chunks(folder):
-        # the tallies would cover the unfinished chunks only: a scale of part of the catalog
-        raise InputError(
-            "The output folder {folder} holds finished chunks of an earlier run but not the "
-            "canopy scale they were made with (.catalog/summary.json is missing, damaged or "
-            "from an older version); resuming would mix two scales. Choose another output "
-            "folder, or delete that folder's outputs and its .catalog folder to start again.",
-            folder=folder)
+    if getattr(flt, "needs_canopy", False) and finished_chunks(folder):
+        # kept from 0475c85: the finished chunks' values cannot be checked against it
+        raise untrusted_error(folder, [f"{STATE_DIR}/{_summary.SUMMARY_FILE}"])
     spec = {p: (h, counts, [(cat.bounds[j] * h).tolist() for j in cat.query(tuple(b))
                             if j != i]) for i, (p, b) in enumerate(zip(cat.paths, cat.bounds))}
     return {"spec": spec, "counts": counts, "folder": os.path.abspath(state),
-            "signature": signature, "canopy": canopy}
+            "signature": signature}
 
 
 def first_pass(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dict]:
@@ -353,19 +350,21 @@ def first_pass(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> Optional[dic
     summary = _summary.final(*[_summary.tile_summary(p, *plan["spec"][p]) for p in cat.paths],
                              counts=plan["counts"], folder=plan["folder"],
                              signature=plan["signature"])
-    if plan["canopy"]:
-        summary = _canopy.with_canopy(summary, *[_canopy.tally_chunk(t, summary=summary)
-                                                 for t in tasks], folder=plan["folder"])
     apply_summary(tasks, summary)
     return summary
 
 
-def finished_chunks(out_folder) -> List[str]:
-    """Keys of the chunks whose done marker is in ``out_folder`` (kept for a resume)."""
-    state = Path(out_folder) / STATE_DIR
-    suffix = ".done.json"
-    return sorted(p.name[:-len(suffix)] for p in state.glob(f"*{suffix}")) \
-        if state.is_dir() else []
+def run_here(cat: Catalog, tasks: Sequence[ChunkTask], folder) -> List[dict]:
+    """Do a catalog's work in this process, without Dask (tests, benchmarks); the stats.
+
+    The first pass (:func:`first_pass`), every chunk, then the chunks run again at the
+    catalog's canopy factor (:mod:`._canopy`), as :func:`run_catalog` does on its workers.
+    """
+    first_pass(cat, tasks, folder)
+    stats = [process_chunk(t) for t in tasks]
+    settle = _settler(tasks, [], Path(folder)) if has_canopy(tasks[0].ground_filter) else None
+    again = {t.key: process_chunk(t) for t in (settle(stats) if settle is not None else ())}
+    return [again.get(s["key"], s) for s in stats]
 
 
 def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
@@ -433,13 +432,15 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
         check_scheduler(scheduler)
     run_settings = _run_settings(tasks, cat)
     _check_resume(folder, run_settings, tasks, whole=has_first_pass(gf))
+    previous = {t.key: is_done(t) for t in tasks}
+    if has_canopy(gf):
+        check_markers(folder, previous)          # every finished chunk's canopy counts
     # everything is validated: only now is anything created
     state = folder / STATE_DIR
     made = [p for p in (folder, state) if not p.exists()]
     before = {n: _read_text(state / n) for n in (SETTINGS_FILE, _summary.SUMMARY_FILE)}
     state.mkdir(parents=True, exist_ok=True)
-    _write_settings(folder, run_settings)
-    previous = {t.key: is_done(t) for t in tasks}
+    write_settings(folder, run_settings)
     todo = [t for t in tasks if previous[t.key] is None]
     for t in todo:
         t.fail_once = t.key in _test_fail_once()
@@ -449,10 +450,11 @@ def run_catalog(source, out_folder, *, ground_filter: Optional[str] = None,
     try:
         with sigterm_raises():
             return _execute(cat, tasks, todo, previous, folder, made, gf, opts, mon, clock, t0)
-    except BaseException:
+    except BaseException as exc:
         # cancel, failure or SIGTERM before any chunk finished (in the first pass, or every
-        # chunk failed): nothing to resume, so the folder is left as this run found it
-        if not finished_chunks(folder):
+        # chunk failed): nothing to resume, so the folder is left as this run found it; a
+        # run refused after its chunks (no ground, no DTM cell) loses what it wrote
+        if getattr(exc, "undo_run", False) or not finished_chunks(folder):
             _undo_run(todo, made, restore=before)
         raise
 
@@ -466,14 +468,18 @@ def _execute(cat, tasks, todo, previous, folder, made, gf, opts, mon, clock, t0)
         on_chunk({**s, "status": "skipped"})
     mon.update(len(chunks) / len(tasks))
     clock.lap("plan")
+    settle = _settler(tasks, chunks, folder) if has_canopy(gf) else None
     plan = pass_plan(cat, todo, folder) if todo else None     # None: nothing to pass, or
-    if todo:                                                  # a valid summary reused
-        chunks += _run_dask(todo, tasks, folder, opts["workers"], opts["scheduler"],
-                            opts["memory_limit"], mon, len(chunks), failed, clock, on_chunk,
-                            plan=plan)
+    ran = set()                                               # a valid summary reused
+    if todo or (settle is not None and settle([])):
+        new = _run_dask(todo, tasks, folder, opts["workers"], opts["scheduler"],
+                        opts["memory_limit"], mon, len(chunks), failed, clock, on_chunk,
+                        plan=plan, settle=settle)
+        ran = {c["key"] for c in new}            # a finished chunk run again: its new stats
+        chunks = [c for c in chunks if c["key"] not in ran] + new
     summary = _summary.load(folder / STATE_DIR) or {}
     gap = _catalog_gap(tasks, chunks, failed, opts["cell_size"], opts["dtm_method"])
-    _check_outcome(chunks, failed, todo, made, len(tasks), cat.n_points, gf)
+    _check_outcome(chunks, failed, len(tasks), cat.n_points, gf)
     vrt, cog_path = _mosaic(cat, folder, tasks, failed, chunks, opts["cog"])
     clock.lap("mosaic")
     order = {t.key: i for i, t in enumerate(tasks)}
@@ -481,9 +487,11 @@ def _execute(cat, tasks, todo, previous, folder, made, gf, opts, mon, clock, t0)
     settings = dict(ground_filter=gf, dtm_method=opts["dtm_method"],
                     cell_size=float(opts["cell_size"]), buffer=float(opts["buffer"]),
                     chunk_size=float(opts["chunk_size"]),
-                    **_result_settings(cat, tasks, gap, summary, ran=plan is not None))
+                    **_result_settings(cat, tasks, gap, summary, ran=plan is not None),
+                    **_canopy_settings(settle, chunks))
     return CatalogResult(chunks=chunks, failed=failed,
-                         skipped=[k for k, v in previous.items() if v is not None],
+                         skipped=[k for k, v in previous.items() if v is not None
+                                  and k not in ran],
                          vrt=vrt, cog=cog_path, seconds=time.perf_counter() - t0,
                          workers=opts["workers"], scheduler=opts["scheduler"] or "local",
                          settings=settings, timings=clock.phases)
@@ -496,15 +504,47 @@ def _result_settings(cat, tasks, gap, summary, ran: bool) -> dict:
                 first_pass_seconds=(summary.get("seconds") if ran else [0.0, 0.0])
                 if summary else None,
                 first_pass=("run" if ran else "reused") if summary else None,
-                # and of the chunks' canopy tallies (:mod:`._canopy`), if the filter has them
-                canopy_seconds=(summary.get("canopy_seconds") if ran else [0.0, 0.0])
-                if "canopy_seconds" in summary else None,
                 origin=tasks[0].origin, keys=[t.key for t in tasks],
                 bounds=[list(t.bounds) for t in tasks],
                 # metres (tiles in feet: converted), as a single-file run reports it
                 gap_distance=(gap if gap is not None else tasks[0].max_distance)
                 * tasks[0].units.h,
                 empty_tiles=[os.path.basename(p) for p in cat.empty])
+
+
+def has_canopy(key: str) -> bool:
+    """Return True when the filter ``key`` takes the catalog's canopy scale (:mod:`._canopy`)."""
+    return bool(getattr(ground_filter(key), "needs_canopy", False))
+
+
+def _settler(tasks, done: List[dict], folder: Path):
+    """``settle(results)``: the chunks to run again at the catalog's canopy factor.
+
+    ``done``: the stats of the chunks an earlier run finished; ``settle.got`` keeps the
+    last :class:`._canopy.Settled` (None while a chunk is missing or failed).
+    """
+    def settle(results):
+        got = settle.got = _canopy.settle(tasks, done + list(results))
+        if got is None or not got.redo:
+            return []
+        apply_summary(got.redo, _summary.load(folder / STATE_DIR) or {}, got.factor)
+        return got.redo
+    settle.got = None
+    return settle
+
+
+def _canopy_settings(settle, chunks) -> dict:
+    """Return the canopy factor, the chunks run again at it and their seconds (:mod:`._canopy`)."""
+    got = None if settle is None else settle.got
+    if got is None:
+        return dict(canopy_factor=None, canopy_reruns=[], canopy_seconds=None)
+    again = {t.key for t in got.redo}
+    redone = [c for c in chunks if c["key"] in again]
+    return dict(canopy_factor=got.factor, canopy_counts=[got.pits, got.blocks],
+                canopy_reruns=sorted(again),
+                # the workers' wall and CPU seconds of those re-runs: the scale's extra cost
+                canopy_seconds=[float(sum(c.get(k) or 0.0 for c in redone))
+                                for k in ("seconds", "cpu_seconds")])
 
 
 def _catalog_gap(tasks, chunks, failed, cell_size: float, method: str) -> Optional[float]:
@@ -524,64 +564,23 @@ def _catalog_gap(tasks, chunks, failed, cell_size: float, method: str) -> Option
     return gap
 
 
-def _write_settings(folder: Path, settings: dict) -> None:
-    import json
-    path = folder / STATE_DIR / SETTINGS_FILE
-    tmp = path.with_suffix(".tmp")
-    tmp.write_text(json.dumps(settings, indent=1), encoding="utf-8")
-    os.replace(tmp, path)
-
-
-def _check_outcome(chunks, failed, todo, made, n_tiles: int, n_points: int, gf: str):
-    """Refuse a run without ground, or without a DTM cell, undoing what it wrote.
+def _check_outcome(chunks, failed, n_tiles: int, n_points: int, gf: str):
+    """Refuse a run without ground, or without a DTM cell (:func:`run_catalog` undoes it).
 
     The single-file DTM refuses a cloud without ground points and a DTM without a valid
     cell; a catalog does the same over all its tiles (a run with failed chunks reports
-    those instead).
+    those instead). The refusal carries ``undo_run``: what this run wrote goes, once.
     """
     if failed or not chunks:
         return
+    exc = None
     if not any(c.get("ground") for c in chunks):
-        _undo_run(todo, made)
-        raise no_ground_error(chunks, n_tiles, n_points, gf)
-    if all(c.get("dtm_cells", 1) == 0 for c in chunks):
-        _undo_run(todo, made)
-        raise empty_dtm_error(chunks)
-
-
-def _undo_run(todo: Sequence[ChunkTask], made: Sequence[Path], restore=None) -> None:
-    """Remove what this run wrote (chunk outputs, markers, folders it created).
-
-    ``restore``: the state files (name -> text, None: absent) as the run found them,
-    put back when the state folder was already there.
-    """
-    drop_gap_files(todo)
-    for t in todo:
-        for path in t.outputs.values():
-            if os.path.exists(path):
-                os.remove(path)
-    for p in reversed(made):
-        if p.name == STATE_DIR and p.is_dir():
-            for f in p.iterdir():
-                f.unlink()
-        if p.is_dir() and not any(p.iterdir()):
-            p.rmdir()
-    state = Path(todo[0].outputs["DONE"]).parent if todo else None
-    if restore and state is not None and state.is_dir():
-        for f in state.glob("*.tmp"):           # an atomic write cut short
-            f.unlink()
-        for name, text in restore.items():
-            if text is None:
-                (state / name).unlink(missing_ok=True)
-            else:
-                (state / name).write_text(text, encoding="utf-8")
-
-
-def _read_text(path: Path) -> Optional[str]:
-    try:
-        return path.read_text(encoding="utf-8")
-    except (OSError, ValueError):
-        return None
+        exc = no_ground_error(chunks, n_tiles, n_points, gf)
+    elif all(c.get("dtm_cells", 1) == 0 for c in chunks):
+        exc = empty_dtm_error(chunks)
+    if exc is not None:
+        exc.undo_run = True
+        raise exc
 
 
 def _mosaic(cat, folder: Path, tasks, failed, chunks, cog: bool):

@@ -77,6 +77,7 @@ Photogramm. Remote Sens. 59(1-2), 85-101 (accuracy measures).
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import partial
 from typing import Optional
 
 import numpy as np
@@ -439,10 +440,12 @@ def surface(zmin, grid, opt, rep, need=None, info=None, cache=None, remake=None,
     """
     skip = np.isnan(zmin)                            # empty cells, then low outliers too
     outside = outside_hull(~skip) if skip.any() else None
+    own = None if info is None else info.get("canopy_owned")   # a catalog chunk's tally
     lows = L.low_cells(zmin, grid.cell, step=opt.low_step, window=opt.low_window,
                        share=opt.low_share, anchor=grid.anchor,  # a catalog's factor
                        factor=None if info is None else info.get("canopy_factor"),
-                       tables=dense)                     # dense: faster closings
+                       tables=dense,                     # dense: faster closings
+                       owned=None if own is None else partial(own, grid))
     skip |= lows.low                                 # never ground, nor grown into
     info is not None and info.update(lows=lows)
     del lows

@@ -16,6 +16,7 @@ pass (:mod:`core.lidar._canopy`): the forest below.
 """
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import numpy as np
@@ -75,9 +76,7 @@ def _catalog(tiles: Path, out: Path, key: str, buffer: float):
     tasks = cc.plan_tasks(cat, out, ground_filter=key, dtm_method="idw", cell_size=2.0,
                           buffer=buffer)
     (out / cc.STATE_DIR).mkdir(parents=True)
-    cc.first_pass(cat, tasks, out)
-    for t in tasks:
-        _chunks.process_chunk(t)
+    cc.run_here(cat, tasks, out)     # first pass, chunks, canopy re-runs
     got = np.concatenate([read_las(t.outputs["LAS"], ("classification",))["classification"]
                           for t in tasks])
     return cat, tasks, got
@@ -116,8 +115,9 @@ def test_density_step_catalog_equals_single_file(step, tmp_path, monkeypatch, ke
     assert np.array_equal(got[inner], ref[inner]), \
         f"{int((got != ref)[inner].sum())} of {int(inner.sum())} inner points differ"
     if key == "groundfilter":
-        # each chunk derives twice: its canopy tally (:mod:`core.lidar._canopy`), its filter
-        assert len(chunks) == 4 * len(seen) and len(set(chunks + seen)) == 1
+        # each chunk derives once (it counts its canopy blocks while it filters), and t1
+        # once more: it ran again at the catalog's canopy scale (:mod:`core.lidar._canopy`)
+        assert len(chunks) == 3 * len(seen) and len(set(chunks + seen)) == 1
         assert 0.33 < seen[0] < 0.42
         assert np.array_equal(got, ref)                # every point, the edges too
 
@@ -139,8 +139,8 @@ def test_lake_across_tiles_catalog_equals_single_file(tmp_path, monkeypatch):
     _, _, got = _catalog(tmp_path / "tiles", tmp_path / "out", "groundfilter", 300.0)
     ref = classify_points(pts, ground_filter("groundfilter"),
                           default_selection("groundfilter"))
-    # whole scene's candidates in each chunk's canopy tally and filter
-    assert flags[:4] == flags[4:] * 4 and flags[4] > 100
+    # whole scene's candidates in each chunk's filter (no chunk runs again: no canopy)
+    assert flags[:2] == flags[2:] * 2 and flags[2] > 100
     assert np.array_equal(got, ref), f"{int((got != ref).sum())} points differ"
 
 
@@ -154,25 +154,26 @@ def test_forest_canopy_scale_comes_from_the_whole_catalog(tmp_path, monkeypatch)
                                                                ground_share=0.05, seed=1))
     from geomatics_toolbox.core.lidar import _lowcells
     scales, tallies = [], []
-    low, counts = _lowcells.low_cells, _lowcells.canopy_counts
+    low = _lowcells.low_cells
 
     def spy(*a, **k):
         out = low(*a, **k)
         scales.append(out.canopy_scale)
+        if out.counts is not None:                     # a chunk's counts of its blocks
+            tallies.append(out.counts)
         return out
-
-    def spy_counts(*a, **k):
-        tallies.append(counts(*a, **k))
-        return tallies[-1]
     monkeypatch.setattr(rec.L, "low_cells", spy)
-    monkeypatch.setattr(_lowcells, "canopy_counts", spy_counts)
     cat, tasks, got = _catalog(tmp_path / "tiles", tmp_path / "out", "groundfilter", 100.0)
     ref = classify_points(pts, ground_filter("groundfilter"),
                           default_selection("groundfilter"))
-    assert scales == [8.0, 8.0, 8.0]                   # sparse chunk, dense chunk, merged
+    # the sparse chunk alone closes at 12 m, the dense one at 8 m; the counts summed give
+    # 8 m, so the sparse chunk runs again at 8 m (and only it); the merged run: 8 m
+    assert scales == [12.0, 8.0, 8.0, 8.0]
     alone = [_lowcells.choose_factor(t["pits"], t["blocks"]) for t in tallies]
-    assert len(tallies) == 2 and alone[0] != alone[1]  # each chunk's own counts disagree
+    assert len(tallies) == 3 and alone[0] != alone[1]  # each chunk's own counts disagree
+    assert tallies[2] == tallies[0]                    # the re-run counts the same blocks
     assert tasks[0].derived["canopy_factor"] == 8      # 8 cells of 1 m
+    assert (tasks[1].derived or {}).get("canopy_factor") is None   # not run again
     inner = _inner(pts, cat, 100.0)
     assert np.array_equal(got[inner], ref[inner]), \
         f"{int((got != ref)[inner].sum())} inner points differ"
@@ -207,10 +208,75 @@ def test_dask_run_summarises_on_the_strip_decodes(step, tmp_path):
     tasks = cc.plan_tasks(cat, tmp_path / "o2", ground_filter="groundfilter",
                           dtm_method="idw", cell_size=2.0, buffer=100.0)
     (tmp_path / "o2" / cc.STATE_DIR).mkdir(parents=True)
-    here = cc.first_pass(cat, tasks, tmp_path / "o2")["derived"]
-    assert saved["derived"]["canopy_counts"] == here["canopy_counts"]
-    assert sum(here["canopy_counts"][1]) > 0 and saved["derived"]["canopy_factor"] == \
-        here["canopy_factor"]
+    cc.first_pass(cat, tasks, tmp_path / "o2")
+    here = cc._canopy.settle(tasks, [_chunks.process_chunk(t) for t in tasks])
+    assert res.settings["canopy_counts"] == [here.pits, here.blocks]
+    assert sum(here.blocks) > 0 and res.settings["canopy_factor"] == here.factor
+    # the dense tile alone chose another scale: it ran again (its classes are checked above)
+    assert res.settings["canopy_reruns"] == [t.key for t in here.redo] == ["t1"]
+
+
+def _classes(out: Path, n: int = 2):
+    return np.concatenate([read_las(out / f"t{i}_classified.las", ("classification",))
+                           ["classification"] for i in range(n)])
+
+
+def test_resume_of_provisional_chunks_runs_the_disagreeing_one_again(step, tmp_path):
+    """Every chunk finished at its own canopy scale, the run stopped before settling (a
+    crash): the resume has no chunk to run but sums the done markers' counts and runs
+    the chunk whose scale disagrees again (t1 alone closes at 3 cells, the catalog's
+    counts give 6; its classes come out the same either way here - the forest test shows
+    a scale that changes them); the classes are the single-file run's."""
+    tiles, pts = step
+    out = tmp_path / "out"
+    cat = cc.Catalog.open(str(tiles))
+    tasks = cc.plan_tasks(cat, out, ground_filter="groundfilter", dtm_method="idw",
+                          cell_size=2.0, buffer=100.0)
+    (out / cc.STATE_DIR).mkdir(parents=True)
+    cc.first_pass(cat, tasks, out)
+    own = [_chunks.process_chunk(t)["canopy"]["factor"] for t in tasks]   # provisional
+    settings = {**cc._run_settings(tasks, cat)}
+    cc.write_settings(out, settings)
+    ref = classify_points(pts, ground_filter("groundfilter"),
+                          default_selection("groundfilter"))
+    res = cc.run_catalog(str(tiles), out, ground_filter="groundfilter", buffer=100.0,
+                         cell_size=2.0, workers=1)
+    assert res.settings["canopy_reruns"] == ["t1"] and res.skipped == ["t0"]
+    assert own[1] != res.settings["canopy_factor"] and own[0] in (0, res.settings[
+        "canopy_factor"])
+    got = _classes(out)
+    assert np.array_equal(got, ref), f"{int((got != ref).sum())} points differ"
+    marker = json.loads(Path(tasks[1].outputs["DONE"]).read_text())
+    assert marker["canopy"]["factor"] == res.settings["canopy_factor"]
+    again = cc.run_catalog(str(tiles), out, ground_filter="groundfilter", buffer=100.0,
+                           cell_size=2.0, workers=1)
+    assert again.settings["canopy_reruns"] == [] and again.skipped == ["t0", "t1"]
+
+
+def test_cancel_in_the_canopy_reruns_keeps_the_chunks_and_the_resume_settles(step, tmp_path):
+    """Cancelled after every chunk finished, when the disagreeing chunk runs again: the
+    finished chunks are kept (not undone) and the resume settles. A cancelled Dask task
+    may still finish on its worker, so t1's marker holds its own scale (the resume runs
+    it again) or the catalog's (nothing left to run); either way the resumed classes
+    are the single-file run's."""
+    tiles, pts = step
+    out = tmp_path / "out"
+    seen = []
+    with pytest.raises(cc.Cancelled):
+        cc.run_catalog(str(tiles), out, ground_filter="groundfilter", buffer=100.0,
+                       cell_size=2.0, workers=1, on_chunk=seen.append,
+                       cancel=lambda: len(seen) == 2)
+    assert sorted(cc.finished_chunks(out)) == ["t0", "t1"]
+    marker = json.loads((out / cc.STATE_DIR / "t1.done.json").read_text())
+    res = cc.run_catalog(str(tiles), out, ground_filter="groundfilter", buffer=100.0,
+                         cell_size=2.0, workers=1)
+    f, kept = res.settings["canopy_factor"], marker["canopy"]["factor"]
+    assert f == 6 and kept in (3, 6)                   # t1's own scale, or the catalog's
+    assert res.settings["canopy_reruns"] == ([] if kept == f else ["t1"])
+    ref = classify_points(pts, ground_filter("groundfilter"),
+                          default_selection("groundfilter"))
+    got = _classes(out)
+    assert np.array_equal(got, ref), f"{int((got != ref).sum())} points differ"
 
 
 @pytest.fixture(scope="module")

@@ -25,7 +25,6 @@ import pytest
 
 from geomatics_toolbox.core import classes as asprs
 from geomatics_toolbox.core.io.las import PointData, las_info, read_las, write_las
-from geomatics_toolbox.core.lidar import _chunks
 from geomatics_toolbox.core.lidar import catalog as cc
 from geomatics_toolbox.core.lidar.filters import (
     GROUND_FILTERS,
@@ -77,9 +76,7 @@ def _catalog(folder: Path, out: Path, key: str):
     tasks = cc.plan_tasks(cat, out, ground_filter=key, dtm_method="idw", cell_size=2.0,
                           buffer=100.0)
     (out / cc.STATE_DIR).mkdir(parents=True, exist_ok=True)
-    cc.first_pass(cat, tasks, out)
-    for t in tasks:
-        _chunks.process_chunk(t)
+    cc.run_here(cat, tasks, out)     # first pass, chunks, canopy re-runs
     return tasks, np.concatenate([read_las(t.outputs["LAS"], ("classification",))
                                   ["classification"] for t in tasks])
 

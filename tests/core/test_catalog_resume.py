@@ -138,8 +138,11 @@ def test_resume_reuses_a_valid_first_pass_and_says_it_spent_nothing(tiles, tmp_p
     assert again.skipped == ["t0"]
     assert again.settings["first_pass"] == "reused"
     assert again.settings["first_pass_seconds"] == [0.0, 0.0]   # was the first run's
-    assert first.settings["canopy_seconds"][1] > 0            # the chunks' canopy tallies
-    assert again.settings["canopy_seconds"] == [0.0, 0.0]
+    # the chunks count their canopy blocks while they classify: no task of its own, and
+    # no chunk runs again where every chunk chose the catalog's factor (or had no canopy)
+    assert first.settings["canopy_reruns"] == again.settings["canopy_reruns"] == []
+    assert first.settings["canopy_seconds"] == again.settings["canopy_seconds"] == [0.0, 0.0]
+    assert again.settings["canopy_counts"] == first.settings["canopy_counts"]
     assert json.loads((out / cc.STATE_DIR / "summary.json").read_text()) == saved
 
 
@@ -179,12 +182,35 @@ def test_untrusted_summary_with_finished_chunks_refused(tiles, tmp_path, damage)
     (out / cc.STATE_DIR / "t1.done.json").unlink()
     before = _listing(out)
     with pytest.raises(InputError, match=r"finished chunks of an earlier run but not the "
-                                         r"canopy scale") as err:
+                                         r"values they were made with \(\.catalog/summary"
+                                         r"\.json: missing") as err:
         cc.run_catalog(str(tiles), out, **OPTS)
     assert _listing(out) == before                          # nothing touched
     for lang in ("ar", "fa"):
         msg = err.value.message(lang)
         assert str(out) in msg and "canopy" not in msg
+
+
+def test_finished_chunk_without_canopy_counts_refused(tiles, tmp_path):
+    """A done marker without the chunk's canopy counts (written by an older version) is
+    refused: the catalog's canopy scale is chosen from every chunk's counts, and that
+    chunk's cannot be summed (nothing is touched; the marker is named)."""
+    out = tmp_path / "out"
+    cc.run_catalog(str(tiles), out, **OPTS)
+    path = out / cc.STATE_DIR / "t0.done.json"
+    marker = json.loads(path.read_text())
+    assert marker["canopy"]["pits"] and marker["canopy"]["blocks"]
+    del marker["canopy"]
+    path.write_text(json.dumps(marker))
+    (out / cc.STATE_DIR / "t1.done.json").unlink()
+    before = _listing(out)
+    with pytest.raises(InputError, match=r"not the values they were made with "
+                                         r"\(\.catalog/t0\.done\.json: missing") as err:
+        cc.run_catalog(str(tiles), out, **OPTS)
+    assert _listing(out) == before
+    for lang in ("ar", "fa"):
+        msg = err.value.message(lang)
+        assert ".catalog/t0.done.json" in msg and "missing" not in msg
 
 
 # ------------------------------------------------------------ stopped in the first pass

@@ -27,7 +27,6 @@ from geomatics_toolbox.core import classes as asprs
 from geomatics_toolbox.core.io.catalog import find_tiles
 from geomatics_toolbox.core.io.las import read_las, write_las
 from geomatics_toolbox.core.lidar import catalog as cc
-from geomatics_toolbox.core.lidar._chunks import process_chunk
 from geomatics_toolbox.core.lidar.filters import (
     GROUND_FILTERS,
     default_ground_filter,
@@ -88,9 +87,7 @@ def _catalog(tiles: Path, out: Path, key):
     tasks = cc.plan_tasks(cat, out, ground_filter=key or default_ground_filter(),
                           dtm_method="idw", cell_size=2.0, buffer=BUFFER)
     (out / cc.STATE_DIR).mkdir(parents=True, exist_ok=True)
-    cc.first_pass(cat, tasks, out)
-    for t in tasks:
-        process_chunk(t)
+    cc.run_here(cat, tasks, out)     # first pass, chunks, canopy re-runs
     cls = np.concatenate([read_las(t.outputs["LAS"], ("classification",))["classification"]
                           for t in tasks])
     return cat, tasks, cls
