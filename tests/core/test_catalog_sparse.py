@@ -205,6 +205,33 @@ def test_catalog_without_any_ground_is_refused_and_leaves_nothing(tmp_path):
     assert not out.exists() or not any(out.rglob("*"))
 
 
+def test_refusal_after_the_chunks_undoes_the_run_once_and_restores_the_state(tmp_path,
+                                                                             monkeypatch):
+    """No ground anywhere, in a folder an earlier run left without a finished chunk: this
+    run's outputs go and the earlier settings come back byte for byte, in one undo (it
+    ran twice: once without the state files, once more from the refusal's handler)."""
+    d = _catalog(tmp_path / "tiles", 0.0, everywhere=True)
+    out = tmp_path / "out"
+    (out / cc.STATE_DIR).mkdir(parents=True)
+    earlier = '{"earlier": "run"}'
+    (out / cc.STATE_DIR / "settings.json").write_text(earlier, encoding="utf-8")
+    (out / "notes.txt").write_text("mine", encoding="utf-8")
+    calls = []
+    undo = cc._undo_run
+
+    def spy(*a, **k):
+        calls.append(k.get("restore"))
+        return undo(*a, **k)
+    monkeypatch.setattr(cc, "_undo_run", spy)
+    with pytest.raises(InputError, match=r"No tile of the catalog has a ground point"):
+        cc.run_catalog(str(d), out, ground_filter="keep", cell_size=CELL, buffer=BUFFER,
+                       workers=1)
+    assert len(calls) == 1 and calls[0] is not None
+    assert sorted(str(p.relative_to(out)) for p in out.rglob("*")) == [
+        ".catalog", ".catalog/settings.json", "notes.txt"]
+    assert (out / cc.STATE_DIR / "settings.json").read_text(encoding="utf-8") == earlier
+
+
 def test_catalog_of_header_only_tiles_is_refused(tmp_path):
     d = tmp_path / "tiles"
     d.mkdir()
