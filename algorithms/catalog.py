@@ -211,6 +211,11 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                         "nothing.")
                 raise QgsProcessingException(
                     message.format(n=len(kept), folder=folder)) from None
+            again = res.settings.get("canopy_reruns") or []
+            if again:           # the extra time: tiles whose own canopy scale disagreed
+                feedback.pushInfo(self.tr(
+                    "{n} tile(s) classified again at the canopy scale of the whole catalog: "
+                    "{keys}.").format(n=len(again), keys=", ".join(again)))
             for warning in catalog_warnings(res):
                 feedback.pushWarning(self.core_message(warning))
             if out.requested(self.OUTPUT_HTML):

@@ -409,6 +409,10 @@
             <source>Terminated. {n} finished tile(s) are kept in {folder}: run again with the same settings to resume; unfinished tiles left nothing.</source>
             <translation>أُنهي التشغيل. أُبقيت {n} بلاطة منجزة في {folder}: شغّل مجدداً بالإعدادات نفسها للاستئناف؛ البلاطات غير المنجزة لم تترك شيئاً.</translation>
         </message>
+        <message>
+            <source>{n} tile(s) classified again at the canopy scale of the whole catalog: {keys}.</source>
+            <translation>{n} بلاطة (بلاطات) صُنِّفت من جديد بمقياس الغطاء الشجري للفهرس كله: {keys}.</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>

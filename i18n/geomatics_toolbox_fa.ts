@@ -409,6 +409,10 @@
             <source>Terminated. {n} finished tile(s) are kept in {folder}: run again with the same settings to resume; unfinished tiles left nothing.</source>
             <translation>اجرا متوقف شد. {n} کاشیِ تمام‌شده در {folder} نگه داشته شد: برای ادامه با همان تنظیمات دوباره اجرا کنید؛ کاشی‌های ناتمام چیزی به جا نگذاشتند.</translation>
         </message>
+        <message>
+            <source>{n} tile(s) classified again at the canopy scale of the whole catalog: {keys}.</source>
+            <translation>{n} کاشی دوباره با مقیاس تاج‌پوشش کل کاتالوگ طبقه‌بندی شد: {keys}.</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>

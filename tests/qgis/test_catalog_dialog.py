@@ -120,3 +120,25 @@ def test_terminate_keeps_finished_tiles_and_says_so(qgis_processing, tiles, tmp_
     text = str(err.value)
     assert "no output was written" not in text
     assert f"Terminated. 3 finished tile(s) are kept in {out}" in text
+
+
+def test_tiles_classified_again_at_the_catalog_canopy_scale_are_logged(qgis_processing,
+                                                                        tmp_path):
+    """Two tiles of 0.3 and 1.5 pts/m² (the density step of
+    tests/core/test_catalog_derived.py): alone the dense one closes its canopy at 3 cells,
+    the catalog's counts give 6, so it is classified again; the log says which."""
+    from geomatics_toolbox.core.lidar.filters import GROUND_FILTERS
+    d = tmp_path / "tiles"
+    d.mkdir()
+    for i, rho in enumerate((0.3, 1.5)):
+        write_tile(generate_tile(extent=(300.0, 300.0), origin=(500_000.0 + 300 * i,
+                                                                 4_000_000.0),
+                                 density=rho, seed=3 + i), d / f"t{i}.las")
+    fb = _Feedback()
+    res = qgis_processing.run(ALG, {"INPUT": str(d), "CELL_SIZE": 2.0, "BUFFER": 100.0,
+                                    "GROUND_FILTER": list(GROUND_FILTERS).index("groundfilter"),
+                                    "WORKERS": 1, "OUTPUT_FOLDER": str(tmp_path / "out")},
+                              feedback=fb.feedback)
+    assert res["N_TILES"] == 2 and res["N_FAILED"] == 0
+    assert "1 tile(s) classified again at the canopy scale of the whole catalog: t1." in \
+        fb.lines, fb.lines
