@@ -243,19 +243,23 @@ def _nonzero(mask):
     """``np.nonzero(mask)`` of a raster in :func:`_index_type`, band by band.
 
     The same cells in the same (row-major) order, without the int64 index arrays of
-    the whole raster at once (at low density most cells are holes: millions of them).
+    the whole raster at once (at low density most cells are holes: millions of them);
+    each band's cells by ``flatnonzero`` (a 2-D ``nonzero`` is several times slower).
     """
     it = _index_type(mask.shape)
+    cols = max(1, mask.shape[1])
     n = int(np.count_nonzero(mask))
     rr, cc = np.empty(n, it), np.empty(n, it)
-    step = max(1, (1 << 18) // max(1, mask.shape[1]))
+    step = max(1, (1 << 18) // cols)
     k = 0
     for b0 in range(0, mask.shape[0], step):
-        r, c = np.nonzero(mask[b0:b0 + step])
-        rr[k:k + r.size] = r
-        rr[k:k + r.size] += b0
-        cc[k:k + r.size] = c
-        k += r.size
+        f = np.flatnonzero(mask[b0:b0 + step])
+        r = f // cols
+        e = k + f.size
+        rr[k:e] = r
+        rr[k:e] += b0
+        cc[k:e] = f - r * cols
+        k = e
     return rr, cc
 
 
@@ -368,10 +372,10 @@ def grow_ground(zmin, obj, skip, dtm, cell, opt):
     size = 2 * rad + 1          # square dilations as shifted ORs (the same cells)
     front = cand & R.dilate_mask(ground, size)
     for _ in range(int(opt.grow_iters)):
-        rr, cc = np.nonzero(front)
+        rr, cc = _nonzero(front)
         if rr.size == 0:
             break
-        i = np.searchsorted(at, rr * cols + cc)
+        i = np.searchsorted(at, rr.astype(np.int64) * cols + cc)
         acc = _misfit(rr, cc, centre[i], gx[i], gy[i], zmin, ground, rad) <= tol[i]
         if not acc.any():
             break

@@ -175,6 +175,11 @@ def test_slope_at_cells_and_banded_hole_indices_equal_the_whole_raster(shape):
     assert hr.dtype == np.int32 and hc.dtype == np.int32
     np.testing.assert_array_equal(hr, want[0])
     np.testing.assert_array_equal(hc, want[1])
+    wide = np.random.default_rng(11).random((700, 1001)) < 0.3     # 3 bands of 261 rows
+    for m in (wide, wide[:, :1], np.zeros((5, 0), bool)):
+        got = S._nonzero(m)
+        for a, b in zip(got, np.nonzero(m)):
+            np.testing.assert_array_equal(a, b)
 
 
 @pytest.mark.parametrize("shape", SHAPES[2:])
