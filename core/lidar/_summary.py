@@ -61,7 +61,8 @@ def cloud_summary(x, y, classification=None, *, counts: bool = False, keep=None,
     """
     x, y = np.asarray(x, np.float64), np.asarray(y, np.float64)
     n = int(x.size if keep is None else np.count_nonzero(keep))
-    corner = extent[:2] if extent is not None else (lowest(x, keep), lowest(y, keep))
+    corner = None if not n else (extent[:2] if extent is not None
+                                 else (lowest(x, keep), lowest(y, keep)))
     out = {"n": n, "corner": [float(corner[0]), float(corner[1])] if n else None}
     if counts:
         water = (np.zeros(x.size, bool) if classification is None

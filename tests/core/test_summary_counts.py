@@ -135,3 +135,16 @@ def test_a_given_extent_gives_the_same_summary_water_test_grid_and_classes():
         R.Grid.around(x, y, 1.0, (3.0, 4.0), keep)
     assert np.array_equal(rec.classify(x, y, z, keep=keep, extent=ext)[keep],
                           rec.classify(x, y, z, keep=keep)[keep])
+
+
+@pytest.mark.parametrize("counts", [False, True])
+def test_an_empty_cloud_or_none_kept_summarises_to_no_points(counts):
+    """No point (or no point kept) gives n 0 and no corner, not a reduction error (review:
+    the corner was taken before the count was checked)."""
+    empty = S.cloud_summary(np.empty(0), np.empty(0), counts=counts)
+    none_kept = S.cloud_summary(np.arange(3.0), np.arange(3.0), keep=np.zeros(3, bool),
+                              counts=counts)
+    for s in (empty, none_kept):
+        assert s["n"] == 0 and s["corner"] is None
+        if counts:
+            assert s["water"] == 0 and s["cells"]["counts"] == []
