@@ -168,3 +168,69 @@ def test_fill_only_where_read_is_identical_there():
     np.testing.assert_array_equal(pc.bilinear(part), pc.bilinear(full))
     np.testing.assert_array_equal(pc.nearest(R.slope(part, 1.0)),
                                   pc.nearest(R.slope(full, 1.0)))
+
+
+def _old_window_planes(z, valid, r, spread=False):
+    """The float64 whole-raster planes of 41aabe4 (scipy correlations of every moment,
+    then the formulas on every cell): the independent oracle of ``_planes``."""
+    from scipy import ndimage
+    off = np.arange(-r, r + 1, dtype=np.float64)
+    box = np.ones(2 * r + 1)
+    w = valid.astype(np.float64)
+    zw = np.where(valid, np.asarray(z, np.float64), 0.0)
+
+    def corr(a, kx, ky):
+        return ndimage.correlate1d(ndimage.correlate1d(a, kx, axis=1, mode="constant"),
+                                   ky, axis=0, mode="constant")
+    n = corr(w, box, box)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        mx, my, mz = corr(w, off, box) / n, corr(w, box, off) / n, corr(zw, box, box) / n
+        cxx = corr(w, off * off, box) / n - mx * mx
+        cyy = corr(w, box, off * off) / n - my * my
+        cxy = corr(w, off, off) / n - mx * my
+        cxz = corr(zw, off, box) / n - mx * mz
+        cyz = corr(zw, box, off) / n - my * mz
+        det = cxx * cyy - cxy * cxy
+        gx, gy = (cyy * cxz - cxy * cyz) / det, (cxx * cyz - cxy * cxz) / det
+        out = dict(n=n, mx=mx, my=my, mz=mz, det=det, gx=gx, gy=gy)
+        if spread:
+            out.update(czz=corr(zw * zw, box, box) / n - mz * mz, cxz=cxz, cyz=cyz)
+    return out
+
+
+@pytest.mark.parametrize("shape,r,share,dtype", [
+    ((1, 1), 1, 0.6, np.float64), ((1, 40), 2, 0.7, np.float64), ((40, 1), 2, 0.7, np.float32),
+    ((150, 90), 3, 0.6, np.float64), ((70, 2100), 3, 0.85, np.float32),
+    ((60, 80), 9, 0.3, np.float64)])
+def test_planes_at_cells_equal_the_whole_raster_float64_planes(shape, r, share, dtype):
+    """Gradients and fits evaluated at the cells asked for (bands, strips, ``where``)
+    equal the old whole-raster float64 formulas bit for bit (review: the other tests
+    take their planes from the code under test)."""
+    from geomatics_toolbox.core.lidar import _planes as P  # noqa: N812
+    rng = np.random.default_rng(sum(shape) + r)
+    valid = rng.random(shape) < share
+    valid[:, : shape[1] // 3] &= rng.random((shape[0], shape[1] // 3)) < 0.3   # ragged holes
+    z = (50.0 + np.cumsum(rng.normal(0, 0.5, shape), axis=1)).astype(dtype)
+    old = _old_window_planes(z, valid, r, spread=True)
+    full = (r * (r + 1) / 3.0) ** 2
+    bad = ~(old["det"] > 1e-3 * full) | ~np.isfinite(old["gx"]) | ~np.isfinite(old["gy"])
+    ogx, ogy = np.where(bad, 0.0, old["gx"]) / 1.5, np.where(bad, 0.0, old["gy"]) / 1.5
+    rr, cc = np.nonzero(rng.random(shape) < 0.4)
+    for got in (P.gradient_at(z, valid, r, 1.5, rr, cc), P.gradient_of(z, valid, r, 1.5, rr, cc)):
+        np.testing.assert_array_equal(got[0], ogx[rr, cc])
+        np.testing.assert_array_equal(got[1], ogy[rr, cc])
+    np.testing.assert_array_equal(P.plane_gradient(z, valid, r, 1.5)[0], ogx)
+    with np.errstate(invalid="ignore"):
+        rms = np.sqrt(np.maximum(old["czz"] - old["gx"] * old["cxz"] - old["gy"] * old["cyz"], 0))
+        centre = old["mz"] - old["gx"] * old["mx"] - old["gy"] * old["my"]
+    gone = ~(old["det"] > 0.1) | (old["n"] < 6)
+    rms[gone], centre[gone] = np.nan, np.nan
+    for a, b in zip(P.plane_fit(z, valid, r), (rms, centre, old["gx"], old["gy"])):
+        np.testing.assert_array_equal(a, b)
+    where = rng.random(shape) < 0.5
+    mask, (c, gx, gy, extra) = P.plane_fit_where(
+        z, valid, r, lambda rows, at, rms_, centre_, gx_, gy_: (np.isfinite(rms_), rms_), where)
+    want = where & np.isfinite(rms)
+    np.testing.assert_array_equal(mask, want)
+    for a, b in zip((c, gx, gy, extra), (centre, old["gx"], old["gy"], rms)):
+        np.testing.assert_array_equal(a, b[want])
