@@ -82,7 +82,9 @@ def opening(z, radius, out=None, outside=None):
 
     scipy's 1-D filters take 5-13 ms per pass on an 895 x 895 raster (3 to 55 cells wide),
     the tables 1-5 ms; each pass makes a padded copy of the raster (dense clouds: their
-    rasters are small beside the per-point arrays). ``out`` may be ``z``.
+    rasters are small beside the per-point arrays). ``out`` may be ``z``. For rasters
+    without NaN (every caller's: filled): scipy's filters and numpy's minimum/maximum
+    propagate NaN differently, so with NaN the bits differ.
     """
     size = 2 * int(radius) + 1
     if outside is not None:

@@ -454,7 +454,7 @@ def opening(z, radius, out=None, outside=None, tables=False):
     ``outside`` (:func:`._terrain.outside_hull`): cells not there - ``z`` set to +inf (no
     value), no window centred there (as beyond the raster's edge); garbage there.
     ``tables``: the same bits from tables of minima and maxima (:func:`._openings.opening`,
-    faster, a padded copy of the raster per pass: for dense clouds).
+    faster, a padded copy of the raster per pass: for dense clouds), NaN-free ``z`` only.
     """
     if tables:
         from ._openings import opening as by_tables
