@@ -15,10 +15,10 @@ from typing import NamedTuple
 import numpy as np
 from scipy.spatial import cKDTree
 
-__all__ = ["OFFSETS_F", "SCAN_D2", "Near", "Scan", "knn_scan", "near_offsets", "nearest",
-           "ring_cells", "scan_lattice", "scan_offsets"]
+__all__ = ["OFFSETS_F", "SCAN_D2", "Near", "Scan", "near_offsets", "ring_cells",
+           "scan_lattice", "scan_offsets"]
 
-#: Largest squared offset (cells²) visited by :func:`knn_scan` (40 cells: a hole cell
+#: Largest squared offset (cells²) visited by :func:`scan_offsets` (40 cells: a hole cell
 #: deeper inside a hole is searched in the KD-tree). 40 rather than 24: at 0.2 pts/m² a
 #: few hundred hole cells lie 24-40 cells from their 12th border cell, and the tree built
 #: for them over every border cell held ~20 MB (5 M cells, 1 M points) for no gain in time.
@@ -42,12 +42,12 @@ def _offsets(d2max: int):
 
 
 _OFFSETS = _offsets(SCAN_D2)
-#: The offsets ``(dc, dr, d²)`` in scan order, float64 (what :func:`knn_scan` returns).
+#: The offsets ``(dc, dr, d²)`` in scan order, float64 (what :func:`scan_offsets` indexes).
 OFFSETS_F = tuple(a.astype(np.float64) for a in _OFFSETS)
 
 
 def scan_lattice(ring, rows=None, first=None):
-    """Prepare ``ring`` (bool raster of the cells searched) for :func:`knn_scan`.
+    """Prepare ``ring`` (bool raster of the cells searched) for :func:`scan_offsets`.
 
     Returns the raster padded by the scan's reach holding each ring cell's index in
     ``np.nonzero(ring)`` order (-1 elsewhere), the padding, the raster's shape, the
@@ -77,7 +77,7 @@ def ring_cells(lattice):
     return np.nonzero(index[pad:pad + rows, pad:pad + cols] >= 0)
 
 
-def knn_scan(lattice, r, c, k: int):
+def scan_offsets(lattice, r, c, k: int):
     """Find the ``k`` nearest cells of ``ring`` from each cell ``(r, c)``, ties by offset.
 
     Parameters
@@ -92,21 +92,11 @@ def knn_scan(lattice, r, c, k: int):
     Returns
     -------
     tuple
-        ``(done, d2, dc, dr, j)``: ``done`` flags the query cells whose ``k`` nearest
-        lie within :data:`SCAN_D2`; for those (in order) the squared distance, column
-        and row offsets (float64, shape (m, k)) ordered by (d², dr, dc), and ``j`` the
-        index of each neighbour in ``np.nonzero(ring)`` order.
-    """
-    done, o, j = scan_offsets(lattice, r, c, k)
-    dc, dr, d2 = (a[o] for a in OFFSETS_F)
-    return done, d2, dc, dr, j
-
-
-def scan_offsets(lattice, r, c, k: int):
-    """:func:`knn_scan` with each neighbour as its offset's index: ``(done, o, j)``.
-
-    ``o`` (int32, shape (m, k)) indexes :data:`OFFSETS_F` (the offsets in scan order):
-    a caller can tabulate what depends on the offset only.
+        ``(done, o, j)``: ``done`` flags the query cells whose ``k`` nearest lie within
+        :data:`SCAN_D2`; for those (in order) ``o`` (int32, shape (m, k)) the index of
+        each neighbour's offset in :data:`OFFSETS_F` (ordered by d², dr, dc: a caller
+        can tabulate what depends on the offset only) and ``j`` its index in
+        ``np.nonzero(ring)`` order.
     """
     index, pad, (rows, cols), r0 = lattice[:4]
     width = cols + 2 * pad
@@ -257,13 +247,8 @@ def near_offsets(scan, r, c, k: int, trees: list, ring=None) -> Near:
     return Near(oo, jj, far, d2, dc, dr)
 
 
-def nearest(scan, r, c, k: int, trees: list, ring=None):
-    """Return :func:`_knn`'s ``(d2, dc, dr, j)`` of the cells ``(r, c)`` (:func:`near_offsets`)."""
-    return near_offsets(scan, r, c, k, trees, ring).arrays()
-
-
 class Scan:
-    """:func:`nearest` on lattices of :data:`SCAN_ROWS` rows at a time.
+    """:func:`near_offsets` on lattices of :data:`SCAN_ROWS` rows at a time.
 
     The whole padded lattice is an int32 raster (20 MB at 5 M cells); a band of rows
     gives the same neighbours (the scan reads its reach around the band, the indices
@@ -289,10 +274,6 @@ class Scan:
         if len(parts) == 1:
             return parts[0]
         return Near(*(np.concatenate(a) for a in zip(*parts)))
-
-    def nearest(self, r, c, k, trees):
-        """Return ``(d2, dc, dr, j)`` of the cells ``(r, c)`` (sorted by row)."""
-        return self.near(r, c, k, trees).arrays()
 
 
 #: Rows per lattice of :class:`Scan`.

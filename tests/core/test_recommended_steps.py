@@ -104,9 +104,10 @@ def test_hole_fill_neighbours_do_not_depend_on_tree_order():
 
 @pytest.mark.parametrize("k", [1, 5, 12, 40, 110])
 def test_lattice_scan_finds_the_kd_trees_neighbours(k):
-    """knn_scan visits the offsets in the tree's order: same cells, same order, same
+    """scan_offsets visits the offsets in the tree's order: same cells, same order, same
     indices as the KD-tree search (_knn) for every hole cell it completes, and the deep
-    hole cells it leaves (beyond SCAN_D2) are those whose k-th border is farther."""
+    hole cells it leaves (beyond SCAN_D2) are those whose k-th border is farther; the
+    Near of the whole lattice and of bands of rows (the tree for those) are _knn's."""
     from scipy.spatial import cKDTree
 
     from geomatics_toolbox.core.lidar import _lattice_knn as K  # noqa: N812
@@ -119,14 +120,15 @@ def test_lattice_scan_finds_the_kd_trees_neighbours(k):
     lat = np.column_stack((cc, rr)).astype(np.float64)
     hr, hc = np.nonzero(~valid)
     ref = K._knn(cKDTree(lat), np.column_stack((hc, hr)), k, lat)
-    done, *got = K.knn_scan(K.scan_lattice(ring), hr, hc, k)
+    done, o, j = K.scan_offsets(K.scan_lattice(ring), hr, hc, k)
+    got = [K.OFFSETS_F[2][o], K.OFFSETS_F[0][o], K.OFFSETS_F[1][o], j]    # d2, dc, dr, j
     assert 0 < np.count_nonzero(~done) < done.size      # both paths are exercised
     for a, b in zip(ref, got):
         assert a.dtype == b.dtype
         np.testing.assert_array_equal(a[done], b)
     assert (ref[0][~done, -1] > K.SCAN_D2).all()
     trees = []
-    both = K.nearest(K.scan_lattice(ring), hr, hc, k, trees)
+    both = K.near_offsets(K.scan_lattice(ring), hr, hc, k, trees).arrays()
     assert len(trees) == 2                               # the tree built for the deep cells
     for a, b in zip(ref, both):
         np.testing.assert_array_equal(a, b)
@@ -134,7 +136,7 @@ def test_lattice_scan_finds_the_kd_trees_neighbours(k):
         K.SCAN_ROWS, keep = rows, K.SCAN_ROWS
         try:
             trees = []
-            banded = K.Scan(ring).nearest(hr, hc, k, trees)
+            banded = K.Scan(ring).near(hr, hc, k, trees).arrays()
         finally:
             K.SCAN_ROWS = keep
         assert len(trees) == 2                           # the tree of the whole ring
