@@ -30,6 +30,7 @@ from scipy.spatial import cKDTree
 from ..system import release_free_memory
 from . import _lattice_knn as K  # noqa: N812
 from . import _raster as R  # noqa: N812
+from ._openings import erode3
 from ._planes import (  # noqa: F401
     _plane_fit,
     gradient_at,
@@ -424,14 +425,10 @@ def _misfit(rr, cc, ce, ex, ey, zmin, ground, rad: int):
 def _ring(valid):
     """Return the valid cells with an invalid one among their 8 neighbours (none outside).
 
-    ``valid & ~minimum_filter(valid, 3, mode="nearest")`` (the same cells) by shifted ANDs.
+    ``valid & ~minimum_filter(valid, 3, mode="nearest")`` (the same cells) by the shifted
+    minima (ANDs) of :func:`._openings.erode3`.
     """
-    rows = valid.copy()
-    rows[:, 1:] &= valid[:, :-1]
-    rows[:, :-1] &= valid[:, 1:]
-    inner = rows.copy()
-    inner[1:] &= rows[:-1]
-    inner[:-1] &= rows[1:]
+    inner = erode3(valid.copy(), np.empty(valid.size, bool))
     np.logical_not(inner, out=inner)
     inner &= valid
     return inner
