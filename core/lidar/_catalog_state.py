@@ -16,8 +16,10 @@ from typing import List, Optional, Sequence
 from ..errors import InputError
 from ._catalog_checks import SETTINGS_FILE, STATE_DIR
 from ._gap import drop_gap_files
+from ._lowcells import FACTORS
 
-__all__ = ["finished_chunks", "check_markers", "read_text", "undo_run", "write_settings"]
+__all__ = ["finished_chunks", "check_markers", "read_text", "undo_run", "untrusted_error",
+           "write_settings"]
 
 DONE_SUFFIX = ".done.json"
 
@@ -40,15 +42,25 @@ def untrusted_error(folder, files) -> InputError:
 
 
 def check_markers(folder, previous: dict) -> None:
-    """Refuse finished chunks whose done markers lack their canopy counts (an older version).
+    """Refuse finished chunks whose markers lack valid canopy counts (an older version).
 
     ``previous``: chunk key -> its marker's stats (None: not finished). The catalog's
     canopy factor is chosen from every chunk's counts (:func:`._canopy.settle`).
     """
     old = sorted(f"{STATE_DIR}/{k}{DONE_SUFFIX}" for k, s in previous.items()
-                 if s is not None and not isinstance(s.get("canopy"), dict))
+                 if s is not None and not _counts_ok(s.get("canopy")))
     if old:
         raise untrusted_error(folder, old)
+
+
+def _counts_ok(canopy) -> bool:
+    """Return True for canopy counts as this version writes them (one per factor, a factor)."""
+    if not isinstance(canopy, dict) or canopy.get("factor") not in (0, *FACTORS):
+        return False
+    counts = [canopy.get("pits"), canopy.get("blocks")]
+    return all(isinstance(c, list) and len(c) == len(FACTORS)
+               and all(isinstance(v, int) and not isinstance(v, bool) for v in c)
+               for c in counts)
 
 
 def write_settings(folder: Path, settings: dict) -> None:

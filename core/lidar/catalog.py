@@ -85,10 +85,7 @@ __all__ = ["Catalog", "CatalogResult", "run_catalog", "GROUND_FILTERS", "DTM_MET
            "plan_tasks"]
 
 def _test_fail_once() -> set:
-    """Return the chunk keys whose first attempt fails on purpose (a test hook).
-
-    Tests of the retry set GEOMATICS_TEST_FAIL_ONCE (comma-separated keys); never in use.
-    """
+    """Return the keys whose first attempt fails (test hook: GEOMATICS_TEST_FAIL_ONCE)."""
     return {k for k in os.environ.get("GEOMATICS_TEST_FAIL_ONCE", "").split(",") if k}
 
 
@@ -278,8 +275,7 @@ def plan_tasks(cat: Catalog, folder, *, ground_filter: str, dtm_method: str,
         e = cat.extent
         origin = (math.floor(e[0] * h / 1000.0) * 1000.0 / h,
                   math.floor(e[1] * h / 1000.0) * 1000.0 / h)
-    buffer, cell_size, chunk_size = float(buffer) / h, float(cell_size) / h, \
-        float(chunk_size) / h
+    buffer, cell_size, chunk_size = (float(v) / h for v in (buffer, cell_size, chunk_size))
     md = cat.default_max_distance() if max_distance is None else float(max_distance) / h
     common = dict(buffer=buffer, origin=(float(origin[0]), float(origin[1])),
                   cell_size=cell_size, crs=cat.crs, ground_filter=ground_filter,
@@ -469,14 +465,16 @@ def _execute(cat, tasks, todo, previous, folder, made, gf, opts, mon, clock, t0)
     mon.update(len(chunks) / len(tasks))
     clock.lap("plan")
     settle = _settler(tasks, chunks, folder) if has_canopy(gf) else None
-    plan = pass_plan(cat, todo, folder) if todo else None     # None: nothing to pass, or
-    ran = set()                                               # a valid summary reused
-    if todo or (settle is not None and settle([])):
+    again = not todo and settle is not None and settle([])   # re-runs, no chunk left:
+    plan = pass_plan(cat, todo or tasks, folder) if todo or again else None   # they need
+    ran = set()              # the summary too (refused when missing or stale, 0475c85)
+    if todo or again:        # plan None: nothing to pass, or a valid summary reused
         new = _run_dask(todo, tasks, folder, opts["workers"], opts["scheduler"],
                         opts["memory_limit"], mon, len(chunks), failed, clock, on_chunk,
                         plan=plan, settle=settle)
-        ran = {c["key"] for c in new}            # a finished chunk run again: its new stats
-        chunks = [c for c in chunks if c["key"] not in ran] + new
+        ran = {c["key"] for c in new}   # a finished chunk run again: its new stats; a failed
+        chunks = [c for c in chunks if c["key"] not in ran] + new     # re-run: not done (at
+        chunks = [c for c in chunks if c["key"] not in failed]        # its own canopy scale)
     summary = _summary.load(folder / STATE_DIR) or {}
     gap = _catalog_gap(tasks, chunks, failed, opts["cell_size"], opts["dtm_method"])
     _check_outcome(chunks, failed, len(tasks), cat.n_points, gf)
@@ -491,7 +489,7 @@ def _execute(cat, tasks, todo, previous, folder, made, gf, opts, mon, clock, t0)
                     **_canopy_settings(settle, chunks))
     return CatalogResult(chunks=chunks, failed=failed,
                          skipped=[k for k, v in previous.items() if v is not None
-                                  and k not in ran],
+                                  and k not in ran and k not in failed],
                          vrt=vrt, cog=cog_path, seconds=time.perf_counter() - t0,
                          workers=opts["workers"], scheduler=opts["scheduler"] or "local",
                          settings=settings, timings=clock.phases)
@@ -538,7 +536,7 @@ def _canopy_settings(settle, chunks) -> dict:
     got = None if settle is None else settle.got
     if got is None:
         return dict(canopy_factor=None, canopy_reruns=[], canopy_seconds=None)
-    again = {t.key for t in got.redo}
+    again = {t.key for t in got.redo} & {c["key"] for c in chunks}    # failed ones left out
     redone = [c for c in chunks if c["key"] in again]
     return dict(canopy_factor=got.factor, canopy_counts=[got.pits, got.blocks],
                 canopy_reruns=sorted(again),

@@ -22,6 +22,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from geomatics_toolbox.core.errors import InputError
 from geomatics_toolbox.core.io.las import PointData, read_las, write_las
 from geomatics_toolbox.core.lidar import _chunks
 from geomatics_toolbox.core.lidar import _recommended_filter as rf
@@ -221,6 +222,18 @@ def _classes(out: Path, n: int = 2):
                            ["classification"] for i in range(n)])
 
 
+def _provisional(tiles: Path, out: Path):
+    """Every chunk finished at its own canopy scale, no settle (a crash): tasks, factors."""
+    cat = cc.Catalog.open(str(tiles))
+    tasks = cc.plan_tasks(cat, out, ground_filter="groundfilter", dtm_method="idw",
+                          cell_size=2.0, buffer=100.0)
+    (out / cc.STATE_DIR).mkdir(parents=True)
+    cc.first_pass(cat, tasks, out)
+    own = [_chunks.process_chunk(t)["canopy"]["factor"] for t in tasks]   # provisional
+    cc.write_settings(out, cc._run_settings(tasks, cat))
+    return tasks, own
+
+
 def test_resume_of_provisional_chunks_runs_the_disagreeing_one_again(step, tmp_path):
     """Every chunk finished at its own canopy scale, the run stopped before settling (a
     crash): the resume has no chunk to run but sums the done markers' counts and runs
@@ -229,14 +242,7 @@ def test_resume_of_provisional_chunks_runs_the_disagreeing_one_again(step, tmp_p
     a scale that changes them); the classes are the single-file run's."""
     tiles, pts = step
     out = tmp_path / "out"
-    cat = cc.Catalog.open(str(tiles))
-    tasks = cc.plan_tasks(cat, out, ground_filter="groundfilter", dtm_method="idw",
-                          cell_size=2.0, buffer=100.0)
-    (out / cc.STATE_DIR).mkdir(parents=True)
-    cc.first_pass(cat, tasks, out)
-    own = [_chunks.process_chunk(t)["canopy"]["factor"] for t in tasks]   # provisional
-    settings = {**cc._run_settings(tasks, cat)}
-    cc.write_settings(out, settings)
+    tasks, own = _provisional(tiles, out)
     ref = classify_points(pts, ground_filter("groundfilter"),
                           default_selection("groundfilter"))
     res = cc.run_catalog(str(tiles), out, ground_filter="groundfilter", buffer=100.0,
@@ -273,6 +279,62 @@ def test_cancel_in_the_canopy_reruns_keeps_the_chunks_and_the_resume_settles(ste
     f, kept = res.settings["canopy_factor"], marker["canopy"]["factor"]
     assert f == 6 and kept in (3, 6)                   # t1's own scale, or the catalog's
     assert res.settings["canopy_reruns"] == ([] if kept == f else ["t1"])
+    ref = classify_points(pts, ground_filter("groundfilter"),
+                          default_selection("groundfilter"))
+    got = _classes(out)
+    assert np.array_equal(got, ref), f"{int((got != ref).sum())} points differ"
+
+
+def test_resume_with_only_reruns_left_refuses_a_missing_summary(step, tmp_path):
+    """Every chunk finished at its own scale and summary.json lost: t1's re-run would
+    classify without the catalog's corner and density (6 points differed from the
+    single-file run, and its new marker lacked its counts), so the resume is refused as
+    a resume with chunks left to run is (0475c85), and nothing is touched."""
+    tiles, _ = step
+    out = tmp_path / "out"
+    tasks, own = _provisional(tiles, out)
+    assert own[1] == 3                                    # the catalog's factor is 6
+    (out / cc.STATE_DIR / "summary.json").unlink()
+    before = {t.key: Path(t.outputs["DONE"]).read_text() for t in tasks}
+    with pytest.raises(InputError) as err:
+        cc.run_catalog(str(tiles), out, ground_filter="groundfilter", buffer=100.0,
+                       cell_size=2.0, workers=1)
+    assert "holds finished chunks of an earlier run" in str(err.value)
+    assert f"{cc.STATE_DIR}/summary.json" in str(err.value)
+    assert {t.key: Path(t.outputs["DONE"]).read_text() for t in tasks} == before
+
+
+def test_failed_canopy_rerun_is_not_reported_done_and_the_resume_settles(
+        step, tmp_path, monkeypatch):
+    """t1's re-run at the catalog's scale fails (as ``_collect`` records it): t1 is failed,
+    not a finished chunk at its own scale, not a re-run, its seconds not counted; its
+    marker keeps its own scale, so the resume runs it again and the classes are the
+    single-file run's."""
+    from geomatics_toolbox.core.lidar import _dask_run
+    tiles, pts = step
+    out = tmp_path / "out"
+    events = []
+
+    def failing(client, redo, mon, failed, on_chunk=None):
+        for t in redo:
+            failed[t.key] = "RuntimeError: simulated"
+            on_chunk({"key": t.key, "status": "failed", "error": failed[t.key]})
+        return []
+    with monkeypatch.context() as m:
+        m.setattr(_dask_run, "_rerun", failing)
+        res = cc.run_catalog(str(tiles), out, ground_filter="groundfilter", buffer=100.0,
+                             cell_size=2.0, workers=1, on_chunk=events.append)
+    assert list(res.failed) == ["t1"] and res.settings["canopy_factor"] == 6
+    assert [c["key"] for c in res.chunks] == ["t0"]
+    assert res.chunks[0]["canopy"]["factor"] == 6
+    assert res.settings["canopy_reruns"] == [] and res.settings["canopy_seconds"] == [0, 0]
+    assert [e["key"] for e in events if e["status"] == "failed"] == ["t1"]
+    marker = json.loads((out / cc.STATE_DIR / "t1.done.json").read_text())
+    assert marker["canopy"]["factor"] == 3
+    again = cc.run_catalog(str(tiles), out, ground_filter="groundfilter", buffer=100.0,
+                           cell_size=2.0, workers=1)
+    assert again.settings["canopy_reruns"] == ["t1"] and again.skipped == ["t0"]
+    assert not again.failed
     ref = classify_points(pts, ground_filter("groundfilter"),
                           default_selection("groundfilter"))
     got = _classes(out)

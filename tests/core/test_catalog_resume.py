@@ -191,16 +191,29 @@ def test_untrusted_summary_with_finished_chunks_refused(tiles, tmp_path, damage)
         assert str(out) in msg and "canopy" not in msg
 
 
-def test_finished_chunk_without_canopy_counts_refused(tiles, tmp_path):
-    """A done marker without the chunk's canopy counts (written by an older version) is
-    refused: the catalog's canopy scale is chosen from every chunk's counts, and that
-    chunk's cannot be summed (nothing is touched; the marker is named)."""
+@pytest.mark.parametrize("damage", ["no canopy", "no factor", "factor 5", "short pits",
+                                    "text blocks"])
+def test_finished_chunk_without_canopy_counts_refused(tiles, tmp_path, damage):
+    """A done marker without the chunk's canopy counts (written by an older version) or
+    with damaged ones (no factor: a KeyError in the settle before) is refused: the
+    catalog's canopy scale is chosen from every chunk's counts, and that chunk's cannot
+    be summed (nothing is touched; the marker is named)."""
     out = tmp_path / "out"
     cc.run_catalog(str(tiles), out, **OPTS)
     path = out / cc.STATE_DIR / "t0.done.json"
     marker = json.loads(path.read_text())
-    assert marker["canopy"]["pits"] and marker["canopy"]["blocks"]
-    del marker["canopy"]
+    canopy = marker["canopy"]
+    assert len(canopy["pits"]) == len(canopy["blocks"]) == 7 and canopy["factor"] == 6
+    if damage == "no canopy":
+        del marker["canopy"]
+    elif damage == "no factor":
+        del canopy["factor"]
+    elif damage == "factor 5":
+        canopy["factor"] = 5
+    elif damage == "short pits":
+        canopy["pits"] = canopy["pits"][:3]
+    else:
+        canopy["blocks"] = [str(v) for v in canopy["blocks"]]
     path.write_text(json.dumps(marker))
     (out / cc.STATE_DIR / "t1.done.json").unlink()
     before = _listing(out)
