@@ -209,8 +209,12 @@ class CatalogAlgorithm(GeomaticsAlgorithm):
                         "Cancelled by the user. {n} finished tile(s) are kept in {folder}: "
                         "run again with the same settings to resume; unfinished tiles left "
                         "nothing.")
-                raise QgsProcessingException(
-                    message.format(n=len(kept), folder=folder)) from None
+                message = message.format(n=len(kept), folder=folder)
+                if core_cat.has_canopy(fkey):   # kept at their own canopy scale, some may be
+                    message += " " + self.tr(   # re-run: the catalog's is known at the end
+                        "A kept tile whose canopy scale differs from the whole catalog's is "
+                        "classified again by the resume.")
+                raise QgsProcessingException(message) from None
             again = res.settings.get("canopy_reruns") or []
             if again:           # the extra time: tiles whose own canopy scale disagreed
                 feedback.pushInfo(self.tr(

@@ -413,6 +413,10 @@
             <source>{n} tile(s) classified again at the canopy scale of the whole catalog: {keys}.</source>
             <translation>{n} بلاطة (بلاطات) صُنِّفت من جديد بمقياس الغطاء الشجري للفهرس كله: {keys}.</translation>
         </message>
+        <message>
+            <source>A kept tile whose canopy scale differs from the whole catalog's is classified again by the resume.</source>
+            <translation>البلاطة المحفوظة التي يختلف مقياس غطائها الشجري عن مقياس الفهرس كله تُصنَّف من جديد عند الاستئناف.</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>

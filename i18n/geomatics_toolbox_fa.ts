@@ -413,6 +413,10 @@
             <source>{n} tile(s) classified again at the canopy scale of the whole catalog: {keys}.</source>
             <translation>{n} کاشی دوباره با مقیاس تاج‌پوشش کل کاتالوگ طبقه‌بندی شد: {keys}.</translation>
         </message>
+        <message>
+            <source>A kept tile whose canopy scale differs from the whole catalog's is classified again by the resume.</source>
+            <translation>کاشی نگه‌داشته‌ای که مقیاس تاج‌پوشش آن با مقیاس کل کاتالوگ فرق دارد، هنگام ادامه دادن دوباره طبقه‌بندی می‌شود.</translation>
+        </message>
     </context>
     <context>
         <name>CheckPointInputs</name>

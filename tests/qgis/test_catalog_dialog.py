@@ -98,14 +98,18 @@ def test_cancel_keeps_finished_tiles_and_says_so(qgis_processing, tiles, tmp_pat
     assert sorted(kept + ran) == ["t0", "t1", "t2"]
 
 
+@pytest.mark.parametrize("key", ["keep", "groundfilter"])
 def test_terminate_keeps_finished_tiles_and_says_so(qgis_processing, tiles, tmp_path,
-                                                    monkeypatch):
+                                                    monkeypatch, key):
     """SIGTERM after tiles finished (Terminated from the catalog's sigterm_raises): the
-    message names the kept tiles and the resume, not "no output was written"."""
+    message names the kept tiles and the resume, not "no output was written"; with the
+    recommended filter it says a kept tile may be classified again (its own canopy scale
+    is kept until every tile has finished)."""
     from qgis.core import QgsProcessingException
 
     from geomatics_toolbox.algorithms import catalog as alg_catalog
     from geomatics_toolbox.core.io.contract import Terminated
+    from geomatics_toolbox.core.lidar.filters import GROUND_FILTERS
     real = alg_catalog.core_cat.run_catalog
 
     def run_then_terminated(*args, **kwargs):
@@ -114,12 +118,16 @@ def test_terminate_keeps_finished_tiles_and_says_so(qgis_processing, tiles, tmp_
     monkeypatch.setattr(alg_catalog.core_cat, "run_catalog", run_then_terminated)
     out = tmp_path / "out"
     with pytest.raises(QgsProcessingException) as err:
-        qgis_processing.run(ALG, {"INPUT": str(tiles), "GROUND_FILTER": 0, "CELL_SIZE": 2.0,
-                                  "BUFFER": 20.0, "WORKERS": 1, "OUTPUT_FOLDER": str(out)},
+        qgis_processing.run(ALG, {"INPUT": str(tiles), "CELL_SIZE": 2.0, "BUFFER": 20.0,
+                                  "GROUND_FILTER": list(GROUND_FILTERS).index(key),
+                                  "WORKERS": 1, "OUTPUT_FOLDER": str(out)},
                             feedback=_Feedback().feedback)
     text = str(err.value)
     assert "no output was written" not in text
     assert f"Terminated. 3 finished tile(s) are kept in {out}" in text
+    again = ("A kept tile whose canopy scale differs from the whole catalog's is classified "
+             "again by the resume.")
+    assert (again in text) == (key == "groundfilter"), text
 
 
 def test_tiles_classified_again_at_the_catalog_canopy_scale_are_logged(qgis_processing,
