@@ -272,12 +272,8 @@ def plane_fit(z, valid, radius: int):
 
     Parameters
     ----------
-    z : ndarray
-        Raster (values of invalid cells are ignored).
-    valid : ndarray of bool
-        Cells that carry data.
-    radius : int
-        Window half-size in cells.
+    z, valid, radius
+        As for :func:`plane_gradient`.
 
     Returns
     -------

@@ -42,10 +42,11 @@ from ._planes import (  # noqa: F401
 
 __all__ = ["grow_ground", "plane_fit", "plane_fit_where", "plane_gradient", "tangent_fill"]
 
-#: Hole cells processed per batch (bounds the k-neighbour arrays' memory).
+#: Hole cells processed per batch (bounds the per-batch k-neighbour arrays' memory).
 BATCH = 16_384
 #: Up to this many hole cells, their neighbours are found first and the border gradients
-#: computed only at the border cells they read.
+#: computed only at the border cells they read; those neighbour lists are then held
+#: through the batches (deep holes' KD-tree rows: 3 float64 (m, k) arrays).
 FEW_HOLES = 65_536
 
 
